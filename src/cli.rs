@@ -1,0 +1,202 @@
+//! Command-line parsing and the headless commands.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::{Context, Result, bail};
+use barylab::raster::{self, Filter, Interpolation, Shading};
+use barylab::scene::Scene;
+use clap::{Parser, Subcommand, ValueEnum};
+
+const EXAMPLES: &str = "\
+Examples:
+  barylab                                   open the app on the built-in default scene
+  barylab render assets/scenes/default.json -o out.png
+  barylab render assets/scenes/default.json --mode affine --size 400x300 -o affine.png
+  barylab render assets/scenes/clip-two-triangles.json --filter nearest --aov aov/ -o out.png";
+
+/// barylab: see how a GPU interpolates across a triangle, pixel by pixel.
+#[derive(Parser, Debug)]
+#[command(name = "barylab", version, about, after_help = EXAMPLES, args_conflicts_with_subcommands = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Render a scene file to a PNG image (and optionally float32 EXR buffers).
+    #[command(after_help = EXAMPLES)]
+    Render(RenderArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct RenderArgs {
+    /// Scene file (JSON, world or clip-space form; see docs/scene-format.md).
+    scene: PathBuf,
+    /// Output PNG file.
+    #[arg(short, long)]
+    output: PathBuf,
+    /// Interpolation mode (default: the scene's).
+    #[arg(long)]
+    mode: Option<ModeArg>,
+    /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
+    #[arg(long, value_parser = parse_size)]
+    size: Option<(u32, u32)>,
+    /// Texture filter (default: the scene's).
+    #[arg(long)]
+    filter: Option<FilterArg>,
+    /// What the colour shows (default: the scene's).
+    #[arg(long)]
+    shading: Option<ShadingArg>,
+    /// Overlay the triangles' edges (threshold on the smallest weight).
+    #[arg(long)]
+    wireframe: bool,
+    /// Also write float32 OpenEXR buffers into this folder: uv.exr, weights_screen.exr,
+    /// weights_perspective.exr, depth.exr, inv_w.exr.
+    #[arg(long, value_name = "DIR")]
+    aov: Option<PathBuf>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum ModeArg {
+    Affine,
+    Perspective,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum FilterArg {
+    Nearest,
+    Bilinear,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum ShadingArg {
+    Texture,
+    VertexColor,
+    Barycentric,
+    Depth,
+}
+
+impl From<ModeArg> for Interpolation {
+    fn from(m: ModeArg) -> Self {
+        match m {
+            ModeArg::Affine => Interpolation::Affine,
+            ModeArg::Perspective => Interpolation::Perspective,
+        }
+    }
+}
+
+impl From<FilterArg> for Filter {
+    fn from(f: FilterArg) -> Self {
+        match f {
+            FilterArg::Nearest => Filter::Nearest,
+            FilterArg::Bilinear => Filter::Bilinear,
+        }
+    }
+}
+
+impl From<ShadingArg> for Shading {
+    fn from(s: ShadingArg) -> Self {
+        match s {
+            ShadingArg::Texture => Shading::Texture,
+            ShadingArg::VertexColor => Shading::VertexColor,
+            ShadingArg::Barycentric => Shading::Barycentric,
+            ShadingArg::Depth => Shading::Depth,
+        }
+    }
+}
+
+/// Parses "WIDTHxHEIGHT".
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("`{s}` is not a size like 800x600");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let w: u32 = w.trim().parse().map_err(|_| bad())?;
+    let h: u32 = h.trim().parse().map_err(|_| bad())?;
+    let max = raster::project::MAX_IMAGE_SIZE;
+    if w == 0 || h == 0 || w > max || h > max {
+        return Err(format!("size {w}x{h} is outside 1..={max} pixels per side"));
+    }
+    Ok((w, h))
+}
+
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => {
+            println!(
+                "barylab {}: the app is not built yet; use `barylab render SCENE -o OUT.png` (see --help)",
+                env!("CARGO_PKG_VERSION")
+            );
+            Ok(())
+        }
+        Some(Command::Render(args)) => render(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The folder relative texture paths of a scene file are resolved against.
+fn scene_dir(path: &Path) -> PathBuf {
+    path.parent().map(Path::to_path_buf).unwrap_or_default()
+}
+
+fn render(args: &RenderArgs) -> Result<()> {
+    let mut scene = Scene::load(&args.scene)?;
+    if let Some((w, h)) = args.size {
+        scene.set_size(w, h);
+    }
+    let texture = scene.load_texture(&scene_dir(&args.scene))?;
+    let mut settings = scene.settings();
+    if let Some(m) = args.mode {
+        settings.mode = m.into();
+    }
+    if let Some(f) = args.filter {
+        settings.filter = f.into();
+    }
+    if let Some(s) = args.shading {
+        settings.shading = s.into();
+    }
+    settings.wireframe |= args.wireframe;
+    let mesh = scene.to_mesh();
+    let start = Instant::now();
+    let out = raster::render(&mesh, &texture, &settings)?;
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    let ext = args
+        .output
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if ext.as_deref() != Some("png") {
+        bail!("output {} must be a .png file", args.output.display());
+    }
+    out.frame
+        .to_image()
+        .save(&args.output)
+        .with_context(|| format!("cannot write {}", args.output.display()))?;
+    if let Some(dir) = &args.aov {
+        barylab::aov::write_aovs(dir, &out.frame, settings.mode)?;
+    }
+    let drawn = out
+        .triangles
+        .iter()
+        .filter(|t| t.status == raster::render::TriangleStatus::Drawn)
+        .count();
+    println!(
+        "rendered {}x{} ({:?}, {} of {} triangles drawn) in {:.2} ms -> {}",
+        settings.width,
+        settings.height,
+        settings.mode,
+        drawn,
+        out.triangles.len(),
+        ms,
+        args.output.display()
+    );
+    Ok(())
+}

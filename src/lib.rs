@@ -1,0 +1,9 @@
+//! barylab: a conformant CPU rasterizer that shows how a GPU interpolates across a triangle.
+//!
+//! - [`raster`]: the pipeline stages (no GUI).
+//! - [`scene`]: scene files (world form and raw clip-space form).
+//! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
+
+pub mod aov;
+pub mod raster;
+pub mod scene;

@@ -1,0 +1,7 @@
+//! The `barylab` command line: the app (no arguments) and the headless commands.
+
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    cli::main()
+}

@@ -1,0 +1,165 @@
+//! Camera: the look-at view matrix and OpenGL projection matrices.
+//!
+//! Matrices are named by what they map: `view_from_world` takes world coordinates to the
+//! camera's view space (right-handed, looking down -z), `clip_from_view` takes view space to
+//! OpenGL clip space (-w <= x, y, z <= w inside the frustum).
+
+use glam::dcamera::rh::proj::opengl;
+use glam::dcamera::rh::view;
+use glam::{DMat4, DVec3};
+use serde::{Deserialize, Serialize};
+
+/// Errors for cameras that cannot form a valid projection.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CameraError {
+    #[error("the camera's eye and target are the same point")]
+    EyeIsTarget,
+    #[error("the camera's up vector is zero or parallel to the viewing direction")]
+    BadUp,
+    #[error("field of view {0} degrees is outside (0, 180)")]
+    BadFov(f64),
+    #[error("near plane {near} and far plane {far} must satisfy 0 < near < far")]
+    BadPlanes { near: f64, far: f64 },
+    #[error("orthographic height {0} must be positive")]
+    BadHeight(f64),
+    #[error("camera value is not a finite number")]
+    NotFinite,
+}
+
+/// How view space is projected to clip space.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Projection {
+    /// OpenGL perspective projection: clip w equals the view-space distance -z_view.
+    Perspective {
+        /// Vertical field of view in degrees.
+        fov_y_deg: f64,
+        near: f64,
+        far: f64,
+    },
+    /// Orthographic projection: clip w = 1 everywhere, so affine and perspective-correct agree.
+    Orthographic {
+        /// Height of the view volume in world units.
+        height: f64,
+        near: f64,
+        far: f64,
+    },
+}
+
+/// A look-at camera.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Camera {
+    pub eye: DVec3,
+    pub target: DVec3,
+    #[serde(default = "default_up")]
+    pub up: DVec3,
+    pub projection: Projection,
+}
+
+fn default_up() -> DVec3 {
+    DVec3::Y
+}
+
+/// Smallest accepted |forward x up| relative to their lengths: below this the up vector
+/// does not determine the camera's roll.
+const MIN_UP_SINE: f64 = 1e-9;
+
+impl Default for Camera {
+    fn default() -> Self {
+        Self {
+            eye: DVec3::ZERO,
+            target: DVec3::NEG_Z,
+            up: DVec3::Y,
+            projection: Projection::Perspective {
+                fov_y_deg: 60.0,
+                near: 0.1,
+                far: 100.0,
+            },
+        }
+    }
+}
+
+impl Camera {
+    /// Checks that the camera forms a valid, invertible projection.
+    pub fn validate(&self) -> Result<(), CameraError> {
+        let finite = self.eye.is_finite() && self.target.is_finite() && self.up.is_finite();
+        if !finite {
+            return Err(CameraError::NotFinite);
+        }
+        let forward = self.target - self.eye;
+        if forward.length_squared() == 0.0 {
+            return Err(CameraError::EyeIsTarget);
+        }
+        let sine = forward.cross(self.up).length() / (forward.length() * self.up.length());
+        if !(sine > MIN_UP_SINE) {
+            return Err(CameraError::BadUp);
+        }
+        let (near, far) = match self.projection {
+            Projection::Perspective {
+                fov_y_deg,
+                near,
+                far,
+            } => {
+                if !(fov_y_deg > 0.0 && fov_y_deg < 180.0) {
+                    return Err(CameraError::BadFov(fov_y_deg));
+                }
+                (near, far)
+            }
+            Projection::Orthographic { height, near, far } => {
+                if !(height > 0.0 && height.is_finite()) {
+                    return Err(CameraError::BadHeight(height));
+                }
+                (near, far)
+            }
+        };
+        if !(near > 0.0 && far > near && far.is_finite()) {
+            return Err(CameraError::BadPlanes { near, far });
+        }
+        Ok(())
+    }
+
+    /// The view matrix: world -> view space (right-handed, camera looking down -z).
+    pub fn view_from_world(&self) -> DMat4 {
+        view::look_at_mat4(self.eye, self.target, self.up)
+    }
+
+    /// The projection matrix: view space -> OpenGL clip space, for `aspect` = width / height.
+    ///
+    /// Perspective: `x_c = x_v / (aspect tan(fov/2))`, `y_c = y_v / tan(fov/2)`,
+    /// `z_c = ((f + n) z_v + 2 f n) / (n - f)`, `w_c = -z_v`.
+    ///
+    /// ```
+    /// use barylab::raster::camera::{Camera, Projection};
+    /// use glam::{DVec3, DVec4};
+    /// let cam = Camera {
+    ///     eye: DVec3::ZERO, target: DVec3::NEG_Z, up: DVec3::Y,
+    ///     projection: Projection::Perspective { fov_y_deg: 90.0, near: 1.0, far: 3.0 },
+    /// };
+    /// // A point on the near plane maps to z/w = -1; its w is its distance, 1.
+    /// let c = cam.clip_from_view(1.0) * DVec4::new(1.0, 0.5, -1.0, 1.0);
+    /// assert!((c - DVec4::new(1.0, 0.5, -1.0, 1.0)).abs().max_element() < 1e-12);
+    /// // On the far plane: z/w = +1 and w = 3.
+    /// let c = cam.clip_from_view(1.0) * DVec4::new(0.0, 0.0, -3.0, 1.0);
+    /// assert!((c.z / c.w - 1.0).abs() < 1e-12 && (c.w - 3.0).abs() < 1e-12);
+    /// ```
+    pub fn clip_from_view(&self, aspect: f64) -> DMat4 {
+        match self.projection {
+            Projection::Perspective {
+                fov_y_deg,
+                near,
+                far,
+            } => opengl::perspective(fov_y_deg.to_radians(), aspect, near, far),
+            Projection::Orthographic { height, near, far } => {
+                let h = height / 2.0;
+                let w = h * aspect;
+                opengl::orthographic(-w, w, -h, h, near, far)
+            }
+        }
+    }
+
+    /// The full matrix world -> clip space: `clip_from_view * view_from_world`.
+    pub fn clip_from_world(&self, aspect: f64) -> DMat4 {
+        self.clip_from_view(aspect) * self.view_from_world()
+    }
+}

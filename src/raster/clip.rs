@@ -1,0 +1,203 @@
+//! Clipping in homogeneous clip space (OpenGL 4.6, section 13.7).
+//!
+//! A triangle is clipped against the near plane (z >= -w), the far plane (z <= w), a tiny
+//! positive-w plane (keeps the perspective divide finite) and a guard band far outside the
+//! viewport in x and y (keeps window coordinates within the fixed-point range of the edge
+//! functions). The guard band lies outside the viewport, so it never changes which pixels are
+//! covered. A new vertex on the segment from an inside vertex P to an outside vertex Q is
+//! `P + t (Q - P)` with `t = d_P / (d_P - d_Q)`, where `d` is the signed distance to the plane;
+//! every attribute is interpolated with the same clip-space `t`.
+//!
+//! Intersections are always computed from the inside vertex towards the outside one, so a
+//! segment shared by two triangles is cut at bit-identical points in both (no cracks).
+
+use glam::DVec4;
+
+use super::varying::Varyings;
+
+/// Smallest clip w kept after clipping. With -w <= z <= w every kept point already has w >= 0;
+/// this keeps 1/w finite for the one point (w = 0) those planes allow.
+pub const MIN_CLIP_W: f64 = 1e-9;
+
+/// Largest number of vertices a clipped triangle can have: 3 plus one per plane.
+pub const MAX_POLYGON: usize = 3 + NUM_PLANES;
+
+const NUM_PLANES: usize = 7;
+
+/// One vertex in clip space with its attributes.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct ClipVertex {
+    /// Homogeneous clip coordinates (x, y, z, w).
+    pub clip: DVec4,
+    pub varyings: Varyings,
+}
+
+/// A clipping plane: the kept half-space is `dot(normal, clip) + offset >= 0`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClipPlane {
+    pub name: PlaneName,
+    pub normal: DVec4,
+    pub offset: f64,
+}
+
+/// Which plane cut a triangle, for explanations.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlaneName {
+    Near,
+    Far,
+    PositiveW,
+    GuardLeft,
+    GuardRight,
+    GuardBottom,
+    GuardTop,
+}
+
+impl ClipPlane {
+    /// Signed distance of a clip-space point: positive or zero inside.
+    ///
+    /// ```
+    /// use barylab::raster::clip::{planes, PlaneName};
+    /// use glam::DVec4;
+    /// let near = planes(1000.0)[0];
+    /// assert_eq!(near.name, PlaneName::Near);
+    /// // Near plane: z + w >= 0.
+    /// assert_eq!(near.distance(DVec4::new(0.0, 0.0, -0.5, 1.0)), 0.5);
+    /// assert_eq!(near.distance(DVec4::new(0.0, 0.0, -2.0, 1.0)), -1.0);
+    /// ```
+    pub fn distance(&self, clip: DVec4) -> f64 {
+        self.normal.dot(clip) + self.offset
+    }
+}
+
+/// The planes a triangle is clipped against, given the guard band half-size in NDC units.
+pub fn planes(guard_band_ndc: f64) -> [ClipPlane; NUM_PLANES] {
+    let g = guard_band_ndc;
+    let p = |name, x, y, z, w, offset| ClipPlane {
+        name,
+        normal: DVec4::new(x, y, z, w),
+        offset,
+    };
+    [
+        p(PlaneName::Near, 0.0, 0.0, 1.0, 1.0, 0.0),
+        p(PlaneName::Far, 0.0, 0.0, -1.0, 1.0, 0.0),
+        p(PlaneName::PositiveW, 0.0, 0.0, 0.0, 1.0, -MIN_CLIP_W),
+        p(PlaneName::GuardLeft, 1.0, 0.0, 0.0, g, 0.0),
+        p(PlaneName::GuardRight, -1.0, 0.0, 0.0, g, 0.0),
+        p(PlaneName::GuardBottom, 0.0, 1.0, 0.0, g, 0.0),
+        p(PlaneName::GuardTop, 0.0, -1.0, 0.0, g, 0.0),
+    ]
+}
+
+/// A convex polygon in clip space (the clipped triangle), stored without allocation.
+#[derive(Clone, Copy, Debug)]
+pub struct ClipPolygon {
+    verts: [ClipVertex; MAX_POLYGON],
+    len: usize,
+    /// The planes that actually cut the triangle, as a bit set over `planes()` order.
+    cut_by: u8,
+}
+
+impl ClipPolygon {
+    /// The polygon's vertices, in the triangle's winding order.
+    pub fn vertices(&self) -> &[ClipVertex] {
+        &self.verts[..self.len]
+    }
+
+    /// True when the whole triangle was inside every plane.
+    pub fn unclipped(&self) -> bool {
+        self.cut_by == 0
+    }
+
+    /// The planes that cut the triangle.
+    pub fn cut_by(&self, guard_band_ndc: f64) -> Vec<PlaneName> {
+        planes(guard_band_ndc)
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| self.cut_by & (1 << i) != 0)
+            .map(|(_, p)| p.name)
+            .collect()
+    }
+
+    fn push(&mut self, v: ClipVertex) {
+        if self.len < MAX_POLYGON {
+            self.verts[self.len] = v;
+            self.len += 1;
+        }
+    }
+}
+
+/// The point where segment P->Q crosses a plane, from P (inside) towards Q (outside):
+/// `t = d_P / (d_P - d_Q)`, position and attributes `P + t (Q - P)`.
+///
+/// ```
+/// use barylab::raster::clip::{intersect, ClipVertex};
+/// use barylab::raster::varying::Varyings;
+/// use glam::{DVec4, Vec2, Vec3};
+/// let p = ClipVertex { clip: DVec4::new(0.0, 0.0, 0.0, 1.0),
+///     varyings: Varyings::new([1.0, 0.0, 0.0], Vec2::new(0.0, 0.0), Vec3::ZERO) };
+/// let q = ClipVertex { clip: DVec4::new(0.0, 0.0, -3.0, -1.0),
+///     varyings: Varyings::new([0.0, 1.0, 0.0], Vec2::new(1.0, 1.0), Vec3::ONE) };
+/// // Near plane z + w >= 0: d_P = 1, d_Q = -4, t = 1 / 5.
+/// let (m, t) = intersect(&p, &q, 1.0, -4.0);
+/// assert_eq!(t, 0.2);
+/// assert!((m.clip - DVec4::new(0.0, 0.0, -0.6, 0.6)).abs().max_element() < 1e-15);
+/// assert_eq!(m.varyings.uv(), Vec2::new(0.2, 0.2));
+/// ```
+pub fn intersect(p: &ClipVertex, q: &ClipVertex, d_p: f64, d_q: f64) -> (ClipVertex, f64) {
+    let t = d_p / (d_p - d_q);
+    let v = ClipVertex {
+        clip: p.clip + (q.clip - p.clip) * t,
+        varyings: Varyings::lerp(&p.varyings, &q.varyings, t),
+    };
+    (v, t)
+}
+
+/// Clips a triangle against all planes (Sutherland-Hodgman in clip space).
+///
+/// Returns the clipped convex polygon, which may be empty (fewer than 3 vertices) when the
+/// triangle lies wholly outside. Vertices must be finite.
+pub fn clip_triangle(tri: &[ClipVertex; 3], guard_band_ndc: f64) -> ClipPolygon {
+    let all = planes(guard_band_ndc);
+    let mut poly = ClipPolygon {
+        verts: [ClipVertex::default(); MAX_POLYGON],
+        len: 0,
+        cut_by: 0,
+    };
+    for v in tri {
+        poly.push(*v);
+    }
+    for (index, plane) in all.iter().enumerate() {
+        if poly.len == 0 {
+            break;
+        }
+        let inside_all = poly
+            .vertices()
+            .iter()
+            .all(|v| plane.distance(v.clip) >= 0.0);
+        if inside_all {
+            continue;
+        }
+        poly.cut_by |= 1 << index;
+        let input = poly;
+        poly.len = 0;
+        let n = input.len;
+        for i in 0..n {
+            let cur = input.verts[i];
+            let next = input.verts[(i + 1) % n];
+            let d_cur = plane.distance(cur.clip);
+            let d_next = plane.distance(next.clip);
+            if d_cur >= 0.0 {
+                poly.push(cur);
+                if d_next < 0.0 {
+                    poly.push(intersect(&cur, &next, d_cur, d_next).0);
+                }
+            } else if d_next >= 0.0 {
+                poly.push(intersect(&next, &cur, d_next, d_cur).0);
+            }
+        }
+    }
+    if poly.len < 3 {
+        poly.len = 0;
+    }
+    poly
+}

@@ -1,0 +1,99 @@
+//! Interpolation at a sample: screen-space weights, perspective-correct weights, attributes.
+
+use super::setup::TriangleSetup;
+use super::varying::Varyings;
+
+/// How `smooth` attributes are interpolated.
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Interpolation {
+    /// Screen-space (affine) weights, like GLSL `noperspective`.
+    Affine,
+    /// Perspective-correct weights (OpenGL 4.6 eq. 14.9), the default for GLSL `smooth`.
+    #[default]
+    Perspective,
+}
+
+/// Screen-space weights from edge values: `l_i = E_i(P) / (2 area)`.
+///
+/// ```
+/// use barylab::raster::interpolate::screen_weights;
+/// assert_eq!(screen_weights(&[2, 1, 1], 4), [0.5, 0.25, 0.25]);
+/// ```
+pub fn screen_weights(e: &[i64; 3], area2: i64) -> [f64; 3] {
+    let a = area2 as f64;
+    [e[0] as f64 / a, e[1] as f64 / a, e[2] as f64 / a]
+}
+
+/// Perspective-correct weights from screen weights `l` and the vertices' 1/w:
+/// `a_i = (l_i / w_i) / (l_0 / w_0 + l_1 / w_1 + l_2 / w_2)`.
+///
+/// ```
+/// use barylab::raster::interpolate::perspective_weights;
+/// // Halfway on screen between a vertex at w = 1 and one at w = 3: 1/w_P = (1 + 1/3) / 2,
+/// // so w_P = 1.5 and the near vertex gets weight (0.5 / 1) * 1.5 = 0.75.
+/// let p = perspective_weights(&[0.5, 0.5, 0.0], &[1.0, 1.0 / 3.0, 1.0]).unwrap();
+/// assert!((p[0] - 0.75).abs() < 1e-15 && (p[1] - 0.25).abs() < 1e-15 && p[2] == 0.0);
+/// ```
+pub fn perspective_weights(l: &[f64; 3], inv_w: &[f64; 3]) -> Option<[f64; 3]> {
+    let q = [l[0] * inv_w[0], l[1] * inv_w[1], l[2] * inv_w[2]];
+    let sum = q[0] + q[1] + q[2];
+    if !(sum > 0.0 && sum.is_finite()) {
+        return None;
+    }
+    Some([q[0] / sum, q[1] / sum, q[2] / sum])
+}
+
+/// Everything interpolated at one covered sample of one (clipped) triangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fragment {
+    /// The three edge values at the sample.
+    pub edges: [i64; 3],
+    /// Screen-space weights of the rasterized triangle's vertices.
+    pub screen: [f64; 3],
+    /// Perspective-correct weights of the rasterized triangle's vertices.
+    pub perspective: [f64; 3],
+    /// Window depth z/w, linear on screen: `sum l_i d_i`.
+    pub depth: f64,
+    /// 1/w, linear on screen: `sum l_i / w_i`.
+    pub inv_w: f64,
+    /// Attributes with screen-space weights (`noperspective`).
+    pub affine: Varyings,
+    /// Attributes with perspective-correct weights (`smooth`).
+    pub correct: Varyings,
+}
+
+impl Fragment {
+    /// The attributes the given mode uses.
+    pub fn varyings(&self, mode: Interpolation) -> &Varyings {
+        match mode {
+            Interpolation::Affine => &self.affine,
+            Interpolation::Perspective => &self.correct,
+        }
+    }
+}
+
+/// Interpolates everything at a sample with the given edge values (the renderer and the probe
+/// both call this). Returns `None` if the perspective denominator is not positive, which
+/// cannot happen for a sample inside a clipped triangle (all w > 0).
+pub fn fragment(setup: &TriangleSetup, edges: [i64; 3]) -> Option<Fragment> {
+    let l = screen_weights(&edges, setup.area2);
+    let inv_w = [setup.v[0].inv_w, setup.v[1].inv_w, setup.v[2].inv_w];
+    let p = perspective_weights(&l, &inv_w)?;
+    let vars = [
+        setup.v[0].varyings,
+        setup.v[1].varyings,
+        setup.v[2].varyings,
+    ];
+    Some(Fragment {
+        edges,
+        screen: l,
+        perspective: p,
+        depth: l[0] * setup.v[0].depth + l[1] * setup.v[1].depth + l[2] * setup.v[2].depth,
+        inv_w: l[0] * inv_w[0] + l[1] * inv_w[1] + l[2] * inv_w[2],
+        affine: Varyings::weighted(&l, &vars),
+        correct: Varyings::weighted(&p, &vars),
+    })
+}

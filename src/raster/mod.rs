@@ -1,0 +1,20 @@
+//! The rasterizer core, one module per pipeline stage, data flowing one way:
+//! `camera` -> `clip` -> `project` -> `setup` -> `interpolate` -> `shade` (with `texture`) ->
+//! `framebuffer`, driven by `render`. Nothing here depends on the GUI.
+
+pub mod camera;
+pub mod clip;
+pub mod framebuffer;
+pub mod interpolate;
+pub mod project;
+pub mod render;
+pub mod setup;
+pub mod shade;
+pub mod texture;
+pub mod varying;
+
+pub use framebuffer::{Framebuffer, NO_TRIANGLE};
+pub use interpolate::Interpolation;
+pub use render::{ClipMesh, MeshVertex, RenderSettings, render};
+pub use shade::Shading;
+pub use texture::{BuiltinTexture, Filter, Texture, Wrap};

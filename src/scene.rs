@@ -1,0 +1,443 @@
+//! Scene files (JSON), in two forms; see `docs/scene-format.md`.
+//!
+//! 1. World form: a camera and a quad's four corners A, B, C, D in world space (drawn as the
+//!    triangles A B C and A C D, diagonal A-C).
+//! 2. Raw clip-space form: vertices given directly in clip space and any triangles over them,
+//!    with viewport (0, 0, width, height), NDC y = +1 at image row 0, depth range [0, 1].
+//!
+//! Unknown fields are errors. Errors name the file, the line and column, and the field.
+
+use std::path::{Path, PathBuf};
+
+use glam::{DMat4, DVec3, DVec4, Vec2, Vec3};
+use serde::{Deserialize, Serialize};
+
+use crate::raster::camera::{Camera, CameraError, Projection};
+use crate::raster::project::MAX_IMAGE_SIZE;
+use crate::raster::render::{ClipMesh, DEFAULT_BACKGROUND, MeshVertex, RenderSettings};
+use crate::raster::texture::{BuiltinTexture, Filter, Texture, TextureError, Wrap};
+use crate::raster::{Interpolation, Shading};
+
+/// Errors while reading or checking a scene.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    #[error("cannot read scene {path}: {source}")]
+    Read {
+        path: String,
+        source: std::io::Error,
+    },
+    #[error("{path}:{line}:{column}: {field}{message}")]
+    Parse {
+        path: String,
+        line: usize,
+        column: usize,
+        /// The JSON path of the offending field followed by ": ", or empty at the top level.
+        field: String,
+        message: String,
+    },
+    #[error("{path}: {message}")]
+    Invalid { path: String, message: String },
+    #[error(transparent)]
+    Texture(#[from] TextureError),
+}
+
+/// Corner of the quad in the world form.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Corner {
+    /// Position in object space (world space when the tilt is zero).
+    pub position: DVec3,
+    pub uv: Vec2,
+    /// RGB in [0, 1]; white when omitted.
+    #[serde(default = "white")]
+    pub color: Vec3,
+}
+
+fn white() -> Vec3 {
+    Vec3::ONE
+}
+
+/// A rotation of the whole quad about its centre: pitch about the x axis, then yaw about y.
+#[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Tilt {
+    pub pitch_deg: f64,
+    pub yaw_deg: f64,
+}
+
+fn default_texture() -> String {
+    BuiltinTexture::UvGrid.name().to_string()
+}
+
+fn default_background() -> [u8; 4] {
+    DEFAULT_BACKGROUND
+}
+
+/// The world form.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WorldScene {
+    pub width: u32,
+    pub height: u32,
+    #[serde(default)]
+    pub camera: Camera,
+    /// Corners A, B, C, D.
+    pub quad: [Corner; 4],
+    #[serde(default)]
+    pub tilt: Tilt,
+    /// A built-in texture name (`uv-grid`, `checker`, `rgbw-2x2`) or an image path relative to
+    /// the scene file.
+    #[serde(default = "default_texture")]
+    pub texture: String,
+    #[serde(default)]
+    pub filter: Filter,
+    #[serde(default)]
+    pub wrap: Wrap,
+    #[serde(default)]
+    pub mode: Interpolation,
+    #[serde(default)]
+    pub shading: Shading,
+    #[serde(default)]
+    pub wireframe: bool,
+    #[serde(default = "default_background")]
+    pub background: [u8; 4],
+}
+
+/// A vertex of the raw clip-space form.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClipSceneVertex {
+    pub clip: DVec4,
+    #[serde(default)]
+    pub uv: Vec2,
+    #[serde(default = "white")]
+    pub color: Vec3,
+}
+
+/// The raw clip-space form.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClipScene {
+    pub width: u32,
+    pub height: u32,
+    pub vertices: Vec<ClipSceneVertex>,
+    pub triangles: Vec<[u32; 3]>,
+    #[serde(default = "default_texture")]
+    pub texture: String,
+    #[serde(default)]
+    pub filter: Filter,
+    #[serde(default)]
+    pub wrap: Wrap,
+    #[serde(default)]
+    pub mode: Interpolation,
+    #[serde(default)]
+    pub shading: Shading,
+    #[serde(default)]
+    pub wireframe: bool,
+    #[serde(default = "default_background")]
+    pub background: [u8; 4],
+}
+
+/// A scene in either form.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Scene {
+    World(WorldScene),
+    Clip(ClipScene),
+}
+
+/// Decides the form before the strict parse, so errors name the right fields.
+#[derive(Deserialize)]
+struct FormProbe {
+    #[serde(default)]
+    quad: Option<serde::de::IgnoredAny>,
+    #[serde(default)]
+    vertices: Option<serde::de::IgnoredAny>,
+}
+
+/// Strips serde_json's " at line L column C" suffix (we print the position in front).
+fn bare_message(e: &serde_json::Error) -> String {
+    let s = e.to_string();
+    match s.rfind(" at line ") {
+        Some(i) => s[..i].to_string(),
+        None => s,
+    }
+}
+
+fn parse_error(path: &str, e: serde_json::Error, field: String) -> SceneError {
+    SceneError::Parse {
+        path: path.to_string(),
+        line: e.line(),
+        column: e.column(),
+        field: if field.is_empty() || field == "." {
+            String::new()
+        } else {
+            format!("field `{field}`: ")
+        },
+        message: bare_message(&e),
+    }
+}
+
+fn strict<T: serde::de::DeserializeOwned>(text: &str, path: &str) -> Result<T, SceneError> {
+    let de = &mut serde_json::Deserializer::from_str(text);
+    let value: T = serde_path_to_error::deserialize(de).map_err(|e| {
+        let field = e.path().to_string();
+        parse_error(path, e.into_inner(), field)
+    })?;
+    Ok(value)
+}
+
+impl Scene {
+    /// Parses a scene from JSON text; `path` names it in errors.
+    pub fn from_json(text: &str, path: &str) -> Result<Self, SceneError> {
+        let probe: FormProbe =
+            serde_json::from_str(text).map_err(|e| parse_error(path, e, String::new()))?;
+        let scene = match (probe.quad.is_some(), probe.vertices.is_some()) {
+            (true, false) => Scene::World(strict(text, path)?),
+            (false, true) => Scene::Clip(strict(text, path)?),
+            (true, true) => {
+                return Err(invalid(
+                    path,
+                    "has both `quad` (world form) and `vertices` (clip-space form); use one",
+                ));
+            }
+            (false, false) => {
+                return Err(invalid(
+                    path,
+                    "has neither `quad` (world form) nor `vertices` (clip-space form)",
+                ));
+            }
+        };
+        scene.validate(path)?;
+        Ok(scene)
+    }
+
+    /// Reads and parses a scene file.
+    pub fn load(path: &Path) -> Result<Self, SceneError> {
+        let shown = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+            path: shown.clone(),
+            source,
+        })?;
+        Self::from_json(&text, &shown)
+    }
+
+    /// The scene as pretty JSON (the form it was read in).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default()
+    }
+
+    /// The built-in default scene: a UV-grid quad lying like a floor, leaning away from the
+    /// camera, so that affine and perspective-correct interpolation differ at once.
+    pub fn default_scene() -> Self {
+        let corner = |x, y, z, u, v, c: [f32; 3]| Corner {
+            position: DVec3::new(x, y, z),
+            uv: Vec2::new(u, v),
+            color: Vec3::from(c),
+        };
+        Scene::World(WorldScene {
+            width: 800,
+            height: 600,
+            camera: Camera {
+                eye: DVec3::new(0.0, 1.5, 1.2),
+                target: DVec3::new(0.0, -0.1, -2.0),
+                up: DVec3::Y,
+                projection: Projection::Perspective {
+                    fov_y_deg: 60.0,
+                    near: 0.1,
+                    far: 100.0,
+                },
+            },
+            quad: [
+                corner(-1.2, 0.0, 0.0, 0.0, 0.0, [1.0, 0.0, 0.0]),
+                corner(1.2, 0.0, 0.0, 1.0, 0.0, [0.0, 1.0, 0.0]),
+                corner(1.2, 0.0, -4.8, 1.0, 1.0, [0.0, 0.0, 1.0]),
+                corner(-1.2, 0.0, -4.8, 0.0, 1.0, [1.0, 1.0, 0.0]),
+            ],
+            tilt: Tilt::default(),
+            texture: default_texture(),
+            filter: Filter::Bilinear,
+            wrap: Wrap::Repeat,
+            mode: Interpolation::Perspective,
+            shading: Shading::Texture,
+            wireframe: false,
+            background: DEFAULT_BACKGROUND,
+        })
+    }
+
+    /// Image width and height.
+    pub fn size(&self) -> (u32, u32) {
+        match self {
+            Scene::World(s) => (s.width, s.height),
+            Scene::Clip(s) => (s.width, s.height),
+        }
+    }
+
+    /// Sets the image size (the clip form's NDC is unchanged; the world form keeps its camera
+    /// and adapts the aspect ratio).
+    pub fn set_size(&mut self, width: u32, height: u32) {
+        match self {
+            Scene::World(s) => (s.width, s.height) = (width, height),
+            Scene::Clip(s) => (s.width, s.height) = (width, height),
+        }
+    }
+
+    /// The texture field: a built-in name or a path relative to the scene file.
+    pub fn texture_name(&self) -> &str {
+        match self {
+            Scene::World(s) => &s.texture,
+            Scene::Clip(s) => &s.texture,
+        }
+    }
+
+    /// The render settings the scene asks for.
+    pub fn settings(&self) -> RenderSettings {
+        let (width, height) = self.size();
+        let (mode, filter, wrap, shading, wireframe, background) = match self {
+            Scene::World(s) => (
+                s.mode,
+                s.filter,
+                s.wrap,
+                s.shading,
+                s.wireframe,
+                s.background,
+            ),
+            Scene::Clip(s) => (
+                s.mode,
+                s.filter,
+                s.wrap,
+                s.shading,
+                s.wireframe,
+                s.background,
+            ),
+        };
+        RenderSettings {
+            width,
+            height,
+            mode,
+            filter,
+            wrap,
+            shading,
+            wireframe,
+            background,
+        }
+    }
+
+    /// Loads the scene's texture: a built-in by name, else a file relative to `base_dir`.
+    pub fn load_texture(&self, base_dir: &Path) -> Result<Texture, SceneError> {
+        let name = self.texture_name();
+        match BuiltinTexture::from_name(name) {
+            Some(b) => Ok(Texture::builtin(b)),
+            None => Ok(Texture::load(&resolve(base_dir, name))?),
+        }
+    }
+
+    /// Checks everything a parse cannot: sizes, indices, the camera, finite numbers.
+    pub fn validate(&self, path: &str) -> Result<(), SceneError> {
+        let (w, h) = self.size();
+        if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
+            return Err(invalid(
+                path,
+                &format!("image size {w}x{h} is outside 1..={MAX_IMAGE_SIZE} pixels per side"),
+            ));
+        }
+        match self {
+            Scene::World(s) => {
+                s.camera
+                    .validate()
+                    .map_err(|e: CameraError| invalid(path, &format!("field `camera`: {e}")))?;
+                for (k, c) in s.quad.iter().enumerate() {
+                    if !c.position.is_finite() || !c.uv.is_finite() || !c.color.is_finite() {
+                        return Err(invalid(
+                            path,
+                            &format!("field `quad[{k}]` has a number that is not finite"),
+                        ));
+                    }
+                }
+                if !(s.tilt.pitch_deg.is_finite() && s.tilt.yaw_deg.is_finite()) {
+                    return Err(invalid(path, "field `tilt` is not finite"));
+                }
+            }
+            Scene::Clip(s) => {
+                let n = s.vertices.len();
+                for (t, tri) in s.triangles.iter().enumerate() {
+                    if let Some(&bad) = tri.iter().find(|&&i| i as usize >= n) {
+                        return Err(invalid(
+                            path,
+                            &format!(
+                                "field `triangles[{t}]` uses vertex {bad}, but there are only {n} vertices"
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The matrix object -> world: rotation about the quad's centre (pitch about x, then yaw
+    /// about y). Identity for the clip form.
+    pub fn world_from_object(&self) -> DMat4 {
+        match self {
+            Scene::World(s) => {
+                let centre = s.quad.iter().map(|c| c.position).sum::<DVec3>() / 4.0;
+                DMat4::from_translation(centre)
+                    * DMat4::from_rotation_y(s.tilt.yaw_deg.to_radians())
+                    * DMat4::from_rotation_x(s.tilt.pitch_deg.to_radians())
+                    * DMat4::from_translation(-centre)
+            }
+            Scene::Clip(_) => DMat4::IDENTITY,
+        }
+    }
+
+    /// The mesh the rasterizer draws: vertices in clip space.
+    pub fn to_mesh(&self) -> ClipMesh {
+        match self {
+            Scene::World(s) => {
+                let aspect = f64::from(s.width) / f64::from(s.height);
+                let clip_from_object = s.camera.clip_from_world(aspect) * self.world_from_object();
+                ClipMesh {
+                    vertices: s
+                        .quad
+                        .iter()
+                        .map(|c| MeshVertex {
+                            clip: clip_from_object * c.position.extend(1.0),
+                            uv: c.uv,
+                            color: c.color,
+                        })
+                        .collect(),
+                    triangles: vec![[0, 1, 2], [0, 2, 3]],
+                }
+            }
+            Scene::Clip(s) => ClipMesh {
+                vertices: s
+                    .vertices
+                    .iter()
+                    .map(|v| MeshVertex {
+                        clip: v.clip,
+                        uv: v.uv,
+                        color: v.color,
+                    })
+                    .collect(),
+                triangles: s.triangles.clone(),
+            },
+        }
+    }
+}
+
+fn invalid(path: &str, message: &str) -> SceneError {
+    SceneError::Invalid {
+        path: path.to_string(),
+        message: message.to_string(),
+    }
+}
+
+/// A texture path as written in a scene, relative to the scene file's folder.
+pub fn resolve(base_dir: &Path, name: &str) -> PathBuf {
+    let p = Path::new(name);
+    if p.is_absolute() {
+        p.to_path_buf()
+    } else {
+        base_dir.join(p)
+    }
+}

@@ -1,0 +1,80 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use barylab::raster::render::{ClipMesh, MeshVertex, Render, RenderSettings, render};
+use barylab::raster::{Filter, Interpolation, Shading, Texture, Wrap};
+use glam::{DVec4, Vec2, Vec3};
+
+/// A clip-space vertex whose window position (image coordinates, y down) is (x, y) in a
+/// `width` x `height` viewport, at clip w = `w`.
+pub fn at_window(x: f64, y: f64, w: f64, width: u32, height: u32) -> MeshVertex {
+    let ndc_x = 2.0 * x / f64::from(width) - 1.0;
+    let ndc_y = 1.0 - 2.0 * y / f64::from(height);
+    MeshVertex {
+        clip: DVec4::new(ndc_x * w, ndc_y * w, 0.0, w),
+        uv: Vec2::new(
+            (x / f64::from(width)) as f32,
+            (y / f64::from(height)) as f32,
+        ),
+        color: Vec3::ONE,
+    }
+}
+
+pub fn settings(width: u32, height: u32) -> RenderSettings {
+    RenderSettings {
+        width,
+        height,
+        mode: Interpolation::Perspective,
+        filter: Filter::Nearest,
+        wrap: Wrap::Repeat,
+        shading: Shading::Barycentric,
+        wireframe: false,
+        background: [0, 0, 0, 0],
+    }
+}
+
+pub fn draw(mesh: &ClipMesh, width: u32, height: u32) -> Render {
+    let tex = Texture::from_texels(1, 1, vec![[255; 4]]).expect("1x1 texture");
+    render(mesh, &tex, &settings(width, height)).expect("render")
+}
+
+/// Coverage as rows of '#' (covered) and '.' (not).
+pub fn coverage_art(r: &Render) -> String {
+    let f = &r.frame;
+    let mut s = String::new();
+    for y in 0..f.height {
+        for x in 0..f.width {
+            s.push(if f.covered(x, y) { '#' } else { '.' });
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// How many of the mesh's triangles cover each pixel, each triangle drawn on its own.
+pub fn coverage_counts(mesh: &ClipMesh, width: u32, height: u32) -> Vec<u32> {
+    let mut counts = vec![0u32; (width * height) as usize];
+    for tri in &mesh.triangles {
+        let single = ClipMesh {
+            vertices: mesh.vertices.clone(),
+            triangles: vec![*tri],
+        };
+        let r = draw(&single, width, height);
+        for (c, t) in counts.iter_mut().zip(&r.frame.triangle) {
+            if *t != barylab::raster::NO_TRIANGLE {
+                *c += 1;
+            }
+        }
+    }
+    counts
+}
+
+/// Parses art like `coverage_art` produces (leading/trailing whitespace per line ignored).
+pub fn art(s: &str) -> String {
+    let mut out = String::new();
+    for line in s.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
+}
