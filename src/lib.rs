@@ -2,8 +2,10 @@
 //!
 //! - [`raster`]: the pipeline stages (no GUI).
 //! - [`scene`]: scene files (world form and raw clip-space form).
+//! - [`probe`]: every number behind one pixel, and its derivation as text.
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 
 pub mod aov;
+pub mod probe;
 pub mod raster;
 pub mod scene;
