@@ -139,6 +139,8 @@ pub struct ClipScene {
 }
 
 /// A scene in either form.
+// One scene exists at a time; boxing the larger variant would buy nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Scene {

@@ -92,7 +92,7 @@ impl Camera {
             return Err(CameraError::EyeIsTarget);
         }
         let sine = forward.cross(self.up).length() / (forward.length() * self.up.length());
-        if !(sine > MIN_UP_SINE) {
+        if sine.is_nan() || sine <= MIN_UP_SINE {
             return Err(CameraError::BadUp);
         }
         let (near, far) = match self.projection {

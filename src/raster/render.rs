@@ -245,7 +245,8 @@ fn rasterize(
             };
             let i = frame.index(x, y);
             let depth = frag.depth as f32;
-            if !(depth < frame.depth[i]) {
+            // Less-than depth test (a NaN depth never passes).
+            if depth.is_nan() || depth >= frame.depth[i] {
                 continue;
             }
             frame.depth[i] = depth;
