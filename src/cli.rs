@@ -208,6 +208,15 @@ fn render(args: &RenderArgs) -> Result<()> {
     if let Some(dir) = &args.aov {
         barylab::aov::write_aovs(dir, &out.frame, settings.mode)?;
     }
+    for t in &out.triangles {
+        if t.status != raster::render::TriangleStatus::Drawn {
+            eprintln!(
+                "note: triangle {} not drawn: {}",
+                t.source,
+                t.status.describe()
+            );
+        }
+    }
     let drawn = out
         .triangles
         .iter()

@@ -94,6 +94,19 @@ pub enum TriangleStatus {
     Empty,
 }
 
+impl TriangleStatus {
+    /// A short explanation for people.
+    pub fn describe(self) -> &'static str {
+        match self {
+            TriangleStatus::Drawn => "drawn",
+            TriangleStatus::BadIndex => "a vertex index is out of range",
+            TriangleStatus::NotFinite => "a vertex coordinate is NaN or infinite",
+            TriangleStatus::ClippedAway => "clipped away: it lies outside the view volume",
+            TriangleStatus::Empty => "zero area on screen, or outside the image",
+        }
+    }
+}
+
 /// A source triangle after clipping, projection and setup.
 #[derive(Clone, Debug)]
 pub struct PreparedTriangle {
