@@ -33,7 +33,8 @@ enum Command {
 
 #[derive(clap::Args, Debug)]
 struct RenderArgs {
-    /// Scene file (JSON, world or clip-space form; see docs/scene-format.md).
+    /// Scene file (JSON; see docs/scene-format.md), or an OBJ model, or an image (PNG, JPEG,
+    /// BMP, TGA, WebP) shown on the default quad.
     scene: PathBuf,
     /// Output PNG file.
     #[arg(short, long)]
@@ -172,12 +173,73 @@ fn scene_dir(path: &Path) -> PathBuf {
     path.parent().map(Path::to_path_buf).unwrap_or_default()
 }
 
+/// Prints one note per reason for triangles that were not drawn, naming the first few.
+fn report_skipped(triangles: &[raster::render::PreparedTriangle]) {
+    use raster::render::TriangleStatus as S;
+    const LISTED: usize = 8;
+    for status in [S::BadIndex, S::NotFinite, S::ClippedAway, S::Empty] {
+        let ids: Vec<String> = triangles
+            .iter()
+            .filter(|t| t.status == status)
+            .map(|t| t.source.to_string())
+            .collect();
+        if ids.is_empty() {
+            continue;
+        }
+        let more = if ids.len() > LISTED { ", ..." } else { "" };
+        let shown = ids[..ids.len().min(LISTED)].join(", ");
+        let noun = if ids.len() == 1 {
+            "triangle"
+        } else {
+            "triangles"
+        };
+        eprintln!(
+            "note: {} {noun} not drawn ({shown}{more}): {}",
+            ids.len(),
+            status.describe()
+        );
+    }
+}
+
+/// Image file extensions accepted in place of a scene.
+const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
+
+/// Loads what the user named: a scene file, an OBJ model (framed by a default camera), or an
+/// image (on the default quad). Returns the scene and the folder its relative paths use.
+pub fn load_input(path: &Path) -> Result<(Scene, PathBuf)> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .unwrap_or_default();
+    if ext == "obj" {
+        let (w, h) = Scene::default_scene().size();
+        let model = barylab::scene::ModelScene::for_model(path, w, h)?;
+        // The model path is used as given, so relative paths resolve from here.
+        return Ok((Scene::Model(model), PathBuf::new()));
+    }
+    if IMAGE_EXTENSIONS.contains(&ext.as_str()) {
+        return Ok((Scene::for_image(path), PathBuf::new()));
+    }
+    if ext != "json" {
+        bail!(
+            "{}: unknown kind of file (expected a .json scene, an .obj model, or an image: {})",
+            path.display(),
+            IMAGE_EXTENSIONS.join(", ")
+        );
+    }
+    Ok((Scene::load(path)?, scene_dir(path)))
+}
+
 fn render(args: &RenderArgs) -> Result<()> {
-    let mut scene = Scene::load(&args.scene)?;
+    let (mut scene, base_dir) = load_input(&args.scene)?;
     if let Some((w, h)) = args.size {
         scene.set_size(w, h);
     }
-    let texture = scene.load_texture(&scene_dir(&args.scene))?;
+    let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
+    for note in scene.notes().iter().chain(&texture_notes) {
+        eprintln!("note: {note}");
+    }
     let mut settings = scene.settings();
     if let Some(m) = args.mode {
         settings.mode = m.into();
@@ -208,15 +270,7 @@ fn render(args: &RenderArgs) -> Result<()> {
     if let Some(dir) = &args.aov {
         barylab::aov::write_aovs(dir, &out.frame, settings.mode)?;
     }
-    for t in &out.triangles {
-        if t.status != raster::render::TriangleStatus::Drawn {
-            eprintln!(
-                "note: triangle {} not drawn: {}",
-                t.source,
-                t.status.describe()
-            );
-        }
-    }
+    report_skipped(&out.triangles);
     let drawn = out
         .triangles
         .iter()

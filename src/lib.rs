@@ -5,5 +5,6 @@
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 
 pub mod aov;
+pub mod model;
 pub mod raster;
 pub mod scene;

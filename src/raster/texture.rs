@@ -73,17 +73,14 @@ impl BuiltinTexture {
 /// Errors while loading a texture from a file.
 #[derive(Debug, thiserror::Error)]
 pub enum TextureError {
-    #[error("cannot read texture {path}: {source}")]
-    Read {
-        path: String,
-        source: std::io::Error,
-    },
-    #[error("cannot decode texture {path}: {source}")]
+    #[error("cannot read texture {path}: {cause}")]
+    Read { path: String, cause: std::io::Error },
+    #[error("cannot decode texture {path}: {cause}")]
     Decode {
         path: String,
-        source: image::ImageError,
+        cause: image::ImageError,
     },
-    #[error("texture {path} is empty (0 x 0 pixels)")]
+    #[error("texture {path} is empty (no pixels or 0 bytes)")]
     Empty { path: String },
 }
 
@@ -94,6 +91,9 @@ pub struct Texture {
     height: u32,
     texels: Vec<[u8; 4]>,
 }
+
+/// Largest texture side kept as is; larger images are downscaled on load.
+pub const MAX_TEXTURE_SIZE: u32 = 4096;
 
 /// One texel fetch with its weight, as used by the filters.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -170,16 +170,48 @@ impl Texture {
 
     /// Loads PNG, JPEG, BMP, TGA or WebP from a file, converting to RGBA8.
     pub fn load(path: &Path) -> Result<Self, TextureError> {
+        Ok(Self::load_noted(path)?.0)
+    }
+
+    /// Like [`Texture::load`]; images larger than [`MAX_TEXTURE_SIZE`] on a side are
+    /// downscaled (keeping the aspect ratio), and the note says so.
+    pub fn load_noted(path: &Path) -> Result<(Self, Option<String>), TextureError> {
+        let img = Self::decode(path)?;
+        let (w, h) = img.dimensions();
+        if w.max(h) <= MAX_TEXTURE_SIZE {
+            let tex = Self::from_image(&img).ok_or(TextureError::Empty {
+                path: path.display().to_string(),
+            })?;
+            return Ok((tex, None));
+        }
+        let scale = f64::from(MAX_TEXTURE_SIZE) / f64::from(w.max(h));
+        let nw = ((f64::from(w) * scale).round() as u32).max(1);
+        let nh = ((f64::from(h) * scale).round() as u32).max(1);
+        let small = image::imageops::resize(&img, nw, nh, image::imageops::FilterType::Triangle);
+        let tex = Self::from_image(&small).ok_or(TextureError::Empty {
+            path: path.display().to_string(),
+        })?;
+        let note = format!(
+            "texture {} is {w}x{h}; downscaled to {nw}x{nh} for speed",
+            path.display()
+        );
+        Ok((tex, Some(note)))
+    }
+
+    fn decode(path: &Path) -> Result<image::RgbaImage, TextureError> {
         let shown = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|source| TextureError::Read {
+        let bytes = std::fs::read(path).map_err(|cause| TextureError::Read {
             path: shown.clone(),
-            source,
+            cause,
         })?;
-        let img = image::load_from_memory(&bytes).map_err(|source| TextureError::Decode {
+        if bytes.is_empty() {
+            return Err(TextureError::Empty { path: shown });
+        }
+        let img = image::load_from_memory(&bytes).map_err(|cause| TextureError::Decode {
             path: shown.clone(),
-            source,
+            cause,
         })?;
-        Self::from_image(&img.to_rgba8()).ok_or(TextureError::Empty { path: shown })
+        Ok(img.to_rgba8())
     }
 
     /// The texels as an image with row 0 at the top, for display and export.
