@@ -85,7 +85,7 @@ fn syntax_error_gives_line_and_column() {
 
 #[test]
 fn structural_problems_are_explained() {
-    assert!(err(r#"{"width": 4, "height": 4}"#).contains("neither `quad`"));
+    assert!(err(r#"{"width": 4, "height": 4}"#).contains("has none of `quad`"));
     let e = err(
         r#"{"width": 4, "height": 4, "vertices": [{"clip": [0,0,0,1]}], "triangles": [[0, 0, 3]]}"#,
     );
