@@ -105,6 +105,29 @@ pub struct Tap {
     pub weight: f32,
 }
 
+/// The texels one filter lookup reads: 1 (nearest) or 4 (bilinear), without allocation.
+/// Derefs to a slice of [`Tap`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Taps {
+    taps: [Tap; 4],
+    len: usize,
+}
+
+impl std::ops::Deref for Taps {
+    type Target = [Tap];
+    fn deref(&self) -> &[Tap] {
+        &self.taps[..self.len]
+    }
+}
+
+impl<'a> IntoIterator for &'a Taps {
+    type Item = &'a Tap;
+    type IntoIter = std::slice::Iter<'a, Tap>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.taps[..self.len].iter()
+    }
+}
+
 /// Applies a wrap mode to an integer texel coordinate (OpenGL 4.6, section 8.14.2).
 ///
 /// ```
@@ -251,16 +274,22 @@ impl Texture {
     /// let taps = t.taps(Vec2::new(0.5, 0.5), Filter::Bilinear, Wrap::Repeat);
     /// assert!(taps.iter().all(|t| t.weight == 0.25));
     /// ```
-    pub fn taps(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> Vec<Tap> {
+    pub fn taps(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> Taps {
         let (w, h) = (self.width, self.height);
         let su = uv.x * w as f32;
         let sv = uv.y * h as f32;
         match filter {
-            Filter::Nearest => vec![Tap {
-                i: wrap_coord(texel_floor(su), w, wrap),
-                j: wrap_coord(texel_floor(sv), h, wrap),
-                weight: 1.0,
-            }],
+            Filter::Nearest => {
+                let tap = Tap {
+                    i: wrap_coord(texel_floor(su), w, wrap),
+                    j: wrap_coord(texel_floor(sv), h, wrap),
+                    weight: 1.0,
+                };
+                Taps {
+                    taps: [tap; 4],
+                    len: 1,
+                }
+            }
             Filter::Bilinear => {
                 let (x, y) = (su - 0.5, sv - 0.5);
                 let (i0, j0) = (texel_floor(x), texel_floor(y));
@@ -269,28 +298,31 @@ impl Texture {
                 let (a, b) = (a.clamp(0.0, 1.0), b.clamp(0.0, 1.0));
                 let (ia, ib) = (wrap_coord(i0, w, wrap), wrap_coord(i0 + 1, w, wrap));
                 let (ja, jb) = (wrap_coord(j0, h, wrap), wrap_coord(j0 + 1, h, wrap));
-                vec![
-                    Tap {
-                        i: ia,
-                        j: ja,
-                        weight: (1.0 - a) * (1.0 - b),
-                    },
-                    Tap {
-                        i: ib,
-                        j: ja,
-                        weight: a * (1.0 - b),
-                    },
-                    Tap {
-                        i: ia,
-                        j: jb,
-                        weight: (1.0 - a) * b,
-                    },
-                    Tap {
-                        i: ib,
-                        j: jb,
-                        weight: a * b,
-                    },
-                ]
+                Taps {
+                    taps: [
+                        Tap {
+                            i: ia,
+                            j: ja,
+                            weight: (1.0 - a) * (1.0 - b),
+                        },
+                        Tap {
+                            i: ib,
+                            j: ja,
+                            weight: a * (1.0 - b),
+                        },
+                        Tap {
+                            i: ia,
+                            j: jb,
+                            weight: (1.0 - a) * b,
+                        },
+                        Tap {
+                            i: ib,
+                            j: jb,
+                            weight: a * b,
+                        },
+                    ],
+                    len: 4,
+                }
             }
         }
     }
@@ -298,7 +330,7 @@ impl Texture {
     /// Samples the texture: the filtered colour with each channel in [0, 1].
     pub fn sample(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> [f32; 4] {
         let mut out = [0.0f32; 4];
-        for tap in self.taps(uv, filter, wrap) {
+        for tap in &self.taps(uv, filter, wrap) {
             let t = self.texel(tap.i, tap.j);
             for (o, c) in out.iter_mut().zip(t) {
                 *o += tap.weight * f32::from(c) / 255.0;
