@@ -45,7 +45,7 @@ struct RenderArgs {
     /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
     #[arg(long, value_parser = parse_size)]
     size: Option<(u32, u32)>,
-    /// Texture filter (default: the scene's).
+    /// Texture filter (default: the scene's); trilinear uses mipmaps.
     #[arg(long)]
     filter: Option<FilterArg>,
     /// What the colour shows (default: the scene's).
@@ -70,6 +70,7 @@ enum ModeArg {
 enum FilterArg {
     Nearest,
     Bilinear,
+    Trilinear,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -94,6 +95,7 @@ impl From<FilterArg> for Filter {
         match f {
             FilterArg::Nearest => Filter::Nearest,
             FilterArg::Bilinear => Filter::Bilinear,
+            FilterArg::Trilinear => Filter::Trilinear,
         }
     }
 }

@@ -94,3 +94,47 @@ fn uv_grid_cells_differ_and_carry_labels() {
         .count();
     assert!(dark > 30, "only {dark} dark texels in cell (0,0)");
 }
+
+#[test]
+fn mip_chain_halves_down_to_one_texel_with_box_averages() {
+    let t = Texture::builtin(BuiltinTexture::Checker);
+    // 256 -> 128 -> ... -> 1: 9 levels.
+    assert_eq!(t.levels(), 9);
+    assert_eq!(t.level_size(3), (32, 32));
+    assert_eq!(t.level_size(8), (1, 1));
+    // The 1x1 level is the mean of the checker: (40 + 235) / 2 = 137.5, box-rounded per level.
+    let last = t.texel_at(8, 0, 0);
+    assert!((i32::from(last[0]) - 138).abs() <= 1, "{last:?}");
+    // Level 1 of the seed-001 2x2 texture: the rounded mean of red, green, white, blue.
+    let s = seed_2x2();
+    assert_eq!(s.levels(), 2);
+    assert_eq!(s.texel_at(1, 0, 0), [128, 128, 128, 255]);
+    // Odd sizes: 3x1 -> 1x1 (floor(3/2) = 1), averaging texels 0 and 1.
+    let odd = Texture::from_texels(
+        3,
+        1,
+        vec![[0, 0, 0, 255], [200, 0, 0, 255], [100, 0, 0, 255]],
+    )
+    .expect("3x1");
+    assert_eq!(odd.levels(), 2);
+    assert_eq!(odd.texel_at(1, 0, 0), [100, 0, 0, 255]);
+}
+
+#[test]
+fn trilinear_blends_two_levels_by_the_fraction_of_lambda() {
+    let s = seed_2x2();
+    let uv = Vec2::new(0.25, 0.25);
+    // lambda <= 0: bilinear on level 0 (texel centre: pure red).
+    assert_eq!(
+        rgb(s.sample_lod(uv, Filter::Trilinear, Wrap::Repeat, -1.0)),
+        [255, 0, 0]
+    );
+    // lambda = 1 (the last level): the 1x1 grey.
+    assert_eq!(
+        rgb(s.sample_lod(uv, Filter::Trilinear, Wrap::Repeat, 1.0)),
+        [128, 128, 128]
+    );
+    // lambda = 0.25: 3/4 red + 1/4 grey (128): (0.75 * 255 + 0.25 * 128, 0.25 * 128, ...).
+    let c = s.sample_lod(uv, Filter::Trilinear, Wrap::Repeat, 0.25);
+    assert_eq!(rgb(c), [223, 32, 32]);
+}

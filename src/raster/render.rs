@@ -253,9 +253,19 @@ fn rasterize(
             if !setup.covers(&e) {
                 continue;
             }
-            let Some(frag) = interpolate::fragment(setup, e) else {
+            let Some(mut frag) = interpolate::fragment(setup, e) else {
                 continue;
             };
+            if params.filter == Filter::Trilinear {
+                frag.lod = interpolate::quad_lod(
+                    setup,
+                    x,
+                    y,
+                    params.mode,
+                    texture.width(),
+                    texture.height(),
+                );
+            }
             let i = frame.index(x, y);
             let depth = frag.depth as f32;
             // Less-than depth test (a NaN depth never passes).

@@ -94,7 +94,7 @@ pub fn shade(
     let bary = v.bary();
     match p.shading {
         Shading::Texture => {
-            let c = texture.sample(v.uv(), p.filter, p.wrap);
+            let c = texture.sample_lod(v.uv(), p.filter, p.wrap, frag.lod);
             [unorm8(c[0]), unorm8(c[1]), unorm8(c[2]), unorm8(c[3])]
         }
         Shading::VertexColor => {
