@@ -116,6 +116,10 @@ pub struct ClipSceneVertex {
 }
 
 /// The raw clip-space form.
+///
+/// The look fields (`texture` ... `background`) repeat those of [`WorldScene`] on purpose:
+/// serde's `flatten` cannot be combined with `deny_unknown_fields`, and rejecting unknown
+/// fields matters more (a typo must not pass silently).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ClipScene {
