@@ -48,14 +48,18 @@ pub enum BuiltinTexture {
     Checker,
     /// The 2x2 texture of seed 001: red, white / green, blue.
     Rgbw2x2,
+    /// 1024x1024 texels of deterministic colour noise (the benchmark texture: every lookup
+    /// touches fresh memory, as with a photo).
+    Noise,
 }
 
 impl BuiltinTexture {
     /// All built-ins, for listings.
-    pub const ALL: [BuiltinTexture; 3] = [
+    pub const ALL: [BuiltinTexture; 4] = [
         BuiltinTexture::UvGrid,
         BuiltinTexture::Checker,
         BuiltinTexture::Rgbw2x2,
+        BuiltinTexture::Noise,
     ];
 
     /// The name used in scene files.
@@ -64,6 +68,7 @@ impl BuiltinTexture {
             BuiltinTexture::UvGrid => "uv-grid",
             BuiltinTexture::Checker => "checker",
             BuiltinTexture::Rgbw2x2 => "rgbw-2x2",
+            BuiltinTexture::Noise => "noise",
         }
     }
 
@@ -496,6 +501,7 @@ impl Texture {
             BuiltinTexture::UvGrid => uv_grid(),
             BuiltinTexture::Checker => checker(),
             BuiltinTexture::Rgbw2x2 => rgbw_2x2(),
+            BuiltinTexture::Noise => noise(),
         }
     }
 }
@@ -515,6 +521,25 @@ fn checker() -> Texture {
             });
         }
     }
+    Texture::new_with_mips(SIZE, SIZE, texels)
+}
+
+/// SplitMix64-style integer hash: a fixed, platform-independent pseudo-random texel.
+fn hash(mut x: u64) -> u64 {
+    x = x.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    x ^ (x >> 31)
+}
+
+fn noise() -> Texture {
+    const SIZE: u32 = 1024;
+    let texels = (0..u64::from(SIZE * SIZE))
+        .map(|i| {
+            let h = hash(i).to_le_bytes();
+            [h[0], h[1], h[2], 255]
+        })
+        .collect();
     Texture::new_with_mips(SIZE, SIZE, texels)
 }
 
