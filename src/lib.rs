@@ -6,6 +6,7 @@
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 
 pub mod aov;
+pub mod model;
 pub mod probe;
 pub mod raster;
 pub mod scene;

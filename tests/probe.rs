@@ -93,9 +93,11 @@ macro_rules! scene_tests {
 }
 
 scene_tests! {
+    bench_1080p: "bench-1080p.json",
     clip_two_triangles: "clip-two-triangles.json",
     corner_behind: "corner-behind.json",
     default: "default.json",
+    far_checker: "far-checker.json",
     front: "front.json",
     orthographic: "orthographic.json",
     seed001_2x2: "seed001-2x2.json",

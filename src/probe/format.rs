@@ -1062,6 +1062,7 @@ fn filter_name(f: Filter) -> &'static str {
     match f {
         Filter::Nearest => "nearest",
         Filter::Bilinear => "bilinear",
+        Filter::Trilinear => "trilinear",
     }
 }
 
@@ -1094,15 +1095,10 @@ fn plane_name(p: PlaneName) -> &'static str {
     }
 }
 
-fn status_text(s: TriangleStatus) -> &'static str {
+fn status_text(s: TriangleStatus) -> String {
     match s {
-        TriangleStatus::Drawn => "drawn",
-        TriangleStatus::BadIndex => "not drawn: a vertex index is out of range",
-        TriangleStatus::NotFinite => "not drawn: a vertex coordinate is not a finite number",
-        TriangleStatus::ClippedAway => {
-            "not drawn: it lies entirely outside the view volume (clipped away)"
-        }
-        TriangleStatus::Empty => "not drawn: zero area on screen, or entirely off screen",
+        TriangleStatus::Drawn => s.describe().to_string(),
+        _ => format!("not drawn: {}", s.describe()),
     }
 }
 
@@ -1281,6 +1277,13 @@ fn coverage_section(b: &mut Builder, trace: &PixelTrace) {
              its depth is less than the depth buffer's value (cleared to 1).",
         ),
     ]);
+    if trace.triangles.len() < trace.triangle_count {
+        b.text(format!(
+            "The mesh has {} triangles; listed are the {} whose bounding box contains the pixel.",
+            trace.triangle_count,
+            trace.triangles.len()
+        ));
+    }
     for c in &trace.triangles {
         coverage_entry(b, c);
     }
@@ -1354,7 +1357,7 @@ fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         b.para(vec![
             t("Object"),
             m1(TO),
-            t("world (the quad's tilt)"),
+            t("world"),
             m1(TO),
             t("view (the camera, looking down -z)"),
             m1(TO),
@@ -2326,17 +2329,17 @@ fn taps_line(
                 ]);
             }
         }
-        Filter::Bilinear => {
+        Filter::Bilinear | Filter::Trilinear => {
             let mut ts = Vec::new();
             for (k, tp) in taps.iter().enumerate() {
                 if k > 0 {
                     ts.push(PLUS);
                 }
-                ts.extend([
-                    num(f64::from(tp.weight)),
-                    MUL,
-                    M::Tuple(vec![vec![int(tp.i.into())], vec![int(tp.j.into())]]),
-                ]);
+                let mut ij = vec![vec![int(tp.i.into())], vec![int(tp.j.into())]];
+                if filter == Filter::Trilinear {
+                    ij.push(vec![int(tp.level.into())]);
+                }
+                ts.extend([num(f64::from(tp.weight)), MUL, M::Tuple(ij)]);
             }
             l.extend(ts);
         }
@@ -2425,6 +2428,37 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         txt(" texels"),
     ]);
     let filter = trace.settings.filter;
+    if let Some(tri) = &a.trilinear {
+        b.para(vec![
+            t(format!(
+                "Trilinear filtering: the level of detail comes from the uv differences across \
+                 the pixel's 2x2 quad (as GPUs compute derivatives), in texels of level 0, and \
+                 the texture has {} mipmap levels: ",
+                tri.levels
+            )),
+            m(vec![
+                sym("lambda"),
+                EQ,
+                sym("log_2"),
+                sym("max"),
+                grp(vec![
+                    M::Abs(vec![sym("d(uv)/dx")]),
+                    M::Op(Op::Sep),
+                    M::Abs(vec![sym("d(uv)/dy")]),
+                ]),
+            ]),
+            t("."),
+        ]);
+        b.eq(vec![
+            sym("lambda_affine"),
+            EQ,
+            num(f64::from(tri.lod_affine)),
+            SEP,
+            sym("lambda_persp"),
+            EQ,
+            num(f64::from(tri.lod_perspective)),
+        ]);
+    }
     b.text(format!(
         "The {} filter reads{}:",
         filter_name(filter),
@@ -2433,6 +2467,10 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
             Filter::Bilinear => {
                 " the 2x2 texels (i, j) around (u W - 1/2, v H - 1/2), weighted by the fractions; \
                  the colour is the weighted sum"
+            }
+            Filter::Trilinear => {
+                " 2x2 texels (i, j, level) bilinearly in levels floor(lambda) and \
+                 floor(lambda) + 1 (level 0 alone when lambda <= 0), blended by frac(lambda)"
             }
         }
     ));
