@@ -378,6 +378,9 @@ fn probe(args: &ProbeArgs) -> Result<()> {
     let (x, y) = args.pixel;
     let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
         .with_context(|| args.scene.display().to_string())?;
-    print!("{}", barylab::probe::format::write(&trace, args.format.into()));
+    print!(
+        "{}",
+        barylab::probe::format::write(&trace, args.format.into())
+    );
     Ok(())
 }

@@ -26,6 +26,7 @@ pub mod weights;
 use glam::{DMat4, DVec2, DVec3, DVec4, Vec2};
 use serde::Serialize;
 
+use crate::raster::camera::{Camera, Projection};
 use crate::raster::clip::PlaneName;
 use crate::raster::interpolate::{self, Fragment, Interpolation};
 use crate::raster::project::{self, MAX_IMAGE_SIZE, SUBPIXEL, Viewport};
@@ -34,7 +35,6 @@ use crate::raster::render::{self, ClipMesh, PreparedTriangle, RenderError, Rende
 use crate::raster::setup::{self, EdgeKind, Facing, TriangleSetup};
 use crate::raster::shade::{self, ShadeParams, Shading};
 use crate::raster::texture::{Filter, Texture, Wrap};
-use crate::raster::camera::{Camera, Projection};
 use crate::scene::Scene;
 
 use weights::{AreaWeights, ExplicitFormula, HomogeneousSystem, RayHit, Seed004};
@@ -99,8 +99,12 @@ pub struct TraceSettings {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SceneForm {
+    /// A camera and a quad.
     World,
+    /// Vertices given in clip space.
     Clip,
+    /// A camera and an OBJ model.
+    Model,
 }
 
 /// The matrices of a world scene, each row by row.
@@ -515,6 +519,7 @@ pub const LIST_ALL_TRIANGLES: usize = 16;
 #[derive(Clone, Debug)]
 pub struct Prober<'a> {
     mesh: ClipMesh,
+    form: SceneForm,
     spaces: Option<WorldSpaces>,
     names: Vec<String>,
     texture: &'a Texture,
@@ -571,8 +576,14 @@ impl<'a> Prober<'a> {
             .map(|i| render::prepare_triangle(&mesh, i, viewport))
             .collect();
         let params = render::shade_params(settings, &triangles);
+        let form = match scene {
+            Scene::World(_) => SceneForm::World,
+            Scene::Clip(_) => SceneForm::Clip,
+            Scene::Model(_) => SceneForm::Model,
+        };
         Ok(Self {
             mesh,
+            form,
             spaces,
             names,
             texture,
@@ -702,8 +713,7 @@ impl<'a> Prober<'a> {
                 })
                 .map(|(ti, si, _)| (ti, si, false)),
         };
-        let detail =
-            shown.map(|(ti, si, writes)| self.detail(ti, si, writes, (x, y), window, ndc));
+        let detail = shown.map(|(ti, si, writes)| self.detail(ti, si, writes, (x, y), window, ndc));
 
         Ok(PixelTrace {
             pixel: [x, y],
@@ -716,11 +726,7 @@ impl<'a> Prober<'a> {
                 wireframe: self.settings.wireframe,
                 background: self.settings.background,
             },
-            scene_form: if self.spaces.is_some() {
-                SceneForm::World
-            } else {
-                SceneForm::Clip
-            },
+            scene_form: self.form,
             matrices: self.spaces.as_ref().map(WorldSpaces::matrices),
             sample: Sample {
                 window: window.to_array(),
