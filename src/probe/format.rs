@@ -1357,7 +1357,6 @@ fn coverage_entry(b: &mut Builder, c: &TriangleCoverage) {
 }
 
 fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
-    let names: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
     b.section(format!(
         "The vertices of triangle {} in every space",
         d.source
@@ -1502,7 +1501,6 @@ fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
             tup32(&v.color),
         ]);
     }
-    let _ = names;
 }
 
 fn rows4(m: &[[f64; 4]; 4]) -> Vec<Vec<f64>> {
@@ -2041,9 +2039,8 @@ fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
              comparison.",
         );
     }
-    if let (Some(c), Some(sw)) = (&d.clipping, &d.source_weights) {
+    if let (Some(_), Some(sw)) = (&d.clipping, &d.source_weights) {
         let src: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
-        let _ = c;
         b.para(vec![t(format!(
             "The weights lambda of the source triangle {} at the pixel are the vertices' \
              lambda interpolated the same way, first with r, s, t (screen), then with a, b, c:",
