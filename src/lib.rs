@@ -3,7 +3,9 @@
 //! - [`raster`]: the pipeline stages (no GUI).
 //! - [`scene`]: scene files (world form and raw clip-space form).
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
+//! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
+pub mod app;
 pub mod raster;
 pub mod scene;
