@@ -1,6 +1,7 @@
 //! The canvas panel: the CPU-rendered image (one or two views), the overlays, the vertex
 //! handles, hovering and pinning pixels.
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use egui::{Color32, CursorIcon, Id, Pos2, Rect, Sense, TextureHandle, TextureOptions, Ui};
@@ -67,7 +68,7 @@ pub struct CanvasOutput {
     pub scene: Scene,
     pub size: [u32; 2],
     /// One render per mode shown.
-    pub renders: Vec<(Interpolation, Render)>,
+    pub renders: Vec<(Interpolation, Arc<Render>)>,
     pub heatmap: Option<Heatmap>,
     /// Increments with every render.
     pub generation: u64,
@@ -80,7 +81,7 @@ impl CanvasOutput {
             .iter()
             .find(|(m, _)| *m == mode)
             .or(self.renders.first())
-            .map(|(_, r)| r)
+            .map(|(_, r)| r.as_ref())
     }
 
     pub fn viewport(&self) -> Viewport {
@@ -106,10 +107,15 @@ enum DragKind {
     Wipe,
 }
 
+/// Renders kept for reuse, so flipping the mode back and forth or switching comparisons does
+/// not render again.
+const RENDER_CACHE: usize = 4;
+
 /// The canvas's state between frames (not saved).
 #[derive(Default)]
 pub struct CanvasState {
     key: Option<RenderKey>,
+    cache: Vec<((Scene, Interpolation, (String, Option<std::path::PathBuf>)), Arc<Render>)>,
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
     uploaded: Option<(u64, Compare, u32)>,
@@ -201,6 +207,10 @@ impl CanvasState {
         let mut scene = state.scene.clone();
         scene.set_size(size[0], size[1]);
         let modes = modes_for(state.view.compare, state.options().mode);
+        // The mode is in `modes`; the scene's own mode field must not make keys differ.
+        let mut options = edit::options(&scene);
+        options.mode = Interpolation::Perspective;
+        edit::set_options(&mut scene, options);
         let key = RenderKey {
             scene,
             modes,
@@ -213,15 +223,29 @@ impl CanvasState {
         let mesh = key.scene.to_mesh();
         let base = key.scene.settings();
         let mut renders = Vec::new();
+        let mut rendered = false;
         for &mode in &key.modes {
+            let one = (key.scene.clone(), mode, key.texture.clone());
+            if let Some((_, r)) = self.cache.iter().find(|(k, _)| *k == one) {
+                renders.push((mode, r.clone()));
+                continue;
+            }
             let settings = crate::raster::RenderSettings { mode, ..base };
             match crate::raster::render(&mesh, texture, &settings) {
-                Ok(r) => renders.push((mode, r)),
+                Ok(r) => {
+                    let r = Arc::new(r);
+                    self.cache.push((one, r.clone()));
+                    renders.push((mode, r));
+                    rendered = true;
+                }
                 Err(e) => {
                     self.error = Some(format!("{}: {e}", text::RENDER_FAILED));
                     return false;
                 }
             }
+        }
+        if self.cache.len() > RENDER_CACHE {
+            self.cache.drain(..self.cache.len() - RENDER_CACHE);
         }
         let heat = (state.view.compare == Compare::Difference)
             .then(|| {
@@ -230,8 +254,10 @@ impl CanvasState {
                     .map(|(_, r)| heatmap::heatmap(&r.frame, (texture.width(), texture.height())))
             })
             .flatten();
-        self.timing.render_ms = start.elapsed().as_secs_f64() * 1e3;
-        self.timing.renders += 1;
+        if rendered {
+            self.timing.render_ms = start.elapsed().as_secs_f64() * 1e3;
+            self.timing.renders += 1;
+        }
         let generation = self.output.as_ref().map_or(0, |o| o.generation + 1);
         self.output = Some(CanvasOutput {
             scene: key.scene.clone(),
@@ -457,8 +483,12 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, 
                         CursorIcon::Grab
                     });
                 }
+                // Grab offset from where the button went down, not from where the drag was
+                // recognised (a few points later), so the corner follows the pointer exactly.
                 if r.drag_started()
-                    && let Some(p) = r.interact_pointer_pos()
+                    && let Some(p) = ui
+                        .input(|i| i.pointer.press_origin())
+                        .or(r.interact_pointer_pos())
                 {
                     canvas.drag = Some(DragKind::Handle {
                         index: k,
@@ -479,7 +509,9 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, 
                                 viewport,
                             });
                         }
-                    } else if let Some(p) = r.interact_pointer_pos() {
+                    } else if r.drag_delta() != egui::Vec2::ZERO
+                        && let Some(p) = r.interact_pointer_pos()
+                    {
                         out.push(Command::MoveVertex {
                             index: k,
                             to: t.to_canvas(p) - grab,

@@ -240,16 +240,18 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
         .default_open(true)
         .show(ui, |ui| vertices_ui(ui, &state.scene, out));
 
-    ui.add_space(10.0);
-    ui.horizontal(|ui| {
-        if ui.button(text::RESET_SCENE).on_hover_text(tips::RESET_SCENE).clicked() {
-            out.push(Command::ResetScene);
-        }
-        if ui.button(text::RESET_ALL).on_hover_text(tips::RESET_ALL).clicked() {
-            out.push(Command::ResetAll);
-        }
-    });
-    let mut scale = view.ui_scale;
+}
+
+/// The reset buttons and the text size, for the top bar (laid out right to left).
+pub fn reset_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
+    if ui.button(text::RESET_ALL).on_hover_text(tips::RESET_ALL).clicked() {
+        out.push(Command::ResetAll);
+    }
+    if ui.button(text::RESET_SCENE).on_hover_text(tips::RESET_SCENE).clicked() {
+        out.push(Command::ResetScene);
+    }
+    ui.separator();
+    let mut scale = state.view.ui_scale;
     if ui
         .add(
             Slider::new(&mut scale, UI_SCALE_RANGE.0..=UI_SCALE_RANGE.1)

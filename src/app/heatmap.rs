@@ -26,8 +26,8 @@ pub struct Heatmap {
     pub pixels: Vec<[u8; 4]>,
     /// The largest difference over the covered pixels, in texels.
     pub max: f32,
-    /// The difference the top of the colour scale stands for: `max` rounded up to 1, 2 or 5
-    /// times a power of ten.
+    /// The difference the top of the colour scale stands for: `max` rounded up by
+    /// [`nice_ceiling`].
     pub scale_max: f32,
 }
 
@@ -42,14 +42,16 @@ pub fn heat_color(d: f32, scale_max: f32) -> [u8; 4] {
     [c.r, c.g, c.b, 255]
 }
 
-/// The smallest 1, 2 or 5 times a power of ten that is at least `x` (at least 0.01).
+/// The smallest of 1, 1.5, 2, 3, 4, 5, 6, 8 times a power of ten that is at least `x` (at
+/// least 0.01), so the scale's top is at most a third above the largest value.
 ///
 /// ```
 /// use barylab::app::heatmap::nice_ceiling;
 /// assert_eq!(nice_ceiling(0.0), 0.01);
-/// assert_eq!(nice_ceiling(3.2), 5.0);
+/// assert_eq!(nice_ceiling(3.2), 4.0);
 /// assert_eq!(nice_ceiling(20.0), 20.0);
-/// assert_eq!(nice_ceiling(51.0), 100.0);
+/// assert_eq!(nice_ceiling(251.0), 300.0);
+/// assert_eq!(nice_ceiling(81.0), 100.0);
 /// ```
 pub fn nice_ceiling(x: f32) -> f32 {
     const FLOOR: f32 = 0.01;
@@ -57,7 +59,7 @@ pub fn nice_ceiling(x: f32) -> f32 {
         return FLOOR;
     }
     let p = 10f32.powf(x.log10().floor());
-    for m in [1.0, 2.0, 5.0, 10.0] {
+    for m in [1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0] {
         // Tolerance for x being a power of ten times m up to rounding in powf/log10.
         if x <= m * p * (1.0 + 1e-6) {
             return m * p;

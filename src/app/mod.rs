@@ -76,6 +76,10 @@ pub enum AppError {
 const SCREENSHOT_AFTER_FRAMES: u32 = 5;
 /// Give up on the screenshot after this long.
 const SCREENSHOT_TIMEOUT: Duration = Duration::from_secs(30);
+/// Side panel widths in points. Fixed, so that nothing in them (a number growing a digit)
+/// can move the canvas under a dragged corner.
+const CONTROLS_WIDTH: f32 = 400.0;
+const INSPECTOR_WIDTH: f32 = 460.0;
 /// Default window size in points.
 const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];
 
@@ -131,6 +135,7 @@ pub struct BaryApp {
     hover_report: Option<PixelReport>,
     pin_report: Option<PixelReport>,
     applied_zoom: Option<f32>,
+    styled: bool,
 }
 
 /// Text sizes in points, large enough for a projector at zoom 1.
@@ -156,12 +161,7 @@ fn apply_style(ctx: &egui::Context) {
 impl BaryApp {
     /// Creates the app: restores the saved state (if `options.persist`), then opens
     /// `options.scene` if given.
-    pub fn new(
-        ctx: &egui::Context,
-        storage: Option<&dyn eframe::Storage>,
-        options: AppOptions,
-    ) -> Self {
-        apply_style(ctx);
+    pub fn new(storage: Option<&dyn eframe::Storage>, options: AppOptions) -> Self {
         let mut message = None;
         let mut state = AppState::default();
         if options.persist
@@ -202,6 +202,7 @@ impl BaryApp {
             hover_report: None,
             pin_report: None,
             applied_zoom: None,
+            styled: false,
         }
     }
 
@@ -329,6 +330,7 @@ impl BaryApp {
         if self.commands.is_empty() {
             return;
         }
+        let before = self.state.clone();
         for c in std::mem::take(&mut self.commands) {
             if let Err(e) = self.state.apply(c) {
                 self.message = Some(Message {
@@ -337,7 +339,9 @@ impl BaryApp {
                 });
             }
         }
-        ctx.request_repaint();
+        if self.state != before {
+            ctx.request_repaint();
+        }
     }
 
     fn sync_zoom(&mut self, ctx: &egui::Context) {
@@ -368,6 +372,10 @@ impl BaryApp {
     pub fn show(&mut self, ui: &mut egui::Ui) {
         let start = Instant::now();
         let ctx = ui.ctx().clone();
+        if !self.styled {
+            apply_style(&ctx);
+            self.styled = true;
+        }
         self.sync_zoom(&ctx);
         self.shortcuts(&ctx);
         let dropped: Vec<PathBuf> = ctx.input(|i| {
@@ -408,20 +416,20 @@ impl BaryApp {
         });
         if self.state.view.show_controls {
             egui::Panel::left("controls")
-                .resizable(true)
-                .default_size(380.0)
+                .resizable(false)
+                .exact_size(CONTROLS_WIDTH)
                 .show(ui, |ui| {
-                    egui::ScrollArea::vertical().show(ui, |ui| {
+                    egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
                         controls::controls_ui(ui, &self.state, &mut self.commands);
                     });
                 });
         }
         if self.state.view.show_inspector {
             egui::Panel::right("inspector")
-                .resizable(true)
-                .default_size(440.0)
+                .resizable(false)
+                .exact_size(INSPECTOR_WIDTH)
                 .show(ui, |ui| {
-                    egui::ScrollArea::vertical().show(ui, |ui| {
+                    egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
                         inspector::inspector_ui(
                             ui,
                             self.hover_report.as_ref(),
@@ -490,6 +498,9 @@ impl BaryApp {
             {
                 self.help_open = !self.help_open;
             }
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                controls::reset_ui(ui, &self.state, &mut self.commands);
+            });
         });
     }
 
@@ -595,7 +606,7 @@ pub fn run(options: AppOptions) -> Result<(), AppError> {
         "barylab",
         native,
         Box::new(move |cc| {
-            let app = BaryApp::new(&cc.egui_ctx, cc.storage, options);
+            let app = BaryApp::new(cc.storage, options);
             if let (Some(job), Ok(mut s)) = (&app.screenshot, slot.lock()) {
                 *s = Some(job.result.clone());
             }

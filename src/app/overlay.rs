@@ -329,8 +329,14 @@ pub fn build(input: &OverlayInput) -> Overlay {
         pixel_marker(&mut shapes, hover.pixel, HOVER, wf, hf, true);
     }
 
+    let on_screen: Vec<DVec2> = input.handles.iter().filter_map(|h| h.window).collect();
+    let centre = if on_screen.is_empty() {
+        DVec2::new(wf / 2.0, hf / 2.0)
+    } else {
+        on_screen.iter().sum::<DVec2>() / on_screen.len() as f64
+    };
     for handle in &input.handles {
-        handle_shapes(&mut shapes, handle);
+        handle_shapes(&mut shapes, handle, centre);
     }
     Overlay { shapes }
 }
@@ -413,7 +419,9 @@ fn pixel_marker(shapes: &mut Vec<Shape>, pixel: [u32; 2], color: Rgba, w: f64, h
     });
 }
 
-fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark) {
+/// A handle and its label; the label goes on the side away from `centre` (the handles'
+/// centroid), so labels of neighbouring corners do not cover each other.
+fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVec2) {
     let color = vertex_color(h.index);
     let name = vertex_name(h.index);
     let Some(p) = h.window else {
@@ -441,10 +449,16 @@ fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark) {
         color: [0, 0, 0, 255],
         background: None,
     });
+    let left = p.x < centre.x;
+    let dx = HANDLE_RADIUS + 6.0;
     shapes.push(Shape::Text {
         at: p,
-        offset: [HANDLE_RADIUS + 6.0, 0.0],
-        anchor: Anchor::LeftCenter,
+        offset: [if left { -dx } else { dx }, 0.0],
+        anchor: if left {
+            Anchor::RightCenter
+        } else {
+            Anchor::LeftCenter
+        },
         text: format!("{name}  w = {}", format_w(h.w)),
         size: TEXT_LABEL,
         color,

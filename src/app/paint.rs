@@ -140,7 +140,7 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 background,
             } => {
                 let pos = t.to_screen(*at) + egui::vec2(offset[0], offset[1]);
-                label(&painter, pos, align(*anchor), text, *size, *c, *background);
+                label_inside(&painter, clip, pos, align(*anchor), text, *size, *c, *background);
             }
             Shape::PixelGrid {
                 width,
@@ -174,13 +174,34 @@ pub fn label(
     c: Rgba,
     background: Option<Rgba>,
 ) -> Rect {
+    label_inside(painter, Rect::EVERYTHING, pos, anchor, text, size, c, background)
+}
+
+/// [`label`], moved as little as needed to lie inside `bounds` (if it fits).
+#[allow(clippy::too_many_arguments)]
+pub fn label_inside(
+    painter: &egui::Painter,
+    bounds: Rect,
+    pos: Pos2,
+    anchor: Align2,
+    text: &str,
+    size: f32,
+    c: Rgba,
+    background: Option<Rgba>,
+) -> Rect {
     let galley = painter.layout_no_wrap(text.to_string(), FontId::proportional(size), color(c));
     let pad = if background.is_some() {
         LABEL_PAD
     } else {
         egui::Vec2::ZERO
     };
-    let outer = anchor.anchor_size(pos, galley.size() + 2.0 * pad);
+    let mut outer = anchor.anchor_size(pos, galley.size() + 2.0 * pad);
+    let inner = bounds.shrink(2.0);
+    if inner.is_finite() && outer.width() <= inner.width() && outer.height() <= inner.height() {
+        let dx = (inner.left() - outer.left()).max(0.0) + (inner.right() - outer.right()).min(0.0);
+        let dy = (inner.top() - outer.top()).max(0.0) + (inner.bottom() - outer.bottom()).min(0.0);
+        outer = outer.translate(egui::vec2(dx, dy));
+    }
     if let Some(bg) = background {
         painter.rect_filled(outer, 4.0, color(bg));
     }
