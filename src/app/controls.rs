@@ -335,7 +335,7 @@ fn field(ui: &mut Ui, v: &mut f64, speed: f64, tip: &str) -> bool {
 fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     match scene {
         Scene::World(s) => {
-            egui::Grid::new("corners").num_columns(3).spacing([6.0, 6.0]).show(ui, |ui| {
+            egui::Grid::new("corners").num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
                 for (k, c) in s.quad.iter().enumerate() {
                     vertex_label(ui, k);
                     let mut p = c.position;
@@ -345,9 +345,10 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                         changed |= field(ui, &mut p.y, 0.01, tips::POSITION);
                         changed |= field(ui, &mut p.z, 0.01, tips::POSITION);
                     });
+                    ui.end_row();
                     let mut uv = c.uv.as_dvec2();
+                    ui.label(RichText::new(text::UV).weak());
                     ui.horizontal(|ui| {
-                        ui.label(text::UV);
                         changed |= field(ui, &mut uv.x, 0.01, tips::UV);
                         changed |= field(ui, &mut uv.y, 0.01, tips::UV);
                     });
@@ -365,7 +366,7 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
             ui.label(RichText::new(format!("{}: x, y, z", text::POSITION)).weak());
         }
         Scene::Clip(s) => {
-            egui::Grid::new("clip-vertices").num_columns(3).spacing([6.0, 6.0]).show(ui, |ui| {
+            egui::Grid::new("clip-vertices").num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
                 for (k, v) in s.vertices.iter().enumerate() {
                     vertex_label(ui, k);
                     let mut c = v.clip;
@@ -376,9 +377,10 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                         changed |= field(ui, &mut c.z, 0.01, tips::CLIP);
                         changed |= field(ui, &mut c.w, 0.01, tips::CLIP);
                     });
+                    ui.end_row();
                     let mut uv = v.uv.as_dvec2();
+                    ui.label(RichText::new(text::UV).weak());
                     ui.horizontal(|ui| {
-                        ui.label(text::UV);
                         changed |= field(ui, &mut uv.x, 0.01, tips::UV);
                         changed |= field(ui, &mut uv.y, 0.01, tips::UV);
                     });

@@ -6,8 +6,9 @@ use egui::{RichText, Ui};
 pub mod text {
     pub const TITLE: &str = "Help";
     pub const INTRO: &str = "barylab draws a textured quad (two triangles, A B C and A C D) with its own \
-        CPU rasterizer, exactly as a GPU does: samples at pixel centres, the top-left fill rule, \
-        clipping in clip space, perspective-correct interpolation with 1/w.";
+        CPU rasterizer, exactly as a GPU does: samples at pixel centres, one owner for every pixel on a \
+        shared edge (the fill rule), clipping in clip space, perspective-correct \
+        interpolation with 1/w.";
     pub const MOUSE: &str = "Mouse";
     pub const KEYS: &str = "Keys";
     pub const MOUSE_ROWS: &[(&str, &str)] = &[

@@ -139,8 +139,32 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 color: c,
                 background,
             } => {
-                let pos = t.to_screen(*at) + egui::vec2(offset[0], offset[1]);
-                label_inside(&painter, clip, pos, align(*anchor), text, *size, *c, *background);
+                let base = t.to_screen(*at);
+                let pos = base + egui::vec2(offset[0], offset[1]);
+                let mut anchor = align(*anchor);
+                let mut pos = pos;
+                // A label that would stick out on one side goes to the other side of its
+                // point (mirrored), before it is pushed inside.
+                let galley = painter.layout_no_wrap(
+                    text.clone(),
+                    FontId::proportional(*size),
+                    color(*c),
+                );
+                let pad = if background.is_some() {
+                    LABEL_PAD
+                } else {
+                    egui::Vec2::ZERO
+                };
+                let outer = anchor.anchor_size(pos, galley.size() + 2.0 * pad);
+                let mirrored = anchor.flipped_x();
+                let mirrored_pos = base + egui::vec2(-offset[0], offset[1]);
+                let alt = mirrored.anchor_size(mirrored_pos, galley.size() + 2.0 * pad);
+                let sticks_out = |r: Rect| r.left() < clip.left() || r.right() > clip.right();
+                if sticks_out(outer) && !sticks_out(alt) {
+                    anchor = mirrored;
+                    pos = mirrored_pos;
+                }
+                label_inside(&painter, clip, pos, anchor, text, *size, *c, *background);
             }
             Shape::PixelGrid {
                 width,
