@@ -181,3 +181,67 @@ fn clicking_pins_a_pixel_and_arrow_keys_move_it() {
     h.run();
     assert_eq!(h.state().state().view.pinned, None);
 }
+
+/// An in-memory eframe storage.
+#[derive(Default)]
+struct MemoryStorage(std::collections::HashMap<String, String>);
+
+impl eframe::Storage for MemoryStorage {
+    fn get_string(&self, key: &str) -> Option<String> {
+        self.0.get(key).cloned()
+    }
+    fn set_string(&mut self, key: &str, value: String) {
+        self.0.insert(key.to_string(), value);
+    }
+    fn remove_string(&mut self, key: &str) {
+        self.0.remove(key);
+    }
+    fn flush(&mut self) {}
+}
+
+#[test]
+fn state_is_saved_on_exit_and_restored_on_start() {
+    use eframe::App as _;
+    let mut h = harness();
+    h.get_by_label("Affine").click();
+    h.run();
+    h.get_by_label("Wipe").click();
+    h.run();
+    h.state_mut()
+        .push(Command::Preset(barylab::app::presets::Preset::FarCorner));
+    h.run();
+    let before = h.state().state().clone();
+    let mut storage = MemoryStorage::default();
+    // The app saves through eframe's storage (only when persisting).
+    let mut app = BaryApp::new(
+        None,
+        AppOptions {
+            persist: true,
+            ..AppOptions::default()
+        },
+    );
+    for c in [
+        Command::SetMode(Interpolation::Affine),
+        Command::SetCompare(barylab::app::state::Compare::Wipe),
+        Command::Preset(barylab::app::presets::Preset::FarCorner),
+    ] {
+        app.push(c);
+    }
+    let mut h2 = Harness::builder()
+        .with_size(SIZE)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    h2.run();
+    assert_eq!(h2.state().state(), &before);
+    h2.state_mut().save(&mut storage);
+    let restored = BaryApp::new(
+        Some(&storage),
+        AppOptions {
+            persist: true,
+            ..AppOptions::default()
+        },
+    );
+    assert_eq!(restored.state(), &before);
+    // Without persistence nothing is read.
+    let fresh = BaryApp::new(Some(&storage), AppOptions::default());
+    assert_eq!(fresh.state().scene, Scene::default_scene());
+}

@@ -137,17 +137,37 @@ pub fn layout(
     pixel_size: u32,
     pixels_per_point: f32,
 ) -> (Vec<(Rect, ViewContent)>, [u32; 2]) {
+    let aspect = if aspect.is_finite() && aspect > 0.0 {
+        aspect
+    } else {
+        1.0
+    };
     let areas: Vec<(Rect, ViewContent)> = match compare {
         Compare::SideBySide => {
+            // Side by side or one above the other, whichever gives larger views.
             let w = ((available.width() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
-            let left = Rect::from_min_size(available.min, egui::vec2(w, available.height()));
-            let right = Rect::from_min_size(
-                Pos2::new(available.max.x - w, available.min.y),
-                egui::vec2(w, available.height()),
-            );
+            let h = ((available.height() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
+            let fit = |w: f32, h: f32| w.min(h * aspect.max(f32::MIN_POSITIVE));
+            let (first, second) = if fit(w, available.height()) >= fit(available.width(), h) {
+                (
+                    Rect::from_min_size(available.min, egui::vec2(w, available.height())),
+                    Rect::from_min_size(
+                        Pos2::new(available.max.x - w, available.min.y),
+                        egui::vec2(w, available.height()),
+                    ),
+                )
+            } else {
+                (
+                    Rect::from_min_size(available.min, egui::vec2(available.width(), h)),
+                    Rect::from_min_size(
+                        Pos2::new(available.min.x, available.max.y - h),
+                        egui::vec2(available.width(), h),
+                    ),
+                )
+            };
             vec![
-                (left, ViewContent::Mode(Interpolation::Affine)),
-                (right, ViewContent::Mode(Interpolation::Perspective)),
+                (first, ViewContent::Mode(Interpolation::Affine)),
+                (second, ViewContent::Mode(Interpolation::Perspective)),
             ]
         }
         Compare::Single => vec![(available, ViewContent::Mode(Interpolation::Perspective))],
@@ -156,11 +176,6 @@ pub fn layout(
     };
     let scale = pixel_size as f32 / pixels_per_point;
     let max = crate::raster::project::MAX_IMAGE_SIZE;
-    let aspect = if aspect.is_finite() && aspect > 0.0 {
-        aspect
-    } else {
-        1.0
-    };
     let size_of = |r: Rect| {
         let fit_w = r.width().min(r.height() * aspect).max(1.0);
         let fit_h = (fit_w / aspect).max(1.0);
@@ -168,10 +183,14 @@ pub fn layout(
         let h = ((fit_h / scale).floor() as u32).clamp(1, max);
         [w, h]
     };
-    let size = size_of(areas[0].0);
+    let size = size_of(Rect::from_min_max(
+        areas[0].0.min + egui::vec2(0.0, overlay::TITLE_STRIP),
+        areas[0].0.max,
+    ));
     let views = areas
         .into_iter()
         .map(|(area, content)| {
+            let area = Rect::from_min_max(area.min + egui::vec2(0.0, overlay::TITLE_STRIP), area.max);
             let shown = egui::vec2(size[0] as f32 * scale, size[1] as f32 * scale);
             let min = area.center() - shown / 2.0;
             // Snap to whole physical pixels so nearest magnification is crisp.
@@ -576,7 +595,10 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, 
                 _ => None,
             },
         };
-        let clip = view.rect.expand(2.0);
+        let clip = Rect::from_min_max(
+            view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
+            view.rect.max + egui::vec2(2.0, 2.0),
+        );
         paint::paint(&painter, clip, view.transform, &overlay::build(&input_overlay));
         if view_settings.show_handles
             && let Some(note) = overlay::behind_camera_note(&handles)

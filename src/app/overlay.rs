@@ -4,7 +4,8 @@
 //! Coordinates: canvas coordinates are the rasterizer's window coordinates of the rendered
 //! image, in its pixels (x right, y down, pixel (c, r) covers [c, c+1] x [r, r+1], its sample at
 //! (c + 1/2, r + 1/2)). Line widths, radii, text sizes and offsets are in display points, so
-//! labels keep their size whatever the pixel size.
+//! labels keep their size whatever the pixel size. Titles lie above the image (negative y
+//! offsets), in a strip [`TITLE_STRIP`] points high.
 
 use glam::DVec2;
 
@@ -48,6 +49,11 @@ pub const HANDLE_RADIUS: f32 = 11.0;
 pub const TEXT_LABEL: f32 = 20.0;
 pub const TEXT_BADGE: f32 = 24.0;
 pub const TEXT_SMALL: f32 = 16.0;
+
+/// Points: titles (the mode, the heatmap's meaning) sit this far above the image, in the
+/// strip of [`TITLE_STRIP`] points the canvas keeps free there.
+pub const TITLE_GAP: f32 = 6.0;
+pub const TITLE_STRIP: f32 = 44.0;
 
 /// Pixel sizes (display pixels per rendered pixel) from which the grid and sample dots show.
 pub const GRID_FROM_PIXEL_SIZE: u32 = 6;
@@ -93,6 +99,8 @@ impl Stroke {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Anchor {
     LeftTop,
+    LeftBottom,
+    RightBottom,
     LeftCenter,
     CenterTop,
     CenterBottom,
@@ -265,12 +273,12 @@ pub fn build(input: &OverlayInput) -> Overlay {
             stroke: Some(Stroke::new(2.0, SHADOW)),
         });
         for (mode, anchor, dx) in [
-            (left, Anchor::RightTop, -10.0),
-            (right, Anchor::LeftTop, 10.0),
+            (left, Anchor::RightBottom, -10.0),
+            (right, Anchor::LeftBottom, 10.0),
         ] {
             shapes.push(Shape::Text {
                 at: DVec2::new(x, 0.0),
-                offset: [dx, 10.0],
+                offset: [dx, -TITLE_GAP],
                 anchor,
                 text: mode_label(mode).to_string(),
                 size: TEXT_BADGE,
@@ -281,8 +289,8 @@ pub fn build(input: &OverlayInput) -> Overlay {
     } else if let Some(mode) = input.mode {
         shapes.push(Shape::Text {
             at: DVec2::ZERO,
-            offset: [10.0, 10.0],
-            anchor: Anchor::LeftTop,
+            offset: [0.0, -TITLE_GAP],
+            anchor: Anchor::LeftBottom,
             text: mode_label(mode).to_string(),
             size: TEXT_BADGE,
             color: LABEL_TEXT,
@@ -293,8 +301,8 @@ pub fn build(input: &OverlayInput) -> Overlay {
     if let Some(top) = input.color_bar {
         shapes.push(Shape::Text {
             at: DVec2::ZERO,
-            offset: [10.0, 10.0],
-            anchor: Anchor::LeftTop,
+            offset: [0.0, -TITLE_GAP],
+            anchor: Anchor::LeftBottom,
             text: text::DIFFERENCE.to_string(),
             size: TEXT_BADGE,
             color: LABEL_TEXT,
@@ -449,15 +457,17 @@ fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVec2) {
         color: [0, 0, 0, 255],
         background: None,
     });
-    let left = p.x < centre.x;
-    let dx = HANDLE_RADIUS + 6.0;
+    // Diagonally outward from the centroid: neighbouring corners' labels go different ways.
+    let (left, up) = (p.x < centre.x, p.y < centre.y);
+    let d = HANDLE_RADIUS * 0.75;
     shapes.push(Shape::Text {
         at: p,
-        offset: [if left { -dx } else { dx }, 0.0],
-        anchor: if left {
-            Anchor::RightCenter
-        } else {
-            Anchor::LeftCenter
+        offset: [if left { -d } else { d }, if up { -d } else { d }],
+        anchor: match (left, up) {
+            (true, true) => Anchor::RightBottom,
+            (true, false) => Anchor::RightTop,
+            (false, true) => Anchor::LeftBottom,
+            (false, false) => Anchor::LeftTop,
         },
         text: format!("{name}  w = {}", format_w(h.w)),
         size: TEXT_LABEL,

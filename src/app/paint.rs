@@ -42,6 +42,8 @@ fn stroke(s: Stroke) -> EStroke {
 fn align(a: Anchor) -> Align2 {
     match a {
         Anchor::LeftTop => Align2::LEFT_TOP,
+        Anchor::LeftBottom => Align2::LEFT_BOTTOM,
+        Anchor::RightBottom => Align2::RIGHT_BOTTOM,
         Anchor::LeftCenter => Align2::LEFT_CENTER,
         Anchor::CenterTop => Align2::CENTER_TOP,
         Anchor::CenterBottom => Align2::CENTER_BOTTOM,
@@ -156,13 +158,20 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                     egui::Vec2::ZERO
                 };
                 let outer = anchor.anchor_size(pos, galley.size() + 2.0 * pad);
-                let mirrored = anchor.flipped_x();
-                let mirrored_pos = base + egui::vec2(-offset[0], offset[1]);
-                let alt = mirrored.anchor_size(mirrored_pos, galley.size() + 2.0 * pad);
-                let sticks_out = |r: Rect| r.left() < clip.left() || r.right() > clip.right();
-                if sticks_out(outer) && !sticks_out(alt) {
-                    anchor = mirrored;
-                    pos = mirrored_pos;
+                let size_box = galley.size() + 2.0 * pad;
+                let sticks_x = |r: Rect| r.left() < clip.left() || r.right() > clip.right();
+                let sticks_y = |r: Rect| r.top() < clip.top() || r.bottom() > clip.bottom();
+                if sticks_x(outer) {
+                    let (a, p) = (anchor.flipped_x(), base + egui::vec2(-offset[0], pos.y - base.y));
+                    if !sticks_x(a.anchor_size(p, size_box)) {
+                        (anchor, pos) = (a, p);
+                    }
+                }
+                if sticks_y(anchor.anchor_size(pos, size_box)) {
+                    let (a, p) = (anchor.flipped_y(), Pos2::new(pos.x, base.y - offset[1]));
+                    if !sticks_y(a.anchor_size(p, size_box)) {
+                        (anchor, pos) = (a, p);
+                    }
                 }
                 label_inside(&painter, clip, pos, anchor, text, *size, *c, *background);
             }

@@ -79,11 +79,13 @@ impl Preset {
                     up: DVec3::Y,
                     projection: perspective(60.0),
                 };
+                // Seen from the left, so u runs from the far end (A, D) to the near end (B, C)
+                // and the texture reads the right way round.
                 s.quad = [
-                    corner([0.6, -1.0, 1.0], [0.0, 0.0], red),
-                    corner([0.6, -1.0, -9.0], [1.0, 0.0], green),
-                    corner([0.6, 1.0, -9.0], [1.0, 1.0], blue),
-                    corner([0.6, 1.0, 1.0], [0.0, 1.0], yellow),
+                    corner([0.6, -0.5, -9.0], [0.0, 0.0], red),
+                    corner([0.6, -0.5, 0.8], [1.0, 0.0], green),
+                    corner([0.6, 0.5, 0.8], [1.0, 1.0], blue),
+                    corner([0.6, 0.5, -9.0], [0.0, 1.0], yellow),
                 ];
             }
             Preset::FarCorner => {
@@ -136,6 +138,12 @@ mod tests {
         assert!((far[2].w() - 15.0).abs() < 1e-9);
         let (a, b) = (far[2].window.expect("far"), front[2].window.expect("front"));
         assert!((a - b).length() < 1e-9);
+        let wall = vertices_on_screen(&Preset::GrazingWall.scene(), vp);
+        assert!(wall.iter().all(|v| v.window.is_some_and(|p| p.x > 0.0
+            && p.y > 0.0
+            && p.x < 800.0
+            && p.y < 600.0)));
+        assert!(wall[0].w() / wall[1].w() > 5.0);
         let behind = vertices_on_screen(&Preset::CornerBehind.scene(), vp);
         assert!(behind[0].window.is_none() && behind[1..].iter().all(|v| v.window.is_some()));
     }
