@@ -153,7 +153,9 @@ pub fn main() -> ExitCode {
 fn parse_window_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = parse_size(s)?;
     if w < 200 || h < 200 {
-        return Err(format!("window size {w}x{h} is too small (at least 200x200)"));
+        return Err(format!(
+            "window size {w}x{h} is too small (at least 200x200)"
+        ));
     }
     Ok((w, h))
 }

@@ -10,6 +10,9 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec2;
 
+/// Frames a run may take to settle (smooth scrolling spreads a wheel event over a few).
+const MAX_STEPS: u64 = 30;
+
 /// Window size of the tests, in points.
 const SIZE: egui::Vec2 = egui::vec2(1500.0, 950.0);
 
@@ -17,6 +20,7 @@ fn harness() -> Harness<'static, BaryApp> {
     let app = BaryApp::new(None, AppOptions::default());
     let mut h = Harness::builder()
         .with_size(SIZE)
+        .with_max_steps(MAX_STEPS)
         .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
     h.run();
     h
@@ -63,7 +67,10 @@ fn switching_the_mode_changes_the_rendered_canvas() {
         differing > affine.len() / 20,
         "only {differing} pixels changed"
     );
-    assert!(h.state().canvas().timing.uploads > uploads, "texture not re-uploaded");
+    assert!(
+        h.state().canvas().timing.uploads > uploads,
+        "texture not re-uploaded"
+    );
     // The key P flips back, to the very same image.
     h.key_press(egui::Key::P);
     h.run();
@@ -121,8 +128,8 @@ fn dragging_handle_a_moves_vertex_a() {
     h.run();
     let after = vertex_windows(&h);
     let moved = after[0].expect("A on screen");
-    let expected = a + DVec2::new(f64::from(delta.x), f64::from(delta.y))
-        / f64::from(view.transform.scale);
+    let expected =
+        a + DVec2::new(f64::from(delta.x), f64::from(delta.y)) / f64::from(view.transform.scale);
     assert!(
         (moved - expected).length() < 0.01,
         "A at {moved}, expected {expected}"
@@ -244,4 +251,39 @@ fn state_is_saved_on_exit_and_restored_on_start() {
     // Without persistence nothing is read.
     let fresh = BaryApp::new(Some(&storage), AppOptions::default());
     assert_eq!(fresh.state().scene, Scene::default_scene());
+}
+
+#[test]
+fn scrolling_on_a_handle_pushes_the_corner_away_along_its_ray() {
+    let mut h = harness();
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let before = vertices_on_screen(&h.state().state().scene, out.viewport());
+    let c = before[2].window.expect("C on screen");
+    let pos = h.state().canvas().views[0].transform.to_screen(c);
+    h.hover_at(pos);
+    h.run();
+    h.event(egui::Event::MouseWheel {
+        unit: egui::MouseWheelUnit::Point,
+        delta: egui::vec2(0.0, 60.0),
+        phase: egui::TouchPhase::Move,
+        source: egui::MouseWheelSource::Wheel,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let after = vertices_on_screen(&h.state().state().scene, out.viewport());
+    assert!(
+        after[2].w() > before[2].w() * 1.1,
+        "w {} -> {}",
+        before[2].w(),
+        after[2].w()
+    );
+    let moved = after[2].window.expect("C on screen");
+    assert!(
+        (moved - c).length() < 1e-6,
+        "C moved on screen: {c} -> {moved}"
+    );
+    // The affine image only depends on screen positions: it is the same; the perspective
+    // one changed.
+    assert_eq!(after[0].w(), before[0].w());
 }

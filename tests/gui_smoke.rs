@@ -123,7 +123,10 @@ fn the_window_opens_renders_and_saves_a_screenshot() {
         ("default.png", vec![]),
         (
             "front.png",
-            vec![concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes/front.json")],
+            vec![concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/assets/scenes/front.json"
+            )],
         ),
     ] {
         let shot = dir.path().join(name);
@@ -133,16 +136,28 @@ fn the_window_opens_renders_and_saves_a_screenshot() {
         let (ok, err) = run_app(&x.display, &args);
         assert!(ok, "barylab failed: {err}");
         let img = image::open(&shot).expect("screenshot PNG").to_rgba8();
-        assert!(img.width() >= 1000 && img.height() >= 600, "{}x{}", img.width(), img.height());
+        assert!(
+            img.width() >= 1000 && img.height() >= 600,
+            "{}x{}",
+            img.width(),
+            img.height()
+        );
         let mut colors = std::collections::HashSet::new();
         for p in img.pixels() {
             colors.insert(p.0);
         }
-        assert!(colors.len() > 500, "{name}: only {} colours: blank?", colors.len());
+        assert!(
+            colors.len() > 500,
+            "{name}: only {} colours: blank?",
+            colors.len()
+        );
         // The canvas background (the scene's background colour) is on screen.
         let bg = barylab::raster::render::DEFAULT_BACKGROUND;
         let bg_pixels = img.pixels().filter(|p| p.0 == bg).count();
-        assert!(bg_pixels > 1000, "{name}: canvas background not found ({bg_pixels} px)");
+        assert!(
+            bg_pixels > 1000,
+            "{name}: canvas background not found ({bg_pixels} px)"
+        );
     }
 }
 
@@ -161,5 +176,8 @@ fn a_bad_scene_file_is_reported_in_one_line_without_opening_a_window() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.starts_with("error: ") && err.contains("bad.json"), "{err}");
+    assert!(
+        err.starts_with("error: ") && err.contains("bad.json"),
+        "{err}"
+    );
 }

@@ -107,6 +107,12 @@ enum DragKind {
     Wipe,
 }
 
+/// What one cached render depends on: the sized scene, the mode, the texture.
+type RenderCacheKey = (Scene, Interpolation, TextureKey);
+
+/// A texture's name and the folder it is resolved against.
+pub type TextureKey = (String, Option<std::path::PathBuf>);
+
 /// Renders kept for reuse, so flipping the mode back and forth or switching comparisons does
 /// not render again.
 const RENDER_CACHE: usize = 4;
@@ -115,7 +121,7 @@ const RENDER_CACHE: usize = 4;
 #[derive(Default)]
 pub struct CanvasState {
     key: Option<RenderKey>,
-    cache: Vec<((Scene, Interpolation, (String, Option<std::path::PathBuf>)), Arc<Render>)>,
+    cache: Vec<(RenderCacheKey, Arc<Render>)>,
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
     uploaded: Option<(u64, Compare, u32)>,
@@ -190,7 +196,8 @@ pub fn layout(
     let views = areas
         .into_iter()
         .map(|(area, content)| {
-            let area = Rect::from_min_max(area.min + egui::vec2(0.0, overlay::TITLE_STRIP), area.max);
+            let area =
+                Rect::from_min_max(area.min + egui::vec2(0.0, overlay::TITLE_STRIP), area.max);
             let shown = egui::vec2(size[0] as f32 * scale, size[1] as f32 * scale);
             let min = area.center() - shown / 2.0;
             // Snap to whole physical pixels so nearest magnification is crisp.
@@ -381,7 +388,12 @@ pub struct CanvasInput<'a> {
 }
 
 /// The canvas panel.
-pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, out: &mut Vec<Command>) {
+pub fn canvas_ui(
+    ui: &mut Ui,
+    canvas: &mut CanvasState,
+    input: CanvasInput<'_>,
+    out: &mut Vec<Command>,
+) {
     let state = input.state;
     let view_settings = &state.view;
     let ppp = ui.ctx().pixels_per_point();
@@ -460,10 +472,8 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, 
         // The wipe line.
         if view.content == ViewContent::Wipe {
             let x = view.rect.left() + view_settings.wipe * view.rect.width();
-            let grab = Rect::from_x_y_ranges(
-                (x - WIPE_GRAB)..=(x + WIPE_GRAB),
-                view.rect.y_range(),
-            );
+            let grab =
+                Rect::from_x_y_ranges((x - WIPE_GRAB)..=(x + WIPE_GRAB), view.rect.y_range());
             let r = ui.interact(grab, base_id.with(("wipe", vi)), Sense::drag());
             if r.hovered() || r.dragged() {
                 ui.ctx().set_cursor_icon(CursorIcon::ResizeHorizontal);
@@ -474,7 +484,9 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, 
             if r.dragged()
                 && let Some(p) = r.interact_pointer_pos()
             {
-                out.push(Command::SetWipe((p.x - view.rect.left()) / view.rect.width()));
+                out.push(Command::SetWipe(
+                    (p.x - view.rect.left()) / view.rect.width(),
+                ));
             }
             r.on_hover_text(super::controls::tips::WIPE_LINE);
         }
@@ -599,7 +611,12 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, 
             view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
             view.rect.max + egui::vec2(2.0, 2.0),
         );
-        paint::paint(&painter, clip, view.transform, &overlay::build(&input_overlay));
+        paint::paint(
+            &painter,
+            clip,
+            view.transform,
+            &overlay::build(&input_overlay),
+        );
         if view_settings.show_handles
             && let Some(note) = overlay::behind_camera_note(&handles)
         {
@@ -615,4 +632,3 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>, 
         }
     }
 }
-

@@ -68,15 +68,18 @@ pub mod tips {
     pub const PERSPECTIVE: &str = "Divide by w before interpolating and multiply back \
         (GLSL `smooth`, what GPUs do by default). Key: P";
     pub const SINGLE: &str = "One view in the chosen interpolation mode. Key: 1";
-    pub const SIDE_BY_SIDE: &str = "Affine on the left, perspective-correct on the right, same view. Key: 2";
+    pub const SIDE_BY_SIDE: &str =
+        "Affine on the left, perspective-correct on the right, same view. Key: 2";
     pub const WIPE: &str = "One view split by a line you can drag: affine on the left, \
         perspective-correct on the right. Key: 3";
     pub const DIFFERENCE: &str = "How far apart the two modes' texture coordinates are, in texels, \
         as a heatmap with a colour bar. Key: 4";
     pub const TEXTURE: &str = "Sample the texture at the interpolated uv.";
     pub const VERTEX_COLOR: &str = "Interpolate the corners' colours.";
-    pub const BARYCENTRIC: &str = "Show the three weights of the pixel's triangle as red, green, blue.";
-    pub const DEPTH: &str = "Window depth z/w as grey (near black, far white): it is linear on screen.";
+    pub const BARYCENTRIC: &str =
+        "Show the three weights of the pixel's triangle as red, green, blue.";
+    pub const DEPTH: &str =
+        "Window depth z/w as grey (near black, far white): it is linear on screen.";
     pub const NEAREST: &str = "GL_NEAREST: the texel containing the sample.";
     pub const BILINEAR: &str = "GL_LINEAR: the four texels around the sample, weighted.";
     pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
@@ -127,8 +130,13 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
             ),
         ] {
             let on = options.mode == mode;
-            let rich = RichText::new(label).size(ui.style().text_styles[&egui::TextStyle::Button].size * 1.1);
-            let rich = if on { rich.strong().color(Color32::BLACK) } else { rich };
+            let rich = RichText::new(label)
+                .size(ui.style().text_styles[&egui::TextStyle::Button].size * 1.1);
+            let rich = if on {
+                rich.strong().color(Color32::BLACK)
+            } else {
+                rich
+            };
             let mut button = egui::Button::new(rich).selected(on);
             if on {
                 button = button.fill(c);
@@ -212,8 +220,22 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
     {
         out.push(Command::SetPixelSize(px));
     }
-    checkbox(ui, view.show_grid, text::GRID, tips::GRID, out, Command::SetShowGrid);
-    checkbox(ui, view.show_handles, text::HANDLES, tips::HANDLES, out, Command::SetShowHandles);
+    checkbox(
+        ui,
+        view.show_grid,
+        text::GRID,
+        tips::GRID,
+        out,
+        Command::SetShowGrid,
+    );
+    checkbox(
+        ui,
+        view.show_handles,
+        text::HANDLES,
+        tips::HANDLES,
+        out,
+        Command::SetShowHandles,
+    );
     checkbox(
         ui,
         view.show_sub_areas,
@@ -226,7 +248,11 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
     section(ui, text::PRESETS);
     ui.horizontal_wrapped(|ui| {
         for p in Preset::ALL {
-            if ui.button(text::preset(p)).on_hover_text(tips::PRESET).clicked() {
+            if ui
+                .button(text::preset(p))
+                .on_hover_text(tips::PRESET)
+                .clicked()
+            {
                 out.push(Command::Preset(p));
             }
         }
@@ -239,15 +265,22 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
     egui::CollapsingHeader::new(RichText::new(text::VERTICES).strong())
         .default_open(true)
         .show(ui, |ui| vertices_ui(ui, &state.scene, out));
-
 }
 
 /// The reset buttons and the text size, for the top bar (laid out right to left).
 pub fn reset_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
-    if ui.button(text::RESET_ALL).on_hover_text(tips::RESET_ALL).clicked() {
+    if ui
+        .button(text::RESET_ALL)
+        .on_hover_text(tips::RESET_ALL)
+        .clicked()
+    {
         out.push(Command::ResetAll);
     }
-    if ui.button(text::RESET_SCENE).on_hover_text(tips::RESET_SCENE).clicked() {
+    if ui
+        .button(text::RESET_SCENE)
+        .on_hover_text(tips::RESET_SCENE)
+        .clicked()
+    {
         out.push(Command::ResetScene);
     }
     ui.separator();
@@ -267,7 +300,11 @@ pub fn reset_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
 
 fn section(ui: &mut Ui, title: &str) {
     ui.add_space(8.0);
-    ui.label(RichText::new(title).strong().size(ui.style().text_styles[&egui::TextStyle::Heading].size * 0.8));
+    ui.label(
+        RichText::new(title)
+            .strong()
+            .size(ui.style().text_styles[&egui::TextStyle::Heading].size * 0.8),
+    );
 }
 
 fn checkbox(
@@ -292,11 +329,19 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     let mut tilt = s.tilt;
     let mut changed = false;
     changed |= ui
-        .add(Slider::new(&mut tilt.pitch_deg, -90.0..=90.0).suffix("°").text(text::PITCH))
+        .add(
+            Slider::new(&mut tilt.pitch_deg, -90.0..=90.0)
+                .suffix("°")
+                .text(text::PITCH),
+        )
         .on_hover_text(tips::PITCH)
         .changed();
     changed |= ui
-        .add(Slider::new(&mut tilt.yaw_deg, -90.0..=90.0).suffix("°").text(text::YAW))
+        .add(
+            Slider::new(&mut tilt.yaw_deg, -90.0..=90.0)
+                .suffix("°")
+                .text(text::YAW),
+        )
         .on_hover_text(tips::YAW)
         .changed();
     if changed {
@@ -307,7 +352,11 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     }
     if let Some(mut fov) = edit::fov_deg(scene)
         && ui
-            .add(Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1).suffix("°").text(text::FOV))
+            .add(
+                Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
+                    .suffix("°")
+                    .text(text::FOV),
+            )
             .on_hover_text(tips::FOV)
             .changed()
     {
@@ -335,65 +384,71 @@ fn field(ui: &mut Ui, v: &mut f64, speed: f64, tip: &str) -> bool {
 fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     match scene {
         Scene::World(s) => {
-            egui::Grid::new("corners").num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
-                for (k, c) in s.quad.iter().enumerate() {
-                    vertex_label(ui, k);
-                    let mut p = c.position;
-                    let mut changed = false;
-                    ui.horizontal(|ui| {
-                        changed |= field(ui, &mut p.x, 0.01, tips::POSITION);
-                        changed |= field(ui, &mut p.y, 0.01, tips::POSITION);
-                        changed |= field(ui, &mut p.z, 0.01, tips::POSITION);
-                    });
-                    ui.end_row();
-                    let mut uv = c.uv.as_dvec2();
-                    ui.label(RichText::new(text::UV).weak());
-                    ui.horizontal(|ui| {
-                        changed |= field(ui, &mut uv.x, 0.01, tips::UV);
-                        changed |= field(ui, &mut uv.y, 0.01, tips::UV);
-                    });
-                    ui.end_row();
-                    if changed {
-                        out.push(Command::SetCorner {
-                            index: k,
-                            position: DVec3::new(p.x, p.y, p.z),
-                            uv: Vec2::new(uv.x as f32, uv.y as f32),
-                            color: c.color,
+            egui::Grid::new("corners")
+                .num_columns(2)
+                .spacing([6.0, 6.0])
+                .show(ui, |ui| {
+                    for (k, c) in s.quad.iter().enumerate() {
+                        vertex_label(ui, k);
+                        let mut p = c.position;
+                        let mut changed = false;
+                        ui.horizontal(|ui| {
+                            changed |= field(ui, &mut p.x, 0.01, tips::POSITION);
+                            changed |= field(ui, &mut p.y, 0.01, tips::POSITION);
+                            changed |= field(ui, &mut p.z, 0.01, tips::POSITION);
                         });
+                        ui.end_row();
+                        let mut uv = c.uv.as_dvec2();
+                        ui.label(RichText::new(text::UV).weak());
+                        ui.horizontal(|ui| {
+                            changed |= field(ui, &mut uv.x, 0.01, tips::UV);
+                            changed |= field(ui, &mut uv.y, 0.01, tips::UV);
+                        });
+                        ui.end_row();
+                        if changed {
+                            out.push(Command::SetCorner {
+                                index: k,
+                                position: DVec3::new(p.x, p.y, p.z),
+                                uv: Vec2::new(uv.x as f32, uv.y as f32),
+                                color: c.color,
+                            });
+                        }
                     }
-                }
-            });
+                });
             ui.label(RichText::new(format!("{}: x, y, z", text::POSITION)).weak());
         }
         Scene::Clip(s) => {
-            egui::Grid::new("clip-vertices").num_columns(2).spacing([6.0, 6.0]).show(ui, |ui| {
-                for (k, v) in s.vertices.iter().enumerate() {
-                    vertex_label(ui, k);
-                    let mut c = v.clip;
-                    let mut changed = false;
-                    ui.horizontal(|ui| {
-                        changed |= field(ui, &mut c.x, 0.01, tips::CLIP);
-                        changed |= field(ui, &mut c.y, 0.01, tips::CLIP);
-                        changed |= field(ui, &mut c.z, 0.01, tips::CLIP);
-                        changed |= field(ui, &mut c.w, 0.01, tips::CLIP);
-                    });
-                    ui.end_row();
-                    let mut uv = v.uv.as_dvec2();
-                    ui.label(RichText::new(text::UV).weak());
-                    ui.horizontal(|ui| {
-                        changed |= field(ui, &mut uv.x, 0.01, tips::UV);
-                        changed |= field(ui, &mut uv.y, 0.01, tips::UV);
-                    });
-                    ui.end_row();
-                    if changed {
-                        out.push(Command::SetClipVertex {
-                            index: k,
-                            clip: DVec4::new(c.x, c.y, c.z, c.w),
-                            uv: Vec2::new(uv.x as f32, uv.y as f32),
+            egui::Grid::new("clip-vertices")
+                .num_columns(2)
+                .spacing([6.0, 6.0])
+                .show(ui, |ui| {
+                    for (k, v) in s.vertices.iter().enumerate() {
+                        vertex_label(ui, k);
+                        let mut c = v.clip;
+                        let mut changed = false;
+                        ui.horizontal(|ui| {
+                            changed |= field(ui, &mut c.x, 0.01, tips::CLIP);
+                            changed |= field(ui, &mut c.y, 0.01, tips::CLIP);
+                            changed |= field(ui, &mut c.z, 0.01, tips::CLIP);
+                            changed |= field(ui, &mut c.w, 0.01, tips::CLIP);
                         });
+                        ui.end_row();
+                        let mut uv = v.uv.as_dvec2();
+                        ui.label(RichText::new(text::UV).weak());
+                        ui.horizontal(|ui| {
+                            changed |= field(ui, &mut uv.x, 0.01, tips::UV);
+                            changed |= field(ui, &mut uv.y, 0.01, tips::UV);
+                        });
+                        ui.end_row();
+                        if changed {
+                            out.push(Command::SetClipVertex {
+                                index: k,
+                                clip: DVec4::new(c.x, c.y, c.z, c.w),
+                                uv: Vec2::new(uv.x as f32, uv.y as f32),
+                            });
+                        }
                     }
-                }
-            });
+                });
             ui.label(RichText::new(format!("{}: x, y, z, w", text::CLIP)).weak());
         }
     }

@@ -126,7 +126,10 @@ pub fn move_vertex_to(
             corner.position = world;
         }
         Scene::Clip(s) => {
-            let v = s.vertices.get_mut(index).ok_or(EditError::NoVertex(index))?;
+            let v = s
+                .vertices
+                .get_mut(index)
+                .ok_or(EditError::NoVertex(index))?;
             let moved = DVec4::new(ndc.x * v.clip.w, ndc.y * v.clip.w, v.clip.z, v.clip.w);
             if !moved.is_finite() {
                 return Err(EditError::NotFinite);
@@ -174,7 +177,10 @@ pub fn push_vertex(
             corner.position = world;
         }
         Scene::Clip(s) => {
-            let v = s.vertices.get_mut(index).ok_or(EditError::NoVertex(index))?;
+            let v = s
+                .vertices
+                .get_mut(index)
+                .ok_or(EditError::NoVertex(index))?;
             if v.clip.w <= MIN_HANDLE_W {
                 return Err(EditError::BehindCamera(index));
             }
@@ -260,7 +266,13 @@ mod tests {
 
     #[test]
     fn moved_vertex_lands_on_the_target_at_the_same_w() {
-        for tilt in [Tilt::default(), Tilt { pitch_deg: 20.0, yaw_deg: -35.0 }] {
+        for tilt in [
+            Tilt::default(),
+            Tilt {
+                pitch_deg: 20.0,
+                yaw_deg: -35.0,
+            },
+        ] {
             let mut scene = Scene::default_scene();
             if let Scene::World(s) = &mut scene {
                 s.tilt = tilt;

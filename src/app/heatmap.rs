@@ -55,7 +55,7 @@ pub fn heat_color(d: f32, scale_max: f32) -> [u8; 4] {
 /// ```
 pub fn nice_ceiling(x: f32) -> f32 {
     const FLOOR: f32 = 0.01;
-    if !(x > FLOOR) {
+    if x.is_nan() || x <= FLOOR {
         return FLOOR;
     }
     let p = 10f32.powf(x.log10().floor());

@@ -12,12 +12,24 @@ pub mod text {
     pub const MOUSE: &str = "Mouse";
     pub const KEYS: &str = "Keys";
     pub const MOUSE_ROWS: &[(&str, &str)] = &[
-        ("Drag a corner", "move it parallel to the screen (its w stays)"),
-        ("Scroll on a corner", "push it away / pull it closer (same place on screen, new w)"),
+        (
+            "Drag a corner",
+            "move it parallel to the screen (its w stays)",
+        ),
+        (
+            "Scroll on a corner",
+            "push it away / pull it closer (same place on screen, new w)",
+        ),
         ("Shift + drag a corner", "the same, with the mouse"),
-        ("Hover a pixel", "its derivation in the inspector, its triangle and sub-areas on the canvas"),
+        (
+            "Hover a pixel",
+            "its derivation in the inspector, its triangle and sub-areas on the canvas",
+        ),
         ("Click a pixel", "pin it (click again to unpin)"),
-        ("Drag the wipe line", "move the split between affine and perspective-correct"),
+        (
+            "Drag the wipe line",
+            "move the split between affine and perspective-correct",
+        ),
         ("Drop a .json file", "open that scene"),
     ];
     pub const KEY_ROWS: &[(&str, &str)] = &[
@@ -39,15 +51,22 @@ pub mod text {
 pub fn help_ui(ui: &mut Ui) {
     ui.label(text::INTRO);
     ui.add_space(8.0);
-    for (title, rows) in [(text::MOUSE, text::MOUSE_ROWS), (text::KEYS, text::KEY_ROWS)] {
+    for (title, rows) in [
+        (text::MOUSE, text::MOUSE_ROWS),
+        (text::KEYS, text::KEY_ROWS),
+    ] {
         ui.label(RichText::new(title).strong());
-        egui::Grid::new(title).num_columns(2).striped(true).spacing([16.0, 4.0]).show(ui, |ui| {
-            for (k, what) in rows {
-                ui.label(RichText::new(*k).monospace().strong());
-                ui.label(*what);
-                ui.end_row();
-            }
-        });
+        egui::Grid::new(title)
+            .num_columns(2)
+            .striped(true)
+            .spacing([16.0, 4.0])
+            .show(ui, |ui| {
+                for (k, what) in rows {
+                    ui.label(RichText::new(*k).monospace().strong());
+                    ui.label(*what);
+                    ui.end_row();
+                }
+            });
         ui.add_space(8.0);
     }
 }

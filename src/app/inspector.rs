@@ -24,7 +24,10 @@ pub fn inspector_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&
         ui.label(RichText::new(format!("{title} ({}, {})", r.pixel[0], r.pixel[1])).strong());
         match r.weights_screen {
             Some(w) => {
-                ui.label(format!("screen weights {:.4} {:.4} {:.4}", w[0], w[1], w[2]));
+                ui.label(format!(
+                    "screen weights {:.4} {:.4} {:.4}",
+                    w[0], w[1], w[2]
+                ));
             }
             None => {
                 ui.label(text::NOT_COVERED);

@@ -28,7 +28,7 @@ use egui::{Key, Modifiers};
 
 use self::canvas::{CanvasInput, CanvasState};
 use self::pixel::PixelReport;
-use self::state::{AppState, Command, Compare, SavedState, STORAGE_KEY};
+use self::state::{AppState, Command, Compare, STORAGE_KEY, SavedState};
 use self::status::{FrameTiming, Message};
 use crate::raster::{BuiltinTexture, Texture};
 use crate::scene::Scene;
@@ -83,12 +83,15 @@ const INSPECTOR_WIDTH: f32 = 460.0;
 /// Default window size in points.
 const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];
 
+/// Where the screenshot callback reports: `None` until the image was written (or not).
+type ScreenshotResult = Arc<Mutex<Option<Result<(), String>>>>;
+
 struct ScreenshotJob {
     path: PathBuf,
     frames: u32,
     requested: bool,
     started: Instant,
-    result: Arc<Mutex<Option<Result<(), String>>>>,
+    result: ScreenshotResult,
 }
 
 /// The textures scenes name, loaded once.
@@ -143,11 +146,23 @@ fn apply_style(ctx: &egui::Context) {
     use egui::{FontFamily, FontId, TextStyle};
     ctx.all_styles_mut(|style| {
         style.text_styles = [
-            (TextStyle::Heading, FontId::new(26.0, FontFamily::Proportional)),
+            (
+                TextStyle::Heading,
+                FontId::new(26.0, FontFamily::Proportional),
+            ),
             (TextStyle::Body, FontId::new(18.0, FontFamily::Proportional)),
-            (TextStyle::Button, FontId::new(18.0, FontFamily::Proportional)),
-            (TextStyle::Monospace, FontId::new(17.0, FontFamily::Monospace)),
-            (TextStyle::Small, FontId::new(14.0, FontFamily::Proportional)),
+            (
+                TextStyle::Button,
+                FontId::new(18.0, FontFamily::Proportional),
+            ),
+            (
+                TextStyle::Monospace,
+                FontId::new(17.0, FontFamily::Monospace),
+            ),
+            (
+                TextStyle::Small,
+                FontId::new(14.0, FontFamily::Proportional),
+            ),
         ]
         .into();
         style.spacing.item_spacing = egui::vec2(8.0, 6.0);
@@ -419,9 +434,11 @@ impl BaryApp {
                 .resizable(false)
                 .exact_size(CONTROLS_WIDTH)
                 .show(ui, |ui| {
-                    egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
-                        controls::controls_ui(ui, &self.state, &mut self.commands);
-                    });
+                    egui::ScrollArea::vertical()
+                        .auto_shrink([false, false])
+                        .show(ui, |ui| {
+                            controls::controls_ui(ui, &self.state, &mut self.commands);
+                        });
                 });
         }
         if self.state.view.show_inspector {
@@ -429,13 +446,15 @@ impl BaryApp {
                 .resizable(false)
                 .exact_size(INSPECTOR_WIDTH)
                 .show(ui, |ui| {
-                    egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
-                        inspector::inspector_ui(
-                            ui,
-                            self.hover_report.as_ref(),
-                            self.pin_report.as_ref(),
-                        );
-                    });
+                    egui::ScrollArea::vertical()
+                        .auto_shrink([false, false])
+                        .show(ui, |ui| {
+                            inspector::inspector_ui(
+                                ui,
+                                self.hover_report.as_ref(),
+                                self.pin_report.as_ref(),
+                            );
+                        });
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {
@@ -482,14 +501,16 @@ impl BaryApp {
                 .on_hover_text(text::CONTROLS_TIP)
                 .clicked()
             {
-                self.commands.push(Command::SetShowControls(!view.show_controls));
+                self.commands
+                    .push(Command::SetShowControls(!view.show_controls));
             }
             if ui
                 .selectable_label(view.show_inspector, text::INSPECTOR)
                 .on_hover_text(text::INSPECTOR_TIP)
                 .clicked()
             {
-                self.commands.push(Command::SetShowInspector(!view.show_inspector));
+                self.commands
+                    .push(Command::SetShowInspector(!view.show_inspector));
             }
             if ui
                 .selectable_label(self.help_open, text::HELP)
@@ -599,8 +620,7 @@ pub fn run(options: AppOptions) -> Result<(), AppError> {
         ..Default::default()
     };
     let screenshot = options.screenshot.clone();
-    let result_slot: Arc<Mutex<Option<Arc<Mutex<Option<Result<(), String>>>>>>> =
-        Arc::new(Mutex::new(None));
+    let result_slot: Arc<Mutex<Option<ScreenshotResult>>> = Arc::new(Mutex::new(None));
     let slot = result_slot.clone();
     eframe::run_native(
         "barylab",

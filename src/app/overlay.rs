@@ -394,7 +394,14 @@ fn triangle_shapes(shapes: &mut Vec<Shape>, t: &TriangleMark, p: DVec2, sub_area
 }
 
 /// A square around the pixel and a crosshair through its centre.
-fn pixel_marker(shapes: &mut Vec<Shape>, pixel: [u32; 2], color: Rgba, w: f64, h: f64, cross: bool) {
+fn pixel_marker(
+    shapes: &mut Vec<Shape>,
+    pixel: [u32; 2],
+    color: Rgba,
+    w: f64,
+    h: f64,
+    cross: bool,
+) {
     let (x, y) = (f64::from(pixel[0]), f64::from(pixel[1]));
     let c = centre_of(pixel);
     if cross {
@@ -535,7 +542,11 @@ mod tests {
         assert!(texts.contains(&"PERSPECTIVE-CORRECT"));
         assert!(texts.contains(&"A  w = 2.50"));
         // No grid at pixel size 1.
-        assert!(!o.shapes.iter().any(|s| matches!(s, Shape::PixelGrid { .. })));
+        assert!(
+            !o.shapes
+                .iter()
+                .any(|s| matches!(s, Shape::PixelGrid { .. }))
+        );
     }
 
     #[test]
@@ -564,8 +575,17 @@ mod tests {
             })
             .collect();
         assert_eq!(polys.len(), 3);
-        assert_eq!(polys[0], (with_alpha(vertex_color(0), SUB_AREA_ALPHA / 2), true));
-        assert_eq!(polys[1], (with_alpha(vertex_color(2), SUB_AREA_ALPHA), false));
-        assert_eq!(polys[2], (with_alpha(vertex_color(3), SUB_AREA_ALPHA), false));
+        assert_eq!(
+            polys[0],
+            (with_alpha(vertex_color(0), SUB_AREA_ALPHA / 2), true)
+        );
+        assert_eq!(
+            polys[1],
+            (with_alpha(vertex_color(2), SUB_AREA_ALPHA), false)
+        );
+        assert_eq!(
+            polys[2],
+            (with_alpha(vertex_color(3), SUB_AREA_ALPHA), false)
+        );
     }
 }

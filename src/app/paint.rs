@@ -147,11 +147,8 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 let mut pos = pos;
                 // A label that would stick out on one side goes to the other side of its
                 // point (mirrored), before it is pushed inside.
-                let galley = painter.layout_no_wrap(
-                    text.clone(),
-                    FontId::proportional(*size),
-                    color(*c),
-                );
+                let galley =
+                    painter.layout_no_wrap(text.clone(), FontId::proportional(*size), color(*c));
                 let pad = if background.is_some() {
                     LABEL_PAD
                 } else {
@@ -162,7 +159,10 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 let sticks_x = |r: Rect| r.left() < clip.left() || r.right() > clip.right();
                 let sticks_y = |r: Rect| r.top() < clip.top() || r.bottom() > clip.bottom();
                 if sticks_x(outer) {
-                    let (a, p) = (anchor.flipped_x(), base + egui::vec2(-offset[0], pos.y - base.y));
+                    let (a, p) = (
+                        anchor.flipped_x(),
+                        base + egui::vec2(-offset[0], pos.y - base.y),
+                    );
                     if !sticks_x(a.anchor_size(p, size_box)) {
                         (anchor, pos) = (a, p);
                     }
@@ -207,7 +207,16 @@ pub fn label(
     c: Rgba,
     background: Option<Rgba>,
 ) -> Rect {
-    label_inside(painter, Rect::EVERYTHING, pos, anchor, text, size, c, background)
+    label_inside(
+        painter,
+        Rect::EVERYTHING,
+        pos,
+        anchor,
+        text,
+        size,
+        c,
+        background,
+    )
 }
 
 /// [`label`], moved as little as needed to lie inside `bounds` (if it fits).
@@ -265,14 +274,20 @@ fn paint_grid(
     for x in 0..=width {
         let x = f64::from(x);
         painter.line_segment(
-            [t.to_screen(DVec2::new(x, 0.0)), t.to_screen(DVec2::new(x, h))],
+            [
+                t.to_screen(DVec2::new(x, 0.0)),
+                t.to_screen(DVec2::new(x, h)),
+            ],
             s,
         );
     }
     for y in 0..=height {
         let y = f64::from(y);
         painter.line_segment(
-            [t.to_screen(DVec2::new(0.0, y)), t.to_screen(DVec2::new(w, y))],
+            [
+                t.to_screen(DVec2::new(0.0, y)),
+                t.to_screen(DVec2::new(w, y)),
+            ],
             s,
         );
     }

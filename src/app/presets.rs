@@ -139,10 +139,10 @@ mod tests {
         let (a, b) = (far[2].window.expect("far"), front[2].window.expect("front"));
         assert!((a - b).length() < 1e-9);
         let wall = vertices_on_screen(&Preset::GrazingWall.scene(), vp);
-        assert!(wall.iter().all(|v| v.window.is_some_and(|p| p.x > 0.0
-            && p.y > 0.0
-            && p.x < 800.0
-            && p.y < 600.0)));
+        assert!(wall.iter().all(|v| {
+            v.window
+                .is_some_and(|p| p.x > 0.0 && p.y > 0.0 && p.x < 800.0 && p.y < 600.0)
+        }));
         assert!(wall[0].w() / wall[1].w() > 5.0);
         let behind = vertices_on_screen(&Preset::CornerBehind.scene(), vp);
         assert!(behind[0].window.is_none() && behind[1..].iter().all(|v| v.window.is_some()));

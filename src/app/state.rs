@@ -204,7 +204,11 @@ pub enum Command {
     /// Pin a pixel (or unpin).
     Pin(Option<[u32; 2]>),
     /// Move the pin by whole pixels, staying inside the image.
-    MovePin { dx: i32, dy: i32, size: [u32; 2] },
+    MovePin {
+        dx: i32,
+        dy: i32,
+        size: [u32; 2],
+    },
 }
 
 impl AppState {
@@ -273,7 +277,9 @@ impl AppState {
             Command::SetShowSubAreas(b) => self.view.show_sub_areas = b,
             Command::SetShowControls(b) => self.view.show_controls = b,
             Command::SetShowInspector(b) => self.view.show_inspector = b,
-            Command::SetUiScale(s) => self.view.ui_scale = s.clamp(UI_SCALE_RANGE.0, UI_SCALE_RANGE.1),
+            Command::SetUiScale(s) => {
+                self.view.ui_scale = s.clamp(UI_SCALE_RANGE.0, UI_SCALE_RANGE.1)
+            }
             Command::MoveVertex {
                 index,
                 to,
@@ -303,7 +309,10 @@ impl AppState {
                     if !(clip.is_finite() && uv.is_finite()) {
                         return Err(EditError::NotFinite);
                     }
-                    let v = s.vertices.get_mut(index).ok_or(EditError::NoVertex(index))?;
+                    let v = s
+                        .vertices
+                        .get_mut(index)
+                        .ok_or(EditError::NoVertex(index))?;
                     (v.clip, v.uv) = (clip, uv);
                 }
             }
@@ -336,8 +345,10 @@ mod tests {
     #[test]
     fn saved_state_round_trips_and_bad_scenes_fall_back_to_the_default() {
         let mut s = AppState::default();
-        s.apply(Command::Preset(Preset::GrazingWall)).expect("preset");
-        s.apply(Command::SetMode(Interpolation::Affine)).expect("mode");
+        s.apply(Command::Preset(Preset::GrazingWall))
+            .expect("preset");
+        s.apply(Command::SetMode(Interpolation::Affine))
+            .expect("mode");
         s.apply(Command::SetPixelSize(8)).expect("size");
         let json = serde_json::to_string(&s.to_saved()).expect("json");
         let back: SavedState = serde_json::from_str(&json).expect("parse");
@@ -353,8 +364,8 @@ mod tests {
         assert!(err.expect("error").starts_with("saved scene:"));
         assert_eq!(restored.scene, Scene::default_scene());
         // Old or partial saved states still load (serde default).
-        let partial: SavedState = serde_json::from_str("{\"view\": {\"pixel_size\": 4}}")
-            .expect("partial state");
+        let partial: SavedState =
+            serde_json::from_str("{\"view\": {\"pixel_size\": 4}}").expect("partial state");
         assert_eq!(partial.view.pixel_size, 4);
         assert!(partial.view.show_handles);
     }

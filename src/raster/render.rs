@@ -200,7 +200,7 @@ pub fn render(
     };
     let mut frame = Framebuffer::new(w, h, settings.background);
     rasterize_bands(&triangles, texture, &params, &mut frame, ROWS_PER_BAND);
-        Ok(Render { frame, triangles })
+    Ok(Render { frame, triangles })
 }
 
 /// Smallest and largest window depth over the drawn vertices.
@@ -415,9 +415,17 @@ mod tests {
             frame
         };
         let serial = draw(157, 1);
-        assert!(serial.triangle.iter().any(|&t| t != crate::raster::NO_TRIANGLE));
+        assert!(
+            serial
+                .triangle
+                .iter()
+                .any(|&t| t != crate::raster::NO_TRIANGLE)
+        );
         for (rows, threads) in [(1, 4), (7, 3), (16, 2), (1000, 2)] {
-            assert!(draw(rows, threads) == serial, "{rows} rows per band, {threads} threads");
+            assert!(
+                draw(rows, threads) == serial,
+                "{rows} rows per band, {threads} threads"
+            );
         }
     }
 }
