@@ -5,6 +5,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
+use barylab::probe::format::Format;
 use barylab::raster::{self, Filter, Interpolation, Shading};
 use barylab::scene::Scene;
 use clap::{Parser, Subcommand, ValueEnum};
@@ -16,7 +17,9 @@ Examples:
   barylab --screenshot shot.png             open the app, save a screenshot, exit
   barylab render assets/scenes/default.json -o out.png
   barylab render assets/scenes/default.json --mode affine --size 400x300 -o affine.png
-  barylab render assets/scenes/clip-two-triangles.json --filter nearest --aov aov/ -o out.png";
+  barylab render assets/scenes/clip-two-triangles.json --filter nearest --aov aov/ -o out.png
+  barylab probe assets/scenes/default.json --pixel 400,420
+  barylab probe assets/scenes/default.json --pixel 400,420 --mode affine --format markdown > notes.md";
 
 /// barylab: see how a GPU interpolates across a triangle, pixel by pixel.
 #[derive(Parser, Debug)]
@@ -42,6 +45,10 @@ enum Command {
     /// Render a scene file to a PNG image (and optionally float32 EXR buffers).
     #[command(after_help = EXAMPLES)]
     Render(RenderArgs),
+    /// Print every number behind one pixel: coverage, weights four ways, the 1/w
+    /// derivation, the 4x4 system, uv, texel, depth and the final colour.
+    #[command(after_help = EXAMPLES)]
+    Probe(ProbeArgs),
 }
 
 #[derive(clap::Args, Debug)]
@@ -70,6 +77,52 @@ struct RenderArgs {
     /// weights_perspective.exr, depth.exr, inv_w.exr.
     #[arg(long, value_name = "DIR")]
     aov: Option<PathBuf>,
+}
+
+#[derive(clap::Args, Debug)]
+struct ProbeArgs {
+    /// Scene file (JSON, world or clip-space form; see docs/scene-format.md).
+    scene: PathBuf,
+    /// The pixel as X,Y: column from the left, row from the top, both from 0.
+    #[arg(long, value_parser = parse_pixel, allow_hyphen_values = true)]
+    pixel: (u32, u32),
+    /// Interpolation mode (default: the scene's).
+    #[arg(long)]
+    mode: Option<ModeArg>,
+    /// Output format: a worked example as text, Markdown or a LaTeX fragment, or JSON.
+    #[arg(long, default_value = "text")]
+    format: FormatArg,
+    /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
+    #[arg(long, value_parser = parse_size)]
+    size: Option<(u32, u32)>,
+    /// Texture filter (default: the scene's).
+    #[arg(long)]
+    filter: Option<FilterArg>,
+    /// What the colour shows (default: the scene's).
+    #[arg(long)]
+    shading: Option<ShadingArg>,
+    /// Overlay the triangles' edges, as `render --wireframe`.
+    #[arg(long)]
+    wireframe: bool,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum FormatArg {
+    Text,
+    Markdown,
+    Latex,
+    Json,
+}
+
+impl From<FormatArg> for Format {
+    fn from(f: FormatArg) -> Self {
+        match f {
+            FormatArg::Text => Format::Text,
+            FormatArg::Markdown => Format::Markdown,
+            FormatArg::Latex => Format::Latex,
+            FormatArg::Json => Format::Json,
+        }
+    }
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -134,11 +187,21 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
     Ok((w, h))
 }
 
+/// Parses "X,Y" (whole numbers from 0).
+fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("`{s}` is not a pixel like 400,300 (column,row, whole numbers from 0)");
+    let (x, y) = s.split_once(',').ok_or_else(bad)?;
+    let x: u32 = x.trim().parse().map_err(|_| bad())?;
+    let y: u32 = y.trim().parse().map_err(|_| bad())?;
+    Ok((x, y))
+}
+
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         None => app(&cli),
         Some(Command::Render(args)) => render(&args),
+        Some(Command::Probe(args)) => probe(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -232,6 +295,33 @@ fn render(args: &RenderArgs) -> Result<()> {
         out.triangles.len(),
         ms,
         args.output.display()
+    );
+    Ok(())
+}
+
+fn probe(args: &ProbeArgs) -> Result<()> {
+    let mut scene = Scene::load(&args.scene)?;
+    if let Some((w, h)) = args.size {
+        scene.set_size(w, h);
+    }
+    let texture = scene.load_texture(&scene_dir(&args.scene))?;
+    let mut settings = scene.settings();
+    if let Some(m) = args.mode {
+        settings.mode = m.into();
+    }
+    if let Some(f) = args.filter {
+        settings.filter = f.into();
+    }
+    if let Some(s) = args.shading {
+        settings.shading = s.into();
+    }
+    settings.wireframe |= args.wireframe;
+    let (x, y) = args.pixel;
+    let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
+        .with_context(|| format!("--pixel {x},{y} for {}", args.scene.display()))?;
+    print!(
+        "{}",
+        barylab::probe::format::write(&trace, args.format.into())
     );
     Ok(())
 }

@@ -41,7 +41,8 @@ pub struct ClipPlane {
 }
 
 /// Which plane cut a triangle, for explanations.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum PlaneName {
     Near,
     Far,

@@ -190,21 +190,27 @@ pub fn render(
     let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
         .map(|i| prepare_triangle(mesh, i, viewport))
         .collect();
-    let params = ShadeParams {
-        shading: settings.shading,
-        mode: settings.mode,
-        filter: settings.filter,
-        wrap: settings.wrap,
-        wireframe: settings.wireframe,
-        depth_range: depth_range(&triangles),
-    };
+    let params = shade_params(settings, &triangles);
     let mut frame = Framebuffer::new(w, h, settings.background);
     rasterize_bands(&triangles, texture, &params, &mut frame, ROWS_PER_BAND);
     Ok(Render { frame, triangles })
 }
 
+/// The shading parameters of a render: the settings plus the depth range of the drawn
+/// triangles (the renderer and the probe both call this).
+pub fn shade_params(settings: &RenderSettings, triangles: &[PreparedTriangle]) -> ShadeParams {
+    ShadeParams {
+        shading: settings.shading,
+        mode: settings.mode,
+        filter: settings.filter,
+        wrap: settings.wrap,
+        wireframe: settings.wireframe,
+        depth_range: depth_range(triangles),
+    }
+}
+
 /// Smallest and largest window depth over the drawn vertices.
-fn depth_range(triangles: &[PreparedTriangle]) -> (f64, f64) {
+pub fn depth_range(triangles: &[PreparedTriangle]) -> (f64, f64) {
     let mut lo = f64::INFINITY;
     let mut hi = f64::NEG_INFINITY;
     for s in triangles.iter().flat_map(|t| &t.setups) {
