@@ -139,6 +139,7 @@ pub struct ClipScene {
 }
 
 /// A scene in either form.
+#[allow(clippy::large_enum_variant)] // Few scenes exist at a time; boxing buys nothing.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Scene {

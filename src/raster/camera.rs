@@ -92,7 +92,8 @@ impl Camera {
             return Err(CameraError::EyeIsTarget);
         }
         let sine = forward.cross(self.up).length() / (forward.length() * self.up.length());
-        if !(sine > MIN_UP_SINE) {
+        // Also rejects NaN (a zero-length vector).
+        if sine.is_nan() || sine <= MIN_UP_SINE {
             return Err(CameraError::BadUp);
         }
         let (near, far) = match self.projection {

@@ -368,7 +368,8 @@ fn rasterize(
             };
             let i = row + x as usize;
             let depth = frag.depth as f32;
-            if !(depth < band.depth[i]) {
+            // Less-than depth test (a NaN depth fails it).
+            if depth.is_nan() || depth >= band.depth[i] {
                 continue;
             }
             band.depth[i] = depth;

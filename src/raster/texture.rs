@@ -292,7 +292,7 @@ fn checker() -> Texture {
     let mut texels = Vec::with_capacity((SIZE * SIZE) as usize);
     for j in 0..SIZE {
         for i in 0..SIZE {
-            let dark = (i / cell + j / cell) % 2 == 0;
+            let dark = (i / cell + j / cell).is_multiple_of(2);
             texels.push(if dark {
                 [40, 40, 40, 255]
             } else {
@@ -333,7 +333,7 @@ fn uv_grid() -> Texture {
         let c = x / cell;
         let r = CELLS - 1 - y / cell;
         let (fu, fv) = (c as f32 / (CELLS - 1) as f32, r as f32 / (CELLS - 1) as f32);
-        let light = (c + r) % 2 == 0;
+        let light = (c + r).is_multiple_of(2);
         let base = if light { 0.92 } else { 0.78 };
         let rgb = [
             base - 0.35 * (1.0 - fu) * fv,
@@ -400,9 +400,9 @@ fn draw_text_centered(
                     return;
                 }
                 let p = img.get_pixel_mut(px as u32, py as u32);
-                for k in 0..3 {
-                    let bg = f32::from(p.0[k]);
-                    p.0[k] = (bg + (f32::from(rgb[k]) - bg) * coverage.clamp(0.0, 1.0)) as u8;
+                for (ch, fg) in p.0.iter_mut().zip(rgb) {
+                    let bg = f32::from(*ch);
+                    *ch = (bg + (f32::from(fg) - bg) * coverage.clamp(0.0, 1.0)) as u8;
                 }
             });
         }
