@@ -12,7 +12,9 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 const EXAMPLES: &str = "\
 Examples:
-  barylab                                   open the app on the built-in default scene
+  barylab                                   open the app (last state, or the built-in default scene)
+  barylab assets/scenes/front.json          open the app on a scene file
+  barylab --screenshot shot.png             open the app, save a screenshot, exit
   barylab render assets/scenes/default.json -o out.png
   barylab render assets/scenes/default.json --mode affine --size 400x300 -o affine.png
   barylab render assets/scenes/clip-two-triangles.json --filter nearest --aov aov/ -o out.png
@@ -25,6 +27,17 @@ Examples:
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// Scene file to open in the app (default: the scene saved last time, or the built-in one).
+    scene: Option<PathBuf>,
+    /// Open the app, save a screenshot of the first rendered frame to this PNG, and exit.
+    #[arg(long, value_name = "FILE")]
+    screenshot: Option<PathBuf>,
+    /// Start from the built-in defaults instead of the state saved last time (and do not save).
+    #[arg(long)]
+    fresh: bool,
+    /// Window size in points, e.g. 1500x950.
+    #[arg(long, value_parser = parse_window_size, value_name = "WxH")]
+    window_size: Option<(u32, u32)>,
 }
 
 #[derive(Subcommand, Debug)]
@@ -215,13 +228,7 @@ pub fn main() -> ExitCode {
         Err(code) => return code,
     };
     let result = match cli.command {
-        None => {
-            println!(
-                "barylab {}: the app is not built yet; use `barylab render SCENE -o OUT.png` (see --help)",
-                env!("CARGO_PKG_VERSION")
-            );
-            Ok(())
-        }
+        None => app(&cli),
         Some(Command::Render(args)) => render(&args),
         Some(Command::Probe(args)) => probe(&args),
     };
@@ -232,6 +239,34 @@ pub fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// Parses a window size "WIDTHxHEIGHT" in points.
+fn parse_window_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = parse_size(s)?;
+    if w < 200 || h < 200 {
+        return Err(format!(
+            "window size {w}x{h} is too small (at least 200x200)"
+        ));
+    }
+    Ok((w, h))
+}
+
+/// Opens the app.
+fn app(cli: &Cli) -> Result<()> {
+    let scene = match &cli.scene {
+        Some(path) => Some(barylab::app::load_scene(path).map_err(anyhow::Error::msg)?),
+        None => None,
+    };
+    let options = barylab::app::AppOptions {
+        scene,
+        screenshot: cli.screenshot.clone(),
+        // A screenshot run is reproducible: it neither reads nor writes saved state.
+        persist: !cli.fresh && cli.screenshot.is_none(),
+        window_size: cli.window_size.map(|(w, h)| [w as f32, h as f32]),
+    };
+    barylab::app::run(options)?;
+    Ok(())
 }
 
 /// The folder relative texture paths of a scene file are resolved against.

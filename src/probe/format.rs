@@ -640,6 +640,60 @@ fn matrix_text(indent: &str, lhs: &[M], rows: &[Vec<f64>], unknowns: &[M], rhs: 
     out
 }
 
+impl Section {
+    /// The section's items as plain text, as [`Document::to_text`] writes them (without the
+    /// section title), for showing one section at a time (the app's inspector).
+    pub fn to_text(&self) -> String {
+        let mut out = String::new();
+        items_to_text(&self.items, &mut out);
+        out
+    }
+}
+
+/// Writes items as plain text, one formula per line.
+fn items_to_text(items: &[Item], out: &mut String) {
+    for item in items {
+        match item {
+            Item::Para(p) => {
+                let _ = writeln!(out, "  {}", inline_text(p));
+            }
+            Item::Eq(ms, note) => {
+                let note = note
+                    .as_ref()
+                    .map(|n| format!("    ({n})"))
+                    .unwrap_or_default();
+                let width = TEXT_LINE_WIDTH.saturating_sub(note.chars().count());
+                let rows = layout(ms, width);
+                let last = rows.len().saturating_sub(1);
+                for (k, row) in rows.iter().enumerate() {
+                    let lhs = text_of(row.lhs);
+                    let head = match row.lead {
+                        Lead::First => lhs,
+                        Lead::Continue => " ".repeat(lhs.chars().count()),
+                        Lead::Arrow => format!("    → {lhs}"),
+                        Lead::Plus => format!("      + {lhs}"),
+                    };
+                    let steps: Vec<String> = row.steps.iter().map(|p| text_of(p)).collect();
+                    let tail = if k == last { note.as_str() } else { "" };
+                    if steps.is_empty() {
+                        let _ = writeln!(out, "    {head}{tail}");
+                    } else {
+                        let _ = writeln!(out, "    {head} = {}{tail}", steps.join(" = "));
+                    }
+                }
+            }
+            Item::Matrix {
+                lhs,
+                rows,
+                unknowns,
+                rhs,
+            } => {
+                out.push_str(&matrix_text("    ", lhs, rows, unknowns, rhs));
+            }
+        }
+    }
+}
+
 impl Document {
     /// Plain text: numbered sections, one formula per line.
     pub fn to_text(&self) -> String {
@@ -649,46 +703,7 @@ impl Document {
         for sec in &self.sections {
             let _ = writeln!(out, "\n{}", sec.title);
             let _ = writeln!(out, "{}", "-".repeat(sec.title.chars().count()));
-            for item in &sec.items {
-                match item {
-                    Item::Para(p) => {
-                        let _ = writeln!(out, "  {}", inline_text(p));
-                    }
-                    Item::Eq(ms, note) => {
-                        let note = note
-                            .as_ref()
-                            .map(|n| format!("    ({n})"))
-                            .unwrap_or_default();
-                        let width = TEXT_LINE_WIDTH.saturating_sub(note.chars().count());
-                        let rows = layout(ms, width);
-                        let last = rows.len().saturating_sub(1);
-                        for (k, row) in rows.iter().enumerate() {
-                            let lhs = text_of(row.lhs);
-                            let head = match row.lead {
-                                Lead::First => lhs,
-                                Lead::Continue => " ".repeat(lhs.chars().count()),
-                                Lead::Arrow => format!("    → {lhs}"),
-                                Lead::Plus => format!("      + {lhs}"),
-                            };
-                            let steps: Vec<String> = row.steps.iter().map(|p| text_of(p)).collect();
-                            let tail = if k == last { note.as_str() } else { "" };
-                            if steps.is_empty() {
-                                let _ = writeln!(out, "    {head}{tail}");
-                            } else {
-                                let _ = writeln!(out, "    {head} = {}{tail}", steps.join(" = "));
-                            }
-                        }
-                    }
-                    Item::Matrix {
-                        lhs,
-                        rows,
-                        unknowns,
-                        rhs,
-                    } => {
-                        out.push_str(&matrix_text("    ", lhs, rows, unknowns, rhs));
-                    }
-                }
-            }
+            items_to_text(&sec.items, &mut out);
         }
         out
     }

@@ -92,6 +92,7 @@ impl Camera {
             return Err(CameraError::EyeIsTarget);
         }
         let sine = forward.cross(self.up).length() / (forward.length() * self.up.length());
+        // Also rejects NaN (a zero-length vector).
         if sine.is_nan() || sine <= MIN_UP_SINE {
             return Err(CameraError::BadUp);
         }

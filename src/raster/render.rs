@@ -205,11 +205,7 @@ pub fn render(
         .collect();
     let params = shade_params(settings, &triangles);
     let mut frame = Framebuffer::new(w, h, settings.background);
-    for tri in &triangles {
-        for setup in &tri.setups {
-            rasterize(setup, tri.source, texture, &params, &mut frame);
-        }
-    }
+    rasterize_bands(&triangles, texture, &params, &mut frame, ROWS_PER_BAND);
     Ok(Render { frame, triangles })
 }
 
@@ -239,21 +235,142 @@ pub fn depth_range(triangles: &[PreparedTriangle]) -> (f64, f64) {
     if lo <= hi { (lo, hi) } else { (0.0, 1.0) }
 }
 
-/// Visits every covered pixel centre of one set-up triangle, depth-tests and writes it.
+/// Rows of the image each parallel task rasterizes. Every band draws all triangles in
+/// submission order, so each pixel sees the same fragments in the same order as a serial
+/// render and the output does not depend on the band size or the number of threads.
+pub const ROWS_PER_BAND: u32 = 16;
+
+/// Rasterizes all set-up triangles into `frame`, in parallel over bands of `rows_per_band`
+/// image rows (rayon's current thread pool).
+pub fn rasterize_bands(
+    triangles: &[PreparedTriangle],
+    texture: &Texture,
+    params: &ShadeParams,
+    frame: &mut Framebuffer,
+    rows_per_band: u32,
+) {
+    use rayon::prelude::*;
+    let bands = RowBand::split(frame, rows_per_band.max(1));
+    bands.into_par_iter().for_each(|mut band| {
+        for tri in triangles {
+            for setup in &tri.setups {
+                rasterize(setup, tri.source, texture, params, &mut band);
+            }
+        }
+    });
+}
+
+/// Mutable views of rows `y0..y0 + rows` of every framebuffer buffer.
+struct RowBand<'a> {
+    y0: u32,
+    rows: u32,
+    width: u32,
+    color: &'a mut [[u8; 4]],
+    depth: &'a mut [f32],
+    triangle: &'a mut [u32],
+    facing: &'a mut [Facing],
+    weights_screen: &'a mut [[f32; 3]],
+    weights_perspective: &'a mut [[f32; 3]],
+    uv_affine: &'a mut [[f32; 2]],
+    uv_perspective: &'a mut [[f32; 2]],
+    inv_w: &'a mut [f32],
+}
+
+impl<'a> RowBand<'a> {
+    /// Cuts the framebuffer into bands of `rows_per_band` rows (the last may be shorter).
+    fn split(frame: &'a mut Framebuffer, rows_per_band: u32) -> Vec<RowBand<'a>> {
+        let width = frame.width;
+        let mut rest = RowBand {
+            y0: 0,
+            rows: frame.height,
+            width,
+            color: &mut frame.color,
+            depth: &mut frame.depth,
+            triangle: &mut frame.triangle,
+            facing: &mut frame.facing,
+            weights_screen: &mut frame.weights_screen,
+            weights_perspective: &mut frame.weights_perspective,
+            uv_affine: &mut frame.uv_affine,
+            uv_perspective: &mut frame.uv_perspective,
+            inv_w: &mut frame.inv_w,
+        };
+        let mut out = Vec::new();
+        while rest.rows > rows_per_band {
+            let (head, tail) = rest.split_at(rows_per_band);
+            out.push(head);
+            rest = tail;
+        }
+        out.push(rest);
+        out
+    }
+
+    /// The first `rows` rows and the remainder.
+    fn split_at(self, rows: u32) -> (RowBand<'a>, RowBand<'a>) {
+        let n = rows as usize * self.width as usize;
+        let (color, color_t) = self.color.split_at_mut(n);
+        let (depth, depth_t) = self.depth.split_at_mut(n);
+        let (triangle, triangle_t) = self.triangle.split_at_mut(n);
+        let (facing, facing_t) = self.facing.split_at_mut(n);
+        let (ws, ws_t) = self.weights_screen.split_at_mut(n);
+        let (wp, wp_t) = self.weights_perspective.split_at_mut(n);
+        let (ua, ua_t) = self.uv_affine.split_at_mut(n);
+        let (up, up_t) = self.uv_perspective.split_at_mut(n);
+        let (iw, iw_t) = self.inv_w.split_at_mut(n);
+        (
+            RowBand {
+                y0: self.y0,
+                rows,
+                width: self.width,
+                color,
+                depth,
+                triangle,
+                facing,
+                weights_screen: ws,
+                weights_perspective: wp,
+                uv_affine: ua,
+                uv_perspective: up,
+                inv_w: iw,
+            },
+            RowBand {
+                y0: self.y0 + rows,
+                rows: self.rows - rows,
+                width: self.width,
+                color: color_t,
+                depth: depth_t,
+                triangle: triangle_t,
+                facing: facing_t,
+                weights_screen: ws_t,
+                weights_perspective: wp_t,
+                uv_affine: ua_t,
+                uv_perspective: up_t,
+                inv_w: iw_t,
+            },
+        )
+    }
+}
+
+/// Visits every covered pixel centre of one set-up triangle within a band, depth-tests and
+/// writes it.
 fn rasterize(
     setup: &TriangleSetup,
     source: u32,
     texture: &Texture,
     params: &ShadeParams,
-    frame: &mut Framebuffer,
+    band: &mut RowBand<'_>,
 ) {
     let b = setup.bounds;
+    let y_start = b.y0.max(band.y0);
+    let y_end = b.y1.min(band.y0 + band.rows - 1);
+    if band.rows == 0 || y_start > y_end {
+        return;
+    }
     let wire = if params.wireframe {
         setup.source_weight_gradients()
     } else {
         [glam::DVec2::ZERO; 3]
     };
-    for y in b.y0..=b.y1 {
+    for y in y_start..=y_end {
+        let row = (y - band.y0) as usize * band.width as usize;
         for x in b.x0..=b.x1 {
             let e = setup.edge_values(sample_point(x, y));
             if !setup.covers(&e) {
@@ -272,21 +389,73 @@ fn rasterize(
                     texture.height(),
                 );
             }
-            let i = frame.index(x, y);
+            let i = row + x as usize;
             let depth = frag.depth as f32;
-            // Less-than depth test (a NaN depth never passes).
-            if depth.is_nan() || depth >= frame.depth[i] {
+            // Less-than depth test (a NaN depth fails it).
+            if depth.is_nan() || depth >= band.depth[i] {
                 continue;
             }
-            frame.depth[i] = depth;
-            frame.triangle[i] = source;
-            frame.facing[i] = setup.facing;
-            frame.weights_screen[i] = frag.affine.bary();
-            frame.weights_perspective[i] = frag.correct.bary();
-            frame.uv_affine[i] = frag.affine.uv().to_array();
-            frame.uv_perspective[i] = frag.correct.uv().to_array();
-            frame.inv_w[i] = frag.inv_w as f32;
-            frame.color[i] = shade(&frag, texture, params, &wire);
+            band.depth[i] = depth;
+            band.triangle[i] = source;
+            band.facing[i] = setup.facing;
+            band.weights_screen[i] = frag.affine.bary();
+            band.weights_perspective[i] = frag.correct.bary();
+            band.uv_affine[i] = frag.affine.uv().to_array();
+            band.uv_perspective[i] = frag.correct.uv().to_array();
+            band.inv_w[i] = frag.inv_w as f32;
+            band.color[i] = shade(&frag, texture, params, &wire);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    /// One band (a serial render) and many small bands on several threads give the same
+    /// framebuffer, bit for bit.
+    #[test]
+    fn bands_and_threads_do_not_change_the_output() {
+        let mut scene = Scene::default_scene();
+        scene.set_size(203, 157);
+        let mesh = scene.to_mesh();
+        let texture = Texture::builtin(super::super::BuiltinTexture::UvGrid);
+        let mut settings = scene.settings();
+        settings.wireframe = true;
+        let viewport = settings.viewport();
+        let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
+            .map(|i| prepare_triangle(&mesh, i, viewport))
+            .collect();
+        let params = ShadeParams {
+            shading: settings.shading,
+            mode: settings.mode,
+            filter: settings.filter,
+            wrap: settings.wrap,
+            wireframe: settings.wireframe,
+            depth_range: depth_range(&triangles),
+        };
+        let draw = |rows: u32, threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("thread pool");
+            let mut frame = Framebuffer::new(203, 157, settings.background);
+            pool.install(|| rasterize_bands(&triangles, &texture, &params, &mut frame, rows));
+            frame
+        };
+        let serial = draw(157, 1);
+        assert!(
+            serial
+                .triangle
+                .iter()
+                .any(|&t| t != crate::raster::NO_TRIANGLE)
+        );
+        for (rows, threads) in [(1, 4), (7, 3), (16, 2), (1000, 2)] {
+            assert!(
+                draw(rows, threads) == serial,
+                "{rows} rows per band, {threads} threads"
+            );
         }
     }
 }

@@ -1,0 +1,634 @@
+//! The canvas panel: the CPU-rendered image (one or two views), the overlays, the vertex
+//! handles, hovering and pinning pixels.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use egui::{Color32, CursorIcon, Id, Pos2, Rect, Sense, TextureHandle, TextureOptions, Ui};
+use glam::DVec2;
+
+use super::edit::{self, VertexOnScreen};
+use super::heatmap::{self, Heatmap};
+use super::overlay::{self, HandleMark, OverlayInput};
+use super::paint::{self, CanvasTransform};
+use super::pixel::PixelReport;
+use super::state::{AppState, Command, Compare};
+use crate::raster::project::Viewport;
+use crate::raster::render::Render;
+use crate::raster::{Interpolation, Texture};
+use crate::scene::Scene;
+
+/// User-facing strings of the canvas.
+mod text {
+    pub const RENDER_FAILED: &str = "render failed";
+    pub const HANDLE_TIP: &str = "Drag: move this corner parallel to the screen (it keeps its w).\n\
+        Scroll or Shift+drag: push it away / pull it closer along its view ray \
+        (same place on screen, different w).";
+}
+
+/// Points between the two views of the side-by-side comparison.
+const SIDE_BY_SIDE_GAP: f32 = 10.0;
+/// Points: extra grab radius around a handle.
+const HANDLE_GRAB_SLACK: f32 = 6.0;
+/// Points: half-width of the wipe line's grab area.
+const WIPE_GRAB: f32 = 10.0;
+/// w factor per point of vertical Shift+drag: 100 points up doubles w roughly (e^0.7).
+const PUSH_PER_POINT: f64 = 0.007;
+/// w factor per point of scrolling.
+const PUSH_PER_SCROLL_POINT: f64 = 0.004;
+
+/// What one view of the canvas shows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ViewContent {
+    Mode(Interpolation),
+    Wipe,
+    Difference,
+}
+
+/// One view on screen.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    /// Screen rectangle of the image, in points.
+    pub rect: Rect,
+    pub transform: CanvasTransform,
+    pub content: ViewContent,
+}
+
+/// Everything a render depends on; a new render happens only when this changes.
+#[derive(Clone, Debug, PartialEq)]
+struct RenderKey {
+    scene: Scene,
+    modes: Vec<Interpolation>,
+    texture: (String, Option<std::path::PathBuf>),
+}
+
+/// The rendered frames of the current state.
+pub struct CanvasOutput {
+    /// The scene as rendered (its size set to the render size).
+    pub scene: Scene,
+    pub size: [u32; 2],
+    /// One render per mode shown.
+    pub renders: Vec<(Interpolation, Arc<Render>)>,
+    pub heatmap: Option<Heatmap>,
+    /// Increments with every render.
+    pub generation: u64,
+}
+
+impl CanvasOutput {
+    /// The render in `mode`, or the first one.
+    pub fn render(&self, mode: Interpolation) -> Option<&Render> {
+        self.renders
+            .iter()
+            .find(|(m, _)| *m == mode)
+            .or(self.renders.first())
+            .map(|(_, r)| r.as_ref())
+    }
+
+    pub fn viewport(&self) -> Viewport {
+        Viewport {
+            width: self.size[0],
+            height: self.size[1],
+        }
+    }
+}
+
+/// Timings of the last render, for the status line.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CanvasTiming {
+    pub render_ms: f64,
+    pub upload_ms: f64,
+    pub renders: u64,
+    pub uploads: u64,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum DragKind {
+    Handle { index: usize, grab: DVec2 },
+    Wipe,
+}
+
+/// What one cached render depends on: the sized scene, the mode, the texture.
+type RenderCacheKey = (Scene, Interpolation, TextureKey);
+
+/// A texture's name and the folder it is resolved against.
+pub type TextureKey = (String, Option<std::path::PathBuf>);
+
+/// Renders kept for reuse, so flipping the mode back and forth or switching comparisons does
+/// not render again.
+const RENDER_CACHE: usize = 4;
+
+/// The canvas's state between frames (not saved).
+#[derive(Default)]
+pub struct CanvasState {
+    key: Option<RenderKey>,
+    cache: Vec<(RenderCacheKey, Arc<Render>)>,
+    pub output: Option<CanvasOutput>,
+    textures: Vec<TextureHandle>,
+    uploaded: Option<(u64, Compare, u32)>,
+    drag: Option<DragKind>,
+    pub views: Vec<View>,
+    /// The pixel under the pointer, if it is over a view.
+    pub hover: Option<[u32; 2]>,
+    pub timing: CanvasTiming,
+    pub error: Option<String>,
+}
+
+/// Splits the available rectangle into the views of a comparison, each the largest rectangle
+/// of the scene's aspect ratio (`aspect` = width / height) that fits, and fixes the render
+/// size: `floor(points * pixels_per_point / pixel_size)` rendered pixels per side.
+pub fn layout(
+    available: Rect,
+    compare: Compare,
+    aspect: f32,
+    pixel_size: u32,
+    pixels_per_point: f32,
+) -> (Vec<(Rect, ViewContent)>, [u32; 2]) {
+    let aspect = if aspect.is_finite() && aspect > 0.0 {
+        aspect
+    } else {
+        1.0
+    };
+    let areas: Vec<(Rect, ViewContent)> = match compare {
+        Compare::SideBySide => {
+            // Side by side or one above the other, whichever gives larger views.
+            let w = ((available.width() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
+            let h = ((available.height() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
+            let fit = |w: f32, h: f32| w.min(h * aspect.max(f32::MIN_POSITIVE));
+            let (first, second) = if fit(w, available.height()) >= fit(available.width(), h) {
+                (
+                    Rect::from_min_size(available.min, egui::vec2(w, available.height())),
+                    Rect::from_min_size(
+                        Pos2::new(available.max.x - w, available.min.y),
+                        egui::vec2(w, available.height()),
+                    ),
+                )
+            } else {
+                (
+                    Rect::from_min_size(available.min, egui::vec2(available.width(), h)),
+                    Rect::from_min_size(
+                        Pos2::new(available.min.x, available.max.y - h),
+                        egui::vec2(available.width(), h),
+                    ),
+                )
+            };
+            vec![
+                (first, ViewContent::Mode(Interpolation::Affine)),
+                (second, ViewContent::Mode(Interpolation::Perspective)),
+            ]
+        }
+        Compare::Single => vec![(available, ViewContent::Mode(Interpolation::Perspective))],
+        Compare::Wipe => vec![(available, ViewContent::Wipe)],
+        Compare::Difference => vec![(available, ViewContent::Difference)],
+    };
+    let scale = pixel_size as f32 / pixels_per_point;
+    let max = crate::raster::project::MAX_IMAGE_SIZE;
+    let size_of = |r: Rect| {
+        let fit_w = r.width().min(r.height() * aspect).max(1.0);
+        let fit_h = (fit_w / aspect).max(1.0);
+        let w = ((fit_w / scale).floor() as u32).clamp(1, max);
+        let h = ((fit_h / scale).floor() as u32).clamp(1, max);
+        [w, h]
+    };
+    let size = size_of(Rect::from_min_max(
+        areas[0].0.min + egui::vec2(0.0, overlay::TITLE_STRIP),
+        areas[0].0.max,
+    ));
+    let views = areas
+        .into_iter()
+        .map(|(area, content)| {
+            let area =
+                Rect::from_min_max(area.min + egui::vec2(0.0, overlay::TITLE_STRIP), area.max);
+            let shown = egui::vec2(size[0] as f32 * scale, size[1] as f32 * scale);
+            let min = area.center() - shown / 2.0;
+            // Snap to whole physical pixels so nearest magnification is crisp.
+            let min = Pos2::new(
+                (min.x * pixels_per_point).round() / pixels_per_point,
+                (min.y * pixels_per_point).round() / pixels_per_point,
+            );
+            (Rect::from_min_size(min, shown), content)
+        })
+        .collect();
+    (views, size)
+}
+
+/// The modes a comparison needs rendered.
+fn modes_for(compare: Compare, scene_mode: Interpolation) -> Vec<Interpolation> {
+    match compare {
+        Compare::Single | Compare::Difference => vec![scene_mode],
+        Compare::SideBySide | Compare::Wipe => {
+            vec![Interpolation::Affine, Interpolation::Perspective]
+        }
+    }
+}
+
+impl CanvasState {
+    /// Renders if anything the image depends on changed. Returns whether it rendered.
+    pub fn update(
+        &mut self,
+        state: &AppState,
+        size: [u32; 2],
+        texture: &Texture,
+        texture_key: (String, Option<std::path::PathBuf>),
+    ) -> bool {
+        let mut scene = state.scene.clone();
+        scene.set_size(size[0], size[1]);
+        let modes = modes_for(state.view.compare, state.options().mode);
+        // The mode is in `modes`; the scene's own mode field must not make keys differ.
+        let mut options = edit::options(&scene);
+        options.mode = Interpolation::Perspective;
+        edit::set_options(&mut scene, options);
+        let key = RenderKey {
+            scene,
+            modes,
+            texture: texture_key,
+        };
+        if self.key.as_ref() == Some(&key) {
+            return false;
+        }
+        let start = Instant::now();
+        let mesh = key.scene.to_mesh();
+        let base = key.scene.settings();
+        let mut renders = Vec::new();
+        let mut rendered = false;
+        for &mode in &key.modes {
+            let one = (key.scene.clone(), mode, key.texture.clone());
+            if let Some((_, r)) = self.cache.iter().find(|(k, _)| *k == one) {
+                renders.push((mode, r.clone()));
+                continue;
+            }
+            let settings = crate::raster::RenderSettings { mode, ..base };
+            match crate::raster::render(&mesh, texture, &settings) {
+                Ok(r) => {
+                    let r = Arc::new(r);
+                    self.cache.push((one, r.clone()));
+                    renders.push((mode, r));
+                    rendered = true;
+                }
+                Err(e) => {
+                    self.error = Some(format!("{}: {e}", text::RENDER_FAILED));
+                    return false;
+                }
+            }
+        }
+        if self.cache.len() > RENDER_CACHE {
+            self.cache.drain(..self.cache.len() - RENDER_CACHE);
+        }
+        let heat = (state.view.compare == Compare::Difference)
+            .then(|| {
+                renders
+                    .first()
+                    .map(|(_, r)| heatmap::heatmap(&r.frame, (texture.width(), texture.height())))
+            })
+            .flatten();
+        if rendered {
+            self.timing.render_ms = start.elapsed().as_secs_f64() * 1e3;
+            self.timing.renders += 1;
+        }
+        let generation = self.output.as_ref().map_or(0, |o| o.generation + 1);
+        self.output = Some(CanvasOutput {
+            scene: key.scene.clone(),
+            size,
+            renders,
+            heatmap: heat,
+            generation,
+        });
+        self.error = None;
+        self.key = Some(key);
+        true
+    }
+
+    /// Builds the view images and uploads them, only if the render or the wipe moved.
+    fn upload(&mut self, ctx: &egui::Context, compare: Compare, wipe: f32) {
+        let Some(out) = &self.output else {
+            return;
+        };
+        let wipe_col = (wipe * out.size[0] as f32).round() as u32;
+        let tag = (out.generation, compare, wipe_col);
+        if self.uploaded == Some(tag) && self.textures.len() == self.views.len() {
+            return;
+        }
+        let start = Instant::now();
+        let size = [out.size[0] as usize, out.size[1] as usize];
+        let images: Vec<egui::ColorImage> = self
+            .views
+            .iter()
+            .map(|v| {
+                let pixels: Vec<Color32> = match v.content {
+                    ViewContent::Mode(m) => out
+                        .render(m)
+                        .map(|r| to_color32(&r.frame.color))
+                        .unwrap_or_default(),
+                    ViewContent::Difference => out
+                        .heatmap
+                        .as_ref()
+                        .map(|h| to_color32(&h.pixels))
+                        .unwrap_or_default(),
+                    ViewContent::Wipe => wipe_image(out, wipe_col),
+                };
+                if pixels.len() == size[0] * size[1] {
+                    egui::ColorImage::new(size, pixels)
+                } else {
+                    egui::ColorImage::filled(size, Color32::BLACK)
+                }
+            })
+            .collect();
+        self.textures.truncate(images.len());
+        for (i, image) in images.into_iter().enumerate() {
+            match self.textures.get_mut(i) {
+                Some(t) => t.set(image, TextureOptions::NEAREST),
+                None => self.textures.push(ctx.load_texture(
+                    format!("canvas-{i}"),
+                    image,
+                    TextureOptions::NEAREST,
+                )),
+            }
+        }
+        self.uploaded = Some(tag);
+        self.timing.upload_ms = start.elapsed().as_secs_f64() * 1e3;
+        self.timing.uploads += 1;
+    }
+}
+
+fn to_color32(pixels: &[[u8; 4]]) -> Vec<Color32> {
+    pixels
+        .iter()
+        .map(|c| Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
+        .collect()
+}
+
+/// Affine columns left of `column`, perspective-correct from it on.
+fn wipe_image(out: &CanvasOutput, column: u32) -> Vec<Color32> {
+    let (Some(a), Some(p)) = (
+        out.render(Interpolation::Affine),
+        out.render(Interpolation::Perspective),
+    ) else {
+        return Vec::new();
+    };
+    let w = out.size[0] as usize;
+    a.frame
+        .color
+        .iter()
+        .zip(&p.frame.color)
+        .enumerate()
+        .map(|(i, (ca, cp))| {
+            let c = if (i % w) < column as usize { ca } else { cp };
+            Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3])
+        })
+        .collect()
+}
+
+/// Inputs the canvas needs besides its own state.
+pub struct CanvasInput<'a> {
+    pub state: &'a AppState,
+    pub texture: &'a Texture,
+    pub texture_key: (String, Option<std::path::PathBuf>),
+    /// Derivations of the hovered and pinned pixels from the last frame (for the overlay).
+    pub hover_report: Option<&'a PixelReport>,
+    pub pin_report: Option<&'a PixelReport>,
+}
+
+/// The canvas panel.
+pub fn canvas_ui(
+    ui: &mut Ui,
+    canvas: &mut CanvasState,
+    input: CanvasInput<'_>,
+    out: &mut Vec<Command>,
+) {
+    let state = input.state;
+    let view_settings = &state.view;
+    let ppp = ui.ctx().pixels_per_point();
+    let available = ui.available_rect_before_wrap();
+    let (scene_w, scene_h) = state.scene.size();
+    let (areas, size) = layout(
+        available,
+        view_settings.compare,
+        scene_w as f32 / scene_h as f32,
+        view_settings.pixel_size,
+        ppp,
+    );
+    canvas.update(state, size, input.texture, input.texture_key.clone());
+    let scale = view_settings.pixel_size as f32 / ppp;
+    canvas.views = areas
+        .iter()
+        .map(|&(rect, content)| View {
+            rect,
+            transform: CanvasTransform {
+                origin: rect.min,
+                scale,
+            },
+            content: match content {
+                ViewContent::Mode(_) if view_settings.compare == Compare::Single => {
+                    ViewContent::Mode(state.options().mode)
+                }
+                c => c,
+            },
+        })
+        .collect();
+    canvas.upload(ui.ctx(), view_settings.compare, view_settings.wipe);
+    let Some(output) = &canvas.output else {
+        if let Some(e) = &canvas.error {
+            ui.colored_label(Color32::LIGHT_RED, e);
+        }
+        return;
+    };
+    let viewport = output.viewport();
+    let vertices = edit::vertices_on_screen(&state.scene, viewport);
+    let painter = ui.painter().clone();
+    let base_id = Id::unique("canvas");
+    let mut hover = None;
+    let mut active_handle = None;
+
+    for (vi, view) in canvas.views.iter().enumerate() {
+        if let Some(tex) = canvas.textures.get(vi) {
+            painter.image(
+                tex.id(),
+                view.rect,
+                Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
+                Color32::WHITE,
+            );
+        }
+        let t = view.transform;
+        let view_resp = ui.interact(view.rect, base_id.with(("view", vi)), Sense::click());
+        let pointer_pixel = |p: Pos2| -> Option<[u32; 2]> {
+            let c = t.to_canvas(p);
+            (c.x >= 0.0 && c.y >= 0.0 && c.x < f64::from(size[0]) && c.y < f64::from(size[1]))
+                .then(|| [c.x.floor() as u32, c.y.floor() as u32])
+        };
+        if ui.rect_contains_pointer(view.rect)
+            && let Some(p) = ui.ctx().pointer_hover_pos()
+        {
+            hover = pointer_pixel(p);
+        }
+        if view_resp.clicked()
+            && let Some(p) = view_resp.interact_pointer_pos().and_then(pointer_pixel)
+        {
+            let same = view_settings.pinned == Some(p);
+            out.push(Command::Pin(if same { None } else { Some(p) }));
+        }
+        if view_resp.hovered() {
+            ui.ctx().set_cursor_icon(CursorIcon::Crosshair);
+        }
+
+        // The wipe line.
+        if view.content == ViewContent::Wipe {
+            let x = view.rect.left() + view_settings.wipe * view.rect.width();
+            let grab =
+                Rect::from_x_y_ranges((x - WIPE_GRAB)..=(x + WIPE_GRAB), view.rect.y_range());
+            let r = ui.interact(grab, base_id.with(("wipe", vi)), Sense::drag());
+            if r.hovered() || r.dragged() {
+                ui.ctx().set_cursor_icon(CursorIcon::ResizeHorizontal);
+            }
+            if r.drag_started() {
+                canvas.drag = Some(DragKind::Wipe);
+            }
+            if r.dragged()
+                && let Some(p) = r.interact_pointer_pos()
+            {
+                out.push(Command::SetWipe(
+                    (p.x - view.rect.left()) / view.rect.width(),
+                ));
+            }
+            r.on_hover_text(super::controls::tips::WIPE_LINE);
+        }
+
+        // Handles.
+        if view_settings.show_handles {
+            for (k, v) in vertices.iter().enumerate() {
+                let Some(win) = v.window else {
+                    continue;
+                };
+                let centre = t.to_screen(win);
+                let grab = Rect::from_center_size(
+                    centre,
+                    egui::Vec2::splat(2.0 * (overlay::HANDLE_RADIUS + HANDLE_GRAB_SLACK)),
+                );
+                if !view.rect.expand(overlay::HANDLE_RADIUS).intersects(grab) {
+                    continue;
+                }
+                let r = ui.interact(grab, base_id.with(("handle", vi, k)), Sense::drag());
+                if r.hovered() || r.dragged() {
+                    active_handle = Some(k);
+                    ui.ctx().set_cursor_icon(if r.dragged() {
+                        CursorIcon::Grabbing
+                    } else {
+                        CursorIcon::Grab
+                    });
+                }
+                // Grab offset from where the button went down, not from where the drag was
+                // recognised (a few points later), so the corner follows the pointer exactly.
+                if r.drag_started()
+                    && let Some(p) = ui
+                        .input(|i| i.pointer.press_origin())
+                        .or(r.interact_pointer_pos())
+                {
+                    canvas.drag = Some(DragKind::Handle {
+                        index: k,
+                        grab: t.to_canvas(p) - win,
+                    });
+                }
+                if r.dragged()
+                    && let Some(DragKind::Handle { index, grab }) = canvas.drag
+                    && index == k
+                {
+                    let shift = ui.input(|i| i.modifiers.shift);
+                    if shift {
+                        let dy = f64::from(r.drag_delta().y);
+                        if dy != 0.0 {
+                            out.push(Command::PushVertex {
+                                index: k,
+                                factor: (-dy * PUSH_PER_POINT).exp(),
+                                viewport,
+                            });
+                        }
+                    } else if r.drag_delta() != egui::Vec2::ZERO
+                        && let Some(p) = r.interact_pointer_pos()
+                    {
+                        out.push(Command::MoveVertex {
+                            index: k,
+                            to: t.to_canvas(p) - grab,
+                            viewport,
+                        });
+                    }
+                }
+                if r.hovered() {
+                    let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+                    if scroll != 0.0 {
+                        out.push(Command::PushVertex {
+                            index: k,
+                            factor: (f64::from(scroll) * PUSH_PER_SCROLL_POINT).exp(),
+                            viewport,
+                        });
+                    }
+                }
+                r.on_hover_text(text::HANDLE_TIP);
+            }
+        }
+    }
+    if !ui.input(|i| i.pointer.any_down()) {
+        canvas.drag = None;
+    }
+    canvas.hover = hover;
+
+    // Overlays.
+    let handles: Vec<HandleMark> = vertices
+        .iter()
+        .enumerate()
+        .map(|(k, v): (usize, &VertexOnScreen)| HandleMark {
+            index: k,
+            window: v.window,
+            w: v.w(),
+            active: active_handle == Some(k),
+        })
+        .collect();
+    for view in &canvas.views {
+        let input_overlay = OverlayInput {
+            size,
+            pixel_size: view_settings.pixel_size,
+            mode: match view.content {
+                ViewContent::Mode(m) => Some(m),
+                _ => None,
+            },
+            show_grid: view_settings.show_grid,
+            handles: if view_settings.show_handles {
+                handles.clone()
+            } else {
+                Vec::new()
+            },
+            hover: input.hover_report.map(PixelReport::mark),
+            pin: input.pin_report.map(PixelReport::mark),
+            sub_areas: view_settings.show_sub_areas,
+            wipe: (view.content == ViewContent::Wipe).then_some((
+                f64::from(view_settings.wipe) * f64::from(size[0]),
+                Interpolation::Affine,
+                Interpolation::Perspective,
+            )),
+            color_bar: match view.content {
+                ViewContent::Difference => output.heatmap.as_ref().map(|h| h.scale_max),
+                _ => None,
+            },
+        };
+        let clip = Rect::from_min_max(
+            view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
+            view.rect.max + egui::vec2(2.0, 2.0),
+        );
+        paint::paint(
+            &painter,
+            clip,
+            view.transform,
+            &overlay::build(&input_overlay),
+        );
+        if view_settings.show_handles
+            && let Some(note) = overlay::behind_camera_note(&handles)
+        {
+            paint::label(
+                &painter.with_clip_rect(clip),
+                view.rect.left_bottom() + egui::vec2(10.0, -10.0),
+                egui::Align2::LEFT_BOTTOM,
+                &note,
+                overlay::TEXT_LABEL,
+                overlay::NEGATIVE,
+                Some(overlay::LABEL_BG),
+            );
+        }
+    }
+}

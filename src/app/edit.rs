@@ -1,0 +1,360 @@
+//! Scene edits the app makes: moving a vertex under the cursor, pushing it along its view ray,
+//! the render options stored in a scene. No GUI code here.
+
+use glam::{DVec2, DVec3, DVec4};
+
+use crate::raster::camera::Projection;
+use crate::raster::project::{Viewport, ndc_from_clip, window_from_ndc};
+use crate::raster::{Filter, Interpolation, Shading};
+use crate::scene::{Scene, Tilt};
+
+/// Smallest clip w at which a vertex is drawn as a handle: at or behind the camera plane a
+/// vertex has no position on screen.
+pub const MIN_HANDLE_W: f64 = 1e-6;
+
+/// Range a single push may scale a vertex's distance by, so one scroll event cannot send a
+/// vertex to infinity or onto the camera.
+pub const PUSH_FACTOR_RANGE: (f64, f64) = (0.5, 2.0);
+
+/// Where a mesh vertex lands on screen.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VertexOnScreen {
+    /// Clip-space position.
+    pub clip: DVec4,
+    /// Window position in pixels (image coordinates, y down), unsnapped; `None` when the vertex
+    /// is at or behind the camera (w <= [`MIN_HANDLE_W`]).
+    pub window: Option<DVec2>,
+}
+
+impl VertexOnScreen {
+    /// The vertex's clip w (its view-space distance for a perspective camera).
+    pub fn w(&self) -> f64 {
+        self.clip.w
+    }
+}
+
+/// The mesh vertices' clip positions and window positions for a viewport.
+pub fn vertices_on_screen(scene: &Scene, viewport: Viewport) -> Vec<VertexOnScreen> {
+    // A model's vertices are not handles (there may be thousands).
+    if let Scene::Model(_) = scene {
+        return Vec::new();
+    }
+    let mut sized = scene.clone();
+    sized.set_size(viewport.width, viewport.height);
+    sized
+        .to_mesh()
+        .vertices
+        .iter()
+        .map(|v| VertexOnScreen {
+            clip: v.clip,
+            window: (v.clip.w > MIN_HANDLE_W && v.clip.is_finite())
+                .then(|| window_from_ndc(ndc_from_clip(v.clip), viewport).truncate()),
+        })
+        .collect()
+}
+
+/// Why an edit could not be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum EditError {
+    #[error("vertex {0} does not exist")]
+    NoVertex(usize),
+    #[error("vertex {0} is behind the camera; edit its numbers instead")]
+    BehindCamera(usize),
+    #[error("the edit would give a position that is not a finite number")]
+    NotFinite,
+}
+
+/// NDC (x, y) of a window position: `x = 2 x_w / W - 1`, `y = 1 - 2 y_w / H`.
+///
+/// ```
+/// use barylab::app::edit::ndc_from_window;
+/// use barylab::raster::project::Viewport;
+/// use glam::DVec2;
+/// let vp = Viewport { width: 8, height: 4 };
+/// assert_eq!(ndc_from_window(DVec2::new(4.0, 0.0), vp), DVec2::new(0.0, 1.0));
+/// ```
+pub fn ndc_from_window(window: DVec2, viewport: Viewport) -> DVec2 {
+    DVec2::new(
+        2.0 * window.x / f64::from(viewport.width) - 1.0,
+        1.0 - 2.0 * window.y / f64::from(viewport.height),
+    )
+}
+
+/// Replaces a world scene's corners by their tilted positions and sets the tilt to zero, so a
+/// corner can be moved without the pivot (the corners' centre) moving the others.
+pub fn bake_tilt(scene: &mut Scene) {
+    let world_from_object = scene.world_from_object();
+    if let Scene::World(s) = scene {
+        if s.tilt == Tilt::default() {
+            return;
+        }
+        for c in &mut s.quad {
+            c.position = world_from_object.transform_point3(c.position);
+        }
+        s.tilt = Tilt::default();
+    }
+}
+
+/// Moves vertex `index` so that it lands on `target` (window pixels) while keeping its depth:
+/// in the plane parallel to the screen through the vertex (world form), or keeping clip z and
+/// w (clip form, `x_c = x_ndc w`, `y_c = y_ndc w`). A world scene's tilt is baked in first.
+pub fn move_vertex_to(
+    scene: &mut Scene,
+    index: usize,
+    target: DVec2,
+    viewport: Viewport,
+) -> Result<(), EditError> {
+    let ndc = ndc_from_window(target, viewport);
+    let aspect = viewport.aspect();
+    let clip_w = vertex_clip(scene, index, viewport)?.w;
+    if clip_w <= MIN_HANDLE_W {
+        return Err(EditError::BehindCamera(index));
+    }
+    bake_tilt(scene);
+    match scene {
+        Scene::World(s) => {
+            let corner = s.quad.get_mut(index).ok_or(EditError::NoVertex(index))?;
+            let view_from_world = s.camera.view_from_world();
+            let view_from_clip = s.camera.clip_from_view(aspect).inverse();
+            let view = view_from_world.transform_point3(corner.position);
+            // The view ray through the target: unproject the NDC point at the near and far
+            // planes, then intersect with the plane z_view = const through the vertex.
+            let near = view_from_clip.project_point3(DVec3::new(ndc.x, ndc.y, -1.0));
+            let far = view_from_clip.project_point3(DVec3::new(ndc.x, ndc.y, 1.0));
+            let t = (view.z - near.z) / (far.z - near.z);
+            let moved_view = near + t * (far - near);
+            let world = view_from_world.inverse().transform_point3(moved_view);
+            if !world.is_finite() {
+                return Err(EditError::NotFinite);
+            }
+            corner.position = world;
+        }
+        Scene::Clip(s) => {
+            let v = s
+                .vertices
+                .get_mut(index)
+                .ok_or(EditError::NoVertex(index))?;
+            let moved = DVec4::new(ndc.x * v.clip.w, ndc.y * v.clip.w, v.clip.z, v.clip.w);
+            if !moved.is_finite() {
+                return Err(EditError::NotFinite);
+            }
+            v.clip = moved;
+        }
+        Scene::Model(_) => return Err(EditError::NoVertex(index)),
+    }
+    Ok(())
+}
+
+/// Pushes vertex `index` away (factor > 1) or pulls it closer (factor < 1) along its view ray,
+/// so it stays at the same place on screen while its w is multiplied by `factor`: the view
+/// position is scaled about the eye (perspective; orthographic: only its depth), the clip
+/// position is scaled as a whole (clip form). The factor is clamped to [`PUSH_FACTOR_RANGE`].
+pub fn push_vertex(
+    scene: &mut Scene,
+    index: usize,
+    factor: f64,
+    viewport: Viewport,
+) -> Result<(), EditError> {
+    let k = factor.clamp(PUSH_FACTOR_RANGE.0, PUSH_FACTOR_RANGE.1);
+    if !k.is_finite() {
+        return Err(EditError::NotFinite);
+    }
+    let clip_w = vertex_clip(scene, index, viewport)?.w;
+    bake_tilt(scene);
+    match scene {
+        Scene::World(s) => {
+            let corner = s.quad.get_mut(index).ok_or(EditError::NoVertex(index))?;
+            let view_from_world = s.camera.view_from_world();
+            let view = view_from_world.transform_point3(corner.position);
+            let pushed = match s.camera.projection {
+                Projection::Perspective { .. } => {
+                    if clip_w <= MIN_HANDLE_W {
+                        return Err(EditError::BehindCamera(index));
+                    }
+                    view * k
+                }
+                Projection::Orthographic { .. } => DVec3::new(view.x, view.y, view.z * k),
+            };
+            let world = view_from_world.inverse().transform_point3(pushed);
+            if !world.is_finite() {
+                return Err(EditError::NotFinite);
+            }
+            corner.position = world;
+        }
+        Scene::Clip(s) => {
+            let v = s
+                .vertices
+                .get_mut(index)
+                .ok_or(EditError::NoVertex(index))?;
+            if v.clip.w <= MIN_HANDLE_W {
+                return Err(EditError::BehindCamera(index));
+            }
+            v.clip *= k;
+        }
+        Scene::Model(_) => return Err(EditError::NoVertex(index)),
+    }
+    Ok(())
+}
+
+fn vertex_clip(scene: &Scene, index: usize, viewport: Viewport) -> Result<DVec4, EditError> {
+    vertices_on_screen(scene, viewport)
+        .get(index)
+        .map(|v| v.clip)
+        .ok_or(EditError::NoVertex(index))
+}
+
+/// The render options a scene stores, as one value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SceneOptions {
+    pub mode: Interpolation,
+    pub shading: Shading,
+    pub filter: Filter,
+    pub wireframe: bool,
+}
+
+/// Reads a scene's render options.
+pub fn options(scene: &Scene) -> SceneOptions {
+    let s = scene.settings();
+    SceneOptions {
+        mode: s.mode,
+        shading: s.shading,
+        filter: s.filter,
+        wireframe: s.wireframe,
+    }
+}
+
+/// Writes a scene's render options.
+pub fn set_options(scene: &mut Scene, o: SceneOptions) {
+    match scene {
+        Scene::World(s) => {
+            (s.mode, s.shading, s.filter, s.wireframe) = (o.mode, o.shading, o.filter, o.wireframe);
+        }
+        Scene::Clip(s) => {
+            (s.mode, s.shading, s.filter, s.wireframe) = (o.mode, o.shading, o.filter, o.wireframe);
+        }
+        Scene::Model(s) => {
+            (s.mode, s.filter, s.wireframe) = (o.mode, o.filter, o.wireframe);
+            s.shading = Some(o.shading);
+        }
+    }
+}
+
+/// The vertical field of view of a world scene's perspective camera, in degrees.
+pub fn fov_deg(scene: &Scene) -> Option<f64> {
+    match scene {
+        Scene::World(s) => match s.camera.projection {
+            Projection::Perspective { fov_y_deg, .. } => Some(fov_y_deg),
+            Projection::Orthographic { .. } => None,
+        },
+        Scene::Model(s) => match s.camera().projection {
+            Projection::Perspective { fov_y_deg, .. } => Some(fov_y_deg),
+            Projection::Orthographic { .. } => None,
+        },
+        Scene::Clip(_) => None,
+    }
+}
+
+/// Sets the field of view of a world or model scene's perspective camera (ignored otherwise).
+pub fn set_fov_deg(scene: &mut Scene, fov: f64) {
+    if let Scene::Model(s) = scene
+        && fov.is_finite()
+    {
+        let mut cam = s.camera();
+        if let Projection::Perspective { fov_y_deg, .. } = &mut cam.projection {
+            *fov_y_deg = fov.clamp(FOV_RANGE_DEG.0, FOV_RANGE_DEG.1);
+            s.camera = Some(cam);
+        }
+        return;
+    }
+    if let Scene::World(s) = scene
+        && let Projection::Perspective { fov_y_deg, .. } = &mut s.camera.projection
+        && fov.is_finite()
+    {
+        *fov_y_deg = fov.clamp(FOV_RANGE_DEG.0, FOV_RANGE_DEG.1);
+    }
+}
+
+/// Field-of-view range the app offers, in degrees (the camera accepts (0, 180)).
+pub const FOV_RANGE_DEG: (f64, f64) = (5.0, 150.0);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn vp() -> Viewport {
+        Viewport {
+            width: 800,
+            height: 600,
+        }
+    }
+
+    #[test]
+    fn moved_vertex_lands_on_the_target_at_the_same_w() {
+        for tilt in [
+            Tilt::default(),
+            Tilt {
+                pitch_deg: 20.0,
+                yaw_deg: -35.0,
+            },
+        ] {
+            let mut scene = Scene::default_scene();
+            if let Scene::World(s) = &mut scene {
+                s.tilt = tilt;
+            }
+            let before = vertices_on_screen(&scene, vp());
+            let target = DVec2::new(123.25, 456.5);
+            move_vertex_to(&mut scene, 0, target, vp()).expect("move");
+            let after = vertices_on_screen(&scene, vp());
+            let moved = after[0].window.expect("in front");
+            assert!((moved - target).length() < 1e-9, "{moved} vs {target}");
+            assert!((after[0].w() - before[0].w()).abs() < 1e-9);
+            for k in 1..4 {
+                let (a, b) = (after[k].window.expect("a"), before[k].window.expect("b"));
+                assert!((a - b).length() < 1e-9, "vertex {k} moved: {a} vs {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn pushed_vertex_stays_put_on_screen_and_its_w_scales() {
+        let mut scene = Scene::default_scene();
+        let before = vertices_on_screen(&scene, vp());
+        push_vertex(&mut scene, 2, 1.5, vp()).expect("push");
+        let after = vertices_on_screen(&scene, vp());
+        let (a, b) = (after[2].window.expect("a"), before[2].window.expect("b"));
+        assert!((a - b).length() < 1e-9);
+        assert!((after[2].w() / before[2].w() - 1.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn clip_form_edits_keep_w() {
+        let mut scene = Scene::from_json(
+            include_str!("../../assets/scenes/clip-two-triangles.json"),
+            "clip-two-triangles.json",
+        )
+        .expect("scene");
+        let vp = Viewport {
+            width: 64,
+            height: 48,
+        };
+        move_vertex_to(&mut scene, 2, DVec2::new(10.0, 20.0), vp).expect("move");
+        let v = vertices_on_screen(&scene, vp)[2];
+        assert_eq!(v.w(), 3.0);
+        assert!((v.window.expect("front") - DVec2::new(10.0, 20.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn a_vertex_behind_the_camera_cannot_be_dragged() {
+        let mut scene = Scene::from_json(
+            include_str!("../../assets/scenes/corner-behind.json"),
+            "corner-behind.json",
+        )
+        .expect("scene");
+        let behind = vertices_on_screen(&scene, vp())
+            .iter()
+            .position(|v| v.window.is_none())
+            .expect("a corner is behind");
+        let err = move_vertex_to(&mut scene, behind, DVec2::new(1.0, 1.0), vp());
+        assert_eq!(err, Err(EditError::BehindCamera(behind)));
+    }
+}

@@ -1,0 +1,135 @@
+//! The difference heatmap: how far apart, in texels, the affine and the perspective-correct
+//! texture coordinates of each pixel are. Reads the framebuffer (which holds both); no GUI code.
+
+use crate::raster::Framebuffer;
+
+/// One pixel's difference in texels: `|((u_a - u_p) W, (v_a - v_p) H)|` for a W x H texture.
+///
+/// ```
+/// use barylab::app::heatmap::texel_difference;
+/// // 0.03 of a 100-texel-wide texture across, 0.04 of a 100-texel-high one down: 5 texels.
+/// let d = texel_difference([0.53, 0.54], [0.5, 0.5], (100, 100));
+/// assert!((d - 5.0).abs() < 1e-4);
+/// ```
+pub fn texel_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: (u32, u32)) -> f32 {
+    let du = (uv_affine[0] - uv_perspective[0]) * size.0 as f32;
+    let dv = (uv_affine[1] - uv_perspective[1]) * size.1 as f32;
+    (du * du + dv * dv).sqrt()
+}
+
+/// A rendered heatmap and its scale.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Heatmap {
+    pub width: u32,
+    pub height: u32,
+    /// RGBA8, row 0 at the top; uncovered pixels keep the framebuffer's colour dimmed.
+    pub pixels: Vec<[u8; 4]>,
+    /// The largest difference over the covered pixels, in texels.
+    pub max: f32,
+    /// The difference the top of the colour scale stands for: `max` rounded up by
+    /// [`nice_ceiling`].
+    pub scale_max: f32,
+}
+
+/// The colour of a difference `d` on a scale from 0 to `scale_max` (the magma colour map).
+pub fn heat_color(d: f32, scale_max: f32) -> [u8; 4] {
+    let t = if scale_max > 0.0 {
+        f64::from(d / scale_max).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let c = colorous::MAGMA.eval_continuous(t);
+    [c.r, c.g, c.b, 255]
+}
+
+/// The smallest of 1, 1.5, 2, 3, 4, 5, 6, 8 times a power of ten that is at least `x` (at
+/// least 0.01), so the scale's top is at most a third above the largest value.
+///
+/// ```
+/// use barylab::app::heatmap::nice_ceiling;
+/// assert_eq!(nice_ceiling(0.0), 0.01);
+/// assert_eq!(nice_ceiling(3.2), 4.0);
+/// assert_eq!(nice_ceiling(20.0), 20.0);
+/// assert_eq!(nice_ceiling(251.0), 300.0);
+/// assert_eq!(nice_ceiling(81.0), 100.0);
+/// ```
+pub fn nice_ceiling(x: f32) -> f32 {
+    const FLOOR: f32 = 0.01;
+    if x.is_nan() || x <= FLOOR {
+        return FLOOR;
+    }
+    let p = 10f32.powf(x.log10().floor());
+    for m in [1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0] {
+        // Tolerance for x being a power of ten times m up to rounding in powf/log10.
+        if x <= m * p * (1.0 + 1e-6) {
+            return m * p;
+        }
+    }
+    10.0 * p
+}
+
+/// The heatmap of a framebuffer for a texture of `texture_size` texels.
+pub fn heatmap(frame: &Framebuffer, texture_size: (u32, u32)) -> Heatmap {
+    let n = frame.color.len();
+    let mut diff = vec![None; n];
+    let mut max = 0.0f32;
+    for (i, d) in diff.iter_mut().enumerate() {
+        if frame.triangle[i] != crate::raster::NO_TRIANGLE {
+            let v = texel_difference(frame.uv_affine[i], frame.uv_perspective[i], texture_size);
+            max = max.max(v);
+            *d = Some(v);
+        }
+    }
+    let scale_max = nice_ceiling(max);
+    let pixels = diff
+        .iter()
+        .zip(&frame.color)
+        .map(|(d, c)| match d {
+            Some(v) => heat_color(*v, scale_max),
+            None => [c[0] / 2, c[1] / 2, c[2] / 2, c[3]],
+        })
+        .collect();
+    Heatmap {
+        width: frame.width,
+        height: frame.height,
+        pixels,
+        max,
+        scale_max,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::presets::Preset;
+    use crate::raster::{Texture, render};
+
+    #[test]
+    fn front_facing_quad_has_no_difference_and_the_floor_has_some() {
+        let texture = Texture::builtin(crate::raster::BuiltinTexture::UvGrid);
+        let size = (texture.width(), texture.height());
+        let mut scene = Preset::FrontFacing.scene();
+        scene.set_size(160, 120);
+        let out = render(&scene.to_mesh(), &texture, &scene.settings()).expect("render");
+        let h = heatmap(&out.frame, size);
+        // Equal w everywhere: the weights agree up to float rounding.
+        assert!(h.max < 1e-3, "max {}", h.max);
+        let mut floor = Preset::Floor.scene();
+        floor.set_size(160, 120);
+        let out = render(&floor.to_mesh(), &texture, &floor.settings()).expect("render");
+        let h = heatmap(&out.frame, size);
+        assert!(h.max > 10.0, "max {}", h.max);
+        assert!(h.scale_max >= h.max);
+        // The hottest pixel gets the top colour of the scale, up to the map's quantisation.
+        let i = (0..out.frame.color.len())
+            .filter(|&i| out.frame.covered(i as u32 % 160, i as u32 / 160))
+            .max_by(|&a, &b| {
+                let d = |i: usize| {
+                    texel_difference(out.frame.uv_affine[i], out.frame.uv_perspective[i], size)
+                };
+                d(a).total_cmp(&d(b))
+            })
+            .expect("covered pixel");
+        assert_eq!(h.pixels[i], heat_color(h.max, h.scale_max));
+    }
+}

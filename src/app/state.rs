@@ -1,0 +1,388 @@
+//! The app's state: what is saved between runs, and the commands that change it. Panels read
+//! the state and push [`Command`]s; the app applies them once per frame.
+
+use std::path::PathBuf;
+
+use glam::{DVec2, DVec4, Vec2, Vec3};
+use serde::{Deserialize, Serialize};
+
+use super::edit::{self, EditError, SceneOptions};
+use super::presets::Preset;
+use crate::raster::project::Viewport;
+use crate::raster::{Filter, Interpolation, Shading};
+use crate::scene::{Scene, Tilt};
+
+/// How the canvas compares the two interpolation modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Compare {
+    /// One view in the scene's mode.
+    #[default]
+    Single,
+    /// Affine on the left, perspective-correct on the right, same view.
+    SideBySide,
+    /// One view split by a draggable line: affine left of it, perspective-correct right.
+    Wipe,
+    /// |uv affine - uv perspective| in texels as a heatmap.
+    Difference,
+}
+
+impl Compare {
+    pub const ALL: [Compare; 4] = [
+        Compare::Single,
+        Compare::SideBySide,
+        Compare::Wipe,
+        Compare::Difference,
+    ];
+}
+
+/// Smallest and largest pixel size (display pixels per rendered pixel).
+pub const PIXEL_SIZE_RANGE: (u32, u32) = (1, 32);
+/// Range of the UI zoom factor.
+pub const UI_SCALE_RANGE: (f32, f32) = (0.75, 2.5);
+
+/// View settings saved between runs (the scene is saved beside them).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ViewSettings {
+    pub pixel_size: u32,
+    pub compare: Compare,
+    /// Wipe line position as a fraction of the canvas width.
+    pub wipe: f32,
+    pub show_grid: bool,
+    pub show_handles: bool,
+    pub show_sub_areas: bool,
+    pub show_controls: bool,
+    pub show_inspector: bool,
+    pub pinned: Option<[u32; 2]>,
+    /// UI zoom factor (text and widgets), for projectors.
+    pub ui_scale: f32,
+}
+
+impl Default for ViewSettings {
+    fn default() -> Self {
+        Self {
+            pixel_size: 1,
+            compare: Compare::Single,
+            wipe: 0.5,
+            show_grid: true,
+            show_handles: true,
+            show_sub_areas: true,
+            show_controls: true,
+            show_inspector: true,
+            pinned: None,
+            ui_scale: 1.0,
+        }
+    }
+}
+
+/// Everything saved between runs.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SavedState {
+    /// The scene as JSON (parsed with [`Scene::from_json`] on restore).
+    pub scene_json: String,
+    /// Folder relative texture paths of the scene are resolved against.
+    pub scene_dir: Option<PathBuf>,
+    pub view: ViewSettings,
+}
+
+/// Key under which eframe stores [`SavedState`].
+pub const STORAGE_KEY: &str = "barylab_state";
+
+/// The live document: the scene and the view.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AppState {
+    pub scene: Scene,
+    pub scene_dir: Option<PathBuf>,
+    pub view: ViewSettings,
+}
+
+impl Default for AppState {
+    fn default() -> Self {
+        Self {
+            scene: Scene::default_scene(),
+            scene_dir: None,
+            view: ViewSettings::default(),
+        }
+    }
+}
+
+impl AppState {
+    pub fn to_saved(&self) -> SavedState {
+        SavedState {
+            scene_json: self.scene.to_json(),
+            scene_dir: self.scene_dir.clone(),
+            view: self.view.clone(),
+        }
+    }
+
+    /// Restores a saved state; a scene that no longer parses is replaced by the default scene
+    /// and the error is returned beside the state.
+    pub fn from_saved(saved: SavedState) -> (Self, Option<String>) {
+        let mut state = AppState {
+            view: saved.view,
+            ..AppState::default()
+        };
+        state.view.pixel_size = state
+            .view
+            .pixel_size
+            .clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);
+        if !(state.view.ui_scale >= UI_SCALE_RANGE.0 && state.view.ui_scale <= UI_SCALE_RANGE.1) {
+            state.view.ui_scale = ViewSettings::default().ui_scale;
+        }
+        let mut error = None;
+        if !saved.scene_json.is_empty() {
+            match Scene::from_json(&saved.scene_json, "saved scene") {
+                Ok(scene) => {
+                    state.scene = scene;
+                    state.scene_dir = saved.scene_dir;
+                }
+                Err(e) => error = Some(e.to_string()),
+            }
+        }
+        (state, error)
+    }
+
+    pub fn options(&self) -> SceneOptions {
+        edit::options(&self.scene)
+    }
+}
+
+/// A small change to the state, pushed by a panel and applied once per frame.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    /// Replace the scene (a file was opened); keeps the view.
+    OpenScene(Box<Scene>, Option<PathBuf>),
+    /// Load a preset's geometry and camera, keeping the render options and texture.
+    Preset(Preset),
+    /// Back to the built-in default scene (view settings kept).
+    ResetScene,
+    /// Back to the default scene and the default view settings.
+    ResetAll,
+    SetMode(Interpolation),
+    ToggleMode,
+    SetShading(Shading),
+    SetFilter(Filter),
+    SetWireframe(bool),
+    SetCompare(Compare),
+    SetWipe(f32),
+    SetPixelSize(u32),
+    SetShowGrid(bool),
+    SetShowHandles(bool),
+    SetShowSubAreas(bool),
+    SetShowControls(bool),
+    SetShowInspector(bool),
+    SetUiScale(f32),
+    /// Drag: move a vertex so it lands on this window position, at its depth.
+    MoveVertex {
+        index: usize,
+        to: DVec2,
+        viewport: Viewport,
+    },
+    /// Scroll / Shift+drag: multiply a vertex's w, keeping its place on screen.
+    PushVertex {
+        index: usize,
+        factor: f64,
+        viewport: Viewport,
+    },
+    /// Numeric edit of a world-form corner (object-space position, uv).
+    SetCorner {
+        index: usize,
+        position: glam::DVec3,
+        uv: Vec2,
+        color: Vec3,
+    },
+    /// Numeric edit of a clip-form vertex.
+    SetClipVertex {
+        index: usize,
+        clip: DVec4,
+        uv: Vec2,
+    },
+    SetTilt(Tilt),
+    SetFov(f64),
+    /// Pin a pixel (or unpin).
+    Pin(Option<[u32; 2]>),
+    /// Move the pin by whole pixels, staying inside the image.
+    MovePin {
+        dx: i32,
+        dy: i32,
+        size: [u32; 2],
+    },
+}
+
+impl AppState {
+    /// Applies one command. Returns a message for the status line when it could not be done.
+    pub fn apply(&mut self, command: Command) -> Result<(), EditError> {
+        let mut options = self.options();
+        match command {
+            Command::OpenScene(scene, dir) => {
+                self.scene = *scene;
+                self.scene_dir = dir;
+                self.view.pinned = None;
+            }
+            Command::Preset(p) => {
+                let texture = self.scene.texture_name().to_string();
+                let mut scene = p.scene();
+                edit::set_options(&mut scene, options);
+                if let Scene::World(s) = &mut scene {
+                    s.texture = texture;
+                } else {
+                    self.scene_dir = None;
+                }
+                self.scene = scene;
+                self.view.pinned = None;
+            }
+            Command::ResetScene => {
+                self.scene = Scene::default_scene();
+                self.scene_dir = None;
+                self.view.pinned = None;
+            }
+            Command::ResetAll => *self = AppState::default(),
+            Command::SetMode(m) => {
+                options.mode = m;
+                edit::set_options(&mut self.scene, options);
+            }
+            Command::ToggleMode => {
+                options.mode = match options.mode {
+                    Interpolation::Affine => Interpolation::Perspective,
+                    Interpolation::Perspective => Interpolation::Affine,
+                };
+                edit::set_options(&mut self.scene, options);
+            }
+            Command::SetShading(s) => {
+                options.shading = s;
+                edit::set_options(&mut self.scene, options);
+            }
+            Command::SetFilter(f) => {
+                options.filter = f;
+                edit::set_options(&mut self.scene, options);
+            }
+            Command::SetWireframe(w) => {
+                options.wireframe = w;
+                edit::set_options(&mut self.scene, options);
+            }
+            Command::SetCompare(c) => self.view.compare = c,
+            Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),
+            Command::SetPixelSize(p) => {
+                let p = p.clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);
+                if p != self.view.pixel_size {
+                    self.view.pixel_size = p;
+                    // The pixel grid changes, so a pinned pixel would point elsewhere.
+                    self.view.pinned = None;
+                }
+            }
+            Command::SetShowGrid(b) => self.view.show_grid = b,
+            Command::SetShowHandles(b) => self.view.show_handles = b,
+            Command::SetShowSubAreas(b) => self.view.show_sub_areas = b,
+            Command::SetShowControls(b) => self.view.show_controls = b,
+            Command::SetShowInspector(b) => self.view.show_inspector = b,
+            Command::SetUiScale(s) => {
+                self.view.ui_scale = s.clamp(UI_SCALE_RANGE.0, UI_SCALE_RANGE.1)
+            }
+            Command::MoveVertex {
+                index,
+                to,
+                viewport,
+            } => edit::move_vertex_to(&mut self.scene, index, to, viewport)?,
+            Command::PushVertex {
+                index,
+                factor,
+                viewport,
+            } => edit::push_vertex(&mut self.scene, index, factor, viewport)?,
+            Command::SetCorner {
+                index,
+                position,
+                uv,
+                color,
+            } => {
+                if let Scene::World(s) = &mut self.scene {
+                    if !(position.is_finite() && uv.is_finite()) {
+                        return Err(EditError::NotFinite);
+                    }
+                    let c = s.quad.get_mut(index).ok_or(EditError::NoVertex(index))?;
+                    (c.position, c.uv, c.color) = (position, uv, color);
+                }
+            }
+            Command::SetClipVertex { index, clip, uv } => {
+                if let Scene::Clip(s) = &mut self.scene {
+                    if !(clip.is_finite() && uv.is_finite()) {
+                        return Err(EditError::NotFinite);
+                    }
+                    let v = s
+                        .vertices
+                        .get_mut(index)
+                        .ok_or(EditError::NoVertex(index))?;
+                    (v.clip, v.uv) = (clip, uv);
+                }
+            }
+            Command::SetTilt(t) => {
+                if let Scene::World(s) = &mut self.scene
+                    && t.pitch_deg.is_finite()
+                    && t.yaw_deg.is_finite()
+                {
+                    s.tilt = t;
+                }
+            }
+            Command::SetFov(f) => edit::set_fov_deg(&mut self.scene, f),
+            Command::Pin(p) => self.view.pinned = p,
+            Command::MovePin { dx, dy, size } => {
+                if let Some([x, y]) = self.view.pinned {
+                    let nx = (i64::from(x) + i64::from(dx)).clamp(0, i64::from(size[0]) - 1);
+                    let ny = (i64::from(y) + i64::from(dy)).clamp(0, i64::from(size[1]) - 1);
+                    self.view.pinned = Some([nx as u32, ny as u32]);
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn saved_state_round_trips_and_bad_scenes_fall_back_to_the_default() {
+        let mut s = AppState::default();
+        s.apply(Command::Preset(Preset::GrazingWall))
+            .expect("preset");
+        s.apply(Command::SetMode(Interpolation::Affine))
+            .expect("mode");
+        s.apply(Command::SetPixelSize(8)).expect("size");
+        let json = serde_json::to_string(&s.to_saved()).expect("json");
+        let back: SavedState = serde_json::from_str(&json).expect("parse");
+        let (restored, err) = AppState::from_saved(back);
+        assert_eq!(err, None);
+        assert_eq!(restored, s);
+
+        let broken = SavedState {
+            scene_json: "{\"quad\": 3}".into(),
+            ..SavedState::default()
+        };
+        let (restored, err) = AppState::from_saved(broken);
+        assert!(err.expect("error").starts_with("saved scene:"));
+        assert_eq!(restored.scene, Scene::default_scene());
+        // Old or partial saved states still load (serde default).
+        let partial: SavedState =
+            serde_json::from_str("{\"view\": {\"pixel_size\": 4}}").expect("partial state");
+        assert_eq!(partial.view.pixel_size, 4);
+        assert!(partial.view.show_handles);
+    }
+
+    #[test]
+    fn toggling_the_mode_and_moving_the_pin() {
+        let mut s = AppState::default();
+        assert_eq!(s.options().mode, Interpolation::Perspective);
+        s.apply(Command::ToggleMode).expect("toggle");
+        assert_eq!(s.options().mode, Interpolation::Affine);
+        s.apply(Command::Pin(Some([0, 5]))).expect("pin");
+        s.apply(Command::MovePin {
+            dx: -1,
+            dy: 1,
+            size: [10, 10],
+        })
+        .expect("move");
+        assert_eq!(s.view.pinned, Some([0, 6]));
+    }
+}

@@ -1,0 +1,105 @@
+//! The status line: canvas size, mode, timings, messages.
+
+use egui::{Color32, RichText, Ui};
+
+use super::canvas::CanvasState;
+use super::state::{AppState, Compare};
+use crate::raster::Interpolation;
+
+/// User-facing strings of the status line.
+mod text {
+    pub const CANVAS: &str = "canvas";
+    pub const AT: &str = "at";
+    pub const RENDER: &str = "render";
+    pub const UPLOAD: &str = "upload";
+    pub const UI: &str = "ui";
+    pub const FRAME: &str = "frame";
+    pub const AFFINE: &str = "AFFINE";
+    pub const PERSPECTIVE: &str = "PERSPECTIVE-CORRECT";
+    pub const SIDE_BY_SIDE: &str = "side by side";
+    pub const WIPE: &str = "wipe";
+    pub const DIFFERENCE: &str = "difference";
+    pub const HELP: &str = "F1: help";
+    pub const FRAME_TIP: &str = "Frame: CPU time of the whole last frame (render + upload + UI + paint), \
+        as eframe measures it. Render: the CPU rasterizer. Upload: building the canvas images. \
+        UI: this frame's UI code including render and upload.";
+}
+
+/// Timings the app measures itself.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FrameTiming {
+    /// CPU time of the last whole frame, from eframe.
+    pub frame_ms: Option<f32>,
+    /// This app's `ui` function in the previous frame.
+    pub ui_ms: f64,
+}
+
+/// A message for the status line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Message {
+    pub text: String,
+    pub error: bool,
+}
+
+/// The status line.
+pub fn status_ui(
+    ui: &mut Ui,
+    state: &AppState,
+    canvas: &CanvasState,
+    timing: FrameTiming,
+    message: Option<&Message>,
+) {
+    ui.horizontal(|ui| {
+        let mode = state.options().mode;
+        let (mode_text, mode_color) = match state.view.compare {
+            Compare::Single => match mode {
+                Interpolation::Affine => (text::AFFINE, Color32::from_rgb(230, 140, 60)),
+                Interpolation::Perspective => (text::PERSPECTIVE, Color32::from_rgb(80, 170, 255)),
+            },
+            Compare::SideBySide => (text::SIDE_BY_SIDE, Color32::LIGHT_GRAY),
+            Compare::Wipe => (text::WIPE, Color32::LIGHT_GRAY),
+            Compare::Difference => (text::DIFFERENCE, Color32::LIGHT_GRAY),
+        };
+        ui.label(RichText::new(mode_text).strong().color(mode_color));
+        ui.separator();
+        if let Some(out) = &canvas.output {
+            ui.label(format!(
+                "{} {}×{} {} {}×",
+                text::CANVAS,
+                out.size[0],
+                out.size[1],
+                text::AT,
+                state.view.pixel_size
+            ));
+            ui.separator();
+        }
+        let t = canvas.timing;
+        let frame = timing
+            .frame_ms
+            .map_or_else(|| "–".to_string(), |f| format!("{f:.1} ms"));
+        ui.label(format!(
+            "{} {:.1} ms · {} {:.1} ms · {} {:.1} ms · {} {}",
+            text::RENDER,
+            t.render_ms,
+            text::UPLOAD,
+            t.upload_ms,
+            text::UI,
+            timing.ui_ms,
+            text::FRAME,
+            frame
+        ))
+        .on_hover_text(text::FRAME_TIP);
+        if let Some(m) = message {
+            ui.separator();
+            let c = if m.error {
+                Color32::from_rgb(255, 110, 110)
+            } else {
+                Color32::LIGHT_GREEN
+            };
+            ui.label(RichText::new(&m.text).color(c));
+        }
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            ui.label(RichText::new(text::HELP).weak());
+        });
+    });
+}

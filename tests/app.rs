@@ -1,0 +1,289 @@
+//! The app driven through egui_kittest: real clicks, hovers, drags and keys on the real UI.
+
+use barylab::app::edit::vertices_on_screen;
+use barylab::app::state::Command;
+use barylab::app::{AppOptions, BaryApp};
+use barylab::raster::Interpolation;
+use barylab::scene::Scene;
+use egui::Pos2;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use glam::DVec2;
+
+/// Frames a run may take to settle (smooth scrolling spreads a wheel event over a few).
+const MAX_STEPS: u64 = 30;
+
+/// Window size of the tests, in points.
+const SIZE: egui::Vec2 = egui::vec2(1500.0, 950.0);
+
+fn harness() -> Harness<'static, BaryApp> {
+    let app = BaryApp::new(None, AppOptions::default());
+    let mut h = Harness::builder()
+        .with_size(SIZE)
+        .with_max_steps(MAX_STEPS)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    h.run();
+    h
+}
+
+/// Screen position (points) of the centre of rendered pixel `p` in view 0.
+fn pixel_centre(h: &Harness<'_, BaryApp>, p: [u32; 2]) -> Pos2 {
+    let view = h.state().canvas().views[0];
+    view.transform
+        .to_screen(DVec2::new(f64::from(p[0]) + 0.5, f64::from(p[1]) + 0.5))
+}
+
+/// Window positions of the mesh vertices in the rendered canvas.
+fn vertex_windows(h: &Harness<'_, BaryApp>) -> Vec<Option<DVec2>> {
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    vertices_on_screen(&h.state().state().scene, out.viewport())
+        .iter()
+        .map(|v| v.window)
+        .collect()
+}
+
+fn colors(h: &Harness<'_, BaryApp>) -> Vec<[u8; 4]> {
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    out.renders[0].1.frame.color.clone()
+}
+
+#[test]
+fn switching_the_mode_changes_the_rendered_canvas() {
+    let mut h = harness();
+    assert_eq!(h.state().state().options().mode, Interpolation::Perspective);
+    let perspective = colors(&h);
+    let uploads = h.state().canvas().timing.uploads;
+    h.get_by_label("Affine").click();
+    h.run();
+    assert_eq!(h.state().state().options().mode, Interpolation::Affine);
+    let affine = colors(&h);
+    assert_eq!(affine.len(), perspective.len());
+    let differing = affine
+        .iter()
+        .zip(&perspective)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        differing > affine.len() / 20,
+        "only {differing} pixels changed"
+    );
+    assert!(
+        h.state().canvas().timing.uploads > uploads,
+        "texture not re-uploaded"
+    );
+    // The key P flips back, to the very same image.
+    h.key_press(egui::Key::P);
+    h.run();
+    assert_eq!(h.state().state().options().mode, Interpolation::Perspective);
+    assert!(colors(&h) == perspective);
+}
+
+#[test]
+fn nothing_is_rendered_again_when_nothing_changed() {
+    let mut h = harness();
+    let renders = h.state().canvas().timing.renders;
+    let uploads = h.state().canvas().timing.uploads;
+    h.hover_at(pixel_centre(&h, [100, 100]));
+    h.run();
+    h.hover_at(pixel_centre(&h, [120, 110]));
+    h.run();
+    assert_eq!(h.state().canvas().timing.renders, renders);
+    assert_eq!(h.state().canvas().timing.uploads, uploads);
+}
+
+#[test]
+fn hovering_a_pixel_shows_its_weights_in_the_inspector() {
+    let mut h = harness();
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let render = out.render(Interpolation::Perspective).expect("render");
+    // A covered pixel in the middle of the quad.
+    let [w, hgt] = out.size;
+    let p = [w / 2, hgt * 2 / 3];
+    assert!(render.frame.covered(p[0], p[1]));
+    let ws = render.frame.weights_screen[render.frame.index(p[0], p[1])];
+    h.hover_at(pixel_centre(&h, p));
+    h.run();
+    assert_eq!(h.state().canvas().hover, Some(p));
+    let shown = format!("{:.4} {:.4} {:.4}", ws[0], ws[1], ws[2]);
+    h.get_by_label_contains(&shown);
+}
+
+#[test]
+fn dragging_handle_a_moves_vertex_a() {
+    let mut h = harness();
+    let before = vertex_windows(&h);
+    let a = before[0].expect("A on screen");
+    let view = h.state().canvas().views[0];
+    let start = view.transform.to_screen(a);
+    let delta = egui::vec2(60.0, -40.0);
+    h.hover_at(start);
+    h.run();
+    h.drag_at(start);
+    h.run();
+    for k in 1..=4 {
+        h.hover_at(start + delta * (k as f32 / 4.0));
+        h.run();
+    }
+    h.drop_at(start + delta);
+    h.run();
+    let after = vertex_windows(&h);
+    let moved = after[0].expect("A on screen");
+    let expected =
+        a + DVec2::new(f64::from(delta.x), f64::from(delta.y)) / f64::from(view.transform.scale);
+    assert!(
+        (moved - expected).length() < 0.01,
+        "A at {moved}, expected {expected}"
+    );
+    for k in 1..4 {
+        let (x, y) = (after[k].expect("on screen"), before[k].expect("on screen"));
+        assert!((x - y).length() < 1e-9, "vertex {k} moved");
+    }
+    // Its depth did not change: same w.
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let w_after = vertices_on_screen(&h.state().state().scene, out.viewport())[0].w();
+    let w_before = vertices_on_screen(&Scene::default_scene(), out.viewport())[0].w();
+    assert!((w_after - w_before).abs() < 1e-9);
+}
+
+#[test]
+fn pressing_reset_restores_the_default_scene() {
+    let mut h = harness();
+    h.state_mut()
+        .push(Command::Preset(barylab::app::presets::Preset::GrazingWall));
+    h.run();
+    assert_ne!(h.state().state().scene, Scene::default_scene());
+    h.get_by_label("Reset scene").click();
+    h.run();
+    assert_eq!(h.state().state().scene, Scene::default_scene());
+}
+
+#[test]
+fn clicking_pins_a_pixel_and_arrow_keys_move_it() {
+    let mut h = harness();
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let p = [out.size[0] / 2, out.size[1] / 2];
+    let pos = pixel_centre(&h, p);
+    h.hover_at(pos);
+    h.run();
+    h.event(egui::Event::PointerButton {
+        pos,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.event(egui::Event::PointerButton {
+        pos,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    assert_eq!(h.state().state().view.pinned, Some(p));
+    h.key_press(egui::Key::ArrowRight);
+    h.run();
+    h.key_press(egui::Key::ArrowUp);
+    h.run();
+    assert_eq!(h.state().state().view.pinned, Some([p[0] + 1, p[1] - 1]));
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert_eq!(h.state().state().view.pinned, None);
+}
+
+/// An in-memory eframe storage.
+#[derive(Default)]
+struct MemoryStorage(std::collections::HashMap<String, String>);
+
+impl eframe::Storage for MemoryStorage {
+    fn get_string(&self, key: &str) -> Option<String> {
+        self.0.get(key).cloned()
+    }
+    fn set_string(&mut self, key: &str, value: String) {
+        self.0.insert(key.to_string(), value);
+    }
+    fn remove_string(&mut self, key: &str) {
+        self.0.remove(key);
+    }
+    fn flush(&mut self) {}
+}
+
+#[test]
+fn state_is_saved_on_exit_and_restored_on_start() {
+    use eframe::App as _;
+    let mut h = harness();
+    h.get_by_label("Affine").click();
+    h.run();
+    h.get_by_label("Wipe").click();
+    h.run();
+    h.state_mut()
+        .push(Command::Preset(barylab::app::presets::Preset::FarCorner));
+    h.run();
+    let before = h.state().state().clone();
+    let mut storage = MemoryStorage::default();
+    // The app saves through eframe's storage (only when persisting).
+    let mut app = BaryApp::new(
+        None,
+        AppOptions {
+            persist: true,
+            ..AppOptions::default()
+        },
+    );
+    for c in [
+        Command::SetMode(Interpolation::Affine),
+        Command::SetCompare(barylab::app::state::Compare::Wipe),
+        Command::Preset(barylab::app::presets::Preset::FarCorner),
+    ] {
+        app.push(c);
+    }
+    let mut h2 = Harness::builder()
+        .with_size(SIZE)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    h2.run();
+    assert_eq!(h2.state().state(), &before);
+    h2.state_mut().save(&mut storage);
+    let restored = BaryApp::new(
+        Some(&storage),
+        AppOptions {
+            persist: true,
+            ..AppOptions::default()
+        },
+    );
+    assert_eq!(restored.state(), &before);
+    // Without persistence nothing is read.
+    let fresh = BaryApp::new(Some(&storage), AppOptions::default());
+    assert_eq!(fresh.state().scene, Scene::default_scene());
+}
+
+#[test]
+fn scrolling_on_a_handle_pushes_the_corner_away_along_its_ray() {
+    let mut h = harness();
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let before = vertices_on_screen(&h.state().state().scene, out.viewport());
+    let c = before[2].window.expect("C on screen");
+    let pos = h.state().canvas().views[0].transform.to_screen(c);
+    h.hover_at(pos);
+    h.run();
+    h.event(egui::Event::MouseWheel {
+        unit: egui::MouseWheelUnit::Point,
+        delta: egui::vec2(0.0, 60.0),
+        phase: egui::TouchPhase::Move,
+        source: egui::MouseWheelSource::Wheel,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let after = vertices_on_screen(&h.state().state().scene, out.viewport());
+    assert!(
+        after[2].w() > before[2].w() * 1.1,
+        "w {} -> {}",
+        before[2].w(),
+        after[2].w()
+    );
+    let moved = after[2].window.expect("C on screen");
+    assert!(
+        (moved - c).length() < 1e-6,
+        "C moved on screen: {c} -> {moved}"
+    );
+    // The affine image only depends on screen positions: it is the same; the perspective
+    // one changed.
+    assert_eq!(after[0].w(), before[0].w());
+}

@@ -1,0 +1,183 @@
+//! Smoke test of the real window: start the binary under Xvfb with `--screenshot`, check the
+//! PNG shows the app. Skipped (with a message) when Xvfb is not installed, unless CI=true.
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// How long the app may take to open, render and save its screenshot.
+const APP_TIMEOUT: Duration = Duration::from_secs(120);
+/// How long Xvfb may take to create its socket.
+const XVFB_TIMEOUT: Duration = Duration::from_secs(15);
+
+fn on_path(program: &str) -> Option<PathBuf> {
+    std::env::var_os("PATH").and_then(|paths| {
+        std::env::split_paths(&paths)
+            .map(|d| d.join(program))
+            .find(|p| p.is_file())
+    })
+}
+
+/// A display number nobody is using (no lock file, no socket).
+fn free_display() -> u32 {
+    (90..200)
+        .find(|n| {
+            !Path::new(&format!("/tmp/.X{n}-lock")).exists()
+                && !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
+        })
+        .expect("a free X display number between 90 and 200")
+}
+
+/// Xvfb, killed when dropped.
+struct Xvfb {
+    child: Child,
+    display: String,
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn start_xvfb(xvfb: &Path) -> Xvfb {
+    let n = free_display();
+    let child = Command::new(xvfb)
+        .args([
+            &format!(":{n}"),
+            "-screen",
+            "0",
+            "1400x900x24",
+            "-nolisten",
+            "tcp",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("start Xvfb");
+    let x = Xvfb {
+        child,
+        display: format!(":{n}"),
+    };
+    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
+    let start = Instant::now();
+    while !socket.exists() {
+        assert!(start.elapsed() < XVFB_TIMEOUT, "Xvfb :{n} did not start");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    x
+}
+
+/// Runs the app with `args` on the display; returns (success, stderr).
+fn run_app(display: &str, args: &[&str]) -> (bool, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_barylab"))
+        .args(args)
+        .env("DISPLAY", display)
+        .env_remove("WAYLAND_DISPLAY")
+        .env("LIBGL_ALWAYS_SOFTWARE", "1")
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start barylab");
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().expect("wait") {
+            break s;
+        }
+        if start.elapsed() > APP_TIMEOUT {
+            let _ = child.kill();
+            panic!("barylab did not exit within {APP_TIMEOUT:?}");
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    };
+    let mut err = String::new();
+    if let Some(mut e) = child.stderr.take() {
+        use std::io::Read;
+        let _ = e.read_to_string(&mut err);
+    }
+    (status.success(), err)
+}
+
+fn xvfb_or_skip() -> Option<PathBuf> {
+    match on_path("Xvfb") {
+        Some(p) => Some(p),
+        None if std::env::var("CI").as_deref() == Ok("true") => {
+            panic!("Xvfb is not installed but CI=true: install the xvfb package")
+        }
+        None => {
+            println!("SKIPPED gui_smoke: Xvfb is not on PATH (apt-get install xvfb)");
+            None
+        }
+    }
+}
+
+#[test]
+fn the_window_opens_renders_and_saves_a_screenshot() {
+    let Some(xvfb) = xvfb_or_skip() else {
+        return;
+    };
+    let x = start_xvfb(&xvfb);
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (name, extra) in [
+        ("default.png", vec![]),
+        (
+            "front.png",
+            vec![concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/assets/scenes/front.json"
+            )],
+        ),
+    ] {
+        let shot = dir.path().join(name);
+        let shot_s = shot.to_str().expect("utf-8 path");
+        let mut args = vec!["--screenshot", shot_s, "--window-size", "1200x760"];
+        args.extend(extra);
+        let (ok, err) = run_app(&x.display, &args);
+        assert!(ok, "barylab failed: {err}");
+        let img = image::open(&shot).expect("screenshot PNG").to_rgba8();
+        assert!(
+            img.width() >= 1000 && img.height() >= 600,
+            "{}x{}",
+            img.width(),
+            img.height()
+        );
+        let mut colors = std::collections::HashSet::new();
+        for p in img.pixels() {
+            colors.insert(p.0);
+        }
+        assert!(
+            colors.len() > 500,
+            "{name}: only {} colours: blank?",
+            colors.len()
+        );
+        // The canvas background (the scene's background colour) is on screen.
+        let bg = barylab::raster::render::DEFAULT_BACKGROUND;
+        let bg_pixels = img.pixels().filter(|p| p.0 == bg).count();
+        assert!(
+            bg_pixels > 1000,
+            "{name}: canvas background not found ({bg_pixels} px)"
+        );
+    }
+}
+
+#[test]
+fn a_bad_scene_file_is_reported_in_one_line_without_opening_a_window() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let bad = dir.path().join("bad.json");
+    std::fs::write(&bad, "{ \"quad\": 3 }").expect("write");
+    let out = Command::new(env!("CARGO_BIN_EXE_barylab"))
+        .arg(&bad)
+        // No display: the error must come before any window is needed.
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("run barylab");
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: ") && err.contains("bad.json"),
+        "{err}"
+    );
+}
