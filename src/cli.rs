@@ -49,6 +49,12 @@ enum Command {
     /// derivation, the 4x4 system, uv, texel, depth and the final colour.
     #[command(after_help = EXAMPLES)]
     Probe(ProbeArgs),
+    /// Time the rasterizers: every rasterizer x filter x mode x thread count, median ms per
+    /// frame and Mpixel/s.
+    #[command(
+        after_help = "Examples:\n  barylab bench\n  barylab bench assets/scenes/default.json --frames 20 --json"
+    )]
+    Bench(BenchArgs),
 }
 
 #[derive(clap::Args, Debug)]
@@ -78,6 +84,52 @@ struct RenderArgs {
     /// weights_perspective.exr, depth.exr, inv_w.exr.
     #[arg(long, value_name = "DIR")]
     aov: Option<PathBuf>,
+    /// Which rasterizer visits the pixels: per-pixel edge functions, or seed 001's scanline
+    /// with per-pixel stepping (same pixels, same values).
+    #[arg(long, default_value = "edge")]
+    rasterizer: RasterizerArg,
+    /// Worker threads (default: one per core).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
+    threads: Option<u16>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+enum RasterizerArg {
+    Edge,
+    Scanline,
+}
+
+impl From<RasterizerArg> for raster::render::Rasterizer {
+    fn from(r: RasterizerArg) -> Self {
+        match r {
+            RasterizerArg::Edge => raster::render::Rasterizer::EdgeFunction,
+            RasterizerArg::Scanline => raster::render::Rasterizer::Scanline,
+        }
+    }
+}
+
+#[derive(clap::Args, Debug)]
+struct BenchArgs {
+    /// Scene (default: assets/scenes/bench-1080p.json if present, else the built-in default).
+    scene: Option<PathBuf>,
+    /// Image size as WIDTHxHEIGHT (default: the scene's).
+    #[arg(long, value_parser = parse_size)]
+    size: Option<(u32, u32)>,
+    /// Frames rendered per configuration; the median is reported.
+    #[arg(long, default_value_t = 9, value_parser = clap::value_parser!(u32).range(1..=10000))]
+    frames: u32,
+    /// Print a JSON array of records instead of a table.
+    #[arg(long)]
+    json: bool,
+}
+
+/// A thread pool of `n` workers (or rayon's default when `None`).
+fn pool(threads: Option<u16>) -> Result<rayon::ThreadPool> {
+    let mut b = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = threads {
+        b = b.num_threads(usize::from(n));
+    }
+    b.build().context("cannot start worker threads")
 }
 
 #[derive(clap::Args, Debug)]
@@ -231,6 +283,7 @@ pub fn main() -> ExitCode {
         None => app(&cli),
         Some(Command::Render(args)) => render(&args),
         Some(Command::Probe(args)) => probe(&args),
+        Some(Command::Bench(args)) => bench(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -302,6 +355,101 @@ fn report_skipped(triangles: &[raster::render::PreparedTriangle]) {
     }
 }
 
+/// One line of `barylab bench`.
+#[derive(serde::Serialize)]
+struct BenchRecord {
+    rasterizer: &'static str,
+    filter: &'static str,
+    mode: &'static str,
+    threads: usize,
+    width: u32,
+    height: u32,
+    median_ms: f64,
+    mpix_per_s: f64,
+}
+
+fn bench(args: &BenchArgs) -> Result<()> {
+    let default_path = Path::new("assets/scenes/bench-1080p.json");
+    let (mut scene, base_dir) = match &args.scene {
+        Some(p) => load_input(p)?,
+        None if default_path.exists() => load_input(default_path)?,
+        None => (Scene::default_scene(), PathBuf::new()),
+    };
+    if let Some((w, h)) = args.size {
+        scene.set_size(w, h);
+    }
+    let texture = scene.load_texture(&base_dir)?;
+    let mesh = scene.to_mesh();
+    let base = scene.settings();
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    let mut thread_counts = vec![1];
+    if cores > 1 {
+        thread_counts.push(cores);
+    }
+    let mut records = Vec::new();
+    for (rasterizer, r_name) in [
+        (raster::render::Rasterizer::EdgeFunction, "edge"),
+        (raster::render::Rasterizer::Scanline, "scanline"),
+    ] {
+        for (filter, f_name) in [(Filter::Nearest, "nearest"), (Filter::Bilinear, "bilinear")] {
+            for (mode, m_name) in [
+                (Interpolation::Affine, "affine"),
+                (Interpolation::Perspective, "perspective"),
+            ] {
+                for &threads in &thread_counts {
+                    let settings = raster::RenderSettings {
+                        rasterizer,
+                        filter,
+                        mode,
+                        ..base
+                    };
+                    let workers = pool(Some(threads as u16))?;
+                    let mut times = Vec::with_capacity(args.frames as usize);
+                    for _ in 0..args.frames {
+                        let start = Instant::now();
+                        workers.install(|| raster::render(&mesh, &texture, &settings))?;
+                        times.push(start.elapsed().as_secs_f64() * 1e3);
+                    }
+                    times.sort_by(f64::total_cmp);
+                    let median_ms = times[times.len() / 2];
+                    let pixels = f64::from(settings.width) * f64::from(settings.height);
+                    records.push(BenchRecord {
+                        rasterizer: r_name,
+                        filter: f_name,
+                        mode: m_name,
+                        threads,
+                        width: settings.width,
+                        height: settings.height,
+                        median_ms,
+                        mpix_per_s: pixels / (median_ms * 1e3),
+                    });
+                }
+            }
+        }
+    }
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&records)?);
+        return Ok(());
+    }
+    println!(
+        "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11} {:>9}",
+        "rasterizer", "filter", "mode", "threads", "size", "median ms", "Mpix/s"
+    );
+    for r in &records {
+        println!(
+            "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11.2} {:>9.1}",
+            r.rasterizer,
+            r.filter,
+            r.mode,
+            r.threads,
+            format!("{}x{}", r.width, r.height),
+            r.median_ms,
+            r.mpix_per_s
+        );
+    }
+    Ok(())
+}
+
 /// Image file extensions accepted in place of a scene.
 const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
 
@@ -352,9 +500,11 @@ fn render(args: &RenderArgs) -> Result<()> {
         settings.shading = s.into();
     }
     settings.wireframe |= args.wireframe;
+    settings.rasterizer = args.rasterizer.into();
     let mesh = scene.to_mesh();
+    let workers = pool(args.threads)?;
     let start = Instant::now();
-    let out = raster::render(&mesh, &texture, &settings)?;
+    let out = workers.install(|| raster::render(&mesh, &texture, &settings))?;
     let ms = start.elapsed().as_secs_f64() * 1e3;
     let ext = args
         .output

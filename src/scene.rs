@@ -427,6 +427,7 @@ impl Scene {
             }
         };
         RenderSettings {
+            rasterizer: Default::default(),
             width,
             height,
             mode,

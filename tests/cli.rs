@@ -225,3 +225,82 @@ fn bad_input_gives_one_line_errors() {
     let e = fails(&["render", s(&missing_tex), "-o", out]);
     assert!(e.contains("nothere.png"), "{e}");
 }
+
+#[test]
+fn render_options_for_rasterizer_and_threads_and_bench_json() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let a = dir.path().join("edge.png");
+    let b = dir.path().join("scan.png");
+    let run = |extra: &[&str], out: &Path| {
+        let mut args = vec!["render", "assets/scenes/front.json", "--size", "120x90"];
+        args.extend_from_slice(extra);
+        let o = Command::new(env!("CARGO_BIN_EXE_barylab"))
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .args(&args)
+            .arg("-o")
+            .arg(out)
+            .output()
+            .expect("run");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    run(&["--rasterizer", "edge", "--threads", "1"], &a);
+    run(&["--rasterizer", "scanline", "--threads", "2"], &b);
+    let (ia, ib) = (image::open(&a).expect("a"), image::open(&b).expect("b"));
+    let differing = ia
+        .to_rgba8()
+        .pixels()
+        .zip(ib.to_rgba8().pixels())
+        .filter(|(x, y)| x != y)
+        .count();
+    assert!(
+        differing <= 20,
+        "{differing} pixels differ between rasterizers"
+    );
+    let e = fails(&[
+        "render",
+        &scene("front.json"),
+        "-o",
+        s(&a),
+        "--threads",
+        "0",
+    ]);
+    assert!(e.contains("--threads"), "{e}");
+
+    let o = Command::new(env!("CARGO_BIN_EXE_barylab"))
+        .args([
+            "bench",
+            &scene("front.json"),
+            "--size",
+            "64x48",
+            "--frames",
+            "1",
+            "--json",
+        ])
+        .output()
+        .expect("bench");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let records: Vec<serde_json::Value> =
+        serde_json::from_slice(&o.stdout).expect("bench --json prints JSON");
+    assert!(records.len() >= 8, "{} records", records.len());
+    for r in &records {
+        for key in [
+            "rasterizer",
+            "filter",
+            "mode",
+            "threads",
+            "width",
+            "height",
+            "median_ms",
+            "mpix_per_s",
+        ] {
+            assert!(r.get(key).is_some(), "record lacks {key}: {r}");
+        }
+        assert_eq!(r["width"], 64);
+        assert!(r["median_ms"].as_f64().is_some_and(|ms| ms > 0.0));
+    }
+    let names: std::collections::BTreeSet<_> = records
+        .iter()
+        .map(|r| r["rasterizer"].as_str().unwrap_or("").to_string())
+        .collect();
+    assert_eq!(names.into_iter().collect::<Vec<_>>(), ["edge", "scanline"]);
+}

@@ -9,7 +9,7 @@ use glam::{DVec4, Vec2, Vec3};
 
 use super::clip::{ClipPolygon, ClipVertex, clip_triangle};
 use super::framebuffer::Framebuffer;
-use super::interpolate::{self, Interpolation};
+use super::interpolate::{self, Fragment, Interpolation};
 use super::project::{MAX_IMAGE_SIZE, Viewport, project_vertex};
 use super::setup::{Facing, TriangleSetup, sample_point, setup_triangle};
 use super::shade::{ShadeParams, Shading, shade};
@@ -31,6 +31,21 @@ pub struct ClipMesh {
     pub triangles: Vec<[u32; 3]>,
 }
 
+/// Which rasterizer visits the covered pixels. Both give the same coverage and values equal
+/// up to floating-point rounding.
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Rasterizer {
+    /// Every pixel centre in the bounding box is tested against the three edge functions and
+    /// interpolated from its own weights.
+    #[default]
+    EdgeFunction,
+    /// Spans per row, attributes stepped per pixel (seed 001's incremental scanline).
+    Scanline,
+}
+
 /// How to draw.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings {
@@ -42,6 +57,7 @@ pub struct RenderSettings {
     pub shading: Shading,
     pub wireframe: bool,
     pub background: [u8; 4],
+    pub rasterizer: Rasterizer,
 }
 
 /// The default background: a dark slate grey, opaque.
@@ -58,6 +74,7 @@ impl Default for RenderSettings {
             shading: Shading::Texture,
             wireframe: false,
             background: DEFAULT_BACKGROUND,
+            rasterizer: Rasterizer::EdgeFunction,
         }
     }
 }
@@ -205,7 +222,14 @@ pub fn render(
         .collect();
     let params = shade_params(settings, &triangles);
     let mut frame = Framebuffer::new(w, h, settings.background);
-    rasterize_bands(&triangles, texture, &params, &mut frame, ROWS_PER_BAND);
+    rasterize_bands(
+        &triangles,
+        texture,
+        &params,
+        settings.rasterizer,
+        &mut frame,
+        ROWS_PER_BAND,
+    );
     Ok(Render { frame, triangles })
 }
 
@@ -246,6 +270,7 @@ pub fn rasterize_bands(
     triangles: &[PreparedTriangle],
     texture: &Texture,
     params: &ShadeParams,
+    rasterizer: Rasterizer,
     frame: &mut Framebuffer,
     rows_per_band: u32,
 ) {
@@ -254,7 +279,7 @@ pub fn rasterize_bands(
     bands.into_par_iter().for_each(|mut band| {
         for tri in triangles {
             for setup in &tri.setups {
-                rasterize(setup, tri.source, texture, params, &mut band);
+                rasterize(setup, tri.source, texture, params, rasterizer, &mut band);
             }
         }
     });
@@ -356,6 +381,7 @@ fn rasterize(
     source: u32,
     texture: &Texture,
     params: &ShadeParams,
+    rasterizer: Rasterizer,
     band: &mut RowBand<'_>,
 ) {
     let b = setup.bounds;
@@ -369,41 +395,45 @@ fn rasterize(
     } else {
         [glam::DVec2::ZERO; 3]
     };
-    for y in y_start..=y_end {
-        let row = (y - band.y0) as usize * band.width as usize;
-        for x in b.x0..=b.x1 {
-            let e = setup.edge_values(sample_point(x, y));
-            if !setup.covers(&e) {
-                continue;
+    // Depth test, buffers and shading: the same for both rasterizers.
+    let mut write = |x: u32, y: u32, frag: &Fragment| {
+        let mut frag = *frag;
+        if params.filter == Filter::Trilinear {
+            frag.lod =
+                interpolate::quad_lod(setup, x, y, params.mode, texture.width(), texture.height());
+        }
+        let i = (y - band.y0) as usize * band.width as usize + x as usize;
+        let depth = frag.depth as f32;
+        // Less-than depth test (a NaN depth fails it).
+        if depth.is_nan() || depth >= band.depth[i] {
+            return;
+        }
+        band.depth[i] = depth;
+        band.triangle[i] = source;
+        band.facing[i] = setup.facing;
+        band.weights_screen[i] = frag.affine.bary();
+        band.weights_perspective[i] = frag.correct.bary();
+        band.uv_affine[i] = frag.affine.uv().to_array();
+        band.uv_perspective[i] = frag.correct.uv().to_array();
+        band.inv_w[i] = frag.inv_w as f32;
+        band.color[i] = shade(&frag, texture, params, &wire);
+    };
+    match rasterizer {
+        Rasterizer::EdgeFunction => {
+            for y in y_start..=y_end {
+                for x in b.x0..=b.x1 {
+                    let e = setup.edge_values(sample_point(x, y));
+                    if !setup.covers(&e) {
+                        continue;
+                    }
+                    if let Some(frag) = interpolate::fragment(setup, e) {
+                        write(x, y, &frag);
+                    }
+                }
             }
-            let Some(mut frag) = interpolate::fragment(setup, e) else {
-                continue;
-            };
-            if params.filter == Filter::Trilinear {
-                frag.lod = interpolate::quad_lod(
-                    setup,
-                    x,
-                    y,
-                    params.mode,
-                    texture.width(),
-                    texture.height(),
-                );
-            }
-            let i = row + x as usize;
-            let depth = frag.depth as f32;
-            // Less-than depth test (a NaN depth fails it).
-            if depth.is_nan() || depth >= band.depth[i] {
-                continue;
-            }
-            band.depth[i] = depth;
-            band.triangle[i] = source;
-            band.facing[i] = setup.facing;
-            band.weights_screen[i] = frag.affine.bary();
-            band.weights_perspective[i] = frag.correct.bary();
-            band.uv_affine[i] = frag.affine.uv().to_array();
-            band.uv_perspective[i] = frag.correct.uv().to_array();
-            band.inv_w[i] = frag.inv_w as f32;
-            band.color[i] = shade(&frag, texture, params, &wire);
+        }
+        Rasterizer::Scanline => {
+            super::scanline::rasterize_rows(setup, y_start..y_end + 1, &mut write);
         }
     }
 }
@@ -441,7 +471,16 @@ mod tests {
                 .build()
                 .expect("thread pool");
             let mut frame = Framebuffer::new(203, 157, settings.background);
-            pool.install(|| rasterize_bands(&triangles, &texture, &params, &mut frame, rows));
+            pool.install(|| {
+                rasterize_bands(
+                    &triangles,
+                    &texture,
+                    &params,
+                    Rasterizer::EdgeFunction,
+                    &mut frame,
+                    rows,
+                )
+            });
             frame
         };
         let serial = draw(157, 1);

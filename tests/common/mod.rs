@@ -30,6 +30,7 @@ pub fn settings(width: u32, height: u32) -> RenderSettings {
         shading: Shading::Barycentric,
         wireframe: false,
         background: [0, 0, 0, 0],
+        rasterizer: Default::default(),
     }
 }
 
