@@ -175,13 +175,13 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
                     ui.label(RichText::new(text::CORRECTED).weak())
                         .on_hover_text(text::CORRECTED_TIP);
                     ui.end_row();
-                    for k in 0..3 {
-                        let mesh = v[k]
+                    for (k, vk) in v.iter().enumerate() {
+                        let mesh = vk
                             .source_vertex
                             .and_then(|s| d.vertices.get(s))
                             .map(|vt| vt.index as usize);
                         let c = mesh.map_or(CLIP_POINT, vertex_color);
-                        let name = ui.label(RichText::new(&v[k].name).strong().color(color(c)));
+                        let name = ui.label(RichText::new(&vk.name).strong().color(color(c)));
                         if mesh.is_none() {
                             name.on_hover_text(text::CLIPPED_VERTEX_TIP);
                         }
@@ -189,7 +189,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
                             [NUMBER_WIDTH, 20.0],
                             egui::Label::new(weight_text(d.screen.rasterizer[k])),
                         );
-                        ui.label(RichText::new(fmt_number(v[k].inv_w)).monospace());
+                        ui.label(RichText::new(fmt_number(vk.inv_w)).monospace());
                         match seed {
                             Some(s) => ui.label(weight_text(s.weights[k])),
                             None => ui.label("–"),
@@ -331,8 +331,8 @@ fn section_ui(ui: &mut Ui, index: usize, text: &str) {
         *block += 1;
     };
     for line in text.lines() {
-        if line.starts_with("    ") {
-            formulas.push(&line[4..]);
+        if let Some(formula) = line.strip_prefix("    ") {
+            formulas.push(formula);
         } else {
             flush(ui, &mut formulas, &mut block);
             ui.label(line.trim_start());
