@@ -11,15 +11,12 @@ use crate::raster::interpolate::Interpolation;
 /// Errors while writing AOV files.
 #[derive(Debug, thiserror::Error)]
 pub enum AovError {
-    #[error("cannot create AOV folder {path}: {source}")]
-    Folder {
-        path: String,
-        source: std::io::Error,
-    },
-    #[error("cannot write {path}: {source}")]
+    #[error("cannot create AOV folder {path}: {cause}")]
+    Folder { path: String, cause: std::io::Error },
+    #[error("cannot write {path}: {cause}")]
     Write {
         path: String,
-        source: exr::error::Error,
+        cause: exr::error::Error,
     },
 }
 
@@ -47,9 +44,9 @@ fn write(
             (v[0], v[1], v[2], 1.0f32)
         }
     })
-    .map_err(|source| AovError::Write {
+    .map_err(|cause| AovError::Write {
         path: path.display().to_string(),
-        source,
+        cause,
     })
 }
 
@@ -60,9 +57,9 @@ pub fn write_aovs(
     frame: &Framebuffer,
     mode: Interpolation,
 ) -> Result<Vec<PathBuf>, AovError> {
-    std::fs::create_dir_all(dir).map_err(|source| AovError::Folder {
+    std::fs::create_dir_all(dir).map_err(|cause| AovError::Folder {
         path: dir.display().to_string(),
-        source,
+        cause,
     })?;
     let paths: Vec<PathBuf> = AOV_FILES.iter().map(|f| dir.join(f)).collect();
     let uv = match mode {

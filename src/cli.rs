@@ -53,7 +53,8 @@ enum Command {
 
 #[derive(clap::Args, Debug)]
 struct RenderArgs {
-    /// Scene file (JSON, world or clip-space form; see docs/scene-format.md).
+    /// Scene file (JSON; see docs/scene-format.md), or an OBJ model, or an image (PNG, JPEG,
+    /// BMP, TGA, WebP) shown on the default quad.
     scene: PathBuf,
     /// Output PNG file.
     #[arg(short, long)]
@@ -64,7 +65,7 @@ struct RenderArgs {
     /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
     #[arg(long, value_parser = parse_size)]
     size: Option<(u32, u32)>,
-    /// Texture filter (default: the scene's).
+    /// Texture filter (default: the scene's); trilinear uses mipmaps.
     #[arg(long)]
     filter: Option<FilterArg>,
     /// What the colour shows (default: the scene's).
@@ -81,7 +82,8 @@ struct RenderArgs {
 
 #[derive(clap::Args, Debug)]
 struct ProbeArgs {
-    /// Scene file (JSON, world or clip-space form; see docs/scene-format.md).
+    /// Scene file (JSON; see docs/scene-format.md), or an OBJ model, or an image shown on the
+    /// default quad.
     scene: PathBuf,
     /// The pixel as X,Y: column from the left, row from the top, both from 0.
     #[arg(long, value_parser = parse_pixel, allow_hyphen_values = true)]
@@ -135,6 +137,7 @@ enum ModeArg {
 enum FilterArg {
     Nearest,
     Bilinear,
+    Trilinear,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -159,6 +162,7 @@ impl From<FilterArg> for Filter {
         match f {
             FilterArg::Nearest => Filter::Nearest,
             FilterArg::Bilinear => Filter::Bilinear,
+            FilterArg::Trilinear => Filter::Trilinear,
         }
     }
 }
@@ -196,8 +200,33 @@ fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     Ok((x, y))
 }
 
+/// Parses the arguments; usage errors are reported on one line (clap's first line).
+fn parse_args() -> Result<Cli, ExitCode> {
+    Cli::try_parse().map_err(|e| {
+        use clap::error::ErrorKind;
+        if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion)
+            || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+        {
+            let _ = e.print();
+            return ExitCode::SUCCESS;
+        }
+        // Clap's message is the paragraph before the first blank line; join it into one line.
+        let text = e.render().to_string();
+        let first: Vec<&str> = text
+            .lines()
+            .take_while(|l| !l.trim().is_empty())
+            .map(str::trim)
+            .collect();
+        eprintln!("{}", first.join(" "));
+        ExitCode::from(2)
+    })
+}
+
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match parse_args() {
+        Ok(cli) => cli,
+        Err(code) => return code,
+    };
     let result = match cli.command {
         None => app(&cli),
         Some(Command::Render(args)) => render(&args),
@@ -245,12 +274,73 @@ fn scene_dir(path: &Path) -> PathBuf {
     path.parent().map(Path::to_path_buf).unwrap_or_default()
 }
 
+/// Prints one note per reason for triangles that were not drawn, naming the first few.
+fn report_skipped(triangles: &[raster::render::PreparedTriangle]) {
+    use raster::render::TriangleStatus as S;
+    const LISTED: usize = 8;
+    for status in [S::BadIndex, S::NotFinite, S::ClippedAway, S::Empty] {
+        let ids: Vec<String> = triangles
+            .iter()
+            .filter(|t| t.status == status)
+            .map(|t| t.source.to_string())
+            .collect();
+        if ids.is_empty() {
+            continue;
+        }
+        let more = if ids.len() > LISTED { ", ..." } else { "" };
+        let shown = ids[..ids.len().min(LISTED)].join(", ");
+        let noun = if ids.len() == 1 {
+            "triangle"
+        } else {
+            "triangles"
+        };
+        eprintln!(
+            "note: {} {noun} not drawn ({shown}{more}): {}",
+            ids.len(),
+            status.describe()
+        );
+    }
+}
+
+/// Image file extensions accepted in place of a scene.
+const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
+
+/// Loads what the user named: a scene file, an OBJ model (framed by a default camera), or an
+/// image (on the default quad). Returns the scene and the folder its relative paths use.
+pub fn load_input(path: &Path) -> Result<(Scene, PathBuf)> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .unwrap_or_default();
+    if ext == "obj" {
+        let (w, h) = Scene::default_scene().size();
+        let model = barylab::scene::ModelScene::for_model(path, w, h)?;
+        // The model path is used as given, so relative paths resolve from here.
+        return Ok((Scene::Model(model), PathBuf::new()));
+    }
+    if IMAGE_EXTENSIONS.contains(&ext.as_str()) {
+        return Ok((Scene::for_image(path), PathBuf::new()));
+    }
+    if ext != "json" {
+        bail!(
+            "{}: unknown kind of file (expected a .json scene, an .obj model, or an image: {})",
+            path.display(),
+            IMAGE_EXTENSIONS.join(", ")
+        );
+    }
+    Ok((Scene::load(path)?, scene_dir(path)))
+}
+
 fn render(args: &RenderArgs) -> Result<()> {
-    let mut scene = Scene::load(&args.scene)?;
+    let (mut scene, base_dir) = load_input(&args.scene)?;
     if let Some((w, h)) = args.size {
         scene.set_size(w, h);
     }
-    let texture = scene.load_texture(&scene_dir(&args.scene))?;
+    let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
+    for note in scene.notes().iter().chain(&texture_notes) {
+        eprintln!("note: {note}");
+    }
     let mut settings = scene.settings();
     if let Some(m) = args.mode {
         settings.mode = m.into();
@@ -281,6 +371,7 @@ fn render(args: &RenderArgs) -> Result<()> {
     if let Some(dir) = &args.aov {
         barylab::aov::write_aovs(dir, &out.frame, settings.mode)?;
     }
+    report_skipped(&out.triangles);
     let drawn = out
         .triangles
         .iter()
@@ -300,11 +391,14 @@ fn render(args: &RenderArgs) -> Result<()> {
 }
 
 fn probe(args: &ProbeArgs) -> Result<()> {
-    let mut scene = Scene::load(&args.scene)?;
+    let (mut scene, base_dir) = load_input(&args.scene)?;
     if let Some((w, h)) = args.size {
         scene.set_size(w, h);
     }
-    let texture = scene.load_texture(&scene_dir(&args.scene))?;
+    let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
+    for note in scene.notes().iter().chain(&texture_notes) {
+        eprintln!("note: {note}");
+    }
     let mut settings = scene.settings();
     if let Some(m) = args.mode {
         settings.mode = m.into();
@@ -318,7 +412,7 @@ fn probe(args: &ProbeArgs) -> Result<()> {
     settings.wireframe |= args.wireframe;
     let (x, y) = args.pixel;
     let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
-        .with_context(|| format!("--pixel {x},{y} for {}", args.scene.display()))?;
+        .with_context(|| args.scene.display().to_string())?;
     print!(
         "{}",
         barylab::probe::format::write(&trace, args.format.into())

@@ -8,6 +8,7 @@
 
 pub mod aov;
 pub mod app;
+pub mod model;
 pub mod probe;
 pub mod raster;
 pub mod scene;

@@ -8,10 +8,12 @@
 //! Unknown fields are errors. Errors name the file, the line and column, and the field.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::{DMat4, DVec3, DVec4, Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
+use crate::model::{ModelError, ModelMesh};
 use crate::raster::camera::{Camera, CameraError, Projection};
 use crate::raster::project::MAX_IMAGE_SIZE;
 use crate::raster::render::{ClipMesh, DEFAULT_BACKGROUND, MeshVertex, RenderSettings};
@@ -21,11 +23,8 @@ use crate::raster::{Interpolation, Shading};
 /// Errors while reading or checking a scene.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    #[error("cannot read scene {path}: {source}")]
-    Read {
-        path: String,
-        source: std::io::Error,
-    },
+    #[error("cannot read scene {path}: {cause}")]
+    Read { path: String, cause: std::io::Error },
     #[error("{path}:{line}:{column}: {field}{message}")]
     Parse {
         path: String,
@@ -39,6 +38,8 @@ pub enum SceneError {
     Invalid { path: String, message: String },
     #[error(transparent)]
     Texture(#[from] TextureError),
+    #[error(transparent)]
+    Model(#[from] ModelError),
 }
 
 /// Corner of the quad in the world form.
@@ -115,6 +116,10 @@ pub struct ClipSceneVertex {
 }
 
 /// The raw clip-space form.
+///
+/// The look fields (`texture` ... `background`) repeat those of [`WorldScene`] on purpose:
+/// serde's `flatten` cannot be combined with `deny_unknown_fields`, and rejecting unknown
+/// fields matters more (a typo must not pass silently).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ClipScene {
@@ -138,13 +143,76 @@ pub struct ClipScene {
     pub background: [u8; 4],
 }
 
-/// A scene in either form.
-#[allow(clippy::large_enum_variant)] // Few scenes exist at a time; boxing buys nothing.
+/// The model form: an OBJ file seen by a camera.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelScene {
+    pub width: u32,
+    pub height: u32,
+    /// When omitted, a camera that frames the model ([`Camera::framing`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub camera: Option<Camera>,
+    /// The OBJ file, relative to the scene file.
+    pub model: String,
+    /// A built-in texture or image path; when omitted, the model's MTL diffuse texture, else
+    /// `uv-grid`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub texture: Option<String>,
+    #[serde(default)]
+    pub filter: Filter,
+    #[serde(default)]
+    pub wrap: Wrap,
+    #[serde(default)]
+    pub mode: Interpolation,
+    /// When omitted: the texture if the model has uvs, else the vertex (material) colour.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shading: Option<Shading>,
+    #[serde(default)]
+    pub wireframe: bool,
+    #[serde(default = "default_background")]
+    pub background: [u8; 4],
+    /// The loaded model (filled when the scene is loaded).
+    #[serde(skip)]
+    pub mesh: Arc<ModelMesh>,
+}
+
+impl ModelScene {
+    /// A scene showing an OBJ file with the default framing camera.
+    pub fn for_model(model_path: &Path, width: u32, height: u32) -> Result<Self, SceneError> {
+        Ok(Self {
+            width,
+            height,
+            camera: None,
+            model: model_path.display().to_string(),
+            texture: None,
+            filter: Filter::default(),
+            wrap: Wrap::default(),
+            mode: Interpolation::default(),
+            shading: None,
+            wireframe: false,
+            background: DEFAULT_BACKGROUND,
+            mesh: Arc::new(ModelMesh::load(model_path)?),
+        })
+    }
+
+    /// The camera: the given one, or one framing the model.
+    pub fn camera(&self) -> Camera {
+        self.camera.unwrap_or_else(|| {
+            let (centre, radius) = self.mesh.bounding_sphere();
+            Camera::framing(centre, radius)
+        })
+    }
+}
+
+/// A scene in any of its forms.
+// One scene exists at a time; boxing the larger variant would buy nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Scene {
     World(WorldScene),
     Clip(ClipScene),
+    Model(ModelScene),
 }
 
 /// Decides the form before the strict parse, so errors name the right fields.
@@ -154,6 +222,8 @@ struct FormProbe {
     quad: Option<serde::de::IgnoredAny>,
     #[serde(default)]
     vertices: Option<serde::de::IgnoredAny>,
+    #[serde(default)]
+    model: Option<serde::de::IgnoredAny>,
 }
 
 /// Strips serde_json's " at line L column C" suffix (we print the position in front).
@@ -193,19 +263,30 @@ impl Scene {
     pub fn from_json(text: &str, path: &str) -> Result<Self, SceneError> {
         let probe: FormProbe =
             serde_json::from_str(text).map_err(|e| parse_error(path, e, String::new()))?;
-        let scene = match (probe.quad.is_some(), probe.vertices.is_some()) {
-            (true, false) => Scene::World(strict(text, path)?),
-            (false, true) => Scene::Clip(strict(text, path)?),
-            (true, true) => {
+        let forms = [
+            probe.quad.is_some(),
+            probe.vertices.is_some(),
+            probe.model.is_some(),
+        ];
+        let scene = match forms {
+            [true, false, false] => Scene::World(strict(text, path)?),
+            [false, true, false] => Scene::Clip(strict(text, path)?),
+            [false, false, true] => {
+                let mut s: ModelScene = strict(text, path)?;
+                let dir = Path::new(path).parent().unwrap_or(Path::new(""));
+                s.mesh = Arc::new(ModelMesh::load(&resolve(dir, &s.model))?);
+                Scene::Model(s)
+            }
+            [false, false, false] => {
                 return Err(invalid(
                     path,
-                    "has both `quad` (world form) and `vertices` (clip-space form); use one",
+                    "has none of `quad` (world form), `vertices` (clip-space form) or `model` (OBJ form)",
                 ));
             }
-            (false, false) => {
+            _ => {
                 return Err(invalid(
                     path,
-                    "has neither `quad` (world form) nor `vertices` (clip-space form)",
+                    "mixes the forms: use exactly one of `quad`, `vertices` and `model`",
                 ));
             }
         };
@@ -216,9 +297,9 @@ impl Scene {
     /// Reads and parses a scene file.
     pub fn load(path: &Path) -> Result<Self, SceneError> {
         let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+        let text = std::fs::read_to_string(path).map_err(|cause| SceneError::Read {
             path: shown.clone(),
-            source,
+            cause,
         })?;
         Self::from_json(&text, &shown)
     }
@@ -271,6 +352,7 @@ impl Scene {
         match self {
             Scene::World(s) => (s.width, s.height),
             Scene::Clip(s) => (s.width, s.height),
+            Scene::Model(s) => (s.width, s.height),
         }
     }
 
@@ -280,15 +362,39 @@ impl Scene {
         match self {
             Scene::World(s) => (s.width, s.height) = (width, height),
             Scene::Clip(s) => (s.width, s.height) = (width, height),
+            Scene::Model(s) => (s.width, s.height) = (width, height),
         }
     }
 
-    /// The texture field: a built-in name or a path relative to the scene file.
+    /// The texture field: a built-in name or a path relative to the scene file (for a model
+    /// without one: its MTL diffuse texture, else `uv-grid`).
     pub fn texture_name(&self) -> &str {
         match self {
             Scene::World(s) => &s.texture,
             Scene::Clip(s) => &s.texture,
+            Scene::Model(s) => match (&s.texture, &s.mesh.diffuse_texture) {
+                (Some(t), _) => t,
+                (None, Some(p)) => p.to_str().unwrap_or("uv-grid"),
+                (None, None) => BuiltinTexture::UvGrid.name(),
+            },
         }
+    }
+
+    /// Things the user should be told about the scene that did not stop it loading.
+    pub fn notes(&self) -> Vec<String> {
+        match self {
+            Scene::Model(s) => s.mesh.notes.clone(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The default quad showing an image file as its texture.
+    pub fn for_image(image_path: &Path) -> Self {
+        let mut scene = Self::default_scene();
+        if let Scene::World(s) = &mut scene {
+            s.texture = image_path.display().to_string();
+        }
+        scene
     }
 
     /// The render settings the scene asks for.
@@ -311,6 +417,14 @@ impl Scene {
                 s.wireframe,
                 s.background,
             ),
+            Scene::Model(s) => {
+                let shading = s.shading.unwrap_or(if s.mesh.has_uv {
+                    Shading::Texture
+                } else {
+                    Shading::VertexColor
+                });
+                (s.mode, s.filter, s.wrap, shading, s.wireframe, s.background)
+            }
         };
         RenderSettings {
             width,
@@ -326,10 +440,22 @@ impl Scene {
 
     /// Loads the scene's texture: a built-in by name, else a file relative to `base_dir`.
     pub fn load_texture(&self, base_dir: &Path) -> Result<Texture, SceneError> {
+        Ok(self.load_texture_noted(base_dir)?.0)
+    }
+
+    /// Like [`Scene::load_texture`], also returning notes (e.g. that a huge image was
+    /// downscaled).
+    pub fn load_texture_noted(
+        &self,
+        base_dir: &Path,
+    ) -> Result<(Texture, Vec<String>), SceneError> {
         let name = self.texture_name();
         match BuiltinTexture::from_name(name) {
-            Some(b) => Ok(Texture::builtin(b)),
-            None => Ok(Texture::load(&resolve(base_dir, name))?),
+            Some(b) => Ok((Texture::builtin(b), Vec::new())),
+            None => {
+                let (tex, note) = Texture::load_noted(&resolve(base_dir, name))?;
+                Ok((tex, note.into_iter().collect()))
+            }
         }
     }
 
@@ -357,6 +483,12 @@ impl Scene {
                 }
                 if !(s.tilt.pitch_deg.is_finite() && s.tilt.yaw_deg.is_finite()) {
                     return Err(invalid(path, "field `tilt` is not finite"));
+                }
+            }
+            Scene::Model(s) => {
+                if let Some(cam) = &s.camera {
+                    cam.validate()
+                        .map_err(|e| invalid(path, &format!("field `camera`: {e}")))?;
                 }
             }
             Scene::Clip(s) => {
@@ -387,7 +519,7 @@ impl Scene {
                     * DMat4::from_rotation_x(s.tilt.pitch_deg.to_radians())
                     * DMat4::from_translation(-centre)
             }
-            Scene::Clip(_) => DMat4::IDENTITY,
+            Scene::Clip(_) | Scene::Model(_) => DMat4::IDENTITY,
         }
     }
 
@@ -422,6 +554,21 @@ impl Scene {
                     .collect(),
                 triangles: s.triangles.clone(),
             },
+            Scene::Model(s) => {
+                let aspect = f64::from(s.width) / f64::from(s.height);
+                let clip_from_world = s.camera().clip_from_world(aspect);
+                let m = &s.mesh;
+                ClipMesh {
+                    vertices: (0..m.positions.len())
+                        .map(|i| MeshVertex {
+                            clip: clip_from_world * m.positions[i].extend(1.0),
+                            uv: m.uvs[i],
+                            color: m.colors[i],
+                        })
+                        .collect(),
+                    triangles: m.triangles.clone(),
+                }
+            }
         }
     }
 }

@@ -9,7 +9,7 @@ use barylab::probe::format::{self, Format};
 use barylab::probe::{Position, ProbeError, Prober, probe};
 use barylab::raster::setup::{EdgeKind, Facing};
 use barylab::raster::{self, Interpolation, NO_TRIANGLE};
-use barylab::scene::Scene;
+use barylab::scene::{ModelScene, Scene};
 use proptest::prelude::*;
 
 fn scenes_dir() -> PathBuf {
@@ -31,12 +31,16 @@ fn sample_scenes() -> Vec<PathBuf> {
 /// and weights are the framebuffer's.
 fn probe_matches_render(path: &Path, mode: Interpolation) {
     let scene = Scene::load(path).expect("scene loads");
-    let texture = scene.load_texture(&scenes_dir()).expect("texture");
+    scene_matches_render(&scene, &scenes_dir(), path, mode);
+}
+
+fn scene_matches_render(scene: &Scene, base_dir: &Path, path: &Path, mode: Interpolation) {
+    let texture = scene.load_texture(base_dir).expect("texture");
     let mut settings = scene.settings();
     settings.mode = mode;
     let out = raster::render(&scene.to_mesh(), &texture, &settings).expect("render");
     let f = &out.frame;
-    let prober = Prober::new(&scene, &texture, &settings).expect("prober");
+    let prober = Prober::new(scene, &texture, &settings).expect("prober");
     let mut covered = 0;
     for y in 0..f.height {
         for x in 0..f.width {
@@ -93,13 +97,39 @@ macro_rules! scene_tests {
 }
 
 scene_tests! {
+    bench_1080p: "bench-1080p.json",
     clip_two_triangles: "clip-two-triangles.json",
     corner_behind: "corner-behind.json",
     default: "default.json",
+    far_checker: "far-checker.json",
     front: "front.json",
     orthographic: "orthographic.json",
     seed001_2x2: "seed001-2x2.json",
     vertex_colors: "vertex-colors.json",
+}
+
+/// A model (12 triangles, some hidden by the depth test): every pixel matches too.
+#[test]
+fn every_pixel_of_a_model() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/models/cube.obj");
+    let model = ModelScene::for_model(&path, 160, 120).expect("cube.obj");
+    let scene = Scene::Model(model);
+    for mode in [Interpolation::Affine, Interpolation::Perspective] {
+        scene_matches_render(&scene, Path::new(""), &path, mode);
+    }
+    // Some pixel sees a fragment fail the depth test.
+    let texture = scene.load_texture(Path::new("")).expect("texture");
+    let prober = Prober::new(&scene, &texture, &scene.settings()).expect("prober");
+    let hidden = (0..120)
+        .flat_map(|y| (0..160).map(move |x| (x, y)))
+        .filter_map(|(x, y)| prober.pixel(x, y).ok())
+        .filter(|t| {
+            t.triangles
+                .iter()
+                .any(|c| c.depth_test.is_some_and(|d| !d.passed))
+        })
+        .count();
+    assert!(hidden > 0);
 }
 
 /// The hand-worked scene: an 8x8 image, one triangle in clip space with window positions
@@ -180,9 +210,9 @@ fn hand_worked_example() {
     assert!(close(p.seed004.w_p, 64.0 / 37.0));
     assert!(close(p.games101_w_reciprocal, 64.0 / 37.0));
     let abc = [16.0 / 37.0, 18.0 / 37.0, 3.0 / 37.0];
-    for k in 0..3 {
-        assert!(close(p.seed004.weights[k], abc[k]));
-        assert!(close(p.renderer_weights[k], abc[k]));
+    for (k, expect) in abc.iter().enumerate() {
+        assert!(close(p.seed004.weights[k], *expect));
+        assert!(close(p.renderer_weights[k], *expect));
     }
 
     // Seed 002.
@@ -242,8 +272,8 @@ fn hand_worked_example() {
     );
     for needle in [
         "E_BC = 1048576",
-        "2A = 4194304",
-        "r = E_BC/2A = 1048576/4194304 = 0.25",
+        "E_BC(A) = E_CA(B) = E_AB(C) = 4194304 (1/65536 px^2) = 64 px^2",
+        "r = E_BC(P)/E_BC(A) = 1048576/4194304 = 0.25",
         "1/W_P = r/W_A + s/W_B + t/W_C = 0.25·1 + 0.5625·0.5 + 0.1875·0.25 = 0.5781",
         "W_P = 1/0.5781 = 1.73",
         "a = r·W_P/W_A = 0.25·1.73/1 = 0.4324",
@@ -700,4 +730,24 @@ fn cli_probe_json_matches_the_rendered_png() {
         assert!(out.status.success());
         assert!(String::from_utf8_lossy(&out.stdout).contains("400, 420"));
     }
+}
+
+/// The example in docs/probe.md is what the CLI prints today.
+#[test]
+fn docs_example_is_current() {
+    let doc = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/probe.md"))
+        .expect("docs/probe.md");
+    let begin = "<!-- probe-example:begin -->\n```text\n";
+    let start = doc.find(begin).expect("example begin marker") + begin.len();
+    let end = doc[start..]
+        .find("```\n<!-- probe-example:end -->")
+        .expect("end marker")
+        + start;
+    let out = barylab(&["probe", "assets/scenes/default.json", "--pixel", "400,420"]);
+    assert!(out.status.success());
+    assert!(
+        doc[start..end] == *String::from_utf8_lossy(&out.stdout),
+        "docs/probe.md's example is out of date: paste the output of \
+         `barylab probe assets/scenes/default.json --pixel 400,420`"
+    );
 }

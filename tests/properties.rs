@@ -112,10 +112,10 @@ proptest! {
                     n.dot((views[2] - p).cross(views[0] - p)) / nn,
                     n.dot((views[0] - p).cross(views[1] - p)) / nn,
                 ];
-                for k in 0..3 {
-                    let got = f64::from(r.frame.weights_perspective[i][k]);
-                    prop_assert!((got - expect[k]).abs() < 2e-4,
-                        "pixel ({}, {}) weight {}: rasterizer {} vs ray-plane {}", x, y, k, got, expect[k]);
+                for (k, (&got, want)) in r.frame.weights_perspective[i].iter().zip(expect).enumerate() {
+                    let got = f64::from(got);
+                    prop_assert!((got - want).abs() < 2e-4,
+                        "pixel ({}, {}) weight {}: rasterizer {} vs ray-plane {}", x, y, k, got, want);
                 }
             }
         }

@@ -35,6 +35,10 @@ impl VertexOnScreen {
 
 /// The mesh vertices' clip positions and window positions for a viewport.
 pub fn vertices_on_screen(scene: &Scene, viewport: Viewport) -> Vec<VertexOnScreen> {
+    if let Scene::Model(_) = scene {
+        // A model has too many vertices for handles; its vertices are not edited here.
+        return Vec::new();
+    }
     let mut sized = scene.clone();
     sized.set_size(viewport.width, viewport.height);
     sized
@@ -58,6 +62,8 @@ pub enum EditError {
     BehindCamera(usize),
     #[error("the edit would give a position that is not a finite number")]
     NotFinite,
+    #[error("a model (OBJ) scene's vertices cannot be moved here; edit the OBJ file")]
+    Model,
 }
 
 /// NDC (x, y) of a window position: `x = 2 x_w / W - 1`, `y = 1 - 2 y_w / H`.
@@ -136,6 +142,7 @@ pub fn move_vertex_to(
             }
             v.clip = moved;
         }
+        Scene::Model(_) => return Err(EditError::Model),
     }
     Ok(())
 }
@@ -186,6 +193,7 @@ pub fn push_vertex(
             }
             v.clip *= k;
         }
+        Scene::Model(_) => return Err(EditError::Model),
     }
     Ok(())
 }
@@ -226,6 +234,10 @@ pub fn set_options(scene: &mut Scene, o: SceneOptions) {
         Scene::Clip(s) => {
             (s.mode, s.shading, s.filter, s.wireframe) = (o.mode, o.shading, o.filter, o.wireframe);
         }
+        Scene::Model(s) => {
+            (s.mode, s.shading, s.filter, s.wireframe) =
+                (o.mode, Some(o.shading), o.filter, o.wireframe);
+        }
     }
 }
 
@@ -236,7 +248,7 @@ pub fn fov_deg(scene: &Scene) -> Option<f64> {
             Projection::Perspective { fov_y_deg, .. } => Some(fov_y_deg),
             Projection::Orthographic { .. } => None,
         },
-        Scene::Clip(_) => None,
+        Scene::Clip(_) | Scene::Model(_) => None,
     }
 }
 

@@ -284,6 +284,18 @@ fn weighted_sym(ws: &[&str], xs: &[String]) -> Vec<M> {
     out
 }
 
+/// Formulas side by side on one line, separated by [`Op::Sep`].
+fn listing(items: impl IntoIterator<Item = Vec<M>>) -> Vec<M> {
+    let mut out = Vec::new();
+    for (k, item) in items.into_iter().enumerate() {
+        if k > 0 {
+            out.push(SEP);
+        }
+        out.extend(item);
+    }
+    out
+}
+
 fn t(s: impl Into<String>) -> Inline {
     Inline::T(s.into())
 }
@@ -337,7 +349,7 @@ fn op_text(op: Op) -> &'static str {
         Op::Le => " ≤ ",
         Op::Gt => " > ",
         Op::Ge => " ≥ ",
-        Op::To => "  →  ",
+        Op::To => " → ",
         Op::Sep => ",   ",
     }
 }
@@ -501,44 +513,43 @@ fn layout(ms: &[M], width: usize) -> Vec<Row<'_>> {
             steps: parts[1..].to_vec(),
         }
     }
-    /// A piece without `=`, wrapped at its top-level `+` signs.
+    /// A piece without `=`, wrapped at its top-level `+` signs: each line takes the most
+    /// whole terms that fit, at least one.
     fn wrapped<'a>(p: &'a [M], lead: Lead, width: usize, rows: &mut Vec<Row<'a>>) {
+        let plus: Vec<usize> = p
+            .iter()
+            .enumerate()
+            .filter(|(_, x)| matches!(x, M::Op(Op::Plus)))
+            .map(|(i, _)| i)
+            .collect();
         let mut start = 0;
-        let mut first = true;
-        let mut last_break = None;
-        for (i, x) in p.iter().enumerate() {
-            if matches!(x, M::Op(Op::Plus)) {
-                if text_of(&p[start..i]).chars().count() > width {
-                    if let Some(b) = last_break {
-                        rows.push(Row {
-                            lead: if first { lead } else { Lead::Plus },
-                            lhs: &p[start..b],
-                            steps: Vec::new(),
-                        });
-                        first = false;
-                        start = b + 1;
+        let mut lead = lead;
+        loop {
+            let mut end = p.len();
+            if text_of(&p[start..]).chars().count() > width {
+                let mut best = None;
+                for &b in plus.iter().filter(|&&b| b > start) {
+                    if best.is_none() || text_of(&p[start..b]).chars().count() <= width {
+                        best = Some(b);
+                    } else {
+                        break;
                     }
                 }
-                last_break = Some(i);
+                if let Some(b) = best {
+                    end = b;
+                }
             }
-        }
-        if let Some(b) = last_break
-            && b > start
-            && text_of(&p[start..]).chars().count() > width
-        {
             rows.push(Row {
-                lead: if first { lead } else { Lead::Plus },
-                lhs: &p[start..b],
+                lead,
+                lhs: &p[start..end],
                 steps: Vec::new(),
             });
-            first = false;
-            start = b + 1;
+            if end == p.len() {
+                break;
+            }
+            start = end + 1;
+            lead = Lead::Plus;
         }
-        rows.push(Row {
-            lead: if first { lead } else { Lead::Plus },
-            lhs: &p[start..],
-            steps: Vec::new(),
-        });
     }
     if fits(ms) {
         return vec![whole(ms, Lead::First)];
@@ -1077,6 +1088,7 @@ fn filter_name(f: Filter) -> &'static str {
     match f {
         Filter::Nearest => "nearest",
         Filter::Bilinear => "bilinear",
+        Filter::Trilinear => "trilinear",
     }
 }
 
@@ -1109,15 +1121,10 @@ fn plane_name(p: PlaneName) -> &'static str {
     }
 }
 
-fn status_text(s: TriangleStatus) -> &'static str {
+fn status_text(s: TriangleStatus) -> String {
     match s {
-        TriangleStatus::Drawn => "drawn",
-        TriangleStatus::BadIndex => "not drawn: a vertex index is out of range",
-        TriangleStatus::NotFinite => "not drawn: a vertex coordinate is not a finite number",
-        TriangleStatus::ClippedAway => {
-            "not drawn: it lies entirely outside the view volume (clipped away)"
-        }
-        TriangleStatus::Empty => "not drawn: zero area on screen, or entirely off screen",
+        TriangleStatus::Drawn => s.describe().to_string(),
+        _ => format!("not drawn: {}", s.describe()),
     }
 }
 
@@ -1296,6 +1303,13 @@ fn coverage_section(b: &mut Builder, trace: &PixelTrace) {
              its depth is less than the depth buffer's value (cleared to 1).",
         ),
     ]);
+    if trace.triangles.len() < trace.triangle_count {
+        b.text(format!(
+            "The mesh has {} triangles; listed are the {} whose bounding box contains the pixel.",
+            trace.triangle_count,
+            trace.triangles.len()
+        ));
+    }
     for c in &trace.triangles {
         coverage_entry(b, c);
     }
@@ -1346,7 +1360,7 @@ fn coverage_entry(b: &mut Builder, c: &TriangleCoverage) {
         };
         b.eq_note(
             vec![
-                sym("d"),
+                sym("d_P"),
                 EQ,
                 num(f64::from(d.depth)),
                 M::Op(op),
@@ -1358,7 +1372,6 @@ fn coverage_entry(b: &mut Builder, c: &TriangleCoverage) {
 }
 
 fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
-    let names: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
     b.section(format!(
         "The vertices of triangle {} in every space",
         d.source
@@ -1369,7 +1382,7 @@ fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         b.para(vec![
             t("Object"),
             m1(TO),
-            t("world (the quad's tilt)"),
+            t("world"),
             m1(TO),
             t("view (the camera, looking down -z)"),
             m1(TO),
@@ -1503,7 +1516,6 @@ fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
             tup32(&v.color),
         ]);
     }
-    let _ = names;
 }
 
 fn rows4(m: &[[f64; 4]; 4]) -> Vec<Vec<f64>> {
@@ -1882,25 +1894,37 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     }
 
     // The rasterizer.
-    b.para(vec![
-        t("The rasterizer itself divides the exact integer edge values by twice the area, "),
-        m(vec![
-            sym("2A"),
-            EQ,
-            int(d.raster.area2),
-            txt(" (1/65536 px^2)"),
-            EQ,
-            num(d.raster.area2 as f64 / 65536.0),
-            txt(" px^2"),
-        ]),
-        t(":"),
-    ]);
+    let at_opposite = |k: usize| {
+        vec![
+            sym(format!("E_{}", d.coverage.edges[k].name)),
+            grp(sym(n[k].clone())),
+        ]
+    };
+    let mut whole = Vec::new();
     for k in 0..3 {
-        let e = &d.coverage.edges[k];
+        whole.extend(at_opposite(k));
+        whole.push(EQ);
+    }
+    whole.extend([
+        int(d.raster.area2),
+        txt(" (1/65536 px^2)"),
+        EQ,
+        num(d.raster.area2 as f64 / 65536.0),
+        txt(" px^2"),
+    ]);
+    b.text(
+        "The rasterizer itself divides exact integer edge values (1/65536 px^2): the edge \
+         function at P over its value at the opposite vertex, which is twice the triangle's area:",
+    );
+    b.eq(whole);
+    for (k, e) in d.coverage.edges.iter().enumerate() {
         let l = vec![
             sym(SCREEN[k]),
             EQ,
-            frac(sym(format!("E_{}", e.name)), sym("2A")),
+            frac(
+                vec![sym(format!("E_{}", e.name)), grp(sym("P"))],
+                at_opposite(k),
+            ),
             EQ,
             frac(int(e.value), int(d.raster.area2)),
             EQ,
@@ -1935,23 +1959,23 @@ fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     b.text(format!(
         "W is each vertex's clip-space w; with a perspective camera it is the depth in front of \
          the eye. 1/W is linear on the screen, W itself is not. With the screen weights r, s, t \
-         of {}:",
-        names3(&n)
-    ));
-    let mut l = Vec::new();
-    for k in 0..3 {
-        if k > 0 {
-            l.push(SEP);
+         of {}:{}",
+        names3(&n),
+        if p.w.iter().all(|&w| w == p.w[0]) {
+            " (all W are equal here, as with an orthographic camera, so a, b, c are r, s, t)"
+        } else {
+            ""
         }
-        l.extend([
+    ));
+    b.eq(listing((0..3).map(|k| {
+        vec![
             frac(int(1), sym(format!("W_{}", n[k]))),
             EQ,
             frac(int(1), num(p.w[k])),
             EQ,
             num(s004.inv_w[k]),
-        ]);
-    }
-    b.eq(l);
+        ]
+    })));
     let mut l = vec![frac(int(1), sym("W_P")), EQ];
     for k in 0..3 {
         if k > 0 {
@@ -2030,9 +2054,8 @@ fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
              comparison.",
         );
     }
-    if let (Some(c), Some(sw)) = (&d.clipping, &d.source_weights) {
+    if let (Some(_), Some(sw)) = (&d.clipping, &d.source_weights) {
         let src: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
-        let _ = c;
         b.para(vec![t(format!(
             "The weights lambda of the source triangle {} at the pixel are the vertices' \
              lambda interpolated the same way, first with r, s, t (screen), then with a, b, c:",
@@ -2107,7 +2130,7 @@ fn system_section(b: &mut Builder, d: &TriangleTrace) {
         tup(&s.solution),
     ]);
     let b3 = [s.solution[0], s.solution[1], s.solution[2]];
-    if !(s.solution[3] > 0.0) {
+    if s.solution[3].is_nan() || s.solution[3] <= 0.0 {
         b.text(
             "w <= 0: the line through the eye and the pixel meets the triangle's plane behind \
              the camera, so the pixel sees no point of the plane.",
@@ -2169,7 +2192,7 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
                 EQ,
                 tup(&ray.origin),
                 SEP,
-                sym("d"),
+                sym("dir"),
                 EQ,
                 tup(&ray.direction),
             ]);
@@ -2204,14 +2227,14 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
                         MUL,
                         grp(vec![sym(src[0].clone()), MINUS, sym("O")]),
                     ],
-                    vec![sym("n"), MUL, sym("d")],
+                    vec![sym("n"), MUL, sym("dir")],
                 ),
                 EQ,
                 frac(num(nn.dot(vv(0) - o)), num(nn.dot(dir))),
                 EQ,
                 num(hit.t),
             ]);
-            if !(hit.t > 0.0) {
+            if hit.t.is_nan() || hit.t <= 0.0 {
                 b.para(vec![
                     m(vec![sym("k"), M::Op(Op::Le), int(0)]),
                     t(": the line meets the plane behind the start of the ray, not in front of the camera; the pixel sees no point of it."),
@@ -2226,7 +2249,7 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
                     PLUS,
                     sym("k"),
                     MUL,
-                    sym("d"),
+                    sym("dir"),
                     EQ,
                     tup(&hit.point),
                 ],
@@ -2307,7 +2330,7 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
                 "These are the source weights the rasterizer interpolated (largest difference "
             }),
             m1(num(diff)),
-            t(if trace.scene_form == SceneForm::World {
+            t(if trace.scene_form != SceneForm::Clip {
                 "; the rasterizer snapped the vertices to 1/256 px, this ray does not)."
             } else {
                 ")."
@@ -2341,17 +2364,17 @@ fn taps_line(
                 ]);
             }
         }
-        Filter::Bilinear => {
+        Filter::Bilinear | Filter::Trilinear => {
             let mut ts = Vec::new();
             for (k, tp) in taps.iter().enumerate() {
                 if k > 0 {
                     ts.push(PLUS);
                 }
-                ts.extend([
-                    num(f64::from(tp.weight)),
-                    MUL,
-                    M::Tuple(vec![vec![int(tp.i.into())], vec![int(tp.j.into())]]),
-                ]);
+                let mut ij = vec![vec![int(tp.i.into())], vec![int(tp.j.into())]];
+                if filter == Filter::Trilinear {
+                    ij.push(vec![int(tp.level.into())]);
+                }
+                ts.extend([num(f64::from(tp.weight)), MUL, M::Tuple(ij)]);
             }
             l.extend(ts);
         }
@@ -2367,14 +2390,9 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     let n = raster_names(d);
     let r = d.screen.rasterizer;
     b.section("Texture coordinate and colour, both ways");
-    let mut l = Vec::new();
-    for k in 0..3 {
-        if k > 0 {
-            l.push(SEP);
-        }
-        l.extend([sym(format!("uv_{}", n[k])), EQ, tup32(&a.uv_vertices[k])]);
-    }
-    b.eq(l);
+    b.eq(listing((0..3).map(|k| {
+        vec![sym(format!("uv_{}", n[k])), EQ, tup32(&a.uv_vertices[k])]
+    })));
     let uvs: Vec<String> = n.iter().map(|x| format!("uv_{x}")).collect();
     let mut l = vec![sym("uv_affine"), EQ];
     l.extend(weighted_sym(&SCREEN, &uvs));
@@ -2440,6 +2458,38 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         txt(" texels"),
     ]);
     let filter = trace.settings.filter;
+    if let Some(tri) = &a.trilinear {
+        b.para(vec![
+            t(format!(
+                "Trilinear filtering: the level of detail comes from the uv differences across \
+                 the pixel's 2x2 quad (as GPUs compute derivatives), in texels of level 0, and \
+                 the texture has {} mipmap levels: ",
+                tri.levels
+            )),
+            m(vec![
+                sym("lambda"),
+                EQ,
+                sym("log_2"),
+                grp(vec![
+                    sym("max"),
+                    M::Tuple(vec![
+                        vec![M::Abs(vec![sym("d(uv)/dx")])],
+                        vec![M::Abs(vec![sym("d(uv)/dy")])],
+                    ]),
+                ]),
+            ]),
+            t("."),
+        ]);
+        b.eq(vec![
+            sym("lambda_affine"),
+            EQ,
+            num(f64::from(tri.lod_affine)),
+            SEP,
+            sym("lambda_persp"),
+            EQ,
+            num(f64::from(tri.lod_perspective)),
+        ]);
+    }
     b.text(format!(
         "The {} filter reads{}:",
         filter_name(filter),
@@ -2448,6 +2498,10 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
             Filter::Bilinear => {
                 " the 2x2 texels (i, j) around (u W - 1/2, v H - 1/2), weighted by the fractions; \
                  the colour is the weighted sum"
+            }
+            Filter::Trilinear => {
+                " 2x2 texels (i, j, level) bilinearly in levels floor(lambda) and \
+                 floor(lambda) + 1 (level 0 alone when lambda <= 0), blended by frac(lambda)"
             }
         }
     ));
@@ -2467,18 +2521,13 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         a.color_perspective,
         filter,
     ));
-    let mut l = Vec::new();
-    for k in 0..3 {
-        if k > 0 {
-            l.push(SEP);
-        }
-        l.extend([
+    b.eq(listing((0..3).map(|k| {
+        vec![
             sym(format!("colour_{}", n[k])),
             EQ,
             tup32(&a.vertex_colors[k]),
-        ]);
-    }
-    b.eq(l);
+        ]
+    })));
     b.eq(vec![
         txt("vertex colour: affine "),
         tup32(&a.vertex_color_affine),
@@ -2515,15 +2564,17 @@ fn depth_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         ),
         DistanceKind::ClipW => ("clip w (for a perspective projection, the view depth)", "w"),
     };
-    b.text(format!("The {label}, is not linear on the screen:"));
-    let mut l = Vec::new();
-    for k in 0..3 {
-        if k > 0 {
-            l.push(SEP);
-        }
-        l.extend([sym(format!("{sname}_{}", n[k])), EQ, num(dt.distances[k])]);
+    if trace.matrices.is_some_and(|m| !m.perspective) {
+        b.text(format!(
+            "The {label}: with an orthographic camera every w is 1 and it is linear on the \
+             screen too, so both ways agree:"
+        ));
+    } else {
+        b.text(format!("The {label} is not linear on the screen:"));
     }
-    b.eq(l);
+    b.eq(listing((0..3).map(|k| {
+        vec![sym(format!("{sname}_{}", n[k])), EQ, num(dt.distances[k])]
+    })));
     let zs: Vec<M> = dt.distances.iter().map(|&x| num(x)).collect();
     let mut l = vec![sym(format!("{sname}_affine")), EQ];
     l.extend(weighted(&r, zs.clone()));

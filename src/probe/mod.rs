@@ -17,7 +17,7 @@
 //! documented in `docs/probe.md`.
 //!
 //! Vertices are named by letter: the quad corners A, B, C, D in a world scene, the vertex
-//! index as a letter (0 = A, 1 = B, ...) in a clip-space scene. Points the clipper made are
+//! index as a letter (0 = A, 1 = B, ..., then V26, V27, ...) in clip-space and model scenes. Points the clipper made are
 //! named K1, K2, ... in polygon order. P is the sample, X the 3D point it sees.
 
 pub mod format;
@@ -26,6 +26,7 @@ pub mod weights;
 use glam::{DMat4, DVec2, DVec3, DVec4, Vec2};
 use serde::Serialize;
 
+use crate::raster::camera::{Camera, Projection};
 use crate::raster::clip::PlaneName;
 use crate::raster::interpolate::{self, Fragment, Interpolation};
 use crate::raster::project::{self, MAX_IMAGE_SIZE, SUBPIXEL, Viewport};
@@ -68,8 +69,12 @@ pub struct PixelTrace {
     /// The world scene's matrices; `None` for a clip-space scene.
     pub matrices: Option<Matrices>,
     pub sample: Sample,
-    /// Every source triangle in drawing order: coverage and depth test at the sample.
+    /// The source triangles in drawing order, with coverage and depth test at the sample:
+    /// all of them in a mesh of at most [`LIST_ALL_TRIANGLES`] triangles, else those whose
+    /// pixel bounds contain the pixel (a model can have thousands).
     pub triangles: Vec<TriangleCoverage>,
+    /// How many source triangles the mesh has.
+    pub triangle_count: usize,
     /// The source triangle whose fragment the framebuffer kept, if any.
     pub written_by: Option<u32>,
     /// The full derivation for the triangle that wrote the pixel or, for an uncovered pixel,
@@ -94,8 +99,12 @@ pub struct TraceSettings {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SceneForm {
+    /// A camera and a quad.
     World,
+    /// Vertices given in clip space.
     Clip,
+    /// A camera and an OBJ model.
+    Model,
 }
 
 /// The matrices of a world scene, each row by row.
@@ -393,6 +402,8 @@ pub struct AttributeTrace {
     /// `texel_affine - texel_perspective`, and its length.
     pub texel_difference: [f64; 2],
     pub texel_distance: f64,
+    /// Trilinear filtering only: the levels of detail each way.
+    pub trilinear: Option<Trilinear>,
     /// The texels the filter reads, each way.
     pub taps_affine: Vec<TapTrace>,
     pub taps_perspective: Vec<TapTrace>,
@@ -405,9 +416,22 @@ pub struct AttributeTrace {
     pub vertex_color_perspective: [f32; 3],
 }
 
+/// Mipmapping for trilinear filtering.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Trilinear {
+    /// Number of mipmap levels (level 0 is the full texture).
+    pub levels: u32,
+    /// The level of detail from the uv differences across the pixel's 2x2 quad
+    /// ([`interpolate::quad_lod`]), with affine and with perspective-correct uv.
+    pub lod_affine: f32,
+    pub lod_perspective: f32,
+}
+
 /// One texel read by the filter.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct TapTrace {
+    /// Mipmap level (0 = the full texture).
+    pub level: u32,
     /// Column after wrapping.
     pub i: u32,
     /// Row after wrapping (0 = bottom, v = 0).
@@ -488,10 +512,14 @@ impl WorldSpaces {
     }
 }
 
+/// Meshes with at most this many triangles list every one in [`PixelTrace::triangles`].
+pub const LIST_ALL_TRIANGLES: usize = 16;
+
 /// Probes many pixels of one scene: prepares the triangles once.
 #[derive(Clone, Debug)]
 pub struct Prober<'a> {
     mesh: ClipMesh,
+    form: SceneForm,
     spaces: Option<WorldSpaces>,
     names: Vec<String>,
     texture: &'a Texture,
@@ -525,22 +553,21 @@ impl<'a> Prober<'a> {
             .into());
         }
         let mesh = scene.to_mesh();
+        let spaces = |camera: Camera, object: Vec<DVec3>| {
+            let (w, h) = scene.size();
+            let clip_from_view = camera.clip_from_view(f64::from(w) / f64::from(h));
+            Some(WorldSpaces {
+                object,
+                world_from_object: scene.world_from_object(),
+                view_from_world: camera.view_from_world(),
+                clip_from_view,
+                view_from_clip: clip_from_view.inverse(),
+                perspective: matches!(camera.projection, Projection::Perspective { .. }),
+            })
+        };
         let spaces = match scene {
-            Scene::World(s) => {
-                let aspect = f64::from(s.width) / f64::from(s.height);
-                let clip_from_view = s.camera.clip_from_view(aspect);
-                Some(WorldSpaces {
-                    object: s.quad.iter().map(|c| c.position).collect(),
-                    world_from_object: scene.world_from_object(),
-                    view_from_world: s.camera.view_from_world(),
-                    clip_from_view,
-                    view_from_clip: clip_from_view.inverse(),
-                    perspective: matches!(
-                        s.camera.projection,
-                        crate::raster::camera::Projection::Perspective { .. }
-                    ),
-                })
-            }
+            Scene::World(s) => spaces(s.camera, s.quad.iter().map(|c| c.position).collect()),
+            Scene::Model(s) => spaces(s.camera(), s.mesh.positions.clone()),
             Scene::Clip(_) => None,
         };
         let names = (0..mesh.vertices.len()).map(vertex_name).collect();
@@ -549,8 +576,14 @@ impl<'a> Prober<'a> {
             .map(|i| render::prepare_triangle(&mesh, i, viewport))
             .collect();
         let params = render::shade_params(settings, &triangles);
+        let form = match scene {
+            Scene::World(_) => SceneForm::World,
+            Scene::Clip(_) => SceneForm::Clip,
+            Scene::Model(_) => SceneForm::Model,
+        };
         Ok(Self {
             mesh,
+            form,
             spaces,
             names,
             texture,
@@ -574,6 +607,16 @@ impl<'a> Prober<'a> {
                     .unwrap_or_else(|| format!("V{i}"))
             }),
             None => [String::new(), String::new(), String::new()],
+        }
+    }
+
+    /// The texture level of detail the renderer gives a fragment at (x, y): from its 2x2
+    /// quad with trilinear filtering ([`interpolate::quad_lod`]), else 0.
+    fn lod(&self, s: &TriangleSetup, x: u32, y: u32, mode: Interpolation) -> f32 {
+        if self.params.filter == Filter::Trilinear {
+            interpolate::quad_lod(s, x, y, mode, self.texture.width(), self.texture.height())
+        } else {
+            0.0
         }
     }
 
@@ -613,9 +656,10 @@ impl<'a> Prober<'a> {
                     continue;
                 }
                 covering.get_or_insert(si);
-                let Some(frag) = interpolate::fragment(s, e) else {
+                let Some(mut frag) = interpolate::fragment(s, e) else {
                     continue;
                 };
+                frag.lod = self.lod(s, x, y, self.settings.mode);
                 let depth = frag.depth as f32;
                 let passed = depth < buffer;
                 depth_test = Some(DepthTest {
@@ -627,6 +671,14 @@ impl<'a> Prober<'a> {
                     buffer = depth;
                     winner = Some((ti, si, frag));
                 }
+            }
+            let listed = self.triangles.len() <= LIST_ALL_TRIANGLES
+                || tri.setups.iter().any(|s| {
+                    let b = s.bounds;
+                    (b.x0..=b.x1).contains(&x) && (b.y0..=b.y1).contains(&y)
+                });
+            if !listed {
+                continue;
             }
             let chosen = covering.or_else(|| nearest_setup(tri, sp).map(|(si, _)| si));
             coverage.push(TriangleCoverage {
@@ -661,7 +713,7 @@ impl<'a> Prober<'a> {
                 })
                 .map(|(ti, si, _)| (ti, si, false)),
         };
-        let detail = shown.map(|(ti, si, writes)| self.detail(ti, si, writes, sp, window, ndc));
+        let detail = shown.map(|(ti, si, writes)| self.detail(ti, si, writes, (x, y), window, ndc));
 
         Ok(PixelTrace {
             pixel: [x, y],
@@ -674,11 +726,7 @@ impl<'a> Prober<'a> {
                 wireframe: self.settings.wireframe,
                 background: self.settings.background,
             },
-            scene_form: if self.spaces.is_some() {
-                SceneForm::World
-            } else {
-                SceneForm::Clip
-            },
+            scene_form: self.form,
             matrices: self.spaces.as_ref().map(WorldSpaces::matrices),
             sample: Sample {
                 window: window.to_array(),
@@ -686,6 +734,7 @@ impl<'a> Prober<'a> {
                 ndc: ndc.to_array(),
             },
             triangles: coverage,
+            triangle_count: self.triangles.len(),
             written_by: winner.map(|(ti, _, _)| self.triangles[ti].source),
             detail,
             color,
@@ -812,10 +861,11 @@ impl<'a> Prober<'a> {
         ti: usize,
         si: usize,
         writes_pixel: bool,
-        sp: glam::I64Vec2,
+        (x, y): (u32, u32),
         window: DVec2,
         ndc: DVec2,
     ) -> TriangleTrace {
+        let sp = setup::sample_point(x, y);
         let tri = &self.triangles[ti];
         let s = &tri.setups[si];
         let viewport = self.viewport();
@@ -860,7 +910,10 @@ impl<'a> Prober<'a> {
         };
         let coverage = self.coverage_test(ti, si, sp);
         let e = s.edge_values(sp);
-        let frag = interpolate::fragment(s, e);
+        let frag = interpolate::fragment(s, e).map(|mut f| {
+            f.lod = self.lod(s, x, y, self.settings.mode);
+            f
+        });
 
         // Seed 002 on the source triangle.
         let system = self.system(ti, clipped, ndc);
@@ -917,7 +970,7 @@ impl<'a> Prober<'a> {
             screen: f.affine.bary(),
             perspective: f.correct.bary(),
         });
-        let attribute = frag.as_ref().map(|f| self.attribute(s, f));
+        let attribute = frag.as_ref().map(|f| self.attribute(s, f, (x, y)));
         let depth = frag.as_ref().map(|f| {
             let (kind, distances) = match &self.spaces {
                 Some(_) => (
@@ -1060,7 +1113,7 @@ impl<'a> Prober<'a> {
         }
     }
 
-    fn attribute(&self, s: &TriangleSetup, f: &Fragment) -> AttributeTrace {
+    fn attribute(&self, s: &TriangleSetup, f: &Fragment, (x, y): (u32, u32)) -> AttributeTrace {
         let t = self.texture;
         let size = DVec2::new(f64::from(t.width()), f64::from(t.height()));
         let uv_a = f.affine.uv();
@@ -1080,21 +1133,22 @@ impl<'a> Prober<'a> {
                 f64::from(uv.y * t.height() as f32),
             ]
         };
-        let taps = |uv: Vec2| {
-            t.taps(uv, self.settings.filter, self.settings.wrap)
-                .into_iter()
+        let (filter, wrap) = (self.settings.filter, self.settings.wrap);
+        let lod_affine = self.lod(s, x, y, Interpolation::Affine);
+        let lod_perspective = self.lod(s, x, y, Interpolation::Perspective);
+        let taps = |uv: Vec2, lod: f32| {
+            t.taps_lod(uv, filter, wrap, lod)
+                .iter()
                 .map(|tap| TapTrace {
+                    level: tap.level,
                     i: tap.i,
                     j: tap.j,
                     weight: tap.weight,
-                    texel: t.texel(tap.i, tap.j),
+                    texel: t.texel_at(tap.level, tap.i, tap.j),
                 })
                 .collect()
         };
-        let sample = |uv: Vec2| {
-            t.sample(uv, self.settings.filter, self.settings.wrap)
-                .map(shade::unorm8)
-        };
+        let sample = |uv: Vec2, lod: f32| t.sample_lod(uv, filter, wrap, lod).map(shade::unorm8);
         let diff = (uv_a.as_dvec2() - uv_p.as_dvec2()) * size;
         AttributeTrace {
             uv_vertices: uvs.map(|u| u.to_array()),
@@ -1106,10 +1160,15 @@ impl<'a> Prober<'a> {
             texel_perspective: texel(uv_p),
             texel_difference: diff.to_array(),
             texel_distance: diff.length(),
-            taps_affine: taps(uv_a),
-            taps_perspective: taps(uv_p),
-            color_affine: sample(uv_a),
-            color_perspective: sample(uv_p),
+            trilinear: (filter == Filter::Trilinear).then_some(Trilinear {
+                levels: t.levels(),
+                lod_affine,
+                lod_perspective,
+            }),
+            taps_affine: taps(uv_a, lod_affine),
+            taps_perspective: taps(uv_p, lod_perspective),
+            color_affine: sample(uv_a, lod_affine),
+            color_perspective: sample(uv_p, lod_perspective),
             vertex_colors: s.v.map(|v| v.varyings.color().to_array()),
             vertex_color_affine: f.affine.color().to_array(),
             vertex_color_perspective: f.correct.color().to_array(),

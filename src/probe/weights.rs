@@ -281,7 +281,8 @@ pub fn solve_seed002(q: [DVec4; 3], s: DVec2) -> Option<HomogeneousSystem> {
         .iter()
         .map(|r| DVec4::from_array(*r).length())
         .product();
-    if !(det.abs() > MIN_RELATIVE_DET * hadamard) {
+    // Also rejects a NaN determinant.
+    if det.is_nan() || det.abs() <= MIN_RELATIVE_DET * hadamard {
         return None;
     }
     let x = m.inverse() * DVec4::from_array(rhs);
@@ -334,7 +335,8 @@ pub fn ray_triangle(origin: DVec3, dir: DVec3, tri: [DVec3; 3]) -> Option<RayHit
     let n = (b - a).cross(c - a);
     let nn = n.dot(n);
     let nd = n.dot(dir);
-    if !(nn > 0.0) || !(nd.abs() > MIN_RAY_PLANE_COSINE * nn.sqrt() * dir.length()) {
+    let grazing = nd.abs() <= MIN_RAY_PLANE_COSINE * nn.sqrt() * dir.length();
+    if nn.is_nan() || nn <= 0.0 || nd.is_nan() || grazing {
         return None;
     }
     let t = n.dot(a - origin) / nd;

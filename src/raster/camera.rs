@@ -92,7 +92,6 @@ impl Camera {
             return Err(CameraError::EyeIsTarget);
         }
         let sine = forward.cross(self.up).length() / (forward.length() * self.up.length());
-        // Also rejects NaN (a zero-length vector).
         if sine.is_nan() || sine <= MIN_UP_SINE {
             return Err(CameraError::BadUp);
         }
@@ -118,6 +117,39 @@ impl Camera {
             return Err(CameraError::BadPlanes { near, far });
         }
         Ok(())
+    }
+
+    /// A perspective camera that frames a sphere (centre, radius `r`): looking at the centre
+    /// from the direction (0.6, 0.5, 1) (front, right, above), at the distance where the
+    /// sphere fits a 45 degree field of view with a 15% margin:
+    /// `d = 1.15 r / sin(22.5 deg)`; near = `max(d - 2r, d / 1000)`, far = `d + 2r`.
+    ///
+    /// ```
+    /// use barylab::raster::camera::{Camera, Projection};
+    /// use glam::DVec3;
+    /// let cam = Camera::framing(DVec3::ZERO, 2.0);
+    /// assert_eq!(cam.target, DVec3::ZERO);
+    /// let d = (cam.eye - cam.target).length();
+    /// assert!((d - 1.15 * 2.0 / 22.5f64.to_radians().sin()).abs() < 1e-12);
+    /// assert!(cam.validate().is_ok());
+    /// ```
+    pub fn framing(centre: DVec3, radius: f64) -> Self {
+        const FOV_DEG: f64 = 45.0;
+        /// Radius used for a model of zero size (a single point), so the camera stays valid.
+        const MIN_RADIUS: f64 = 1e-3;
+        let r = radius.max(MIN_RADIUS);
+        let d = 1.15 * r / (FOV_DEG / 2.0).to_radians().sin();
+        let dir = DVec3::new(0.6, 0.5, 1.0).normalize();
+        Self {
+            eye: centre + dir * d,
+            target: centre,
+            up: DVec3::Y,
+            projection: Projection::Perspective {
+                fov_y_deg: FOV_DEG,
+                near: (d - 2.0 * r).max(d / 1000.0),
+                far: d + 2.0 * r,
+            },
+        }
     }
 
     /// The view matrix: world -> view space (right-handed, camera looking down -z).

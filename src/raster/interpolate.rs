@@ -1,6 +1,8 @@
 //! Interpolation at a sample: screen-space weights, perspective-correct weights, attributes.
 
-use super::setup::TriangleSetup;
+use glam::Vec2;
+
+use super::setup::{TriangleSetup, sample_point};
 use super::varying::Varyings;
 
 /// How `smooth` attributes are interpolated.
@@ -63,6 +65,8 @@ pub struct Fragment {
     pub affine: Varyings,
     /// Attributes with perspective-correct weights (`smooth`).
     pub correct: Varyings,
+    /// Texture level of detail (see [`quad_lod`]); 0 unless trilinear filtering asked for it.
+    pub lod: f32,
 }
 
 impl Fragment {
@@ -95,5 +99,36 @@ pub fn fragment(setup: &TriangleSetup, edges: [i64; 3]) -> Option<Fragment> {
         inv_w: l[0] * inv_w[0] + l[1] * inv_w[1] + l[2] * inv_w[2],
         affine: Varyings::weighted(&l, &vars),
         correct: Varyings::weighted(&p, &vars),
+        lod: 0.0,
     })
+}
+
+/// The uv the triangle's plane gives at pixel centre (x, y), extrapolated beyond its edges
+/// (as a GPU's helper invocations do), with the mode's weights.
+pub fn uv_at(setup: &TriangleSetup, x: u32, y: u32, mode: Interpolation) -> Option<Vec2> {
+    let e = setup.edge_values(sample_point(x, y));
+    Some(fragment(setup, e)?.varyings(mode).uv())
+}
+
+/// Texture level of detail at pixel (x, y), from uv differences across its 2x2 quad with
+/// origin (x0, y0) = (x & !1, y & !1) (coarse derivatives, as GPUs compute them):
+/// `du/dx = uv(x0 + 1, y0) - uv(x0, y0)`, `du/dy = uv(x0, y0 + 1) - uv(x0, y0)`, then
+/// [`texture::lod`](super::texture::lod). 0 where the plane has no valid uv.
+pub fn quad_lod(
+    setup: &TriangleSetup,
+    x: u32,
+    y: u32,
+    mode: Interpolation,
+    width: u32,
+    height: u32,
+) -> f32 {
+    let (x0, y0) = (x & !1, y & !1);
+    match (
+        uv_at(setup, x0, y0, mode),
+        uv_at(setup, x0 + 1, y0, mode),
+        uv_at(setup, x0, y0 + 1, mode),
+    ) {
+        (Some(o), Some(dx), Some(dy)) => super::texture::lod(dx - o, dy - o, width, height),
+        _ => 0.0,
+    }
 }

@@ -8,6 +8,7 @@ pub mod framebuffer;
 pub mod interpolate;
 pub mod project;
 pub mod render;
+pub mod scanline;
 pub mod setup;
 pub mod shade;
 pub mod texture;

@@ -94,6 +94,19 @@ pub enum TriangleStatus {
     Empty,
 }
 
+impl TriangleStatus {
+    /// A short explanation for people.
+    pub fn describe(self) -> &'static str {
+        match self {
+            TriangleStatus::Drawn => "drawn",
+            TriangleStatus::BadIndex => "a vertex index is out of range",
+            TriangleStatus::NotFinite => "a vertex coordinate is NaN or infinite",
+            TriangleStatus::ClippedAway => "clipped away: it lies outside the view volume",
+            TriangleStatus::Empty => "zero area on screen, or outside the image",
+        }
+    }
+}
+
 /// A source triangle after clipping, projection and setup.
 #[derive(Clone, Debug)]
 pub struct PreparedTriangle {
@@ -363,12 +376,22 @@ fn rasterize(
             if !setup.covers(&e) {
                 continue;
             }
-            let Some(frag) = interpolate::fragment(setup, e) else {
+            let Some(mut frag) = interpolate::fragment(setup, e) else {
                 continue;
             };
+            if params.filter == Filter::Trilinear {
+                frag.lod = interpolate::quad_lod(
+                    setup,
+                    x,
+                    y,
+                    params.mode,
+                    texture.width(),
+                    texture.height(),
+                );
+            }
             let i = row + x as usize;
             let depth = frag.depth as f32;
-            // Less-than depth test (a NaN depth fails it).
+            // Less-than depth test (a NaN depth never passes).
             if depth.is_nan() || depth >= band.depth[i] {
                 continue;
             }

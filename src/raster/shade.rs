@@ -34,10 +34,10 @@ pub const WIRE_WIDTH_PX: f64 = 1.0;
 /// ```
 /// use barylab::raster::shade::edge_distance_px;
 /// use glam::DVec2;
-/// // Weight 0.125 changing by 1/64 per pixel: 8 pixels from that edge (the other weight
-/// // 0.5 changes by 1/32 per pixel: 16 pixels away).
-/// let g = [DVec2::new(1.0 / 64.0, 0.0), DVec2::new(0.0, 1.0 / 32.0), DVec2::ZERO];
-/// assert_eq!(edge_distance_px([0.125, 0.5, 0.375], &g), 8.0);
+/// // Weight 0.25 changing by 0.125 per pixel: 2 pixels from that edge; the weight 0.5
+/// // changing by 0.0625 per pixel is 8 pixels from its edge; a zero gradient is ignored.
+/// let g = [DVec2::new(0.125, 0.0), DVec2::new(0.0, 0.0625), DVec2::ZERO];
+/// assert_eq!(edge_distance_px([0.25, 0.5, 0.25], &g), 2.0);
 /// ```
 pub fn edge_distance_px(weights: [f32; 3], gradients: &[glam::DVec2; 3]) -> f64 {
     let mut d = f64::INFINITY;
@@ -94,7 +94,7 @@ pub fn shade(
     let bary = v.bary();
     match p.shading {
         Shading::Texture => {
-            let c = texture.sample(v.uv(), p.filter, p.wrap);
+            let c = texture.sample_lod(v.uv(), p.filter, p.wrap, frag.lod);
             [unorm8(c[0]), unorm8(c[1]), unorm8(c[2]), unorm8(c[3])]
         }
         Shading::VertexColor => {

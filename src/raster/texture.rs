@@ -19,6 +19,9 @@ pub enum Filter {
     /// GL_LINEAR: the 2x2 texels around the sample, weighted by distance.
     #[default]
     Bilinear,
+    /// GL_LINEAR_MIPMAP_LINEAR: bilinear in the two mipmap levels around the level of detail,
+    /// blended by its fraction.
+    Trilinear,
 }
 
 /// Texture wrap mode for coordinates outside [0, 1].
@@ -45,14 +48,18 @@ pub enum BuiltinTexture {
     Checker,
     /// The 2x2 texture of seed 001: red, white / green, blue.
     Rgbw2x2,
+    /// 1024x1024 texels of deterministic colour noise (the benchmark texture: every lookup
+    /// touches fresh memory, as with a photo).
+    Noise,
 }
 
 impl BuiltinTexture {
     /// All built-ins, for listings.
-    pub const ALL: [BuiltinTexture; 3] = [
+    pub const ALL: [BuiltinTexture; 4] = [
         BuiltinTexture::UvGrid,
         BuiltinTexture::Checker,
         BuiltinTexture::Rgbw2x2,
+        BuiltinTexture::Noise,
     ];
 
     /// The name used in scene files.
@@ -61,6 +68,7 @@ impl BuiltinTexture {
             BuiltinTexture::UvGrid => "uv-grid",
             BuiltinTexture::Checker => "checker",
             BuiltinTexture::Rgbw2x2 => "rgbw-2x2",
+            BuiltinTexture::Noise => "noise",
         }
     }
 
@@ -73,17 +81,14 @@ impl BuiltinTexture {
 /// Errors while loading a texture from a file.
 #[derive(Debug, thiserror::Error)]
 pub enum TextureError {
-    #[error("cannot read texture {path}: {source}")]
-    Read {
-        path: String,
-        source: std::io::Error,
-    },
-    #[error("cannot decode texture {path}: {source}")]
+    #[error("cannot read texture {path}: {cause}")]
+    Read { path: String, cause: std::io::Error },
+    #[error("cannot decode texture {path}: {cause}")]
     Decode {
         path: String,
-        source: image::ImageError,
+        cause: image::ImageError,
     },
-    #[error("texture {path} is empty (0 x 0 pixels)")]
+    #[error("texture {path} is empty (no pixels or 0 bytes)")]
     Empty { path: String },
 }
 
@@ -93,16 +98,116 @@ pub struct Texture {
     width: u32,
     height: u32,
     texels: Vec<[u8; 4]>,
+    /// Mipmap levels 1, 2, ... down to 1x1 (level 0 is the texture itself).
+    mips: Vec<Level>,
 }
+
+/// One mipmap level.
+#[derive(Clone, Debug, PartialEq)]
+struct Level {
+    width: u32,
+    height: u32,
+    texels: Vec<[u8; 4]>,
+}
+
+/// The next mipmap level, as glGenerateMipmap: size `max(1, floor(n / 2))`, each texel the
+/// rounded mean of the 2x2 texels it covers (clamped at odd edges).
+fn half_level(w: u32, h: u32, texels: &[[u8; 4]]) -> Level {
+    let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
+    let at = |i: u32, j: u32| texels[(j.min(h - 1) * w + i.min(w - 1)) as usize];
+    let mut out = Vec::with_capacity((nw * nh) as usize);
+    for j in 0..nh {
+        for i in 0..nw {
+            let q = [
+                at(2 * i, 2 * j),
+                at(2 * i + 1, 2 * j),
+                at(2 * i, 2 * j + 1),
+                at(2 * i + 1, 2 * j + 1),
+            ];
+            let mut c = [0u8; 4];
+            for (k, ch) in c.iter_mut().enumerate() {
+                let sum: u32 = q.iter().map(|t| u32::from(t[k])).sum();
+                *ch = ((sum + 2) / 4) as u8;
+            }
+            out.push(c);
+        }
+    }
+    Level {
+        width: nw,
+        height: nh,
+        texels: out,
+    }
+}
+
+fn mip_chain(w: u32, h: u32, texels: &[[u8; 4]]) -> Vec<Level> {
+    let mut mips: Vec<Level> = Vec::new();
+    let (mut cw, mut ch) = (w, h);
+    while cw > 1 || ch > 1 {
+        let next = match mips.last() {
+            Some(l) => half_level(cw, ch, &l.texels),
+            None => half_level(cw, ch, texels),
+        };
+        (cw, ch) = (next.width, next.height);
+        mips.push(next);
+    }
+    mips
+}
+
+/// Level of detail from the uv derivatives across a pixel (OpenGL 4.6 eq. 8.7 - 8.9):
+/// `lambda = log2(max(|(du/dx W, dv/dx H)|, |(du/dy W, dv/dy H)|))`. Derivatives that are
+/// not finite give 0 (the base level).
+///
+/// ```
+/// use barylab::raster::texture::lod;
+/// use glam::Vec2;
+/// // One pixel steps 4 texels along u on a 256-wide texture: level 2.
+/// assert_eq!(lod(Vec2::new(4.0 / 256.0, 0.0), Vec2::new(0.0, 1.0 / 256.0), 256, 256), 2.0);
+/// // Magnified (half a texel per pixel): negative.
+/// assert_eq!(lod(Vec2::new(0.5 / 256.0, 0.0), Vec2::ZERO, 256, 256), -1.0);
+/// ```
+pub fn lod(duv_dx: Vec2, duv_dy: Vec2, width: u32, height: u32) -> f32 {
+    let size = Vec2::new(width as f32, height as f32);
+    let rho = (duv_dx * size).length().max((duv_dy * size).length());
+    let l = rho.log2();
+    if l.is_finite() { l } else { 0.0 }
+}
+
+/// Largest texture side kept as is; larger images are downscaled on load.
+pub const MAX_TEXTURE_SIZE: u32 = 4096;
 
 /// One texel fetch with its weight, as used by the filters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tap {
+    /// Mipmap level (0 = the full-size texture).
+    pub level: u32,
     /// Texel column after wrapping.
     pub i: u32,
     /// Texel row after wrapping (0 = bottom).
     pub j: u32,
     pub weight: f32,
+}
+
+/// The texels one filter lookup reads: 1 (nearest) or 4 (bilinear), without allocation.
+/// Derefs to a slice of [`Tap`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Taps {
+    taps: [Tap; 8],
+    len: usize,
+}
+
+impl std::ops::Deref for Taps {
+    type Target = [Tap];
+    fn deref(&self) -> &[Tap] {
+        &self.taps[..self.len]
+    }
+}
+
+impl<'a> IntoIterator for &'a Taps {
+    type Item = &'a Tap;
+    type IntoIter = std::slice::Iter<'a, Tap>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.taps[..self.len].iter()
+    }
 }
 
 /// Applies a wrap mode to an integer texel coordinate (OpenGL 4.6, section 8.14.2).
@@ -143,17 +248,47 @@ fn texel_floor(x: f32) -> i64 {
 }
 
 impl Texture {
+    fn new_with_mips(width: u32, height: u32, texels: Vec<[u8; 4]>) -> Self {
+        let mips = mip_chain(width, height, &texels);
+        Self {
+            width,
+            height,
+            texels,
+            mips,
+        }
+    }
+
+    /// Number of mipmap levels, including level 0.
+    pub fn levels(&self) -> u32 {
+        self.mips.len() as u32 + 1
+    }
+
+    /// Width and height of a mipmap level (clamped to the last level).
+    pub fn level_size(&self, level: u32) -> (u32, u32) {
+        match level.checked_sub(1) {
+            None => (self.width, self.height),
+            Some(k) => {
+                let l = &self.mips[(k as usize).min(self.mips.len().saturating_sub(1))];
+                (l.width, l.height)
+            }
+        }
+    }
+
+    /// The texel at column `i`, row `j` of a mipmap level. Indices must be in range.
+    pub fn texel_at(&self, level: u32, i: u32, j: u32) -> [u8; 4] {
+        match level.checked_sub(1).and_then(|k| self.mips.get(k as usize)) {
+            None => self.texel(i, j),
+            Some(l) => l.texels[j as usize * l.width as usize + i as usize],
+        }
+    }
+
     /// A texture from texels given bottom row first. Returns `None` if the size does not match
     /// or is zero.
     pub fn from_texels(width: u32, height: u32, texels: Vec<[u8; 4]>) -> Option<Self> {
         if width == 0 || height == 0 || texels.len() != width as usize * height as usize {
             return None;
         }
-        Some(Self {
-            width,
-            height,
-            texels,
-        })
+        Some(Self::new_with_mips(width, height, texels))
     }
 
     /// A texture from an image whose row 0 is the top (as image files store it).
@@ -170,16 +305,48 @@ impl Texture {
 
     /// Loads PNG, JPEG, BMP, TGA or WebP from a file, converting to RGBA8.
     pub fn load(path: &Path) -> Result<Self, TextureError> {
+        Ok(Self::load_noted(path)?.0)
+    }
+
+    /// Like [`Texture::load`]; images larger than [`MAX_TEXTURE_SIZE`] on a side are
+    /// downscaled (keeping the aspect ratio), and the note says so.
+    pub fn load_noted(path: &Path) -> Result<(Self, Option<String>), TextureError> {
+        let img = Self::decode(path)?;
+        let (w, h) = img.dimensions();
+        if w.max(h) <= MAX_TEXTURE_SIZE {
+            let tex = Self::from_image(&img).ok_or(TextureError::Empty {
+                path: path.display().to_string(),
+            })?;
+            return Ok((tex, None));
+        }
+        let scale = f64::from(MAX_TEXTURE_SIZE) / f64::from(w.max(h));
+        let nw = ((f64::from(w) * scale).round() as u32).max(1);
+        let nh = ((f64::from(h) * scale).round() as u32).max(1);
+        let small = image::imageops::resize(&img, nw, nh, image::imageops::FilterType::Triangle);
+        let tex = Self::from_image(&small).ok_or(TextureError::Empty {
+            path: path.display().to_string(),
+        })?;
+        let note = format!(
+            "texture {} is {w}x{h}; downscaled to {nw}x{nh} for speed",
+            path.display()
+        );
+        Ok((tex, Some(note)))
+    }
+
+    fn decode(path: &Path) -> Result<image::RgbaImage, TextureError> {
         let shown = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|source| TextureError::Read {
+        let bytes = std::fs::read(path).map_err(|cause| TextureError::Read {
             path: shown.clone(),
-            source,
+            cause,
         })?;
-        let img = image::load_from_memory(&bytes).map_err(|source| TextureError::Decode {
+        if bytes.is_empty() {
+            return Err(TextureError::Empty { path: shown });
+        }
+        let img = image::load_from_memory(&bytes).map_err(|cause| TextureError::Decode {
             path: shown.clone(),
-            source,
+            cause,
         })?;
-        Self::from_image(&img.to_rgba8()).ok_or(TextureError::Empty { path: shown })
+        Ok(img.to_rgba8())
     }
 
     /// The texels as an image with row 0 at the top, for display and export.
@@ -219,17 +386,72 @@ impl Texture {
     /// let taps = t.taps(Vec2::new(0.5, 0.5), Filter::Bilinear, Wrap::Repeat);
     /// assert!(taps.iter().all(|t| t.weight == 0.25));
     /// ```
-    pub fn taps(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> Vec<Tap> {
-        let (w, h) = (self.width, self.height);
+    pub fn taps(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> Taps {
+        self.taps_lod(uv, filter, wrap, 0.0)
+    }
+
+    /// Like [`Texture::taps`] at level of detail `lambda` (see [`lod`]), which only trilinear
+    /// filtering uses: `lambda <= 0` reads level 0 bilinearly; otherwise levels
+    /// `d = floor(lambda)` and `d + 1` (clamped to the last level) are read bilinearly and
+    /// blended with weights `1 - frac(lambda)` and `frac(lambda)`.
+    ///
+    /// ```
+    /// use barylab::raster::texture::{Texture, Filter, Wrap};
+    /// use glam::Vec2;
+    /// let t = Texture::from_texels(4, 4, vec![[0; 4]; 16]).unwrap();
+    /// assert_eq!(t.levels(), 3);
+    /// let taps = t.taps_lod(Vec2::new(0.5, 0.5), Filter::Trilinear, Wrap::Repeat, 1.25);
+    /// let on = |l| taps.iter().filter(|t| t.level == l).map(|t| t.weight).sum::<f32>();
+    /// assert_eq!((on(1), on(2)), (0.75, 0.25));
+    /// ```
+    pub fn taps_lod(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> Taps {
+        match filter {
+            Filter::Nearest | Filter::Bilinear => self.level_taps(uv, filter, wrap, 0),
+            Filter::Trilinear => {
+                let last = self.levels() - 1;
+                let lambda = if lambda.is_finite() { lambda } else { 0.0 };
+                if lambda <= 0.0 || last == 0 {
+                    return self.level_taps(uv, Filter::Bilinear, wrap, 0);
+                }
+                let lambda = lambda.min(last as f32);
+                let d = lambda.floor() as u32;
+                let f = lambda - d as f32;
+                let lo = self.level_taps(uv, Filter::Bilinear, wrap, d);
+                if f == 0.0 || d >= last {
+                    return lo;
+                }
+                let hi = self.level_taps(uv, Filter::Bilinear, wrap, d + 1);
+                let mut out = lo;
+                for k in 0..4 {
+                    out.taps[k].weight *= 1.0 - f;
+                    out.taps[4 + k] = hi.taps[k];
+                    out.taps[4 + k].weight *= f;
+                }
+                out.len = 8;
+                out
+            }
+        }
+    }
+
+    /// Nearest or bilinear taps in one mipmap level.
+    fn level_taps(&self, uv: Vec2, filter: Filter, wrap: Wrap, level: u32) -> Taps {
+        let (w, h) = self.level_size(level);
         let su = uv.x * w as f32;
         let sv = uv.y * h as f32;
         match filter {
-            Filter::Nearest => vec![Tap {
-                i: wrap_coord(texel_floor(su), w, wrap),
-                j: wrap_coord(texel_floor(sv), h, wrap),
-                weight: 1.0,
-            }],
-            Filter::Bilinear => {
+            Filter::Nearest => {
+                let tap = Tap {
+                    level,
+                    i: wrap_coord(texel_floor(su), w, wrap),
+                    j: wrap_coord(texel_floor(sv), h, wrap),
+                    weight: 1.0,
+                };
+                Taps {
+                    taps: [tap; 8],
+                    len: 1,
+                }
+            }
+            Filter::Bilinear | Filter::Trilinear => {
                 let (x, y) = (su - 0.5, sv - 0.5);
                 let (i0, j0) = (texel_floor(x), texel_floor(y));
                 let a = if x.is_finite() { x - x.floor() } else { 0.0 };
@@ -237,37 +459,35 @@ impl Texture {
                 let (a, b) = (a.clamp(0.0, 1.0), b.clamp(0.0, 1.0));
                 let (ia, ib) = (wrap_coord(i0, w, wrap), wrap_coord(i0 + 1, w, wrap));
                 let (ja, jb) = (wrap_coord(j0, h, wrap), wrap_coord(j0 + 1, h, wrap));
-                vec![
-                    Tap {
-                        i: ia,
-                        j: ja,
-                        weight: (1.0 - a) * (1.0 - b),
-                    },
-                    Tap {
-                        i: ib,
-                        j: ja,
-                        weight: a * (1.0 - b),
-                    },
-                    Tap {
-                        i: ia,
-                        j: jb,
-                        weight: (1.0 - a) * b,
-                    },
-                    Tap {
-                        i: ib,
-                        j: jb,
-                        weight: a * b,
-                    },
-                ]
+                let tap = |i, j, weight| Tap {
+                    level,
+                    i,
+                    j,
+                    weight,
+                };
+                let four = [
+                    tap(ia, ja, (1.0 - a) * (1.0 - b)),
+                    tap(ib, ja, a * (1.0 - b)),
+                    tap(ia, jb, (1.0 - a) * b),
+                    tap(ib, jb, a * b),
+                ];
+                let mut taps = [four[0]; 8];
+                taps[..4].copy_from_slice(&four);
+                Taps { taps, len: 4 }
             }
         }
     }
 
     /// Samples the texture: the filtered colour with each channel in [0, 1].
     pub fn sample(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> [f32; 4] {
+        self.sample_lod(uv, filter, wrap, 0.0)
+    }
+
+    /// Samples at level of detail `lambda` (used by trilinear filtering only).
+    pub fn sample_lod(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> [f32; 4] {
         let mut out = [0.0f32; 4];
-        for tap in self.taps(uv, filter, wrap) {
-            let t = self.texel(tap.i, tap.j);
+        for tap in &self.taps_lod(uv, filter, wrap, lambda) {
+            let t = self.texel_at(tap.level, tap.i, tap.j);
             for (o, c) in out.iter_mut().zip(t) {
                 *o += tap.weight * f32::from(c) / 255.0;
             }
@@ -281,6 +501,7 @@ impl Texture {
             BuiltinTexture::UvGrid => uv_grid(),
             BuiltinTexture::Checker => checker(),
             BuiltinTexture::Rgbw2x2 => rgbw_2x2(),
+            BuiltinTexture::Noise => noise(),
         }
     }
 }
@@ -300,25 +521,40 @@ fn checker() -> Texture {
             });
         }
     }
-    Texture {
-        width: SIZE,
-        height: SIZE,
-        texels,
-    }
+    Texture::new_with_mips(SIZE, SIZE, texels)
+}
+
+/// SplitMix64-style integer hash: a fixed, platform-independent pseudo-random texel.
+fn hash(mut x: u64) -> u64 {
+    x = x.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    x ^ (x >> 31)
+}
+
+fn noise() -> Texture {
+    const SIZE: u32 = 1024;
+    let texels = (0..u64::from(SIZE * SIZE))
+        .map(|i| {
+            let h = hash(i).to_le_bytes();
+            [h[0], h[1], h[2], 255]
+        })
+        .collect();
+    Texture::new_with_mips(SIZE, SIZE, texels)
 }
 
 fn rgbw_2x2() -> Texture {
     // Seed 001's picture[x][y]: (0,0) red, (0,1) white, (1,0) green, (1,1) blue, with y = v.
-    Texture {
-        width: 2,
-        height: 2,
-        texels: vec![
+    Texture::new_with_mips(
+        2,
+        2,
+        vec![
             [255, 0, 0, 255],
             [0, 255, 0, 255],
             [255, 255, 255, 255],
             [0, 0, 255, 255],
         ],
-    }
+    )
 }
 
 /// 8x8 cells of 64 texels. Cell (c, r) (c along u, r along v) is tinted by its position and
@@ -400,9 +636,9 @@ fn draw_text_centered(
                     return;
                 }
                 let p = img.get_pixel_mut(px as u32, py as u32);
-                for (ch, fg) in p.0.iter_mut().zip(rgb) {
-                    let bg = f32::from(*ch);
-                    *ch = (bg + (f32::from(fg) - bg) * coverage.clamp(0.0, 1.0)) as u8;
+                for (channel, ink) in p.0.iter_mut().zip(rgb) {
+                    let bg = f32::from(*channel);
+                    *channel = (bg + (f32::from(ink) - bg) * coverage.clamp(0.0, 1.0)) as u8;
                 }
             });
         }

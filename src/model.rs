@@ -1,0 +1,184 @@
+//! OBJ models (via `tobj`): triangulated meshes with uvs and the MTL diffuse colour/texture.
+
+use std::path::{Path, PathBuf};
+
+use glam::{DVec3, Vec2, Vec3};
+
+/// Largest accepted |coordinate| in a model file. Beyond this the f32 positions of the file
+/// have too little precision for a classroom-sized view, and framing the camera fails.
+pub const MAX_MODEL_COORD: f64 = 1e6;
+
+/// Errors while loading a model. Each names the file.
+#[derive(Debug, thiserror::Error)]
+pub enum ModelError {
+    #[error("cannot read model {path}: {cause}")]
+    Read { path: String, cause: std::io::Error },
+    #[error("model {path} is empty (0 bytes)")]
+    EmptyFile { path: String },
+    #[error("cannot load model {path}: {reason}")]
+    Parse { path: String, reason: String },
+    #[error("model {path} contains no triangles")]
+    NoTriangles { path: String },
+    #[error("model {path}: vertex {index} has a coordinate that is {what}")]
+    BadCoordinate {
+        path: String,
+        /// 1-based, as OBJ counts.
+        index: usize,
+        what: String,
+    },
+}
+
+/// Says what a `tobj` error means for someone looking at the file.
+fn explain(e: &tobj::LoadError) -> String {
+    use tobj::LoadError as E;
+    match e {
+        E::OpenFileFailed => "the file cannot be opened".into(),
+        E::ReadError => "it is not a readable text OBJ file (binary data or invalid UTF-8)".into(),
+        E::PositionParseError => "a `v` (position) line has a missing or bad number".into(),
+        E::TexcoordParseError => "a `vt` (texture coordinate) line has a bad number".into(),
+        E::NormalParseError => "a `vn` (normal) line has a bad number".into(),
+        E::FaceParseError => "an `f` (face) line is malformed".into(),
+        E::FaceVertexOutOfBounds => "a face uses a vertex index beyond the vertices defined".into(),
+        E::FaceTexCoordOutOfBounds => {
+            "a face uses a texture coordinate index beyond those defined".into()
+        }
+        E::FaceNormalOutOfBounds => "a face uses a normal index beyond those defined".into(),
+        other => other.to_string(),
+    }
+}
+
+/// A triangle mesh in object space, ready to be transformed by a camera.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct ModelMesh {
+    pub positions: Vec<DVec3>,
+    pub uvs: Vec<Vec2>,
+    pub colors: Vec<Vec3>,
+    pub triangles: Vec<[u32; 3]>,
+    /// Whether the file had texture coordinates (`vt`).
+    pub has_uv: bool,
+    /// The first material's diffuse texture, resolved against the OBJ's folder.
+    pub diffuse_texture: Option<PathBuf>,
+    /// Things the user should know that did not stop loading (missing MTL, no uvs ...).
+    pub notes: Vec<String>,
+}
+
+impl ModelMesh {
+    /// Reads an OBJ file, triangulating polygons.
+    pub fn load(path: &Path) -> Result<Self, ModelError> {
+        let shown = path.display().to_string();
+        let meta = std::fs::metadata(path).map_err(|cause| ModelError::Read {
+            path: shown.clone(),
+            cause,
+        })?;
+        if meta.len() == 0 {
+            return Err(ModelError::EmptyFile { path: shown });
+        }
+        let (models, materials) =
+            tobj::load_obj(path, &tobj::GPU_LOAD_OPTIONS).map_err(|e| ModelError::Parse {
+                path: shown.clone(),
+                reason: explain(&e),
+            })?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        let mut out = ModelMesh::default();
+        let materials = match materials {
+            Ok(m) => m,
+            Err(e) => {
+                out.notes.push(format!(
+                    "the material library (mtllib) of {shown} could not be loaded ({e}); \
+                     drawing without materials"
+                ));
+                Vec::new()
+            }
+        };
+        let mut all_have_uv = true;
+        for m in &models {
+            let mesh = &m.mesh;
+            let base = out.positions.len() as u32;
+            let n = mesh.positions.len() / 3;
+            let has_uv = mesh.texcoords.len() / 2 == n && n > 0;
+            all_have_uv &= has_uv;
+            let material = mesh.material_id.and_then(|id| materials.get(id));
+            let color = material
+                .and_then(|mat| mat.diffuse)
+                .map(Vec3::from)
+                .unwrap_or(Vec3::ONE);
+            if out.diffuse_texture.is_none()
+                && let Some(tex) = material.and_then(|mat| mat.diffuse_texture.as_ref())
+            {
+                out.diffuse_texture = Some(dir.join(tex));
+            }
+            for k in 0..n {
+                let p = DVec3::new(
+                    f64::from(mesh.positions[3 * k]),
+                    f64::from(mesh.positions[3 * k + 1]),
+                    f64::from(mesh.positions[3 * k + 2]),
+                );
+                let index = out.positions.len() + 1;
+                if !p.is_finite() {
+                    return Err(ModelError::BadCoordinate {
+                        path: shown,
+                        index,
+                        what: "not a finite number".into(),
+                    });
+                }
+                if p.abs().max_element() > MAX_MODEL_COORD {
+                    return Err(ModelError::BadCoordinate {
+                        path: shown,
+                        index,
+                        what: format!("larger than {MAX_MODEL_COORD:e} in magnitude"),
+                    });
+                }
+                out.positions.push(p);
+                out.uvs.push(if has_uv {
+                    Vec2::new(mesh.texcoords[2 * k], mesh.texcoords[2 * k + 1])
+                } else {
+                    Vec2::ZERO
+                });
+                out.colors.push(color);
+            }
+            for t in mesh.indices.chunks_exact(3) {
+                if t.iter().any(|&i| i as usize >= n) {
+                    return Err(ModelError::Parse {
+                        path: shown,
+                        reason: explain(&tobj::LoadError::FaceVertexOutOfBounds),
+                    });
+                }
+                out.triangles.push([base + t[0], base + t[1], base + t[2]]);
+            }
+        }
+        if out.triangles.is_empty() {
+            return Err(ModelError::NoTriangles { path: shown });
+        }
+        out.has_uv = all_have_uv;
+        if !all_have_uv {
+            out.notes.push(format!(
+                "{shown} has no texture coordinates (vt) on every face; shading by vertex colour"
+            ));
+        }
+        Ok(out)
+    }
+
+    /// A sphere containing every vertex: centred on the bounding box, radius the farthest
+    /// vertex from there.
+    pub fn bounding_sphere(&self) -> (DVec3, f64) {
+        let (lo, hi) = self.bounds();
+        let centre = (lo + hi) / 2.0;
+        let r = self
+            .positions
+            .iter()
+            .map(|p| p.distance(centre))
+            .fold(0.0, f64::max);
+        (centre, r)
+    }
+
+    /// Axis-aligned bounds (min, max) of the positions.
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        let mut lo = DVec3::splat(f64::INFINITY);
+        let mut hi = DVec3::splat(f64::NEG_INFINITY);
+        for p in &self.positions {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+        (lo, hi)
+    }
+}
