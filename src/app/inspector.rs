@@ -38,7 +38,7 @@ pub mod text {
         "1/W of each vertex: W is the clip w, the distance in front of the camera.";
     pub const CORRECTED_TIP: &str =
         "Perspective-correct weights: a = r·W_P/W_A, b = s·W_P/W_B, c = t·W_P/W_C.";
-    pub const INV_W_P: &str = "1/W_P = r/W_A + s/W_B + t/W_C";
+    pub const INV_W_P: &str = "1/W_P";
     pub const W_P: &str = "W_P";
     pub const UV_AFFINE: &str = "uv affine";
     pub const UV_PERSPECTIVE: &str = "uv perspective";
@@ -199,8 +199,17 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
                 });
         });
     if let Some(s) = seed {
+        let n = [0, 1, 2].map(|k| v[k].name.as_str());
         ui.label(
-            RichText::new(format!("{} = {}", text::INV_W_P, fmt_number(s.inv_w_p))).monospace(),
+            RichText::new(format!(
+                "{} = r/W_{} + s/W_{} + t/W_{} = {}",
+                text::INV_W_P,
+                n[0],
+                n[1],
+                n[2],
+                fmt_number(s.inv_w_p)
+            ))
+            .monospace(),
         );
         ui.label(RichText::new(format!("{} = {}", text::W_P, fmt_number(s.w_p))).monospace());
     }

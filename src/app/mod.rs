@@ -312,7 +312,11 @@ impl BaryApp {
                 cmds.push(Command::SetPixelSize(larger_pixel(view.pixel_size)));
             }
             if key(Key::Escape) {
-                cmds.push(Command::Pin(None));
+                if self.help_open {
+                    help = true;
+                } else {
+                    cmds.push(Command::Pin(None));
+                }
             }
             if key(Key::F1) {
                 help = true;
