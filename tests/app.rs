@@ -3,7 +3,8 @@
 use barylab::app::edit::vertices_on_screen;
 use barylab::app::state::Command;
 use barylab::app::{AppOptions, BaryApp};
-use barylab::raster::Interpolation;
+use barylab::probe::format::fmt_number;
+use barylab::raster::{BuiltinTexture, Interpolation, RenderSettings, Texture};
 use barylab::scene::Scene;
 use egui::Pos2;
 use egui_kittest::Harness;
@@ -91,21 +92,81 @@ fn nothing_is_rendered_again_when_nothing_changed() {
     assert_eq!(h.state().canvas().timing.uploads, uploads);
 }
 
+/// The probe's trace of `pixel` of what the app rendered, computed here independently of the
+/// app's inspector.
+fn probe_of(h: &Harness<'_, BaryApp>, pixel: [u32; 2]) -> barylab::probe::PixelTrace {
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let texture = Texture::builtin(BuiltinTexture::UvGrid);
+    let settings = RenderSettings {
+        mode: h.state().state().options().mode,
+        ..out.scene.settings()
+    };
+    barylab::probe::probe(&out.scene, &texture, &settings, (pixel[0], pixel[1])).expect("probe")
+}
+
+fn shows(h: &Harness<'_, BaryApp>, text: &str) -> bool {
+    h.query_all_by_label(text).next().is_some()
+}
+
 #[test]
-fn hovering_a_pixel_shows_its_weights_in_the_inspector() {
+fn hovering_a_pixel_shows_the_probes_weights_in_the_inspector() {
     let mut h = harness();
     let out = h.state().canvas().output.as_ref().expect("rendered");
-    let render = out.render(Interpolation::Perspective).expect("render");
-    // A covered pixel in the middle of the quad.
     let [w, hgt] = out.size;
     let p = [w / 2, hgt * 2 / 3];
-    assert!(render.frame.covered(p[0], p[1]));
-    let ws = render.frame.weights_screen[render.frame.index(p[0], p[1])];
+    let trace = probe_of(&h, p);
+    assert_eq!(trace.written_by, Some(0), "a covered pixel of triangle ABC");
+    let d = trace.detail.expect("detail");
+    let persp = d.perspective.expect("1/w correction");
     h.hover_at(pixel_centre(&h, p));
     h.run();
     assert_eq!(h.state().canvas().hover, Some(p));
-    let shown = format!("{:.4} {:.4} {:.4}", ws[0], ws[1], ws[2]);
-    h.get_by_label_contains(&shown);
+    assert!(shows(&h, &format!("Pixel ({}, {})", p[0], p[1])));
+    for k in 0..3 {
+        let r = fmt_number(d.screen.rasterizer[k]);
+        let a = fmt_number(persp.seed004.weights[k]);
+        assert!(shows(&h, &r), "screen weight {r} not shown");
+        assert!(shows(&h, &a), "corrected weight {a} not shown");
+    }
+    let w_p = format!("W_P = {}", fmt_number(persp.seed004.w_p));
+    assert!(shows(&h, &w_p), "{w_p} not shown");
+    // The same pixel in the framebuffer: the probe explains what was drawn.
+    let render = out_render(&h);
+    let i = render.frame.index(p[0], p[1]);
+    assert_eq!(render.frame.color[i], trace.color);
+}
+
+fn out_render(h: &Harness<'_, BaryApp>) -> barylab::raster::render::Render {
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    out.render(h.state().state().options().mode)
+        .expect("render")
+        .clone()
+}
+
+#[test]
+fn hovering_outside_the_quad_still_shows_weights_and_why() {
+    let mut h = harness();
+    // The top-left pixel is background in the default scene.
+    let p = [2, 2];
+    let trace = probe_of(&h, p);
+    assert_eq!(trace.written_by, None);
+    let d = trace.detail.expect("nearest triangle");
+    let negative = d
+        .screen
+        .rasterizer
+        .iter()
+        .find(|w| **w < 0.0)
+        .copied()
+        .expect("a negative weight outside");
+    h.hover_at(pixel_centre(&h, p));
+    h.run();
+    assert!(shows(&h, "not covered"));
+    assert!(
+        h.query_all_by_label_contains("outside edge")
+            .next()
+            .is_some()
+    );
+    assert!(shows(&h, &fmt_number(negative)));
 }
 
 #[test]

@@ -13,8 +13,6 @@ use crate::scene::{Scene, Tilt};
 
 /// User-facing strings of the controls panel.
 pub mod text {
-    pub const MODEL: &str = "OBJ model: its vertices are not editable here";
-    pub const TRIANGLES: &str = "triangles";
     pub const INTERPOLATION: &str = "Interpolation";
     pub const AFFINE: &str = "Affine";
     pub const PERSPECTIVE: &str = "Perspective-correct";
@@ -49,7 +47,11 @@ pub mod text {
     pub const RESET_SCENE: &str = "Reset scene";
     pub const RESET_ALL: &str = "Reset everything";
     pub const TEXT_SIZE: &str = "Text size";
-    pub const NO_TILT_CLIP: &str = "Clip-space scenes have no camera.";
+    pub const NO_TILT_CLIP: &str = "Clip-space and model scenes have no tilt.";
+    pub const MODEL: &str = "Model";
+    pub const MODEL_VERTICES: &str = "vertices";
+    pub const MODEL_TRIANGLES: &str = "triangles";
+    pub const TRILINEAR: &str = "Trilinear";
 
     pub fn preset(p: super::Preset) -> &'static str {
         use super::Preset::*;
@@ -84,6 +86,8 @@ pub mod tips {
         "Window depth z/w as grey (near black, far white): it is linear on screen.";
     pub const NEAREST: &str = "GL_NEAREST: the texel containing the sample.";
     pub const BILINEAR: &str = "GL_LINEAR: the four texels around the sample, weighted.";
+    pub const TRILINEAR: &str = "GL_LINEAR_MIPMAP_LINEAR: bilinear in the two mipmap levels around \
+        the level of detail (from the 2x2 pixel quad), blended.";
     pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
         thresholding the smallest weight. Key: W";
     pub const PIXEL_SIZE: &str = "Render at a lower resolution and magnify, so each rendered pixel \
@@ -189,6 +193,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
         for (f, label, tip) in [
             (Filter::Nearest, text::NEAREST, tips::NEAREST),
             (Filter::Bilinear, text::BILINEAR, tips::BILINEAR),
+            (Filter::Trilinear, text::TRILINEAR, tips::TRILINEAR),
         ] {
             if ui
                 .selectable_label(options.filter == f, label)
@@ -453,12 +458,15 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                 });
             ui.label(RichText::new(format!("{}: x, y, z, w", text::CLIP)).weak());
         }
-        Scene::Model(s) => {
+        Scene::Model(m) => {
             ui.label(format!(
-                "{} ({} {})",
+                "{} {} ({} {}, {} {})",
                 text::MODEL,
-                s.mesh.triangles.len(),
-                text::TRIANGLES
+                m.model,
+                m.mesh.positions.len(),
+                text::MODEL_VERTICES,
+                m.mesh.triangles.len(),
+                text::MODEL_TRIANGLES
             ));
         }
     }

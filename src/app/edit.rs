@@ -35,8 +35,8 @@ impl VertexOnScreen {
 
 /// The mesh vertices' clip positions and window positions for a viewport.
 pub fn vertices_on_screen(scene: &Scene, viewport: Viewport) -> Vec<VertexOnScreen> {
-    // A model's vertices are not handles (there may be thousands).
     if let Scene::Model(_) = scene {
+        // A model has too many vertices for handles; its vertices are not edited here.
         return Vec::new();
     }
     let mut sized = scene.clone();
@@ -62,6 +62,8 @@ pub enum EditError {
     BehindCamera(usize),
     #[error("the edit would give a position that is not a finite number")]
     NotFinite,
+    #[error("a model (OBJ) scene's vertices cannot be moved here; edit the OBJ file")]
+    Model,
 }
 
 /// NDC (x, y) of a window position: `x = 2 x_w / W - 1`, `y = 1 - 2 y_w / H`.
@@ -140,7 +142,7 @@ pub fn move_vertex_to(
             }
             v.clip = moved;
         }
-        Scene::Model(_) => return Err(EditError::NoVertex(index)),
+        Scene::Model(_) => return Err(EditError::Model),
     }
     Ok(())
 }
@@ -191,7 +193,7 @@ pub fn push_vertex(
             }
             v.clip *= k;
         }
-        Scene::Model(_) => return Err(EditError::NoVertex(index)),
+        Scene::Model(_) => return Err(EditError::Model),
     }
     Ok(())
 }
@@ -233,8 +235,8 @@ pub fn set_options(scene: &mut Scene, o: SceneOptions) {
             (s.mode, s.shading, s.filter, s.wireframe) = (o.mode, o.shading, o.filter, o.wireframe);
         }
         Scene::Model(s) => {
-            (s.mode, s.filter, s.wireframe) = (o.mode, o.filter, o.wireframe);
-            s.shading = Some(o.shading);
+            (s.mode, s.shading, s.filter, s.wireframe) =
+                (o.mode, Some(o.shading), o.filter, o.wireframe);
         }
     }
 }

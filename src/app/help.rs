@@ -40,7 +40,7 @@ pub mod text {
         ("G", "pixel grid and sample points"),
         ("H", "corner handles"),
         ("Arrow keys", "move the pinned pixel by one"),
-        ("Esc", "unpin"),
+        ("Esc", "close this help, else unpin"),
         ("Ctrl + R", "reset the scene"),
         ("Ctrl + / Ctrl -", "larger / smaller interface"),
         ("F1", "this help"),

@@ -1,37 +1,377 @@
-//! The inspector panel: the derivation of the hovered and the pinned pixel.
+//! The inspector panel: the hovered and the pinned pixel, from the probe. A summary of the
+//! key numbers (coloured by vertex, negative weights in red), a comparison when a pixel is
+//! pinned and another hovered, and the probe's worked example, section by section.
 
-use egui::{RichText, Ui};
+use egui::{Color32, RichText, Ui};
 
+use super::overlay::{CLIP_POINT, NEGATIVE, vertex_color};
+use super::paint::color;
 use super::pixel::PixelReport;
+use crate::probe::format::fmt_number;
+use crate::probe::{Position, TriangleCoverage};
+use crate::raster::Interpolation;
+use crate::raster::render::TriangleStatus;
 
 /// User-facing strings of the inspector.
-mod text {
+pub mod text {
     pub const TITLE: &str = "Pixel";
     pub const HOVER_HINT: &str = "Hover the canvas to inspect a pixel; click to pin it.";
-    pub const HOVERED: &str = "Hovered";
-    pub const PINNED: &str = "Pinned";
+    pub const HOVERED: &str = "hovered";
+    pub const PINNED: &str = "pinned";
+    pub const PIXEL: &str = "Pixel";
+    pub const COVERED_BY: &str = "covered by triangle";
     pub const NOT_COVERED: &str = "not covered";
+    pub const NEAREST: &str = "weights of the nearest triangle";
+    pub const OUTSIDE_EDGE: &str = "outside edge";
+    pub const ON_EDGE_NOT_OWNED: &str = "on an edge another triangle owns (fill rule)";
+    pub const HIDDEN: &str = "behind another fragment (depth test)";
+    pub const CLIPPED_AWAY: &str = "clipped away";
+    pub const EMPTY: &str = "no area on screen";
+    pub const NOTHING_DRAWN: &str = "nothing is drawn";
+    pub const VERTEX: &str = "vertex";
+    pub const SCREEN: &str = "screen r s t";
+    pub const INV_W: &str = "1/W";
+    pub const CORRECTED: &str = "corrected a b c";
+    pub const SCREEN_TIP: &str = "Screen-space weights: signed sub-area over area of the triangle on screen. \
+        Negative means the pixel is on the far side of the opposite edge.";
+    pub const INV_W_TIP: &str =
+        "1/W of each vertex: W is the clip w, the distance in front of the camera.";
+    pub const CORRECTED_TIP: &str =
+        "Perspective-correct weights: a = r·W_P/W_A, b = s·W_P/W_B, c = t·W_P/W_C.";
+    pub const INV_W_P: &str = "1/W_P";
+    pub const W_P: &str = "W_P";
+    pub const UV_AFFINE: &str = "uv affine";
+    pub const UV_PERSPECTIVE: &str = "uv perspective";
+    pub const TEXEL_GAP: &str = "apart by";
+    pub const TEXELS: &str = "texels";
+    pub const DEPTH: &str = "depth z/w";
+    pub const COLOR: &str = "colour";
+    pub const MODE_AFFINE: &str = "shown: affine";
+    pub const MODE_PERSPECTIVE: &str = "shown: perspective-correct";
+    pub const COMPARE: &str = "Pinned vs hovered";
+    pub const DERIVATION: &str = "Derivation";
+    pub const DERIVATION_OF: &str = "of pixel";
+    pub const CLIPPED_VERTEX_TIP: &str =
+        "A point the clipper made on the near plane (or another clip plane).";
+}
+
+/// Sections of the probe's worked example opened at first (by position, 0-based): the
+/// coverage, the screen weights, the 1/w correction and the texture coordinate.
+const OPEN_SECTIONS: [usize; 4] = [2, 4, 5, 8];
+
+/// Points: width of a number column.
+const NUMBER_WIDTH: f32 = 84.0;
+
+fn weight_text(w: f64) -> RichText {
+    let t = RichText::new(fmt_number(w)).monospace();
+    if w < 0.0 { t.color(color(NEGATIVE)) } else { t }
+}
+
+fn pair(v: [f64; 2]) -> String {
+    format!("({}, {})", fmt_number(v[0]), fmt_number(v[1]))
+}
+
+fn pair32(v: [f32; 2]) -> String {
+    pair([f64::from(v[0]), f64::from(v[1])])
+}
+
+/// Why a triangle does not cover the sample, in a few words.
+fn miss_reason(c: &TriangleCoverage) -> String {
+    match c.status {
+        TriangleStatus::ClippedAway => return text::CLIPPED_AWAY.to_string(),
+        TriangleStatus::Empty | TriangleStatus::BadIndex | TriangleStatus::NotFinite => {
+            return text::EMPTY.to_string();
+        }
+        TriangleStatus::Drawn => {}
+    }
+    match &c.test {
+        Some(t) if t.position == Position::Outside => {
+            let edges: Vec<&str> = t
+                .edges
+                .iter()
+                .filter(|e| e.value < 0)
+                .map(|e| e.name.as_str())
+                .collect();
+            format!("{} {}", text::OUTSIDE_EDGE, edges.join(", "))
+        }
+        Some(t) if !t.covered => text::ON_EDGE_NOT_OWNED.to_string(),
+        Some(_) => text::HIDDEN.to_string(),
+        None => text::EMPTY.to_string(),
+    }
+}
+
+/// The pixel's header: position, coverage, colour.
+fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
+    let t = &r.trace;
+    ui.horizontal(|ui| {
+        let c = t.color;
+        let (rect, _) = ui.allocate_exact_size(egui::vec2(28.0, 28.0), egui::Sense::hover());
+        ui.painter().rect_filled(
+            rect,
+            4.0,
+            Color32::from_rgba_unmultiplied(c[0], c[1], c[2], 255),
+        );
+        ui.painter().rect_stroke(
+            rect,
+            4.0,
+            egui::Stroke::new(1.0, Color32::GRAY),
+            egui::StrokeKind::Outside,
+        );
+        ui.label(
+            RichText::new(format!("{} ({}, {})", text::PIXEL, r.pixel[0], r.pixel[1]))
+                .strong()
+                .size(22.0),
+        );
+        ui.label(RichText::new(role).weak());
+    });
+    match t.written_by {
+        Some(tri) => {
+            let names = t
+                .triangles
+                .iter()
+                .find(|c| c.source == tri)
+                .map(|c| c.vertices.join(""))
+                .unwrap_or_default();
+            ui.label(format!("{} {names}", text::COVERED_BY));
+        }
+        None => {
+            ui.label(
+                RichText::new(text::NOT_COVERED)
+                    .color(color(NEGATIVE))
+                    .strong(),
+            );
+            for c in &t.triangles {
+                ui.label(format!("  {}: {}", c.vertices.join(""), miss_reason(c)));
+            }
+            if t.detail.is_some() {
+                ui.label(RichText::new(text::NEAREST).weak());
+            } else {
+                ui.label(text::NOTHING_DRAWN);
+            }
+        }
+    }
+}
+
+/// The key numbers: per vertex r s t, 1/W, a b c; then W_P, uv both ways, depth.
+fn summary_ui(ui: &mut Ui, r: &PixelReport) {
+    let Some(d) = &r.trace.detail else {
+        return;
+    };
+    let v = &d.raster.vertices;
+    let seed = d.perspective.map(|p| p.seed004);
+    egui::ScrollArea::horizontal()
+        .id_salt("summary-scroll")
+        .show(ui, |ui| {
+            egui::Grid::new(("summary", r.pixel))
+                .num_columns(4)
+                .spacing([14.0, 4.0])
+                .striped(true)
+                .show(ui, |ui| {
+                    ui.label(RichText::new(text::VERTEX).weak());
+                    ui.label(RichText::new(text::SCREEN).weak())
+                        .on_hover_text(text::SCREEN_TIP);
+                    ui.label(RichText::new(text::INV_W).weak())
+                        .on_hover_text(text::INV_W_TIP);
+                    ui.label(RichText::new(text::CORRECTED).weak())
+                        .on_hover_text(text::CORRECTED_TIP);
+                    ui.end_row();
+                    for (k, vk) in v.iter().enumerate() {
+                        let mesh = vk
+                            .source_vertex
+                            .and_then(|s| d.vertices.get(s))
+                            .map(|vt| vt.index as usize);
+                        let c = mesh.map_or(CLIP_POINT, vertex_color);
+                        let name = ui.label(RichText::new(&vk.name).strong().color(color(c)));
+                        if mesh.is_none() {
+                            name.on_hover_text(text::CLIPPED_VERTEX_TIP);
+                        }
+                        ui.add_sized(
+                            [NUMBER_WIDTH, 20.0],
+                            egui::Label::new(weight_text(d.screen.rasterizer[k])),
+                        );
+                        ui.label(RichText::new(fmt_number(vk.inv_w)).monospace());
+                        match seed {
+                            Some(s) => ui.label(weight_text(s.weights[k])),
+                            None => ui.label("–"),
+                        };
+                        ui.end_row();
+                    }
+                });
+        });
+    if let Some(s) = seed {
+        let n = [0, 1, 2].map(|k| v[k].name.as_str());
+        ui.label(
+            RichText::new(format!(
+                "{} = r/W_{} + s/W_{} + t/W_{} = {}",
+                text::INV_W_P,
+                n[0],
+                n[1],
+                n[2],
+                fmt_number(s.inv_w_p)
+            ))
+            .monospace(),
+        );
+        ui.label(RichText::new(format!("{} = {}", text::W_P, fmt_number(s.w_p))).monospace());
+    }
+    if let Some(a) = &d.attribute {
+        let (affine, persp) = match r.mode {
+            Interpolation::Affine => (true, false),
+            Interpolation::Perspective => (false, true),
+        };
+        let line = |ui: &mut Ui, label: &str, uv: [f32; 2], shown: bool| {
+            let t = RichText::new(format!("{label} = {}", pair32(uv))).monospace();
+            ui.label(if shown { t.strong() } else { t });
+        };
+        line(ui, text::UV_AFFINE, a.uv_affine, affine);
+        line(ui, text::UV_PERSPECTIVE, a.uv_perspective, persp);
+        ui.label(format!(
+            "{} {} {}",
+            text::TEXEL_GAP,
+            fmt_number(a.texel_distance),
+            text::TEXELS
+        ));
+    }
+    if let Some(dep) = &d.depth {
+        ui.label(RichText::new(format!("{} = {}", text::DEPTH, fmt_number(dep.depth))).monospace());
+    }
+    ui.label(
+        RichText::new(match r.mode {
+            Interpolation::Affine => text::MODE_AFFINE,
+            Interpolation::Perspective => text::MODE_PERSPECTIVE,
+        })
+        .weak(),
+    );
+}
+
+/// Pinned and hovered side by side: the numbers that differ from pixel to pixel.
+fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
+    ui.label(RichText::new(text::COMPARE).strong());
+    let rows = |r: &PixelReport| -> Vec<String> {
+        let d = r.trace.detail.as_ref();
+        let w3 = |w: [f64; 3]| {
+            w.iter()
+                .map(|x| fmt_number(*x))
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        vec![
+            format!("({}, {})", r.pixel[0], r.pixel[1]),
+            d.map_or("–".into(), |d| w3(d.screen.rasterizer)),
+            d.and_then(|d| d.perspective)
+                .map_or("–".into(), |p| w3(p.seed004.weights)),
+            d.and_then(|d| d.perspective)
+                .map_or("–".into(), |p| fmt_number(p.seed004.w_p)),
+            d.and_then(|d| d.attribute.as_ref())
+                .map_or("–".into(), |a| pair32(a.uv_affine)),
+            d.and_then(|d| d.attribute.as_ref())
+                .map_or("–".into(), |a| pair32(a.uv_perspective)),
+        ]
+    };
+    let names = [
+        text::PIXEL,
+        text::SCREEN,
+        text::CORRECTED,
+        text::W_P,
+        text::UV_AFFINE,
+        text::UV_PERSPECTIVE,
+    ];
+    let (a, b) = (rows(pinned), rows(hovered));
+    egui::ScrollArea::horizontal()
+        .id_salt("compare-scroll")
+        .show(ui, |ui| {
+            egui::Grid::new("compare")
+                .num_columns(3)
+                .spacing([12.0, 4.0])
+                .striped(true)
+                .show(ui, |ui| {
+                    ui.label("");
+                    ui.label(RichText::new(text::PINNED).weak());
+                    ui.label(RichText::new(text::HOVERED).weak());
+                    ui.end_row();
+                    for ((n, x), y) in names.iter().zip(&a).zip(&b) {
+                        ui.add(egui::Label::new(RichText::new(*n).weak()).extend());
+                        ui.add(egui::Label::new(RichText::new(x).monospace()).extend());
+                        ui.add(egui::Label::new(RichText::new(y).monospace()).extend());
+                        ui.end_row();
+                    }
+                });
+        });
+}
+
+/// The probe's worked example, one collapsible section each.
+fn derivation_ui(ui: &mut Ui, r: &PixelReport) {
+    ui.label(
+        RichText::new(format!(
+            "{} {} ({}, {})",
+            text::DERIVATION,
+            text::DERIVATION_OF,
+            r.pixel[0],
+            r.pixel[1]
+        ))
+        .strong()
+        .size(20.0),
+    );
+    for (i, section) in r.document.sections.iter().enumerate() {
+        egui::CollapsingHeader::new(RichText::new(&section.title).strong())
+            .id_salt(("derivation", i))
+            .default_open(OPEN_SECTIONS.contains(&i))
+            .show(ui, |ui| section_ui(ui, i, &section.to_text()));
+    }
+}
+
+/// One section of the worked example: prose lines (indented by two spaces) wrap; formula
+/// lines (four spaces) keep their layout in a horizontally scrolling block.
+fn section_ui(ui: &mut Ui, index: usize, text: &str) {
+    let mut formulas: Vec<&str> = Vec::new();
+    let mut block = 0;
+    let flush = |ui: &mut Ui, formulas: &mut Vec<&str>, block: &mut usize| {
+        if formulas.is_empty() {
+            return;
+        }
+        egui::ScrollArea::horizontal()
+            .id_salt(("derivation-scroll", index, *block))
+            .show(ui, |ui| {
+                ui.add(
+                    egui::Label::new(RichText::new(formulas.join("\n")).monospace().size(15.0))
+                        .extend(),
+                );
+            });
+        formulas.clear();
+        *block += 1;
+    };
+    for line in text.lines() {
+        if let Some(formula) = line.strip_prefix("    ") {
+            formulas.push(formula);
+        } else {
+            flush(ui, &mut formulas, &mut block);
+            ui.label(line.trim_start());
+        }
+    }
+    flush(ui, &mut formulas, &mut block);
 }
 
 /// The inspector panel.
 pub fn inspector_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&PixelReport>) {
     ui.heading(text::TITLE);
-    if hovered.is_none() && pinned.is_none() {
+    let focus = hovered.or(pinned);
+    let Some(focus) = focus else {
         ui.label(text::HOVER_HINT);
+        return;
+    };
+    let role = if hovered.is_some() {
+        text::HOVERED
+    } else {
+        text::PINNED
+    };
+    header_ui(ui, focus, role);
+    ui.add_space(4.0);
+    summary_ui(ui, focus);
+    if let (Some(p), Some(h)) = (pinned, hovered)
+        && p.pixel != h.pixel
+    {
+        ui.separator();
+        compare_ui(ui, p, h);
     }
-    for (title, r) in [(text::HOVERED, hovered), (text::PINNED, pinned)] {
-        let Some(r) = r else { continue };
-        ui.label(RichText::new(format!("{title} ({}, {})", r.pixel[0], r.pixel[1])).strong());
-        match r.weights_screen {
-            Some(w) => {
-                ui.label(format!(
-                    "screen weights {:.4} {:.4} {:.4}",
-                    w[0], w[1], w[2]
-                ));
-            }
-            None => {
-                ui.label(text::NOT_COVERED);
-            }
-        }
-    }
+    ui.separator();
+    derivation_ui(ui, focus);
 }

@@ -312,7 +312,11 @@ impl BaryApp {
                 cmds.push(Command::SetPixelSize(larger_pixel(view.pixel_size)));
             }
             if key(Key::Escape) {
-                cmds.push(Command::Pin(None));
+                if self.help_open {
+                    help = true;
+                } else {
+                    cmds.push(Command::Pin(None));
+                }
             }
             if key(Key::F1) {
                 help = true;
@@ -373,14 +377,39 @@ impl BaryApp {
         self.applied_zoom = Some(self.state.view.ui_scale);
     }
 
-    fn pixel_reports(&mut self) {
+    /// Probes the hovered and the pinned pixel (again only if the pixel or the render changed).
+    fn pixel_reports(&mut self, texture: &Texture) {
         let mode = self.state.options().mode;
-        let report = |p: Option<[u32; 2]>| {
-            let out = self.canvas.output.as_ref()?;
-            PixelReport::new(out, mode, p?)
+        let Some(out) = self.canvas.output.as_ref() else {
+            self.hover_report = None;
+            self.pin_report = None;
+            return;
         };
-        self.hover_report = report(self.canvas.hover);
-        self.pin_report = report(self.state.view.pinned);
+        let mut error = None;
+        let mut update = |slot: &mut Option<PixelReport>, pixel: Option<[u32; 2]>| {
+            let Some(p) = pixel else {
+                *slot = None;
+                return;
+            };
+            if slot.as_ref().is_some_and(|r| r.is_for(out, mode, p)) {
+                return;
+            }
+            *slot = match PixelReport::new(out, texture, mode, p) {
+                Ok(r) => Some(r),
+                Err(e) => {
+                    error = Some(e.to_string());
+                    None
+                }
+            };
+        };
+        update(&mut self.hover_report, self.canvas.hover);
+        update(&mut self.pin_report, self.state.view.pinned);
+        if let Some(e) = error {
+            self.message = Some(Message {
+                text: e,
+                error: true,
+            });
+        }
     }
 
     /// The whole UI, inside the given `Ui` (eframe's root `Ui`, or a test harness's).
@@ -478,10 +507,11 @@ impl BaryApp {
             .show(&ctx, help::help_ui);
         self.help_open = help_open;
 
-        let reports_before = (self.hover_report.clone(), self.pin_report.clone());
-        self.pixel_reports();
+        let key = |r: &Option<PixelReport>| r.as_ref().map(|r| (r.pixel, r.mode, r.generation));
+        let reports_before = (key(&self.hover_report), key(&self.pin_report));
+        self.pixel_reports(&texture);
         if self.canvas.hover != hover_before
-            || reports_before != (self.hover_report.clone(), self.pin_report.clone())
+            || reports_before != (key(&self.hover_report), key(&self.pin_report))
         {
             // The inspector and overlay drew last frame's pixel; draw again with this one.
             ctx.request_repaint();

@@ -24,6 +24,8 @@ pub const VERTEX_COLORS: [Rgba; 6] = [
     [60, 220, 220, 255],
 ];
 
+/// Colour of a point the clipper made (it is no mesh vertex).
+pub const CLIP_POINT: Rgba = [200, 200, 200, 255];
 /// Colour of negative numbers and of "outside" markings.
 pub const NEGATIVE: Rgba = [255, 90, 90, 255];
 /// Colour of the hovered pixel's marker.
@@ -185,11 +187,12 @@ pub struct HandleMark {
 }
 
 /// The three vertices (window positions, snapped, in triangle order) and mesh indices of the
-/// triangle a marked pixel's weights refer to, with the weights.
+/// triangle a marked pixel's weights refer to, with the weights. A vertex the clipper made has
+/// no mesh index.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriangleMark {
     pub vertices: [DVec2; 3],
-    pub mesh_indices: [usize; 3],
+    pub mesh_indices: [Option<usize>; 3],
     /// Screen-space weights of the three vertices at the pixel centre.
     pub weights: [f64; 3],
 }
@@ -365,7 +368,7 @@ fn triangle_shapes(shapes: &mut Vec<Shape>, t: &TriangleMark, p: DVec2, sub_area
     if sub_areas {
         for i in 0..3 {
             let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-            let color = vertex_color(t.mesh_indices[i]);
+            let color = t.mesh_indices[i].map_or(CLIP_POINT, vertex_color);
             let negative = t.weights[i] < 0.0;
             shapes.push(Shape::Polygon {
                 points: vec![p, t.vertices[j], t.vertices[k]],
@@ -556,7 +559,7 @@ mod tests {
             pixel: [5, 5],
             triangle: Some(TriangleMark {
                 vertices: [DVec2::ZERO, DVec2::new(4.0, 0.0), DVec2::new(0.0, 4.0)],
-                mesh_indices: [0, 2, 3],
+                mesh_indices: [Some(0), Some(2), Some(3)],
                 weights: [-1.75, 1.375, 1.375],
             }),
         });

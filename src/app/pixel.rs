@@ -1,73 +1,82 @@
-//! What the app knows about one pixel: the numbers the inspector shows and the triangle the
-//! overlay marks. (Until the probe lands this reads the renderer's framebuffer.)
+//! What the app shows about one pixel: the probe's trace (every number, computed by the
+//! stages that drew the pixel), its worked-example document, and the triangle the overlay
+//! marks. Nothing here re-does the math.
 
 use glam::DVec2;
 
 use super::canvas::CanvasOutput;
 use super::overlay::{PixelMark, TriangleMark};
-use crate::raster::{Interpolation, NO_TRIANGLE};
+use crate::probe::format::{self, Document};
+use crate::probe::{PixelTrace, ProbeError, Prober};
+use crate::raster::{Interpolation, RenderSettings, Texture};
 
-/// The derivation of one pixel.
-#[derive(Clone, Debug, PartialEq)]
+/// One pixel's trace and derivation.
+#[derive(Clone, Debug)]
 pub struct PixelReport {
     pub pixel: [u32; 2],
-    pub triangle: Option<TriangleMark>,
-    pub source_triangle: Option<u32>,
-    pub weights_screen: Option<[f32; 3]>,
-    pub weights_perspective: Option<[f32; 3]>,
-    pub uv_affine: Option<[f32; 2]>,
-    pub uv_perspective: Option<[f32; 2]>,
-    pub inv_w: Option<f32>,
-    pub depth: Option<f32>,
-    pub color: [u8; 4],
+    /// The mode the trace was made in.
+    pub mode: Interpolation,
+    pub trace: PixelTrace,
+    pub document: Document,
+    /// Which render it belongs to ([`CanvasOutput::generation`]).
+    pub generation: u64,
+}
+
+impl PartialEq for PixelReport {
+    fn eq(&self, other: &Self) -> bool {
+        self.pixel == other.pixel && self.mode == other.mode && self.generation == other.generation
+    }
 }
 
 impl PixelReport {
-    /// The report of `pixel` in the render of `mode`.
-    pub fn new(output: &CanvasOutput, mode: Interpolation, pixel: [u32; 2]) -> Option<Self> {
-        let render = output.render(mode)?;
-        let f = &render.frame;
-        if pixel[0] >= f.width || pixel[1] >= f.height {
-            return None;
-        }
-        let i = f.index(pixel[0], pixel[1]);
-        let tri = f.triangle[i];
-        let covered = tri != NO_TRIANGLE;
-        let mesh = output.scene.to_mesh();
-        let triangle = covered
-            .then(|| {
-                let prepared = render.triangles.get(tri as usize)?;
-                let setup = prepared.setups.first()?;
-                if prepared.setups.len() != 1 || !prepared.polygon?.unclipped() {
-                    return None;
-                }
-                let m = mesh.triangles.get(tri as usize)?;
-                let ws = f.weights_screen[i];
-                Some(TriangleMark {
-                    vertices: setup.v.map(|v| DVec2::new(v.window.x, v.window.y)),
-                    mesh_indices: m.map(|k| k as usize),
-                    weights: ws.map(f64::from),
-                })
-            })
-            .flatten();
-        Some(Self {
+    /// Probes `pixel` of the rendered scene in `mode`.
+    pub fn new(
+        output: &CanvasOutput,
+        texture: &Texture,
+        mode: Interpolation,
+        pixel: [u32; 2],
+    ) -> Result<Self, ProbeError> {
+        let settings = RenderSettings {
+            mode,
+            ..output.scene.settings()
+        };
+        let trace = Prober::new(&output.scene, texture, &settings)?.pixel(pixel[0], pixel[1])?;
+        let document = format::document(&trace);
+        Ok(Self {
             pixel,
-            triangle,
-            source_triangle: covered.then_some(tri),
-            weights_screen: covered.then_some(f.weights_screen[i]),
-            weights_perspective: covered.then_some(f.weights_perspective[i]),
-            uv_affine: covered.then_some(f.uv_affine[i]),
-            uv_perspective: covered.then_some(f.uv_perspective[i]),
-            inv_w: covered.then_some(f.inv_w[i]),
-            depth: covered.then_some(f.depth[i]),
-            color: f.color[i],
+            mode,
+            trace,
+            document,
+            generation: output.generation,
+        })
+    }
+
+    /// Whether this report is for this pixel of this render in this mode.
+    pub fn is_for(&self, output: &CanvasOutput, mode: Interpolation, pixel: [u32; 2]) -> bool {
+        self.pixel == pixel && self.mode == mode && self.generation == output.generation
+    }
+
+    /// The triangle whose weights the trace shows (the one that wrote the pixel, or the nearest
+    /// one for an uncovered pixel), as rasterized: snapped window positions, mesh vertex of
+    /// each corner (`None` for a point the clipper made) and the screen weights.
+    pub fn triangle(&self) -> Option<TriangleMark> {
+        let d = self.trace.detail.as_ref()?;
+        let v = &d.raster.vertices;
+        Some(TriangleMark {
+            vertices: [0, 1, 2].map(|k| DVec2::from(v[k].window)),
+            mesh_indices: [0, 1, 2].map(|k| {
+                v[k].source_vertex
+                    .and_then(|s| d.vertices.get(s))
+                    .map(|vt| vt.index as usize)
+            }),
+            weights: d.screen.rasterizer,
         })
     }
 
     pub fn mark(&self) -> PixelMark {
         PixelMark {
             pixel: self.pixel,
-            triangle: self.triangle,
+            triangle: self.triangle(),
         }
     }
 }

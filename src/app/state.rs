@@ -133,7 +133,12 @@ impl AppState {
         }
         let mut error = None;
         if !saved.scene_json.is_empty() {
-            match Scene::from_json(&saved.scene_json, "saved scene") {
+            // Model scenes name their OBJ relative to the scene file's folder.
+            let name = saved.scene_dir.as_ref().map_or_else(
+                || "saved scene".to_string(),
+                |d| d.join("saved scene").display().to_string(),
+            );
+            match Scene::from_json(&saved.scene_json, &name) {
                 Ok(scene) => {
                     state.scene = scene;
                     state.scene_dir = saved.scene_dir;
