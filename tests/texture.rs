@@ -138,3 +138,26 @@ fn trilinear_blends_two_levels_by_the_fraction_of_lambda() {
     let c = s.sample_lod(uv, Filter::Trilinear, Wrap::Repeat, 0.25);
     assert_eq!(rgb(c), [223, 32, 32]);
 }
+
+proptest::proptest! {
+    /// The renderer's direct lookup equals summing the taps the probe shows, bit for bit.
+    #[test]
+    fn direct_sampling_equals_the_listed_taps(
+        u in -3.0f32..3.0, v in -3.0f32..3.0, lambda in -2.0f32..12.0,
+        filter in 0usize..3, wrap in 0usize..3, which in 0usize..3,
+    ) {
+        let tex = [BuiltinTexture::Rgbw2x2, BuiltinTexture::Checker, BuiltinTexture::UvGrid][which];
+        let t = Texture::builtin(tex);
+        let filter = [Filter::Nearest, Filter::Bilinear, Filter::Trilinear][filter];
+        let wrap = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat][wrap];
+        let uv = Vec2::new(u, v);
+        let mut sum = [0.0f32; 4];
+        for tap in &t.taps_lod(uv, filter, wrap, lambda) {
+            let c = t.texel_at(tap.level, tap.i, tap.j);
+            for k in 0..4 {
+                sum[k] += tap.weight * f32::from(c[k]) / 255.0;
+            }
+        }
+        proptest::prop_assert_eq!(t.sample_lod(uv, filter, wrap, lambda), sum);
+    }
+}

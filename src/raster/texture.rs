@@ -224,6 +224,10 @@ impl<'a> IntoIterator for &'a Taps {
 /// ```
 pub fn wrap_coord(i: i64, size: u32, wrap: Wrap) -> u32 {
     let s = i64::from(size);
+    // Inside the texture every mode is the identity (the common case; no division).
+    if (0..s).contains(&i) {
+        return i as u32;
+    }
     let r = match wrap {
         Wrap::Repeat => i.rem_euclid(s),
         Wrap::ClampToEdge => i.clamp(0, s - 1),
@@ -236,6 +240,13 @@ pub fn wrap_coord(i: i64, size: u32, wrap: Wrap) -> u32 {
     r as u32
 }
 
+/// `out += weight * texel / 255`, channel by channel.
+fn add_texel(out: &mut [f32; 4], texel: [u8; 4], weight: f32) {
+    for (o, c) in out.iter_mut().zip(texel) {
+        *o += weight * f32::from(c) / 255.0;
+    }
+}
+
 /// Largest |texel coordinate| used for wrapping: far beyond any texture size, keeps the
 /// `f32 -> i64` conversion of huge or infinite uv well defined.
 const MAX_TEXEL_COORD: f32 = 1e9;
@@ -244,7 +255,15 @@ fn texel_floor(x: f32) -> i64 {
     if x.is_nan() {
         return 0;
     }
-    x.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD).floor() as i64
+    fast_floor(x.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD)) as i64
+}
+
+/// `floor(x)` for |x| <= 2^30 without a libm call: truncate towards zero, then step down
+/// for negative non-integers. (The baseline x86-64 target has no rounding instruction, and
+/// `f32::floor` becomes a function call in the per-pixel path.)
+fn fast_floor(x: f32) -> f32 {
+    let t = x as i32 as f32;
+    if t > x { t - 1.0 } else { t }
 }
 
 impl Texture {
@@ -452,13 +471,7 @@ impl Texture {
                 }
             }
             Filter::Bilinear | Filter::Trilinear => {
-                let (x, y) = (su - 0.5, sv - 0.5);
-                let (i0, j0) = (texel_floor(x), texel_floor(y));
-                let a = if x.is_finite() { x - x.floor() } else { 0.0 };
-                let b = if y.is_finite() { y - y.floor() } else { 0.0 };
-                let (a, b) = (a.clamp(0.0, 1.0), b.clamp(0.0, 1.0));
-                let (ia, ib) = (wrap_coord(i0, w, wrap), wrap_coord(i0 + 1, w, wrap));
-                let (ja, jb) = (wrap_coord(j0, h, wrap), wrap_coord(j0 + 1, h, wrap));
+                let ([ia, ib], [ja, jb], a, b) = self.bilinear_coords(uv, wrap, level);
                 let tap = |i, j, weight| Tap {
                     level,
                     i,
@@ -484,15 +497,83 @@ impl Texture {
     }
 
     /// Samples at level of detail `lambda` (used by trilinear filtering only).
+    ///
+    /// This is the renderer's path: it reads the same texels with the same weights, in the
+    /// same order, as [`Texture::taps_lod`] lists them (so the result is bit-identical to
+    /// summing the taps), without building the list.
     pub fn sample_lod(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> [f32; 4] {
         let mut out = [0.0f32; 4];
-        for tap in &self.taps_lod(uv, filter, wrap, lambda) {
-            let t = self.texel_at(tap.level, tap.i, tap.j);
-            for (o, c) in out.iter_mut().zip(t) {
-                *o += tap.weight * f32::from(c) / 255.0;
+        match filter {
+            Filter::Nearest => {
+                let (w, h) = (self.width, self.height);
+                let i = wrap_coord(texel_floor(uv.x * w as f32), w, wrap);
+                let j = wrap_coord(texel_floor(uv.y * h as f32), h, wrap);
+                add_texel(&mut out, self.texel(i, j), 1.0);
+            }
+            Filter::Bilinear => self.add_bilinear(&mut out, uv, wrap, 0, None),
+            Filter::Trilinear => {
+                let last = self.levels() - 1;
+                let lambda = if lambda.is_finite() { lambda } else { 0.0 };
+                if lambda <= 0.0 || last == 0 {
+                    self.add_bilinear(&mut out, uv, wrap, 0, None);
+                } else {
+                    let lambda = lambda.min(last as f32);
+                    let d = lambda.floor() as u32;
+                    let f = lambda - d as f32;
+                    if f == 0.0 || d >= last {
+                        self.add_bilinear(&mut out, uv, wrap, d, None);
+                    } else {
+                        self.add_bilinear(&mut out, uv, wrap, d, Some(1.0 - f));
+                        self.add_bilinear(&mut out, uv, wrap, d + 1, Some(f));
+                    }
+                }
             }
         }
         out
+    }
+
+    /// Texel columns (i0, i0 + 1), rows (j0, j0 + 1), both wrapped, and the fractions (a, b)
+    /// of bilinear filtering in one mipmap level.
+    fn bilinear_coords(&self, uv: Vec2, wrap: Wrap, level: u32) -> ([u32; 2], [u32; 2], f32, f32) {
+        let (w, h) = self.level_size(level);
+        let (x, y) = (uv.x * w as f32 - 0.5, uv.y * h as f32 - 0.5);
+        let (i0, j0) = (texel_floor(x), texel_floor(y));
+        // `texel_floor` clamped the coordinate; the fraction is taken from the same value.
+        let frac = |v: f32| {
+            if v.is_finite() {
+                (v - fast_floor(v.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD))).clamp(0.0, 1.0)
+            } else {
+                0.0
+            }
+        };
+        (
+            [wrap_coord(i0, w, wrap), wrap_coord(i0 + 1, w, wrap)],
+            [wrap_coord(j0, h, wrap), wrap_coord(j0 + 1, h, wrap)],
+            frac(x),
+            frac(y),
+        )
+    }
+
+    /// Adds the bilinear lookup in one level to `out`, its weights multiplied by `scale`
+    /// (the trilinear blend) when given.
+    fn add_bilinear(
+        &self,
+        out: &mut [f32; 4],
+        uv: Vec2,
+        wrap: Wrap,
+        level: u32,
+        scale: Option<f32>,
+    ) {
+        let ([ia, ib], [ja, jb], a, b) = self.bilinear_coords(uv, wrap, level);
+        let weights = [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b];
+        let texels = [(ia, ja), (ib, ja), (ia, jb), (ib, jb)];
+        for (wt, (i, j)) in weights.into_iter().zip(texels) {
+            let wt = match scale {
+                Some(s) => wt * s,
+                None => wt,
+            };
+            add_texel(out, self.texel_at(level, i, j), wt);
+        }
     }
 
     /// A built-in procedural texture.
