@@ -50,6 +50,9 @@ pub mod text {
     pub const RESET_ALL: &str = "Reset everything";
     pub const TEXT_SIZE: &str = "Text size";
     pub const NO_TILT_CLIP: &str = "Clip-space scenes have no camera.";
+    pub const MODEL_CAMERA_HINT: &str =
+        "Drag: orbit · Shift+drag or right drag: pan · scroll: zoom";
+    pub const RESET_VIEW: &str = "Reset view";
 
     pub fn preset(p: super::Preset) -> &'static str {
         use super::Preset::*;
@@ -104,6 +107,7 @@ pub mod tips {
     pub const RESET_SCENE: &str = "Back to the built-in floor scene; view settings stay.";
     pub const RESET_ALL: &str = "Back to the default scene and all default settings.";
     pub const TEXT_SIZE: &str = "Zoom the whole interface, for a projector. Keys: Ctrl + / Ctrl -";
+    pub const RESET_VIEW: &str = "Back to the camera that frames the whole model. Key: Home";
     pub const WIPE_LINE: &str = "Drag to move the wipe line.";
 }
 
@@ -324,6 +328,10 @@ fn checkbox(
 }
 
 fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
+    if let Scene::Model(_) = scene {
+        model_camera_ui(ui, scene, out);
+        return;
+    }
     let Scene::World(s) = scene else {
         ui.label(text::NO_TILT_CLIP);
         return;
@@ -363,6 +371,30 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
             .changed()
     {
         out.push(Command::SetFov(fov));
+    }
+}
+
+/// Model scenes: how to move the camera, the field of view, reset.
+fn model_camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
+    ui.label(RichText::new(text::MODEL_CAMERA_HINT).weak());
+    if let Some(mut fov) = edit::fov_deg(scene)
+        && ui
+            .add(
+                Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
+                    .suffix("°")
+                    .text(text::FOV),
+            )
+            .on_hover_text(tips::FOV)
+            .changed()
+    {
+        out.push(Command::SetFov(fov));
+    }
+    if ui
+        .button(text::RESET_VIEW)
+        .on_hover_text(tips::RESET_VIEW)
+        .clicked()
+    {
+        out.push(Command::ResetCamera);
     }
 }
 
