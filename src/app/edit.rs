@@ -311,8 +311,12 @@ fn change_model_camera(scene: &mut Scene, change: impl FnOnce(&mut Camera, f64))
     let d = cam.eye.distance(centre);
     let (near, far) = ((d - 2.0 * radius).max(d / 1000.0), d + 2.0 * radius);
     match &mut cam.projection {
-        Projection::Perspective { near: n, far: f, .. } => (*n, *f) = (near, far),
-        Projection::Orthographic { near: n, far: f, .. } => (*n, *f) = (near, far),
+        Projection::Perspective {
+            near: n, far: f, ..
+        } => (*n, *f) = (near, far),
+        Projection::Orthographic {
+            near: n, far: f, ..
+        } => (*n, *f) = (near, far),
     }
     if cam.validate().is_ok() {
         s.camera = Some(cam);
@@ -383,8 +387,10 @@ pub fn zoom_camera(scene: &mut Scene, factor: f64) {
             return;
         }
         let offset = cam.eye - cam.target;
-        let d = (offset.length() * factor)
-            .clamp(ZOOM_DISTANCE_RANGE.0 * radius, ZOOM_DISTANCE_RANGE.1 * radius);
+        let d = (offset.length() * factor).clamp(
+            ZOOM_DISTANCE_RANGE.0 * radius,
+            ZOOM_DISTANCE_RANGE.1 * radius,
+        );
         cam.eye = cam.target + offset.normalize_or(DVec3::Z) * d;
     });
 }

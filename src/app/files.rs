@@ -95,9 +95,18 @@ impl OpenedFile {
 pub fn open(path: &Path, current: &Scene) -> Result<OpenedFile, String> {
     // Absolute, so the scene saved between runs still finds its model and texture.
     let path = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let shown = path.display().to_string();
+    // A model's texture error names the texture; say which file was being opened too.
+    let named = |e: String| {
+        if e.contains(&shown) {
+            e
+        } else {
+            format!("{shown}: {e}")
+        }
+    };
     match InputKind::of(&path) {
         Some(InputKind::Image) => {
-            let (texture, note) = Texture::load_noted(&path).map_err(|e| e.to_string())?;
+            let (texture, note) = Texture::load_noted(&path).map_err(|e| named(e.to_string()))?;
             let mut notes: Vec<String> = note.into_iter().collect();
             if let Scene::Model(m) = current
                 && !m.mesh.has_uv
@@ -105,19 +114,17 @@ pub fn open(path: &Path, current: &Scene) -> Result<OpenedFile, String> {
                 notes.push(text::NO_UV_TEXTURE.to_string());
             }
             Ok(OpenedFile {
-                what: Opened::Texture {
-                    path: path.display().to_string(),
-                },
+                what: Opened::Texture { path: shown },
                 path,
                 texture: Arc::new(texture),
                 notes,
             })
         }
         _ => {
-            let (scene, dir) = open_input(&path).map_err(|e| e.to_string())?;
+            let (scene, dir) = open_input(&path).map_err(|e| named(e.to_string()))?;
             let (texture, texture_notes) = scene
                 .load_texture_noted(&dir)
-                .map_err(|e| e.to_string())?;
+                .map_err(|e| named(e.to_string()))?;
             let mut notes = scene.notes();
             notes.extend(texture_notes);
             Ok(OpenedFile {
@@ -362,9 +369,15 @@ pub fn banner_ui(ui: &mut Ui, banner: &mut Option<Banner>) {
         return;
     };
     let (fill, stroke) = if b.error {
-        (Color32::from_rgb(90, 25, 25), Color32::from_rgb(255, 120, 120))
+        (
+            Color32::from_rgb(90, 25, 25),
+            Color32::from_rgb(255, 120, 120),
+        )
     } else {
-        (Color32::from_rgb(25, 60, 35), Color32::from_rgb(120, 220, 140))
+        (
+            Color32::from_rgb(25, 60, 35),
+            Color32::from_rgb(120, 220, 140),
+        )
     };
     let mut dismiss = false;
     egui::Frame::new()

@@ -35,10 +35,7 @@ pub mod text {
             "a .json scene or an .obj model opens; an image becomes the texture",
         ),
         ("Drag on a model", "orbit the camera around it"),
-        (
-            "Shift + drag or right drag on a model",
-            "pan the camera",
-        ),
+        ("Shift + drag or right drag on a model", "pan the camera"),
         ("Scroll on a model", "zoom in / out"),
     ];
     pub const KEY_ROWS: &[(&str, &str)] = &[

@@ -161,10 +161,17 @@ pub enum Command {
     /// the texture where the mesh has uvs.
     SetTexture(String),
     /// Model scenes: turn the camera about its target (drag), in degrees.
-    OrbitCamera { yaw_deg: f64, pitch_deg: f64 },
+    OrbitCamera {
+        yaw_deg: f64,
+        pitch_deg: f64,
+    },
     /// Model scenes: move camera and target parallel to the screen by this many rendered
     /// pixels (right, down), so the model follows the pointer.
-    PanCamera { dx: f64, dy: f64, viewport: Viewport },
+    PanCamera {
+        dx: f64,
+        dy: f64,
+        viewport: Viewport,
+    },
     /// Model scenes: multiply the distance to the target (scroll).
     ZoomCamera(f64),
     /// Model scenes: back to the camera that frames the model.
