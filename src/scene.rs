@@ -588,6 +588,16 @@ impl Scene {
         }
     }
 
+    /// The mesh vertex indices of source triangle `i` (as in [`Scene::to_mesh`]), without
+    /// building the mesh.
+    pub fn triangle(&self, i: usize) -> Option<[u32; 3]> {
+        match self {
+            Scene::World(_) => [[0, 1, 2], [0, 2, 3]].get(i).copied(),
+            Scene::Clip(s) => s.triangles.get(i).copied(),
+            Scene::Model(s) => s.mesh.triangles.get(i).copied(),
+        }
+    }
+
     /// The mesh the rasterizer draws: vertices in clip space.
     pub fn to_mesh(&self) -> ClipMesh {
         match self {

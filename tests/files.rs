@@ -233,7 +233,7 @@ fn a_path_typed_in_the_file_menu_opens_and_joins_the_recent_list() {
         panic!("not a model scene: {}", banner(&h));
     };
     assert_eq!(m.mesh.triangles.len(), 1024);
-    assert_eq!(h.state().recent_files(), [torus.clone()]);
+    assert_eq!(h.state().recent_files(), std::slice::from_ref(&torus));
 
     // Recent files: newest first, once each, and a missing one is shown disabled.
     let dir = tempfile::tempdir().expect("temp dir");

@@ -162,7 +162,13 @@ pub struct Banner {
     /// Notes (downscaled image, no uvs, missing MTL ...), one line each.
     pub notes: Vec<String>,
     pub error: bool,
+    /// When it appeared (a plain success hides itself after [`BANNER_HIDE_AFTER`]).
+    pub shown: Instant,
 }
+
+/// A success without notes leaves the canvas area after this; errors and notes stay until
+/// dismissed.
+pub const BANNER_HIDE_AFTER: Duration = Duration::from_secs(6);
 
 impl Banner {
     /// The banner for a file that opened.
@@ -175,6 +181,7 @@ impl Banner {
             text,
             notes: file.notes.clone(),
             error: false,
+            shown: Instant::now(),
         }
     }
 
@@ -184,6 +191,7 @@ impl Banner {
             text: format!("{error} — {}", text::NOT_OPENED),
             notes: Vec::new(),
             error: true,
+            shown: Instant::now(),
         }
     }
 
@@ -205,6 +213,8 @@ pub struct FilePicker {
     pub dialog_failed: bool,
     /// The text of the path field.
     pub typed: String,
+    /// Give the path field the keyboard focus (the window just opened).
+    focus_field: bool,
 }
 
 impl FilePicker {
@@ -232,11 +242,15 @@ impl FilePicker {
             });
         match spawned {
             Ok(_) => self.dialog = Some((rx, Instant::now())),
-            Err(_) => {
-                self.dialog_failed = true;
-                self.path_window = true;
-            }
+            Err(_) => self.show_path_window(true),
         }
+    }
+
+    /// Opens the typed-path window; `dialog_failed` says why it is offered.
+    pub fn show_path_window(&mut self, dialog_failed: bool) {
+        self.dialog_failed = dialog_failed;
+        self.path_window = true;
+        self.focus_field = true;
     }
 
     /// Whether the native dialog is open.
@@ -255,8 +269,7 @@ impl FilePicker {
             }
             Ok(None) | Err(TryRecvError::Disconnected) => {
                 if started.elapsed() < DIALOG_FAILED_WITHIN {
-                    self.dialog_failed = true;
-                    self.path_window = true;
+                    self.show_path_window(true);
                 }
                 self.dialog = None;
                 None
@@ -286,8 +299,7 @@ pub fn file_menu_ui(
             .on_hover_text(text::TYPE_PATH_TIP)
             .clicked()
         {
-            picker.dialog_failed = false;
-            picker.path_window = true;
+            picker.show_path_window(false);
             ui.close();
         }
         ui.separator();
@@ -334,6 +346,7 @@ pub fn path_window_ui(ctx: &egui::Context, picker: &mut FilePicker, open: &mut V
         .open(&mut window_open)
         .collapsible(false)
         .default_width(560.0)
+        .anchor(egui::Align2::CENTER_TOP, [0.0, 100.0])
         .show(ctx, |ui| {
             if picker.dialog_failed {
                 ui.label(RichText::new(text::DIALOG_FAILED).color(Color32::from_rgb(255, 200, 90)));
@@ -343,6 +356,9 @@ pub fn path_window_ui(ctx: &egui::Context, picker: &mut FilePicker, open: &mut V
                     .hint_text(text::PATH_HINT)
                     .desired_width(f32::INFINITY),
             );
+            if std::mem::take(&mut picker.focus_field) {
+                field.request_focus();
+            }
             if field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                 submit = true;
             }
@@ -363,11 +379,27 @@ pub fn path_window_ui(ctx: &egui::Context, picker: &mut FilePicker, open: &mut V
     picker.path_window = window_open;
 }
 
+/// Hides a plain success banner once it is [`BANNER_HIDE_AFTER`] old.
+pub fn expire_banner(ctx: &egui::Context, banner: &mut Option<Banner>) {
+    if let Some(b) = banner
+        && !b.error
+        && b.notes.is_empty()
+    {
+        let age = b.shown.elapsed();
+        if age >= BANNER_HIDE_AFTER {
+            *banner = None;
+        } else {
+            ctx.request_repaint_after(BANNER_HIDE_AFTER - age);
+        }
+    }
+}
+
 /// The banner under the top bar (nothing when there is none).
 pub fn banner_ui(ui: &mut Ui, banner: &mut Option<Banner>) {
     let Some(b) = banner else {
         return;
     };
+
     let (fill, stroke) = if b.error {
         (
             Color32::from_rgb(90, 25, 25),
@@ -386,19 +418,23 @@ pub fn banner_ui(ui: &mut Ui, banner: &mut Option<Banner>) {
         .inner_margin(egui::Margin::symmetric(10, 6))
         .corner_radius(4.0)
         .show(ui, |ui| {
-            ui.horizontal(|ui| {
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
+                if ui.button(text::DISMISS).clicked() {
+                    dismiss = true;
+                }
                 ui.vertical(|ui| {
-                    ui.label(RichText::new(&b.text).color(Color32::WHITE).strong());
+                    ui.add(
+                        egui::Label::new(RichText::new(&b.text).color(Color32::WHITE).strong())
+                            .wrap(),
+                    );
                     for n in &b.notes {
-                        ui.label(
-                            RichText::new(format!("{}: {n}", text::NOTE))
-                                .color(Color32::from_rgb(255, 215, 120)),
+                        ui.add(
+                            egui::Label::new(
+                                RichText::new(format!("{}: {n}", text::NOTE))
+                                    .color(Color32::from_rgb(255, 215, 120)),
+                            )
+                            .wrap(),
                         );
-                    }
-                });
-                ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
-                    if ui.button(text::DISMISS).clicked() {
-                        dismiss = true;
                     }
                 });
             });

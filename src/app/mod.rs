@@ -477,6 +477,7 @@ impl BaryApp {
 
         let hover_before = self.canvas.hover;
         egui::Panel::top("top").show(ui, |ui| self.top_bar_ui(ui));
+        files::expire_banner(&ctx, &mut self.banner);
         if self.banner.is_some() {
             egui::Panel::top("banner").show(ui, |ui| files::banner_ui(ui, &mut self.banner));
         }

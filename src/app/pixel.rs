@@ -33,7 +33,6 @@ impl PixelReport {
         let i = f.index(pixel[0], pixel[1]);
         let tri = f.triangle[i];
         let covered = tri != NO_TRIANGLE;
-        let mesh = output.scene.to_mesh();
         let triangle = covered
             .then(|| {
                 let prepared = render.triangles.get(tri as usize)?;
@@ -41,7 +40,8 @@ impl PixelReport {
                 if prepared.setups.len() != 1 || !prepared.polygon?.unclipped() {
                     return None;
                 }
-                let m = mesh.triangles.get(tri as usize)?;
+                // Not `to_mesh()`: a model may have many thousand vertices.
+                let m = output.scene.triangle(tri as usize)?;
                 let ws = f.weights_screen[i];
                 Some(TriangleMark {
                     vertices: setup.v.map(|v| DVec2::new(v.window.x, v.window.y)),
