@@ -478,4 +478,78 @@ mod tests {
         let err = move_vertex_to(&mut scene, behind, DVec2::new(1.0, 1.0), vp());
         assert_eq!(err, Err(EditError::BehindCamera(behind)));
     }
+
+    fn torus() -> Scene {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/models/torus.obj");
+        Scene::Model(crate::scene::ModelScene::for_model(&path, 800, 600).expect("torus"))
+    }
+
+    fn camera(scene: &Scene) -> Camera {
+        match scene {
+            Scene::Model(s) => s.camera(),
+            _ => unreachable!(),
+        }
+    }
+
+    #[test]
+    fn orbiting_keeps_the_distance_and_stops_short_of_the_pole() {
+        let mut scene = torus();
+        let before = camera(&scene);
+        let d = before.eye.distance(before.target);
+        orbit_camera(&mut scene, 30.0, 500.0);
+        let c = camera(&scene);
+        assert!((c.eye.distance(c.target) - d).abs() < 1e-9 * d);
+        let elevation = ((c.eye - c.target).normalize().dot(DVec3::Y))
+            .asin()
+            .to_degrees();
+        assert!(
+            (elevation - MAX_ORBIT_ELEVATION_DEG).abs() < 1e-9,
+            "{elevation}"
+        );
+        // Near and far still enclose the whole model.
+        let (centre, r) = match &scene {
+            Scene::Model(s) => s.mesh.bounding_sphere(),
+            _ => unreachable!(),
+        };
+        let Projection::Perspective { near, far, .. } = c.projection else {
+            panic!("perspective")
+        };
+        let dc = c.eye.distance(centre);
+        assert!(near <= dc - r && far >= dc + r, "{near} {far} {dc} {r}");
+    }
+
+    #[test]
+    fn panning_moves_the_target_point_by_the_given_pixels() {
+        let mut scene = torus();
+        let before = camera(&scene);
+        pan_camera(&mut scene, DVec2::new(40.0, -25.0), vp());
+        let after = camera(&scene);
+        let clip = after.clip_from_world(vp().aspect()) * before.target.extend(1.0);
+        let window = window_from_ndc(ndc_from_clip(clip), vp()).truncate();
+        let expected = DVec2::new(400.0 + 40.0, 300.0 - 25.0);
+        assert!(
+            (window - expected).length() < 1e-6,
+            "{window} vs {expected}"
+        );
+    }
+
+    #[test]
+    fn zooming_scales_the_distance_within_its_limits() {
+        let mut scene = torus();
+        let before = camera(&scene);
+        let d = before.eye.distance(before.target);
+        zoom_camera(&mut scene, 0.8);
+        let c = camera(&scene);
+        assert!((c.eye.distance(c.target) - 0.8 * d).abs() < 1e-9 * d);
+        for _ in 0..100 {
+            zoom_camera(&mut scene, 0.5);
+        }
+        let c = camera(&scene);
+        let r = match &scene {
+            Scene::Model(s) => s.mesh.bounding_sphere().1,
+            _ => unreachable!(),
+        };
+        assert!((c.eye.distance(c.target) - ZOOM_DISTANCE_RANGE.0 * r).abs() < 1e-9 * r);
+        assert!(c.validate().is_ok());
+    }
 }
