@@ -31,6 +31,7 @@ pub mod text {
     pub const FILTER: &str = "Filter";
     pub const NEAREST: &str = "Nearest";
     pub const BILINEAR: &str = "Bilinear";
+    pub const TRILINEAR: &str = "Trilinear";
     pub const WIREFRAME: &str = "Wireframe (edges + diagonal)";
     pub const PIXELS: &str = "Pixels";
     pub const PIXEL_SIZE: &str = "Pixel size";
@@ -87,6 +88,9 @@ pub mod tips {
         "Window depth z/w as grey (near black, far white): it is linear on screen.";
     pub const NEAREST: &str = "GL_NEAREST: the texel containing the sample.";
     pub const BILINEAR: &str = "GL_LINEAR: the four texels around the sample, weighted.";
+    pub const TRILINEAR: &str = "GL_LINEAR_MIPMAP_LINEAR: bilinear in the two mipmap levels \
+        around the level of detail (from the uv change across the 2x2 pixel quad), blended. \
+        Compare with bilinear on a far-away checkerboard: the moiré goes away.";
     pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
         thresholding the smallest weight. Key: W";
     pub const PIXEL_SIZE: &str = "Render at a lower resolution and magnify, so each rendered pixel \
@@ -193,6 +197,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
         for (f, label, tip) in [
             (Filter::Nearest, text::NEAREST, tips::NEAREST),
             (Filter::Bilinear, text::BILINEAR, tips::BILINEAR),
+            (Filter::Trilinear, text::TRILINEAR, tips::TRILINEAR),
         ] {
             if ui
                 .selectable_label(options.filter == f, label)
