@@ -251,6 +251,8 @@ impl FilePicker {
         self.dialog_failed = dialog_failed;
         self.path_window = true;
         self.focus_field = true;
+        // Start empty: typing must not append to the last path.
+        self.typed.clear();
     }
 
     /// Whether the native dialog is open.
