@@ -14,6 +14,10 @@ const EXAMPLES: &str = "\
 Examples:
   barylab                                   open the app (last state, or the built-in default scene)
   barylab assets/scenes/front.json          open the app on a scene file
+  barylab assets/models/torus.obj           open the app on a model (drag to orbit)
+  barylab photo.jpg                         open the app with a photo as the texture
+  barylab render photo.jpg -o out.png       the photo on the default quad
+  barylab render assets/models/torus.obj -o out.png
   barylab --screenshot shot.png             open the app, save a screenshot, exit
   barylab render assets/scenes/default.json -o out.png
   barylab render assets/scenes/default.json --mode affine --size 400x300 -o affine.png
@@ -27,7 +31,8 @@ Examples:
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
-    /// Scene file to open in the app (default: the scene saved last time, or the built-in one).
+    /// Scene file (.json), OBJ model or image to open in the app (default: the scene saved last
+    /// time, or the built-in one). An image becomes the texture of the scene.
     scene: Option<PathBuf>,
     /// Open the app, save a screenshot of the first rendered frame to this PNG, and exit.
     #[arg(long, value_name = "FILE")]
@@ -307,12 +312,20 @@ fn parse_window_size(s: &str) -> Result<(u32, u32), String> {
 
 /// Opens the app.
 fn app(cli: &Cli) -> Result<()> {
-    let scene = match &cli.scene {
-        Some(path) => Some(barylab::app::load_scene(path).map_err(anyhow::Error::msg)?),
+    let opened = match &cli.scene {
+        Some(path) => {
+            let opened = barylab::app::files::open(path, &Scene::default_scene())
+                .map_err(anyhow::Error::msg)?;
+            for note in &opened.notes {
+                eprintln!("note: {note}");
+            }
+            Some(opened)
+        }
         None => None,
     };
     let options = barylab::app::AppOptions {
-        scene,
+        opened,
+        scene: None,
         screenshot: cli.screenshot.clone(),
         // A screenshot run is reproducible: it neither reads nor writes saved state.
         persist: !cli.fresh && cli.screenshot.is_none(),
@@ -320,11 +333,6 @@ fn app(cli: &Cli) -> Result<()> {
     };
     barylab::app::run(options)?;
     Ok(())
-}
-
-/// The folder relative texture paths of a scene file are resolved against.
-fn scene_dir(path: &Path) -> PathBuf {
-    path.parent().map(Path::to_path_buf).unwrap_or_default()
 }
 
 /// Prints one note per reason for triangles that were not drawn, naming the first few.
@@ -450,34 +458,10 @@ fn bench(args: &BenchArgs) -> Result<()> {
     Ok(())
 }
 
-/// Image file extensions accepted in place of a scene.
-const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
-
-/// Loads what the user named: a scene file, an OBJ model (framed by a default camera), or an
-/// image (on the default quad). Returns the scene and the folder its relative paths use.
+/// Loads what the user named: a scene file, an OBJ model or an image
+/// ([`barylab::scene::open_input`], shared with the app).
 pub fn load_input(path: &Path) -> Result<(Scene, PathBuf)> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .unwrap_or_default();
-    if ext == "obj" {
-        let (w, h) = Scene::default_scene().size();
-        let model = barylab::scene::ModelScene::for_model(path, w, h)?;
-        // The model path is used as given, so relative paths resolve from here.
-        return Ok((Scene::Model(model), PathBuf::new()));
-    }
-    if IMAGE_EXTENSIONS.contains(&ext.as_str()) {
-        return Ok((Scene::for_image(path), PathBuf::new()));
-    }
-    if ext != "json" {
-        bail!(
-            "{}: unknown kind of file (expected a .json scene, an .obj model, or an image: {})",
-            path.display(),
-            IMAGE_EXTENSIONS.join(", ")
-        );
-    }
-    Ok((Scene::load(path)?, scene_dir(path)))
+    Ok(barylab::scene::open_input(path)?)
 }
 
 fn render(args: &RenderArgs) -> Result<()> {

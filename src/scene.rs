@@ -40,6 +40,71 @@ pub enum SceneError {
     Texture(#[from] TextureError),
     #[error(transparent)]
     Model(#[from] ModelError),
+    #[error(
+        "{path}: unknown kind of file (expected a .json scene, an .obj model, or an image: {})",
+        IMAGE_EXTENSIONS.join(", ")
+    )]
+    UnknownKind { path: String },
+}
+
+/// Image file extensions accepted in place of a scene (lower case).
+pub const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
+
+/// What a file given in place of a scene is, by its extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum InputKind {
+    /// A JSON scene file.
+    Scene,
+    /// An OBJ model.
+    Model,
+    /// An image (PNG, JPEG, BMP, TGA, WebP).
+    Image,
+}
+
+impl InputKind {
+    /// The kind of `path` by its extension (case-insensitive), or `None` if unknown.
+    ///
+    /// ```
+    /// use barylab::scene::InputKind;
+    /// use std::path::Path;
+    /// assert_eq!(InputKind::of(Path::new("a/Photo.JPG")), Some(InputKind::Image));
+    /// assert_eq!(InputKind::of(Path::new("torus.obj")), Some(InputKind::Model));
+    /// assert_eq!(InputKind::of(Path::new("notes.txt")), None);
+    /// ```
+    pub fn of(path: &Path) -> Option<Self> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)?;
+        match ext.as_str() {
+            "json" => Some(Self::Scene),
+            "obj" => Some(Self::Model),
+            e if IMAGE_EXTENSIONS.contains(&e) => Some(Self::Image),
+            _ => None,
+        }
+    }
+}
+
+/// Loads what the user named in place of a scene: a scene file, an OBJ model (framed by a
+/// default camera), or an image (on the default quad). Returns the scene and the folder its
+/// relative paths are resolved against. The CLI and the app both open files through this.
+pub fn open_input(path: &Path) -> Result<(Scene, PathBuf), SceneError> {
+    match InputKind::of(path) {
+        Some(InputKind::Model) => {
+            let (w, h) = Scene::default_scene().size();
+            let model = ModelScene::for_model(path, w, h)?;
+            // The model path is used as given, so relative paths resolve from here.
+            Ok((Scene::Model(model), PathBuf::new()))
+        }
+        Some(InputKind::Image) => Ok((Scene::for_image(path), PathBuf::new())),
+        Some(InputKind::Scene) => Ok((
+            Scene::load(path)?,
+            path.parent().map(Path::to_path_buf).unwrap_or_default(),
+        )),
+        None => Err(SceneError::UnknownKind {
+            path: path.display().to_string(),
+        }),
+    }
 }
 
 /// Corner of the quad in the world form.
@@ -521,6 +586,16 @@ impl Scene {
                     * DMat4::from_translation(-centre)
             }
             Scene::Clip(_) | Scene::Model(_) => DMat4::IDENTITY,
+        }
+    }
+
+    /// The mesh vertex indices of source triangle `i` (as in [`Scene::to_mesh`]), without
+    /// building the mesh.
+    pub fn triangle(&self, i: usize) -> Option<[u32; 3]> {
+        match self {
+            Scene::World(_) => [[0, 1, 2], [0, 2, 3]].get(i).copied(),
+            Scene::Clip(s) => s.triangles.get(i).copied(),
+            Scene::Model(s) => s.mesh.triangles.get(i).copied(),
         }
     }
 

@@ -128,6 +128,17 @@ fn the_window_opens_renders_and_saves_a_screenshot() {
                 "/assets/scenes/front.json"
             )],
         ),
+        (
+            "torus.png",
+            vec![concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/assets/models/torus.obj"
+            )],
+        ),
+        (
+            "photo.png",
+            vec![concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rgbw.png")],
+        ),
     ] {
         let shot = dir.path().join(name);
         let shot_s = shot.to_str().expect("utf-8 path");
@@ -180,4 +191,29 @@ fn a_bad_scene_file_is_reported_in_one_line_without_opening_a_window() {
         err.starts_with("error: ") && err.contains("bad.json"),
         "{err}"
     );
+}
+
+#[test]
+fn bad_models_and_images_are_reported_in_one_line_without_opening_a_window() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+    for (file, needle) in [
+        ("garbage.obj", "not a readable text OBJ"),
+        ("missing_texture.obj", "nothere.png"),
+        ("broken_image.png", "cannot decode texture"),
+        ("empty.png", "is empty"),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_barylab"))
+            .arg(format!("{data}{file}"))
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY")
+            .output()
+            .expect("run barylab");
+        assert!(!out.status.success(), "{file}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(
+            err.starts_with("error: ") && err.contains(file) && err.contains(needle),
+            "{err}"
+        );
+    }
 }

@@ -148,3 +148,23 @@ fn texture_file_is_loaded_relative_to_the_scene_and_flipped_so_v0_is_the_bottom(
     assert_eq!(tex.texel(0, 0), [255, 0, 0, 255]);
     assert_eq!(tex.texel(0, 1), [0, 0, 255, 255]);
 }
+
+#[test]
+fn triangle_indices_match_the_mesh_without_building_it() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut scenes: Vec<Scene> = std::fs::read_dir(dir.join("assets/scenes"))
+        .expect("scenes")
+        .map(|e| Scene::load(&e.expect("entry").path()).expect("scene"))
+        .collect();
+    scenes.push(
+        barylab::scene::open_input(&dir.join("assets/models/torus.obj"))
+            .expect("torus")
+            .0,
+    );
+    for s in scenes {
+        let mesh = s.to_mesh();
+        for i in 0..=mesh.triangles.len() {
+            assert_eq!(s.triangle(i), mesh.triangles.get(i).copied());
+        }
+    }
+}

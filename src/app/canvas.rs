@@ -36,6 +36,10 @@ const WIPE_GRAB: f32 = 10.0;
 const PUSH_PER_POINT: f64 = 0.007;
 /// w factor per point of scrolling.
 const PUSH_PER_SCROLL_POINT: f64 = 0.004;
+/// Model scenes: degrees the camera orbits per point dragged (a 450-point drag turns 180°).
+const ORBIT_DEG_PER_POINT: f64 = 0.4;
+/// Model scenes: the camera distance is multiplied by e^(-this) per point scrolled up.
+const ZOOM_PER_SCROLL_POINT: f64 = 0.004;
 
 /// What one view of the canvas shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -448,7 +452,16 @@ pub fn canvas_ui(
             );
         }
         let t = view.transform;
-        let view_resp = ui.interact(view.rect, base_id.with(("view", vi)), Sense::click());
+        let is_model = matches!(state.scene, Scene::Model(_));
+        let sense = if is_model {
+            Sense::click_and_drag()
+        } else {
+            Sense::click()
+        };
+        let view_resp = ui.interact(view.rect, base_id.with(("view", vi)), sense);
+        if is_model {
+            model_camera_input(ui, &view_resp, t.scale, viewport, out);
+        }
         let pointer_pixel = |p: Pos2| -> Option<[u32; 2]> {
             let c = t.to_canvas(p);
             (c.x >= 0.0 && c.y >= 0.0 && c.x < f64::from(size[0]) && c.y < f64::from(size[1]))
@@ -629,6 +642,50 @@ pub fn canvas_ui(
                 overlay::NEGATIVE,
                 Some(overlay::LABEL_BG),
             );
+        }
+    }
+}
+
+/// Model scenes: drag orbits the camera about its target, Shift+drag or a right/middle drag
+/// pans, scrolling zooms. `scale` is points per rendered pixel.
+fn model_camera_input(
+    ui: &Ui,
+    resp: &egui::Response,
+    scale: f32,
+    viewport: Viewport,
+    out: &mut Vec<Command>,
+) {
+    use egui::PointerButton as B;
+    let d = resp.drag_delta();
+    if d != egui::Vec2::ZERO {
+        let shift = ui.input(|i| i.modifiers.shift);
+        let pan = resp.dragged_by(B::Secondary)
+            || resp.dragged_by(B::Middle)
+            || (shift && resp.dragged_by(B::Primary));
+        if pan {
+            let per_point = 1.0 / f64::from(scale.max(f32::MIN_POSITIVE));
+            out.push(Command::PanCamera {
+                dx: f64::from(d.x) * per_point,
+                dy: f64::from(d.y) * per_point,
+                viewport,
+            });
+        } else if resp.dragged_by(B::Primary) {
+            // Grab-and-turn: dragging right turns the model's front to the right.
+            out.push(Command::OrbitCamera {
+                yaw_deg: -f64::from(d.x) * ORBIT_DEG_PER_POINT,
+                pitch_deg: f64::from(d.y) * ORBIT_DEG_PER_POINT,
+            });
+        }
+    }
+    if resp.dragged() {
+        ui.ctx().set_cursor_icon(CursorIcon::Grabbing);
+    }
+    if resp.hovered() {
+        let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+        if scroll != 0.0 {
+            out.push(Command::ZoomCamera(
+                (-f64::from(scroll) * ZOOM_PER_SCROLL_POINT).exp(),
+            ));
         }
     }
 }

@@ -29,6 +29,7 @@ pub mod text {
     pub const FILTER: &str = "Filter";
     pub const NEAREST: &str = "Nearest";
     pub const BILINEAR: &str = "Bilinear";
+    pub const TRILINEAR: &str = "Trilinear";
     pub const WIREFRAME: &str = "Wireframe (edges + diagonal)";
     pub const PIXELS: &str = "Pixels";
     pub const PIXEL_SIZE: &str = "Pixel size";
@@ -51,7 +52,9 @@ pub mod text {
     pub const MODEL: &str = "Model";
     pub const MODEL_VERTICES: &str = "vertices";
     pub const MODEL_TRIANGLES: &str = "triangles";
-    pub const TRILINEAR: &str = "Trilinear";
+    pub const MODEL_CAMERA_HINT: &str =
+        "Drag: orbit · Shift+drag or right drag: pan · scroll: zoom";
+    pub const RESET_VIEW: &str = "Reset view";
 
     pub fn preset(p: super::Preset) -> &'static str {
         use super::Preset::*;
@@ -86,8 +89,9 @@ pub mod tips {
         "Window depth z/w as grey (near black, far white): it is linear on screen.";
     pub const NEAREST: &str = "GL_NEAREST: the texel containing the sample.";
     pub const BILINEAR: &str = "GL_LINEAR: the four texels around the sample, weighted.";
-    pub const TRILINEAR: &str = "GL_LINEAR_MIPMAP_LINEAR: bilinear in the two mipmap levels around \
-        the level of detail (from the 2x2 pixel quad), blended.";
+    pub const TRILINEAR: &str = "GL_LINEAR_MIPMAP_LINEAR: bilinear in the two mipmap levels \
+        around the level of detail (from the uv change across the 2x2 pixel quad), blended. \
+        Compare with bilinear on a far-away checkerboard: the moiré goes away.";
     pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
         thresholding the smallest weight. Key: W";
     pub const PIXEL_SIZE: &str = "Render at a lower resolution and magnify, so each rendered pixel \
@@ -108,6 +112,7 @@ pub mod tips {
     pub const RESET_SCENE: &str = "Back to the built-in floor scene; view settings stay.";
     pub const RESET_ALL: &str = "Back to the default scene and all default settings.";
     pub const TEXT_SIZE: &str = "Zoom the whole interface, for a projector. Keys: Ctrl + / Ctrl -";
+    pub const RESET_VIEW: &str = "Back to the camera that frames the whole model. Key: Home";
     pub const WIPE_LINE: &str = "Drag to move the wipe line.";
 }
 
@@ -329,6 +334,10 @@ fn checkbox(
 }
 
 fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
+    if let Scene::Model(_) = scene {
+        model_camera_ui(ui, scene, out);
+        return;
+    }
     let Scene::World(s) = scene else {
         ui.label(text::NO_TILT_CLIP);
         return;
@@ -368,6 +377,30 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
             .changed()
     {
         out.push(Command::SetFov(fov));
+    }
+}
+
+/// Model scenes: how to move the camera, the field of view, reset.
+fn model_camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
+    ui.label(RichText::new(text::MODEL_CAMERA_HINT).weak());
+    if let Some(mut fov) = edit::fov_deg(scene)
+        && ui
+            .add(
+                Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
+                    .suffix("°")
+                    .text(text::FOV),
+            )
+            .on_hover_text(tips::FOV)
+            .changed()
+    {
+        out.push(Command::SetFov(fov));
+    }
+    if ui
+        .button(text::RESET_VIEW)
+        .on_hover_text(tips::RESET_VIEW)
+        .clicked()
+    {
+        out.push(Command::ResetCamera);
     }
 }
 

@@ -3,7 +3,7 @@
 
 use glam::{DVec2, DVec3, DVec4};
 
-use crate::raster::camera::Projection;
+use crate::raster::camera::{Camera, Projection};
 use crate::raster::project::{Viewport, ndc_from_clip, window_from_ndc};
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
@@ -276,6 +276,127 @@ pub fn set_fov_deg(scene: &mut Scene, fov: f64) {
     }
 }
 
+/// Makes an image (absolute path) or a built-in texture the scene's texture, and shades by it
+/// where there are uvs (a model without uvs keeps its colour shading).
+pub fn set_texture(scene: &mut Scene, name: String) {
+    match scene {
+        Scene::World(s) => (s.texture, s.shading) = (name, Shading::Texture),
+        Scene::Clip(s) => (s.texture, s.shading) = (name, Shading::Texture),
+        Scene::Model(s) => {
+            s.texture = Some(name);
+            if s.mesh.has_uv {
+                s.shading = Some(Shading::Texture);
+            }
+        }
+    }
+}
+
+/// Highest camera elevation above (or below) the target's horizon when orbiting, in degrees:
+/// at 90 the view direction would be parallel to the up vector and the camera's roll undefined.
+pub const MAX_ORBIT_ELEVATION_DEG: f64 = 85.0;
+
+/// Closest and farthest camera distance when zooming, in model radii: closer than this the
+/// near plane would cut away almost everything; farther the model is a dot.
+pub const ZOOM_DISTANCE_RANGE: (f64, f64) = (0.05, 200.0);
+
+/// A model scene's camera after `change`, with near and far planes fitted to the model again
+/// (`near = max(d - 2r, d / 1000)`, `far = d + 2r`, d the distance to the model's centre, r its
+/// radius, as [`crate::raster::camera::Camera::framing`] does). Other scenes are unchanged.
+fn change_model_camera(scene: &mut Scene, change: impl FnOnce(&mut Camera, f64)) {
+    let Scene::Model(s) = scene else {
+        return;
+    };
+    let (centre, radius) = s.mesh.bounding_sphere();
+    let radius = radius.max(f64::MIN_POSITIVE);
+    let mut cam = s.camera();
+    change(&mut cam, radius);
+    let d = cam.eye.distance(centre);
+    let (near, far) = ((d - 2.0 * radius).max(d / 1000.0), d + 2.0 * radius);
+    match &mut cam.projection {
+        Projection::Perspective {
+            near: n, far: f, ..
+        } => (*n, *f) = (near, far),
+        Projection::Orthographic {
+            near: n, far: f, ..
+        } => (*n, *f) = (near, far),
+    }
+    if cam.validate().is_ok() {
+        s.camera = Some(cam);
+    }
+}
+
+/// Orbits a model scene's camera about its target: `yaw_deg` about the up vector, then
+/// `pitch_deg` up (elevation), the elevation kept within ±[`MAX_ORBIT_ELEVATION_DEG`]. The
+/// distance to the target stays.
+pub fn orbit_camera(scene: &mut Scene, yaw_deg: f64, pitch_deg: f64) {
+    if !(yaw_deg.is_finite() && pitch_deg.is_finite()) {
+        return;
+    }
+    change_model_camera(scene, |cam, _| {
+        let up = cam.up.normalize_or(DVec3::Y);
+        let offset = cam.eye - cam.target;
+        let d = offset.length();
+        let along = offset.dot(up);
+        let horizontal = offset - up * along;
+        let h = horizontal
+            .try_normalize()
+            .unwrap_or_else(|| up.any_orthonormal_vector());
+        let elevation = along.atan2(horizontal.length());
+        let max = MAX_ORBIT_ELEVATION_DEG.to_radians();
+        let elevation = (elevation + pitch_deg.to_radians()).clamp(-max, max);
+        let h = glam::DQuat::from_axis_angle(up, yaw_deg.to_radians()) * h;
+        cam.eye = cam.target + d * (elevation.cos() * h + elevation.sin() * up);
+    });
+}
+
+/// Moves a model scene's camera and target parallel to the screen so that the point at the
+/// target's depth moves by `pixels` (right, down) in the image: world units per pixel are
+/// `2 d tan(fov/2) / H` (perspective) or `height / H` (orthographic).
+pub fn pan_camera(scene: &mut Scene, pixels: DVec2, viewport: Viewport) {
+    if !pixels.is_finite() || viewport.height == 0 {
+        return;
+    }
+    change_model_camera(scene, |cam, _| {
+        let forward = (cam.target - cam.eye).normalize_or_zero();
+        let right = forward.cross(cam.up).normalize_or_zero();
+        let screen_up = right.cross(forward);
+        let d = cam.eye.distance(cam.target);
+        let view_height = match cam.projection {
+            Projection::Perspective { fov_y_deg, .. } => {
+                2.0 * d * (fov_y_deg.to_radians() / 2.0).tan()
+            }
+            Projection::Orthographic { height, .. } => height,
+        };
+        let per_pixel = view_height / f64::from(viewport.height);
+        // The model follows the pointer, so the camera moves the other way.
+        let shift = (-pixels.x * right + pixels.y * screen_up) * per_pixel;
+        cam.eye += shift;
+        cam.target += shift;
+    });
+}
+
+/// Zooms a model scene's camera: the distance to the target (orthographic: the view height)
+/// is multiplied by `factor` (limited to [`PUSH_FACTOR_RANGE`] per call), the distance kept
+/// within [`ZOOM_DISTANCE_RANGE`] model radii.
+pub fn zoom_camera(scene: &mut Scene, factor: f64) {
+    if !(factor.is_finite() && factor > 0.0) {
+        return;
+    }
+    let factor = factor.clamp(PUSH_FACTOR_RANGE.0, PUSH_FACTOR_RANGE.1);
+    change_model_camera(scene, |cam, radius| {
+        if let Projection::Orthographic { height, .. } = &mut cam.projection {
+            *height *= factor;
+            return;
+        }
+        let offset = cam.eye - cam.target;
+        let d = (offset.length() * factor).clamp(
+            ZOOM_DISTANCE_RANGE.0 * radius,
+            ZOOM_DISTANCE_RANGE.1 * radius,
+        );
+        cam.eye = cam.target + offset.normalize_or(DVec3::Z) * d;
+    });
+}
+
 /// Field-of-view range the app offers, in degrees (the camera accepts (0, 180)).
 pub const FOV_RANGE_DEG: (f64, f64) = (5.0, 150.0);
 
@@ -358,5 +479,79 @@ mod tests {
             .expect("a corner is behind");
         let err = move_vertex_to(&mut scene, behind, DVec2::new(1.0, 1.0), vp());
         assert_eq!(err, Err(EditError::BehindCamera(behind)));
+    }
+
+    fn torus() -> Scene {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/models/torus.obj");
+        Scene::Model(crate::scene::ModelScene::for_model(&path, 800, 600).expect("torus"))
+    }
+
+    fn camera(scene: &Scene) -> Camera {
+        match scene {
+            Scene::Model(s) => s.camera(),
+            _ => unreachable!(),
+        }
+    }
+
+    #[test]
+    fn orbiting_keeps_the_distance_and_stops_short_of_the_pole() {
+        let mut scene = torus();
+        let before = camera(&scene);
+        let d = before.eye.distance(before.target);
+        orbit_camera(&mut scene, 30.0, 500.0);
+        let c = camera(&scene);
+        assert!((c.eye.distance(c.target) - d).abs() < 1e-9 * d);
+        let elevation = ((c.eye - c.target).normalize().dot(DVec3::Y))
+            .asin()
+            .to_degrees();
+        assert!(
+            (elevation - MAX_ORBIT_ELEVATION_DEG).abs() < 1e-9,
+            "{elevation}"
+        );
+        // Near and far still enclose the whole model.
+        let (centre, r) = match &scene {
+            Scene::Model(s) => s.mesh.bounding_sphere(),
+            _ => unreachable!(),
+        };
+        let Projection::Perspective { near, far, .. } = c.projection else {
+            panic!("perspective")
+        };
+        let dc = c.eye.distance(centre);
+        assert!(near <= dc - r && far >= dc + r, "{near} {far} {dc} {r}");
+    }
+
+    #[test]
+    fn panning_moves_the_target_point_by_the_given_pixels() {
+        let mut scene = torus();
+        let before = camera(&scene);
+        pan_camera(&mut scene, DVec2::new(40.0, -25.0), vp());
+        let after = camera(&scene);
+        let clip = after.clip_from_world(vp().aspect()) * before.target.extend(1.0);
+        let window = window_from_ndc(ndc_from_clip(clip), vp()).truncate();
+        let expected = DVec2::new(400.0 + 40.0, 300.0 - 25.0);
+        assert!(
+            (window - expected).length() < 1e-6,
+            "{window} vs {expected}"
+        );
+    }
+
+    #[test]
+    fn zooming_scales_the_distance_within_its_limits() {
+        let mut scene = torus();
+        let before = camera(&scene);
+        let d = before.eye.distance(before.target);
+        zoom_camera(&mut scene, 0.8);
+        let c = camera(&scene);
+        assert!((c.eye.distance(c.target) - 0.8 * d).abs() < 1e-9 * d);
+        for _ in 0..100 {
+            zoom_camera(&mut scene, 0.5);
+        }
+        let c = camera(&scene);
+        let r = match &scene {
+            Scene::Model(s) => s.mesh.bounding_sphere().1,
+            _ => unreachable!(),
+        };
+        assert!((c.eye.distance(c.target) - ZOOM_DISTANCE_RANGE.0 * r).abs() < 1e-9 * r);
+        assert!(c.validate().is_ok());
     }
 }

@@ -30,7 +30,13 @@ pub mod text {
             "Drag the wipe line",
             "move the split between affine and perspective-correct",
         ),
-        ("Drop a .json file", "open that scene"),
+        (
+            "Drop a file",
+            "a .json scene or an .obj model opens; an image becomes the texture",
+        ),
+        ("Drag on a model", "orbit the camera around it"),
+        ("Shift + drag or right drag on a model", "pan the camera"),
+        ("Scroll on a model", "zoom in / out"),
     ];
     pub const KEY_ROWS: &[(&str, &str)] = &[
         ("P", "switch affine / perspective-correct"),
@@ -42,6 +48,8 @@ pub mod text {
         ("Arrow keys", "move the pinned pixel by one"),
         ("Esc", "close this help, else unpin"),
         ("Ctrl + R", "reset the scene"),
+        ("Ctrl + O", "open a scene, model or image"),
+        ("Home", "reset the view of a model"),
         ("Ctrl + / Ctrl -", "larger / smaller interface"),
         ("F1", "this help"),
     ];

@@ -10,6 +10,7 @@
 pub mod canvas;
 pub mod controls;
 pub mod edit;
+pub mod files;
 pub mod heatmap;
 pub mod help;
 pub mod inspector;
@@ -36,7 +37,6 @@ use crate::scene::Scene;
 /// User-facing strings of the app frame (window title, messages).
 mod text {
     pub const TITLE: &str = "barylab — how a GPU interpolates across a triangle";
-    pub const OPENED: &str = "opened";
     pub const RESTORE_FAILED: &str = "could not restore the saved scene, using the default";
     pub const TEXTURE_FALLBACK: &str = "texture not loaded, showing the uv-grid instead";
     pub const SCREENSHOT_TIMEOUT: &str = "no screenshot arrived in time";
@@ -56,6 +56,9 @@ pub struct AppOptions {
     pub scene: Option<(Scene, PathBuf)>,
     /// Save a screenshot of the first fully rendered frame to this PNG and exit.
     pub screenshot: Option<PathBuf>,
+    /// A file opened on the command line ([`files::open`]), applied on start as if it had
+    /// been dropped on the window (an image becomes the restored scene's texture).
+    pub opened: Option<files::OpenedFile>,
     /// Restore state on start and save it on exit.
     pub persist: bool,
     /// Initial window size in points.
@@ -99,6 +102,8 @@ struct ScreenshotJob {
 struct TextureCache {
     key: Option<(String, Option<PathBuf>)>,
     texture: Option<Arc<Texture>>,
+    /// A texture already loaded while opening a file, used for the next new key.
+    pending: Option<Arc<Texture>>,
 }
 
 impl TextureCache {
@@ -109,6 +114,11 @@ impl TextureCache {
             && let Some(t) = &self.texture
         {
             return (t.clone(), None);
+        }
+        if let Some(t) = self.pending.take() {
+            self.key = Some(key);
+            self.texture = Some(t.clone());
+            return (t, None);
         }
         let (texture, error) = match scene.load_texture(dir.unwrap_or(Path::new(""))) {
             Ok(t) => (t, None),
@@ -139,6 +149,11 @@ pub struct BaryApp {
     pin_report: Option<PixelReport>,
     applied_zoom: Option<f32>,
     styled: bool,
+    picker: files::FilePicker,
+    recent: files::RecentFiles,
+    banner: Option<files::Banner>,
+    /// Files to open at the start of the next frame (menu, typed path).
+    to_open: Vec<PathBuf>,
 }
 
 /// Text sizes in points, large enough for a projector at zoom 1.
@@ -179,10 +194,12 @@ impl BaryApp {
     pub fn new(storage: Option<&dyn eframe::Storage>, options: AppOptions) -> Self {
         let mut message = None;
         let mut state = AppState::default();
+        let mut recent = files::RecentFiles::default();
         if options.persist
             && let Some(saved) =
                 storage.and_then(|s| eframe::get_value::<SavedState>(s, STORAGE_KEY))
         {
+            recent = saved.recent.clone();
             let (restored, error) = AppState::from_saved(saved);
             state = restored;
             if let Some(e) = error {
@@ -204,7 +221,7 @@ impl BaryApp {
             started: Instant::now(),
             result: Arc::new(Mutex::new(None)),
         });
-        Self {
+        let mut app = Self {
             state,
             canvas: CanvasState::default(),
             commands: Vec::new(),
@@ -218,6 +235,60 @@ impl BaryApp {
             pin_report: None,
             applied_zoom: None,
             styled: false,
+            picker: files::FilePicker::default(),
+            recent,
+            banner: None,
+            to_open: Vec::new(),
+        };
+        if let Some(opened) = options.opened {
+            app.opened(opened);
+        }
+        app
+    }
+
+    /// Applies a file that loaded.
+    fn opened(&mut self, opened: files::OpenedFile) {
+        self.commands.push(opened.command());
+        self.textures.pending = Some(opened.texture.clone());
+        self.recent.push(&opened.path);
+        self.banner = Some(files::Banner::opened(&opened));
+        self.message = None;
+    }
+
+    /// Opens a scene (.json), a model (.obj) or an image (it becomes the texture), as the File
+    /// menu and drag-and-drop do. Everything is loaded and checked first: on failure the
+    /// current scene stays exactly as it was and the banner names the file and the problem.
+    pub fn open_file(&mut self, path: &Path) {
+        match files::open(path, &self.state.scene) {
+            Ok(opened) => self.opened(opened),
+            Err(e) => self.banner = Some(files::Banner::failed(e)),
+        }
+    }
+
+    /// The banner's lines (what the last opened file did, or why it did not open).
+    pub fn banner(&self) -> Option<Vec<String>> {
+        self.banner.as_ref().map(files::Banner::lines)
+    }
+
+    /// The recent files, newest first.
+    pub fn recent_files(&self) -> &[PathBuf] {
+        &self.recent.0
+    }
+
+    /// The files a dialog, the typed-path window, the recent list, drag-and-drop or the
+    /// command line asked to open.
+    fn open_requested(&mut self, ctx: &egui::Context) {
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw
+                .dropped_files
+                .iter()
+                .map(|f| f.path().to_path_buf())
+                .collect()
+        });
+        self.to_open.extend(dropped);
+        self.to_open.extend(self.picker.poll());
+        for p in std::mem::take(&mut self.to_open) {
+            self.open_file(&p);
         }
     }
 
@@ -251,24 +322,9 @@ impl BaryApp {
         self.message.as_ref().map(|m| m.text.as_str())
     }
 
-    /// Opens a scene file; on failure the current scene stays and the error is shown.
+    /// Opens a file (see [`BaryApp::open_file`]).
     pub fn open_scene(&mut self, path: &Path) {
-        match load_scene(path) {
-            Ok((scene, dir)) => {
-                self.commands
-                    .push(Command::OpenScene(Box::new(scene), Some(dir)));
-                self.message = Some(Message {
-                    text: format!("{} {}", text::OPENED, path.display()),
-                    error: false,
-                });
-            }
-            Err(e) => {
-                self.message = Some(Message {
-                    text: e,
-                    error: true,
-                })
-            }
-        }
+        self.open_file(path);
     }
 
     fn shortcuts(&mut self, ctx: &egui::Context) {
@@ -279,6 +335,7 @@ impl BaryApp {
         let size = self.canvas.output.as_ref().map(|o| o.size);
         let mut cmds = Vec::new();
         let mut help = false;
+        let mut open = false;
         ctx.input_mut(|i| {
             let mut key = |k| i.consume_key(none, k);
             if key(Key::P) {
@@ -318,6 +375,9 @@ impl BaryApp {
                     cmds.push(Command::Pin(None));
                 }
             }
+            if key(Key::Home) {
+                cmds.push(Command::ResetCamera);
+            }
             if key(Key::F1) {
                 help = true;
             }
@@ -338,9 +398,15 @@ impl BaryApp {
             if i.consume_key(Modifiers::COMMAND, Key::R) {
                 cmds.push(Command::ResetScene);
             }
+            if i.consume_key(Modifiers::COMMAND, Key::O) {
+                open = true;
+            }
         });
         if help {
             self.help_open = !self.help_open;
+        }
+        if open {
+            self.picker.open_dialog(ctx);
         }
         self.commands.extend(cmds);
     }
@@ -422,16 +488,7 @@ impl BaryApp {
         }
         self.sync_zoom(&ctx);
         self.shortcuts(&ctx);
-        let dropped: Vec<PathBuf> = ctx.input(|i| {
-            i.raw
-                .dropped_files
-                .iter()
-                .map(|f| f.path().to_path_buf())
-                .collect()
-        });
-        for p in dropped {
-            self.open_scene(&p);
-        }
+        self.open_requested(&ctx);
 
         let (texture, texture_error) = self
             .textures
@@ -449,6 +506,11 @@ impl BaryApp {
 
         let hover_before = self.canvas.hover;
         egui::Panel::top("top").show(ui, |ui| self.top_bar_ui(ui));
+        files::expire_banner(&ctx, &mut self.banner);
+        if self.banner.is_some() {
+            egui::Panel::top("banner").show(ui, |ui| files::banner_ui(ui, &mut self.banner));
+        }
+        files::path_window_ui(&ctx, &mut self.picker, &mut self.to_open);
         egui::Panel::bottom("status").show(ui, |ui| {
             status::status_ui(
                 ui,
@@ -475,9 +537,14 @@ impl BaryApp {
                 .resizable(false)
                 .exact_size(INSPECTOR_WIDTH)
                 .show(ui, |ui| {
-                    egui::ScrollArea::vertical()
+                    // Content never widens the panel: a wide line scrolls instead. (A panel
+                    // that grew with the hovered pixel's text would move the canvas under
+                    // the pointer, change the hovered pixel, and so on.)
+                    let width = ui.available_width();
+                    egui::ScrollArea::both()
                         .auto_shrink([false, false])
                         .show(ui, |ui| {
+                            ui.set_max_width(width);
                             inspector::inspector_ui(
                                 ui,
                                 self.hover_report.as_ref(),
@@ -524,6 +591,8 @@ impl BaryApp {
     fn top_bar_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             ui.label(egui::RichText::new("barylab").strong());
+            ui.separator();
+            files::file_menu_ui(ui, &mut self.picker, &mut self.recent, &mut self.to_open);
             ui.separator();
             let view = &self.state.view;
             if ui
@@ -626,7 +695,9 @@ impl eframe::App for BaryApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if self.persist {
-            eframe::set_value(storage, STORAGE_KEY, &self.state.to_saved());
+            let mut saved = self.state.to_saved();
+            saved.recent = self.recent.clone();
+            eframe::set_value(storage, STORAGE_KEY, &saved);
         }
     }
 

@@ -85,6 +85,8 @@ pub struct SavedState {
     /// Folder relative texture paths of the scene are resolved against.
     pub scene_dir: Option<PathBuf>,
     pub view: ViewSettings,
+    /// Recently opened files, newest first (kept by the app beside the state).
+    pub recent: super::files::RecentFiles,
 }
 
 /// Key under which eframe stores [`SavedState`].
@@ -114,6 +116,7 @@ impl AppState {
             scene_json: self.scene.to_json(),
             scene_dir: self.scene_dir.clone(),
             view: self.view.clone(),
+            recent: Default::default(),
         }
     }
 
@@ -159,6 +162,25 @@ impl AppState {
 pub enum Command {
     /// Replace the scene (a file was opened); keeps the view.
     OpenScene(Box<Scene>, Option<PathBuf>),
+    /// An image became the texture (an absolute path or a built-in name); shading switches to
+    /// the texture where the mesh has uvs.
+    SetTexture(String),
+    /// Model scenes: turn the camera about its target (drag), in degrees.
+    OrbitCamera {
+        yaw_deg: f64,
+        pitch_deg: f64,
+    },
+    /// Model scenes: move camera and target parallel to the screen by this many rendered
+    /// pixels (right, down), so the model follows the pointer.
+    PanCamera {
+        dx: f64,
+        dy: f64,
+        viewport: Viewport,
+    },
+    /// Model scenes: multiply the distance to the target (scroll).
+    ZoomCamera(f64),
+    /// Model scenes: back to the camera that frames the model.
+    ResetCamera,
     /// Load a preset's geometry and camera, keeping the render options and texture.
     Preset(Preset),
     /// Back to the built-in default scene (view settings kept).
@@ -225,6 +247,19 @@ impl AppState {
                 self.scene = *scene;
                 self.scene_dir = dir;
                 self.view.pinned = None;
+            }
+            Command::SetTexture(name) => edit::set_texture(&mut self.scene, name),
+            Command::OrbitCamera { yaw_deg, pitch_deg } => {
+                edit::orbit_camera(&mut self.scene, yaw_deg, pitch_deg)
+            }
+            Command::PanCamera { dx, dy, viewport } => {
+                edit::pan_camera(&mut self.scene, DVec2::new(dx, dy), viewport)
+            }
+            Command::ZoomCamera(factor) => edit::zoom_camera(&mut self.scene, factor),
+            Command::ResetCamera => {
+                if let Scene::Model(s) = &mut self.scene {
+                    s.camera = None;
+                }
             }
             Command::Preset(p) => {
                 let texture = self.scene.texture_name().to_string();

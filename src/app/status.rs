@@ -49,6 +49,9 @@ pub fn status_ui(
     timing: FrameTiming,
     message: Option<&Message>,
 ) {
+    // One line, always: the timings change every frame, and a status line that wrapped would
+    // change the canvas's height, move the canvas and re-render it (a feedback loop).
+    ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Truncate);
     ui.horizontal(|ui| {
         let mode = state.options().mode;
         let (mode_text, mode_color) = match state.view.compare {
