@@ -64,27 +64,11 @@ enum Command {
 
 #[derive(clap::Args, Debug)]
 struct RenderArgs {
-    /// Scene file (JSON; see docs/scene-format.md), or an OBJ model, or an image (PNG, JPEG,
-    /// BMP, TGA, WebP) shown on the default quad.
-    scene: PathBuf,
+    #[command(flatten)]
+    input: SceneOptions,
     /// Output PNG file.
     #[arg(short, long)]
     output: PathBuf,
-    /// Interpolation mode (default: the scene's).
-    #[arg(long)]
-    mode: Option<ModeArg>,
-    /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
-    #[arg(long, value_parser = parse_size)]
-    size: Option<(u32, u32)>,
-    /// Texture filter (default: the scene's); trilinear uses mipmaps.
-    #[arg(long)]
-    filter: Option<FilterArg>,
-    /// What the colour shows (default: the scene's).
-    #[arg(long)]
-    shading: Option<ShadingArg>,
-    /// Overlay the triangles' edges (threshold on the smallest weight).
-    #[arg(long)]
-    wireframe: bool,
     /// Also write float32 OpenEXR buffers into this folder: uv.exr, weights_screen.exr,
     /// weights_perspective.exr, depth.exr, inv_w.exr.
     #[arg(long, value_name = "DIR")]
@@ -139,30 +123,62 @@ fn pool(threads: Option<u16>) -> Result<rayon::ThreadPool> {
 
 #[derive(clap::Args, Debug)]
 struct ProbeArgs {
-    /// Scene file (JSON; see docs/scene-format.md), or an OBJ model, or an image shown on the
-    /// default quad.
-    scene: PathBuf,
+    #[command(flatten)]
+    input: SceneOptions,
     /// The pixel as X,Y: column from the left, row from the top, both from 0.
     #[arg(long, value_parser = parse_pixel, allow_hyphen_values = true)]
     pixel: (u32, u32),
-    /// Interpolation mode (default: the scene's).
-    #[arg(long)]
-    mode: Option<ModeArg>,
     /// Output format: a worked example as text, Markdown or a LaTeX fragment, or JSON.
     #[arg(long, default_value = "text")]
     format: FormatArg,
+}
+
+/// What to draw and how: shared by `render` and `probe`, so a probe describes exactly what
+/// `render` draws with the same options.
+#[derive(clap::Args, Debug)]
+struct SceneOptions {
+    /// Scene file (JSON; see docs/scene-format.md), or an OBJ model, or an image (PNG, JPEG,
+    /// BMP, TGA, WebP) shown on the default quad.
+    scene: PathBuf,
+    /// Interpolation mode (default: the scene's).
+    #[arg(long)]
+    mode: Option<ModeArg>,
     /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
     #[arg(long, value_parser = parse_size)]
     size: Option<(u32, u32)>,
-    /// Texture filter (default: the scene's).
+    /// Texture filter (default: the scene's); trilinear uses mipmaps.
     #[arg(long)]
     filter: Option<FilterArg>,
     /// What the colour shows (default: the scene's).
     #[arg(long)]
     shading: Option<ShadingArg>,
-    /// Overlay the triangles' edges, as `render --wireframe`.
+    /// Overlay the triangles' edges (threshold on the smallest weight).
     #[arg(long)]
     wireframe: bool,
+}
+
+/// Loads the input, its texture (printing any notes) and the settings with the options applied.
+fn prepare(o: &SceneOptions) -> Result<(Scene, raster::Texture, raster::RenderSettings)> {
+    let (mut scene, base_dir) = load_input(&o.scene)?;
+    if let Some((w, h)) = o.size {
+        scene.set_size(w, h);
+    }
+    let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
+    for note in scene.notes().iter().chain(&texture_notes) {
+        eprintln!("note: {note}");
+    }
+    let mut settings = scene.settings();
+    if let Some(m) = o.mode {
+        settings.mode = m.into();
+    }
+    if let Some(f) = o.filter {
+        settings.filter = f.into();
+    }
+    if let Some(s) = o.shading {
+        settings.shading = s.into();
+    }
+    settings.wireframe |= o.wireframe;
+    Ok((scene, texture, settings))
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -465,25 +481,7 @@ pub fn load_input(path: &Path) -> Result<(Scene, PathBuf)> {
 }
 
 fn render(args: &RenderArgs) -> Result<()> {
-    let (mut scene, base_dir) = load_input(&args.scene)?;
-    if let Some((w, h)) = args.size {
-        scene.set_size(w, h);
-    }
-    let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
-    for note in scene.notes().iter().chain(&texture_notes) {
-        eprintln!("note: {note}");
-    }
-    let mut settings = scene.settings();
-    if let Some(m) = args.mode {
-        settings.mode = m.into();
-    }
-    if let Some(f) = args.filter {
-        settings.filter = f.into();
-    }
-    if let Some(s) = args.shading {
-        settings.shading = s.into();
-    }
-    settings.wireframe |= args.wireframe;
+    let (scene, texture, mut settings) = prepare(&args.input)?;
     settings.rasterizer = args.rasterizer.into();
     let mesh = scene.to_mesh();
     let workers = pool(args.threads)?;
@@ -525,28 +523,10 @@ fn render(args: &RenderArgs) -> Result<()> {
 }
 
 fn probe(args: &ProbeArgs) -> Result<()> {
-    let (mut scene, base_dir) = load_input(&args.scene)?;
-    if let Some((w, h)) = args.size {
-        scene.set_size(w, h);
-    }
-    let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
-    for note in scene.notes().iter().chain(&texture_notes) {
-        eprintln!("note: {note}");
-    }
-    let mut settings = scene.settings();
-    if let Some(m) = args.mode {
-        settings.mode = m.into();
-    }
-    if let Some(f) = args.filter {
-        settings.filter = f.into();
-    }
-    if let Some(s) = args.shading {
-        settings.shading = s.into();
-    }
-    settings.wireframe |= args.wireframe;
+    let (scene, texture, settings) = prepare(&args.input)?;
     let (x, y) = args.pixel;
     let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
-        .with_context(|| args.scene.display().to_string())?;
+        .with_context(|| args.input.scene.display().to_string())?;
     print!(
         "{}",
         barylab::probe::format::write(&trace, args.format.into())
