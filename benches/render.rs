@@ -1,36 +1,102 @@
-//! Criterion benchmarks of whole-frame rendering on the sample scenes.
+//! Criterion benchmarks of whole-frame rendering: every rasterizer x filter x mode on the
+//! default scene (800x600) and on the bench-1080p reference scene scaled down, and a mesh of
+//! many small triangles (where per-triangle setup dominates).
 
 use std::path::Path;
 
-use barylab::raster::{Filter, Interpolation, render};
+use barylab::raster::render::{ClipMesh, MeshVertex, Rasterizer, RenderSettings};
+use barylab::raster::{BuiltinTexture, Filter, Interpolation, Texture, render};
 use barylab::scene::Scene;
 use criterion::{Criterion, criterion_group, criterion_main};
+use glam::{DVec4, Vec2, Vec3};
 
 fn scenes_dir() -> &'static Path {
     Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes"))
 }
 
-fn bench_default_scene(c: &mut Criterion) {
-    let scene = Scene::default_scene();
+fn matrix(c: &mut Criterion, name: &str, scene: &Scene) {
     let texture = scene.load_texture(scenes_dir()).expect("texture");
     let mesh = scene.to_mesh();
-    let mut group = c.benchmark_group("default-800x600");
-    for mode in [Interpolation::Affine, Interpolation::Perspective] {
+    let (w, h) = scene.size();
+    let mut group = c.benchmark_group(format!("{name}-{w}x{h}"));
+    for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
         for filter in [Filter::Nearest, Filter::Bilinear] {
-            let mut settings = scene.settings();
-            settings.mode = mode;
-            settings.filter = filter;
-            group.bench_function(format!("{mode:?}-{filter:?}"), |b| {
-                b.iter(|| render(&mesh, &texture, &settings).expect("render"))
+            for mode in [Interpolation::Affine, Interpolation::Perspective] {
+                let settings = RenderSettings {
+                    rasterizer,
+                    filter,
+                    mode,
+                    ..scene.settings()
+                };
+                group.bench_function(format!("{rasterizer:?}-{filter:?}-{mode:?}"), |b| {
+                    b.iter(|| render(&mesh, &texture, &settings).expect("render"))
+                });
+            }
+        }
+    }
+    group.finish();
+}
+
+fn bench_scenes(c: &mut Criterion) {
+    matrix(c, "default", &Scene::default_scene());
+    let mut bench = Scene::load(&scenes_dir().join("bench-1080p.json")).expect("bench scene");
+    bench.set_size(960, 540);
+    matrix(c, "bench-1080p-half", &bench);
+}
+
+/// A 64x48 grid of quads (6144 triangles, each a few pixels) in clip space, w varying.
+fn small_triangles() -> ClipMesh {
+    const NX: u32 = 64;
+    const NY: u32 = 48;
+    let mut vertices = Vec::new();
+    for j in 0..=NY {
+        for i in 0..=NX {
+            let (u, v) = (i as f32 / NX as f32, j as f32 / NY as f32);
+            let w = 1.0 + 3.0 * f64::from(v);
+            let ndc = (f64::from(u) * 2.0 - 1.0, f64::from(v) * 2.0 - 1.0);
+            vertices.push(MeshVertex {
+                clip: DVec4::new(ndc.0 * w, ndc.1 * w, 0.0, w),
+                uv: Vec2::new(u, v),
+                color: Vec3::ONE,
             });
         }
+    }
+    let at = |i: u32, j: u32| j * (NX + 1) + i;
+    let mut triangles = Vec::new();
+    for j in 0..NY {
+        for i in 0..NX {
+            triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+            triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+    ClipMesh {
+        vertices,
+        triangles,
+    }
+}
+
+fn bench_small_triangles(c: &mut Criterion) {
+    let (w, h) = (800, 600);
+    let mesh = small_triangles();
+    let texture = Texture::builtin(BuiltinTexture::UvGrid);
+    let mut group = c.benchmark_group("small-triangles-6144-800x600");
+    for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
+        let settings = RenderSettings {
+            width: w,
+            height: h,
+            rasterizer,
+            ..RenderSettings::default()
+        };
+        group.bench_function(format!("{rasterizer:?}"), |b| {
+            b.iter(|| render(&mesh, &texture, &settings).expect("render"))
+        });
     }
     group.finish();
 }
 
 criterion_group! {
     name = benches;
-    config = Criterion::default().sample_size(20);
-    targets = bench_default_scene
+    config = Criterion::default().sample_size(10);
+    targets = bench_scenes, bench_small_triangles
 }
 criterion_main!(benches);
