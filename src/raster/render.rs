@@ -457,14 +457,7 @@ mod tests {
         let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
             .map(|i| prepare_triangle(&mesh, i, viewport))
             .collect();
-        let params = ShadeParams {
-            shading: settings.shading,
-            mode: settings.mode,
-            filter: settings.filter,
-            wrap: settings.wrap,
-            wireframe: settings.wireframe,
-            depth_range: depth_range(&triangles),
-        };
+        let params = shade_params(&settings, &triangles);
         let draw = |rows: u32, threads: usize| {
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)

@@ -427,18 +427,11 @@ impl Texture {
         match filter {
             Filter::Nearest | Filter::Bilinear => self.level_taps(uv, filter, wrap, 0),
             Filter::Trilinear => {
-                let last = self.levels() - 1;
-                let lambda = if lambda.is_finite() { lambda } else { 0.0 };
-                if lambda <= 0.0 || last == 0 {
-                    return self.level_taps(uv, Filter::Bilinear, wrap, 0);
-                }
-                let lambda = lambda.min(last as f32);
-                let d = lambda.floor() as u32;
-                let f = lambda - d as f32;
+                let (d, blend) = self.trilinear_levels(lambda);
                 let lo = self.level_taps(uv, Filter::Bilinear, wrap, d);
-                if f == 0.0 || d >= last {
+                let Some(f) = blend else {
                     return lo;
-                }
+                };
                 let hi = self.level_taps(uv, Filter::Bilinear, wrap, d + 1);
                 let mut out = lo;
                 for k in 0..4 {
@@ -452,17 +445,43 @@ impl Texture {
         }
     }
 
+    /// The mipmap levels trilinear filtering reads at `lambda`: `(d, None)` for level `d`
+    /// alone, `(d, Some(f))` for levels `d` and `d + 1` weighted `1 - f` and `f`. `lambda <= 0`
+    /// (or not finite) gives level 0; it is clamped to the last level.
+    fn trilinear_levels(&self, lambda: f32) -> (u32, Option<f32>) {
+        let last = self.levels() - 1;
+        let lambda = if lambda.is_finite() { lambda } else { 0.0 };
+        if lambda <= 0.0 || last == 0 {
+            return (0, None);
+        }
+        let lambda = lambda.min(last as f32);
+        let d = lambda.floor() as u32;
+        let f = lambda - d as f32;
+        if f == 0.0 || d >= last {
+            (d, None)
+        } else {
+            (d, Some(f))
+        }
+    }
+
+    /// The texel nearest filtering reads in one level: `(floor(u W), floor(v H))`, wrapped.
+    fn nearest_texel(&self, uv: Vec2, wrap: Wrap, level: u32) -> (u32, u32) {
+        let (w, h) = self.level_size(level);
+        (
+            wrap_coord(texel_floor(uv.x * w as f32), w, wrap),
+            wrap_coord(texel_floor(uv.y * h as f32), h, wrap),
+        )
+    }
+
     /// Nearest or bilinear taps in one mipmap level.
     fn level_taps(&self, uv: Vec2, filter: Filter, wrap: Wrap, level: u32) -> Taps {
-        let (w, h) = self.level_size(level);
-        let su = uv.x * w as f32;
-        let sv = uv.y * h as f32;
         match filter {
             Filter::Nearest => {
+                let (i, j) = self.nearest_texel(uv, wrap, level);
                 let tap = Tap {
                     level,
-                    i: wrap_coord(texel_floor(su), w, wrap),
-                    j: wrap_coord(texel_floor(sv), h, wrap),
+                    i,
+                    j,
                     weight: 1.0,
                 };
                 Taps {
@@ -505,29 +524,17 @@ impl Texture {
         let mut out = [0.0f32; 4];
         match filter {
             Filter::Nearest => {
-                let (w, h) = (self.width, self.height);
-                let i = wrap_coord(texel_floor(uv.x * w as f32), w, wrap);
-                let j = wrap_coord(texel_floor(uv.y * h as f32), h, wrap);
+                let (i, j) = self.nearest_texel(uv, wrap, 0);
                 add_texel(&mut out, self.texel(i, j), 1.0);
             }
             Filter::Bilinear => self.add_bilinear(&mut out, uv, wrap, 0, None),
-            Filter::Trilinear => {
-                let last = self.levels() - 1;
-                let lambda = if lambda.is_finite() { lambda } else { 0.0 };
-                if lambda <= 0.0 || last == 0 {
-                    self.add_bilinear(&mut out, uv, wrap, 0, None);
-                } else {
-                    let lambda = lambda.min(last as f32);
-                    let d = lambda.floor() as u32;
-                    let f = lambda - d as f32;
-                    if f == 0.0 || d >= last {
-                        self.add_bilinear(&mut out, uv, wrap, d, None);
-                    } else {
-                        self.add_bilinear(&mut out, uv, wrap, d, Some(1.0 - f));
-                        self.add_bilinear(&mut out, uv, wrap, d + 1, Some(f));
-                    }
+            Filter::Trilinear => match self.trilinear_levels(lambda) {
+                (d, None) => self.add_bilinear(&mut out, uv, wrap, d, None),
+                (d, Some(f)) => {
+                    self.add_bilinear(&mut out, uv, wrap, d, Some(1.0 - f));
+                    self.add_bilinear(&mut out, uv, wrap, d + 1, Some(f));
                 }
-            }
+            },
         }
         out
     }
