@@ -240,16 +240,17 @@ pub fn wrap_coord(i: i64, size: u32, wrap: Wrap) -> u32 {
     r as u32
 }
 
-/// `out += weight * texel / 255`, channel by channel.
+/// `out += weight * texel`, channel by channel, in the texel's 0..255 scale (the sum is
+/// divided by 255 once, at the end of [`Texture::sample_lod`]).
 fn add_texel(out: &mut [f32; 4], texel: [u8; 4], weight: f32) {
     for (o, c) in out.iter_mut().zip(texel) {
-        *o += weight * f32::from(c) / 255.0;
+        *o += weight * f32::from(c);
     }
 }
 
 /// Largest |texel coordinate| used for wrapping: far beyond any texture size, keeps the
 /// `f32 -> i64` conversion of huge or infinite uv well defined.
-const MAX_TEXEL_COORD: f32 = 1e9;
+pub(crate) const MAX_TEXEL_COORD: f32 = 1e9;
 
 fn texel_floor(x: f32) -> i64 {
     if x.is_nan() {
@@ -261,7 +262,7 @@ fn texel_floor(x: f32) -> i64 {
 /// `floor(x)` for |x| <= 2^30 without a libm call: truncate towards zero, then step down
 /// for negative non-integers. (The baseline x86-64 target has no rounding instruction, and
 /// `f32::floor` becomes a function call in the per-pixel path.)
-fn fast_floor(x: f32) -> f32 {
+pub(crate) fn fast_floor(x: f32) -> f32 {
     let t = x as i32 as f32;
     if t > x { t - 1.0 } else { t }
 }
@@ -381,6 +382,11 @@ impl Texture {
 
     pub fn height(&self) -> u32 {
         self.height
+    }
+
+    /// The base level's texels, row `j` starting at `j * width` (bottom row first).
+    pub fn base_texels(&self) -> &[[u8; 4]] {
+        &self.texels
     }
 
     /// The texel at column `i`, row `j` (row 0 at the bottom). Indices must be in range.
@@ -519,7 +525,8 @@ impl Texture {
     ///
     /// This is the renderer's path: it reads the same texels with the same weights, in the
     /// same order, as [`Texture::taps_lod`] lists them (so the result is bit-identical to
-    /// summing the taps), without building the list.
+    /// summing the taps), without building the list: each channel is
+    /// `(sum_k weight_k * texel_k) / 255`, the sum taken in the texels' 0..255 scale.
     pub fn sample_lod(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> [f32; 4] {
         let mut out = [0.0f32; 4];
         match filter {
@@ -536,7 +543,7 @@ impl Texture {
                 }
             },
         }
-        out
+        out.map(|c| c / 255.0)
     }
 
     /// Texel columns (i0, i0 + 1), rows (j0, j0 + 1), both wrapped, and the fractions (a, b)
