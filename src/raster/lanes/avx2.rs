@@ -107,31 +107,48 @@ fn gather(s: &VecSampler<'_>, i: __m256i, j: __m256i) -> __m256i {
     unsafe { _mm256_i32gather_epi32::<4>(s.texels.as_ptr().cast::<i32>(), index) }
 }
 
-/// Channel `c` (0 = red) of eight packed texels, as f32 in 0..255.
+/// Channel `C` (0 = red) of eight packed texels, as f32 in 0..255: one byte shuffle moves
+/// byte `C` of every texel to the bottom of its lane and zeroes the rest.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn channel(t: __m256i, shift: __m256i) -> __m256 {
-    _mm256_cvtepi32_ps(_mm256_and_si256(
-        _mm256_srlv_epi32(t, shift),
-        _mm256_set1_epi32(0xff),
-    ))
+fn channel<const C: i32>(t: __m256i) -> __m256 {
+    let pick = |n: i32| (4 * n + C) | 0x8080_8000_u32 as i32;
+    let mask = _mm256_setr_epi32(
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+    );
+    _mm256_cvtepi32_ps(_mm256_shuffle_epi8(t, mask))
 }
 
-/// `unorm8(x)`: `round(clamp(x, 0, 1) * 255)`, rounding half away from zero (NaN gives 0).
+/// `byte_from_sum(x)` for a bilinear sum: `round(x)`, half away from zero. The clamp of the
+/// scalar code changes nothing here: every weight is in [0, 1] and they add up to 1 (within
+/// a few ulps), so the sum is in [0, 255.001] and never NaN.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn unorm8(x: __m256) -> __m256i {
-    let y = _mm256_mul_ps(
-        _mm256_min_ps(_mm256_max_ps(x, _mm256_setzero_ps()), _mm256_set1_ps(1.0)),
-        _mm256_set1_ps(255.0),
-    );
+fn byte_from_sum(y: __m256) -> __m256i {
     let t = _mm256_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
     let up = _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_sub_ps(y, t), _mm256_set1_ps(0.5));
-    let r = _mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0)));
-    _mm256_cvttps_epi32(r)
+    _mm256_cvttps_epi32(_mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0))))
 }
 
-/// The packed RGBA8 colours at eight uv: `Texture::sample_lod` then `unorm8`.
+/// `sum_k weight_k * channel_k`, left to right.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn weighted<const C: i32>(weights: &[__m256; 4], texels: &[__m256i; 4]) -> __m256i {
+    let mut sum = _mm256_mul_ps(weights[0], channel::<C>(texels[0]));
+    for k in 1..4 {
+        sum = _mm256_add_ps(sum, _mm256_mul_ps(weights[k], channel::<C>(texels[k])));
+    }
+    byte_from_sum(sum)
+}
+
+/// The packed RGBA8 colours at eight uv, as `Texture::sample_rgba8`.
 #[inline]
 #[target_feature(enable = "avx2")]
 fn sample(s: &VecSampler<'_>, u: __m256, v: __m256) -> __m256i {
@@ -173,18 +190,14 @@ fn sample(s: &VecSampler<'_>, u: __m256, v: __m256) -> __m256i {
                 _mm256_mul_ps(oa, b),
                 _mm256_mul_ps(a, b),
             ];
-            let inv = _mm256_set1_ps(255.0);
-            let mut packed = _mm256_setzero_si256();
-            for c in 0..4 {
-                let shift = _mm256_set1_epi32(8 * c);
-                let mut sum = _mm256_mul_ps(weights[0], channel(texels[0], shift));
-                for k in 1..4 {
-                    sum = _mm256_add_ps(sum, _mm256_mul_ps(weights[k], channel(texels[k], shift)));
-                }
-                let byte = unorm8(_mm256_div_ps(sum, inv));
-                packed = _mm256_or_si256(packed, _mm256_sllv_epi32(byte, shift));
-            }
-            packed
+            let r = weighted::<0>(&weights, &texels);
+            let g = weighted::<1>(&weights, &texels);
+            let b = weighted::<2>(&weights, &texels);
+            let a = weighted::<3>(&weights, &texels);
+            _mm256_or_si256(
+                _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
+                _mm256_or_si256(_mm256_slli_epi32::<16>(b), _mm256_slli_epi32::<24>(a)),
+            )
         }
     }
 }

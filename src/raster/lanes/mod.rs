@@ -10,7 +10,7 @@
 //!   edge: no per-pixel test). Per row, the edge values of the eight pixels are exact integers
 //!   carried in `f64` lanes (checked to stay below 2^52), and every later step repeats the
 //!   operations of [`interpolate::fragment`](super::interpolate::fragment) and
-//!   [`Texture::sample_lod`] in the same order, so the result is **bit-identical** to the
+//!   [`Texture::sample_rgba8`] in the same order, so the result is **bit-identical** to the
 //!   per-pixel renderer and to what the probe reports.
 //! - **Scanline** ([`scanline_triangle`]): exact integer spans per row
 //!   ([`row_span`]); along a span `u/w`, `v/w`, `1/w` and the depth are stepped by their
@@ -31,7 +31,9 @@ use super::interpolate::{Interpolation, screen_weights};
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
 use super::setup::{PixelBounds, TriangleSetup, sample_point};
-use super::texture::{Filter, MAX_TEXEL_COORD, Texture, Wrap, fast_floor, wrap_coord};
+use super::texture::{
+    Filter, MAX_TEXEL_COORD, Texture, Wrap, byte_from_sum, fast_floor, wrap_coord,
+};
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
@@ -320,12 +322,12 @@ impl<'a> Sampler<'a> {
         self.texels[j * self.width + i]
     }
 
-    /// The colours at eight uv, as `Texture::sample_lod` followed by `unorm8` computes them.
+    /// The colours at eight uv, as [`Texture::sample_rgba8`] computes them.
     #[inline(always)]
     fn sample(&self, u: &F32s, v: &F32s, out: &mut [[u8; 4]; LANES]) {
         match self.filter {
-            // One texel of weight 1: `(0 + 1 * c) / 255` converts back to exactly `c`
-            // (checked for all 256 values by a test), so the texel is the colour.
+            // One texel of weight 1: `round(0 + 1 * c)` is exactly `c`, so the texel is the
+            // colour.
             Filter::Nearest => {
                 for k in 0..LANES {
                     let i = self.wrap.0.apply(texel_floor(u[k] * self.size.0));
@@ -362,7 +364,7 @@ impl<'a> Sampler<'a> {
                             sum[ch] += wt * f32::from(t[ch]);
                         }
                     }
-                    out[k] = sum.map(|s| super::shade::unorm8(s / 255.0));
+                    out[k] = sum.map(byte_from_sum);
                 }
             }
         }
@@ -643,13 +645,13 @@ fn scanline_triangle_impl(
 
 #[cfg(test)]
 mod tests {
-    use crate::raster::shade::unorm8;
+    use crate::raster::texture::byte_from_sum;
 
-    /// The nearest path writes the texel itself: `unorm8(c / 255) == c` for every byte.
+    /// The nearest path writes the texel itself: `byte_from_sum(0 + 1 * c) == c`.
     #[test]
-    fn a_byte_survives_the_unorm8_round_trip() {
+    fn a_byte_survives_the_weighted_sum() {
         for c in 0..=255u8 {
-            assert_eq!(unorm8((0.0 + 1.0 * f32::from(c)) / 255.0), c);
+            assert_eq!(byte_from_sum(0.0 + 1.0 * f32::from(c)), c);
         }
     }
 }
