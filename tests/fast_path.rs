@@ -162,6 +162,7 @@ proptest! {
         bilinear in any::<bool>(),
         wrap in 0usize..3,
         which in 0usize..3,
+        wireframe in any::<bool>(),
     ) {
         let (w, h) = (83, 61);
         let mut mesh = ClipMesh {
@@ -178,6 +179,7 @@ proptest! {
             mode: if persp { Interpolation::Perspective } else { Interpolation::Affine },
             filter: if bilinear { Filter::Bilinear } else { Filter::Nearest },
             wrap: [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat][wrap],
+            wireframe,
             ..RenderSettings::default()
         };
         assert_edge_identical(&mesh, &tex, &s, name);

@@ -487,12 +487,12 @@ fn rasterize(
     // The lane path: colour and depth only; texture shading with nearest or bilinear
     // filtering is done in lanes, anything else per pixel (after block rejection).
     let lane_shading = (params.shading == Shading::Texture
-        && !params.wireframe
         && matches!(params.filter, Filter::Nearest | Filter::Bilinear))
     .then_some(LaneShading {
         mode: params.mode,
         filter: params.filter,
         wrap: params.wrap,
+        wireframe: params.wireframe,
     });
     if !aovs {
         match (rasterizer, lane_shading) {
@@ -520,7 +520,7 @@ fn rasterize(
                 }
                 return;
             }
-            (Rasterizer::Scanline, Some(shading)) => {
+            (Rasterizer::Scanline, Some(shading)) if !shading.wireframe => {
                 let mut target = Target {
                     y0: band.y0,
                     width: band.width,

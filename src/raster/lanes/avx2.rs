@@ -13,6 +13,7 @@ use crate::raster::interpolate::{Interpolation, screen_weights};
 use crate::raster::project::SUBPIXEL;
 use crate::raster::scanline::row_span;
 use crate::raster::setup::{TriangleSetup, sample_point};
+use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
 /// A wrap mode the vector path can apply: `Mask(size - 1)` or `Clamp(size - 1)`.
@@ -258,7 +259,7 @@ fn from_edges4(
     e: [__m256d; 3],
     c: &Constants,
     mode: Interpolation,
-) -> (__m256d, __m256d, __m256d, i32) {
+) -> (__m256d, __m256d, __m256d, i32, i32) {
     let ia = _mm256_set1_pd(c.inv_area);
     let l = [
         _mm256_mul_pd(e[0], ia),
@@ -286,11 +287,26 @@ fn from_edges4(
         }
         Interpolation::Affine => l,
     };
+    let mut wire = 0;
+    if let Some(wire_consts) = &c.wire {
+        for i in 0..3 {
+            if wire_consts.len[i] > 0.0 {
+                // The weight as f32, as the varyings hold it, then over the gradient length.
+                let weight = _mm256_cvtps_pd(_mm256_cvtpd_ps(dot3(&l, wire_consts.bary[i])));
+                let d = _mm256_div_pd(weight, _mm256_set1_pd(wire_consts.len[i]));
+                wire |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
+                    d,
+                    _mm256_set1_pd(WIRE_WIDTH_PX),
+                ));
+            }
+        }
+    }
     (
         dot3(&w, c.u),
         dot3(&w, c.v),
         dot3(&l, c.depth),
         _mm256_movemask_pd(ok),
+        wire,
     )
 }
 
@@ -300,11 +316,12 @@ pub(super) fn edge_triangle(
     setup: &TriangleSetup,
     (y_start, y_end): (u32, u32),
     sampler: &VecSampler<'_>,
-    mode: Interpolation,
+    shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
+    let mode = shading.mode;
     let planes = EdgePlanes::new(setup);
-    let consts = Constants::new(setup);
+    let consts = Constants::new(setup, shading.wireframe);
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
     let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
     let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
@@ -351,13 +368,21 @@ pub(super) fn edge_triangle(
                     if covered == 0 {
                         continue;
                     }
-                    let (ul, vl, dl, okl) = from_edges4(lo, &consts, mode);
-                    let (uh, vh, dh, okh) = from_edges4(hi, &consts, mode);
+                    let (ul, vl, dl, okl, wl) = from_edges4(lo, &consts, mode);
+                    let (uh, vh, dh, okh, wh) = from_edges4(hi, &consts, mode);
                     let ok = covered & (okl | (okh << 4));
                     if ok == 0 {
                         continue;
                     }
-                    let rgba = sample(sampler, to_f32(ul, uh), to_f32(vl, vh));
+                    let mut rgba = sample(sampler, to_f32(ul, uh), to_f32(vl, vh));
+                    let wire = wl | (wh << 4);
+                    if wire != 0 {
+                        rgba = _mm256_blendv_epi8(
+                            rgba,
+                            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
+                            mask_from_bits(wire),
+                        );
+                    }
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
                     write(target, index, mask_from_bits(ok), to_f32(dl, dh), rgba);
                 }
@@ -377,7 +402,7 @@ pub(super) fn scanline_triangle(
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    let consts = Constants::new(setup);
+    let consts = Constants::new(setup, false);
     let dl: [f64; 3] = setup
         .edges
         .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);

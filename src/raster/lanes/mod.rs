@@ -2,7 +2,9 @@
 //!
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`) and the shading is a texture with nearest or bilinear
-//! filtering; other cases go through [`render`](super::render)'s per-pixel code.
+//! filtering (with the wireframe overlay on the edge-function path). Other shadings go
+//! through [`render`](super::render)'s per-pixel code (after the block rejection of the
+//! edge-function path).
 //!
 //! - **Edge functions** ([`edge_triangle`]): the bounding box is walked in blocks of
 //!   [`LANES`] columns by [`BLOCK_ROWS`] rows. The three edge functions at a block's corners
@@ -31,6 +33,7 @@ use super::interpolate::{Interpolation, screen_weights};
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
 use super::setup::{PixelBounds, TriangleSetup, sample_point};
+use super::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
 use super::texture::{
     Filter, MAX_TEXEL_COORD, Texture, Wrap, byte_from_sum, fast_floor, wrap_coord,
 };
@@ -79,12 +82,15 @@ pub struct Target<'a> {
     pub depth: &'a mut [f32],
 }
 
-/// What the lanes can shade: a texture with nearest or bilinear filtering, no wireframe.
+/// What the lanes can shade: a texture with nearest or bilinear filtering, with the
+/// wireframe overlay on the edge-function path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LaneShading {
     pub mode: Interpolation,
     pub filter: Filter,
     pub wrap: Wrap,
+    /// Draw the source triangles' edges (see [`WIRE_WIDTH_PX`]).
+    pub wireframe: bool,
 }
 
 /// The edge functions of a triangle as planes over pixel indices:
@@ -194,27 +200,48 @@ struct Constants {
     depth: [f64; 3],
     u: [f64; 3],
     v: [f64; 3],
+    wire: Option<Wire>,
+}
+
+/// The wireframe test of [`shade`](super::shade::shade): a sample is on a line when, for a
+/// source-triangle vertex `i` whose weight changes on screen (`len_i > 0`), its affine
+/// weight (as `f32`) over `len_i` is below [`WIRE_WIDTH_PX`].
+#[derive(Clone, Copy, Debug)]
+struct Wire {
+    /// `bary[i][k]`: source weight `i` at rasterized vertex `k`.
+    bary: [[f64; 3]; 3],
+    /// `|grad l_i|`, per pixel.
+    len: [f64; 3],
 }
 
 impl Constants {
-    fn new(setup: &TriangleSetup) -> Self {
+    fn new(setup: &TriangleSetup, wireframe: bool) -> Self {
         let uv = setup.v.map(|v| v.varyings.uv());
+        let wire = wireframe.then(|| {
+            let b = setup.v.map(|v| v.varyings.bary());
+            Wire {
+                bary: [0, 1, 2].map(|i| [0, 1, 2].map(|k| f64::from(b[k][i]))),
+                len: setup.source_weight_gradients().map(|g| g.length()),
+            }
+        });
         Self {
             inv_area: 1.0 / setup.area2 as f64,
             inv_w: setup.v.map(|v| v.inv_w),
             depth: setup.v.map(|v| v.depth),
             u: uv.map(|t| f64::from(t.x)),
             v: uv.map(|t| f64::from(t.y)),
+            wire,
         }
     }
 }
 
-/// uv, depth and validity of eight samples.
+/// uv, depth, validity and wireframe hits of eight samples.
 struct Samples {
     u: F32s,
     v: F32s,
     depth: F32s,
     ok: Mask,
+    wire: Mask,
 }
 
 /// From edge values, exactly as `interpolate::fragment` computes them: `l_i = E_i / (2A)`,
@@ -227,6 +254,7 @@ fn from_edges(e: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
         v: [0.0; LANES],
         depth: [0.0; LANES],
         ok: [false; LANES],
+        wire: [false; LANES],
     };
     for k in 0..LANES {
         let l = [
@@ -245,6 +273,13 @@ fn from_edges(e: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
         out.u[k] = (w[0] * c.u[0] + w[1] * c.u[1] + w[2] * c.u[2]) as f32;
         out.v[k] = (w[0] * c.v[0] + w[1] * c.v[1] + w[2] * c.v[2]) as f32;
         out.depth[k] = (l[0] * c.depth[0] + l[1] * c.depth[1] + l[2] * c.depth[2]) as f32;
+        if let Some(wire) = &c.wire {
+            for i in 0..3 {
+                let b = &wire.bary[i];
+                let weight = (l[0] * b[0] + l[1] * b[1] + l[2] * b[2]) as f32;
+                out.wire[k] |= wire.len[i] > 0.0 && f64::from(weight) / wire.len[i] < WIRE_WIDTH_PX;
+            }
+        }
     }
     out
 }
@@ -411,7 +446,7 @@ pub fn edge_triangle(
                 && let Some(sampler) = avx2::VecSampler::new(texture, &sh)
             {
                 // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                unsafe { avx2::edge_triangle(setup, rows, &sampler, sh.mode, target) };
+                unsafe { avx2::edge_triangle(setup, rows, &sampler, &sh, target) };
                 return;
             }
             // SAFETY: as above.
@@ -445,7 +480,7 @@ fn edge_triangle_impl(
     fallback: &mut dyn FnMut(u32, u32, [i64; 3]),
 ) {
     let planes = EdgePlanes::new(setup);
-    let consts = Constants::new(setup);
+    let consts = Constants::new(setup, shading.is_some_and(|s| s.wireframe));
     let sampler = shading.map(|s| Sampler::new(texture, s.filter, s.wrap));
     let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
@@ -488,6 +523,11 @@ fn edge_triangle_impl(
                                 s.ok[k] &= covered[k];
                             }
                             sampler.sample(&s.u, &s.v, &mut colors);
+                            for k in 0..LANES {
+                                if s.wire[k] {
+                                    colors[k] = WIRE_COLOR;
+                                }
+                            }
                             write(target, bx, y, &s, &colors);
                         }
                         None => {
@@ -580,7 +620,9 @@ fn scanline_triangle_impl(
     shading: LaneShading,
     target: &mut Target<'_>,
 ) {
-    let consts = Constants::new(setup);
+    // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
+    // scanline code).
+    let consts = Constants::new(setup, false);
     let sampler = Sampler::new(texture, shading.filter, shading.wrap);
     let mode = shading.mode;
     let dl: [f64; 3] = setup
@@ -615,6 +657,7 @@ fn scanline_triangle_impl(
                 v: [0.0; LANES],
                 depth: [0.0; LANES],
                 ok: [false; LANES],
+                wire: [false; LANES],
             };
             for k in 0..LANES {
                 let l = &lanes[k];
