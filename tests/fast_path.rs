@@ -123,7 +123,12 @@ fn edge_fast_path_is_bit_identical_on_every_sample_scene() {
         let mesh = scene.to_mesh();
         for mode in [Interpolation::Affine, Interpolation::Perspective] {
             for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
-                for shading in [Shading::Texture, Shading::VertexColor, Shading::Depth] {
+                for shading in [
+                    Shading::Texture,
+                    Shading::VertexColor,
+                    Shading::Barycentric,
+                    Shading::Depth,
+                ] {
                     for wireframe in [false, true] {
                         let s = RenderSettings {
                             mode,
@@ -163,14 +168,17 @@ proptest! {
         wrap in 0usize..3,
         which in 0usize..3,
         wireframe in any::<bool>(),
+        shading in 0usize..4,
     ) {
         let (w, h) = (83, 61);
         let mut mesh = ClipMesh {
             vertices: pts.iter().map(|&(x, y, z)| at_window(x, y, z, w, h)).collect(),
             triangles: vec![[0, 1, 2], [3, 4, 5], [0, 2, 4], [5, 3, 1]],
         };
-        for v in &mut mesh.vertices {
+        for (k, v) in mesh.vertices.iter_mut().enumerate() {
             v.uv = v.uv * uv_scale - 0.3;
+            // Colours beyond [0, 1] too, so the clamp to 8 bits is exercised.
+            v.color = glam::Vec3::new(k as f32 * 0.3 - 0.2, 1.0 - k as f32 * 0.25, 0.5);
         }
         let (name, tex) = textures().swap_remove(which);
         let s = RenderSettings {
@@ -180,6 +188,8 @@ proptest! {
             filter: if bilinear { Filter::Bilinear } else { Filter::Nearest },
             wrap: [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat][wrap],
             wireframe,
+            shading: [Shading::Texture, Shading::VertexColor, Shading::Barycentric, Shading::Depth]
+                [shading],
             ..RenderSettings::default()
         };
         assert_edge_identical(&mesh, &tex, &s, name);

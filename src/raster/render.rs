@@ -486,10 +486,19 @@ fn rasterize(
     };
     // The lane path: colour and depth only; texture shading with nearest or bilinear
     // filtering is done in lanes, anything else per pixel (after block rejection).
-    let lane_shading = (params.shading == Shading::Texture
-        && matches!(params.filter, Filter::Nearest | Filter::Bilinear))
-    .then_some(LaneShading {
+    let lane_color = match params.shading {
+        Shading::Texture => matches!(params.filter, Filter::Nearest | Filter::Bilinear)
+            .then_some(lanes::LaneColor::Texture),
+        Shading::VertexColor => Some(lanes::LaneColor::VertexColor),
+        Shading::Barycentric => Some(lanes::LaneColor::Barycentric),
+        Shading::Depth => Some(lanes::LaneColor::Depth(
+            params.depth_range.0,
+            params.depth_range.1,
+        )),
+    };
+    let lane_shading = lane_color.map(|color| LaneShading {
         mode: params.mode,
+        color,
         filter: params.filter,
         wrap: params.wrap,
         wireframe: params.wireframe,
@@ -520,7 +529,9 @@ fn rasterize(
                 }
                 return;
             }
-            (Rasterizer::Scanline, Some(shading)) if !shading.wireframe => {
+            (Rasterizer::Scanline, Some(shading))
+                if !shading.wireframe && shading.color == lanes::LaneColor::Texture =>
+            {
                 let mut target = Target {
                     y0: band.y0,
                     width: band.width,

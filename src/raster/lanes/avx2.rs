@@ -6,8 +6,8 @@
 use std::arch::x86_64::*;
 
 use super::{
-    BLOCK_ROWS, Block, Constants, EdgePlanes, LANES, LaneShading, LaneWrap, Stepped, Target,
-    classify,
+    BLOCK_ROWS, Block, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap, Stepped,
+    Target, classify,
 };
 use crate::raster::interpolate::{Interpolation, screen_weights};
 use crate::raster::project::SUBPIXEL;
@@ -255,11 +255,7 @@ fn dot3(w: &[__m256d; 3], x: [f64; 3]) -> __m256d {
 /// `interpolate::fragment`.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn from_edges4(
-    e: [__m256d; 3],
-    c: &Constants,
-    mode: Interpolation,
-) -> (__m256d, __m256d, __m256d, i32, i32) {
+fn from_edges4(e: [__m256d; 3], c: &Constants, mode: Interpolation, color: LaneColor) -> Four {
     let ia = _mm256_set1_pd(c.inv_area);
     let l = [
         _mm256_mul_pd(e[0], ia),
@@ -301,13 +297,82 @@ fn from_edges4(
             }
         }
     }
-    (
-        dot3(&w, c.u),
-        dot3(&w, c.v),
-        dot3(&l, c.depth),
-        _mm256_movemask_pd(ok),
+    let mut channels = [_mm256_setzero_pd(); 3];
+    if matches!(color, LaneColor::VertexColor | LaneColor::Barycentric) {
+        channels = [0, 1, 2].map(|ch| dot3(&w, c.channels[ch]));
+    }
+    Four {
+        u: dot3(&w, c.u),
+        v: dot3(&w, c.v),
+        depth: dot3(&l, c.depth),
+        ok: _mm256_movemask_pd(ok),
         wire,
+        channels,
+    }
+}
+
+/// What [`from_edges4`] finds for four samples.
+struct Four {
+    u: __m256d,
+    v: __m256d,
+    depth: __m256d,
+    /// Validity and wireframe bits, lane k in bit k.
+    ok: i32,
+    wire: i32,
+    /// Vertex colour or barycentric channels (zero for the other shadings).
+    channels: [__m256d; 3],
+}
+
+/// `unorm8(x)`: `round(clamp(x, 0, 1) * 255)`, half away from zero (NaN gives 0).
+#[inline]
+#[target_feature(enable = "avx2")]
+fn unorm8(x: __m256) -> __m256i {
+    let y = _mm256_mul_ps(
+        _mm256_min_ps(_mm256_max_ps(x, _mm256_setzero_ps()), _mm256_set1_ps(1.0)),
+        _mm256_set1_ps(255.0),
+    );
+    let t = _mm256_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
+    let up = _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_sub_ps(y, t), _mm256_set1_ps(0.5));
+    _mm256_cvttps_epi32(_mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0))))
+}
+
+/// Red, green, blue bytes and an opaque alpha packed into eight RGBA8 lanes.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn pack_opaque(r: __m256i, g: __m256i, b: __m256i) -> __m256i {
+    _mm256_or_si256(
+        _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
+        _mm256_or_si256(
+            _mm256_slli_epi32::<16>(b),
+            _mm256_set1_epi32(0xff00_0000_u32 as i32),
+        ),
     )
+}
+
+/// The colours of the non-texture shadings for eight samples, as `shade` makes them.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
+    match color {
+        LaneColor::Depth(near, far) => {
+            let grey = if far > near {
+                let scale = |d: __m256d| {
+                    _mm256_div_pd(
+                        _mm256_sub_pd(d, _mm256_set1_pd(near)),
+                        _mm256_set1_pd(far - near),
+                    )
+                };
+                unorm8(to_f32(scale(lo.depth), scale(hi.depth)))
+            } else {
+                _mm256_setzero_si256()
+            };
+            pack_opaque(grey, grey, grey)
+        }
+        _ => {
+            let ch = |c: usize| unorm8(to_f32(lo.channels[c], hi.channels[c]));
+            pack_opaque(ch(0), ch(1), ch(2))
+        }
+    }
 }
 
 /// The edge-function lane path (see the parent module), texture shading only.
@@ -315,13 +380,13 @@ fn from_edges4(
 pub(super) fn edge_triangle(
     setup: &TriangleSetup,
     (y_start, y_end): (u32, u32),
-    sampler: &VecSampler<'_>,
+    sampler: Option<&VecSampler<'_>>,
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    let mode = shading.mode;
+    let (mode, color) = (shading.mode, shading.color);
     let planes = EdgePlanes::new(setup);
-    let consts = Constants::new(setup, shading.wireframe);
+    let consts = Constants::new(setup, shading.wireframe, color);
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
     let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
     let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
@@ -368,14 +433,19 @@ pub(super) fn edge_triangle(
                     if covered == 0 {
                         continue;
                     }
-                    let (ul, vl, dl, okl, wl) = from_edges4(lo, &consts, mode);
-                    let (uh, vh, dh, okh, wh) = from_edges4(hi, &consts, mode);
-                    let ok = covered & (okl | (okh << 4));
+                    let lo = from_edges4(lo, &consts, mode, color);
+                    let hi = from_edges4(hi, &consts, mode, color);
+                    let ok = covered & (lo.ok | (hi.ok << 4));
                     if ok == 0 {
                         continue;
                     }
-                    let mut rgba = sample(sampler, to_f32(ul, uh), to_f32(vl, vh));
-                    let wire = wl | (wh << 4);
+                    let mut rgba = match sampler {
+                        Some(sampler) if color == LaneColor::Texture => {
+                            sample(sampler, to_f32(lo.u, hi.u), to_f32(lo.v, hi.v))
+                        }
+                        _ => channel_colors(&lo, &hi, color),
+                    };
+                    let wire = lo.wire | (hi.wire << 4);
                     if wire != 0 {
                         rgba = _mm256_blendv_epi8(
                             rgba,
@@ -384,7 +454,8 @@ pub(super) fn edge_triangle(
                         );
                     }
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
-                    write(target, index, mask_from_bits(ok), to_f32(dl, dh), rgba);
+                    let depth = to_f32(lo.depth, hi.depth);
+                    write(target, index, mask_from_bits(ok), depth, rgba);
                 }
             }
             bx += LANES as u32;
@@ -402,7 +473,7 @@ pub(super) fn scanline_triangle(
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    let consts = Constants::new(setup, false);
+    let consts = Constants::new(setup, false, LaneColor::Texture);
     let dl: [f64; 3] = setup
         .edges
         .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);

@@ -33,7 +33,7 @@ use super::interpolate::{Interpolation, screen_weights};
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
 use super::setup::{PixelBounds, TriangleSetup, sample_point};
-use super::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
+use super::shade::{WIRE_COLOR, WIRE_WIDTH_PX, unorm8};
 use super::texture::{
     Filter, MAX_TEXEL_COORD, Texture, Wrap, byte_from_sum, fast_floor, wrap_coord,
 };
@@ -87,10 +87,24 @@ pub struct Target<'a> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LaneShading {
     pub mode: Interpolation,
+    /// What the colour shows.
+    pub color: LaneColor,
+    /// The texture filter and wrap (used by [`LaneColor::Texture`]).
     pub filter: Filter,
     pub wrap: Wrap,
     /// Draw the source triangles' edges (see [`WIRE_WIDTH_PX`]).
     pub wireframe: bool,
+}
+
+/// The shadings of [`Shading`](super::shade::Shading) the lanes draw (texture lookups with
+/// nearest or bilinear filtering only).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LaneColor {
+    Texture,
+    VertexColor,
+    Barycentric,
+    /// Grey from the window depth, black at `.0` and white at `.1`.
+    Depth(f64, f64),
 }
 
 /// The edge functions of a triangle as planes over pixel indices:
@@ -200,6 +214,8 @@ struct Constants {
     depth: [f64; 3],
     u: [f64; 3],
     v: [f64; 3],
+    /// `channels[c][k]`: channel `c` of vertex `k` for vertex-colour or barycentric shading.
+    channels: [[f64; 3]; 3],
     wire: Option<Wire>,
 }
 
@@ -215,8 +231,17 @@ struct Wire {
 }
 
 impl Constants {
-    fn new(setup: &TriangleSetup, wireframe: bool) -> Self {
+    fn new(setup: &TriangleSetup, wireframe: bool, color: LaneColor) -> Self {
         let uv = setup.v.map(|v| v.varyings.uv());
+        let per_vertex = |f: &dyn Fn(usize) -> [f32; 3]| {
+            let at = [f(0), f(1), f(2)];
+            [0, 1, 2].map(|c| [0, 1, 2].map(|k| f64::from(at[k][c])))
+        };
+        let channels = match color {
+            LaneColor::VertexColor => per_vertex(&|k| setup.v[k].varyings.color().to_array()),
+            LaneColor::Barycentric => per_vertex(&|k| setup.v[k].varyings.bary()),
+            LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
+        };
         let wire = wireframe.then(|| {
             let b = setup.v.map(|v| v.varyings.bary());
             Wire {
@@ -230,18 +255,60 @@ impl Constants {
             depth: setup.v.map(|v| v.depth),
             u: uv.map(|t| f64::from(t.x)),
             v: uv.map(|t| f64::from(t.y)),
+            channels,
             wire,
         }
     }
 }
 
-/// uv, depth, validity and wireframe hits of eight samples.
+/// uv, depth, validity and wireframe hits of eight samples (and the interpolated channels
+/// and the `f64` depth for the shadings that show them).
 struct Samples {
     u: F32s,
     v: F32s,
     depth: F32s,
     ok: Mask,
     wire: Mask,
+    channels: [F32s; 3],
+    depth64: F64s,
+}
+
+impl Samples {
+    fn new() -> Self {
+        Self {
+            u: [0.0; LANES],
+            v: [0.0; LANES],
+            depth: [0.0; LANES],
+            ok: [false; LANES],
+            wire: [false; LANES],
+            channels: [[0.0; LANES]; 3],
+            depth64: [0.0; LANES],
+        }
+    }
+}
+
+/// The colours of the non-texture shadings, as [`shade`](super::shade::shade) makes them.
+#[inline(always)]
+fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
+    for k in 0..LANES {
+        out[k] = match color {
+            LaneColor::Depth(lo, hi) => {
+                let g = if hi > lo {
+                    ((s.depth64[k] - lo) / (hi - lo)) as f32
+                } else {
+                    0.0
+                };
+                let g = unorm8(g);
+                [g, g, g, 255]
+            }
+            _ => [
+                unorm8(s.channels[0][k]),
+                unorm8(s.channels[1][k]),
+                unorm8(s.channels[2][k]),
+                255,
+            ],
+        };
+    }
 }
 
 /// From edge values, exactly as `interpolate::fragment` computes them: `l_i = E_i / (2A)`,
@@ -249,13 +316,7 @@ struct Samples {
 /// `depth = sum l_i d_i`; a sample is valid when `sum q` is positive and finite.
 #[inline(always)]
 fn from_edges(e: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
-    let mut out = Samples {
-        u: [0.0; LANES],
-        v: [0.0; LANES],
-        depth: [0.0; LANES],
-        ok: [false; LANES],
-        wire: [false; LANES],
-    };
+    let mut out = Samples::new();
     for k in 0..LANES {
         let l = [
             e[0][k] * c.inv_area,
@@ -272,7 +333,12 @@ fn from_edges(e: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
         };
         out.u[k] = (w[0] * c.u[0] + w[1] * c.u[1] + w[2] * c.u[2]) as f32;
         out.v[k] = (w[0] * c.v[0] + w[1] * c.v[1] + w[2] * c.v[2]) as f32;
-        out.depth[k] = (l[0] * c.depth[0] + l[1] * c.depth[1] + l[2] * c.depth[2]) as f32;
+        out.depth64[k] = l[0] * c.depth[0] + l[1] * c.depth[1] + l[2] * c.depth[2];
+        out.depth[k] = out.depth64[k] as f32;
+        for ch in 0..3 {
+            let x = &c.channels[ch];
+            out.channels[ch][k] = (w[0] * x[0] + w[1] * x[1] + w[2] * x[2]) as f32;
+        }
         if let Some(wire) = &c.wire {
             for i in 0..3 {
                 let b = &wire.bary[i];
@@ -442,12 +508,13 @@ pub fn edge_triangle(
     #[cfg(target_arch = "x86_64")]
     {
         if vector_path() {
-            if let Some(sh) = shading
-                && let Some(sampler) = avx2::VecSampler::new(texture, &sh)
-            {
-                // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                unsafe { avx2::edge_triangle(setup, rows, &sampler, &sh, target) };
-                return;
+            if let Some(sh) = shading {
+                let sampler = avx2::VecSampler::new(texture, &sh);
+                if sh.color != LaneColor::Texture || sampler.is_some() {
+                    // SAFETY: the CPU supports AVX2, checked by `vector_path`.
+                    unsafe { avx2::edge_triangle(setup, rows, sampler.as_ref(), &sh, target) };
+                    return;
+                }
             }
             // SAFETY: as above.
             unsafe { edge_triangle_avx2(setup, rows, texture, shading, target, fallback) };
@@ -480,7 +547,8 @@ fn edge_triangle_impl(
     fallback: &mut dyn FnMut(u32, u32, [i64; 3]),
 ) {
     let planes = EdgePlanes::new(setup);
-    let consts = Constants::new(setup, shading.is_some_and(|s| s.wireframe));
+    let color = shading.map_or(LaneColor::Texture, |s| s.color);
+    let consts = Constants::new(setup, shading.is_some_and(|s| s.wireframe), color);
     let sampler = shading.map(|s| Sampler::new(texture, s.filter, s.wrap));
     let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
@@ -522,7 +590,10 @@ fn edge_triangle_impl(
                             for k in 0..LANES {
                                 s.ok[k] &= covered[k];
                             }
-                            sampler.sample(&s.u, &s.v, &mut colors);
+                            match color {
+                                LaneColor::Texture => sampler.sample(&s.u, &s.v, &mut colors),
+                                _ => channel_colors(&s, color, &mut colors),
+                            }
                             for k in 0..LANES {
                                 if s.wire[k] {
                                     colors[k] = WIRE_COLOR;
@@ -622,7 +693,7 @@ fn scanline_triangle_impl(
 ) {
     // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
     // scanline code).
-    let consts = Constants::new(setup, false);
+    let consts = Constants::new(setup, false, LaneColor::Texture);
     let sampler = Sampler::new(texture, shading.filter, shading.wrap);
     let mode = shading.mode;
     let dl: [f64; 3] = setup
@@ -652,13 +723,7 @@ fn scanline_triangle_impl(
         let mut x = x0;
         while x <= x1 {
             let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
-            let mut s = Samples {
-                u: [0.0; LANES],
-                v: [0.0; LANES],
-                depth: [0.0; LANES],
-                ok: [false; LANES],
-                wire: [false; LANES],
-            };
+            let mut s = Samples::new();
             for k in 0..LANES {
                 let l = &lanes[k];
                 s.ok[k] = k < lanes_in && l.inv_w > 0.0 && l.inv_w < f64::INFINITY;
