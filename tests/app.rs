@@ -348,3 +348,42 @@ fn scrolling_on_a_handle_pushes_the_corner_away_along_its_ray() {
     // one changed.
     assert_eq!(after[0].w(), before[0].w());
 }
+
+#[test]
+fn the_rasterizer_can_be_chosen_and_covers_the_same_pixels() {
+    use barylab::raster::render::Rasterizer;
+    let mut h = harness();
+    let covered = |h: &Harness<'_, BaryApp>| {
+        let out = h.state().canvas().output.as_ref().expect("rendered");
+        let f = &out.renders[0].1.frame;
+        (0..f.height)
+            .flat_map(|y| (0..f.width).map(move |x| (x, y)))
+            .map(|(x, y)| f.covered(x, y))
+            .collect::<Vec<bool>>()
+    };
+    let (edge_colors, edge_covered) = (colors(&h), covered(&h));
+    assert!(edge_covered.iter().filter(|&&c| c).count() > edge_covered.len() / 10);
+    let renders = h.state().canvas().timing.renders;
+    h.get_by_label("Scanline").click();
+    h.run();
+    assert_eq!(h.state().state().view.rasterizer, Rasterizer::Scanline);
+    assert!(
+        h.state().canvas().timing.renders > renders,
+        "not rendered again"
+    );
+    assert!(covered(&h) == edge_covered, "coverage differs");
+    let scan_colors = colors(&h);
+    let differing = scan_colors
+        .iter()
+        .zip(&edge_colors)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        differing * 200 <= edge_colors.len(),
+        "{differing} colours differ"
+    );
+    assert!(h.query_by_label_contains("render (scanline)").is_some());
+    h.get_by_label("Edge functions").click();
+    h.run();
+    assert!(colors(&h) == edge_colors);
+}

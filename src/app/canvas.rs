@@ -63,6 +63,7 @@ pub struct View {
 struct RenderKey {
     scene: Scene,
     modes: Vec<Interpolation>,
+    rasterizer: crate::raster::render::Rasterizer,
     texture: (String, Option<std::path::PathBuf>),
 }
 
@@ -111,8 +112,15 @@ enum DragKind {
     Wipe,
 }
 
-/// What one cached render depends on: the sized scene, the mode, the texture, the buffers.
-type RenderCacheKey = (Scene, Interpolation, TextureKey, Buffers);
+/// What one cached render depends on: the sized scene, the mode, the texture, the buffers,
+/// the rasterizer.
+type RenderCacheKey = (
+    Scene,
+    Interpolation,
+    TextureKey,
+    Buffers,
+    crate::raster::render::Rasterizer,
+);
 
 /// A texture's name and the folder it is resolved against.
 pub type TextureKey = (String, Option<std::path::PathBuf>);
@@ -246,6 +254,7 @@ impl CanvasState {
         let key = RenderKey {
             scene,
             modes,
+            rasterizer: state.view.rasterizer,
             texture: texture_key,
         };
         if self.key.as_ref() == Some(&key) {
@@ -264,12 +273,22 @@ impl CanvasState {
         let mut renders = Vec::new();
         let mut rendered = false;
         for &mode in &key.modes {
-            let one = (key.scene.clone(), mode, key.texture.clone(), buffers);
+            let one = (
+                key.scene.clone(),
+                mode,
+                key.texture.clone(),
+                buffers,
+                key.rasterizer,
+            );
             if let Some((_, r)) = self.cache.iter().find(|(k, _)| *k == one) {
                 renders.push((mode, r.clone()));
                 continue;
             }
-            let settings = crate::raster::RenderSettings { mode, ..base };
+            let settings = crate::raster::RenderSettings {
+                mode,
+                rasterizer: key.rasterizer,
+                ..base
+            };
             let mut frame = self
                 .spare
                 .take()

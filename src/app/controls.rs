@@ -31,6 +31,9 @@ pub mod text {
     pub const BILINEAR: &str = "Bilinear";
     pub const TRILINEAR: &str = "Trilinear";
     pub const WIREFRAME: &str = "Wireframe (edges + diagonal)";
+    pub const RASTERIZER: &str = "Rasterizer";
+    pub const EDGE_FUNCTIONS: &str = "Edge functions";
+    pub const SCANLINE: &str = "Scanline";
     pub const PIXELS: &str = "Pixels";
     pub const PIXEL_SIZE: &str = "Pixel size";
     pub const GRID: &str = "Pixel grid and sample points";
@@ -92,6 +95,12 @@ pub mod tips {
     pub const TRILINEAR: &str = "GL_LINEAR_MIPMAP_LINEAR: bilinear in the two mipmap levels \
         around the level of detail (from the uv change across the 2x2 pixel quad), blended. \
         Compare with bilinear on a far-away checkerboard: the moiré goes away.";
+    pub const EDGE_FUNCTIONS: &str = "Every pixel of the triangle's bounding box (in 8x8 blocks, \
+        whole blocks rejected or accepted at once) is tested against the three edge functions \
+        and interpolated from its own weights. The inspector shows exactly these numbers.";
+    pub const SCANLINE: &str = "Per row, the covered span is found from the edges, and u/w, v/w, \
+        1/w are stepped by one addition per pixel (seed 001, section 6). Same pixels covered; \
+        values equal up to rounding. The inspector still shows the edge-function derivation.";
     pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
         thresholding the smallest weight. Key: W";
     pub const PIXEL_SIZE: &str = "Render at a lower resolution and magnify, so each rendered pixel \
@@ -217,6 +226,26 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
     {
         out.push(Command::SetWireframe(wire));
     }
+    ui.horizontal(|ui| {
+        use crate::raster::render::Rasterizer;
+        ui.label(text::RASTERIZER);
+        for (r, label, tip) in [
+            (
+                Rasterizer::EdgeFunction,
+                text::EDGE_FUNCTIONS,
+                tips::EDGE_FUNCTIONS,
+            ),
+            (Rasterizer::Scanline, text::SCANLINE, tips::SCANLINE),
+        ] {
+            if ui
+                .selectable_label(view.rasterizer == r, label)
+                .on_hover_text(tip)
+                .clicked()
+            {
+                out.push(Command::SetRasterizer(r));
+            }
+        }
+    });
 
     section(ui, text::PIXELS);
     let mut px = view.pixel_size;

@@ -57,6 +57,9 @@ pub struct ViewSettings {
     pub pinned: Option<[u32; 2]>,
     /// UI zoom factor (text and widgets), for projectors.
     pub ui_scale: f32,
+    /// Which rasterizer draws the canvas (both give the same coverage; the inspector follows
+    /// the edge-function derivation).
+    pub rasterizer: crate::raster::render::Rasterizer,
 }
 
 impl Default for ViewSettings {
@@ -72,6 +75,7 @@ impl Default for ViewSettings {
             show_inspector: true,
             pinned: None,
             ui_scale: 1.0,
+            rasterizer: Default::default(),
         }
     }
 }
@@ -192,6 +196,7 @@ pub enum Command {
     SetShading(Shading),
     SetFilter(Filter),
     SetWireframe(bool),
+    SetRasterizer(crate::raster::render::Rasterizer),
     SetCompare(Compare),
     SetWipe(f32),
     SetPixelSize(u32),
@@ -302,6 +307,7 @@ impl AppState {
                 options.wireframe = w;
                 edit::set_options(&mut self.scene, options);
             }
+            Command::SetRasterizer(r) => self.view.rasterizer = r,
             Command::SetCompare(c) => self.view.compare = c,
             Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),
             Command::SetPixelSize(p) => {

@@ -11,6 +11,8 @@ mod text {
     pub const CANVAS: &str = "canvas";
     pub const AT: &str = "at";
     pub const RENDER: &str = "render";
+    pub const EDGE: &str = "edge functions";
+    pub const SCANLINE: &str = "scanline";
     pub const UPLOAD: &str = "upload";
     pub const UI: &str = "ui";
     pub const FRAME: &str = "frame";
@@ -80,9 +82,14 @@ pub fn status_ui(
         let frame = timing
             .frame_ms
             .map_or_else(|| "–".to_string(), |f| format!("{f:.1} ms"));
+        let rasterizer = match state.view.rasterizer {
+            crate::raster::render::Rasterizer::EdgeFunction => text::EDGE,
+            crate::raster::render::Rasterizer::Scanline => text::SCANLINE,
+        };
         ui.label(format!(
-            "{} {:.1} ms · {} {:.1} ms · {} {:.1} ms · {} {}",
+            "{} ({}) {:.1} ms · {} {:.1} ms · {} {:.1} ms · {} {}",
             text::RENDER,
+            rasterizer,
             t.render_ms,
             text::UPLOAD,
             t.upload_ms,
