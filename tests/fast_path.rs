@@ -6,7 +6,7 @@
 
 mod common;
 
-use barylab::raster::lanes::set_vector_path;
+use barylab::raster::lanes::{VectorLevel, set_vector_level};
 use barylab::raster::render::{ClipMesh, Rasterizer, RenderSettings, render, render_into};
 use barylab::raster::{
     Buffers, BuiltinTexture, Filter, Framebuffer, Interpolation, Shading, Texture, Wrap,
@@ -45,10 +45,14 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
     let reference = render(mesh, tex, s).expect("render").frame;
     // A reused framebuffer of another size and content: fully reset by render_into.
     let mut frame = Framebuffer::new(3, 5, [1, 2, 3, 4]);
-    for vector in [true, false] {
-        set_vector_path(vector);
+    for vector in [
+        VectorLevel::Avx512,
+        VectorLevel::Avx2,
+        VectorLevel::Portable,
+    ] {
+        set_vector_level(vector);
         fast(mesh, tex, s, &mut frame);
-        set_vector_path(true);
+        set_vector_level(VectorLevel::Avx512);
         assert_eq!(
             (frame.width, frame.height),
             (reference.width, reference.height)
@@ -69,7 +73,7 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
             });
         assert_eq!(
             bad, None,
-            "{what}, vector path {vector}: (x, y, fast, reference)"
+            "{what}, vector level {vector:?}: (x, y, fast, reference)"
         );
     }
 }
@@ -82,10 +86,14 @@ fn assert_scanline_close(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
         rasterizer: Rasterizer::Scanline,
         ..*s
     };
-    for vector in [true, false] {
-        set_vector_path(vector);
+    for vector in [
+        VectorLevel::Avx512,
+        VectorLevel::Avx2,
+        VectorLevel::Portable,
+    ] {
+        set_vector_level(vector);
         fast(mesh, tex, &scan, &mut frame);
-        set_vector_path(true);
+        set_vector_level(VectorLevel::Avx512);
         let mut differing = 0;
         for i in 0..reference.color.len() {
             let (x, y) = (i as u32 % frame.width, i as u32 / frame.width);
@@ -100,7 +108,7 @@ fn assert_scanline_close(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
         }
         assert!(
             differing * 200 <= reference.color.len(),
-            "{what}, vector path {vector}: {differing} colours differ"
+            "{what}, vector level {vector:?}: {differing} colours differ"
         );
     }
 }

@@ -18,7 +18,7 @@ use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
 /// A wrap mode the vector path can apply: `Mask(size - 1)` or `Clamp(size - 1)`.
 #[derive(Clone, Copy)]
-enum VecWrap {
+pub(super) enum VecWrap {
     Mask(i32),
     Clamp(i32),
 }
@@ -35,11 +35,13 @@ impl VecWrap {
 
 /// The texture's base level for vector lookups.
 pub(super) struct VecSampler<'a> {
-    texels: &'a [[u8; 4]],
-    width: i32,
-    size: (f32, f32),
-    wrap: (VecWrap, VecWrap),
-    filter: Filter,
+    pub(super) texels: &'a [[u8; 4]],
+    pub(super) width: i32,
+    /// `log2(width)` when the width is a power of two (row offsets by a shift).
+    pub(super) width_shift: Option<i32>,
+    pub(super) size: (f32, f32),
+    pub(super) wrap: (VecWrap, VecWrap),
+    pub(super) filter: Filter,
 }
 
 impl<'a> VecSampler<'a> {
@@ -49,6 +51,7 @@ impl<'a> VecSampler<'a> {
         Some(Self {
             texels: texture.base_texels(),
             width: w as i32,
+            width_shift: w.is_power_of_two().then_some(w.trailing_zeros() as i32),
             size: (w as f32, h as f32),
             wrap: (
                 VecWrap::new(LaneWrap::new(w, shading.wrap))?,
@@ -101,7 +104,11 @@ fn wrap(i: __m256i, w: VecWrap) -> __m256i {
 #[inline]
 #[target_feature(enable = "avx2")]
 fn gather(s: &VecSampler<'_>, i: __m256i, j: __m256i) -> __m256i {
-    let index = _mm256_add_epi32(_mm256_mullo_epi32(j, _mm256_set1_epi32(s.width)), i);
+    let row = match s.width_shift {
+        Some(k) => _mm256_sll_epi32(j, _mm_cvtsi32_si128(k)),
+        None => _mm256_mullo_epi32(j, _mm256_set1_epi32(s.width)),
+    };
+    let index = _mm256_add_epi32(row, i);
     debug_assert!(s.texels.len() <= i32::MAX as usize);
     // SAFETY: `wrap` put i in 0..width and j in 0..height, so every index is below
     // width * height = texels.len(); a texel is 4 bytes, read as one i32.
@@ -201,6 +208,81 @@ fn sample(s: &VecSampler<'_>, u: __m256, v: __m256) -> __m256i {
             )
         }
     }
+}
+
+/// A chunk of eight pixels whose colours are still to be looked up.
+struct Pending {
+    u: __m256,
+    v: __m256,
+    depth: __m256,
+    /// Lanes to write.
+    valid: __m256i,
+    /// Lanes on a wireframe line.
+    wire: i32,
+    /// Buffer index of lane 0.
+    index: usize,
+}
+
+/// Texture lookups of chunks: one at a time with AVX2, or two at a time with AVX-512.
+struct Lookups<'s, 'a> {
+    sampler: &'s VecSampler<'a>,
+    wide: bool,
+    pending: Option<Pending>,
+}
+
+impl<'s, 'a> Lookups<'s, 'a> {
+    fn new(sampler: &'s VecSampler<'a>, wide: bool) -> Self {
+        Self {
+            sampler,
+            // Measured: pairs pay for bilinear filtering (four lookups), not for nearest.
+            wide: wide && sampler.filter != Filter::Nearest,
+            pending: None,
+        }
+    }
+
+    /// Shades and writes `chunk`, now or together with the next one.
+    #[target_feature(enable = "avx2")]
+    fn push(&mut self, target: &mut Target<'_>, chunk: Pending) {
+        if !self.wide {
+            let rgba = sample(self.sampler, chunk.u, chunk.v);
+            finish(target, &chunk, rgba);
+            return;
+        }
+        match self.pending.take() {
+            None => self.pending = Some(chunk),
+            Some(first) => {
+                // SAFETY: `wide` is set only when the CPU has AVX-512 F and BW (`wide_path`).
+                let (a, b) = unsafe {
+                    super::avx512::sample16(self.sampler, (first.u, first.v), (chunk.u, chunk.v))
+                };
+                finish(target, &first, a);
+                finish(target, &chunk, b);
+            }
+        }
+    }
+
+    /// Shades and writes a chunk still waiting for a partner.
+    #[target_feature(enable = "avx2")]
+    fn flush(&mut self, target: &mut Target<'_>) {
+        if let Some(chunk) = self.pending.take() {
+            let rgba = sample(self.sampler, chunk.u, chunk.v);
+            finish(target, &chunk, rgba);
+        }
+    }
+}
+
+/// Paints the wireframe over a chunk's colours and writes it.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
+    if chunk.wire != 0 {
+        rgba = _mm256_blendv_epi8(
+            rgba,
+            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
+            mask_from_bits(chunk.wire),
+        );
+    }
+    write(target, chunk.index, chunk.valid, chunk.depth, rgba);
 }
 
 /// Depth-tests and writes eight pixels starting at buffer index `index` of the band; lanes
@@ -381,10 +463,12 @@ pub(super) fn edge_triangle(
     setup: &TriangleSetup,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,
+    wide: bool,
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
     let (mode, color) = (shading.mode, shading.color);
+    let mut lookups = sampler.map(|s| Lookups::new(s, wide));
     let planes = EdgePlanes::new(setup);
     let consts = Constants::new(setup, shading.wireframe, color);
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
@@ -439,28 +523,26 @@ pub(super) fn edge_triangle(
                     if ok == 0 {
                         continue;
                     }
-                    let mut rgba = match sampler {
-                        Some(sampler) if color == LaneColor::Texture => {
-                            sample(sampler, to_f32(lo.u, hi.u), to_f32(lo.v, hi.v))
-                        }
-                        _ => channel_colors(&lo, &hi, color),
+                    let chunk = Pending {
+                        u: to_f32(lo.u, hi.u),
+                        v: to_f32(lo.v, hi.v),
+                        depth: to_f32(lo.depth, hi.depth),
+                        valid: mask_from_bits(ok),
+                        wire: lo.wire | (hi.wire << 4),
+                        index: (y - target.y0) as usize * target.width as usize + bx as usize,
                     };
-                    let wire = lo.wire | (hi.wire << 4);
-                    if wire != 0 {
-                        rgba = _mm256_blendv_epi8(
-                            rgba,
-                            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
-                            mask_from_bits(wire),
-                        );
+                    match lookups.as_mut() {
+                        Some(l) if color == LaneColor::Texture => l.push(target, chunk),
+                        _ => finish(target, &chunk, channel_colors(&lo, &hi, color)),
                     }
-                    let index = (y - target.y0) as usize * target.width as usize + bx as usize;
-                    let depth = to_f32(lo.depth, hi.depth);
-                    write(target, index, mask_from_bits(ok), depth, rgba);
                 }
             }
             bx += LANES as u32;
         }
         by = by_end + 1;
+    }
+    if let Some(l) = lookups.as_mut() {
+        l.flush(target);
     }
 }
 
@@ -470,9 +552,11 @@ pub(super) fn scanline_triangle(
     setup: &TriangleSetup,
     (y_start, y_end): (u32, u32),
     sampler: &VecSampler<'_>,
+    wide: bool,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
+    let mut lookups = Lookups::new(sampler, wide);
     let consts = Constants::new(setup, false, LaneColor::Texture);
     let dl: [f64; 3] = setup
         .edges
@@ -539,9 +623,15 @@ pub(super) fn scanline_triangle(
             if ok != 0 {
                 let u = to_f32(uv[0][0], uv[1][0]);
                 let v = to_f32(uv[0][1], uv[1][1]);
-                let rgba = sample(sampler, u, v);
-                let depth = to_f32(vals[0][3], vals[1][3]);
-                write(target, row + x as usize, mask_from_bits(ok), depth, rgba);
+                let chunk = Pending {
+                    u,
+                    v,
+                    depth: to_f32(vals[0][3], vals[1][3]),
+                    valid: mask_from_bits(ok),
+                    wire: 0,
+                    index: row + x as usize,
+                };
+                lookups.push(target, chunk);
             }
             for half in vals.iter_mut() {
                 for (q, s) in half.iter_mut().zip(&step8) {
@@ -551,4 +641,5 @@ pub(super) fn scanline_triangle(
             x += LANES as u32;
         }
     }
+    lookups.flush(target);
 }

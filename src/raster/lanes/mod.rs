@@ -20,14 +20,17 @@
 //!   perspective-correct uv is `(u/w) * (1 / (1/w))`, one division per pixel. Coverage is
 //!   identical to the edge-function path; values agree up to floating-point rounding.
 //!
-//! The lane loops are plain arrays that the compiler turns into SIMD; on x86-64 with AVX2
-//! they are compiled a second time with AVX2 enabled and chosen at run time. No fused
-//! multiply-add is enabled, so both builds round identically.
+//! Three builds of the same arithmetic, chosen at run time ([`VectorLevel`]): AVX2 intrinsics
+//! (`avx2.rs`), with bilinear texture lookups of two chunks (sixteen pixels) at once in
+//! AVX-512 when the CPU has it (`avx512.rs`), and portable lane code (plain arrays,
+//! compiled with AVX2 enabled where available). No fused multiply-add is used anywhere, so
+//! every build rounds identically; `tests/fast_path.rs` compares them all with the full
+//! render.
 
 // Lane code indexes several parallel arrays by the lane number; iterators would hide that.
 #![allow(clippy::needless_range_loop)]
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicU8, Ordering};
 
 use super::interpolate::{Interpolation, screen_weights};
 use super::project::SUBPIXEL;
@@ -40,20 +43,42 @@ use super::texture::{
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
+#[cfg(target_arch = "x86_64")]
+mod avx512;
 
-/// Whether the AVX2 intrinsics path may be used (when the CPU has AVX2).
-static VECTOR_PATH: AtomicBool = AtomicBool::new(true);
+/// The instruction sets the lane paths may use (each also needs the CPU to have it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum VectorLevel {
+    /// The portable lane code only.
+    Portable = 0,
+    /// AVX2 intrinsics.
+    Avx2 = 1,
+    /// AVX2, with texture lookups of sixteen pixels at once in AVX-512.
+    Avx512 = 2,
+}
 
-/// Allows or forbids the AVX2 intrinsics path; with it forbidden the portable lane code runs.
-/// Both give the same pixels (tests switch it to compare them).
-pub fn set_vector_path(enabled: bool) {
-    VECTOR_PATH.store(enabled, Ordering::Relaxed);
+/// The highest [`VectorLevel`] allowed (the default: all).
+static VECTOR_LEVEL: AtomicU8 = AtomicU8::new(VectorLevel::Avx512 as u8);
+
+/// Limits the instruction sets the lane paths use. Every level gives the same pixels; tests
+/// switch levels to compare them.
+pub fn set_vector_level(level: VectorLevel) {
+    VECTOR_LEVEL.store(level as u8, Ordering::Relaxed);
 }
 
 /// Whether the AVX2 intrinsics path is allowed and the CPU has AVX2.
 #[cfg(target_arch = "x86_64")]
 fn vector_path() -> bool {
-    VECTOR_PATH.load(Ordering::Relaxed) && std::arch::is_x86_feature_detected!("avx2")
+    VECTOR_LEVEL.load(Ordering::Relaxed) >= VectorLevel::Avx2 as u8
+        && std::arch::is_x86_feature_detected!("avx2")
+}
+
+/// Whether the AVX-512 texture lookups are allowed and the CPU has AVX-512 F and BW.
+#[cfg(target_arch = "x86_64")]
+fn wide_path() -> bool {
+    VECTOR_LEVEL.load(Ordering::Relaxed) >= VectorLevel::Avx512 as u8
+        && std::arch::is_x86_feature_detected!("avx512f")
+        && std::arch::is_x86_feature_detected!("avx512bw")
 }
 
 /// Pixels processed together along a row.
@@ -512,7 +537,9 @@ pub fn edge_triangle(
                 let sampler = avx2::VecSampler::new(texture, &sh);
                 if sh.color != LaneColor::Texture || sampler.is_some() {
                     // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                    unsafe { avx2::edge_triangle(setup, rows, sampler.as_ref(), &sh, target) };
+                    unsafe {
+                        avx2::edge_triangle(setup, rows, sampler.as_ref(), wide_path(), &sh, target)
+                    };
                     return;
                 }
             }
@@ -631,7 +658,16 @@ pub fn scanline_triangle(
         if vector_path() {
             if let Some(sampler) = avx2::VecSampler::new(texture, &shading) {
                 // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                unsafe { avx2::scanline_triangle(setup, rows, &sampler, shading.mode, target) };
+                unsafe {
+                    avx2::scanline_triangle(
+                        setup,
+                        rows,
+                        &sampler,
+                        wide_path(),
+                        shading.mode,
+                        target,
+                    )
+                };
                 return;
             }
             // SAFETY: as above.

@@ -1,0 +1,173 @@
+//! The texture lookup of the AVX2 lane paths for sixteen pixels at once (two eight-pixel
+//! chunks), with AVX-512: the same operations in the same order as `avx2::sample`, so the
+//! same bytes; used when the CPU has AVX-512 F and BW.
+
+use std::arch::x86_64::*;
+
+use super::avx2::{VecSampler, VecWrap};
+use crate::raster::texture::{Filter, MAX_TEXEL_COORD};
+
+/// `(floor(clamp(x)) as i32, floor(clamp(x)))` with NaN giving index 0, as `texel_floor`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn floor_coord(x: __m512) -> (__m512i, __m512) {
+    let ordered = _mm512_cmp_ps_mask::<_CMP_ORD_Q>(x, x);
+    let xc = _mm512_min_ps(
+        _mm512_max_ps(x, _mm512_set1_ps(-MAX_TEXEL_COORD)),
+        _mm512_set1_ps(MAX_TEXEL_COORD),
+    );
+    let f = _mm512_roundscale_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(xc);
+    (_mm512_maskz_cvttps_epi32(ordered, f), f)
+}
+
+/// `clamp(x - floor, 0, 1)` where x is finite, else 0 (the bilinear fraction).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn fraction(x: __m512, floor: __m512) -> __m512 {
+    let finite = _mm512_cmp_ps_mask::<_CMP_EQ_OQ>(_mm512_sub_ps(x, x), _mm512_setzero_ps());
+    let t = _mm512_min_ps(
+        _mm512_max_ps(_mm512_sub_ps(x, floor), _mm512_setzero_ps()),
+        _mm512_set1_ps(1.0),
+    );
+    _mm512_maskz_mov_ps(finite, t)
+}
+
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn wrap(i: __m512i, w: VecWrap) -> __m512i {
+    match w {
+        VecWrap::Mask(m) => _mm512_and_si512(i, _mm512_set1_epi32(m)),
+        VecWrap::Clamp(hi) => _mm512_min_epi32(
+            _mm512_max_epi32(i, _mm512_setzero_si512()),
+            _mm512_set1_epi32(hi),
+        ),
+    }
+}
+
+/// Sixteen texels at wrapped indices (each within the texture, so every read is in bounds).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn gather(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> __m512i {
+    let row = match s.width_shift {
+        Some(k) => _mm512_sll_epi32(j, _mm_cvtsi32_si128(k)),
+        None => _mm512_mullo_epi32(j, _mm512_set1_epi32(s.width)),
+    };
+    let index = _mm512_add_epi32(row, i);
+    // SAFETY: `wrap` put i in 0..width and j in 0..height, so every index is below
+    // width * height = texels.len(); a texel is 4 bytes, read as one i32.
+    unsafe { _mm512_i32gather_epi32::<4>(index, s.texels.as_ptr().cast::<i32>()) }
+}
+
+/// Channel `C` (0 = red) of sixteen packed texels, as f32 in 0..255.
+#[inline]
+#[target_feature(enable = "avx512f,avx512bw")]
+fn channel<const C: i32>(t: __m512i) -> __m512 {
+    let pick = |n: i32| (4 * n + C) | 0x8080_8000_u32 as i32;
+    let mask = _mm512_setr_epi32(
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+    );
+    _mm512_cvtepi32_ps(_mm512_shuffle_epi8(t, mask))
+}
+
+/// `round(x)` half away from zero for a bilinear sum in [0, 255.001] (see `avx2`).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn byte_from_sum(y: __m512) -> __m512i {
+    let t = _mm512_roundscale_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
+    let up = _mm512_cmp_ps_mask::<_CMP_GE_OQ>(_mm512_sub_ps(y, t), _mm512_set1_ps(0.5));
+    _mm512_cvttps_epi32(_mm512_mask_add_ps(t, up, t, _mm512_set1_ps(1.0)))
+}
+
+/// `sum_k weight_k * channel_k`, left to right, rounded to a byte.
+#[inline]
+#[target_feature(enable = "avx512f,avx512bw")]
+fn weighted<const C: i32>(weights: &[__m512; 4], texels: &[__m512i; 4]) -> __m512i {
+    let mut sum = _mm512_mul_ps(weights[0], channel::<C>(texels[0]));
+    for k in 1..4 {
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(weights[k], channel::<C>(texels[k])));
+    }
+    byte_from_sum(sum)
+}
+
+/// The packed RGBA8 colours at sixteen uv (lanes 0..8 from `first`, 8..16 from `second`),
+/// as `avx2::sample` gives them for each half.
+#[target_feature(enable = "avx512f,avx512bw,avx2")]
+pub(super) fn sample16(
+    s: &VecSampler<'_>,
+    (u0, v0): (__m256, __m256),
+    (u1, v1): (__m256, __m256),
+) -> (__m256i, __m256i) {
+    let join = |a: __m256, b: __m256| {
+        _mm512_castsi512_ps(_mm512_inserti64x4::<1>(
+            _mm512_castsi256_si512(_mm256_castps_si256(a)),
+            _mm256_castps_si256(b),
+        ))
+    };
+    let (u, v) = (join(u0, u1), join(v0, v1));
+    let (w, h) = (_mm512_set1_ps(s.size.0), _mm512_set1_ps(s.size.1));
+    let packed = match s.filter {
+        Filter::Nearest => {
+            let i = wrap(floor_coord(_mm512_mul_ps(u, w)).0, s.wrap.0);
+            let j = wrap(floor_coord(_mm512_mul_ps(v, h)).0, s.wrap.1);
+            gather(s, i, j)
+        }
+        _ => {
+            let half = _mm512_set1_ps(0.5);
+            let x = _mm512_sub_ps(_mm512_mul_ps(u, w), half);
+            let y = _mm512_sub_ps(_mm512_mul_ps(v, h), half);
+            let (i0, fx) = floor_coord(x);
+            let (j0, fy) = floor_coord(y);
+            let (a, b) = (fraction(x, fx), fraction(y, fy));
+            let one = _mm512_set1_epi32(1);
+            let (ia, ib) = (
+                wrap(i0, s.wrap.0),
+                wrap(_mm512_add_epi32(i0, one), s.wrap.0),
+            );
+            let (ja, jb) = (
+                wrap(j0, s.wrap.1),
+                wrap(_mm512_add_epi32(j0, one), s.wrap.1),
+            );
+            let texels = [
+                gather(s, ia, ja),
+                gather(s, ib, ja),
+                gather(s, ia, jb),
+                gather(s, ib, jb),
+            ];
+            let ones = _mm512_set1_ps(1.0);
+            let (oa, ob) = (_mm512_sub_ps(ones, a), _mm512_sub_ps(ones, b));
+            let weights = [
+                _mm512_mul_ps(oa, ob),
+                _mm512_mul_ps(a, ob),
+                _mm512_mul_ps(oa, b),
+                _mm512_mul_ps(a, b),
+            ];
+            let r = weighted::<0>(&weights, &texels);
+            let g = weighted::<1>(&weights, &texels);
+            let b = weighted::<2>(&weights, &texels);
+            let a = weighted::<3>(&weights, &texels);
+            _mm512_or_si512(
+                _mm512_or_si512(r, _mm512_slli_epi32::<8>(g)),
+                _mm512_or_si512(_mm512_slli_epi32::<16>(b), _mm512_slli_epi32::<24>(a)),
+            )
+        }
+    };
+    (
+        _mm512_castsi512_si256(packed),
+        _mm512_extracti64x4_epi64::<1>(packed),
+    )
+}
