@@ -8,7 +8,10 @@
 
 use std::time::Instant;
 
-use barylab::raster::{ClipMesh, Filter, Interpolation, Texture, Wrap};
+use std::path::Path;
+
+use barylab::raster::{ClipMesh, Filter, Interpolation, Shading, Texture, Wrap};
+use barylab::scene::Scene;
 use glow::HasContext;
 use khronos_egl as egl;
 
@@ -271,9 +274,11 @@ impl Llvmpipe {
         };
         let out = OUTPUTS.iter().position(|&x| x == output).unwrap_or(0);
         let vs_src = VERTEX_SHADER.replace("QUALIFIER", qualifier);
-        let fs_src = FRAGMENT_SHADER
-            .replace("QUALIFIER", qualifier)
-            .replacen("\n", &format!("\n#define OUTPUT {out}\n"), 1);
+        let fs_src = FRAGMENT_SHADER.replace("QUALIFIER", qualifier).replacen(
+            "\n",
+            &format!("\n#define OUTPUT {out}\n"),
+            1,
+        );
         let gl = &self.gl;
         // SAFETY: plain GL calls on the current context with valid objects.
         unsafe {
@@ -475,12 +480,7 @@ impl Llvmpipe {
 
     /// Median milliseconds of `frames` frames of clear + draw + glFinish, after one untimed
     /// frame (llvmpipe compiles the shader variant on first use).
-    pub fn time(
-        &self,
-        filter: Filter,
-        mode: Interpolation,
-        frames: u32,
-    ) -> Result<f64, String> {
+    pub fn time(&self, filter: Filter, mode: Interpolation, frames: u32) -> Result<f64, String> {
         self.draw(Output::Texture, filter, mode)?;
         self.finish();
         let mut times = Vec::with_capacity(frames as usize);
@@ -559,16 +559,28 @@ pub struct Comparison {
     pub max_channel_diff: u8,
     /// Where that largest difference is (x, y).
     pub max_at: Option<(u32, u32)>,
+    /// For nearest filtering (when barylab's uv is given): the largest distance, in texels,
+    /// from a differing pixel's sample point to the nearest texel boundary along u or v.
+    /// Near 0 means every difference is a tie that rounding decides either way.
+    pub max_boundary_distance: f32,
+}
+
+/// Distance, in texels, from texel coordinate `s = u * size` to the nearest texel boundary
+/// (an integer): `|s - round(s)|`.
+pub fn boundary_distance(s: f32) -> f32 {
+    (s - s.round()).abs()
 }
 
 /// Compares barylab's triangle ids and colours with llvmpipe's (`gl_ids`: `TriangleId`
 /// output; `gl_colors`: the colour output), pixel by pixel.
+/// `nearest_uv`: barylab's uv per pixel and the texture size, for nearest filtering.
 pub fn compare(
     width: u32,
     ours_triangle: &[u32],
     ours_color: &[[u8; 4]],
     gl_ids: &[[u8; 4]],
     gl_colors: &[[u8; 4]],
+    nearest_uv: Option<(&[[f32; 2]], u32, u32)>,
 ) -> Comparison {
     let mut c = Comparison {
         pixels: ours_color.len(),
@@ -600,6 +612,11 @@ pub fn compare(
             .unwrap_or(0);
         if diff > 0 {
             c.color_differing += 1;
+            if let Some((uv, tw, th)) = nearest_uv {
+                let [u, v] = uv[k];
+                let d = boundary_distance(u * tw as f32).min(boundary_distance(v * th as f32));
+                c.max_boundary_distance = c.max_boundary_distance.max(d);
+            }
         }
         if diff > c.max_channel_diff {
             c.max_channel_diff = diff;
@@ -607,4 +624,113 @@ pub fn compare(
         }
     }
     c
+}
+
+/// Loads a scene (optionally resized) as the GPU gets it, with its render settings.
+pub fn load(path: &Path, size: Option<(u32, u32)>) -> Result<(GlScene, Scene, Texture), String> {
+    let (mut scene, base) =
+        barylab::scene::open_input(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if let Some((w, h)) = size {
+        scene.set_size(w, h);
+    }
+    let texture = scene
+        .load_texture(&base)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let s = scene.settings();
+    let mesh = mesh_at_f32(&scene.to_mesh());
+    Ok((
+        GlScene::new(&mesh, &texture, s.width, s.height, s.wrap, s.background),
+        scene,
+        texture,
+    ))
+}
+
+pub struct SceneComparison {
+    pub width: u32,
+    pub height: u32,
+    pub output: Output,
+    pub filter: Filter,
+    pub mode: Interpolation,
+    pub result: Comparison,
+}
+
+/// Texture (nearest, bilinear) and vertex colour, affine and perspective.
+pub fn compare_scene(
+    lp: &mut Llvmpipe,
+    path: &Path,
+    size: Option<(u32, u32)>,
+) -> Result<Vec<SceneComparison>, String> {
+    let (_, scene, texture) = load(path, size)?;
+    compare_mesh(lp, &scene.to_mesh(), &texture, &scene.settings())
+}
+
+/// Draws `mesh` (its clip coordinates rounded to f32) with both, with the texture (nearest,
+/// bilinear) and with the vertex colours, affine and perspective, and compares the images.
+/// `base` gives the size, wrap and background.
+pub fn compare_mesh(
+    lp: &mut Llvmpipe,
+    mesh: &ClipMesh,
+    texture: &Texture,
+    base: &barylab::raster::RenderSettings,
+) -> Result<Vec<SceneComparison>, String> {
+    let mesh = mesh_at_f32(mesh);
+    lp.load(&GlScene::new(
+        &mesh,
+        texture,
+        base.width,
+        base.height,
+        base.wrap,
+        base.background,
+    ))?;
+    let mut out = Vec::new();
+    for (output, shading, filters) in [
+        (
+            Output::Texture,
+            Shading::Texture,
+            &[Filter::Nearest, Filter::Bilinear][..],
+        ),
+        (
+            Output::VertexColor,
+            Shading::VertexColor,
+            &[Filter::Nearest][..],
+        ),
+    ] {
+        for &filter in filters {
+            for mode in [Interpolation::Affine, Interpolation::Perspective] {
+                let settings = barylab::raster::RenderSettings {
+                    filter,
+                    mode,
+                    shading,
+                    wireframe: false,
+                    ..*base
+                };
+                let ours = barylab::raster::render(&mesh, texture, &settings)
+                    .map_err(|e| e.to_string())?;
+                let ids = lp.render(Output::TriangleId, filter, mode)?;
+                let colors = lp.render(output, filter, mode)?;
+                let uv = match mode {
+                    Interpolation::Affine => &ours.frame.uv_affine,
+                    Interpolation::Perspective => &ours.frame.uv_perspective,
+                };
+                let nearest_uv = (output == Output::Texture && filter == Filter::Nearest)
+                    .then_some((&uv[..], texture.width(), texture.height()));
+                out.push(SceneComparison {
+                    width: settings.width,
+                    height: settings.height,
+                    output,
+                    filter,
+                    mode,
+                    result: compare(
+                        settings.width,
+                        &ours.frame.triangle,
+                        &ours.frame.color,
+                        &ids,
+                        &colors,
+                        nearest_uv,
+                    ),
+                });
+            }
+        }
+    }
+    Ok(out)
 }

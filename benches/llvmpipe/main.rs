@@ -18,8 +18,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 use barylab::bench::{BenchRecord, filter_name, mode_name};
-use barylab::raster::{Filter, Interpolation, Shading};
-use barylab::scene::Scene;
+use barylab::raster::{Filter, Interpolation};
 use clap::Parser;
 
 const DEFAULT_SCENE: &str = "assets/scenes/bench-1080p.json";
@@ -97,27 +96,9 @@ fn scene_path(args: &Args) -> PathBuf {
         .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join(DEFAULT_SCENE))
 }
 
-/// Loads a scene (optionally resized) as the GPU gets it, with its render settings.
-fn load(path: &Path, size: Option<(u32, u32)>) -> Result<(gl::GlScene, Scene), String> {
-    let (mut scene, base) =
-        barylab::scene::open_input(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    if let Some((w, h)) = size {
-        scene.set_size(w, h);
-    }
-    let texture = scene
-        .load_texture(&base)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    let s = scene.settings();
-    let mesh = gl::mesh_at_f32(&scene.to_mesh());
-    Ok((
-        gl::GlScene::new(&mesh, &texture, s.width, s.height, s.wrap, s.background),
-        scene,
-    ))
-}
-
 /// Measures every filter x mode with the thread count llvmpipe was started with.
 fn child(args: &Args, threads: usize) -> Result<(), String> {
-    let (scene, _) = load(&scene_path(args), args.size)?;
+    let (scene, _, _) = gl::load(&scene_path(args), args.size)?;
     let mut lp = gl::Llvmpipe::new()?;
     lp.load(&scene)?;
     let mut records = Vec::new();
@@ -246,14 +227,14 @@ fn conformance() -> Result<(), String> {
     let mut lp = gl::Llvmpipe::new()?;
     println!("Compared with {}.\n", lp.renderer());
     println!(
-        "| scene | size | output | filter | mode | coverage mismatches | triangle mismatches | pixels differing | max channel diff |"
+        "| scene | size | output | filter | mode | coverage mismatches | triangle mismatches | pixels differing | max channel diff | nearest: max texels from a texel edge |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
     for (name, size) in CONFORMANCE_SCENES {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(name);
-        for c in compare_scene(&mut lp, &path, size)? {
+        for c in gl::compare_scene(&mut lp, &path, size)? {
             println!(
-                "| {name} | {}x{} | {:?} | {} | {} | {} | {} | {} of {} | {} |",
+                "| {name} | {}x{} | {:?} | {} | {} | {} | {} | {} of {} | {} | {} |",
                 c.width,
                 c.height,
                 c.output,
@@ -263,75 +244,14 @@ fn conformance() -> Result<(), String> {
                 c.result.triangle_mismatch.len(),
                 c.result.color_differing,
                 c.result.pixels,
-                c.result.max_channel_diff
+                c.result.max_channel_diff,
+                if c.output == gl::Output::Texture && c.filter == Filter::Nearest {
+                    format!("{:.2e}", c.result.max_boundary_distance)
+                } else {
+                    "-".into()
+                }
             );
         }
     }
     Ok(())
-}
-
-struct SceneComparison {
-    width: u32,
-    height: u32,
-    output: gl::Output,
-    filter: Filter,
-    mode: Interpolation,
-    result: gl::Comparison,
-}
-
-/// Texture (nearest, bilinear) and vertex colour, affine and perspective.
-fn compare_scene(
-    lp: &mut gl::Llvmpipe,
-    path: &Path,
-    size: Option<(u32, u32)>,
-) -> Result<Vec<SceneComparison>, String> {
-    let (glscene, scene) = load(path, size)?;
-    lp.load(&glscene)?;
-    let (_, base) = barylab::scene::open_input(path).map_err(|e| e.to_string())?;
-    let texture = scene.load_texture(&base).map_err(|e| e.to_string())?;
-    let mesh = gl::mesh_at_f32(&scene.to_mesh());
-    let mut out = Vec::new();
-    for (output, shading, filters) in [
-        (
-            gl::Output::Texture,
-            Shading::Texture,
-            &[Filter::Nearest, Filter::Bilinear][..],
-        ),
-        (
-            gl::Output::VertexColor,
-            Shading::VertexColor,
-            &[Filter::Nearest][..],
-        ),
-    ] {
-        for &filter in filters {
-            for mode in [Interpolation::Affine, Interpolation::Perspective] {
-                let settings = barylab::raster::RenderSettings {
-                    filter,
-                    mode,
-                    shading,
-                    wireframe: false,
-                    ..scene.settings()
-                };
-                let ours = barylab::raster::render(&mesh, &texture, &settings)
-                    .map_err(|e| e.to_string())?;
-                let ids = lp.render(gl::Output::TriangleId, filter, mode)?;
-                let colors = lp.render(output, filter, mode)?;
-                out.push(SceneComparison {
-                    width: settings.width,
-                    height: settings.height,
-                    output,
-                    filter,
-                    mode,
-                    result: gl::compare(
-                        settings.width,
-                        &ours.frame.triangle,
-                        &ours.frame.color,
-                        &ids,
-                        &colors,
-                    ),
-                });
-            }
-        }
-    }
-    Ok(out)
 }
