@@ -50,7 +50,8 @@ pub mod text {
     pub const LLVMPIPE_REF: &str = "llvmpipe (reference)";
     pub const MS: &str = "ms";
     pub const MPIX: &str = "Mpix/s";
-    pub const CHART_Y: &str = "median ms per frame (lower is faster)";
+    pub const CHART_Y: &str = "ms per frame";
+    pub const CHART_CAPTION: &str = "Median ms per frame, lower is faster.";
     pub const SEED_CLAIM: &str = "Seed 001 measured per-pixel barycentric evaluation about 2x \
         slower than the scanline with increments: 1.40 ms vs 0.73 ms (= 1.9x).";
     pub const MEASURED_RATIO: &str = "Measured here: edge functions take";
@@ -282,8 +283,8 @@ pub fn bench_ui(
     let mut open = panel.open;
     egui::Window::new(text::TITLE)
         .open(&mut open)
-        .default_width(820.0)
-        .default_height(760.0)
+        .default_pos([360.0, 50.0])
+        .default_size([900.0, 860.0])
         .vscroll(true)
         .show(ctx, |ui| window_contents(ui, panel, current));
     panel.open = open;
@@ -355,6 +356,7 @@ fn window_contents(ui: &mut Ui, panel: &mut BenchPanel, current: Option<(&Scene,
         ui.add_space(6.0);
         ratio_ui(ui, &panel.records);
         ui.add_space(6.0);
+        ui.label(RichText::new(text::CHART_CAPTION).small());
         chart_ui(ui, &panel.records, reference);
     }
     ui.separator();
@@ -471,6 +473,10 @@ fn ratio_ui(ui: &mut Ui, records: &[BenchRecord]) {
 const EDGE_COLOR: Color32 = Color32::from_rgb(90, 160, 240);
 const SCANLINE_COLOR: Color32 = Color32::from_rgb(240, 160, 60);
 const LLVMPIPE_COLOR: Color32 = Color32::from_rgb(150, 150, 150);
+/// The y range reaches this multiple of the tallest bar, leaving room for the legend.
+const LEGEND_HEADROOM: f64 = 1.3;
+/// Cell labels under the chart, in points (three short lines fit a cell's width).
+const TICK_LABEL_SIZE: f32 = 15.0;
 /// Bar width and offsets within a cell (cells are 1 apart on the x axis).
 const BAR_WIDTH: f64 = 0.26;
 
@@ -512,15 +518,17 @@ fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
             } else {
                 format!("{t} {}", text::THREADS_N)
             };
-            format!("{f} {m}\n{threads}")
+            format!("{f}\n{m}\n{threads}")
         })
         .collect();
     let n = cells.len();
+    let tallest = records.iter().map(|r| r.median_ms).fold(0.0, f64::max);
     Plot::new("bench_chart")
-        .height(300.0)
+        .height(280.0)
         .legend(Legend::default().position(Corner::LeftTop))
         .y_axis_label(text::CHART_Y)
         .include_y(0.0)
+        .include_y(tallest * LEGEND_HEADROOM)
         .include_x(-0.6)
         .include_x(n as f64 - 0.4)
         .allow_zoom(false)
@@ -536,16 +544,19 @@ fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
                 })
                 .collect()
         })
-        .custom_x_axes(vec![AxisHints::new_x().min_thickness(52.0).formatter(
-            move |mark, _| {
-                let i = mark.value.round();
-                if (mark.value - i).abs() < 1e-6 && i >= 0.0 {
-                    labels.get(i as usize).cloned().unwrap_or_default()
-                } else {
-                    String::new()
-                }
-            },
-        )])
+        .custom_x_axes(vec![
+            AxisHints::new_x()
+                .min_thickness(60.0)
+                .tick_label_font(egui::FontId::proportional(TICK_LABEL_SIZE))
+                .formatter(move |mark, _| {
+                    let i = mark.value.round();
+                    if (mark.value - i).abs() < 1e-6 && i >= 0.0 {
+                        labels.get(i as usize).cloned().unwrap_or_default()
+                    } else {
+                        String::new()
+                    }
+                }),
+        ])
         .show(ui, |plot| {
             plot.bar_chart(edge);
             plot.bar_chart(scan);
