@@ -447,6 +447,23 @@ impl Llvmpipe {
 
     /// Clears and draws the loaded scene once (not waiting for it).
     pub fn draw(&self, output: Output, filter: Filter, mode: Interpolation) -> Result<(), String> {
+        self.clear(output, filter, mode)?;
+        self.draw_elements()
+    }
+
+    /// Draws the loaded scene's triangles with the state [`Llvmpipe::clear`] set.
+    pub fn draw_elements(&self) -> Result<(), String> {
+        let o = self.objects.as_ref().ok_or("no scene loaded")?;
+        // SAFETY: the loaded index buffer holds `index_count` indices.
+        unsafe {
+            self.gl
+                .draw_elements(glow::TRIANGLES, o.index_count, glow::UNSIGNED_INT, 0);
+        }
+        Ok(())
+    }
+
+    /// Selects the program and filter and clears colour and depth (not waiting for it).
+    pub fn clear(&self, output: Output, filter: Filter, mode: Interpolation) -> Result<(), String> {
         let o = self.objects.as_ref().ok_or("no scene loaded")?;
         let gl = &self.gl;
         let f = match filter {
@@ -467,7 +484,6 @@ impl Llvmpipe {
             gl.clear_color(bg[0], bg[1], bg[2], bg[3]);
             gl.clear_depth_f64(1.0);
             gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
-            gl.draw_elements(glow::TRIANGLES, o.index_count, glow::UNSIGNED_INT, 0);
         }
         Ok(())
     }
@@ -478,15 +494,18 @@ impl Llvmpipe {
         unsafe { self.gl.finish() }
     }
 
-    /// Median milliseconds of `frames` frames of clear + draw + glFinish, after one untimed
-    /// frame (llvmpipe compiles the shader variant on first use).
+    /// Median milliseconds of drawing the scene, draw only: per frame, clear + glFinish
+    /// untimed, then draw + glFinish timed. One untimed frame first (llvmpipe compiles the
+    /// shader variant on first use).
     pub fn time(&self, filter: Filter, mode: Interpolation, frames: u32) -> Result<f64, String> {
         self.draw(Output::Texture, filter, mode)?;
         self.finish();
         let mut times = Vec::with_capacity(frames as usize);
         for _ in 0..frames {
+            self.clear(Output::Texture, filter, mode)?;
+            self.finish();
             let start = Instant::now();
-            self.draw(Output::Texture, filter, mode)?;
+            self.draw_elements()?;
             self.finish();
             times.push(start.elapsed().as_secs_f64() * 1e3);
         }
