@@ -109,6 +109,8 @@ pub struct BenchPanel {
     error: Option<String>,
     /// What the shown records measured, e.g. "current scene, 640 x 480".
     measured: Option<String>,
+    /// Whether they are of the reference scene (llvmpipe's figures apply).
+    measured_reference: bool,
 }
 
 impl Default for BenchPanel {
@@ -122,6 +124,7 @@ impl Default for BenchPanel {
             running: None,
             error: None,
             measured: None,
+            measured_reference: false,
         }
     }
 }
@@ -139,6 +142,8 @@ pub struct BenchJob {
     pub base: RenderSettings,
     /// Shown above the results.
     pub description: String,
+    /// The reference scene, whose llvmpipe figures are shown next to the results.
+    pub reference: bool,
 }
 
 impl BenchJob {
@@ -149,6 +154,7 @@ impl BenchJob {
             texture,
             base: scene.settings(),
             description,
+            reference: false,
         }
     }
 
@@ -160,11 +166,10 @@ impl BenchJob {
             .load_texture(std::path::Path::new(""))
             .map_err(|e| e.to_string())?;
         let (w, h) = scene.size();
-        Ok(Self::from_scene(
-            &scene,
-            Arc::new(texture),
-            format!("bench-1080p, {w} x {h}"),
-        ))
+        Ok(Self {
+            reference: true,
+            ..Self::from_scene(&scene, Arc::new(texture), format!("bench-1080p, {w} x {h}"))
+        })
     }
 }
 
@@ -193,6 +198,7 @@ impl BenchPanel {
         self.records.clear();
         self.error = None;
         self.measured = Some(job.description.clone());
+        self.measured_reference = job.reference;
         let (tx, rx) = channel();
         let stop = Arc::new(AtomicBool::new(false));
         let stop_flag = stop.clone();
@@ -351,7 +357,7 @@ fn window_contents(ui: &mut Ui, panel: &mut BenchPanel, current: Option<(&Scene,
         if let Some(m) = &panel.measured {
             ui.label(RichText::new(format!("{}: {m}", text::MEASURED)).strong());
         }
-        let reference = is_reference_run(&panel.records);
+        let reference = panel.measured_reference;
         table_ui(ui, &panel.records, reference);
         ui.add_space(6.0);
         ratio_ui(ui, &panel.records);
@@ -361,13 +367,6 @@ fn window_contents(ui: &mut Ui, panel: &mut BenchPanel, current: Option<(&Scene,
     }
     ui.separator();
     reference_ui(ui);
-}
-
-/// Whether the records are of the 1920 x 1080 frame the llvmpipe figures are for.
-fn is_reference_run(records: &[BenchRecord]) -> bool {
-    records
-        .first()
-        .is_some_and(|r| (r.width, r.height) == (1920, 1080))
 }
 
 /// llvmpipe's reference median for one cell (perspective only), if quoted.
@@ -596,4 +595,27 @@ fn reference_ui(ui: &mut Ui) {
             }
         });
     ui.label(RichText::new(text::REFERENCE_NOTE).small());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_reference_job_is_the_1080p_scene_with_its_noise_texture() {
+        let job = BenchJob::reference().expect("built-in reference scene");
+        assert!(job.reference);
+        assert_eq!((job.base.width, job.base.height), (1920, 1080));
+        assert_eq!((job.texture.width(), job.texture.height()), (1024, 1024));
+        assert_eq!(job.mesh.triangles.len(), 2);
+        assert_eq!(job.mesh.vertices[2].clip, glam::DVec4::new(4.0, 4.0, 0.0, 4.0));
+    }
+
+    #[test]
+    fn llvmpipe_reference_figures_are_for_perspective_only() {
+        assert_eq!(llvmpipe_reference("bilinear", "perspective", 1), Some(11.8));
+        assert_eq!(llvmpipe_reference("nearest", "perspective", 2), Some(2.5));
+        assert_eq!(llvmpipe_reference("nearest", "affine", 2), None);
+        assert_eq!(llvmpipe_reference("nearest", "perspective", 4), None);
+    }
 }
