@@ -608,7 +608,10 @@ mod tests {
         assert_eq!((job.base.width, job.base.height), (1920, 1080));
         assert_eq!((job.texture.width(), job.texture.height()), (1024, 1024));
         assert_eq!(job.mesh.triangles.len(), 2);
-        assert_eq!(job.mesh.vertices[2].clip, glam::DVec4::new(4.0, 4.0, 0.0, 4.0));
+        assert_eq!(
+            job.mesh.vertices[2].clip,
+            glam::DVec4::new(4.0, 4.0, 0.0, 4.0)
+        );
     }
 
     #[test]
