@@ -379,19 +379,6 @@ fn report_skipped(triangles: &[raster::render::PreparedTriangle]) {
     }
 }
 
-/// One line of `barylab bench`.
-#[derive(serde::Serialize)]
-struct BenchRecord {
-    rasterizer: &'static str,
-    filter: &'static str,
-    mode: &'static str,
-    threads: usize,
-    width: u32,
-    height: u32,
-    median_ms: f64,
-    mpix_per_s: f64,
-}
-
 fn bench(args: &BenchArgs) -> Result<()> {
     let default_path = Path::new("assets/scenes/bench-1080p.json");
     let (mut scene, base_dir) = match &args.scene {
@@ -405,81 +392,14 @@ fn bench(args: &BenchArgs) -> Result<()> {
     let texture = scene.load_texture(&base_dir)?;
     let mesh = scene.to_mesh();
     let base = scene.settings();
-    let cores = std::thread::available_parallelism().map_or(1, usize::from);
-    let mut thread_counts = vec![1];
-    if cores > 1 {
-        thread_counts.push(cores);
-    }
-    let mut records = Vec::new();
-    for (rasterizer, r_name) in [
-        (raster::render::Rasterizer::EdgeFunction, "edge"),
-        (raster::render::Rasterizer::Scanline, "scanline"),
-    ] {
-        for (filter, f_name) in [(Filter::Nearest, "nearest"), (Filter::Bilinear, "bilinear")] {
-            for (mode, m_name) in [
-                (Interpolation::Affine, "affine"),
-                (Interpolation::Perspective, "perspective"),
-            ] {
-                for &threads in &thread_counts {
-                    let settings = raster::RenderSettings {
-                        rasterizer,
-                        filter,
-                        mode,
-                        ..base
-                    };
-                    let workers = pool(Some(threads as u16))?;
-                    let mut times = Vec::with_capacity(args.frames as usize);
-                    // Colour and depth into a reused framebuffer: what the app draws.
-                    let mut frame = raster::Framebuffer::new(0, 0, settings.background);
-                    for _ in 0..args.frames {
-                        let start = Instant::now();
-                        workers.install(|| {
-                            raster::render_into(
-                                &mut frame,
-                                &mesh,
-                                &texture,
-                                &settings,
-                                raster::Buffers::ColorDepth,
-                            )
-                        })?;
-                        times.push(start.elapsed().as_secs_f64() * 1e3);
-                    }
-                    times.sort_by(f64::total_cmp);
-                    let median_ms = times[times.len() / 2];
-                    let pixels = f64::from(settings.width) * f64::from(settings.height);
-                    records.push(BenchRecord {
-                        rasterizer: r_name,
-                        filter: f_name,
-                        mode: m_name,
-                        threads,
-                        width: settings.width,
-                        height: settings.height,
-                        median_ms,
-                        mpix_per_s: pixels / (median_ms * 1e3),
-                    });
-                }
-            }
-        }
-    }
+    let records = barylab::bench::matrix(barylab::bench::available_cores())
+        .into_iter()
+        .map(|config| barylab::bench::run_config(&mesh, &texture, &base, config, args.frames))
+        .collect::<Result<Vec<_>, _>>()?;
     if args.json {
         println!("{}", serde_json::to_string_pretty(&records)?);
-        return Ok(());
-    }
-    println!(
-        "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11} {:>9}",
-        "rasterizer", "filter", "mode", "threads", "size", "median ms", "Mpix/s"
-    );
-    for r in &records {
-        println!(
-            "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11.2} {:>9.1}",
-            r.rasterizer,
-            r.filter,
-            r.mode,
-            r.threads,
-            format!("{}x{}", r.width, r.height),
-            r.median_ms,
-            r.mpix_per_s
-        );
+    } else {
+        print!("{}", barylab::bench::text_table(&records));
     }
     Ok(())
 }

@@ -4,11 +4,13 @@
 //! - [`scene`]: scene files (world, raw clip-space and OBJ model forms).
 //! - [`model`]: OBJ models.
 //! - [`probe`]: every number behind one pixel, and its derivation as text.
+//! - [`bench`]: timing the rasterizers (`barylab bench`, the app's benchmark panel).
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 //! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
 pub mod app;
+pub mod bench;
 pub mod model;
 pub mod probe;
 pub mod raster;

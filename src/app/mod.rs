@@ -2,11 +2,12 @@
 //! derivation.
 //!
 //! One panel per file, each with a `*_ui` function and its strings in one place: [`canvas`],
-//! [`controls`], [`inspector`], [`status`], [`help`]. Panels read the [`state::AppState`] and
+//! [`controls`], [`inspector`], [`status`], [`help`], [`bench_panel`]. Panels read the [`state::AppState`] and
 //! push [`state::Command`]s, applied once per frame. The overlays are described as plain data
 //! in canvas coordinates ([`overlay`]) and painted by [`paint`]. The scene edits ([`edit`]),
 //! presets ([`presets`]) and the difference heatmap ([`heatmap`]) do not depend on egui.
 
+pub mod bench_panel;
 pub mod canvas;
 pub mod controls;
 pub mod edit;
@@ -154,6 +155,7 @@ pub struct BaryApp {
     banner: Option<files::Banner>,
     /// Files to open at the start of the next frame (menu, typed path).
     to_open: Vec<PathBuf>,
+    bench: bench_panel::BenchPanel,
 }
 
 /// Text sizes in points, large enough for a projector at zoom 1.
@@ -239,6 +241,7 @@ impl BaryApp {
             recent,
             banner: None,
             to_open: Vec::new(),
+            bench: bench_panel::BenchPanel::default(),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
@@ -315,6 +318,16 @@ impl BaryApp {
     /// Queues a command, as a panel would.
     pub fn push(&mut self, command: Command) {
         self.commands.push(command);
+    }
+
+    /// The benchmark window's state.
+    pub fn bench(&self) -> &bench_panel::BenchPanel {
+        &self.bench
+    }
+
+    /// The benchmark window's state, to change.
+    pub fn bench_mut(&mut self) -> &mut bench_panel::BenchPanel {
+        &mut self.bench
     }
 
     /// The message on the status line.
@@ -573,6 +586,8 @@ impl BaryApp {
             .default_width(620.0)
             .show(&ctx, help::help_ui);
         self.help_open = help_open;
+        let rendered = self.canvas.output.as_ref().map(|o| (&o.scene, &texture));
+        bench_panel::bench_ui(&ctx, &mut self.bench, rendered);
 
         let key = |r: &Option<PixelReport>| r.as_ref().map(|r| (r.pixel, r.mode, r.generation));
         let reports_before = (key(&self.hover_report), key(&self.pin_report));
@@ -618,6 +633,7 @@ impl BaryApp {
             {
                 self.help_open = !self.help_open;
             }
+            bench_panel::toggle_ui(ui, &mut self.bench);
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 controls::reset_ui(ui, &self.state, &mut self.commands);
             });

@@ -1,0 +1,765 @@
+//! Drawing a barylab clip-space mesh with Mesa's llvmpipe through OpenGL 3.3 core on a headless
+//! EGL context (surfaceless platform), to time it and to read its image back.
+//!
+//! Shared by the `llvmpipe` benchmark (benches/llvmpipe/main.rs) and the conformance test
+//! (tests/llvmpipe.rs, which includes this file by path).
+
+#![allow(dead_code)] // each includer uses a different part
+
+use std::time::Instant;
+
+use std::path::Path;
+
+use barylab::raster::{ClipMesh, Filter, Interpolation, Shading, Texture, Wrap};
+use barylab::scene::Scene;
+use glow::HasContext;
+use khronos_egl as egl;
+
+/// `EGL_PLATFORM_SURFACELESS_MESA` (EGL_MESA_platform_surfaceless).
+const PLATFORM_SURFACELESS_MESA: egl::Enum = 0x31DD;
+
+/// The environment that makes Mesa pick its software rasterizer, headless. Set before EGL is
+/// loaded (Mesa reads it at start-up, as it reads `LP_NUM_THREADS`).
+pub fn force_llvmpipe_env() {
+    // SAFETY: called at the start of the process (or of a test), before any thread that
+    // reads the environment is started by us.
+    unsafe {
+        std::env::set_var("LIBGL_ALWAYS_SOFTWARE", "1");
+        std::env::set_var("GALLIUM_DRIVER", "llvmpipe");
+        std::env::set_var("EGL_PLATFORM", "surfaceless");
+    }
+}
+
+/// What to draw: clip-space positions and uv/colour per vertex, the triangles, the texture.
+pub struct GlScene {
+    pub width: u32,
+    pub height: u32,
+    /// Per vertex: clip x, y, z, w, u, v, r, g, b (f32, as the GPU gets them).
+    pub vertices: Vec<[f32; 9]>,
+    pub indices: Vec<u32>,
+    pub texture_width: u32,
+    pub texture_height: u32,
+    /// RGBA8, row 0 first (t = 0, barylab's texel row 0).
+    pub texels: Vec<u8>,
+    pub wrap: Wrap,
+    pub background: [u8; 4],
+}
+
+impl GlScene {
+    /// The mesh as the GPU gets it: clip coordinates rounded to f32.
+    pub fn new(
+        mesh: &ClipMesh,
+        texture: &Texture,
+        width: u32,
+        height: u32,
+        wrap: Wrap,
+        background: [u8; 4],
+    ) -> Self {
+        let vertices = mesh
+            .vertices
+            .iter()
+            .map(|v| {
+                [
+                    v.clip.x as f32,
+                    v.clip.y as f32,
+                    v.clip.z as f32,
+                    v.clip.w as f32,
+                    v.uv.x,
+                    v.uv.y,
+                    v.color.x,
+                    v.color.y,
+                    v.color.z,
+                ]
+            })
+            .collect();
+        let mut texels = Vec::with_capacity((texture.width() * texture.height() * 4) as usize);
+        for j in 0..texture.height() {
+            for i in 0..texture.width() {
+                texels.extend_from_slice(&texture.texel(i, j));
+            }
+        }
+        Self {
+            width,
+            height,
+            vertices,
+            indices: mesh.triangles.iter().flatten().copied().collect(),
+            texture_width: texture.width(),
+            texture_height: texture.height(),
+            texels,
+            wrap,
+            background,
+        }
+    }
+}
+
+/// A copy of `mesh` whose clip coordinates are rounded to f32, so that barylab draws exactly
+/// the coordinates OpenGL gets.
+pub fn mesh_at_f32(mesh: &ClipMesh) -> ClipMesh {
+    let mut m = mesh.clone();
+    for v in &mut m.vertices {
+        v.clip = v.clip.as_vec4().as_dvec4();
+    }
+    m
+}
+
+/// What the fragment shader outputs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Output {
+    /// The texture at the interpolated uv.
+    Texture,
+    /// The interpolated vertex colour.
+    VertexColor,
+    /// `gl_PrimitiveID + 1` as little-endian RGBA bytes (0 = no triangle).
+    TriangleId,
+}
+
+/// A live headless llvmpipe context with one scene loaded.
+pub struct Llvmpipe {
+    egl: egl::DynamicInstance<egl::EGL1_4>,
+    display: egl::Display,
+    context: egl::Context,
+    gl: glow::Context,
+    renderer: String,
+    objects: Option<Objects>,
+}
+
+struct Objects {
+    width: u32,
+    height: u32,
+    index_count: i32,
+    background: [u8; 4],
+    /// Programs indexed by [`program_index`].
+    programs: Vec<glow::Program>,
+    vao: glow::VertexArray,
+    buffers: [glow::Buffer; 2],
+    texture: glow::Texture,
+    fbo: glow::Framebuffer,
+    renderbuffers: [glow::Renderbuffer; 2],
+}
+
+const OUTPUTS: [Output; 3] = [Output::Texture, Output::VertexColor, Output::TriangleId];
+const MODES: [Interpolation; 2] = [Interpolation::Affine, Interpolation::Perspective];
+
+fn program_index(output: Output, mode: Interpolation) -> usize {
+    let o = OUTPUTS.iter().position(|&x| x == output).unwrap_or(0);
+    let m = MODES.iter().position(|&x| x == mode).unwrap_or(0);
+    o * MODES.len() + m
+}
+
+const VERTEX_SHADER: &str = "#version 330 core
+layout(location = 0) in vec4 clip_position;
+layout(location = 1) in vec2 uv;
+layout(location = 2) in vec3 color;
+QUALIFIER out vec2 v_uv;
+QUALIFIER out vec3 v_color;
+void main() {
+    v_uv = uv;
+    v_color = color;
+    gl_Position = clip_position;
+}
+";
+
+const FRAGMENT_SHADER: &str = "#version 330 core
+QUALIFIER in vec2 v_uv;
+QUALIFIER in vec3 v_color;
+uniform sampler2D tex;
+out vec4 out_color;
+void main() {
+#if OUTPUT == 0
+    out_color = texture(tex, v_uv);
+#elif OUTPUT == 1
+    out_color = vec4(v_color, 1.0);
+#else
+    uint id = uint(gl_PrimitiveID + 1);
+    out_color = vec4(float(id & 255u), float((id >> 8) & 255u), float((id >> 16) & 255u),
+                     float((id >> 24) & 255u)) / 255.0;
+#endif
+}
+";
+
+impl Llvmpipe {
+    /// Loads libEGL, opens the surfaceless display and makes a GL 3.3 core context current
+    /// on this thread. Fails with a one-line reason when EGL, the platform or llvmpipe is
+    /// missing. Call [`force_llvmpipe_env`] first.
+    pub fn new() -> Result<Self, String> {
+        // SAFETY: libEGL is the system's EGL library, which implements the EGL 1.4 API.
+        let egl = unsafe { egl::DynamicInstance::<egl::EGL1_4>::load_required() }
+            .map_err(|e| format!("cannot load libEGL.so.1 (install libegl1 libegl-mesa0): {e}"))?;
+        let display = Self::display(&egl)?;
+        egl.initialize(display)
+            .map_err(|e| format!("eglInitialize failed: {e}"))?;
+        egl.bind_api(egl::OPENGL_API)
+            .map_err(|e| format!("eglBindAPI(OpenGL) failed: {e}"))?;
+        let config = egl
+            .choose_first_config(
+                display,
+                // The default surface type is a window, which a surfaceless display lacks.
+                &[
+                    egl::SURFACE_TYPE,
+                    egl::PBUFFER_BIT,
+                    egl::RENDERABLE_TYPE,
+                    egl::OPENGL_BIT,
+                    egl::NONE,
+                ],
+            )
+            .map_err(|e| format!("eglChooseConfig failed: {e}"))?
+            .ok_or("no EGL config renders OpenGL (install libgl1-mesa-dri)")?;
+        let context = egl
+            .create_context(
+                display,
+                config,
+                None,
+                &[
+                    egl::CONTEXT_MAJOR_VERSION,
+                    3,
+                    egl::CONTEXT_MINOR_VERSION,
+                    3,
+                    egl::CONTEXT_OPENGL_PROFILE_MASK,
+                    egl::CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                    egl::NONE,
+                ],
+            )
+            .map_err(|e| format!("cannot create an OpenGL 3.3 core context: {e}"))?;
+        egl.make_current(display, None, None, Some(context))
+            .map_err(|e| format!("eglMakeCurrent (surfaceless) failed: {e}"))?;
+        // SAFETY: the context is current on this thread; the loader returns its entry points.
+        let gl = unsafe {
+            glow::Context::from_loader_function(|name| {
+                egl.get_proc_address(name)
+                    .map_or(std::ptr::null(), |f| f as *const _)
+            })
+        };
+        // SAFETY: a current context.
+        let renderer = unsafe { gl.get_parameter_string(glow::RENDERER) };
+        if !renderer.contains("llvmpipe") {
+            return Err(format!("the OpenGL renderer is `{renderer}`, not llvmpipe"));
+        }
+        Ok(Self {
+            egl,
+            display,
+            context,
+            gl,
+            renderer,
+            objects: None,
+        })
+    }
+
+    fn display(egl: &egl::DynamicInstance<egl::EGL1_4>) -> Result<egl::Display, String> {
+        if let Some(egl15) = egl.upcast::<egl::EGL1_5>() {
+            // SAFETY: the surfaceless platform takes no native display.
+            if let Ok(d) = unsafe {
+                egl15.get_platform_display(
+                    PLATFORM_SURFACELESS_MESA,
+                    egl::DEFAULT_DISPLAY,
+                    &[egl::ATTRIB_NONE],
+                )
+            } {
+                return Ok(d);
+            }
+        }
+        // SAFETY: EGL_PLATFORM=surfaceless makes the default display the surfaceless one.
+        unsafe { egl.get_display(egl::DEFAULT_DISPLAY) }
+            .ok_or_else(|| "no EGL display (surfaceless platform unavailable)".to_string())
+    }
+
+    /// The GL_RENDERER string, e.g. `llvmpipe (LLVM 15.0.6, 256 bits)`.
+    pub fn renderer(&self) -> &str {
+        &self.renderer
+    }
+
+    fn compile(&self, output: Output, mode: Interpolation) -> Result<glow::Program, String> {
+        let qualifier = match mode {
+            Interpolation::Affine => "noperspective",
+            Interpolation::Perspective => "smooth",
+        };
+        let out = OUTPUTS.iter().position(|&x| x == output).unwrap_or(0);
+        let vs_src = VERTEX_SHADER.replace("QUALIFIER", qualifier);
+        let fs_src = FRAGMENT_SHADER.replace("QUALIFIER", qualifier).replacen(
+            "\n",
+            &format!("\n#define OUTPUT {out}\n"),
+            1,
+        );
+        let gl = &self.gl;
+        // SAFETY: plain GL calls on the current context with valid objects.
+        unsafe {
+            let program = gl.create_program()?;
+            for (kind, src) in [
+                (glow::VERTEX_SHADER, &vs_src),
+                (glow::FRAGMENT_SHADER, &fs_src),
+            ] {
+                let shader = gl.create_shader(kind)?;
+                gl.shader_source(shader, src);
+                gl.compile_shader(shader);
+                if !gl.get_shader_compile_status(shader) {
+                    return Err(format!(
+                        "shader compile error: {}",
+                        gl.get_shader_info_log(shader)
+                    ));
+                }
+                gl.attach_shader(program, shader);
+                gl.delete_shader(shader);
+            }
+            gl.link_program(program);
+            if !gl.get_program_link_status(program) {
+                return Err(format!(
+                    "program link error: {}",
+                    gl.get_program_info_log(program)
+                ));
+            }
+            Ok(program)
+        }
+    }
+
+    /// Uploads a scene: vertex and index buffers, the texture (RGBA8, no mipmaps), and a
+    /// `width x height` RGBA8 framebuffer with a 32-bit float depth buffer.
+    pub fn load(&mut self, scene: &GlScene) -> Result<(), String> {
+        self.unload();
+        let mut programs = Vec::new();
+        for output in OUTPUTS {
+            for mode in MODES {
+                programs.push(self.compile(output, mode)?);
+            }
+        }
+        let gl = &self.gl;
+        // SAFETY: plain GL calls on the current context; the slices outlive the calls.
+        unsafe {
+            let vao = gl.create_vertex_array()?;
+            gl.bind_vertex_array(Some(vao));
+            let vbo = gl.create_buffer()?;
+            gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
+            let bytes: Vec<u8> = scene
+                .vertices
+                .iter()
+                .flatten()
+                .flat_map(|f| f.to_ne_bytes())
+                .collect();
+            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &bytes, glow::STATIC_DRAW);
+            let stride = 9 * 4;
+            gl.enable_vertex_attrib_array(0);
+            gl.vertex_attrib_pointer_f32(0, 4, glow::FLOAT, false, stride, 0);
+            gl.enable_vertex_attrib_array(1);
+            gl.vertex_attrib_pointer_f32(1, 2, glow::FLOAT, false, stride, 16);
+            gl.enable_vertex_attrib_array(2);
+            gl.vertex_attrib_pointer_f32(2, 3, glow::FLOAT, false, stride, 24);
+            let ibo = gl.create_buffer()?;
+            gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(ibo));
+            let idx: Vec<u8> = scene.indices.iter().flat_map(|i| i.to_ne_bytes()).collect();
+            gl.buffer_data_u8_slice(glow::ELEMENT_ARRAY_BUFFER, &idx, glow::STATIC_DRAW);
+
+            let texture = gl.create_texture()?;
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_texture(glow::TEXTURE_2D, Some(texture));
+            gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+            gl.tex_image_2d(
+                glow::TEXTURE_2D,
+                0,
+                glow::RGBA8 as i32,
+                scene.texture_width as i32,
+                scene.texture_height as i32,
+                0,
+                glow::RGBA,
+                glow::UNSIGNED_BYTE,
+                glow::PixelUnpackData::Slice(Some(&scene.texels)),
+            );
+            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);
+            let wrap = match scene.wrap {
+                Wrap::Repeat => glow::REPEAT,
+                Wrap::ClampToEdge => glow::CLAMP_TO_EDGE,
+                Wrap::MirroredRepeat => glow::MIRRORED_REPEAT,
+            } as i32;
+            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_S, wrap);
+            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_T, wrap);
+
+            let fbo = gl.create_framebuffer()?;
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+            let color = gl.create_renderbuffer()?;
+            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(color));
+            let (w, h) = (scene.width as i32, scene.height as i32);
+            gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, w, h);
+            gl.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                glow::COLOR_ATTACHMENT0,
+                glow::RENDERBUFFER,
+                Some(color),
+            );
+            let depth = gl.create_renderbuffer()?;
+            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
+            gl.renderbuffer_storage(glow::RENDERBUFFER, glow::DEPTH_COMPONENT32F, w, h);
+            gl.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                glow::DEPTH_ATTACHMENT,
+                glow::RENDERBUFFER,
+                Some(depth),
+            );
+            let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
+            if status != glow::FRAMEBUFFER_COMPLETE {
+                return Err(format!("framebuffer incomplete (status {status:#x})"));
+            }
+            gl.viewport(0, 0, w, h);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(glow::LESS);
+            gl.disable(glow::CULL_FACE);
+            gl.disable(glow::BLEND);
+            gl.disable(glow::DITHER);
+            for &p in &programs {
+                gl.use_program(Some(p));
+                if let Some(loc) = gl.get_uniform_location(p, "tex") {
+                    gl.uniform_1_i32(Some(&loc), 0);
+                }
+            }
+            self.objects = Some(Objects {
+                width: scene.width,
+                height: scene.height,
+                index_count: scene.indices.len() as i32,
+                background: scene.background,
+                programs,
+                vao,
+                buffers: [vbo, ibo],
+                texture,
+                fbo,
+                renderbuffers: [color, depth],
+            });
+        }
+        Ok(())
+    }
+
+    fn unload(&mut self) {
+        let Some(o) = self.objects.take() else {
+            return;
+        };
+        let gl = &self.gl;
+        // SAFETY: deleting objects created on this context.
+        unsafe {
+            for p in o.programs {
+                gl.delete_program(p);
+            }
+            gl.delete_vertex_array(o.vao);
+            for b in o.buffers {
+                gl.delete_buffer(b);
+            }
+            gl.delete_texture(o.texture);
+            gl.delete_framebuffer(o.fbo);
+            for r in o.renderbuffers {
+                gl.delete_renderbuffer(r);
+            }
+        }
+    }
+
+    /// Clears and draws the loaded scene once (not waiting for it).
+    pub fn draw(&self, output: Output, filter: Filter, mode: Interpolation) -> Result<(), String> {
+        self.clear(output, filter, mode)?;
+        self.draw_elements()
+    }
+
+    /// Draws the loaded scene's triangles with the state [`Llvmpipe::clear`] set.
+    pub fn draw_elements(&self) -> Result<(), String> {
+        let o = self.objects.as_ref().ok_or("no scene loaded")?;
+        // SAFETY: the loaded index buffer holds `index_count` indices.
+        unsafe {
+            self.gl
+                .draw_elements(glow::TRIANGLES, o.index_count, glow::UNSIGNED_INT, 0);
+        }
+        Ok(())
+    }
+
+    /// Selects the program and filter and clears colour and depth (not waiting for it).
+    pub fn clear(&self, output: Output, filter: Filter, mode: Interpolation) -> Result<(), String> {
+        let o = self.objects.as_ref().ok_or("no scene loaded")?;
+        let gl = &self.gl;
+        let f = match filter {
+            Filter::Nearest => glow::NEAREST,
+            Filter::Bilinear => glow::LINEAR,
+            Filter::Trilinear => return Err("trilinear needs mipmaps; not compared".into()),
+        } as i32;
+        let bg = if output == Output::TriangleId {
+            [0.0; 4]
+        } else {
+            o.background.map(|c| f32::from(c) / 255.0)
+        };
+        // SAFETY: plain GL calls on the current context with the loaded objects.
+        unsafe {
+            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, f);
+            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, f);
+            gl.use_program(Some(o.programs[program_index(output, mode)]));
+            gl.clear_color(bg[0], bg[1], bg[2], bg[3]);
+            gl.clear_depth_f64(1.0);
+            gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
+        }
+        Ok(())
+    }
+
+    /// Waits until everything drawn so far is finished (glFinish).
+    pub fn finish(&self) {
+        // SAFETY: a current context.
+        unsafe { self.gl.finish() }
+    }
+
+    /// Median milliseconds of drawing the scene, draw only, into the colour buffer alone (no
+    /// depth test, as the issue's reference figures: the reference scene's triangles do not
+    /// overlap): per frame, clear + glFinish untimed, then draw + glFinish timed. One untimed
+    /// frame first (llvmpipe compiles the shader variant on first use).
+    pub fn time(&self, filter: Filter, mode: Interpolation, frames: u32) -> Result<f64, String> {
+        // SAFETY: a current context.
+        unsafe { self.gl.disable(glow::DEPTH_TEST) };
+        let result = self.time_frames(filter, mode, frames);
+        // SAFETY: a current context.
+        unsafe { self.gl.enable(glow::DEPTH_TEST) };
+        result
+    }
+
+    fn time_frames(&self, filter: Filter, mode: Interpolation, frames: u32) -> Result<f64, String> {
+        self.draw(Output::Texture, filter, mode)?;
+        self.finish();
+        let mut times = Vec::with_capacity(frames as usize);
+        for _ in 0..frames {
+            self.clear(Output::Texture, filter, mode)?;
+            self.finish();
+            let start = Instant::now();
+            self.draw_elements()?;
+            self.finish();
+            times.push(start.elapsed().as_secs_f64() * 1e3);
+        }
+        barylab::bench::median(&times).ok_or_else(|| "no frames".to_string())
+    }
+
+    /// Reads the framebuffer back as RGBA8, image row 0 (the top) first.
+    pub fn read(&self) -> Result<Vec<[u8; 4]>, String> {
+        let o = self.objects.as_ref().ok_or("no scene loaded")?;
+        let (w, h) = (o.width as usize, o.height as usize);
+        let mut bytes = vec![0u8; w * h * 4];
+        // SAFETY: the buffer holds exactly width * height RGBA8 pixels.
+        unsafe {
+            self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
+            self.gl.read_pixels(
+                0,
+                0,
+                o.width as i32,
+                o.height as i32,
+                glow::RGBA,
+                glow::UNSIGNED_BYTE,
+                glow::PixelPackData::Slice(Some(&mut bytes)),
+            );
+        }
+        // GL's row 0 is the bottom one.
+        let mut out = Vec::with_capacity(w * h);
+        for row in (0..h).rev() {
+            out.extend(
+                bytes[row * w * 4..(row + 1) * w * 4]
+                    .chunks_exact(4)
+                    .map(|c| [c[0], c[1], c[2], c[3]]),
+            );
+        }
+        Ok(out)
+    }
+
+    /// Draws once and reads back.
+    pub fn render(
+        &self,
+        output: Output,
+        filter: Filter,
+        mode: Interpolation,
+    ) -> Result<Vec<[u8; 4]>, String> {
+        self.draw(output, filter, mode)?;
+        self.finish();
+        self.read()
+    }
+}
+
+impl Drop for Llvmpipe {
+    fn drop(&mut self) {
+        self.unload();
+        let _ = self.egl.make_current(self.display, None, None, None);
+        let _ = self.egl.destroy_context(self.display, self.context);
+        let _ = self.egl.terminate(self.display);
+    }
+}
+
+/// How barylab's image of a scene compares with llvmpipe's.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Comparison {
+    pub pixels: usize,
+    /// Pixels covered in one image and not in the other.
+    pub coverage_mismatch: Vec<(u32, u32)>,
+    /// Pixels covered by different source triangles.
+    pub triangle_mismatch: Vec<(u32, u32)>,
+    /// Covered pixels whose colour differs in any channel.
+    pub color_differing: usize,
+    /// The largest difference of one channel.
+    pub max_channel_diff: u8,
+    /// Where that largest difference is (x, y).
+    pub max_at: Option<(u32, u32)>,
+    /// For nearest filtering (when barylab's uv is given): the largest distance, in texels,
+    /// from a differing pixel's sample point to the nearest texel boundary along u or v.
+    /// Near 0 means every difference is a tie that rounding decides either way.
+    pub max_boundary_distance: f32,
+}
+
+/// Distance, in texels, from texel coordinate `s = u * size` to the nearest texel boundary
+/// (an integer): `|s - round(s)|`.
+pub fn boundary_distance(s: f32) -> f32 {
+    (s - s.round()).abs()
+}
+
+/// Compares barylab's triangle ids and colours with llvmpipe's (`gl_ids`: `TriangleId`
+/// output; `gl_colors`: the colour output), pixel by pixel.
+/// `nearest_uv`: barylab's uv per pixel and the texture size, for nearest filtering.
+pub fn compare(
+    width: u32,
+    ours_triangle: &[u32],
+    ours_color: &[[u8; 4]],
+    gl_ids: &[[u8; 4]],
+    gl_colors: &[[u8; 4]],
+    nearest_uv: Option<(&[[f32; 2]], u32, u32)>,
+) -> Comparison {
+    let mut c = Comparison {
+        pixels: ours_color.len(),
+        ..Comparison::default()
+    };
+    for (k, (((&tri, ours), id), theirs)) in ours_triangle
+        .iter()
+        .zip(ours_color)
+        .zip(gl_ids)
+        .zip(gl_colors)
+        .enumerate()
+    {
+        let xy = ((k as u32) % width, (k as u32) / width);
+        let gl_id = u32::from_le_bytes(*id);
+        let ours_covered = tri != barylab::raster::NO_TRIANGLE;
+        if ours_covered != (gl_id != 0) {
+            c.coverage_mismatch.push(xy);
+            continue;
+        }
+        if !ours_covered {
+            continue;
+        }
+        if gl_id != tri + 1 {
+            c.triangle_mismatch.push(xy);
+        }
+        let diff = (0..4)
+            .map(|i| ours[i].abs_diff(theirs[i]))
+            .max()
+            .unwrap_or(0);
+        if diff > 0 {
+            c.color_differing += 1;
+            if let Some((uv, tw, th)) = nearest_uv {
+                let [u, v] = uv[k];
+                let d = boundary_distance(u * tw as f32).min(boundary_distance(v * th as f32));
+                c.max_boundary_distance = c.max_boundary_distance.max(d);
+            }
+        }
+        if diff > c.max_channel_diff {
+            c.max_channel_diff = diff;
+            c.max_at = Some(xy);
+        }
+    }
+    c
+}
+
+/// Loads a scene (optionally resized) as the GPU gets it, with its render settings.
+pub fn load(path: &Path, size: Option<(u32, u32)>) -> Result<(GlScene, Scene, Texture), String> {
+    let (mut scene, base) =
+        barylab::scene::open_input(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if let Some((w, h)) = size {
+        scene.set_size(w, h);
+    }
+    let texture = scene
+        .load_texture(&base)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let s = scene.settings();
+    let mesh = mesh_at_f32(&scene.to_mesh());
+    Ok((
+        GlScene::new(&mesh, &texture, s.width, s.height, s.wrap, s.background),
+        scene,
+        texture,
+    ))
+}
+
+pub struct SceneComparison {
+    pub width: u32,
+    pub height: u32,
+    pub output: Output,
+    pub filter: Filter,
+    pub mode: Interpolation,
+    pub result: Comparison,
+}
+
+/// Texture (nearest, bilinear) and vertex colour, affine and perspective.
+pub fn compare_scene(
+    lp: &mut Llvmpipe,
+    path: &Path,
+    size: Option<(u32, u32)>,
+) -> Result<Vec<SceneComparison>, String> {
+    let (_, scene, texture) = load(path, size)?;
+    compare_mesh(lp, &scene.to_mesh(), &texture, &scene.settings())
+}
+
+/// Draws `mesh` (its clip coordinates rounded to f32) with both, with the texture (nearest,
+/// bilinear) and with the vertex colours, affine and perspective, and compares the images.
+/// `base` gives the size, wrap and background.
+pub fn compare_mesh(
+    lp: &mut Llvmpipe,
+    mesh: &ClipMesh,
+    texture: &Texture,
+    base: &barylab::raster::RenderSettings,
+) -> Result<Vec<SceneComparison>, String> {
+    let mesh = mesh_at_f32(mesh);
+    lp.load(&GlScene::new(
+        &mesh,
+        texture,
+        base.width,
+        base.height,
+        base.wrap,
+        base.background,
+    ))?;
+    let mut out = Vec::new();
+    for (output, shading, filters) in [
+        (
+            Output::Texture,
+            Shading::Texture,
+            &[Filter::Nearest, Filter::Bilinear][..],
+        ),
+        (
+            Output::VertexColor,
+            Shading::VertexColor,
+            &[Filter::Nearest][..],
+        ),
+    ] {
+        for &filter in filters {
+            for mode in [Interpolation::Affine, Interpolation::Perspective] {
+                let settings = barylab::raster::RenderSettings {
+                    filter,
+                    mode,
+                    shading,
+                    wireframe: false,
+                    ..*base
+                };
+                let ours = barylab::raster::render(&mesh, texture, &settings)
+                    .map_err(|e| e.to_string())?;
+                let ids = lp.render(Output::TriangleId, filter, mode)?;
+                let colors = lp.render(output, filter, mode)?;
+                let uv = match mode {
+                    Interpolation::Affine => &ours.frame.uv_affine,
+                    Interpolation::Perspective => &ours.frame.uv_perspective,
+                };
+                let nearest_uv = (output == Output::Texture && filter == Filter::Nearest)
+                    .then_some((&uv[..], texture.width(), texture.height()));
+                out.push(SceneComparison {
+                    width: settings.width,
+                    height: settings.height,
+                    output,
+                    filter,
+                    mode,
+                    result: compare(
+                        settings.width,
+                        &ours.frame.triangle,
+                        &ours.frame.color,
+                        &ids,
+                        &colors,
+                        nearest_uv,
+                    ),
+                });
+            }
+        }
+    }
+    Ok(out)
+}

@@ -1,0 +1,312 @@
+//! Timing the rasterizers: the configuration matrix (rasterizer x filter x mode x threads),
+//! one [`BenchRecord`] per configuration, median milliseconds per frame and Mpixel/s.
+//!
+//! Used by `barylab bench` and by the app's benchmark panel (which runs one configuration at
+//! a time in a background thread to show progress). Every timed frame goes through
+//! [`draw_frame`], the single place that calls the renderer. No egui here.
+
+use std::time::Instant;
+
+use crate::raster::render::{Rasterizer, RenderError};
+use crate::raster::{self, ClipMesh, Filter, Interpolation, RenderSettings, Texture};
+
+/// One cell of the matrix: what to draw with and on how many worker threads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BenchConfig {
+    pub rasterizer: Rasterizer,
+    pub filter: Filter,
+    pub mode: Interpolation,
+    pub threads: usize,
+}
+
+/// The measured result of one configuration (the JSON of `barylab bench --json`).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct BenchRecord {
+    /// `edge`, `scanline` (or `llvmpipe` for the OpenGL reference harness).
+    pub rasterizer: String,
+    /// `nearest` or `bilinear`.
+    pub filter: String,
+    /// `affine` or `perspective`.
+    pub mode: String,
+    pub threads: usize,
+    pub width: u32,
+    pub height: u32,
+    /// Median wall-clock time of one frame.
+    pub median_ms: f64,
+    /// `width * height / median time`, in millions of pixels per second.
+    pub mpix_per_s: f64,
+}
+
+/// Why a configuration could not be measured.
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    #[error("cannot start {threads} worker threads: {reason}")]
+    Threads { threads: usize, reason: String },
+    #[error(transparent)]
+    Render(#[from] RenderError),
+    #[error("frames must be at least 1")]
+    NoFrames,
+}
+
+/// The short name of a rasterizer in records and tables.
+pub fn rasterizer_name(r: Rasterizer) -> &'static str {
+    match r {
+        Rasterizer::EdgeFunction => "edge",
+        Rasterizer::Scanline => "scanline",
+    }
+}
+
+/// The short name of a filter in records and tables.
+pub fn filter_name(f: Filter) -> &'static str {
+    match f {
+        Filter::Nearest => "nearest",
+        Filter::Bilinear => "bilinear",
+        Filter::Trilinear => "trilinear",
+    }
+}
+
+/// The short name of an interpolation mode in records and tables.
+pub fn mode_name(m: Interpolation) -> &'static str {
+    match m {
+        Interpolation::Affine => "affine",
+        Interpolation::Perspective => "perspective",
+    }
+}
+
+/// The thread counts measured on a machine with `cores` cores: 1, and `cores` if more.
+pub fn thread_counts(cores: usize) -> Vec<usize> {
+    if cores > 1 { vec![1, cores] } else { vec![1] }
+}
+
+/// The cores of this machine (1 if unknown).
+pub fn available_cores() -> usize {
+    std::thread::available_parallelism().map_or(1, usize::from)
+}
+
+/// Every configuration, in the order `barylab bench` prints them: rasterizer (edge, scanline)
+/// x filter (nearest, bilinear) x mode (affine, perspective) x threads ([`thread_counts`]).
+///
+/// ```
+/// let m = barylab::bench::matrix(2);
+/// assert_eq!(m.len(), 2 * 2 * 2 * 2);
+/// assert_eq!(m[0].threads, 1);
+/// assert_eq!(m[1].threads, 2);
+/// ```
+pub fn matrix(cores: usize) -> Vec<BenchConfig> {
+    let threads = thread_counts(cores);
+    let mut out = Vec::new();
+    for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
+        for filter in [Filter::Nearest, Filter::Bilinear] {
+            for mode in [Interpolation::Affine, Interpolation::Perspective] {
+                for &threads in &threads {
+                    out.push(BenchConfig {
+                        rasterizer,
+                        filter,
+                        mode,
+                        threads,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Draws one frame for timing: colour and depth into `frame`, reused from frame to frame,
+/// with the fast path the app's canvas uses (`raster::render_into`). This is the only call
+/// of the renderer in the benchmark.
+pub fn draw_frame(
+    frame: &mut raster::Framebuffer,
+    mesh: &ClipMesh,
+    texture: &Texture,
+    settings: &RenderSettings,
+) -> Result<(), RenderError> {
+    raster::render_into(frame, mesh, texture, settings, raster::Buffers::ColorDepth).map(|_| ())
+}
+
+/// Median of the samples (the upper one of the middle two for an even count); `None` when
+/// empty.
+///
+/// ```
+/// assert_eq!(barylab::bench::median(&[3.0, 1.0, 2.0]), Some(2.0));
+/// assert_eq!(barylab::bench::median(&[4.0, 1.0, 3.0, 2.0]), Some(3.0));
+/// assert_eq!(barylab::bench::median(&[]), None);
+/// ```
+pub fn median(samples: &[f64]) -> Option<f64> {
+    let mut s = samples.to_vec();
+    s.sort_by(f64::total_cmp);
+    s.get(s.len() / 2).copied()
+}
+
+/// Millions of pixels per second for a `width x height` frame drawn in `ms` milliseconds:
+/// `width * height / (ms * 1000)`.
+///
+/// ```
+/// assert_eq!(barylab::bench::mpix_per_s(1000, 1000, 10.0), 100.0);
+/// ```
+pub fn mpix_per_s(width: u32, height: u32, ms: f64) -> f64 {
+    f64::from(width) * f64::from(height) / (ms * 1e3)
+}
+
+/// Times `frames` frames of one configuration, `base` giving everything else (size, wrap,
+/// shading, background), and returns the median.
+pub fn run_config(
+    mesh: &ClipMesh,
+    texture: &Texture,
+    base: &RenderSettings,
+    config: BenchConfig,
+    frames: u32,
+) -> Result<BenchRecord, BenchError> {
+    if frames == 0 {
+        return Err(BenchError::NoFrames);
+    }
+    let settings = RenderSettings {
+        rasterizer: config.rasterizer,
+        filter: config.filter,
+        mode: config.mode,
+        ..*base
+    };
+    let workers = rayon::ThreadPoolBuilder::new()
+        .num_threads(config.threads)
+        .build()
+        .map_err(|e| BenchError::Threads {
+            threads: config.threads,
+            reason: e.to_string(),
+        })?;
+    let mut times = Vec::with_capacity(frames as usize);
+    let mut frame = raster::Framebuffer::new(0, 0, settings.background);
+    for _ in 0..frames {
+        let start = Instant::now();
+        workers.install(|| draw_frame(&mut frame, mesh, texture, &settings))?;
+        times.push(start.elapsed().as_secs_f64() * 1e3);
+    }
+    let median_ms = median(&times).ok_or(BenchError::NoFrames)?;
+    Ok(BenchRecord {
+        rasterizer: rasterizer_name(config.rasterizer).to_string(),
+        filter: filter_name(config.filter).to_string(),
+        mode: mode_name(config.mode).to_string(),
+        threads: config.threads,
+        width: settings.width,
+        height: settings.height,
+        median_ms,
+        mpix_per_s: mpix_per_s(settings.width, settings.height, median_ms),
+    })
+}
+
+/// The records as the plain-text table `barylab bench` prints (header line first).
+pub fn text_table(records: &[BenchRecord]) -> String {
+    let mut out = format!(
+        "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11} {:>9}\n",
+        "rasterizer", "filter", "mode", "threads", "size", "median ms", "Mpix/s"
+    );
+    for r in records {
+        out.push_str(&format!(
+            "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11.2} {:>9.1}\n",
+            r.rasterizer,
+            r.filter,
+            r.mode,
+            r.threads,
+            format!("{}x{}", r.width, r.height),
+            r.median_ms,
+            r.mpix_per_s
+        ));
+    }
+    out
+}
+
+/// The record of `rasterizer` for one filter x mode x threads cell, if measured.
+pub fn find<'a>(
+    records: &'a [BenchRecord],
+    rasterizer: &str,
+    filter: &str,
+    mode: &str,
+    threads: usize,
+) -> Option<&'a BenchRecord> {
+    records.iter().find(|r| {
+        r.rasterizer == rasterizer && r.filter == filter && r.mode == mode && r.threads == threads
+    })
+}
+
+/// How many times longer the edge-function rasterizer took than the scanline one for one
+/// filter x mode x threads cell: `edge median / scanline median` (seed 001 measured 1.40 ms
+/// / 0.73 ms, about 1.9). `None` unless both were measured.
+///
+/// ```
+/// use barylab::bench::{BenchRecord, edge_over_scanline};
+/// let rec = |r: &str, ms: f64| BenchRecord {
+///     rasterizer: r.into(), filter: "nearest".into(), mode: "affine".into(), threads: 1,
+///     width: 10, height: 10, median_ms: ms, mpix_per_s: 0.0,
+/// };
+/// let records = [rec("edge", 3.0), rec("scanline", 2.0)];
+/// assert_eq!(edge_over_scanline(&records, "nearest", "affine", 1), Some(1.5));
+/// assert_eq!(edge_over_scanline(&records, "bilinear", "affine", 1), None);
+/// ```
+pub fn edge_over_scanline(
+    records: &[BenchRecord],
+    filter: &str,
+    mode: &str,
+    threads: usize,
+) -> Option<f64> {
+    let edge = find(records, "edge", filter, mode, threads)?;
+    let scan = find(records, "scanline", filter, mode, threads)?;
+    (scan.median_ms > 0.0).then(|| edge.median_ms / scan.median_ms)
+}
+
+/// Seed 001's timing of its two release builds: per-pixel barycentric 1.40 ms, scanline
+/// 0.73 ms.
+pub const SEED_001_MS: (f64, f64) = (1.40, 0.73);
+
+/// The llvmpipe figures quoted by the performance issue for `assets/scenes/bench-1080p.json`
+/// (1920x1080, perspective-correct, draw only), measured on this project's 2-core machine:
+/// (threads, filter, median ms).
+pub const LLVMPIPE_REFERENCE_1080P: [(usize, &str, f64); 4] = [
+    (1, "bilinear", 11.8),
+    (1, "nearest", 7.3),
+    (2, "bilinear", 5.4),
+    (2, "nearest", 2.5),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    #[test]
+    fn run_config_measures_the_asked_configuration() {
+        let mut scene = Scene::default_scene();
+        scene.set_size(32, 24);
+        let texture = scene
+            .load_texture(std::path::Path::new(""))
+            .expect("builtin texture");
+        let config = BenchConfig {
+            rasterizer: Rasterizer::Scanline,
+            filter: Filter::Nearest,
+            mode: Interpolation::Affine,
+            threads: 1,
+        };
+        let r =
+            run_config(&scene.to_mesh(), &texture, &scene.settings(), config, 3).expect("bench");
+        assert_eq!(
+            (r.rasterizer.as_str(), r.filter.as_str(), r.mode.as_str()),
+            ("scanline", "nearest", "affine")
+        );
+        assert_eq!((r.width, r.height, r.threads), (32, 24, 1));
+        assert!(r.median_ms > 0.0);
+        assert!((r.mpix_per_s - 32.0 * 24.0 / (r.median_ms * 1e3)).abs() < 1e-9);
+        assert!(matches!(
+            run_config(&scene.to_mesh(), &texture, &scene.settings(), config, 0),
+            Err(BenchError::NoFrames)
+        ));
+    }
+
+    #[test]
+    fn matrix_covers_every_cell_once() {
+        let m = matrix(4);
+        let set: std::collections::HashSet<_> = m
+            .iter()
+            .map(|c| (c.rasterizer, c.filter, c.mode, c.threads))
+            .collect();
+        assert_eq!(set.len(), 16);
+        assert_eq!(matrix(1).len(), 8);
+    }
+}

@@ -1,0 +1,304 @@
+//! Conformance against the real thing: barylab's images against Mesa's llvmpipe (OpenGL 3.3
+//! core, headless EGL) drawing the same clip-space coordinates.
+//!
+//! Runs when Mesa's EGL is present; with `CI=true` a missing llvmpipe is a failure.
+//! Coverage and the owning triangle must match exactly; colours within the tolerances below,
+//! each with its reason. `cargo bench --bench llvmpipe -- --conformance` prints the full table.
+
+#[path = "../benches/llvmpipe/gl.rs"]
+mod gl;
+
+use std::path::Path;
+
+use barylab::raster::{Filter, Interpolation};
+
+/// Scenes whose triangles are all inside the near/far planes (no clip-made vertices), with
+/// an optional smaller size.
+const UNCLIPPED_SCENES: [(&str, Option<(u32, u32)>); 5] = [
+    ("bench-1080p.json", Some((480, 270))),
+    ("clip-two-triangles.json", None),
+    ("default.json", None),
+    ("front.json", None),
+    ("vertex-colors.json", None),
+];
+
+/// A scene with a vertex behind the camera: the near plane makes new vertices.
+const CLIPPED_SCENE: &str = "corner-behind.json";
+
+/// Vertex colours: both round a float in [0, 1] to 8 bits; llvmpipe interpolates in f32
+/// from plane equations, barylab in f64, so a value near a rounding midpoint may land on
+/// either side: at most 1.
+const COLOR_TOLERANCE: u8 = 1;
+
+/// Bilinear filtering: llvmpipe blends unorm8 texels with 8-bit fixed-point weights,
+/// barylab with f32 weights, and the uv they start from differs in the last f32 bits;
+/// measured at most 3 (clip-two-triangles, perspective), at most 2 elsewhere.
+const BILINEAR_TOLERANCE: u8 = 3;
+
+/// Nearest filtering: a differing pixel must have its sample point this close (in texels)
+/// to a texel boundary, where f32 (llvmpipe) and f64 (barylab) interpolation round to
+/// different texels. Measured at most 6.2e-3 on these scenes.
+const NEAREST_TIE_TEXELS: f32 = 0.01;
+
+/// One test at a time talks to Mesa (the environment is set once, before EGL is loaded).
+static MESA: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+fn llvmpipe() -> Option<(std::sync::MutexGuard<'static, ()>, gl::Llvmpipe)> {
+    let guard = MESA
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    static ENV: std::sync::Once = std::sync::Once::new();
+    ENV.call_once(gl::force_llvmpipe_env);
+    match gl::Llvmpipe::new() {
+        Ok(lp) => Some((guard, lp)),
+        Err(e) if std::env::var("CI").as_deref() == Ok("true") => {
+            panic!("llvmpipe is required on CI: {e}")
+        }
+        Err(e) => {
+            eprintln!("skipped: {e}");
+            None
+        }
+    }
+}
+
+fn scene_path(name: &str) -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("assets/scenes")
+        .join(name)
+}
+
+/// Checks one scene; returns a line per configuration for the failure message.
+fn check(lp: &mut gl::Llvmpipe, name: &str, size: Option<(u32, u32)>, colours: bool) {
+    let results = gl::compare_scene(lp, &scene_path(name), size).expect(name);
+    assert_eq!(results.len(), 6, "{name}: configurations compared");
+    for c in &results {
+        let what = format!(
+            "{name} {}x{} {:?} {:?} {:?}: {:?}",
+            c.width,
+            c.height,
+            c.output,
+            c.filter,
+            c.mode,
+            Summary(&c.result)
+        );
+        eprintln!("{what}");
+        assert!(
+            c.result.coverage_mismatch.is_empty(),
+            "coverage differs at {:?}: {what}",
+            &c.result.coverage_mismatch[..c.result.coverage_mismatch.len().min(20)]
+        );
+        assert!(
+            c.result.triangle_mismatch.is_empty(),
+            "owning triangle differs at {:?}: {what}",
+            &c.result.triangle_mismatch[..c.result.triangle_mismatch.len().min(20)]
+        );
+        if !colours {
+            continue;
+        }
+        match (c.output, c.filter) {
+            (gl::Output::Texture, Filter::Nearest) => assert!(
+                c.result.max_boundary_distance <= NEAREST_TIE_TEXELS,
+                "a nearest-filtered pixel differs away from a texel boundary: {what}"
+            ),
+            (gl::Output::Texture, _) => assert!(
+                c.result.max_channel_diff <= BILINEAR_TOLERANCE,
+                "bilinear colours differ too much: {what}"
+            ),
+            _ => assert!(
+                c.result.max_channel_diff <= COLOR_TOLERANCE,
+                "vertex colours differ too much: {what}"
+            ),
+        }
+    }
+}
+
+/// The comparison without the (long) pixel lists.
+struct Summary<'a>(&'a gl::Comparison);
+
+impl std::fmt::Debug for Summary<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let c = self.0;
+        write!(
+            f,
+            "coverage mismatches {}, triangle mismatches {}, {} of {} pixels differ, max {} at {:?}, nearest ties within {:.1e} texels",
+            c.coverage_mismatch.len(),
+            c.triangle_mismatch.len(),
+            c.color_differing,
+            c.pixels,
+            c.max_channel_diff,
+            c.max_at,
+            c.max_boundary_distance
+        )
+    }
+}
+
+#[test]
+fn unclipped_scenes_match_llvmpipe() {
+    let Some((_mesa, mut lp)) = llvmpipe() else {
+        return;
+    };
+    eprintln!("{}", lp.renderer());
+    for (name, size) in UNCLIPPED_SCENES {
+        check(&mut lp, name, size, true);
+    }
+}
+
+/// The fill rule where it matters: a lattice of triangles whose vertices sit exactly on pixel
+/// centres (and a fan around one of them), so that many pixel centres lie exactly on shared
+/// edges (horizontal, vertical and diagonal). Each must be covered by exactly the triangle
+/// llvmpipe gives it.
+#[test]
+fn edges_through_pixel_centres_match_llvmpipe() {
+    use barylab::raster::{ClipMesh, MeshVertex, RenderSettings, Texture, texture::BuiltinTexture};
+    use glam::{DVec4, Vec2, Vec3};
+    let Some((_mesa, mut lp)) = llvmpipe() else {
+        return;
+    };
+    let (w, h) = (64u32, 48u32);
+    // Window position (x right, y down) to clip space with w = 1.
+    let vertex = |x: f64, y: f64, k: usize| MeshVertex {
+        clip: DVec4::new(
+            2.0 * x / f64::from(w) - 1.0,
+            1.0 - 2.0 * y / f64::from(h),
+            0.0,
+            1.0,
+        ),
+        uv: Vec2::new((x / f64::from(w)) as f32, (y / f64::from(h)) as f32),
+        color: Vec3::new(
+            (k % 3) as f32 / 2.0,
+            (k % 5) as f32 / 4.0,
+            (k % 7) as f32 / 6.0,
+        ),
+    };
+    let mut mesh = ClipMesh::default();
+    // A 7x5 lattice, 6 px apart, at pixel centres; cells split along alternating diagonals.
+    let (nx, ny, step, origin) = (7usize, 5usize, 6.0, (4.5, 5.5));
+    for j in 0..ny {
+        for i in 0..nx {
+            let k = mesh.vertices.len();
+            mesh.vertices.push(vertex(
+                origin.0 + step * i as f64,
+                origin.1 + step * j as f64,
+                k,
+            ));
+        }
+    }
+    let at = |i: usize, j: usize| (j * nx + i) as u32;
+    for j in 0..ny - 1 {
+        for i in 0..nx - 1 {
+            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            if (i + j) % 2 == 0 {
+                mesh.triangles.extend([[a, b, c], [a, c, d]]);
+            } else {
+                mesh.triangles.extend([[a, b, d], [b, c, d]]);
+            }
+        }
+    }
+    // A fan of 12 triangles around the pixel centre (52.5, 30.5), spokes at slopes that hit
+    // pixel centres (multiples of 45 degrees and 2:1 steps).
+    let centre = mesh.vertices.len() as u32;
+    mesh.vertices.push(vertex(52.5, 30.5, 0));
+    let spokes = [
+        (8, 0),
+        (8, 4),
+        (8, 8),
+        (4, 8),
+        (0, 8),
+        (-4, 8),
+        (-8, 8),
+        (-8, 0),
+        (-8, -8),
+        (0, -8),
+        (4, -8),
+        (8, -8),
+    ];
+    let first = mesh.vertices.len() as u32;
+    for (k, (dx, dy)) in spokes.iter().enumerate() {
+        mesh.vertices
+            .push(vertex(52.5 + f64::from(*dx), 30.5 + f64::from(*dy), k + 1));
+    }
+    for k in 0..spokes.len() as u32 {
+        mesh.triangles
+            .push([centre, first + k, first + (k + 1) % spokes.len() as u32]);
+    }
+    let texture = Texture::builtin(BuiltinTexture::Checker);
+    let settings = RenderSettings {
+        width: w,
+        height: h,
+        ..RenderSettings::default()
+    };
+    let results = gl::compare_mesh(&mut lp, &mesh, &texture, &settings).expect("compare");
+    for c in &results {
+        eprintln!(
+            "{:?} {:?} {:?}: {:?}",
+            c.output,
+            c.filter,
+            c.mode,
+            Summary(&c.result)
+        );
+        assert!(
+            c.result.coverage_mismatch.is_empty(),
+            "coverage differs at {:?}",
+            c.result.coverage_mismatch
+        );
+        assert!(
+            c.result.triangle_mismatch.is_empty(),
+            "owner differs at {:?}",
+            c.result.triangle_mismatch
+        );
+        if c.output == gl::Output::VertexColor {
+            assert!(
+                c.result.max_channel_diff <= COLOR_TOLERANCE,
+                "{:?}",
+                Summary(&c.result)
+            );
+        }
+    }
+    assert_eq!(results.len(), 6);
+}
+
+/// Coverage and perspective-correct colours match on a scene the near plane clips.
+#[test]
+fn clipped_scene_coverage_and_perspective_colours_match_llvmpipe() {
+    let Some((_mesa, mut lp)) = llvmpipe() else {
+        return;
+    };
+    // Coverage of every configuration.
+    check(&mut lp, CLIPPED_SCENE, None, false);
+    // Colours of the perspective-correct ones.
+    let results = gl::compare_scene(&mut lp, &scene_path(CLIPPED_SCENE), None).expect("scene");
+    for c in results
+        .iter()
+        .filter(|c| c.mode == Interpolation::Perspective)
+    {
+        let limit = match (c.output, c.filter) {
+            (gl::Output::Texture, Filter::Nearest) => {
+                assert!(c.result.max_boundary_distance <= NEAREST_TIE_TEXELS);
+                continue;
+            }
+            (gl::Output::Texture, _) => BILINEAR_TOLERANCE,
+            _ => COLOR_TOLERANCE,
+        };
+        assert!(
+            c.result.max_channel_diff <= limit,
+            "{:?} {:?}: {:?}",
+            c.output,
+            c.filter,
+            Summary(&c.result)
+        );
+    }
+}
+
+/// Known difference (see docs/performance.md, "Conformance"): at a vertex made by clipping,
+/// OpenGL adjusts the interpolation parameter of `noperspective` attributes so that they vary
+/// linearly in screen space (Mesa's draw module computes `t` from the divided-by-w positions
+/// of the edge's ends); barylab's clipper interpolates every attribute with the clip-space
+/// `t`. Unignore when the clipper does the same.
+#[test]
+#[ignore = "barylab's affine mode differs from GL noperspective on clip-made vertices"]
+fn clipped_scene_affine_colours_match_llvmpipe() {
+    let Some((_mesa, mut lp)) = llvmpipe() else {
+        return;
+    };
+    check(&mut lp, CLIPPED_SCENE, None, true);
+}
