@@ -170,14 +170,14 @@ proptest! {
     fn clipped_output_is_inside_the_frustum(
         coords in proptest::collection::vec(-10.0f64..10.0, 12)
     ) {
-        let tri: [ClipVertex; 3] = std::array::from_fn(|k| ClipVertex {
-            clip: DVec4::new(coords[4 * k], coords[4 * k + 1], coords[4 * k + 2], coords[4 * k + 3]),
-            varyings: Varyings::new(
+        let tri: [ClipVertex; 3] = std::array::from_fn(|k| ClipVertex::new(
+            DVec4::new(coords[4 * k], coords[4 * k + 1], coords[4 * k + 2], coords[4 * k + 3]),
+            Varyings::new(
                 [(k == 0) as u8 as f32, (k == 1) as u8 as f32, (k == 2) as u8 as f32],
                 Vec2::new(k as f32, 0.0),
                 Vec3::ZERO,
             ),
-        });
+        ));
         let g = Viewport { width: W, height: H }.guard_band_ndc();
         let poly = clip_triangle(&tri, g);
         for v in poly.vertices() {
@@ -189,6 +189,51 @@ proptest! {
             let b = v.varyings.bary();
             prop_assert!((b.iter().sum::<f32>() - 1.0).abs() < 1e-5);
             prop_assert!(b.iter().all(|&x| (-1e-6..=1.0 + 1e-6).contains(&x)));
+        }
+    }
+
+    /// `noperspective` attributes stay linear on screen through clipping (OpenGL 13.7.1): at
+    /// every vertex of the clipped polygon they equal the 2D barycentric interpolation of the
+    /// original vertices' values over the original triangle's projected corners (x/w, y/w,
+    /// with the vertex behind the camera projected through its negative w, as GL does),
+    /// computed here independently in f64.
+    #[test]
+    fn noperspective_attributes_stay_linear_on_screen_through_clipping(
+        coords in proptest::collection::vec(-4.0f64..4.0, 9),
+        w in proptest::collection::vec(0.3f64..4.0, 3),
+        behind in 0usize..3,
+        z_behind in 0.1f64..2.0,
+    ) {
+        let mut clip: [DVec4; 3] = std::array::from_fn(|k| {
+            DVec4::new(coords[3 * k] * w[k], coords[3 * k + 1] * w[k], coords[3 * k + 2].clamp(-0.9, 0.9) * w[k], w[k])
+        });
+        // One vertex behind the camera: negative w, in front of the near plane's other side.
+        clip[behind].w = -clip[behind].w;
+        clip[behind].z = -z_behind;
+        let uv = [Vec2::new(0.0, 0.0), Vec2::new(8.0, 1.0), Vec2::new(2.0, 5.0)];
+        let tri: [ClipVertex; 3] = std::array::from_fn(|k| {
+            ClipVertex::new(clip[k], Varyings::new([0.0; 3], uv[k], Vec3::ZERO))
+        });
+        let ndc = clip.map(|c| glam::DVec2::new(c.x / c.w, c.y / c.w));
+        let area = |a: glam::DVec2, b: glam::DVec2, c: glam::DVec2| (b - a).perp_dot(c - a);
+        let total = area(ndc[0], ndc[1], ndc[2]);
+        prop_assume!(total.abs() > 1e-3);
+        let g = Viewport { width: W, height: H }.guard_band_ndc();
+        let poly = clip_triangle(&tri, g);
+        for v in poly.vertices() {
+            let p = glam::DVec2::new(v.clip.x / v.clip.w, v.clip.y / v.clip.w);
+            let l = [
+                area(p, ndc[1], ndc[2]) / total,
+                area(ndc[0], p, ndc[2]) / total,
+                area(ndc[0], ndc[1], p) / total,
+            ];
+            let expected: glam::DVec2 = (0..3).map(|k| uv[k].as_dvec2() * l[k]).sum();
+            let got = v.noperspective.uv().as_dvec2();
+            let scale = 1.0 + l.iter().map(|x| x.abs()).sum::<f64>() * 8.0;
+            prop_assert!(
+                (got - expected).length() <= 1e-4 * scale,
+                "noperspective uv {:?}, screen-linear {:?} at ndc {:?}", got, expected, p
+            );
         }
     }
 

@@ -2393,13 +2393,26 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     b.eq(listing((0..3).map(|k| {
         vec![sym(format!("uv_{}", n[k])), EQ, tup32(&a.uv_vertices[k])]
     })));
+    if a.uv_vertices_affine != a.uv_vertices {
+        b.eq_note(
+            listing((0..3).map(|k| {
+                vec![
+                    sym(format!("uv_{}", n[k])),
+                    EQ,
+                    tup32(&a.uv_vertices_affine[k]),
+                ]
+            })),
+            "for noperspective: at a vertex the clipper made, OpenGL interpolates along the \
+             cut edge with the screen-space fraction, so affine uv stays linear on screen",
+        );
+    }
     let uvs: Vec<String> = n.iter().map(|x| format!("uv_{x}")).collect();
     let mut l = vec![sym("uv_affine"), EQ];
     l.extend(weighted_sym(&SCREEN, &uvs));
     l.push(EQ);
     l.extend(weighted(
         &r,
-        a.uv_vertices.iter().map(|u| tup32(u)).collect(),
+        a.uv_vertices_affine.iter().map(|u| tup32(u)).collect(),
     ));
     l.extend([EQ, tup32(&a.uv_affine)]);
     b.eq_note(l, "screen weights: wrong under perspective");

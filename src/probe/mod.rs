@@ -386,8 +386,12 @@ pub struct ViewRay {
 /// The texture coordinate and vertex colour both ways.
 #[derive(Clone, Debug, Serialize)]
 pub struct AttributeTrace {
-    /// uv of the rasterized vertices.
+    /// uv of the rasterized vertices (for `smooth`, perspective-correct interpolation).
     pub uv_vertices: [[f32; 2]; 3],
+    /// uv of the rasterized vertices for `noperspective` (affine) interpolation: the same as
+    /// `uv_vertices` except at a vertex the clipper made, where OpenGL interpolates
+    /// `noperspective` attributes with the screen-space fraction along the cut edge.
+    pub uv_vertices_affine: [[f32; 2]; 3],
     /// `r uv_A + s uv_B + t uv_C` (the renderer's, f32).
     pub uv_affine: [f32; 2],
     /// `a uv_A + b uv_B + c uv_C` (the renderer's, f32).
@@ -1006,9 +1010,9 @@ impl<'a> Prober<'a> {
                 edge_distance_px: self
                     .params
                     .wireframe
-                    .then(|| shade::edge_distance_px(f.affine.bary(), &wire)),
+                    .then(|| shade::edge_distance_px(f.edge_weights, &wire)),
                 wire: self.params.wireframe
-                    && shade::edge_distance_px(f.affine.bary(), &wire) < shade::WIRE_WIDTH_PX,
+                    && shade::edge_distance_px(f.edge_weights, &wire) < shade::WIRE_WIDTH_PX,
                 color: shade::shade(f, self.texture, &self.params, &wire),
             }
         });
@@ -1152,6 +1156,7 @@ impl<'a> Prober<'a> {
         let diff = (uv_a.as_dvec2() - uv_p.as_dvec2()) * size;
         AttributeTrace {
             uv_vertices: uvs.map(|u| u.to_array()),
+            uv_vertices_affine: s.v.map(|v| v.noperspective.uv().to_array()),
             uv_affine: uv_a.to_array(),
             uv_perspective: uv_p.to_array(),
             uv_games101: [g(0), g(1)],

@@ -67,6 +67,11 @@ pub struct Fragment {
     pub affine: Varyings,
     /// Attributes with perspective-correct weights (`smooth`).
     pub correct: Varyings,
+    /// The source triangle's weights at the rasterized vertices (their `smooth` values)
+    /// interpolated with the screen weights: zero exactly along the source triangle's edges,
+    /// in every clipped piece, so the wireframe draws those edges (see
+    /// [`edge_distance_px`](super::shade::edge_distance_px)).
+    pub edge_weights: [f32; 3],
     /// Texture level of detail (see [`quad_lod`]); 0 unless trilinear filtering asked for it.
     pub lod: f32,
 }
@@ -93,15 +98,30 @@ pub fn fragment(setup: &TriangleSetup, edges: [i64; 3]) -> Option<Fragment> {
         setup.v[1].varyings,
         setup.v[2].varyings,
     ];
+    let noperspective = [
+        setup.v[0].noperspective,
+        setup.v[1].noperspective,
+        setup.v[2].noperspective,
+    ];
     Some(Fragment {
         edges,
         screen: l,
         perspective: p,
         depth: l[0] * setup.v[0].depth + l[1] * setup.v[1].depth + l[2] * setup.v[2].depth,
         inv_w: l[0] * inv_w[0] + l[1] * inv_w[1] + l[2] * inv_w[2],
-        affine: Varyings::weighted(&l, &vars),
+        affine: Varyings::weighted(&l, &noperspective),
+        edge_weights: edge_weights(setup, &l),
         correct: Varyings::weighted(&p, &vars),
         lod: 0.0,
+    })
+}
+
+/// [`Fragment::edge_weights`]: `sum_k l_k b_k` with `b_k` the source weights (`smooth`) of
+/// rasterized vertex `k`, per source vertex, as `f32`.
+pub fn edge_weights(setup: &TriangleSetup, l: &[f64; 3]) -> [f32; 3] {
+    let b = setup.v.map(|v| v.varyings.bary());
+    [0, 1, 2].map(|i| {
+        (l[0] * f64::from(b[0][i]) + l[1] * f64::from(b[1][i]) + l[2] * f64::from(b[2][i])) as f32
     })
 }
 

@@ -57,7 +57,10 @@ pub struct WindowVertex {
     pub depth: f64,
     /// 1 / w_clip, kept for perspective-correct interpolation.
     pub inv_w: f64,
+    /// The attributes for `smooth` (perspective-correct) interpolation.
     pub varyings: Varyings,
+    /// The attributes for `noperspective` (affine) interpolation (see [`ClipVertex`]).
+    pub noperspective: Varyings,
 }
 
 /// Perspective divide: NDC = (x/w, y/w, z/w).
@@ -116,5 +119,6 @@ pub fn project_vertex(v: &ClipVertex, viewport: Viewport) -> WindowVertex {
         depth: win.z,
         inv_w: 1.0 / v.clip.w,
         varyings: v.varyings,
+        noperspective: v.noperspective,
     }
 }

@@ -153,10 +153,7 @@ pub fn source_vertices(mesh: &ClipMesh, index: u32) -> Option<[ClipVertex; 3]> {
         let v = mesh.vertices.get(vi as usize)?;
         let mut bary = [0.0; 3];
         bary[k] = 1.0;
-        *o = ClipVertex {
-            clip: v.clip,
-            varyings: Varyings::new(bary, v.uv, v.color),
-        };
+        *o = ClipVertex::new(v.clip, Varyings::new(bary, v.uv, v.color));
     }
     Some(out)
 }

@@ -61,8 +61,8 @@ fn edge_columns(edge: &Edge, py: i64) -> (i64, i64) {
 /// // Window (0,0), (8,0), (0,8) in an 8x8 viewport: row 2 (y = 2.5) covers x + y < 8,
 /// // centres 0.5 .. 4.5 -> columns 0..=4 (the centre 5.5 is outside).
 /// let vp = Viewport { width: 8, height: 8 };
-/// let at = |x: f64, y: f64| project_vertex(&ClipVertex {
-///     clip: DVec4::new(x / 4.0 - 1.0, 1.0 - y / 4.0, 0.0, 1.0), varyings: Varyings::default() }, vp);
+/// let at = |x: f64, y: f64| project_vertex(&ClipVertex::new(
+///     DVec4::new(x / 4.0 - 1.0, 1.0 - y / 4.0, 0.0, 1.0), Varyings::default()), vp);
 /// let s = setup_triangle([at(0.0, 0.0), at(8.0, 0.0), at(0.0, 8.0)], vp).unwrap();
 /// assert_eq!(row_span(&s, 2), Some((0, 4)));
 /// ```
@@ -101,7 +101,7 @@ impl Values {
         for s in 0..NUM_VARYINGS {
             for k in 0..3 {
                 let a = f64::from(v[k].varyings.0[s]);
-                affine[s] += l[k] * a;
+                affine[s] += l[k] * f64::from(v[k].noperspective.0[s]);
                 over_w[s] += l[k] * a * v[k].inv_w;
             }
         }
@@ -144,6 +144,7 @@ impl Values {
             correct.0[s] = (self.over_w[s] / self.inv_w) as f32;
         }
         Some(Fragment {
+            edge_weights: super::interpolate::edge_weights(setup, &self.screen),
             edges,
             screen: self.screen,
             perspective: q,

@@ -87,7 +87,7 @@ pub fn shade(
     p: &ShadeParams,
     wire_gradients: &[glam::DVec2; 3],
 ) -> [u8; 4] {
-    if p.wireframe && edge_distance_px(frag.affine.bary(), wire_gradients) < WIRE_WIDTH_PX {
+    if p.wireframe && edge_distance_px(frag.edge_weights, wire_gradients) < WIRE_WIDTH_PX {
         return WIRE_COLOR;
     }
     let v = frag.varyings(p.mode);

@@ -470,7 +470,7 @@ pub(super) fn edge_triangle(
     let (mode, color) = (shading.mode, shading.color);
     let mut lookups = sampler.map(|s| Lookups::new(s, wide));
     let planes = EdgePlanes::new(setup);
-    let consts = Constants::new(setup, shading.wireframe, color);
+    let consts = Constants::new(setup, mode, shading.wireframe, color);
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
     let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
     let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
@@ -557,7 +557,7 @@ pub(super) fn scanline_triangle(
     target: &mut Target<'_>,
 ) {
     let mut lookups = Lookups::new(sampler, wide);
-    let consts = Constants::new(setup, false, LaneColor::Texture);
+    let consts = Constants::new(setup, mode, false, LaneColor::Texture);
     let dl: [f64; 3] = setup
         .edges
         .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);

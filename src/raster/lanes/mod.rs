@@ -145,8 +145,8 @@ pub enum LaneColor {
 /// use barylab::raster::varying::Varyings;
 /// use glam::DVec4;
 /// let vp = Viewport { width: 8, height: 8 };
-/// let at = |x: f64, y: f64| project_vertex(&ClipVertex {
-///     clip: DVec4::new(x / 4.0 - 1.0, 1.0 - y / 4.0, 0.0, 1.0), varyings: Varyings::default() }, vp);
+/// let at = |x: f64, y: f64| project_vertex(&ClipVertex::new(
+///     DVec4::new(x / 4.0 - 1.0, 1.0 - y / 4.0, 0.0, 1.0), Varyings::default()), vp);
 /// let s = setup_triangle([at(0.0, 0.0), at(8.0, 0.0), at(0.0, 8.0)], vp).unwrap();
 /// let planes = EdgePlanes::new(&s);
 /// // The planes give the setup's own edge values at every pixel centre.
@@ -256,15 +256,22 @@ struct Wire {
 }
 
 impl Constants {
-    fn new(setup: &TriangleSetup, wireframe: bool, color: LaneColor) -> Self {
-        let uv = setup.v.map(|v| v.varyings.uv());
+    /// `mode` picks the vertices' attribute set: `smooth` (perspective-correct) or
+    /// `noperspective` (affine). The wireframe uses the `smooth` source weights with screen
+    /// weights, as [`Fragment::edge_weights`](super::interpolate::Fragment::edge_weights).
+    fn new(setup: &TriangleSetup, mode: Interpolation, wireframe: bool, color: LaneColor) -> Self {
+        let vary = |k: usize| match mode {
+            Interpolation::Perspective => &setup.v[k].varyings,
+            Interpolation::Affine => &setup.v[k].noperspective,
+        };
+        let uv = [0, 1, 2].map(|k| vary(k).uv());
         let per_vertex = |f: &dyn Fn(usize) -> [f32; 3]| {
             let at = [f(0), f(1), f(2)];
             [0, 1, 2].map(|c| [0, 1, 2].map(|k| f64::from(at[k][c])))
         };
         let channels = match color {
-            LaneColor::VertexColor => per_vertex(&|k| setup.v[k].varyings.color().to_array()),
-            LaneColor::Barycentric => per_vertex(&|k| setup.v[k].varyings.bary()),
+            LaneColor::VertexColor => per_vertex(&|k| vary(k).color().to_array()),
+            LaneColor::Barycentric => per_vertex(&|k| vary(k).bary()),
             LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
         };
         let wire = wireframe.then(|| {
@@ -575,9 +582,9 @@ fn edge_triangle_impl(
 ) {
     let planes = EdgePlanes::new(setup);
     let color = shading.map_or(LaneColor::Texture, |s| s.color);
-    let consts = Constants::new(setup, shading.is_some_and(|s| s.wireframe), color);
-    let sampler = shading.map(|s| Sampler::new(texture, s.filter, s.wrap));
     let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
+    let consts = Constants::new(setup, mode, shading.is_some_and(|s| s.wireframe), color);
+    let sampler = shading.map(|s| Sampler::new(texture, s.filter, s.wrap));
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
     let a = planes.a.map(|v| v as f64);
     let t = planes.t.map(|v| v as f64);
@@ -729,9 +736,9 @@ fn scanline_triangle_impl(
 ) {
     // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
     // scanline code).
-    let consts = Constants::new(setup, false, LaneColor::Texture);
-    let sampler = Sampler::new(texture, shading.filter, shading.wrap);
     let mode = shading.mode;
+    let consts = Constants::new(setup, mode, false, LaneColor::Texture);
+    let sampler = Sampler::new(texture, shading.filter, shading.wrap);
     let dl: [f64; 3] = setup
         .edges
         .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);
