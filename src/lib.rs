@@ -5,10 +5,12 @@
 //! - [`model`]: OBJ models.
 //! - [`probe`]: every number behind one pixel, and its derivation as text.
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
+//! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
 //! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
 pub mod app;
+pub mod figure;
 pub mod model;
 pub mod probe;
 pub mod raster;

@@ -11,15 +11,16 @@ pub mod canvas;
 pub mod controls;
 pub mod edit;
 pub mod files;
-pub mod heatmap;
 pub mod help;
 pub mod inspector;
-pub mod overlay;
 pub mod paint;
 pub mod pixel;
 pub mod presets;
 pub mod state;
 pub mod status;
+
+/// The overlay description and the heatmap live in [`crate::figure`] (no egui there).
+pub use crate::figure::{heatmap, overlay};
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};

@@ -12,29 +12,7 @@ use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
-/// How the canvas compares the two interpolation modes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Compare {
-    /// One view in the scene's mode.
-    #[default]
-    Single,
-    /// Affine on the left, perspective-correct on the right, same view.
-    SideBySide,
-    /// One view split by a draggable line: affine left of it, perspective-correct right.
-    Wipe,
-    /// |uv affine - uv perspective| in texels as a heatmap.
-    Difference,
-}
-
-impl Compare {
-    pub const ALL: [Compare; 4] = [
-        Compare::Single,
-        Compare::SideBySide,
-        Compare::Wipe,
-        Compare::Difference,
-    ];
-}
+pub use crate::figure::Compare;
 
 /// Smallest and largest pixel size (display pixels per rendered pixel).
 pub const PIXEL_SIZE_RANGE: (u32, u32) = (1, 32);

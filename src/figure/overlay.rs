@@ -1,5 +1,6 @@
 //! What is drawn over the rendered image, as plain data: shapes and text in canvas
-//! coordinates. The canvas paints it with egui; an export can turn the same list into SVG.
+//! coordinates. The app's canvas paints it with egui; the figure export writes the same list
+//! as SVG (and rasterizes that SVG for PNG).
 //!
 //! Coordinates: canvas coordinates are the rasterizer's window coordinates of the rendered
 //! image, in its pixels (x right, y down, pixel (c, r) covers [c, c+1] x [r, r+1], its sample at
@@ -348,6 +349,17 @@ pub fn build(input: &OverlayInput) -> Overlay {
     };
     for handle in &input.handles {
         handle_shapes(&mut shapes, handle, centre);
+    }
+    if let Some(note) = behind_camera_note(&input.handles) {
+        shapes.push(Shape::Text {
+            at: DVec2::new(0.0, hf),
+            offset: [10.0, -10.0],
+            anchor: Anchor::LeftBottom,
+            text: note,
+            size: TEXT_LABEL,
+            color: NEGATIVE,
+            background: Some(LABEL_BG),
+        });
     }
     Overlay { shapes }
 }
