@@ -636,7 +636,10 @@ fn figure(args: &FigureArgs) -> Result<()> {
     let svg_out = match ext.as_deref() {
         Some("svg") => true,
         Some("png") => false,
-        _ => bail!("output {} must be a .png or .svg file", args.output.display()),
+        _ => bail!(
+            "output {} must be a .png or .svg file",
+            args.output.display()
+        ),
     };
     let (mut scene, texture, settings) = prepare(&args.input)?;
     // The figure draws the scene as it is: the options become the scene's own.

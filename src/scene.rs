@@ -451,10 +451,7 @@ impl Scene {
     pub fn with_absolute_paths(&self, base_dir: &Path) -> Scene {
         let absolute = |name: &str| {
             let p = resolve(base_dir, name);
-            std::path::absolute(&p)
-                .unwrap_or(p)
-                .display()
-                .to_string()
+            std::path::absolute(&p).unwrap_or(p).display().to_string()
         };
         let texture = |name: &str| match BuiltinTexture::from_name(name) {
             Some(_) => name.to_string(),

@@ -366,6 +366,7 @@ pub const FOV_RANGE_DEG: (f64, f64) = (5.0, 150.0);
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::raster::project::{ndc_from_clip, window_from_ndc};
 
     fn vp() -> Viewport {
         Viewport {

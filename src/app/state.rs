@@ -65,6 +65,8 @@ pub struct SavedState {
     pub view: ViewSettings,
     /// Recently opened files, newest first (kept by the app beside the state).
     pub recent: super::files::RecentFiles,
+    /// The Export panel's folder, scale, background and file choice.
+    pub export: super::export::ExportSettings,
 }
 
 /// Key under which eframe stores [`SavedState`].
@@ -95,6 +97,7 @@ impl AppState {
             scene_dir: self.scene_dir.clone(),
             view: self.view.clone(),
             recent: Default::default(),
+            export: Default::default(),
         }
     }
 

@@ -36,15 +36,9 @@ impl Default for ExportSelection {
 #[derive(Debug, thiserror::Error)]
 pub enum ExportError {
     #[error("cannot use folder {path}: {cause}")]
-    Folder {
-        path: String,
-        cause: std::io::Error,
-    },
+    Folder { path: String, cause: std::io::Error },
     #[error("cannot write {path}: {cause}")]
-    Write {
-        path: String,
-        cause: std::io::Error,
-    },
+    Write { path: String, cause: std::io::Error },
     #[error("no free file name {stem}-001 ... {stem}-{last} in {folder}", last = MAX_NUMBER)]
     NoFreeName { stem: String, folder: String },
     #[error("{0}")]

@@ -385,7 +385,9 @@ impl Figure {
                 ViewContent::Mode(m) => render_of(m)
                     .map(|r| r.frame.color.clone())
                     .unwrap_or_default(),
-                ViewContent::Difference => heat.as_ref().map(|h| h.pixels.clone()).unwrap_or_default(),
+                ViewContent::Difference => {
+                    heat.as_ref().map(|h| h.pixels.clone()).unwrap_or_default()
+                }
                 ViewContent::Wipe => match (
                     render_of(Interpolation::Affine),
                     render_of(Interpolation::Perspective),
@@ -398,7 +400,11 @@ impl Figure {
                             .zip(&p.frame.color)
                             .enumerate()
                             .map(|(k, (ca, cp))| {
-                                if ((k % row) as u32) < wipe_px { *ca } else { *cp }
+                                if ((k % row) as u32) < wipe_px {
+                                    *ca
+                                } else {
+                                    *cp
+                                }
                             })
                             .collect()
                     }
@@ -428,10 +434,7 @@ impl Figure {
                     _ => None,
                 },
             };
-            let origin = [
-                (m + i as u64 * (view_w + gap)) as u32,
-                (m + strip) as u32,
-            ];
+            let origin = [(m + i as u64 * (view_w + gap)) as u32, (m + strip) as u32];
             let clip = [
                 origin[0] as f32 - FIGURE_MARGIN as f32,
                 origin[1] as f32 - overlay::TITLE_STRIP - FIGURE_MARGIN as f32,
@@ -460,7 +463,11 @@ impl Figure {
 }
 
 /// A `size` RGBA image with every pixel repeated `factor` x `factor` times.
-fn upscaled(pixels: &[[u8; 4]], size: [u32; 2], factor: u32) -> Result<image::RgbaImage, FigureError> {
+fn upscaled(
+    pixels: &[[u8; 4]],
+    size: [u32; 2],
+    factor: u32,
+) -> Result<image::RgbaImage, FigureError> {
     let [w, h] = size;
     if pixels.len() != (w as usize) * (h as usize) {
         return Err(FigureError::Draw(format!(

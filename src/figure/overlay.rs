@@ -321,8 +321,8 @@ pub fn build(input: &OverlayInput) -> Overlay {
             .collect();
         shapes.push(Shape::ColorBar {
             at: DVec2::new(wf, 0.0),
-            offset: [-90.0, 60.0],
-            size: [26.0, 260.0],
+            offset: [-90.0, COLOR_BAR_TOP],
+            size: [26.0, color_bar_height(hf * f64::from(input.pixel_size))],
             colors,
             labels,
             title: "texels".to_string(),
@@ -362,6 +362,19 @@ pub fn build(input: &OverlayInput) -> Overlay {
         });
     }
     Overlay { shapes }
+}
+
+/// Points: the colour bar's top lies this far below the image's top.
+const COLOR_BAR_TOP: f32 = 60.0;
+/// Points: the colour bar's largest height, and the room kept below it (its background and
+/// a margin).
+const COLOR_BAR_HEIGHT: f32 = 260.0;
+const COLOR_BAR_BELOW: f32 = 40.0;
+
+/// The colour bar's height in points for an image `view_height` points high: at most
+/// [`COLOR_BAR_HEIGHT`], less on a small image so it stays inside (at least 60).
+fn color_bar_height(view_height: f64) -> f32 {
+    (view_height as f32 - COLOR_BAR_TOP - COLOR_BAR_BELOW).clamp(60.0, COLOR_BAR_HEIGHT)
 }
 
 fn format_scale(v: f32) -> String {

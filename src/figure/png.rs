@@ -70,7 +70,10 @@ pub fn to_png(figure: &Figure) -> Result<Vec<u8>, FigureError> {
     let image = rasterize(figure)?;
     let mut bytes = Vec::new();
     image
-        .write_to(&mut std::io::Cursor::new(&mut bytes), image::ImageFormat::Png)
+        .write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            image::ImageFormat::Png,
+        )
         .map_err(|e| FigureError::Draw(e.to_string()))?;
     Ok(bytes)
 }

@@ -343,7 +343,13 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2) {
             } => {
                 let p = t.point(*at);
                 let min = [p[0] + offset[0], p[1] + offset[1]];
-                color_bar(s, [min[0], min[1], min[0] + size[0], min[1] + size[1]], colors, labels, title);
+                color_bar(
+                    s,
+                    [min[0], min[1], min[0] + size[0], min[1] + size[1]],
+                    colors,
+                    labels,
+                    title,
+                );
             }
         }
     }

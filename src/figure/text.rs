@@ -217,10 +217,22 @@ mod tests {
     #[test]
     fn a_label_near_the_bottom_goes_above_its_point_and_one_too_wide_stays() {
         let clip = [0.0, 0.0, 100.0, 100.0];
-        let b = place_label([50.0, 95.0], [0.0, 4.0], Anchor::CenterTop, [20.0, 10.0], clip);
+        let b = place_label(
+            [50.0, 95.0],
+            [0.0, 4.0],
+            Anchor::CenterTop,
+            [20.0, 10.0],
+            clip,
+        );
         assert_eq!(b, [40.0, 81.0, 60.0, 91.0]);
         // Wider than the clip: left where it is.
-        let b = place_label([50.0, 50.0], [0.0, 0.0], Anchor::Center, [200.0, 10.0], clip);
+        let b = place_label(
+            [50.0, 50.0],
+            [0.0, 0.0],
+            Anchor::Center,
+            [200.0, 10.0],
+            clip,
+        );
         assert_eq!(b, [-50.0, 45.0, 150.0, 55.0]);
     }
 }

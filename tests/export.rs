@@ -1,0 +1,163 @@
+//! The app's Export panel driven through egui_kittest, and its files checked against
+//! `barylab figure` run on the exported scene.
+
+use std::path::Path;
+use std::process::Command;
+
+use barylab::app::export::ExportCommand;
+use barylab::app::{AppOptions, BaryApp};
+use egui::Pos2;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use glam::DVec2;
+
+const SIZE: egui::Vec2 = egui::vec2(1500.0, 950.0);
+
+fn harness() -> Harness<'static, BaryApp> {
+    let app = BaryApp::new(None, AppOptions::default());
+    let mut h = Harness::builder()
+        .with_size(SIZE)
+        .with_max_steps(30)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    h.run();
+    h
+}
+
+fn pixel_centre(h: &Harness<'_, BaryApp>, p: [u32; 2]) -> Pos2 {
+    let view = h.state().canvas().views[0];
+    view.transform
+        .to_screen(DVec2::new(f64::from(p[0]) + 0.5, f64::from(p[1]) + 0.5))
+}
+
+fn click(h: &mut Harness<'_, BaryApp>, pos: Pos2) {
+    h.hover_at(pos);
+    h.run();
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+    }
+    h.run();
+}
+
+/// Pins the pixel at a third of the canvas's width and two thirds of its height (on the quad).
+fn pin(h: &mut Harness<'_, BaryApp>) -> [u32; 2] {
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let p = [out.size[0] / 3, out.size[1] * 2 / 3];
+    let pos = pixel_centre(h, p);
+    click(h, pos);
+    assert_eq!(h.state().state().view.pinned, Some(p));
+    // Move the pointer off the canvas so nothing is hovered.
+    h.hover_at(Pos2::new(2.0, SIZE.y - 2.0));
+    h.run();
+    p
+}
+
+#[test]
+fn ctrl_s_exports_what_barylab_figure_draws_from_the_exported_scene() {
+    let mut h = harness();
+    let p = pin(&mut h);
+    let dir = tempfile::tempdir().expect("tempdir");
+    let folder = dir.path().join("figures");
+    // Ctrl+S opens the panel; its Export button writes the files.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::S);
+    h.run();
+    assert!(h.state().export_panel().open);
+    h.state_mut()
+        .push_export(ExportCommand::SetFolder(folder.clone()));
+    h.run();
+    h.get_by_label("Export").click();
+    h.run();
+    let outcome = h.state().export_panel().outcome.clone().expect("outcome");
+    assert!(!outcome.error, "{:?}", outcome.lines);
+    for ext in ["png", "svg", "md", "tex", "json"] {
+        assert!(folder.join(format!("figure-001.{ext}")).is_file(), "{ext}");
+    }
+    // Ctrl+S again with the panel open: a second set, the first untouched.
+    let first = std::fs::read(folder.join("figure-001.png")).expect("png");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::S);
+    h.run();
+    assert!(folder.join("figure-002.png").is_file());
+    assert_eq!(
+        std::fs::read(folder.join("figure-001.png")).expect("png"),
+        first
+    );
+
+    // The PNG is twice the canvas (the default scale) plus margins and title strip.
+    let size = h.state().canvas().output.as_ref().expect("rendered").size;
+    let png = image::open(folder.join("figure-001.png")).expect("png");
+    let m = barylab::figure::FIGURE_MARGIN;
+    let strip = barylab::figure::overlay::TITLE_STRIP as u32;
+    assert_eq!(
+        (png.width(), png.height()),
+        (2 * (size[0] + 2 * m), 2 * (size[1] + 2 * m + strip))
+    );
+
+    // `barylab figure` on the exported scene, same pixel and options: the same files.
+    for ext in ["png", "svg"] {
+        let out = dir.path().join(format!("cli.{ext}"));
+        let run = Command::new(env!("CARGO_BIN_EXE_barylab"))
+            .arg("figure")
+            .arg(folder.join("figure-001.json"))
+            .args(["--pixel", &format!("{},{}", p[0], p[1])])
+            .args(["--scale", "2", "--background", "white", "-o"])
+            .arg(&out)
+            .output()
+            .expect("run barylab");
+        assert!(
+            run.status.success(),
+            "{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        assert!(
+            std::fs::read(&out).expect("cli")
+                == std::fs::read(folder.join(format!("figure-001.{ext}"))).expect("app"),
+            "{ext} differs"
+        );
+    }
+    // The derivation is the pinned pixel's.
+    let md = std::fs::read_to_string(folder.join("figure-001.md")).expect("md");
+    assert!(md.starts_with(&format!("# barylab probe: pixel ({}, {})", p[0], p[1])));
+}
+
+#[test]
+fn export_into_an_impossible_folder_shows_the_error_and_keeps_the_scene() {
+    let mut h = harness();
+    pin(&mut h);
+    let dir = tempfile::tempdir().expect("tempdir");
+    let file = dir.path().join("file.txt");
+    std::fs::write(&file, "x").expect("write");
+    let folder = file.join("sub");
+    let before = h.state().state().clone();
+    h.state_mut().push_export(ExportCommand::Open);
+    h.state_mut()
+        .push_export(ExportCommand::SetFolder(folder.clone()));
+    h.run();
+    h.get_by_label("Export").click();
+    h.run();
+    let outcome = h.state().export_panel().outcome.clone().expect("outcome");
+    assert!(outcome.error);
+    let shown = folder.display().to_string();
+    assert!(outcome.lines[0].contains(&shown), "{:?}", outcome.lines);
+    // In the panel and on the status line.
+    assert!(h.query_all_by_label_contains(&shown).count() >= 1);
+    assert!(h.state().message().is_some_and(|m| m.contains(&shown)));
+    assert!(*h.state().state() == before, "the scene changed");
+    assert!(!Path::new(&folder).exists());
+    assert_eq!(std::fs::read_dir(dir.path()).expect("list").count(), 1);
+}
+
+#[test]
+fn export_without_a_folder_asks_for_one() {
+    let mut h = harness();
+    h.state_mut().push_export(ExportCommand::Open);
+    h.run();
+    h.get_by_label("Export").click();
+    h.run();
+    let outcome = h.state().export_panel().outcome.clone().expect("outcome");
+    assert!(outcome.error);
+    assert_eq!(outcome.lines, ["choose a folder first"]);
+}
