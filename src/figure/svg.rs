@@ -76,6 +76,12 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
             n(x1 - x0),
             n(y1 - y0)
         );
+        let [iw, ih] = figure.canvas_size.map(|v| v * figure.pixel_size);
+        let _ = writeln!(
+            s,
+            r#"<clipPath id="image{i}"><rect x="{}" y="{}" width="{iw}" height="{ih}"/></clipPath>"#,
+            v.origin[0], v.origin[1]
+        );
     }
     s.push_str("</defs>\n");
     if layers.images && figure.background == Background::White {
@@ -94,7 +100,7 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
                 origin: [f64::from(v.origin[0]), f64::from(v.origin[1])],
                 scale: f64::from(figure.pixel_size),
             };
-            overlay(&mut s, &v.overlay, t, v.clip);
+            overlay(&mut s, &v.overlay, t, v.clip, &format!("image{i}"));
             s.push_str("</g>\n");
         }
     }
@@ -231,21 +237,43 @@ fn label(s: &mut String, b: Box2, text: &str, size: f32, color: Rgba, background
     if let Some(bg) = background {
         rect(s, b, LABEL_ROUNDING, &fill(bg));
     }
-    let (_, ascent) = text::measure(text, size);
+    let ([width, _], ascent) = text::measure(text, size);
+    // textLength: a viewer without the Ubuntu font stretches or squeezes its fallback font
+    // to the measured width, so the text still fits its box.
     let _ = writeln!(
         s,
-        r#"<text x="{}" y="{}" font-size="{}" {} xml:space="preserve">{}</text>"#,
+        r#"<text x="{}" y="{}" font-size="{}" textLength="{}" lengthAdjust="spacingAndGlyphs" {} xml:space="preserve">{}</text>"#,
         n(b[0] + pad[0]),
         n(b[1] + pad[1] + ascent),
         n(size),
+        n(width),
         fill(color),
         escape(text)
     );
 }
 
 /// The overlay's shapes as SVG elements.
-fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2) {
+fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_clip: &str) {
+    // Lines and areas stay on the image (a clipped triangle's outline can reach far off it);
+    // handles and labels may use the margin around it. Consecutive shapes on the image share
+    // one clipped group, so the painting order is kept.
+    let mut in_image_group = false;
     for shape in &overlay.shapes {
+        let on_image = matches!(
+            shape,
+            Shape::Polygon { .. }
+                | Shape::Line { .. }
+                | Shape::Rect { .. }
+                | Shape::PixelGrid { .. }
+        );
+        if on_image != in_image_group {
+            if on_image {
+                let _ = writeln!(s, r#"<g clip-path="url(#{image_clip})">"#);
+            } else {
+                s.push_str("</g>\n");
+            }
+            in_image_group = on_image;
+        }
         match shape {
             Shape::Polygon {
                 points: pts,
@@ -352,6 +380,9 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2) {
                 );
             }
         }
+    }
+    if in_image_group {
+        s.push_str("</g>\n");
     }
 }
 
