@@ -161,3 +161,28 @@ fn export_without_a_folder_asks_for_one() {
     assert!(outcome.error);
     assert_eq!(outcome.lines, ["choose a folder first"]);
 }
+
+#[test]
+fn copy_figure_reports_what_happened_and_never_panics() {
+    // Headless there is usually no clipboard: then the panel says so in one line.
+    let mut h = harness();
+    pin(&mut h);
+    h.state_mut().push_export(ExportCommand::Open);
+    h.run();
+    h.get_by_label("Copy figure").click();
+    h.run();
+    let outcome = h.state().export_panel().outcome.clone().expect("outcome");
+    assert_eq!(outcome.lines.len(), 1);
+    if outcome.error {
+        assert!(
+            outcome.lines[0].starts_with("cannot copy to the clipboard: "),
+            "{:?}",
+            outcome.lines
+        );
+    } else {
+        assert_eq!(outcome.lines[0], "figure copied to the clipboard");
+    }
+    let before = h.state().state().clone();
+    h.run();
+    assert!(*h.state().state() == before);
+}

@@ -125,6 +125,7 @@ pub struct ExportPanel {
     commands: Vec<ExportCommand>,
     dialog: Option<Receiver<Option<PathBuf>>>,
     screenshot: Option<(PathBuf, ScreenshotSlot)>,
+    clipboard: Option<arboard::Clipboard>,
 }
 
 /// Everything an export needs from the app.
@@ -238,12 +239,19 @@ impl ExportPanel {
         .map_err(|e: ExportError| e.to_string())
     }
 
-    fn copy(&self, app: &ExportContext<'_>) -> Result<(), String> {
+    fn copy(&mut self, app: &ExportContext<'_>) -> Result<(), String> {
         let (_, figure) = self.figure(app)?;
         let image = png::rasterize(&figure).map_err(|e| e.to_string())?;
         let (width, height) = image.dimensions();
         let fail = |e: arboard::Error| format!("{}: {e}", text::CLIPBOARD_FAILED);
-        let mut clipboard = arboard::Clipboard::new().map_err(fail)?;
+        // Kept open: on X11 without a clipboard manager the image is served by this process
+        // and would be gone the moment the clipboard was dropped.
+        let clipboard = match &mut self.clipboard {
+            Some(c) => c,
+            None => self
+                .clipboard
+                .insert(arboard::Clipboard::new().map_err(fail)?),
+        };
         clipboard
             .set_image(arboard::ImageData {
                 width: width as usize,
