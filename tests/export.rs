@@ -5,6 +5,7 @@ use std::path::Path;
 use std::process::Command;
 
 use barylab::app::export::ExportCommand;
+use barylab::app::state::{Command as AppCommand, Compare};
 use barylab::app::{AppOptions, BaryApp};
 use egui::Pos2;
 use egui_kittest::Harness;
@@ -59,6 +60,15 @@ fn pin(h: &mut Harness<'_, BaryApp>) -> [u32; 2] {
 #[test]
 fn ctrl_s_exports_what_barylab_figure_draws_from_the_exported_scene() {
     let mut h = harness();
+    // Not the default view: a wipe off centre, magnified pixels.
+    for c in [
+        AppCommand::SetCompare(Compare::Wipe),
+        AppCommand::SetWipe(0.3),
+        AppCommand::SetPixelSize(4),
+    ] {
+        h.state_mut().push(c);
+    }
+    h.run();
     let p = pin(&mut h);
     let dir = tempfile::tempdir().expect("tempdir");
     let folder = dir.path().join("figures");
@@ -86,24 +96,36 @@ fn ctrl_s_exports_what_barylab_figure_draws_from_the_exported_scene() {
         first
     );
 
-    // The PNG is twice the canvas (the default scale) plus margins and title strip.
+    // The PNG is twice (the default scale) the canvas as shown (4 points per pixel) plus
+    // margins and title strip.
     let size = h.state().canvas().output.as_ref().expect("rendered").size;
     let png = image::open(folder.join("figure-001.png")).expect("png");
     let m = barylab::figure::FIGURE_MARGIN;
     let strip = barylab::figure::overlay::TITLE_STRIP as u32;
     assert_eq!(
         (png.width(), png.height()),
-        (2 * (size[0] + 2 * m), 2 * (size[1] + 2 * m + strip))
+        (2 * (4 * size[0] + 2 * m), 2 * (4 * size[1] + 2 * m + strip))
     );
 
-    // `barylab figure` on the exported scene, same pixel and options: the same files.
+    // The panel shows the `barylab figure` command for this figure; run on the exported
+    // scene it writes the same files.
+    let command = outcome
+        .lines
+        .iter()
+        .find(|l| l.starts_with("barylab figure "))
+        .expect("command shown")
+        .clone();
+    assert!(
+        command.contains(&format!("--pixel {},{}", p[0], p[1])),
+        "{command}"
+    );
+    let args: Vec<&str> = command.split_whitespace().skip(1).collect();
+    let o = args.iter().position(|a| *a == "-o").expect("-o");
     for ext in ["png", "svg"] {
         let out = dir.path().join(format!("cli.{ext}"));
         let run = Command::new(env!("CARGO_BIN_EXE_barylab"))
-            .arg("figure")
-            .arg(folder.join("figure-001.json"))
-            .args(["--pixel", &format!("{},{}", p[0], p[1])])
-            .args(["--scale", "2", "--background", "white", "-o"])
+            .args(&args[..o])
+            .arg("-o")
             .arg(&out)
             .output()
             .expect("run barylab");

@@ -47,10 +47,12 @@ pub mod text {
     pub const NOTHING_SELECTED: &str = "nothing to export: tick at least one kind of file";
     pub const NO_CANVAS: &str = "nothing rendered yet";
     pub const WROTE: &str = "wrote";
+    pub const AGAIN: &str = "the same figure from the command line:";
     pub const COPIED: &str = "figure copied to the clipboard";
     pub const CLIPBOARD_FAILED: &str = "cannot copy to the clipboard";
     pub const SCREENSHOT_FAILED: &str = "screenshot failed";
     pub const SCREENSHOT_WAITING: &str = "taking the screenshot…";
+    pub const SCREENSHOT_TIMEOUT: &str = "no screenshot arrived in time";
     pub const FOLDER_DIALOG: &str = "Folder for figures";
     pub const FOLDER_DIALOG_FAILED: &str = "no folder dialog available: type the folder";
 }
@@ -114,6 +116,10 @@ impl Outcome {
 /// Where a screenshot callback reports.
 type ScreenshotSlot = Arc<Mutex<Option<Result<(), String>>>>;
 
+/// Give up waiting for a window screenshot after this long (a backend without screenshots
+/// never calls back).
+const SCREENSHOT_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(10);
+
 /// The Export panel's state.
 #[derive(Default)]
 pub struct ExportPanel {
@@ -124,7 +130,7 @@ pub struct ExportPanel {
     pub outcome: Option<Outcome>,
     commands: Vec<ExportCommand>,
     dialog: Option<Receiver<Option<PathBuf>>>,
-    screenshot: Option<(PathBuf, ScreenshotSlot)>,
+    screenshot: Option<(PathBuf, ScreenshotSlot, std::time::Instant)>,
     clipboard: Option<arboard::Clipboard>,
 }
 
@@ -179,13 +185,23 @@ impl ExportPanel {
                 ExportCommand::SetSelection(s) => self.settings.selection = s,
                 ExportCommand::Export => {
                     self.outcome = Some(match self.export(app) {
-                        Ok(files) => Outcome {
-                            error: false,
-                            lines: files
+                        Ok(files) => {
+                            let mut lines: Vec<String> = files
                                 .iter()
                                 .map(|f| format!("{} {}", text::WROTE, f.display()))
-                                .collect(),
-                        },
+                                .collect();
+                            if let Some(json) = files
+                                .iter()
+                                .find(|f| f.extension().is_some_and(|e| e == "json"))
+                            {
+                                lines.push(text::AGAIN.to_string());
+                                lines.push(self.command(app, json));
+                            }
+                            Outcome {
+                                error: false,
+                                lines,
+                            }
+                        }
                         Err(e) => Outcome::failed(e),
                     });
                 }
@@ -218,6 +234,26 @@ impl ExportPanel {
         let figure = Figure::compose(&scene, app.texture, &options)
             .map_err(|e: FigureError| e.to_string())?;
         Ok((scene, figure))
+    }
+
+    /// The `barylab figure` command that makes the exported PNG again from the exported scene
+    /// file `json`.
+    pub fn command(&self, app: &ExportContext<'_>, json: &Path) -> String {
+        let options = figure_options(app.state, app.hovered, &self.settings);
+        let quote = |p: &Path| {
+            let s = p.display().to_string();
+            if s.contains([' ', '\'', '"']) {
+                format!("'{}'", s.replace('\'', "'\\''"))
+            } else {
+                s
+            }
+        };
+        format!(
+            "barylab figure {} {} -o {}",
+            quote(json),
+            options.cli_args().join(" "),
+            quote(&json.with_extension("png"))
+        )
     }
 
     /// Writes the selected files; returns them.
@@ -288,14 +324,17 @@ impl ExportPanel {
             error: false,
             lines: vec![text::SCREENSHOT_WAITING.to_string()],
         });
-        self.screenshot = Some((path, slot));
+        self.screenshot = Some((path, slot, std::time::Instant::now()));
     }
 
     fn poll_screenshot(&mut self) {
-        let Some((path, slot)) = &self.screenshot else {
+        let Some((path, slot, started)) = &self.screenshot else {
             return;
         };
-        let done = slot.lock().ok().and_then(|s| s.clone());
+        let mut done = slot.lock().ok().and_then(|s| s.clone());
+        if done.is_none() && started.elapsed() > SCREENSHOT_TIMEOUT {
+            done = Some(Err(text::SCREENSHOT_TIMEOUT.to_string()));
+        }
         if let Some(r) = done {
             self.outcome = Some(match r {
                 Ok(()) => Outcome {

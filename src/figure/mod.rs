@@ -29,7 +29,7 @@ use serde::{Deserialize, Serialize};
 
 use self::overlay::{HandleMark, Overlay, OverlayInput, PixelMark, TriangleMark};
 use crate::probe::{PixelTrace, ProbeError, Prober};
-use crate::raster::project::{MAX_IMAGE_SIZE, Viewport, ndc_from_clip, window_from_ndc};
+use crate::raster::project::{Viewport, ndc_from_clip, window_from_ndc};
 use crate::raster::render::Render;
 use crate::raster::render::RenderError;
 use crate::raster::{Interpolation, RenderSettings, Texture};
@@ -213,6 +213,69 @@ impl Default for FigureOptions {
             scale: 1,
             background: Background::Transparent,
         }
+    }
+}
+
+impl FigureOptions {
+    /// The `barylab figure` options that make this figure (after the scene file; before
+    /// `-o`). Defaults are left out.
+    ///
+    /// ```
+    /// use barylab::figure::{Background, Compare, FigureOptions};
+    /// let o = FigureOptions {
+    ///     compare: Compare::SideBySide,
+    ///     pinned: Some([3, 4]),
+    ///     scale: 2,
+    ///     background: Background::White,
+    ///     show_grid: false,
+    ///     ..FigureOptions::default()
+    /// };
+    /// assert_eq!(o.cli_args().join(" "),
+    ///            "--pixel 3,4 --compare side --scale 2 --background white --no-grid");
+    /// ```
+    pub fn cli_args(&self) -> Vec<String> {
+        let mut a: Vec<String> = Vec::new();
+        let mut push = |k: &str, v: String| {
+            a.push(k.to_string());
+            a.push(v);
+        };
+        if let Some([x, y]) = self.pinned {
+            push("--pixel", format!("{x},{y}"));
+        }
+        if let Some([x, y]) = self.hovered {
+            push("--hover", format!("{x},{y}"));
+        }
+        let compare = match self.compare {
+            Compare::Single => None,
+            Compare::SideBySide => Some("side"),
+            Compare::Wipe => Some("wipe"),
+            Compare::Difference => Some("diff"),
+        };
+        if let Some(c) = compare {
+            push("--compare", c.to_string());
+        }
+        if self.compare == Compare::Wipe && self.wipe != 0.5 {
+            push("--wipe", format!("{}", self.wipe));
+        }
+        if self.scale != 1 {
+            push("--scale", self.scale.to_string());
+        }
+        if self.pixel_size != 1 {
+            push("--pixel-size", self.pixel_size.to_string());
+        }
+        if self.background == Background::White {
+            push("--background", "white".to_string());
+        }
+        for (shown, flag) in [
+            (self.show_grid, "--no-grid"),
+            (self.show_handles, "--no-handles"),
+            (self.show_sub_areas, "--no-sub-areas"),
+        ] {
+            if !shown {
+                a.push(flag.to_string());
+            }
+        }
+        a
     }
 }
 
@@ -479,9 +542,4 @@ fn upscaled(
     Ok(image::RgbaImage::from_fn(w * f, h * f, |x, y| {
         image::Rgba(pixels[((y / f) * w + x / f) as usize])
     }))
-}
-
-/// Whether `size` fits the rasterizer ([`MAX_IMAGE_SIZE`] per side).
-pub fn fits_rasterizer(size: [u32; 2]) -> bool {
-    size.iter().all(|&v| (1..=MAX_IMAGE_SIZE).contains(&v))
 }

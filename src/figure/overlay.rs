@@ -578,6 +578,38 @@ mod tests {
     }
 
     #[test]
+    fn a_vertex_behind_the_camera_has_no_handle_but_a_note_in_the_corner() {
+        let mut i = input();
+        i.handles.push(HandleMark {
+            index: 1,
+            window: None,
+            w: -1.0,
+            active: false,
+        });
+        let o = build(&i);
+        let circles = o
+            .shapes
+            .iter()
+            .filter(|s| matches!(s, Shape::Circle { .. }))
+            .count();
+        assert_eq!(circles, 1, "only A has a handle");
+        let note = o.shapes.iter().find_map(|s| match s {
+            Shape::Text {
+                at, text, color, ..
+            } if text.starts_with("behind") => Some((*at, text.clone(), *color)),
+            _ => None,
+        });
+        assert_eq!(
+            note,
+            Some((
+                DVec2::new(0.0, 80.0),
+                "behind the camera: B (w = -1.00)".to_string(),
+                NEGATIVE
+            ))
+        );
+    }
+
+    #[test]
     fn sub_triangles_are_coloured_by_the_opposite_vertex_and_dashed_when_negative() {
         let mut i = input();
         i.hover = Some(PixelMark {
