@@ -47,6 +47,7 @@ pub mod text {
     pub const NOTHING_SELECTED: &str = "nothing to export: tick at least one kind of file";
     pub const NO_CANVAS: &str = "nothing rendered yet";
     pub const WROTE: &str = "wrote";
+    pub const MORE_FILES: &str = "more files";
     pub const AGAIN: &str = "the same figure from the command line:";
     pub const COPIED: &str = "figure copied to the clipboard";
     pub const CLIPBOARD_FAILED: &str = "cannot copy to the clipboard";
@@ -102,13 +103,26 @@ pub enum ExportCommand {
 pub struct Outcome {
     pub error: bool,
     pub lines: Vec<String>,
+    /// One line for the status line.
+    pub summary: String,
 }
 
 impl Outcome {
     fn failed(message: impl Into<String>) -> Self {
+        let message = message.into();
         Self {
             error: true,
-            lines: vec![message.into()],
+            lines: vec![message.clone()],
+            summary: message,
+        }
+    }
+
+    fn done(message: impl Into<String>) -> Self {
+        let message = message.into();
+        Self {
+            error: false,
+            lines: vec![message.clone()],
+            summary: message,
         }
     }
 }
@@ -129,7 +143,7 @@ pub struct ExportPanel {
     pub folder_text: String,
     pub outcome: Option<Outcome>,
     commands: Vec<ExportCommand>,
-    dialog: Option<Receiver<Option<PathBuf>>>,
+    dialog: Option<(Receiver<Option<PathBuf>>, std::time::Instant)>,
     screenshot: Option<(PathBuf, ScreenshotSlot, std::time::Instant)>,
     clipboard: Option<arboard::Clipboard>,
 }
@@ -186,6 +200,17 @@ impl ExportPanel {
                 ExportCommand::Export => {
                     self.outcome = Some(match self.export(app) {
                         Ok(files) => {
+                            let summary = match files.first() {
+                                Some(f) if files.len() > 1 => format!(
+                                    "{} {} (+{} {})",
+                                    text::WROTE,
+                                    f.display(),
+                                    files.len() - 1,
+                                    text::MORE_FILES
+                                ),
+                                Some(f) => format!("{} {}", text::WROTE, f.display()),
+                                None => String::new(),
+                            };
                             let mut lines: Vec<String> = files
                                 .iter()
                                 .map(|f| format!("{} {}", text::WROTE, f.display()))
@@ -200,6 +225,7 @@ impl ExportPanel {
                             Outcome {
                                 error: false,
                                 lines,
+                                summary,
                             }
                         }
                         Err(e) => Outcome::failed(e),
@@ -207,10 +233,7 @@ impl ExportPanel {
                 }
                 ExportCommand::Copy => {
                     self.outcome = Some(match self.copy(app) {
-                        Ok(()) => Outcome {
-                            error: false,
-                            lines: vec![text::COPIED.to_string()],
-                        },
+                        Ok(()) => Outcome::done(text::COPIED),
                         Err(e) => Outcome::failed(e),
                     });
                 }
@@ -320,10 +343,7 @@ impl ExportPanel {
             }
             repaint.request_repaint();
         });
-        self.outcome = Some(Outcome {
-            error: false,
-            lines: vec![text::SCREENSHOT_WAITING.to_string()],
-        });
+        self.outcome = Some(Outcome::done(text::SCREENSHOT_WAITING));
         self.screenshot = Some((path, slot, std::time::Instant::now()));
     }
 
@@ -337,10 +357,7 @@ impl ExportPanel {
         }
         if let Some(r) = done {
             self.outcome = Some(match r {
-                Ok(()) => Outcome {
-                    error: false,
-                    lines: vec![format!("{} {}", text::WROTE, path.display())],
-                },
+                Ok(()) => Outcome::done(format!("{} {}", text::WROTE, path.display())),
                 Err(e) => Outcome::failed(format!("{}: {e}", text::SCREENSHOT_FAILED)),
             });
             self.screenshot = None;
@@ -365,13 +382,13 @@ impl ExportPanel {
                 repaint.request_repaint();
             });
         match spawned {
-            Ok(_) => self.dialog = Some(rx),
+            Ok(_) => self.dialog = Some((rx, std::time::Instant::now())),
             Err(_) => self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED)),
         }
     }
 
     fn poll_dialog(&mut self) {
-        let Some(rx) = &self.dialog else {
+        let Some((rx, started)) = &self.dialog else {
             return;
         };
         match rx.try_recv() {
@@ -380,7 +397,13 @@ impl ExportPanel {
                 self.dialog = None;
                 self.commands.insert(0, ExportCommand::SetFolder(folder));
             }
-            Ok(None) | Err(TryRecvError::Disconnected) => self.dialog = None,
+            Ok(None) | Err(TryRecvError::Disconnected) => {
+                // Nobody cancels that fast: the dialog could not open.
+                if started.elapsed() < super::files::DIALOG_FAILED_WITHIN {
+                    self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED));
+                }
+                self.dialog = None;
+            }
         }
     }
 }

@@ -625,12 +625,8 @@ impl BaryApp {
         if self.export.outcome != outcome_before
             && let Some(o) = &self.export.outcome
         {
-            self.message = o.lines.first().map(|l| Message {
-                text: if o.lines.len() > 1 {
-                    format!("{l} (+{} more)", o.lines.len() - 1)
-                } else {
-                    l.clone()
-                },
+            self.message = Some(Message {
+                text: o.summary.clone(),
                 error: o.error,
             });
             ctx.request_repaint();
