@@ -5,7 +5,9 @@
 use std::path::Path;
 
 use barylab::raster::render::{ClipMesh, MeshVertex, Rasterizer, RenderSettings};
-use barylab::raster::{BuiltinTexture, Filter, Interpolation, Texture, render};
+use barylab::raster::{
+    Buffers, BuiltinTexture, Filter, Framebuffer, Interpolation, Texture, render, render_into,
+};
 use barylab::scene::Scene;
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::{DVec4, Vec2, Vec3};
@@ -28,12 +30,23 @@ fn matrix(c: &mut Criterion, name: &str, scene: &Scene) {
                     mode,
                     ..scene.settings()
                 };
+                // Colour and depth into a reused framebuffer: what the app and `barylab bench`
+                // draw.
+                let mut frame = Framebuffer::new(0, 0, settings.background);
                 group.bench_function(format!("{rasterizer:?}-{filter:?}-{mode:?}"), |b| {
-                    b.iter(|| render(&mesh, &texture, &settings).expect("render"))
+                    b.iter(|| {
+                        render_into(&mut frame, &mesh, &texture, &settings, Buffers::ColorDepth)
+                            .expect("render")
+                    })
                 });
             }
         }
     }
+    // Every per-pixel buffer (the inspector's, the heatmap's, the AOV export's), per pixel.
+    let settings = scene.settings();
+    group.bench_function("EdgeFunction-all-buffers", |b| {
+        b.iter(|| render(&mesh, &texture, &settings).expect("render"))
+    });
     group.finish();
 }
 
@@ -87,8 +100,12 @@ fn bench_small_triangles(c: &mut Criterion) {
             rasterizer,
             ..RenderSettings::default()
         };
+        let mut frame = Framebuffer::new(0, 0, settings.background);
         group.bench_function(format!("{rasterizer:?}"), |b| {
-            b.iter(|| render(&mesh, &texture, &settings).expect("render"))
+            b.iter(|| {
+                render_into(&mut frame, &mesh, &texture, &settings, Buffers::ColorDepth)
+                    .expect("render")
+            })
         });
     }
     group.finish();

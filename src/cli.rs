@@ -521,9 +521,19 @@ fn bench(args: &BenchArgs) -> Result<()> {
                     };
                     let workers = pool(Some(threads as u16))?;
                     let mut times = Vec::with_capacity(args.frames as usize);
+                    // Colour and depth into a reused framebuffer: what the app draws.
+                    let mut frame = raster::Framebuffer::new(0, 0, settings.background);
                     for _ in 0..args.frames {
                         let start = Instant::now();
-                        workers.install(|| raster::render(&mesh, &texture, &settings))?;
+                        workers.install(|| {
+                            raster::render_into(
+                                &mut frame,
+                                &mesh,
+                                &texture,
+                                &settings,
+                                raster::Buffers::ColorDepth,
+                            )
+                        })?;
                         times.push(start.elapsed().as_secs_f64() * 1e3);
                     }
                     times.sort_by(f64::total_cmp);

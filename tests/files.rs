@@ -390,9 +390,7 @@ fn every_pixel_of_a_model_is_hovered_like_the_quad_and_agrees_with_the_probe() {
     let covered: Vec<[u32; 2]> = (0..size[1])
         .step_by(37)
         .flat_map(|y| (0..size[0]).step_by(41).map(move |x| [x, y]))
-        .filter(|&[x, y]| {
-            render.frame.triangle[render.frame.index(x, y)] != barylab::raster::NO_TRIANGLE
-        })
+        .filter(|&[x, y]| render.frame.covered(x, y))
         .collect();
     assert!(covered.len() > 20, "{} covered samples", covered.len());
     let scene = out.scene.clone();

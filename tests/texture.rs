@@ -155,9 +155,9 @@ proptest::proptest! {
         for tap in &t.taps_lod(uv, filter, wrap, lambda) {
             let c = t.texel_at(tap.level, tap.i, tap.j);
             for k in 0..4 {
-                sum[k] += tap.weight * f32::from(c[k]) / 255.0;
+                sum[k] += tap.weight * f32::from(c[k]);
             }
         }
-        proptest::prop_assert_eq!(t.sample_lod(uv, filter, wrap, lambda), sum);
+        proptest::prop_assert_eq!(t.sample_lod(uv, filter, wrap, lambda), sum.map(|c| c / 255.0));
     }
 }

@@ -15,7 +15,7 @@ use super::pixel::PixelReport;
 use super::state::{AppState, Command, Compare};
 use crate::raster::project::Viewport;
 use crate::raster::render::Render;
-use crate::raster::{Interpolation, Texture};
+use crate::raster::{Buffers, Interpolation, Texture};
 use crate::scene::Scene;
 
 /// User-facing strings of the canvas.
@@ -105,8 +105,8 @@ enum DragKind {
     Wipe,
 }
 
-/// What one cached render depends on: the sized scene, the mode, the texture.
-type RenderCacheKey = (Scene, Interpolation, TextureKey);
+/// What one cached render depends on: the sized scene, the mode, the texture, the buffers.
+type RenderCacheKey = (Scene, Interpolation, TextureKey, Buffers);
 
 /// A texture's name and the folder it is resolved against.
 pub type TextureKey = (String, Option<std::path::PathBuf>);
@@ -120,6 +120,8 @@ const RENDER_CACHE: usize = 4;
 pub struct CanvasState {
     key: Option<RenderKey>,
     cache: Vec<(RenderCacheKey, Arc<Render>)>,
+    /// A framebuffer of a render that left the cache, reused by the next render.
+    spare: Option<crate::raster::Framebuffer>,
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
     uploaded: Option<(u64, Compare, u32)>,
@@ -238,18 +240,29 @@ impl CanvasState {
         let start = Instant::now();
         let mesh = key.scene.to_mesh();
         let base = key.scene.settings();
+        // Only the difference heatmap reads the per-pixel uv buffers; everything else shows
+        // colour, which the fast path draws (bit-identical to the full render).
+        let buffers = if state.view.compare == Compare::Difference {
+            Buffers::All
+        } else {
+            Buffers::ColorDepth
+        };
         let mut renders = Vec::new();
         let mut rendered = false;
         for &mode in &key.modes {
-            let one = (key.scene.clone(), mode, key.texture.clone());
+            let one = (key.scene.clone(), mode, key.texture.clone(), buffers);
             if let Some((_, r)) = self.cache.iter().find(|(k, _)| *k == one) {
                 renders.push((mode, r.clone()));
                 continue;
             }
             let settings = crate::raster::RenderSettings { mode, ..base };
-            match crate::raster::render(&mesh, texture, &settings) {
-                Ok(r) => {
-                    let r = Arc::new(r);
+            let mut frame = self
+                .spare
+                .take()
+                .unwrap_or_else(|| crate::raster::Framebuffer::new(0, 0, base.background));
+            match crate::raster::render_into(&mut frame, &mesh, texture, &settings, buffers) {
+                Ok(triangles) => {
+                    let r = Arc::new(Render { frame, triangles });
                     self.cache.push((one, r.clone()));
                     renders.push((mode, r));
                     rendered = true;
@@ -261,7 +274,12 @@ impl CanvasState {
             }
         }
         if self.cache.len() > RENDER_CACHE {
-            self.cache.drain(..self.cache.len() - RENDER_CACHE);
+            for (_, old) in self.cache.drain(..self.cache.len() - RENDER_CACHE) {
+                // Keep the memory of a render nobody else holds for the next one.
+                if let Ok(r) = Arc::try_unwrap(old) {
+                    self.spare = Some(r.frame);
+                }
+            }
         }
         let heat = (state.view.compare == Compare::Difference)
             .then(|| {

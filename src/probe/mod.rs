@@ -1148,7 +1148,7 @@ impl<'a> Prober<'a> {
                 })
                 .collect()
         };
-        let sample = |uv: Vec2, lod: f32| t.sample_lod(uv, filter, wrap, lod).map(shade::unorm8);
+        let sample = |uv: Vec2, lod: f32| t.sample_rgba8(uv, filter, wrap, lod);
         let diff = (uv_a.as_dvec2() - uv_p.as_dvec2()) * size;
         AttributeTrace {
             uv_vertices: uvs.map(|u| u.to_array()),

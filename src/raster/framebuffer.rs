@@ -6,8 +6,22 @@ use super::setup::Facing;
 /// Marks a pixel no triangle covers in [`Framebuffer::triangle`].
 pub const NO_TRIANGLE: u32 = u32::MAX;
 
+/// Which per-pixel buffers a render fills.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum Buffers {
+    /// Colour, depth and every per-pixel buffer the inspector, the heatmap and the AOV export
+    /// read.
+    #[default]
+    All,
+    /// Colour and depth only; the other buffers are left empty (the fast path for display
+    /// and benchmarks).
+    ColorDepth,
+}
+
 /// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold 0 in every
-/// float buffer (never NaN) and `NO_TRIANGLE` as their triangle.
+/// float buffer (never NaN) and `NO_TRIANGLE` as their triangle. With
+/// [`Buffers::ColorDepth`] only `color` and `depth` have a value per pixel; the other buffers
+/// are empty.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Framebuffer {
     pub width: u32,
@@ -33,9 +47,23 @@ pub struct Framebuffer {
 }
 
 impl Framebuffer {
-    /// A cleared framebuffer.
+    /// A cleared framebuffer with every buffer.
     pub fn new(width: u32, height: u32, background: [u8; 4]) -> Self {
+        Self::with_buffers(width, height, background, Buffers::All)
+    }
+
+    /// A cleared framebuffer with the given buffers.
+    pub fn with_buffers(width: u32, height: u32, background: [u8; 4], buffers: Buffers) -> Self {
         let n = width as usize * height as usize;
+        if buffers == Buffers::ColorDepth {
+            return Self {
+                width,
+                height,
+                color: vec![background; n],
+                depth: vec![1.0; n],
+                ..Self::new(0, 0, background)
+            };
+        }
         Self {
             width,
             height,
@@ -56,9 +84,24 @@ impl Framebuffer {
         y as usize * self.width as usize + x as usize
     }
 
-    /// Whether a triangle covers pixel (x, y).
+    /// Which buffers this framebuffer has.
+    pub fn buffers(&self) -> Buffers {
+        if self.triangle.len() == self.color.len() {
+            Buffers::All
+        } else {
+            Buffers::ColorDepth
+        }
+    }
+
+    /// Whether a triangle covers pixel (x, y). Only the cleared depth (the far plane, which
+    /// no fragment passes with the less-than test) tells uncovered pixels apart when the
+    /// triangle buffer is absent.
     pub fn covered(&self, x: u32, y: u32) -> bool {
-        self.triangle[self.index(x, y)] != NO_TRIANGLE
+        let i = self.index(x, y);
+        match self.triangle.get(i) {
+            Some(&t) => t != NO_TRIANGLE,
+            None => self.depth[i] < 1.0,
+        }
     }
 
     /// The colour buffer as an image.

@@ -6,6 +6,7 @@ pub mod camera;
 pub mod clip;
 pub mod framebuffer;
 pub mod interpolate;
+pub mod lanes;
 pub mod project;
 pub mod render;
 pub mod scanline;
@@ -14,8 +15,8 @@ pub mod shade;
 pub mod texture;
 pub mod varying;
 
-pub use framebuffer::{Framebuffer, NO_TRIANGLE};
+pub use framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 pub use interpolate::Interpolation;
-pub use render::{ClipMesh, MeshVertex, RenderSettings, render};
+pub use render::{ClipMesh, MeshVertex, RenderSettings, render, render_into};
 pub use shade::Shading;
 pub use texture::{BuiltinTexture, Filter, Texture, Wrap};

@@ -8,8 +8,9 @@
 use glam::{DVec4, Vec2, Vec3};
 
 use super::clip::{ClipPolygon, ClipVertex, clip_triangle};
-use super::framebuffer::Framebuffer;
+use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 use super::interpolate::{self, Fragment, Interpolation};
+use super::lanes::{self, LaneShading, Target};
 use super::project::{MAX_IMAGE_SIZE, Viewport, project_vertex};
 use super::setup::{Facing, TriangleSetup, sample_point, setup_triangle};
 use super::shade::{ShadeParams, Shading, shade};
@@ -203,12 +204,28 @@ pub struct Render {
     pub triangles: Vec<PreparedTriangle>,
 }
 
-/// Renders a clip-space mesh.
+/// Renders a clip-space mesh into a new framebuffer with every buffer.
 pub fn render(
     mesh: &ClipMesh,
     texture: &Texture,
     settings: &RenderSettings,
 ) -> Result<Render, RenderError> {
+    let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All);
+    let triangles = render_into(&mut frame, mesh, texture, settings, Buffers::All)?;
+    Ok(Render { frame, triangles })
+}
+
+/// Renders a clip-space mesh into `frame`, reusing its memory: the frame is resized to the
+/// settings' size, given `buffers`, cleared to the background and drawn. Returns what
+/// happened to each source triangle. With [`Buffers::ColorDepth`] the lane path
+/// ([`lanes`](super::lanes)) draws whatever it can.
+pub fn render_into(
+    frame: &mut Framebuffer,
+    mesh: &ClipMesh,
+    texture: &Texture,
+    settings: &RenderSettings,
+    buffers: Buffers,
+) -> Result<Vec<PreparedTriangle>, RenderError> {
     let (w, h) = (settings.width, settings.height);
     if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
         return Err(RenderError::BadSize {
@@ -221,16 +238,34 @@ pub fn render(
         .map(|i| prepare_triangle(mesh, i, viewport))
         .collect();
     let params = shade_params(settings, &triangles);
-    let mut frame = Framebuffer::new(w, h, settings.background);
+    resize(frame, w, h, buffers);
     rasterize_bands(
         &triangles,
         texture,
         &params,
         settings.rasterizer,
-        &mut frame,
+        frame,
         ROWS_PER_BAND,
+        Some(settings.background),
     );
-    Ok(Render { frame, triangles })
+    Ok(triangles)
+}
+
+/// Gives `frame` the size and buffers asked for (contents are cleared later, per band).
+fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
+    let n = width as usize * height as usize;
+    frame.width = width;
+    frame.height = height;
+    frame.color.resize(n, [0; 4]);
+    frame.depth.resize(n, 1.0);
+    let aov = if buffers == Buffers::All { n } else { 0 };
+    frame.triangle.resize(aov, NO_TRIANGLE);
+    frame.facing.resize(aov, Facing::Front);
+    frame.weights_screen.resize(aov, [0.0; 3]);
+    frame.weights_perspective.resize(aov, [0.0; 3]);
+    frame.uv_affine.resize(aov, [0.0; 2]);
+    frame.uv_perspective.resize(aov, [0.0; 2]);
+    frame.inv_w.resize(aov, 0.0);
 }
 
 /// The shading parameters of a render: the settings plus the depth range of the drawn
@@ -265,7 +300,8 @@ pub fn depth_range(triangles: &[PreparedTriangle]) -> (f64, f64) {
 pub const ROWS_PER_BAND: u32 = 16;
 
 /// Rasterizes all set-up triangles into `frame`, in parallel over bands of `rows_per_band`
-/// image rows (rayon's current thread pool).
+/// image rows (rayon's current thread pool). With `clear`, each band first clears its rows
+/// to that background (depth to 1, the other buffers to their empty values).
 pub fn rasterize_bands(
     triangles: &[PreparedTriangle],
     texture: &Texture,
@@ -273,10 +309,14 @@ pub fn rasterize_bands(
     rasterizer: Rasterizer,
     frame: &mut Framebuffer,
     rows_per_band: u32,
+    clear: Option<[u8; 4]>,
 ) {
     use rayon::prelude::*;
     let bands = RowBand::split(frame, rows_per_band.max(1));
     bands.into_par_iter().for_each(|mut band| {
+        if let Some(background) = clear {
+            band.clear(background);
+        }
         for tri in triangles {
             for setup in &tri.setups {
                 rasterize(setup, tri.source, texture, params, rasterizer, &mut band);
@@ -329,18 +369,41 @@ impl<'a> RowBand<'a> {
         out
     }
 
+    /// Whether the per-pixel buffers besides colour and depth are present.
+    fn has_aovs(&self) -> bool {
+        self.triangle.len() == self.color.len()
+    }
+
+    /// Clears every buffer of the band: colour to `background`, depth to 1 (the far plane).
+    fn clear(&mut self, background: [u8; 4]) {
+        self.color.fill(background);
+        self.depth.fill(1.0);
+        self.triangle.fill(NO_TRIANGLE);
+        self.facing.fill(Facing::Front);
+        self.weights_screen.fill([0.0; 3]);
+        self.weights_perspective.fill([0.0; 3]);
+        self.uv_affine.fill([0.0; 2]);
+        self.uv_perspective.fill([0.0; 2]);
+        self.inv_w.fill(0.0);
+    }
+
     /// The first `rows` rows and the remainder.
     fn split_at(self, rows: u32) -> (RowBand<'a>, RowBand<'a>) {
         let n = rows as usize * self.width as usize;
+        // Absent buffers (`Buffers::ColorDepth`) are empty and stay empty in both halves.
+        fn cut<T>(s: &mut [T], n: usize) -> (&mut [T], &mut [T]) {
+            let n = n.min(s.len());
+            s.split_at_mut(n)
+        }
         let (color, color_t) = self.color.split_at_mut(n);
         let (depth, depth_t) = self.depth.split_at_mut(n);
-        let (triangle, triangle_t) = self.triangle.split_at_mut(n);
-        let (facing, facing_t) = self.facing.split_at_mut(n);
-        let (ws, ws_t) = self.weights_screen.split_at_mut(n);
-        let (wp, wp_t) = self.weights_perspective.split_at_mut(n);
-        let (ua, ua_t) = self.uv_affine.split_at_mut(n);
-        let (up, up_t) = self.uv_perspective.split_at_mut(n);
-        let (iw, iw_t) = self.inv_w.split_at_mut(n);
+        let (triangle, triangle_t) = cut(self.triangle, n);
+        let (facing, facing_t) = cut(self.facing, n);
+        let (ws, ws_t) = cut(self.weights_screen, n);
+        let (wp, wp_t) = cut(self.weights_perspective, n);
+        let (ua, ua_t) = cut(self.uv_affine, n);
+        let (up, up_t) = cut(self.uv_perspective, n);
+        let (iw, iw_t) = cut(self.inv_w, n);
         (
             RowBand {
                 y0: self.y0,
@@ -395,8 +458,9 @@ fn rasterize(
     } else {
         [glam::DVec2::ZERO; 3]
     };
+    let aovs = band.has_aovs();
     // Depth test, buffers and shading: the same for both rasterizers.
-    let mut write = |x: u32, y: u32, frag: &Fragment| {
+    let write = |band: &mut RowBand<'_>, x: u32, y: u32, frag: &Fragment| {
         let mut frag = *frag;
         if params.filter == Filter::Trilinear {
             frag.lod =
@@ -409,15 +473,77 @@ fn rasterize(
             return;
         }
         band.depth[i] = depth;
-        band.triangle[i] = source;
-        band.facing[i] = setup.facing;
-        band.weights_screen[i] = frag.affine.bary();
-        band.weights_perspective[i] = frag.correct.bary();
-        band.uv_affine[i] = frag.affine.uv().to_array();
-        band.uv_perspective[i] = frag.correct.uv().to_array();
-        band.inv_w[i] = frag.inv_w as f32;
         band.color[i] = shade(&frag, texture, params, &wire);
+        if aovs {
+            band.triangle[i] = source;
+            band.facing[i] = setup.facing;
+            band.weights_screen[i] = frag.affine.bary();
+            band.weights_perspective[i] = frag.correct.bary();
+            band.uv_affine[i] = frag.affine.uv().to_array();
+            band.uv_perspective[i] = frag.correct.uv().to_array();
+            band.inv_w[i] = frag.inv_w as f32;
+        }
     };
+    // The lane path: colour and depth only; texture shading with nearest or bilinear
+    // filtering is done in lanes, anything else per pixel (after block rejection).
+    let lane_color = match params.shading {
+        Shading::Texture => matches!(params.filter, Filter::Nearest | Filter::Bilinear)
+            .then_some(lanes::LaneColor::Texture),
+        Shading::VertexColor => Some(lanes::LaneColor::VertexColor),
+        Shading::Barycentric => Some(lanes::LaneColor::Barycentric),
+        Shading::Depth => Some(lanes::LaneColor::Depth(
+            params.depth_range.0,
+            params.depth_range.1,
+        )),
+    };
+    let lane_shading = lane_color.map(|color| LaneShading {
+        mode: params.mode,
+        color,
+        filter: params.filter,
+        wrap: params.wrap,
+        wireframe: params.wireframe,
+    });
+    if !aovs {
+        match (rasterizer, lane_shading) {
+            (Rasterizer::EdgeFunction, shading) if lanes::edge_lanes_apply(setup) => {
+                let (y0, width) = (band.y0, band.width);
+                let mut per_pixel = Vec::new();
+                let mut target = Target {
+                    y0,
+                    width,
+                    color: band.color,
+                    depth: band.depth,
+                };
+                lanes::edge_triangle(
+                    setup,
+                    (y_start, y_end),
+                    texture,
+                    shading,
+                    &mut target,
+                    &mut |x, y, e| per_pixel.push((x, y, e)),
+                );
+                for (x, y, e) in per_pixel {
+                    if let Some(frag) = interpolate::fragment(setup, e) {
+                        write(band, x, y, &frag);
+                    }
+                }
+                return;
+            }
+            (Rasterizer::Scanline, Some(shading))
+                if !shading.wireframe && shading.color == lanes::LaneColor::Texture =>
+            {
+                let mut target = Target {
+                    y0: band.y0,
+                    width: band.width,
+                    color: band.color,
+                    depth: band.depth,
+                };
+                lanes::scanline_triangle(setup, (y_start, y_end), texture, shading, &mut target);
+                return;
+            }
+            _ => {}
+        }
+    }
     match rasterizer {
         Rasterizer::EdgeFunction => {
             for y in y_start..=y_end {
@@ -427,13 +553,17 @@ fn rasterize(
                         continue;
                     }
                     if let Some(frag) = interpolate::fragment(setup, e) {
-                        write(x, y, &frag);
+                        write(band, x, y, &frag);
                     }
                 }
             }
         }
         Rasterizer::Scanline => {
-            super::scanline::rasterize_rows(setup, y_start..y_end + 1, &mut write);
+            super::scanline::rasterize_rows(
+                setup,
+                y_start..y_end + 1,
+                &mut |x, y, frag: &Fragment| write(band, x, y, frag),
+            );
         }
     }
 }
@@ -472,6 +602,7 @@ mod tests {
                     Rasterizer::EdgeFunction,
                     &mut frame,
                     rows,
+                    None,
                 )
             });
             frame

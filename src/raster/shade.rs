@@ -93,10 +93,7 @@ pub fn shade(
     let v = frag.varyings(p.mode);
     let bary = v.bary();
     match p.shading {
-        Shading::Texture => {
-            let c = texture.sample_lod(v.uv(), p.filter, p.wrap, frag.lod);
-            [unorm8(c[0]), unorm8(c[1]), unorm8(c[2]), unorm8(c[3])]
-        }
+        Shading::Texture => texture.sample_rgba8(v.uv(), p.filter, p.wrap, frag.lod),
         Shading::VertexColor => {
             let c = v.color();
             [unorm8(c.x), unorm8(c.y), unorm8(c.z), 255]

@@ -240,16 +240,33 @@ pub fn wrap_coord(i: i64, size: u32, wrap: Wrap) -> u32 {
     r as u32
 }
 
-/// `out += weight * texel / 255`, channel by channel.
+/// `out += weight * texel`, channel by channel, in the texel's 0..255 scale.
 fn add_texel(out: &mut [f32; 4], texel: [u8; 4], weight: f32) {
     for (o, c) in out.iter_mut().zip(texel) {
-        *o += weight * f32::from(c) / 255.0;
+        *o += weight * f32::from(c);
     }
 }
 
 /// Largest |texel coordinate| used for wrapping: far beyond any texture size, keeps the
 /// `f32 -> i64` conversion of huge or infinite uv well defined.
-const MAX_TEXEL_COORD: f32 = 1e9;
+/// A filtered channel in the 0..255 scale to a byte: `round(clamp(sum, 0, 255))`, half away
+/// from zero (NaN gives 0).
+///
+/// ```
+/// use barylab::raster::texture::byte_from_sum;
+/// assert_eq!(byte_from_sum(127.5), 128);
+/// assert_eq!(byte_from_sum(127.49999), 127);
+/// assert_eq!(byte_from_sum(300.0), 255);
+/// assert_eq!(byte_from_sum(f32::NAN), 0);
+/// ```
+pub fn byte_from_sum(sum: f32) -> u8 {
+    if sum.is_nan() {
+        return 0;
+    }
+    sum.clamp(0.0, 255.0).round() as u8
+}
+
+pub(crate) const MAX_TEXEL_COORD: f32 = 1e9;
 
 fn texel_floor(x: f32) -> i64 {
     if x.is_nan() {
@@ -261,7 +278,7 @@ fn texel_floor(x: f32) -> i64 {
 /// `floor(x)` for |x| <= 2^30 without a libm call: truncate towards zero, then step down
 /// for negative non-integers. (The baseline x86-64 target has no rounding instruction, and
 /// `f32::floor` becomes a function call in the per-pixel path.)
-fn fast_floor(x: f32) -> f32 {
+pub(crate) fn fast_floor(x: f32) -> f32 {
     let t = x as i32 as f32;
     if t > x { t - 1.0 } else { t }
 }
@@ -381,6 +398,11 @@ impl Texture {
 
     pub fn height(&self) -> u32 {
         self.height
+    }
+
+    /// The base level's texels, row `j` starting at `j * width` (bottom row first).
+    pub fn base_texels(&self) -> &[[u8; 4]] {
+        &self.texels
     }
 
     /// The texel at column `i`, row `j` (row 0 at the bottom). Indices must be in range.
@@ -515,12 +537,38 @@ impl Texture {
         self.sample_lod(uv, filter, wrap, 0.0)
     }
 
-    /// Samples at level of detail `lambda` (used by trilinear filtering only).
+    /// Samples at level of detail `lambda` (used by trilinear filtering only): each channel
+    /// is the filtered sum of [`Texture::sample_rgba8`] divided by 255, in [0, 1].
+    pub fn sample_lod(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> [f32; 4] {
+        self.filtered_sum(uv, filter, wrap, lambda)
+            .map(|c| c / 255.0)
+    }
+
+    /// The 8-bit colour the renderer writes for a texture lookup: each channel is
+    /// `round(clamp(sum_k weight_k * texel_k, 0, 255))`, the weighted sum of the taps
+    /// ([`Texture::taps_lod`]) taken in the texels' own 0..255 scale and rounded half away
+    /// from zero.
     ///
     /// This is the renderer's path: it reads the same texels with the same weights, in the
-    /// same order, as [`Texture::taps_lod`] lists them (so the result is bit-identical to
+    /// same order, as [`Texture::taps_lod`] lists them (so the sum is bit-identical to
     /// summing the taps), without building the list.
-    pub fn sample_lod(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> [f32; 4] {
+    ///
+    /// ```
+    /// use barylab::raster::texture::{Texture, Filter, Wrap};
+    /// use glam::Vec2;
+    /// // A 2x1 texture, black and white: halfway between the texel centres the bilinear sum
+    /// // is 0.5 * 0 + 0.5 * 255 = 127.5, which rounds to 128.
+    /// let t = Texture::from_texels(2, 1, vec![[0, 0, 0, 255], [255, 255, 255, 255]]).unwrap();
+    /// let c = t.sample_rgba8(Vec2::new(0.5, 0.5), Filter::Bilinear, Wrap::ClampToEdge, 0.0);
+    /// assert_eq!(c, [128, 128, 128, 255]);
+    /// ```
+    pub fn sample_rgba8(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> [u8; 4] {
+        self.filtered_sum(uv, filter, wrap, lambda)
+            .map(byte_from_sum)
+    }
+
+    /// The filtered colour in the texels' 0..255 scale.
+    fn filtered_sum(&self, uv: Vec2, filter: Filter, wrap: Wrap, lambda: f32) -> [f32; 4] {
         let mut out = [0.0f32; 4];
         match filter {
             Filter::Nearest => {

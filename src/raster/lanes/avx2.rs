@@ -1,0 +1,554 @@
+//! The lane paths written with AVX2 intrinsics: the same operations in the same order as
+//! the portable lane code in the parent module (and so as the per-pixel renderer), eight
+//! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
+//! is a mask or a clamp on both axes; tests check the two agree bit for bit.
+
+use std::arch::x86_64::*;
+
+use super::{
+    BLOCK_ROWS, Block, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap, Stepped,
+    Target, classify,
+};
+use crate::raster::interpolate::{Interpolation, screen_weights};
+use crate::raster::project::SUBPIXEL;
+use crate::raster::scanline::row_span;
+use crate::raster::setup::{TriangleSetup, sample_point};
+use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
+use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
+
+/// A wrap mode the vector path can apply: `Mask(size - 1)` or `Clamp(size - 1)`.
+#[derive(Clone, Copy)]
+enum VecWrap {
+    Mask(i32),
+    Clamp(i32),
+}
+
+impl VecWrap {
+    fn new(w: LaneWrap) -> Option<Self> {
+        match w {
+            LaneWrap::Mask(m) => Some(VecWrap::Mask(m)),
+            LaneWrap::Clamp(hi) => Some(VecWrap::Clamp(hi)),
+            LaneWrap::General(..) => None,
+        }
+    }
+}
+
+/// The texture's base level for vector lookups.
+pub(super) struct VecSampler<'a> {
+    texels: &'a [[u8; 4]],
+    width: i32,
+    size: (f32, f32),
+    wrap: (VecWrap, VecWrap),
+    filter: Filter,
+}
+
+impl<'a> VecSampler<'a> {
+    /// `None` when a wrap mode needs the general (per-lane) path.
+    pub(super) fn new(texture: &'a Texture, shading: &LaneShading) -> Option<Self> {
+        let (w, h) = (texture.width(), texture.height());
+        Some(Self {
+            texels: texture.base_texels(),
+            width: w as i32,
+            size: (w as f32, h as f32),
+            wrap: (
+                VecWrap::new(LaneWrap::new(w, shading.wrap))?,
+                VecWrap::new(LaneWrap::new(h, shading.wrap))?,
+            ),
+            filter: shading.filter,
+        })
+    }
+}
+
+/// `(floor(clamp(x)) as i32, floor(clamp(x)))` with NaN giving index 0, as `texel_floor`.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn floor_coord(x: __m256) -> (__m256i, __m256) {
+    let ordered = _mm256_cmp_ps::<_CMP_ORD_Q>(x, x);
+    let xc = _mm256_min_ps(
+        _mm256_max_ps(x, _mm256_set1_ps(-MAX_TEXEL_COORD)),
+        _mm256_set1_ps(MAX_TEXEL_COORD),
+    );
+    let f = _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(xc);
+    let i = _mm256_and_si256(_mm256_cvttps_epi32(f), _mm256_castps_si256(ordered));
+    (i, f)
+}
+
+/// `clamp(x - floor, 0, 1)` where x is finite, else 0 (the bilinear fraction).
+#[inline]
+#[target_feature(enable = "avx2")]
+fn fraction(x: __m256, floor: __m256) -> __m256 {
+    let finite = _mm256_cmp_ps::<_CMP_EQ_OQ>(_mm256_sub_ps(x, x), _mm256_setzero_ps());
+    let t = _mm256_min_ps(
+        _mm256_max_ps(_mm256_sub_ps(x, floor), _mm256_setzero_ps()),
+        _mm256_set1_ps(1.0),
+    );
+    _mm256_and_ps(t, finite)
+}
+
+#[inline]
+#[target_feature(enable = "avx2")]
+fn wrap(i: __m256i, w: VecWrap) -> __m256i {
+    match w {
+        VecWrap::Mask(m) => _mm256_and_si256(i, _mm256_set1_epi32(m)),
+        VecWrap::Clamp(hi) => _mm256_min_epi32(
+            _mm256_max_epi32(i, _mm256_setzero_si256()),
+            _mm256_set1_epi32(hi),
+        ),
+    }
+}
+
+/// Eight texels at wrapped indices (each within the texture, so every read is in bounds).
+#[inline]
+#[target_feature(enable = "avx2")]
+fn gather(s: &VecSampler<'_>, i: __m256i, j: __m256i) -> __m256i {
+    let index = _mm256_add_epi32(_mm256_mullo_epi32(j, _mm256_set1_epi32(s.width)), i);
+    debug_assert!(s.texels.len() <= i32::MAX as usize);
+    // SAFETY: `wrap` put i in 0..width and j in 0..height, so every index is below
+    // width * height = texels.len(); a texel is 4 bytes, read as one i32.
+    unsafe { _mm256_i32gather_epi32::<4>(s.texels.as_ptr().cast::<i32>(), index) }
+}
+
+/// Channel `C` (0 = red) of eight packed texels, as f32 in 0..255: one byte shuffle moves
+/// byte `C` of every texel to the bottom of its lane and zeroes the rest.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn channel<const C: i32>(t: __m256i) -> __m256 {
+    let pick = |n: i32| (4 * n + C) | 0x8080_8000_u32 as i32;
+    let mask = _mm256_setr_epi32(
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+        pick(0),
+        pick(1),
+        pick(2),
+        pick(3),
+    );
+    _mm256_cvtepi32_ps(_mm256_shuffle_epi8(t, mask))
+}
+
+/// `byte_from_sum(x)` for a bilinear sum: `round(x)`, half away from zero. The clamp of the
+/// scalar code changes nothing here: every weight is in [0, 1] and they add up to 1 (within
+/// a few ulps), so the sum is in [0, 255.001] and never NaN.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn byte_from_sum(y: __m256) -> __m256i {
+    let t = _mm256_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
+    let up = _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_sub_ps(y, t), _mm256_set1_ps(0.5));
+    _mm256_cvttps_epi32(_mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0))))
+}
+
+/// `sum_k weight_k * channel_k`, left to right.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn weighted<const C: i32>(weights: &[__m256; 4], texels: &[__m256i; 4]) -> __m256i {
+    let mut sum = _mm256_mul_ps(weights[0], channel::<C>(texels[0]));
+    for k in 1..4 {
+        sum = _mm256_add_ps(sum, _mm256_mul_ps(weights[k], channel::<C>(texels[k])));
+    }
+    byte_from_sum(sum)
+}
+
+/// The packed RGBA8 colours at eight uv, as `Texture::sample_rgba8`.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn sample(s: &VecSampler<'_>, u: __m256, v: __m256) -> __m256i {
+    let (w, h) = (_mm256_set1_ps(s.size.0), _mm256_set1_ps(s.size.1));
+    match s.filter {
+        Filter::Nearest => {
+            // One texel of weight 1: the colour is the texel (see the parent module).
+            let i = wrap(floor_coord(_mm256_mul_ps(u, w)).0, s.wrap.0);
+            let j = wrap(floor_coord(_mm256_mul_ps(v, h)).0, s.wrap.1);
+            gather(s, i, j)
+        }
+        _ => {
+            let half = _mm256_set1_ps(0.5);
+            let x = _mm256_sub_ps(_mm256_mul_ps(u, w), half);
+            let y = _mm256_sub_ps(_mm256_mul_ps(v, h), half);
+            let (i0, fx) = floor_coord(x);
+            let (j0, fy) = floor_coord(y);
+            let (a, b) = (fraction(x, fx), fraction(y, fy));
+            let one = _mm256_set1_epi32(1);
+            let (ia, ib) = (
+                wrap(i0, s.wrap.0),
+                wrap(_mm256_add_epi32(i0, one), s.wrap.0),
+            );
+            let (ja, jb) = (
+                wrap(j0, s.wrap.1),
+                wrap(_mm256_add_epi32(j0, one), s.wrap.1),
+            );
+            let texels = [
+                gather(s, ia, ja),
+                gather(s, ib, ja),
+                gather(s, ia, jb),
+                gather(s, ib, jb),
+            ];
+            let ones = _mm256_set1_ps(1.0);
+            let (oa, ob) = (_mm256_sub_ps(ones, a), _mm256_sub_ps(ones, b));
+            let weights = [
+                _mm256_mul_ps(oa, ob),
+                _mm256_mul_ps(a, ob),
+                _mm256_mul_ps(oa, b),
+                _mm256_mul_ps(a, b),
+            ];
+            let r = weighted::<0>(&weights, &texels);
+            let g = weighted::<1>(&weights, &texels);
+            let b = weighted::<2>(&weights, &texels);
+            let a = weighted::<3>(&weights, &texels);
+            _mm256_or_si256(
+                _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
+                _mm256_or_si256(_mm256_slli_epi32::<16>(b), _mm256_slli_epi32::<24>(a)),
+            )
+        }
+    }
+}
+
+/// Depth-tests and writes eight pixels starting at buffer index `index` of the band; lanes
+/// outside `ok` are neither read nor written.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn write(target: &mut Target<'_>, index: usize, ok: __m256i, depth: __m256, rgba: __m256i) {
+    debug_assert!(index < target.depth.len() && target.depth.len() == target.color.len());
+    // SAFETY: the caller's `ok` enables only lanes of pixels inside the band's row (columns
+    // up to the triangle's last column, which is inside the image), so every accessed
+    // element `index + k` is in both slices; masked loads and stores touch no other lane.
+    unsafe {
+        let dp = target.depth.as_mut_ptr().add(index);
+        let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
+        let old = _mm256_maskload_ps(dp, ok);
+        let pass = _mm256_and_si256(
+            ok,
+            _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
+        );
+        _mm256_maskstore_ps(dp, pass, depth);
+        _mm256_maskstore_epi32(cp, pass, rgba);
+    }
+}
+
+/// An eight-lane mask from the low eight bits of `bits`.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn mask_from_bits(bits: i32) -> __m256i {
+    let b = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), b), b)
+}
+
+/// Two halves of four `f64` lanes converted to eight `f32` lanes.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn to_f32(lo: __m256d, hi: __m256d) -> __m256 {
+    _mm256_set_m128(_mm256_cvtpd_ps(hi), _mm256_cvtpd_ps(lo))
+}
+
+/// `sum_i w_i x_i`, left to right, as the scalar code adds.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn dot3(w: &[__m256d; 3], x: [f64; 3]) -> __m256d {
+    let t = _mm256_add_pd(
+        _mm256_mul_pd(w[0], _mm256_set1_pd(x[0])),
+        _mm256_mul_pd(w[1], _mm256_set1_pd(x[1])),
+    );
+    _mm256_add_pd(t, _mm256_mul_pd(w[2], _mm256_set1_pd(x[2])))
+}
+
+/// uv, depth (f64 lanes) and the validity bits of four samples from their edge values, as
+/// `interpolate::fragment`.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn from_edges4(e: [__m256d; 3], c: &Constants, mode: Interpolation, color: LaneColor) -> Four {
+    let ia = _mm256_set1_pd(c.inv_area);
+    let l = [
+        _mm256_mul_pd(e[0], ia),
+        _mm256_mul_pd(e[1], ia),
+        _mm256_mul_pd(e[2], ia),
+    ];
+    let q = [
+        _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
+        _mm256_mul_pd(l[1], _mm256_set1_pd(c.inv_w[1])),
+        _mm256_mul_pd(l[2], _mm256_set1_pd(c.inv_w[2])),
+    ];
+    let sum = _mm256_add_pd(_mm256_add_pd(q[0], q[1]), q[2]);
+    let ok = _mm256_and_pd(
+        _mm256_cmp_pd::<_CMP_GT_OQ>(sum, _mm256_setzero_pd()),
+        _mm256_cmp_pd::<_CMP_LT_OQ>(sum, _mm256_set1_pd(f64::INFINITY)),
+    );
+    let w = match mode {
+        Interpolation::Perspective => {
+            let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
+            [
+                _mm256_mul_pd(q[0], inv),
+                _mm256_mul_pd(q[1], inv),
+                _mm256_mul_pd(q[2], inv),
+            ]
+        }
+        Interpolation::Affine => l,
+    };
+    let mut wire = 0;
+    if let Some(wire_consts) = &c.wire {
+        for i in 0..3 {
+            if wire_consts.len[i] > 0.0 {
+                // The weight as f32, as the varyings hold it, then over the gradient length.
+                let weight = _mm256_cvtps_pd(_mm256_cvtpd_ps(dot3(&l, wire_consts.bary[i])));
+                let d = _mm256_div_pd(weight, _mm256_set1_pd(wire_consts.len[i]));
+                wire |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
+                    d,
+                    _mm256_set1_pd(WIRE_WIDTH_PX),
+                ));
+            }
+        }
+    }
+    let mut channels = [_mm256_setzero_pd(); 3];
+    if matches!(color, LaneColor::VertexColor | LaneColor::Barycentric) {
+        channels = [0, 1, 2].map(|ch| dot3(&w, c.channels[ch]));
+    }
+    Four {
+        u: dot3(&w, c.u),
+        v: dot3(&w, c.v),
+        depth: dot3(&l, c.depth),
+        ok: _mm256_movemask_pd(ok),
+        wire,
+        channels,
+    }
+}
+
+/// What [`from_edges4`] finds for four samples.
+struct Four {
+    u: __m256d,
+    v: __m256d,
+    depth: __m256d,
+    /// Validity and wireframe bits, lane k in bit k.
+    ok: i32,
+    wire: i32,
+    /// Vertex colour or barycentric channels (zero for the other shadings).
+    channels: [__m256d; 3],
+}
+
+/// `unorm8(x)`: `round(clamp(x, 0, 1) * 255)`, half away from zero (NaN gives 0).
+#[inline]
+#[target_feature(enable = "avx2")]
+fn unorm8(x: __m256) -> __m256i {
+    let y = _mm256_mul_ps(
+        _mm256_min_ps(_mm256_max_ps(x, _mm256_setzero_ps()), _mm256_set1_ps(1.0)),
+        _mm256_set1_ps(255.0),
+    );
+    let t = _mm256_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
+    let up = _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_sub_ps(y, t), _mm256_set1_ps(0.5));
+    _mm256_cvttps_epi32(_mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0))))
+}
+
+/// Red, green, blue bytes and an opaque alpha packed into eight RGBA8 lanes.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn pack_opaque(r: __m256i, g: __m256i, b: __m256i) -> __m256i {
+    _mm256_or_si256(
+        _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
+        _mm256_or_si256(
+            _mm256_slli_epi32::<16>(b),
+            _mm256_set1_epi32(0xff00_0000_u32 as i32),
+        ),
+    )
+}
+
+/// The colours of the non-texture shadings for eight samples, as `shade` makes them.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
+    match color {
+        LaneColor::Depth(near, far) => {
+            let grey = if far > near {
+                let scale = |d: __m256d| {
+                    _mm256_div_pd(
+                        _mm256_sub_pd(d, _mm256_set1_pd(near)),
+                        _mm256_set1_pd(far - near),
+                    )
+                };
+                unorm8(to_f32(scale(lo.depth), scale(hi.depth)))
+            } else {
+                _mm256_setzero_si256()
+            };
+            pack_opaque(grey, grey, grey)
+        }
+        _ => {
+            let ch = |c: usize| unorm8(to_f32(lo.channels[c], hi.channels[c]));
+            pack_opaque(ch(0), ch(1), ch(2))
+        }
+    }
+}
+
+/// The edge-function lane path (see the parent module), texture shading only.
+#[target_feature(enable = "avx2")]
+pub(super) fn edge_triangle(
+    setup: &TriangleSetup,
+    (y_start, y_end): (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    let (mode, color) = (shading.mode, shading.color);
+    let planes = EdgePlanes::new(setup);
+    let consts = Constants::new(setup, shading.wireframe, color);
+    let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
+    let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+    let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
+    let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
+    let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
+    let mut by = y_start;
+    while by <= y_end {
+        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
+        let mut bx = x0;
+        while bx <= x1 {
+            let bx_end = bx + LANES as u32 - 1;
+            let block = classify(
+                &planes,
+                (i64::from(bx), i64::from(bx_end)),
+                (i64::from(by), i64::from(by_end)),
+            );
+            if block != Block::Outside {
+                let lanes_in = (x1 - bx + 1).min(LANES as u32);
+                let in_row = (1i32 << lanes_in) - 1;
+                for y in by..=by_end {
+                    let base = planes.at(i64::from(y), i64::from(bx));
+                    let mut lo = [_mm256_setzero_pd(); 3];
+                    let mut hi = [_mm256_setzero_pd(); 3];
+                    for i in 0..3 {
+                        let b = _mm256_set1_pd(base[i] as f64);
+                        lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
+                        hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
+                    }
+                    let covered = if block == Block::Inside {
+                        in_row
+                    } else {
+                        let pass = |e: &[__m256d; 3]| {
+                            let m = _mm256_and_pd(
+                                _mm256_and_pd(
+                                    _mm256_cmp_pd::<_CMP_GE_OQ>(e[0], t[0]),
+                                    _mm256_cmp_pd::<_CMP_GE_OQ>(e[1], t[1]),
+                                ),
+                                _mm256_cmp_pd::<_CMP_GE_OQ>(e[2], t[2]),
+                            );
+                            _mm256_movemask_pd(m)
+                        };
+                        (pass(&lo) | (pass(&hi) << 4)) & in_row
+                    };
+                    if covered == 0 {
+                        continue;
+                    }
+                    let lo = from_edges4(lo, &consts, mode, color);
+                    let hi = from_edges4(hi, &consts, mode, color);
+                    let ok = covered & (lo.ok | (hi.ok << 4));
+                    if ok == 0 {
+                        continue;
+                    }
+                    let mut rgba = match sampler {
+                        Some(sampler) if color == LaneColor::Texture => {
+                            sample(sampler, to_f32(lo.u, hi.u), to_f32(lo.v, hi.v))
+                        }
+                        _ => channel_colors(&lo, &hi, color),
+                    };
+                    let wire = lo.wire | (hi.wire << 4);
+                    if wire != 0 {
+                        rgba = _mm256_blendv_epi8(
+                            rgba,
+                            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
+                            mask_from_bits(wire),
+                        );
+                    }
+                    let index = (y - target.y0) as usize * target.width as usize + bx as usize;
+                    let depth = to_f32(lo.depth, hi.depth);
+                    write(target, index, mask_from_bits(ok), depth, rgba);
+                }
+            }
+            bx += LANES as u32;
+        }
+        by = by_end + 1;
+    }
+}
+
+/// The scanline lane path (see the parent module).
+#[target_feature(enable = "avx2")]
+pub(super) fn scanline_triangle(
+    setup: &TriangleSetup,
+    (y_start, y_end): (u32, u32),
+    sampler: &VecSampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    let consts = Constants::new(setup, false, LaneColor::Texture);
+    let dl: [f64; 3] = setup
+        .edges
+        .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);
+    let step = Stepped::from_weights(dl, &consts, mode);
+    let n = LANES as f64;
+    let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
+    for y in y_start..=y_end {
+        let Some((x0, x1)) = row_span(setup, y) else {
+            continue;
+        };
+        let e = setup.edge_values(sample_point(x0, y));
+        let start = Stepped::from_weights(screen_weights(&e, setup.area2), &consts, mode);
+        // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
+        let mut lanes = [start; LANES];
+        for k in 1..LANES {
+            let p = lanes[k - 1];
+            lanes[k] = Stepped {
+                u: p.u + step.u,
+                v: p.v + step.v,
+                inv_w: p.inv_w + step.inv_w,
+                depth: p.depth + step.depth,
+            };
+        }
+        let load = |f: fn(&Stepped) -> f64, h: usize| {
+            _mm256_setr_pd(
+                f(&lanes[4 * h]),
+                f(&lanes[4 * h + 1]),
+                f(&lanes[4 * h + 2]),
+                f(&lanes[4 * h + 3]),
+            )
+        };
+        // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8]
+        let mut vals = [0, 1].map(|h| {
+            [
+                load(|s| s.u, h),
+                load(|s| s.v, h),
+                load(|s| s.inv_w, h),
+                load(|s| s.depth, h),
+            ]
+        });
+        let row = (y - target.y0) as usize * target.width as usize;
+        let mut x = x0;
+        while x <= x1 {
+            let lanes_in = (x1 - x + 1).min(LANES as u32);
+            let mut ok = (1i32 << lanes_in) - 1;
+            let mut uv = [[_mm256_setzero_pd(); 2]; 2];
+            for (h, v) in vals.iter().enumerate() {
+                let valid = _mm256_and_pd(
+                    _mm256_cmp_pd::<_CMP_GT_OQ>(v[2], _mm256_setzero_pd()),
+                    _mm256_cmp_pd::<_CMP_LT_OQ>(v[2], _mm256_set1_pd(f64::INFINITY)),
+                );
+                if _mm256_movemask_pd(valid) != 0xf {
+                    ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
+                }
+                uv[h] = match mode {
+                    Interpolation::Perspective => {
+                        let w = _mm256_div_pd(_mm256_set1_pd(1.0), v[2]);
+                        [_mm256_mul_pd(v[0], w), _mm256_mul_pd(v[1], w)]
+                    }
+                    Interpolation::Affine => [v[0], v[1]],
+                };
+            }
+            if ok != 0 {
+                let u = to_f32(uv[0][0], uv[1][0]);
+                let v = to_f32(uv[0][1], uv[1][1]);
+                let rgba = sample(sampler, u, v);
+                let depth = to_f32(vals[0][3], vals[1][3]);
+                write(target, row + x as usize, mask_from_bits(ok), depth, rgba);
+            }
+            for half in vals.iter_mut() {
+                for (q, s) in half.iter_mut().zip(&step8) {
+                    *q = _mm256_add_pd(*q, *s);
+                }
+            }
+            x += LANES as u32;
+        }
+    }
+}

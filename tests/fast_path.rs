@@ -1,0 +1,198 @@
+//! The colour-and-depth fast path (`render_into` with `Buffers::ColorDepth`, the lane code in
+//! `raster::lanes`) against the per-pixel renderer with every buffer (`render`):
+//! - edge functions: colour and depth bit for bit, with the AVX2 intrinsics and with the
+//!   portable lanes, for every filter, wrap, mode and shading;
+//! - scanline: identical coverage, colours equal up to rounding.
+
+mod common;
+
+use barylab::raster::lanes::set_vector_path;
+use barylab::raster::render::{ClipMesh, Rasterizer, RenderSettings, render, render_into};
+use barylab::raster::{
+    Buffers, BuiltinTexture, Filter, Framebuffer, Interpolation, Shading, Texture, Wrap,
+};
+use barylab::scene::Scene;
+use common::at_window;
+use proptest::prelude::*;
+
+fn fast(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, frame: &mut Framebuffer) {
+    render_into(frame, mesh, tex, s, Buffers::ColorDepth).expect("render");
+}
+
+/// A texture whose size is not a power of two (the general wrap path).
+fn odd_texture() -> Texture {
+    let (w, h) = (37u32, 23u32);
+    let texels = (0..w * h)
+        .map(|k| {
+            let (i, j) = (k % w, k / w);
+            [(i * 7) as u8, (j * 11) as u8, ((i * j) % 256) as u8, 255]
+        })
+        .collect();
+    Texture::from_texels(w, h, texels).expect("texture")
+}
+
+fn textures() -> Vec<(&'static str, Texture)> {
+    vec![
+        ("noise", Texture::builtin(BuiltinTexture::Noise)),
+        ("uv-grid", Texture::builtin(BuiltinTexture::UvGrid)),
+        ("37x23", odd_texture()),
+    ]
+}
+
+/// Colour and depth of the fast path equal the full render's, bit for bit (edge functions),
+/// with the vector path on and off; and a reused frame gives the same as a fresh one.
+fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, what: &str) {
+    let reference = render(mesh, tex, s).expect("render").frame;
+    // A reused framebuffer of another size and content: fully reset by render_into.
+    let mut frame = Framebuffer::new(3, 5, [1, 2, 3, 4]);
+    for vector in [true, false] {
+        set_vector_path(vector);
+        fast(mesh, tex, s, &mut frame);
+        set_vector_path(true);
+        assert_eq!(
+            (frame.width, frame.height),
+            (reference.width, reference.height)
+        );
+        assert!(frame.triangle.is_empty() && frame.uv_perspective.is_empty());
+        let bad = (0..reference.color.len())
+            .find(|&i| {
+                frame.color[i] != reference.color[i]
+                    || frame.depth[i].to_bits() != reference.depth[i].to_bits()
+            })
+            .map(|i| {
+                (
+                    i % reference.width as usize,
+                    i / reference.width as usize,
+                    frame.color[i],
+                    reference.color[i],
+                )
+            });
+        assert_eq!(
+            bad, None,
+            "{what}, vector path {vector}: (x, y, fast, reference)"
+        );
+    }
+}
+
+/// Covered exactly where the reference is covered; colours equal but for rounding.
+fn assert_scanline_close(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, what: &str) {
+    let reference = render(mesh, tex, s).expect("render").frame;
+    let mut frame = Framebuffer::new(0, 0, s.background);
+    let scan = RenderSettings {
+        rasterizer: Rasterizer::Scanline,
+        ..*s
+    };
+    for vector in [true, false] {
+        set_vector_path(vector);
+        fast(mesh, tex, &scan, &mut frame);
+        set_vector_path(true);
+        let mut differing = 0;
+        for i in 0..reference.color.len() {
+            let (x, y) = (i as u32 % frame.width, i as u32 / frame.width);
+            assert_eq!(
+                frame.covered(x, y),
+                reference.covered(x, y),
+                "{what}: coverage at ({x}, {y})"
+            );
+            let (a, b) = (frame.depth[i], reference.depth[i]);
+            assert!((a - b).abs() <= 1e-5, "{what}: depth at ({x}, {y})");
+            differing += usize::from(frame.color[i] != reference.color[i]);
+        }
+        assert!(
+            differing * 200 <= reference.color.len(),
+            "{what}, vector path {vector}: {differing} colours differ"
+        );
+    }
+}
+
+#[test]
+fn edge_fast_path_is_bit_identical_on_every_sample_scene() {
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes"));
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).expect("scenes") {
+        let path = entry.expect("entry").path();
+        if path.extension().and_then(|e| e.to_str()) != Some("json") {
+            continue;
+        }
+        let mut scene = Scene::load(&path).expect("scene");
+        let (w, h) = scene.size();
+        if w * h > 640 * 480 {
+            scene.set_size(w / 4, h / 4);
+        }
+        let tex = scene.load_texture(dir).expect("texture");
+        let mesh = scene.to_mesh();
+        for mode in [Interpolation::Affine, Interpolation::Perspective] {
+            for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
+                for shading in [
+                    Shading::Texture,
+                    Shading::VertexColor,
+                    Shading::Barycentric,
+                    Shading::Depth,
+                ] {
+                    for wireframe in [false, true] {
+                        let s = RenderSettings {
+                            mode,
+                            filter,
+                            shading,
+                            wireframe,
+                            ..scene.settings()
+                        };
+                        let what = format!("{} {mode:?} {filter:?} {shading:?}", path.display());
+                        assert_edge_identical(&mesh, &tex, &s, &what);
+                    }
+                }
+                let s = RenderSettings {
+                    mode,
+                    filter,
+                    ..scene.settings()
+                };
+                assert_scanline_close(&mesh, &tex, &s, &path.display().to_string());
+            }
+        }
+        n += 1;
+    }
+    assert!(n >= 8);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Random triangles (overlapping, both windings, some partly off screen, w from 0.3 to
+    /// 12) with every texture, wrap and filter the lanes handle.
+    #[test]
+    fn fast_paths_agree_on_random_meshes(
+        pts in proptest::collection::vec((-30.0f64..110.0, -30.0f64..80.0, 0.3f64..12.0), 6),
+        uv_scale in 0.5f32..6.0,
+        persp in any::<bool>(),
+        bilinear in any::<bool>(),
+        wrap in 0usize..3,
+        which in 0usize..3,
+        wireframe in any::<bool>(),
+        shading in 0usize..4,
+    ) {
+        let (w, h) = (83, 61);
+        let mut mesh = ClipMesh {
+            vertices: pts.iter().map(|&(x, y, z)| at_window(x, y, z, w, h)).collect(),
+            triangles: vec![[0, 1, 2], [3, 4, 5], [0, 2, 4], [5, 3, 1]],
+        };
+        for (k, v) in mesh.vertices.iter_mut().enumerate() {
+            v.uv = v.uv * uv_scale - 0.3;
+            // Colours beyond [0, 1] too, so the clamp to 8 bits is exercised.
+            v.color = glam::Vec3::new(k as f32 * 0.3 - 0.2, 1.0 - k as f32 * 0.25, 0.5);
+        }
+        let (name, tex) = textures().swap_remove(which);
+        let s = RenderSettings {
+            width: w,
+            height: h,
+            mode: if persp { Interpolation::Perspective } else { Interpolation::Affine },
+            filter: if bilinear { Filter::Bilinear } else { Filter::Nearest },
+            wrap: [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat][wrap],
+            wireframe,
+            shading: [Shading::Texture, Shading::VertexColor, Shading::Barycentric, Shading::Depth]
+                [shading],
+            ..RenderSettings::default()
+        };
+        assert_edge_identical(&mesh, &tex, &s, name);
+        assert_scanline_close(&mesh, &tex, &s, name);
+    }
+}
