@@ -132,6 +132,10 @@ struct FigureArgs {
     /// Background around the image (title strip, margins).
     #[arg(long, default_value = "transparent")]
     background: BackgroundArg,
+    /// Figure points per overlay point: labels, lines, handles and margins this much larger,
+    /// as in the app at that text size (the app's Export uses its screen's pixels per point).
+    #[arg(long, default_value_t = 1.0, value_parser = parse_overlay_scale)]
+    overlay_scale: f32,
     /// Leave out the pixel grid.
     #[arg(long)]
     no_grid: bool,
@@ -177,6 +181,17 @@ fn parse_fraction(s: &str) -> Result<f32, String> {
     match s.trim().parse::<f32>() {
         Ok(v) if (0.0..=1.0).contains(&v) => Ok(v),
         _ => Err(format!("`{s}` is not a fraction from 0 to 1")),
+    }
+}
+
+/// Parses an overlay scale within [`barylab::figure::OVERLAY_SCALE_RANGE`].
+fn parse_overlay_scale(s: &str) -> Result<f32, String> {
+    let (lo, hi) = barylab::figure::OVERLAY_SCALE_RANGE;
+    match s.trim().parse::<f32>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!(
+            "overlay scale `{s}` is not a number from {lo} to {hi}"
+        )),
     }
 }
 
@@ -676,6 +691,7 @@ fn figure(args: &FigureArgs) -> Result<()> {
             BackgroundArg::Transparent => Background::Transparent,
             BackgroundArg::White => Background::White,
         },
+        overlay_scale: args.overlay_scale,
     };
     let fig = Figure::compose(&scene, &texture, &options)
         .with_context(|| args.input.scene.display().to_string())?;

@@ -65,10 +65,20 @@ fn ctrl_s_exports_what_barylab_figure_draws_from_the_exported_scene() {
         AppCommand::SetCompare(Compare::Wipe),
         AppCommand::SetWipe(0.3),
         AppCommand::SetPixelSize(4),
+        // Text size 1.5: overlays 1.5 times larger on screen, and so in the figure.
+        AppCommand::SetUiScale(1.5),
+        // Room for the canvas at that size.
+        AppCommand::SetShowControls(false),
+        AppCommand::SetShowInspector(false),
     ] {
         h.state_mut().push(c);
     }
+    // The new zoom lays the window out again over the next frames.
+    for _ in 0..4 {
+        h.step();
+    }
     h.run();
+    assert_eq!(h.state().canvas().views[0].transform.scale, 4.0 / 1.5);
     let p = pin(&mut h);
     let dir = tempfile::tempdir().expect("tempdir");
     let folder = dir.path().join("figures");
@@ -100,8 +110,8 @@ fn ctrl_s_exports_what_barylab_figure_draws_from_the_exported_scene() {
     // margins and title strip.
     let size = h.state().canvas().output.as_ref().expect("rendered").size;
     let png = image::open(folder.join("figure-001.png")).expect("png");
-    let m = barylab::figure::FIGURE_MARGIN;
-    let strip = barylab::figure::overlay::TITLE_STRIP as u32;
+    // (4 screen pixels per rendered pixel; margins and title strip at text size 1.5.)
+    let [m, _, strip] = barylab::figure::layout_points(1.5);
     assert_eq!(
         (png.width(), png.height()),
         (2 * (4 * size[0] + 2 * m), 2 * (4 * size[1] + 2 * m + strip))
@@ -115,10 +125,14 @@ fn ctrl_s_exports_what_barylab_figure_draws_from_the_exported_scene() {
         .find(|l| l.starts_with("barylab figure "))
         .expect("command shown")
         .clone();
-    assert!(
-        command.contains(&format!("--pixel {},{}", p[0], p[1])),
-        "{command}"
-    );
+    for part in [
+        format!("--pixel {},{}", p[0], p[1]),
+        "--compare wipe --wipe 0.3".to_string(),
+        "--pixel-size 4".to_string(),
+        "--overlay-scale 1.5".to_string(),
+    ] {
+        assert!(command.contains(&part), "{command}");
+    }
     let args: Vec<&str> = command.split_whitespace().skip(1).collect();
     let o = args.iter().position(|a| *a == "-o").expect("-o");
     for ext in ["png", "svg"] {

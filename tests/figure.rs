@@ -337,3 +337,34 @@ fn cli_figure_equals_the_library_export_and_reports_bad_output_in_one_line() {
     let err = String::from_utf8_lossy(&run.stderr);
     assert!(err.contains("outside the 200x150 image"), "{err}");
 }
+
+#[test]
+fn the_overlay_scale_enlarges_labels_and_margins_not_the_image() {
+    let (scene, texture) = small_default();
+    let one = Figure::compose(&scene, &texture, &pinned([100, 100], 1)).expect("figure");
+    let options = FigureOptions {
+        overlay_scale: 2.0,
+        ..pinned([100, 100], 1)
+    };
+    let two = Figure::compose(&scene, &texture, &options).expect("figure");
+    let [m, _, strip] = barylab::figure::layout_points(2.0);
+    assert_eq!(two.size, [200 + 2 * m, 150 + 2 * m + strip]);
+    assert!(one.views[0].raster == two.views[0].raster);
+    let font_sizes = |f: &Figure| -> Vec<f32> {
+        let doc = svg::to_svg(f).expect("svg");
+        doc.split("font-size=\"")
+            .skip(1)
+            .filter_map(|rest| rest.split('"').next()?.parse().ok())
+            .collect()
+    };
+    let (a, b) = (font_sizes(&one), font_sizes(&two));
+    assert!(!a.is_empty());
+    assert_eq!(b, a.iter().map(|v| 2.0 * v).collect::<Vec<_>>());
+    // Out of range: a clear error.
+    let bad = FigureOptions {
+        overlay_scale: 9.0,
+        ..pinned([100, 100], 1)
+    };
+    let err = Figure::compose(&scene, &texture, &bad).expect_err("out of range");
+    assert_eq!(err.to_string(), "overlay scale 9 is outside 0.5..=5");
+}

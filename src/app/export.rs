@@ -156,6 +156,8 @@ pub struct ExportContext<'a> {
     pub size: Option<[u32; 2]>,
     /// The hovered pixel (marked like on screen).
     pub hovered: Option<[u32; 2]>,
+    /// Screen pixels per point: overlays are drawn this much larger, as on screen.
+    pub pixels_per_point: f32,
 }
 
 impl ExportPanel {
@@ -253,7 +255,7 @@ impl ExportPanel {
     fn figure(&self, app: &ExportContext<'_>) -> Result<(Scene, Figure), String> {
         let size = app.size.ok_or_else(|| text::NO_CANVAS.to_string())?;
         let scene = figure_scene(app.state, size);
-        let options = figure_options(app.state, app.hovered, &self.settings);
+        let options = figure_options(app.state, app.hovered, &self.settings, app.pixels_per_point);
         let figure = Figure::compose(&scene, app.texture, &options)
             .map_err(|e: FigureError| e.to_string())?;
         Ok((scene, figure))
@@ -262,7 +264,7 @@ impl ExportPanel {
     /// The `barylab figure` command that makes the exported PNG again from the exported scene
     /// file `json`.
     pub fn command(&self, app: &ExportContext<'_>, json: &Path) -> String {
-        let options = figure_options(app.state, app.hovered, &self.settings);
+        let options = figure_options(app.state, app.hovered, &self.settings, app.pixels_per_point);
         let quote = |p: &Path| {
             let s = p.display().to_string();
             if s.contains([' ', '\'', '"']) {
@@ -415,11 +417,13 @@ pub fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
     scene
 }
 
-/// The figure options of the canvas as shown, with the export's scale and background.
+/// The figure options of the canvas as shown, with the export's scale and background;
+/// `pixels_per_point` is the screen's (the overlay scale).
 pub fn figure_options(
     state: &AppState,
     hovered: Option<[u32; 2]>,
     settings: &ExportSettings,
+    pixels_per_point: f32,
 ) -> FigureOptions {
     let v = &state.view;
     FigureOptions {
@@ -433,6 +437,7 @@ pub fn figure_options(
         hovered,
         scale: settings.scale,
         background: settings.background,
+        overlay_scale: pixels_per_point,
     }
 }
 

@@ -620,6 +620,7 @@ impl BaryApp {
                 texture: &texture,
                 size: self.canvas.output.as_ref().map(|o| o.size),
                 hovered: self.canvas.hover,
+                pixels_per_point: ctx.pixels_per_point(),
             },
         );
         if self.export.outcome != outcome_before

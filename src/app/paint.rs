@@ -137,8 +137,11 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 // point if it sticks out, then pushed inside), measured with egui's galley.
                 let galley =
                     painter.layout_no_wrap(text.clone(), FontId::proportional(*size), color(*c));
-                let outer =
-                    figure_text::padded([galley.size().x, galley.size().y], background.is_some());
+                let outer = figure_text::padded(
+                    [galley.size().x, galley.size().y],
+                    background.is_some(),
+                    1.0,
+                );
                 let base = t.to_screen(*at);
                 let b = figure_text::place_label(
                     [base.x, base.y],

@@ -197,6 +197,10 @@ pub struct FigureOptions {
     /// PNG pixels per figure point: 1, 2 or 4.
     pub scale: u32,
     pub background: Background,
+    /// Figure points per overlay point: the screen's pixels per point (the app's text size
+    /// times the display's scale). Labels, lines, handles, the title strip and the margins
+    /// are this much larger, so the figure looks as the canvas did on screen.
+    pub overlay_scale: f32,
 }
 
 impl Default for FigureOptions {
@@ -212,6 +216,7 @@ impl Default for FigureOptions {
             hovered: None,
             scale: 1,
             background: Background::Transparent,
+            overlay_scale: 1.0,
         }
     }
 }
@@ -263,6 +268,9 @@ impl FigureOptions {
         if self.pixel_size != 1 {
             push("--pixel-size", self.pixel_size.to_string());
         }
+        if self.overlay_scale != 1.0 {
+            push("--overlay-scale", format!("{}", self.overlay_scale));
+        }
         if self.background == Background::White {
             push("--background", "white".to_string());
         }
@@ -279,11 +287,29 @@ impl FigureOptions {
     }
 }
 
-/// Points of margin around each view: a handle on the image's edge (radius
+/// Overlay points of margin around each view: a handle on the image's edge (radius
 /// [`overlay::HANDLE_RADIUS`] + its outline) is drawn whole.
 pub const FIGURE_MARGIN: u32 = 16;
-/// Points between the two views of the side-by-side comparison (as on screen).
+/// Overlay points between the two views of the side-by-side comparison (as on screen).
 pub const SIDE_BY_SIDE_GAP: u32 = 10;
+/// Range of [`FigureOptions::overlay_scale`] (the app's text size range times a HiDPI
+/// display's 2).
+pub const OVERLAY_SCALE_RANGE: (f32, f32) = (0.5, 5.0);
+
+/// The figure's margin, side-by-side gap and title strip in figure points for an overlay
+/// scale `k`: `round(k * points)` each.
+///
+/// ```
+/// assert_eq!(barylab::figure::layout_points(1.5), [24, 15, 66]);
+/// ```
+pub fn layout_points(k: f32) -> [u32; 3] {
+    [
+        FIGURE_MARGIN as f32,
+        SIDE_BY_SIDE_GAP as f32,
+        overlay::TITLE_STRIP,
+    ]
+    .map(|v| (v * k).round() as u32)
+}
 /// Largest figure side in PNG pixels.
 pub const MAX_FIGURE_SIZE: u32 = 16384;
 
@@ -294,6 +320,8 @@ pub enum FigureError {
     Scale(u32),
     #[error("pixel size {0} is outside 1..=32")]
     PixelSize(u32),
+    #[error("overlay scale {0} is outside 0.5..=5")]
+    OverlayScale(f32),
     #[error(
         "the figure would be {width}x{height} PNG pixels (at most {MAX_FIGURE_SIZE} per side): \
          use a smaller scale, pixel size or image size"
@@ -328,6 +356,8 @@ pub struct Figure {
     pub size: [u32; 2],
     /// PNG pixels per point.
     pub scale: u32,
+    /// Figure points per overlay point ([`FigureOptions::overlay_scale`]).
+    pub overlay_scale: f32,
     /// Points per rendered pixel.
     pub pixel_size: u32,
     /// The rendered image size `W x H` the overlays refer to.
@@ -360,6 +390,10 @@ impl Figure {
         if !(1..=32).contains(&o.pixel_size) {
             return Err(FigureError::PixelSize(o.pixel_size));
         }
+        let k = o.overlay_scale;
+        if !(OVERLAY_SCALE_RANGE.0..=OVERLAY_SCALE_RANGE.1).contains(&k) {
+            return Err(FigureError::OverlayScale(k));
+        }
         let (w, h) = scene.size();
         let settings = scene.settings();
         let mode = settings.mode;
@@ -371,11 +405,7 @@ impl Figure {
             u64::from(w) * u64::from(o.pixel_size),
             u64::from(h) * u64::from(o.pixel_size),
         );
-        let (m, gap, strip) = (
-            u64::from(FIGURE_MARGIN),
-            u64::from(SIDE_BY_SIDE_GAP),
-            overlay::TITLE_STRIP as u64,
-        );
+        let [m, gap, strip] = layout_points(k).map(u64::from);
         let total_w = 2 * m + u64::from(n) * view_w + u64::from(n - 1) * gap;
         let total_h = 2 * m + strip + view_h;
         let (px_w, px_h) = (total_w * u64::from(o.scale), total_h * u64::from(o.scale));
@@ -499,8 +529,8 @@ impl Figure {
             };
             let origin = [(m + i as u64 * (view_w + gap)) as u32, (m + strip) as u32];
             let clip = [
-                origin[0] as f32 - FIGURE_MARGIN as f32,
-                origin[1] as f32 - overlay::TITLE_STRIP - FIGURE_MARGIN as f32,
+                (u64::from(origin[0]) - m) as f32,
+                (u64::from(origin[1]) - strip - m) as f32,
                 (u64::from(origin[0]) + view_w + m) as f32,
                 (u64::from(origin[1]) + view_h + m) as f32,
             ];
@@ -508,13 +538,14 @@ impl Figure {
                 content,
                 origin,
                 raster,
-                overlay: overlay::build(&input),
+                overlay: overlay::build(&input).scaled(k),
                 clip,
             });
         }
         Ok(Figure {
             size: [total_w as u32, total_h as u32],
             scale: o.scale,
+            overlay_scale: k,
             pixel_size: o.pixel_size,
             canvas_size: [w, h],
             background: o.background,

@@ -177,6 +177,107 @@ pub struct Overlay {
     pub shapes: Vec<Shape>,
 }
 
+impl Overlay {
+    /// The overlay with every size in points (line widths, radii, text sizes, offsets, the
+    /// colour bar) multiplied by `k`; positions on the canvas stay.
+    pub fn scaled(&self, k: f32) -> Overlay {
+        let st = |s: Stroke| Stroke::new(s.width * k, s.color);
+        let shapes = self
+            .shapes
+            .iter()
+            .cloned()
+            .map(|shape| match shape {
+                Shape::Polygon {
+                    points,
+                    fill,
+                    stroke,
+                    dashed,
+                } => Shape::Polygon {
+                    points,
+                    fill,
+                    stroke: stroke.map(st),
+                    dashed,
+                },
+                Shape::Line {
+                    points,
+                    stroke,
+                    dashed,
+                } => Shape::Line {
+                    points,
+                    stroke: st(stroke),
+                    dashed,
+                },
+                Shape::Rect {
+                    min,
+                    max,
+                    fill,
+                    stroke,
+                } => Shape::Rect {
+                    min,
+                    max,
+                    fill,
+                    stroke: stroke.map(st),
+                },
+                Shape::Circle {
+                    centre,
+                    radius,
+                    fill,
+                    stroke,
+                } => Shape::Circle {
+                    centre,
+                    radius: radius * k,
+                    fill,
+                    stroke: stroke.map(st),
+                },
+                Shape::Text {
+                    at,
+                    offset,
+                    anchor,
+                    text,
+                    size,
+                    color,
+                    background,
+                } => Shape::Text {
+                    at,
+                    offset: offset.map(|v| v * k),
+                    anchor,
+                    text,
+                    size: size * k,
+                    color,
+                    background,
+                },
+                Shape::PixelGrid {
+                    width,
+                    height,
+                    line,
+                    dots,
+                } => Shape::PixelGrid {
+                    width,
+                    height,
+                    line: st(line),
+                    dots: dots.map(|(r, c)| (r * k, c)),
+                },
+                Shape::ColorBar {
+                    at,
+                    offset,
+                    size,
+                    colors,
+                    labels,
+                    title,
+                } => Shape::ColorBar {
+                    at,
+                    offset: offset.map(|v| v * k),
+                    size: size.map(|v| v * k),
+                    colors,
+                    labels,
+                    title,
+                },
+            })
+            .collect();
+        Overlay { shapes }
+    }
+}
+
 /// A vertex handle as the overlay shows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HandleMark {

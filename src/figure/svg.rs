@@ -25,6 +25,9 @@ const COLOR_BAR_BACK_MIN: [f32; 2] = [12.0, 40.0];
 const COLOR_BAR_BACK_MAX: [f32; 2] = [56.0, 12.0];
 /// Points: the colour bar's text size.
 const COLOR_BAR_TEXT: f32 = 16.0;
+/// Points: length of a tick of the colour bar, and the gap between the bar and its labels.
+const COLOR_BAR_TICK: f32 = 5.0;
+const COLOR_BAR_LABEL_GAP: f32 = 8.0;
 
 /// Which parts of the figure the document holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -100,7 +103,14 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
                 origin: [f64::from(v.origin[0]), f64::from(v.origin[1])],
                 scale: f64::from(figure.pixel_size),
             };
-            overlay(&mut s, &v.overlay, t, v.clip, &format!("image{i}"));
+            overlay(
+                &mut s,
+                &v.overlay,
+                t,
+                v.clip,
+                &format!("image{i}"),
+                figure.overlay_scale,
+            );
             s.push_str("</g>\n");
         }
     }
@@ -168,7 +178,8 @@ fn fill(c: Rgba) -> String {
     }
 }
 
-fn stroke(st: Option<Stroke>, dashed: bool) -> String {
+/// Stroke attributes; dashes are [`DASH`] overlay points long, times `k`.
+fn stroke(st: Option<Stroke>, dashed: bool, k: f32) -> String {
     let Some(st) = st else {
         return String::new();
     };
@@ -185,7 +196,12 @@ fn stroke(st: Option<Stroke>, dashed: bool) -> String {
         );
     }
     if dashed {
-        let _ = write!(out, r#" stroke-dasharray="{} {}""#, n(DASH.0), n(DASH.1));
+        let _ = write!(
+            out,
+            r#" stroke-dasharray="{} {}""#,
+            n(DASH.0 * k),
+            n(DASH.1 * k)
+        );
     }
     out
 }
@@ -228,14 +244,22 @@ fn rect(s: &mut String, b: Box2, rounding: f32, attrs: &str) {
 }
 
 /// A label: its background box (if any) and its text, in the box `b`.
-fn label(s: &mut String, b: Box2, text: &str, size: f32, color: Rgba, background: Option<Rgba>) {
+fn label(
+    s: &mut String,
+    b: Box2,
+    text: &str,
+    size: f32,
+    color: Rgba,
+    background: Option<Rgba>,
+    k: f32,
+) {
     let pad = if background.is_some() {
-        LABEL_PAD
+        LABEL_PAD.map(|v| v * k)
     } else {
         [0.0, 0.0]
     };
     if let Some(bg) = background {
-        rect(s, b, LABEL_ROUNDING, &fill(bg));
+        rect(s, b, LABEL_ROUNDING * k, &fill(bg));
     }
     let ([width, _], ascent) = text::measure(text, size);
     // textLength: a viewer without the Ubuntu font stretches or squeezes its fallback font
@@ -253,7 +277,9 @@ fn label(s: &mut String, b: Box2, text: &str, size: f32, color: Rgba, background
 }
 
 /// The overlay's shapes as SVG elements.
-fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_clip: &str) {
+/// The overlay's shapes (sizes already scaled) as SVG elements; `k` scales the fixed sizes
+/// of the drawing itself (label padding, dashes, the colour bar's frame and text).
+fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_clip: &str, k: f32) {
     // Lines and areas stay on the image (a clipped triangle's outline can reach far off it);
     // handles and labels may use the margin around it. Consecutive shapes on the image share
     // one clipped group, so the painting order is kept.
@@ -287,7 +313,7 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                     r#"<polygon points="{}" {}{}/>"#,
                     points(&p),
                     fill(*f),
-                    stroke(*st, *dashed)
+                    stroke(*st, *dashed, k)
                 );
             }
             Shape::Line {
@@ -300,7 +326,7 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                     s,
                     r#"<polyline points="{}" fill="none"{}/>"#,
                     points(&p),
-                    stroke(Some(*st), *dashed)
+                    stroke(Some(*st), *dashed, k)
                 );
             }
             Shape::Rect {
@@ -320,7 +346,7 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                         s,
                         [a[0] - e, a[1] - e, b[0] + e, b[1] + e],
                         0.0,
-                        &format!(r#"fill="none"{}"#, stroke(Some(*st), false)),
+                        &format!(r#"fill="none"{}"#, stroke(Some(*st), false, k)),
                     );
                 }
             }
@@ -338,7 +364,7 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                     n(c[1]),
                     n(*radius),
                     fill(*f),
-                    stroke(*st, false)
+                    stroke(*st, false, k)
                 );
             }
             Shape::Text {
@@ -351,9 +377,9 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                 background,
             } => {
                 let (text_size, _) = text::measure(txt, *size);
-                let outer = text::padded(text_size, background.is_some());
+                let outer = text::padded(text_size, background.is_some(), k);
                 let b = text::place_label(t.point(*at), *offset, *anchor, outer, clip);
-                label(s, b, txt, *size, *color, *background);
+                label(s, b, txt, *size, *color, *background, k);
             }
             Shape::PixelGrid {
                 width,
@@ -377,6 +403,7 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                     colors,
                     labels,
                     title,
+                    k,
                 );
             }
         }
@@ -409,7 +436,7 @@ fn grid(
     let _ = writeln!(
         s,
         r#"<path d="{d}" fill="none"{}/>"#,
-        stroke(Some(line), false).replace(r#" stroke-linejoin="round""#, "")
+        stroke(Some(line), false, 1.0).replace(r#" stroke-linejoin="round""#, "")
     );
     if let Some((r, c)) = dots {
         let mut d = String::new();
@@ -435,14 +462,21 @@ fn grid(
 
 /// The colour bar as the screen draws it: a rounded background, the gradient from the first
 /// colour at the bottom to the last at the top, a white frame, ticks with labels, a title.
-fn color_bar(s: &mut String, r: Box2, colors: &[Rgba], labels: &[(f32, String)], title: &str) {
+fn color_bar(
+    s: &mut String,
+    r: Box2,
+    colors: &[Rgba],
+    labels: &[(f32, String)],
+    title: &str,
+    k: f32,
+) {
     let back = [
-        r[0] - COLOR_BAR_BACK_MIN[0],
-        r[1] - COLOR_BAR_BACK_MIN[1],
-        r[2] + COLOR_BAR_BACK_MAX[0],
-        r[3] + COLOR_BAR_BACK_MAX[1],
+        r[0] - COLOR_BAR_BACK_MIN[0] * k,
+        r[1] - COLOR_BAR_BACK_MIN[1] * k,
+        r[2] + COLOR_BAR_BACK_MAX[0] * k,
+        r[3] + COLOR_BAR_BACK_MAX[1] * k,
     ];
-    rect(s, back, COLOR_BAR_ROUNDING, &fill(LABEL_BG));
+    rect(s, back, COLOR_BAR_ROUNDING * k, &fill(LABEL_BG));
     // One gradient through all the colours, evenly spaced from bottom to top (the screen
     // draws the same as one band per pair of neighbouring colours).
     let last = colors.len().saturating_sub(1).max(1);
@@ -462,12 +496,15 @@ fn color_bar(s: &mut String, r: Box2, colors: &[Rgba], labels: &[(f32, String)],
     }
     s.push_str("</linearGradient>\n");
     rect(s, r, 0.0, &format!(r#"fill="url(#{id})""#));
+    // A white frame of one point, outside the bar.
+    let e = k / 2.0;
     rect(
         s,
-        [r[0] - 0.5, r[1] - 0.5, r[2] + 0.5, r[3] + 0.5],
+        [r[0] - e, r[1] - e, r[2] + e, r[3] + e],
         0.0,
-        r##"fill="none" stroke="#ffffff" stroke-width="1""##,
+        &format!(r##"fill="none" stroke="#ffffff" stroke-width="{}""##, n(k)),
     );
+    let size = COLOR_BAR_TEXT * k;
     for (f, l) in labels {
         let y = r[3] - height * f;
         let _ = writeln!(
@@ -475,17 +512,20 @@ fn color_bar(s: &mut String, r: Box2, colors: &[Rgba], labels: &[(f32, String)],
             r#"<line x1="{}" y1="{}" x2="{}" y2="{}"{}/>"#,
             n(r[2]),
             n(y),
-            n(r[2] + 5.0),
+            n(r[2] + COLOR_BAR_TICK * k),
             n(y),
-            stroke(Some(Stroke::new(1.0, LABEL_TEXT)), false)
+            stroke(Some(Stroke::new(k, LABEL_TEXT)), false, k)
         );
-        let (size, _) = text::measure(l, COLOR_BAR_TEXT);
-        let b = Anchor::LeftCenter.box_at([r[2] + 8.0, y], size);
-        label(s, b, l, COLOR_BAR_TEXT, LABEL_TEXT, None);
+        let (extent, _) = text::measure(l, size);
+        let b = Anchor::LeftCenter.box_at([r[2] + COLOR_BAR_LABEL_GAP * k, y], extent);
+        label(s, b, l, size, LABEL_TEXT, None, k);
     }
-    let (size, _) = text::measure(title, COLOR_BAR_TEXT);
-    let b = Anchor::CenterBottom.box_at([(r[0] + r[2]) / 2.0, r[1] - 8.0], size);
-    label(s, b, title, COLOR_BAR_TEXT, LABEL_TEXT, None);
+    let (extent, _) = text::measure(title, size);
+    let b = Anchor::CenterBottom.box_at(
+        [(r[0] + r[2]) / 2.0, r[1] - COLOR_BAR_LABEL_GAP * k],
+        extent,
+    );
+    label(s, b, title, size, LABEL_TEXT, None, k);
 }
 
 #[cfg(test)]

@@ -176,13 +176,13 @@ pub fn push_inside(b: Box2, bounds: Box2) -> Box2 {
     [b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy]
 }
 
-/// The outer size of a label: the text's size plus [`LABEL_PAD`] on each side if it has a
-/// background.
-pub fn padded(text_size: [f32; 2], background: bool) -> [f32; 2] {
+/// The outer size of a label: the text's size plus [`LABEL_PAD`] (times `k`, the overlay
+/// scale) on each side if it has a background.
+pub fn padded(text_size: [f32; 2], background: bool, k: f32) -> [f32; 2] {
     if background {
         [
-            text_size[0] + 2.0 * LABEL_PAD[0],
-            text_size[1] + 2.0 * LABEL_PAD[1],
+            text_size[0] + 2.0 * LABEL_PAD[0] * k,
+            text_size[1] + 2.0 * LABEL_PAD[1] * k,
         ]
     } else {
         text_size
