@@ -601,6 +601,7 @@ pub fn canvas_ui(
         let input_overlay = OverlayInput {
             size,
             pixel_size: view_settings.pixel_size,
+            pixels_per_point: ppp,
             mode: match view.content {
                 ViewContent::Mode(m) => Some(m),
                 _ => None,

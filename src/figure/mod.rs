@@ -508,6 +508,7 @@ impl Figure {
             let input = OverlayInput {
                 size: [w, h],
                 pixel_size: o.pixel_size,
+                pixels_per_point: k,
                 mode: match content {
                     ViewContent::Mode(m) => Some(m),
                     _ => None,

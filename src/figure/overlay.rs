@@ -313,6 +313,8 @@ pub struct OverlayInput {
     pub size: [u32; 2],
     /// Display pixels per rendered pixel.
     pub pixel_size: u32,
+    /// Display pixels per point (sizes in points are this many display pixels).
+    pub pixels_per_point: f32,
     /// The mode this view shows (`None` for the difference view).
     pub mode: Option<Interpolation>,
     pub show_grid: bool,
@@ -423,7 +425,12 @@ pub fn build(input: &OverlayInput) -> Overlay {
         shapes.push(Shape::ColorBar {
             at: DVec2::new(wf, 0.0),
             offset: [-90.0, COLOR_BAR_TOP],
-            size: [26.0, color_bar_height(hf * f64::from(input.pixel_size))],
+            size: [
+                26.0,
+                color_bar_height(
+                    hf * f64::from(input.pixel_size) / f64::from(input.pixels_per_point.max(0.1)),
+                ),
+            ],
             colors,
             labels,
             title: "texels".to_string(),
@@ -641,6 +648,7 @@ mod tests {
         OverlayInput {
             size: [100, 80],
             pixel_size: 1,
+            pixels_per_point: 1.0,
             mode: Some(Interpolation::Perspective),
             show_grid: true,
             handles: vec![HandleMark {
