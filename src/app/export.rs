@@ -52,7 +52,6 @@ pub mod text {
     pub const COPIED: &str = "figure copied to the clipboard";
     pub const CLIPBOARD_FAILED: &str = "cannot copy to the clipboard";
     pub const SCREENSHOT_FAILED: &str = "screenshot failed";
-    pub const SCREENSHOT_WAITING: &str = "taking the screenshot…";
     pub const SCREENSHOT_TIMEOUT: &str = "no screenshot arrived in time";
     pub const FOLDER_DIALOG: &str = "Folder for figures";
     pub const FOLDER_DIALOG_FAILED: &str = "no folder dialog available: type the folder";
@@ -145,6 +144,8 @@ pub struct ExportPanel {
     commands: Vec<ExportCommand>,
     dialog: Option<(Receiver<Option<PathBuf>>, std::time::Instant)>,
     screenshot: Option<(PathBuf, ScreenshotSlot, std::time::Instant)>,
+    /// A window screenshot to take next frame, when the panel is not drawn.
+    screenshot_due: Option<PathBuf>,
     clipboard: Option<arboard::Clipboard>,
 }
 
@@ -183,6 +184,7 @@ impl ExportPanel {
     pub fn apply(&mut self, ctx: &egui::Context, app: &ExportContext<'_>) {
         self.poll_dialog();
         self.poll_screenshot();
+        self.take_due_screenshot(ctx);
         if !self.commands.is_empty() {
             // The panel shows the change next frame.
             ctx.request_repaint();
@@ -322,6 +324,8 @@ impl ExportPanel {
             .map_err(fail)
     }
 
+    /// Picks the screenshot's file; the shot itself is taken next frame, with this panel
+    /// hidden ([`ExportPanel::take_due_screenshot`]).
     fn screenshot(&mut self, ctx: &egui::Context) {
         let path = self.folder().and_then(|folder| {
             export::prepare_folder(&folder).map_err(|e| e.to_string())?;
@@ -329,12 +333,24 @@ impl ExportPanel {
                 export::fresh_stem(&folder, "window", &["png"]).map_err(|e| e.to_string())?;
             Ok(folder.join(format!("{stem}.png")))
         });
-        let path = match path {
-            Ok(p) => p,
-            Err(e) => {
-                self.outcome = Some(Outcome::failed(e));
-                return;
+        match path {
+            Ok(p) => {
+                self.screenshot_due = Some(p);
+                ctx.request_repaint();
             }
+            Err(e) => self.outcome = Some(Outcome::failed(e)),
+        }
+    }
+
+    /// Whether the panel is hidden for a window screenshot.
+    pub fn hidden_for_screenshot(&self) -> bool {
+        self.screenshot_due.is_some() || self.screenshot.is_some()
+    }
+
+    /// Requests the due screenshot of this frame (drawn without the panel).
+    fn take_due_screenshot(&mut self, ctx: &egui::Context) {
+        let Some(path) = self.screenshot_due.take() else {
+            return;
         };
         let slot: ScreenshotSlot = Arc::new(Mutex::new(None));
         let (report, target, repaint) = (slot.clone(), path.clone(), ctx.clone());
@@ -345,7 +361,6 @@ impl ExportPanel {
             }
             repaint.request_repaint();
         });
-        self.outcome = Some(Outcome::done(text::SCREENSHOT_WAITING));
         self.screenshot = Some((path, slot, std::time::Instant::now()));
     }
 
@@ -459,7 +474,7 @@ fn write_color_image(image: &egui::ColorImage, path: &Path) -> Result<(), String
 
 /// The Export window.
 pub fn export_ui(ctx: &egui::Context, panel: &mut ExportPanel) {
-    if !panel.open {
+    if !panel.open || panel.hidden_for_screenshot() {
         return;
     }
     let mut open = true;
