@@ -23,7 +23,9 @@ Examples:
   barylab render assets/scenes/default.json --mode affine --size 400x300 -o affine.png
   barylab render assets/scenes/clip-two-triangles.json --filter nearest --aov aov/ -o out.png
   barylab probe assets/scenes/default.json --pixel 400,420
-  barylab probe assets/scenes/default.json --pixel 400,420 --mode affine --format markdown > notes.md";
+  barylab probe assets/scenes/default.json --pixel 400,420 --mode affine --format markdown > notes.md
+  barylab figure assets/scenes/default.json --pixel 400,420 -o fig.svg
+  barylab figure assets/scenes/default.json --size 400x300 --compare side --scale 2 -o fig.png";
 
 /// barylab: see how a GPU interpolates across a triangle, pixel by pixel.
 #[derive(Parser, Debug)]
@@ -54,6 +56,10 @@ enum Command {
     /// derivation, the 4x4 system, uv, texel, depth and the final colour.
     #[command(after_help = EXAMPLES)]
     Probe(ProbeArgs),
+    /// Write the annotated figure the app shows (overlays, labels, marked pixel, comparison)
+    /// as PNG or SVG, through the same code as the app's Export.
+    #[command(after_help = EXAMPLES)]
+    Figure(FigureArgs),
     /// Time the rasterizers: every rasterizer x filter x mode x thread count, median ms per
     /// frame and Mpixel/s.
     #[command(
@@ -94,6 +100,106 @@ impl From<RasterizerArg> for raster::render::Rasterizer {
             RasterizerArg::Edge => raster::render::Rasterizer::EdgeFunction,
             RasterizerArg::Scanline => raster::render::Rasterizer::Scanline,
         }
+    }
+}
+
+#[derive(clap::Args, Debug)]
+struct FigureArgs {
+    #[command(flatten)]
+    input: SceneOptions,
+    /// Mark (pin) this pixel as X,Y: its marker, its triangle and the sub-triangles of its
+    /// weights.
+    #[arg(long, value_parser = parse_pixel, allow_hyphen_values = true)]
+    pixel: Option<(u32, u32)>,
+    /// Also mark this pixel as hovered (marker with crosshair), as X,Y.
+    #[arg(long, value_parser = parse_pixel, allow_hyphen_values = true)]
+    hover: Option<(u32, u32)>,
+    /// Compare the modes: one view (default), side by side, a wipe line, or the difference
+    /// heatmap.
+    #[arg(long, default_value = "single")]
+    compare: CompareArg,
+    /// Wipe line position as a fraction of the width (with --compare wipe).
+    #[arg(long, default_value_t = 0.5, value_parser = parse_fraction)]
+    wipe: f32,
+    /// PNG pixels per figure point: 1, 2 or 4 (the scene is rendered again at that
+    /// resolution when the pixel size is 1).
+    #[arg(long, default_value_t = 1, value_parser = parse_scale)]
+    scale: u32,
+    /// Figure points per rendered pixel, as the app's pixel size (the grid shows from 6, the
+    /// sample dots from 10).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=32))]
+    pixel_size: u32,
+    /// Background around the image (title strip, margins).
+    #[arg(long, default_value = "transparent")]
+    background: BackgroundArg,
+    /// Figure points per overlay point: labels, lines, handles and margins this much larger,
+    /// as in the app at that text size (the app's Export uses its screen's pixels per point).
+    #[arg(long, default_value_t = 1.0, value_parser = parse_overlay_scale)]
+    overlay_scale: f32,
+    /// Leave out the pixel grid.
+    #[arg(long)]
+    no_grid: bool,
+    /// Leave out the vertex handles and their w labels.
+    #[arg(long)]
+    no_handles: bool,
+    /// Leave out the sub-triangles of the marked pixel.
+    #[arg(long)]
+    no_sub_areas: bool,
+    /// Output file: .png or .svg.
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum CompareArg {
+    Single,
+    Side,
+    Wipe,
+    Diff,
+}
+
+impl From<CompareArg> for barylab::figure::Compare {
+    fn from(c: CompareArg) -> Self {
+        use barylab::figure::Compare;
+        match c {
+            CompareArg::Single => Compare::Single,
+            CompareArg::Side => Compare::SideBySide,
+            CompareArg::Wipe => Compare::Wipe,
+            CompareArg::Diff => Compare::Difference,
+        }
+    }
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum BackgroundArg {
+    Transparent,
+    White,
+}
+
+/// Parses a fraction in [0, 1].
+fn parse_fraction(s: &str) -> Result<f32, String> {
+    match s.trim().parse::<f32>() {
+        Ok(v) if (0.0..=1.0).contains(&v) => Ok(v),
+        _ => Err(format!("`{s}` is not a fraction from 0 to 1")),
+    }
+}
+
+/// Parses an overlay scale within [`barylab::figure::OVERLAY_SCALE_RANGE`].
+fn parse_overlay_scale(s: &str) -> Result<f32, String> {
+    let (lo, hi) = barylab::figure::OVERLAY_SCALE_RANGE;
+    match s.trim().parse::<f32>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!(
+            "overlay scale `{s}` is not a number from {lo} to {hi}"
+        )),
+    }
+}
+
+/// Parses a figure scale: 1, 2 or 4.
+fn parse_scale(s: &str) -> Result<u32, String> {
+    match s.trim().parse::<u32>() {
+        Ok(v) if barylab::figure::SCALES.contains(&v) => Ok(v),
+        _ => Err(format!("scale `{s}` is not 1, 2 or 4")),
     }
 }
 
@@ -305,6 +411,7 @@ pub fn main() -> ExitCode {
         Some(Command::Render(args)) => render(&args),
         Some(Command::Probe(args)) => probe(&args),
         Some(Command::Bench(args)) => bench(&args),
+        Some(Command::Figure(args)) => figure(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -461,5 +568,61 @@ fn probe(args: &ProbeArgs) -> Result<()> {
         "{}",
         barylab::probe::format::write(&trace, args.format.into())
     );
+    Ok(())
+}
+
+fn figure(args: &FigureArgs) -> Result<()> {
+    use barylab::figure::{Background, Figure, FigureOptions, png, svg};
+    let ext = args
+        .output
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let svg_out = match ext.as_deref() {
+        Some("svg") => true,
+        Some("png") => false,
+        _ => bail!(
+            "output {} must be a .png or .svg file",
+            args.output.display()
+        ),
+    };
+    let (mut scene, texture, settings) = prepare(&args.input)?;
+    // The figure draws the scene as it is: the options become the scene's own.
+    barylab::app::edit::set_options(
+        &mut scene,
+        barylab::app::edit::SceneOptions {
+            mode: settings.mode,
+            shading: settings.shading,
+            filter: settings.filter,
+            wireframe: settings.wireframe,
+        },
+    );
+    let options = FigureOptions {
+        compare: args.compare.into(),
+        pixel_size: args.pixel_size,
+        wipe: args.wipe,
+        show_grid: !args.no_grid,
+        show_handles: !args.no_handles,
+        show_sub_areas: !args.no_sub_areas,
+        pinned: args.pixel.map(|(x, y)| [x, y]),
+        hovered: args.hover.map(|(x, y)| [x, y]),
+        scale: args.scale,
+        background: match args.background {
+            BackgroundArg::Transparent => Background::Transparent,
+            BackgroundArg::White => Background::White,
+        },
+        overlay_scale: args.overlay_scale,
+    };
+    let fig = Figure::compose(&scene, &texture, &options)
+        .with_context(|| args.input.scene.display().to_string())?;
+    let bytes = if svg_out {
+        svg::to_svg(&fig)?.into_bytes()
+    } else {
+        png::to_png(&fig)?
+    };
+    std::fs::write(&args.output, bytes)
+        .with_context(|| format!("cannot write {}", args.output.display()))?;
+    let [w, h] = fig.pixel_dimensions();
+    println!("figure {w}x{h} -> {}", args.output.display());
     Ok(())
 }

@@ -6,11 +6,13 @@
 //! - [`probe`]: every number behind one pixel, and its derivation as text.
 //! - [`bench`]: timing the rasterizers (`barylab bench`, the app's benchmark panel).
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
+//! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
 //! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
 pub mod app;
 pub mod bench;
+pub mod figure;
 pub mod model;
 pub mod probe;
 pub mod raster;

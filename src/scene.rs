@@ -445,6 +445,30 @@ impl Scene {
         }
     }
 
+    /// The scene with its texture and model paths made absolute against `base_dir` (the
+    /// folder they are relative to), so a copy saved anywhere loads the same files. Built-in
+    /// texture names stay as they are.
+    pub fn with_absolute_paths(&self, base_dir: &Path) -> Scene {
+        let absolute = |name: &str| {
+            let p = resolve(base_dir, name);
+            std::path::absolute(&p).unwrap_or(p).display().to_string()
+        };
+        let texture = |name: &str| match BuiltinTexture::from_name(name) {
+            Some(_) => name.to_string(),
+            None => absolute(name),
+        };
+        let mut scene = self.clone();
+        match &mut scene {
+            Scene::World(s) => s.texture = texture(&s.texture),
+            Scene::Clip(s) => s.texture = texture(&s.texture),
+            Scene::Model(s) => {
+                s.model = absolute(&s.model);
+                s.texture = s.texture.as_deref().map(texture);
+            }
+        }
+        scene
+    }
+
     /// Things the user should be told about the scene that did not stop it loading.
     pub fn notes(&self) -> Vec<String> {
         match self {

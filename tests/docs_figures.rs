@@ -1,5 +1,6 @@
 //! The figures in docs/ are what the CLI renders today: re-render each one listed in
-//! docs/figures/list.txt with the real binary and compare pixels with the committed file.
+//! docs/figures/list.txt with the real binary (`barylab render`, or `barylab figure` when the
+//! arguments start with `figure`) and compare pixels with the committed file.
 
 use std::path::Path;
 use std::process::Command;
@@ -14,12 +15,17 @@ fn committed_figures_match_the_cli() {
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        let mut words = line.split_whitespace();
+        let mut words = line.split_whitespace().peekable();
         let name = words.next().expect("figure name");
         let out = dir.path().join(name);
+        let command = if words.next_if_eq(&"figure").is_some() {
+            "figure"
+        } else {
+            "render"
+        };
         let status = Command::new(env!("CARGO_BIN_EXE_barylab"))
             .current_dir(root)
-            .arg("render")
+            .arg(command)
             .args(words)
             .arg("-o")
             .arg(&out)

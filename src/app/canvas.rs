@@ -27,7 +27,7 @@ mod text {
 }
 
 /// Points between the two views of the side-by-side comparison.
-const SIDE_BY_SIDE_GAP: f32 = 10.0;
+const SIDE_BY_SIDE_GAP: f32 = crate::figure::SIDE_BY_SIDE_GAP as f32;
 /// Points: extra grab radius around a handle.
 const HANDLE_GRAB_SLACK: f32 = 6.0;
 /// Points: half-width of the wipe line's grab area.
@@ -41,13 +41,7 @@ const ORBIT_DEG_PER_POINT: f64 = 0.4;
 /// Model scenes: the camera distance is multiplied by e^(-this) per point scrolled up.
 const ZOOM_PER_SCROLL_POINT: f64 = 0.004;
 
-/// What one view of the canvas shows.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ViewContent {
-    Mode(Interpolation),
-    Wipe,
-    Difference,
-}
+pub use crate::figure::ViewContent;
 
 /// One view on screen.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -225,15 +219,7 @@ pub fn layout(
     (views, size)
 }
 
-/// The modes a comparison needs rendered.
-fn modes_for(compare: Compare, scene_mode: Interpolation) -> Vec<Interpolation> {
-    match compare {
-        Compare::Single | Compare::Difference => vec![scene_mode],
-        Compare::SideBySide | Compare::Wipe => {
-            vec![Interpolation::Affine, Interpolation::Perspective]
-        }
-    }
-}
+use crate::figure::modes_for;
 
 impl CanvasState {
     /// Renders if anything the image depends on changed. Returns whether it rendered.
@@ -343,7 +329,7 @@ impl CanvasState {
         let Some(out) = &self.output else {
             return;
         };
-        let wipe_col = (wipe * out.size[0] as f32).round() as u32;
+        let wipe_col = crate::figure::wipe_column(wipe, out.size[0]);
         let tag = (out.generation, compare, wipe_col);
         if self.uploaded == Some(tag) && self.textures.len() == self.views.len() {
             return;
@@ -634,6 +620,7 @@ pub fn canvas_ui(
         let input_overlay = OverlayInput {
             size,
             pixel_size: view_settings.pixel_size,
+            pixels_per_point: ppp,
             mode: match view.content {
                 ViewContent::Mode(m) => Some(m),
                 _ => None,
@@ -667,19 +654,6 @@ pub fn canvas_ui(
             view.transform,
             &overlay::build(&input_overlay),
         );
-        if view_settings.show_handles
-            && let Some(note) = overlay::behind_camera_note(&handles)
-        {
-            paint::label(
-                &painter.with_clip_rect(clip),
-                view.rect.left_bottom() + egui::vec2(10.0, -10.0),
-                egui::Align2::LEFT_BOTTOM,
-                &note,
-                overlay::TEXT_LABEL,
-                overlay::NEGATIVE,
-                Some(overlay::LABEL_BG),
-            );
-        }
     }
 }
 

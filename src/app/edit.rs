@@ -4,54 +4,17 @@
 use glam::{DVec2, DVec3, DVec4};
 
 use crate::raster::camera::{Camera, Projection};
-use crate::raster::project::{Viewport, ndc_from_clip, window_from_ndc};
+use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
-/// Smallest clip w at which a vertex is drawn as a handle: at or behind the camera plane a
-/// vertex has no position on screen.
-pub const MIN_HANDLE_W: f64 = 1e-6;
+pub use crate::figure::MIN_HANDLE_W;
 
 /// Range a single push may scale a vertex's distance by, so one scroll event cannot send a
 /// vertex to infinity or onto the camera.
 pub const PUSH_FACTOR_RANGE: (f64, f64) = (0.5, 2.0);
 
-/// Where a mesh vertex lands on screen.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct VertexOnScreen {
-    /// Clip-space position.
-    pub clip: DVec4,
-    /// Window position in pixels (image coordinates, y down), unsnapped; `None` when the vertex
-    /// is at or behind the camera (w <= [`MIN_HANDLE_W`]).
-    pub window: Option<DVec2>,
-}
-
-impl VertexOnScreen {
-    /// The vertex's clip w (its view-space distance for a perspective camera).
-    pub fn w(&self) -> f64 {
-        self.clip.w
-    }
-}
-
-/// The mesh vertices' clip positions and window positions for a viewport.
-pub fn vertices_on_screen(scene: &Scene, viewport: Viewport) -> Vec<VertexOnScreen> {
-    if let Scene::Model(_) = scene {
-        // A model has too many vertices for handles; its vertices are not edited here.
-        return Vec::new();
-    }
-    let mut sized = scene.clone();
-    sized.set_size(viewport.width, viewport.height);
-    sized
-        .to_mesh()
-        .vertices
-        .iter()
-        .map(|v| VertexOnScreen {
-            clip: v.clip,
-            window: (v.clip.w > MIN_HANDLE_W && v.clip.is_finite())
-                .then(|| window_from_ndc(ndc_from_clip(v.clip), viewport).truncate()),
-        })
-        .collect()
-}
+pub use crate::figure::{VertexOnScreen, vertices_on_screen};
 
 /// Why an edit could not be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -403,6 +366,7 @@ pub const FOV_RANGE_DEG: (f64, f64) = (5.0, 150.0);
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::raster::project::{ndc_from_clip, window_from_ndc};
 
     fn vp() -> Viewport {
         Viewport {

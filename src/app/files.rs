@@ -56,7 +56,7 @@ pub const MAX_RECENT: usize = 10;
 
 /// If the native dialog returns nothing sooner than this, it most likely could not open (no
 /// portal, no zenity); nobody picks or cancels that fast, so the typed-path window is offered.
-const DIALOG_FAILED_WITHIN: Duration = Duration::from_millis(700);
+pub const DIALOG_FAILED_WITHIN: Duration = Duration::from_millis(700);
 
 /// What opening a file changes.
 #[derive(Clone, Debug)]

@@ -49,6 +49,10 @@ pub mod text {
         ("Esc", "close this help, else unpin"),
         ("Ctrl + R", "reset the scene"),
         ("Ctrl + O", "open a scene, model or image"),
+        (
+            "Ctrl + S",
+            "export the figure (opens the Export panel; again: writes the files)",
+        ),
         ("Home", "reset the view of a model"),
         ("Ctrl + / Ctrl -", "larger / smaller interface"),
         ("F1", "this help"),

@@ -2,7 +2,8 @@
 //! derivation.
 //!
 //! One panel per file, each with a `*_ui` function and its strings in one place: [`canvas`],
-//! [`controls`], [`inspector`], [`status`], [`help`], [`bench_panel`]. Panels read the [`state::AppState`] and
+//! [`controls`], [`inspector`], [`status`], [`help`], [`bench_panel`],
+//! [`export`]. Panels read the [`state::AppState`] and
 //! push [`state::Command`]s, applied once per frame. The overlays are described as plain data
 //! in canvas coordinates ([`overlay`]) and painted by [`paint`]. The scene edits ([`edit`]),
 //! presets ([`presets`]) and the difference heatmap ([`heatmap`]) do not depend on egui.
@@ -11,16 +12,18 @@ pub mod bench_panel;
 pub mod canvas;
 pub mod controls;
 pub mod edit;
+pub mod export;
 pub mod files;
-pub mod heatmap;
 pub mod help;
 pub mod inspector;
-pub mod overlay;
 pub mod paint;
 pub mod pixel;
 pub mod presets;
 pub mod state;
 pub mod status;
+
+/// The overlay description and the heatmap live in [`crate::figure`] (no egui there).
+pub use crate::figure::{heatmap, overlay};
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
@@ -156,6 +159,7 @@ pub struct BaryApp {
     /// Files to open at the start of the next frame (menu, typed path).
     to_open: Vec<PathBuf>,
     bench: bench_panel::BenchPanel,
+    export: export::ExportPanel,
 }
 
 /// Text sizes in points, large enough for a projector at zoom 1.
@@ -197,11 +201,13 @@ impl BaryApp {
         let mut message = None;
         let mut state = AppState::default();
         let mut recent = files::RecentFiles::default();
+        let mut export_settings = export::ExportSettings::default();
         if options.persist
             && let Some(saved) =
                 storage.and_then(|s| eframe::get_value::<SavedState>(s, STORAGE_KEY))
         {
             recent = saved.recent.clone();
+            export_settings = saved.export.clone();
             let (restored, error) = AppState::from_saved(saved);
             state = restored;
             if let Some(e) = error {
@@ -242,6 +248,7 @@ impl BaryApp {
             banner: None,
             to_open: Vec::new(),
             bench: bench_panel::BenchPanel::default(),
+            export: export::ExportPanel::new(export_settings),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
@@ -293,6 +300,16 @@ impl BaryApp {
         for p in std::mem::take(&mut self.to_open) {
             self.open_file(&p);
         }
+    }
+
+    /// The Export panel (settings, last outcome).
+    pub fn export_panel(&self) -> &export::ExportPanel {
+        &self.export
+    }
+
+    /// Queues an Export panel command, as its widgets do.
+    pub fn push_export(&mut self, command: export::ExportCommand) {
+        self.export.push(command);
     }
 
     /// The current state (scene and view).
@@ -349,6 +366,7 @@ impl BaryApp {
         let mut cmds = Vec::new();
         let mut help = false;
         let mut open = false;
+        let mut export = false;
         ctx.input_mut(|i| {
             let mut key = |k| i.consume_key(none, k);
             if key(Key::P) {
@@ -414,7 +432,18 @@ impl BaryApp {
             if i.consume_key(Modifiers::COMMAND, Key::O) {
                 open = true;
             }
+            if i.consume_key(Modifiers::COMMAND, Key::S) {
+                export = true;
+            }
         });
+        if export {
+            // The first Ctrl+S opens the Export window, the next one exports.
+            self.export.push(if self.export.open {
+                export::ExportCommand::Export
+            } else {
+                export::ExportCommand::Open
+            });
+        }
         if help {
             self.help_open = !self.help_open;
         }
@@ -524,6 +553,7 @@ impl BaryApp {
             egui::Panel::top("banner").show(ui, |ui| files::banner_ui(ui, &mut self.banner));
         }
         files::path_window_ui(&ctx, &mut self.picker, &mut self.to_open);
+        export::export_ui(&ctx, &mut self.export);
         egui::Panel::bottom("status").show(ui, |ui| {
             status::status_ui(
                 ui,
@@ -598,6 +628,26 @@ impl BaryApp {
             // The inspector and overlay drew last frame's pixel; draw again with this one.
             ctx.request_repaint();
         }
+        let outcome_before = self.export.outcome.clone();
+        self.export.apply(
+            &ctx,
+            &export::ExportContext {
+                state: &self.state,
+                texture: &texture,
+                size: self.canvas.output.as_ref().map(|o| o.size),
+                hovered: self.canvas.hover,
+                pixels_per_point: ctx.pixels_per_point(),
+            },
+        );
+        if self.export.outcome != outcome_before
+            && let Some(o) = &self.export.outcome
+        {
+            self.message = Some(Message {
+                text: o.summary.clone(),
+                error: o.error,
+            });
+            ctx.request_repaint();
+        }
         self.apply_commands(&ctx);
         self.timing.ui_ms = start.elapsed().as_secs_f64() * 1e3;
         self.screenshot_step(&ctx);
@@ -625,6 +675,17 @@ impl BaryApp {
             {
                 self.commands
                     .push(Command::SetShowInspector(!view.show_inspector));
+            }
+            if ui
+                .selectable_label(self.export.open, export::text::BUTTON)
+                .on_hover_text(export::text::BUTTON_TIP)
+                .clicked()
+            {
+                self.export.push(if self.export.open {
+                    export::ExportCommand::Close
+                } else {
+                    export::ExportCommand::Open
+                });
             }
             if ui
                 .selectable_label(self.help_open, text::HELP)
@@ -713,6 +774,7 @@ impl eframe::App for BaryApp {
         if self.persist {
             let mut saved = self.state.to_saved();
             saved.recent = self.recent.clone();
+            saved.export = self.export.settings.clone();
             eframe::set_value(storage, STORAGE_KEY, &saved);
         }
     }

@@ -4,7 +4,7 @@ use egui::epaint::{Mesh, PathStroke};
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape as EShape, Stroke as EStroke, StrokeKind};
 use glam::DVec2;
 
-use super::overlay::{Anchor, Overlay, Rgba, Shape, Stroke};
+use super::overlay::{Overlay, Rgba, Shape, Stroke};
 
 /// Maps canvas coordinates (rendered pixels) to screen points.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,24 +39,16 @@ fn stroke(s: Stroke) -> EStroke {
     EStroke::new(s.width, color(s.color))
 }
 
-fn align(a: Anchor) -> Align2 {
-    match a {
-        Anchor::LeftTop => Align2::LEFT_TOP,
-        Anchor::LeftBottom => Align2::LEFT_BOTTOM,
-        Anchor::RightBottom => Align2::RIGHT_BOTTOM,
-        Anchor::LeftCenter => Align2::LEFT_CENTER,
-        Anchor::CenterTop => Align2::CENTER_TOP,
-        Anchor::CenterBottom => Align2::CENTER_BOTTOM,
-        Anchor::Center => Align2::CENTER_CENTER,
-        Anchor::RightTop => Align2::RIGHT_TOP,
-        Anchor::RightCenter => Align2::RIGHT_CENTER,
-    }
+use crate::figure::svg::DASH;
+use crate::figure::text::{self as figure_text, LABEL_PAD, LABEL_ROUNDING};
+
+fn to_rect(b: figure_text::Box2) -> Rect {
+    Rect::from_min_max(Pos2::new(b[0], b[1]), Pos2::new(b[2], b[3]))
 }
 
-/// Dash and gap lengths of dashed lines, in points.
-const DASH: (f32, f32) = (6.0, 4.0);
-/// Padding around label text, in points.
-const LABEL_PAD: egui::Vec2 = egui::vec2(6.0, 3.0);
+fn to_box(r: Rect) -> figure_text::Box2 {
+    [r.left(), r.top(), r.right(), r.bottom()]
+}
 
 /// Paints the overlay, clipped to `clip`.
 pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &Overlay) {
@@ -141,39 +133,24 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 color: c,
                 background,
             } => {
-                let base = t.to_screen(*at);
-                let pos = base + egui::vec2(offset[0], offset[1]);
-                let mut anchor = align(*anchor);
-                let mut pos = pos;
-                // A label that would stick out on one side goes to the other side of its
-                // point (mirrored), before it is pushed inside.
+                // Placed as the figure export places it (flipped to the other side of its
+                // point if it sticks out, then pushed inside), measured with egui's galley.
                 let galley =
                     painter.layout_no_wrap(text.clone(), FontId::proportional(*size), color(*c));
-                let pad = if background.is_some() {
-                    LABEL_PAD
-                } else {
-                    egui::Vec2::ZERO
-                };
-                let outer = anchor.anchor_size(pos, galley.size() + 2.0 * pad);
-                let size_box = galley.size() + 2.0 * pad;
-                let sticks_x = |r: Rect| r.left() < clip.left() || r.right() > clip.right();
-                let sticks_y = |r: Rect| r.top() < clip.top() || r.bottom() > clip.bottom();
-                if sticks_x(outer) {
-                    let (a, p) = (
-                        anchor.flipped_x(),
-                        base + egui::vec2(-offset[0], pos.y - base.y),
-                    );
-                    if !sticks_x(a.anchor_size(p, size_box)) {
-                        (anchor, pos) = (a, p);
-                    }
-                }
-                if sticks_y(anchor.anchor_size(pos, size_box)) {
-                    let (a, p) = (anchor.flipped_y(), Pos2::new(pos.x, base.y - offset[1]));
-                    if !sticks_y(a.anchor_size(p, size_box)) {
-                        (anchor, pos) = (a, p);
-                    }
-                }
-                label_inside(&painter, clip, pos, anchor, text, *size, *c, *background);
+                let outer = figure_text::padded(
+                    [galley.size().x, galley.size().y],
+                    background.is_some(),
+                    1.0,
+                );
+                let base = t.to_screen(*at);
+                let b = figure_text::place_label(
+                    [base.x, base.y],
+                    *offset,
+                    *anchor,
+                    outer,
+                    to_box(clip),
+                );
+                draw_label(&painter, to_rect(b), galley, *c, *background);
             }
             Shape::PixelGrid {
                 width,
@@ -197,58 +174,23 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
     }
 }
 
-/// Text with an optional rounded background box; returns the box.
-pub fn label(
+/// A laid-out text in its box `outer` (which includes the padding when it has a background).
+fn draw_label(
     painter: &egui::Painter,
-    pos: Pos2,
-    anchor: Align2,
-    text: &str,
-    size: f32,
+    outer: Rect,
+    galley: std::sync::Arc<egui::Galley>,
     c: Rgba,
     background: Option<Rgba>,
-) -> Rect {
-    label_inside(
-        painter,
-        Rect::EVERYTHING,
-        pos,
-        anchor,
-        text,
-        size,
-        c,
-        background,
-    )
-}
-
-/// [`label`], moved as little as needed to lie inside `bounds` (if it fits).
-#[allow(clippy::too_many_arguments)]
-pub fn label_inside(
-    painter: &egui::Painter,
-    bounds: Rect,
-    pos: Pos2,
-    anchor: Align2,
-    text: &str,
-    size: f32,
-    c: Rgba,
-    background: Option<Rgba>,
-) -> Rect {
-    let galley = painter.layout_no_wrap(text.to_string(), FontId::proportional(size), color(c));
+) {
     let pad = if background.is_some() {
-        LABEL_PAD
+        egui::vec2(LABEL_PAD[0], LABEL_PAD[1])
     } else {
         egui::Vec2::ZERO
     };
-    let mut outer = anchor.anchor_size(pos, galley.size() + 2.0 * pad);
-    let inner = bounds.shrink(2.0);
-    if inner.is_finite() && outer.width() <= inner.width() && outer.height() <= inner.height() {
-        let dx = (inner.left() - outer.left()).max(0.0) + (inner.right() - outer.right()).min(0.0);
-        let dy = (inner.top() - outer.top()).max(0.0) + (inner.bottom() - outer.bottom()).min(0.0);
-        outer = outer.translate(egui::vec2(dx, dy));
-    }
     if let Some(bg) = background {
-        painter.rect_filled(outer, 4.0, color(bg));
+        painter.rect_filled(outer, LABEL_ROUNDING, color(bg));
     }
     painter.galley(outer.min + pad, galley, color(c));
-    outer
 }
 
 fn signed_area(p: &[Pos2]) -> f32 {

@@ -2,8 +2,6 @@
 //! stages that drew the pixel), its worked-example document, and the triangle the overlay
 //! marks. Nothing here re-does the math.
 
-use glam::DVec2;
-
 use super::canvas::CanvasOutput;
 use super::overlay::{PixelMark, TriangleMark};
 use crate::probe::format::{self, Document};
@@ -56,21 +54,9 @@ impl PixelReport {
         self.pixel == pixel && self.mode == mode && self.generation == output.generation
     }
 
-    /// The triangle whose weights the trace shows (the one that wrote the pixel, or the nearest
-    /// one for an uncovered pixel), as rasterized: snapped window positions, mesh vertex of
-    /// each corner (`None` for a point the clipper made) and the screen weights.
+    /// The triangle whose weights the trace shows ([`crate::figure::triangle_mark`]).
     pub fn triangle(&self) -> Option<TriangleMark> {
-        let d = self.trace.detail.as_ref()?;
-        let v = &d.raster.vertices;
-        Some(TriangleMark {
-            vertices: [0, 1, 2].map(|k| DVec2::from(v[k].window)),
-            mesh_indices: [0, 1, 2].map(|k| {
-                v[k].source_vertex
-                    .and_then(|s| d.vertices.get(s))
-                    .map(|vt| vt.index as usize)
-            }),
-            weights: d.screen.rasterizer,
-        })
+        crate::figure::triangle_mark(&self.trace)
     }
 
     pub fn mark(&self) -> PixelMark {

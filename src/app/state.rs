@@ -12,29 +12,7 @@ use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
-/// How the canvas compares the two interpolation modes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Compare {
-    /// One view in the scene's mode.
-    #[default]
-    Single,
-    /// Affine on the left, perspective-correct on the right, same view.
-    SideBySide,
-    /// One view split by a draggable line: affine left of it, perspective-correct right.
-    Wipe,
-    /// |uv affine - uv perspective| in texels as a heatmap.
-    Difference,
-}
-
-impl Compare {
-    pub const ALL: [Compare; 4] = [
-        Compare::Single,
-        Compare::SideBySide,
-        Compare::Wipe,
-        Compare::Difference,
-    ];
-}
+pub use crate::figure::Compare;
 
 /// Smallest and largest pixel size (display pixels per rendered pixel).
 pub const PIXEL_SIZE_RANGE: (u32, u32) = (1, 32);
@@ -91,6 +69,8 @@ pub struct SavedState {
     pub view: ViewSettings,
     /// Recently opened files, newest first (kept by the app beside the state).
     pub recent: super::files::RecentFiles,
+    /// The Export panel's folder, scale, background and file choice.
+    pub export: super::export::ExportSettings,
 }
 
 /// Key under which eframe stores [`SavedState`].
@@ -121,6 +101,7 @@ impl AppState {
             scene_dir: self.scene_dir.clone(),
             view: self.view.clone(),
             recent: Default::default(),
+            export: Default::default(),
         }
     }
 

@@ -6,7 +6,7 @@ use crate::raster::Framebuffer;
 /// One pixel's difference in texels: `|((u_a - u_p) W, (v_a - v_p) H)|` for a W x H texture.
 ///
 /// ```
-/// use barylab::app::heatmap::texel_difference;
+/// use barylab::figure::heatmap::texel_difference;
 /// // 0.03 of a 100-texel-wide texture across, 0.04 of a 100-texel-high one down: 5 texels.
 /// let d = texel_difference([0.53, 0.54], [0.5, 0.5], (100, 100));
 /// assert!((d - 5.0).abs() < 1e-4);
@@ -46,7 +46,7 @@ pub fn heat_color(d: f32, scale_max: f32) -> [u8; 4] {
 /// least 0.01), so the scale's top is at most a third above the largest value.
 ///
 /// ```
-/// use barylab::app::heatmap::nice_ceiling;
+/// use barylab::figure::heatmap::nice_ceiling;
 /// assert_eq!(nice_ceiling(0.0), 0.01);
 /// assert_eq!(nice_ceiling(3.2), 4.0);
 /// assert_eq!(nice_ceiling(20.0), 20.0);

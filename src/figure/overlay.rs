@@ -1,5 +1,6 @@
 //! What is drawn over the rendered image, as plain data: shapes and text in canvas
-//! coordinates. The canvas paints it with egui; an export can turn the same list into SVG.
+//! coordinates. The app's canvas paints it with egui; the figure export writes the same list
+//! as SVG (and rasterizes that SVG for PNG).
 //!
 //! Coordinates: canvas coordinates are the rasterizer's window coordinates of the rendered
 //! image, in its pixels (x right, y down, pixel (c, r) covers [c, c+1] x [r, r+1], its sample at
@@ -176,6 +177,107 @@ pub struct Overlay {
     pub shapes: Vec<Shape>,
 }
 
+impl Overlay {
+    /// The overlay with every size in points (line widths, radii, text sizes, offsets, the
+    /// colour bar) multiplied by `k`; positions on the canvas stay.
+    pub fn scaled(&self, k: f32) -> Overlay {
+        let st = |s: Stroke| Stroke::new(s.width * k, s.color);
+        let shapes = self
+            .shapes
+            .iter()
+            .cloned()
+            .map(|shape| match shape {
+                Shape::Polygon {
+                    points,
+                    fill,
+                    stroke,
+                    dashed,
+                } => Shape::Polygon {
+                    points,
+                    fill,
+                    stroke: stroke.map(st),
+                    dashed,
+                },
+                Shape::Line {
+                    points,
+                    stroke,
+                    dashed,
+                } => Shape::Line {
+                    points,
+                    stroke: st(stroke),
+                    dashed,
+                },
+                Shape::Rect {
+                    min,
+                    max,
+                    fill,
+                    stroke,
+                } => Shape::Rect {
+                    min,
+                    max,
+                    fill,
+                    stroke: stroke.map(st),
+                },
+                Shape::Circle {
+                    centre,
+                    radius,
+                    fill,
+                    stroke,
+                } => Shape::Circle {
+                    centre,
+                    radius: radius * k,
+                    fill,
+                    stroke: stroke.map(st),
+                },
+                Shape::Text {
+                    at,
+                    offset,
+                    anchor,
+                    text,
+                    size,
+                    color,
+                    background,
+                } => Shape::Text {
+                    at,
+                    offset: offset.map(|v| v * k),
+                    anchor,
+                    text,
+                    size: size * k,
+                    color,
+                    background,
+                },
+                Shape::PixelGrid {
+                    width,
+                    height,
+                    line,
+                    dots,
+                } => Shape::PixelGrid {
+                    width,
+                    height,
+                    line: st(line),
+                    dots: dots.map(|(r, c)| (r * k, c)),
+                },
+                Shape::ColorBar {
+                    at,
+                    offset,
+                    size,
+                    colors,
+                    labels,
+                    title,
+                } => Shape::ColorBar {
+                    at,
+                    offset: offset.map(|v| v * k),
+                    size: size.map(|v| v * k),
+                    colors,
+                    labels,
+                    title,
+                },
+            })
+            .collect();
+        Overlay { shapes }
+    }
+}
+
 /// A vertex handle as the overlay shows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HandleMark {
@@ -211,6 +313,8 @@ pub struct OverlayInput {
     pub size: [u32; 2],
     /// Display pixels per rendered pixel.
     pub pixel_size: u32,
+    /// Display pixels per point (sizes in points are this many display pixels).
+    pub pixels_per_point: f32,
     /// The mode this view shows (`None` for the difference view).
     pub mode: Option<Interpolation>,
     pub show_grid: bool,
@@ -320,8 +424,13 @@ pub fn build(input: &OverlayInput) -> Overlay {
             .collect();
         shapes.push(Shape::ColorBar {
             at: DVec2::new(wf, 0.0),
-            offset: [-90.0, 60.0],
-            size: [26.0, 260.0],
+            offset: [-90.0, COLOR_BAR_TOP],
+            size: [
+                26.0,
+                color_bar_height(
+                    hf * f64::from(input.pixel_size) / f64::from(input.pixels_per_point.max(0.1)),
+                ),
+            ],
             colors,
             labels,
             title: "texels".to_string(),
@@ -349,7 +458,31 @@ pub fn build(input: &OverlayInput) -> Overlay {
     for handle in &input.handles {
         handle_shapes(&mut shapes, handle, centre);
     }
+    if let Some(note) = behind_camera_note(&input.handles) {
+        shapes.push(Shape::Text {
+            at: DVec2::new(0.0, hf),
+            offset: [10.0, -10.0],
+            anchor: Anchor::LeftBottom,
+            text: note,
+            size: TEXT_LABEL,
+            color: NEGATIVE,
+            background: Some(LABEL_BG),
+        });
+    }
     Overlay { shapes }
+}
+
+/// Points: the colour bar's top lies this far below the image's top.
+const COLOR_BAR_TOP: f32 = 60.0;
+/// Points: the colour bar's largest height, and the room kept below it (its background and
+/// a margin).
+const COLOR_BAR_HEIGHT: f32 = 260.0;
+const COLOR_BAR_BELOW: f32 = 40.0;
+
+/// The colour bar's height in points for an image `view_height` points high: at most
+/// [`COLOR_BAR_HEIGHT`], less on a small image so it stays inside (at least 60).
+fn color_bar_height(view_height: f64) -> f32 {
+    (view_height as f32 - COLOR_BAR_TOP - COLOR_BAR_BELOW).clamp(60.0, COLOR_BAR_HEIGHT)
 }
 
 fn format_scale(v: f32) -> String {
@@ -515,6 +648,7 @@ mod tests {
         OverlayInput {
             size: [100, 80],
             pixel_size: 1,
+            pixels_per_point: 1.0,
             mode: Some(Interpolation::Perspective),
             show_grid: true,
             handles: vec![HandleMark {
@@ -549,6 +683,38 @@ mod tests {
             !o.shapes
                 .iter()
                 .any(|s| matches!(s, Shape::PixelGrid { .. }))
+        );
+    }
+
+    #[test]
+    fn a_vertex_behind_the_camera_has_no_handle_but_a_note_in_the_corner() {
+        let mut i = input();
+        i.handles.push(HandleMark {
+            index: 1,
+            window: None,
+            w: -1.0,
+            active: false,
+        });
+        let o = build(&i);
+        let circles = o
+            .shapes
+            .iter()
+            .filter(|s| matches!(s, Shape::Circle { .. }))
+            .count();
+        assert_eq!(circles, 1, "only A has a handle");
+        let note = o.shapes.iter().find_map(|s| match s {
+            Shape::Text {
+                at, text, color, ..
+            } if text.starts_with("behind") => Some((*at, text.clone(), *color)),
+            _ => None,
+        });
+        assert_eq!(
+            note,
+            Some((
+                DVec2::new(0.0, 80.0),
+                "behind the camera: B (w = -1.00)".to_string(),
+                NEGATIVE
+            ))
         );
     }
 

@@ -1,0 +1,144 @@
+//! Writing a figure's files into a folder: the PNG, the SVG, the marked pixel's derivation as
+//! Markdown and LaTeX, and the scene file that reproduces the figure. Names are fresh
+//! (`figure-001.png`, `figure-002.png`, ...): nothing is ever overwritten.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use super::{Figure, FigureError, png, svg};
+use crate::probe::format::{self, Format};
+use crate::scene::Scene;
+
+/// Which files an export writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct ExportSelection {
+    pub png: bool,
+    pub svg: bool,
+    /// The pinned (else the hovered) pixel's derivation, as `.md` and `.tex`.
+    pub derivation: bool,
+    /// The scene as JSON (`.json`), sized as rendered, texture and model paths absolute.
+    pub scene: bool,
+}
+
+impl Default for ExportSelection {
+    fn default() -> Self {
+        Self {
+            png: true,
+            svg: true,
+            derivation: true,
+            scene: true,
+        }
+    }
+}
+
+/// Why an export failed. Nothing of the scene is changed by a failed export.
+#[derive(Debug, thiserror::Error)]
+pub enum ExportError {
+    #[error("cannot use folder {path}: {cause}")]
+    Folder { path: String, cause: std::io::Error },
+    #[error("cannot write {path}: {cause}")]
+    Write { path: String, cause: std::io::Error },
+    #[error("no free file name {stem}-001 ... {stem}-{last} in {folder}", last = MAX_NUMBER)]
+    NoFreeName { stem: String, folder: String },
+    #[error("{0}")]
+    Figure(#[from] FigureError),
+}
+
+/// The highest number tried for a fresh name.
+pub const MAX_NUMBER: u32 = 9999;
+
+/// The file extensions an export may write (a name is fresh only if none of them exists).
+pub const EXTENSIONS: [&str; 5] = ["png", "svg", "md", "tex", "json"];
+
+/// The first `STEM-NNN` (from 001) for which no `STEM-NNN.EXT` exists in `folder` for any of
+/// `extensions`.
+pub fn fresh_stem(folder: &Path, stem: &str, extensions: &[&str]) -> Result<String, ExportError> {
+    (1..=MAX_NUMBER)
+        .map(|k| format!("{stem}-{k:03}"))
+        .find(|name| {
+            extensions
+                .iter()
+                .all(|ext| !folder.join(format!("{name}.{ext}")).exists())
+        })
+        .ok_or_else(|| ExportError::NoFreeName {
+            stem: stem.to_string(),
+            folder: folder.display().to_string(),
+        })
+}
+
+/// Creates `folder` (and its parents) if needed; the error names it.
+pub fn prepare_folder(folder: &Path) -> Result<(), ExportError> {
+    std::fs::create_dir_all(folder).map_err(|cause| ExportError::Folder {
+        path: folder.display().to_string(),
+        cause,
+    })
+}
+
+/// Writes `bytes` to a new file; fails (never overwrites) if it exists.
+pub fn write_new(path: &Path, bytes: &[u8]) -> Result<(), ExportError> {
+    let err = |cause| ExportError::Write {
+        path: path.display().to_string(),
+        cause,
+    };
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(err)?;
+    f.write_all(bytes).map_err(err)?;
+    f.sync_all().map_err(err)
+}
+
+/// The scene file of a figure: `scene` (sized as rendered) with its texture and model paths
+/// made absolute against `scene_dir`, so it loads from wherever it is saved.
+pub fn scene_json(scene: &Scene, scene_dir: Option<&Path>) -> String {
+    let dir = scene_dir.unwrap_or(Path::new(""));
+    scene.with_absolute_paths(dir).to_json()
+}
+
+/// Everything one export writes.
+pub struct ExportRequest<'a> {
+    pub folder: &'a Path,
+    /// File names start with this (`figure` gives `figure-001.png`, ...).
+    pub stem: &'a str,
+    pub figure: &'a Figure,
+    /// The scene the figure shows (sized as rendered).
+    pub scene: &'a Scene,
+    /// The folder the scene's relative paths are relative to.
+    pub scene_dir: Option<&'a Path>,
+    pub selection: ExportSelection,
+}
+
+/// Writes the selected files under one fresh name; returns the files written. The derivation
+/// is skipped when no pixel is marked.
+pub fn export(request: &ExportRequest<'_>) -> Result<Vec<PathBuf>, ExportError> {
+    let r = request;
+    let sel = r.selection;
+    // Everything is made before anything is written: a failure leaves no half export.
+    let mut files: Vec<(&str, Vec<u8>)> = Vec::new();
+    if sel.png {
+        files.push(("png", png::to_png(r.figure)?));
+    }
+    if sel.svg {
+        files.push(("svg", svg::to_svg(r.figure)?.into_bytes()));
+    }
+    if sel.derivation
+        && let Some(trace) = r.figure.pinned.as_ref().or(r.figure.hovered.as_ref())
+    {
+        files.push(("md", format::write(trace, Format::Markdown).into_bytes()));
+        files.push(("tex", format::write(trace, Format::Latex).into_bytes()));
+    }
+    if sel.scene {
+        files.push(("json", scene_json(r.scene, r.scene_dir).into_bytes()));
+    }
+    prepare_folder(r.folder)?;
+    let stem = fresh_stem(r.folder, r.stem, &EXTENSIONS)?;
+    let mut written = Vec::new();
+    for (ext, bytes) in files {
+        let path = r.folder.join(format!("{stem}.{ext}"));
+        write_new(&path, &bytes)?;
+        written.push(path);
+    }
+    Ok(written)
+}

@@ -1,0 +1,90 @@
+//! A figure as a PNG: the background, each view's raster copied pixel for pixel, then the
+//! figure's SVG overlay layer ([`super::svg::document`]) rasterized on top by resvg with the
+//! overlay font. The PNG's overlays are therefore exactly the SVG's.
+
+use std::sync::{Arc, OnceLock};
+
+use resvg::tiny_skia::{self, Pixmap, PixmapPaint, Transform};
+use resvg::usvg;
+
+use super::svg::{self, Layers};
+use super::text::FONT_BYTES;
+use super::{Background, Figure, FigureError};
+
+/// The fonts resvg may use: only the overlay font (no system fonts are scanned).
+fn fonts() -> Arc<usvg::fontdb::Database> {
+    static DB: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
+    DB.get_or_init(|| {
+        let mut db = usvg::fontdb::Database::new();
+        db.load_font_data(FONT_BYTES.to_vec());
+        db.set_sans_serif_family(super::text::FONT_FAMILY);
+        Arc::new(db)
+    })
+    .clone()
+}
+
+/// Options for parsing the figure's SVG with the overlay font.
+pub fn svg_options() -> usvg::Options<'static> {
+    usvg::Options {
+        fontdb: fonts(),
+        font_family: super::text::FONT_FAMILY.to_string(),
+        ..usvg::Options::default()
+    }
+}
+
+/// The figure as an RGBA image of [`Figure::pixel_dimensions`].
+pub fn rasterize(figure: &Figure) -> Result<image::RgbaImage, FigureError> {
+    let [w, h] = figure.pixel_dimensions();
+    let mut pixmap =
+        Pixmap::new(w, h).ok_or_else(|| FigureError::Draw(format!("no {w}x{h} image")))?;
+    if figure.background == Background::White {
+        pixmap.fill(tiny_skia::Color::WHITE);
+    }
+    for v in &figure.views {
+        let raster = pixmap_of(&v.raster)?;
+        pixmap.draw_pixmap(
+            (v.origin[0] * figure.scale) as i32,
+            (v.origin[1] * figure.scale) as i32,
+            raster.as_ref(),
+            &PixmapPaint::default(),
+            Transform::identity(),
+            None,
+        );
+    }
+    let overlay = svg::document(figure, Layers::OVERLAYS)?;
+    let tree = usvg::Tree::from_str(&overlay, &svg_options())
+        .map_err(|e| FigureError::Draw(format!("overlay SVG: {e}")))?;
+    // The document's width and height are the PNG's pixels and its viewBox the points: usvg
+    // already maps points to pixels.
+    resvg::render(&tree, Transform::identity(), &mut pixmap.as_mut());
+    let mut out = image::RgbaImage::new(w, h);
+    for (px, c) in out.pixels_mut().zip(pixmap.pixels()) {
+        let c = c.demultiply();
+        px.0 = [c.red(), c.green(), c.blue(), c.alpha()];
+    }
+    Ok(out)
+}
+
+/// The figure as PNG file bytes.
+pub fn to_png(figure: &Figure) -> Result<Vec<u8>, FigureError> {
+    let image = rasterize(figure)?;
+    let mut bytes = Vec::new();
+    image
+        .write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            image::ImageFormat::Png,
+        )
+        .map_err(|e| FigureError::Draw(e.to_string()))?;
+    Ok(bytes)
+}
+
+/// A premultiplied copy of a straight-alpha RGBA image.
+fn pixmap_of(image: &image::RgbaImage) -> Result<Pixmap, FigureError> {
+    let (w, h) = image.dimensions();
+    let mut p = Pixmap::new(w, h).ok_or_else(|| FigureError::Draw(format!("no {w}x{h} image")))?;
+    for (dst, src) in p.pixels_mut().iter_mut().zip(image.pixels()) {
+        let [r, g, b, a] = src.0;
+        *dst = tiny_skia::ColorU8::from_rgba(r, g, b, a).premultiply();
+    }
+    Ok(p)
+}

@@ -1,0 +1,545 @@
+//! A figure as an SVG document: each view's raster embedded as a PNG, its overlay as vector
+//! shapes and real text (editable in Inkscape, scalable in a LaTeX/Beamer deck).
+//!
+//! Coordinates: the document's user units are figure points (`viewBox`), its `width` and
+//! `height` the PNG pixels at the figure's scale. A canvas position `p` (rendered pixels) of a
+//! view lies at `origin + pixel_size * p` points. Line widths, radii, text sizes and offsets
+//! of the overlay are already in points.
+
+use std::fmt::Write;
+
+use base64::Engine;
+use glam::DVec2;
+
+use super::overlay::{Anchor, LABEL_BG, LABEL_TEXT, Overlay, Rgba, Shape, Stroke};
+use super::text::{self, Box2, FONT_FAMILY, FONT_WEIGHT, LABEL_PAD, LABEL_ROUNDING};
+use super::{Background, Figure, FigureError, FigureView};
+
+/// Dash and gap lengths of dashed lines, in points (as on screen).
+pub const DASH: (f32, f32) = (6.0, 4.0);
+/// Points: corner radius of the colour bar's background.
+const COLOR_BAR_ROUNDING: f32 = 6.0;
+/// Points: the colour bar's background reaches this far left/above and right/below the bar
+/// (room for its title above and its labels to the right).
+const COLOR_BAR_BACK_MIN: [f32; 2] = [12.0, 40.0];
+const COLOR_BAR_BACK_MAX: [f32; 2] = [56.0, 12.0];
+/// Points: the colour bar's text size.
+const COLOR_BAR_TEXT: f32 = 16.0;
+/// Points: length of a tick of the colour bar, and the gap between the bar and its labels.
+const COLOR_BAR_TICK: f32 = 5.0;
+const COLOR_BAR_LABEL_GAP: f32 = 8.0;
+
+/// Which parts of the figure the document holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layers {
+    /// The background fill and the views' rasters.
+    pub images: bool,
+    /// The overlays.
+    pub overlays: bool,
+}
+
+impl Layers {
+    pub const ALL: Layers = Layers {
+        images: true,
+        overlays: true,
+    };
+    pub const OVERLAYS: Layers = Layers {
+        images: false,
+        overlays: true,
+    };
+}
+
+/// The whole figure as an SVG document.
+pub fn to_svg(figure: &Figure) -> Result<String, FigureError> {
+    document(figure, Layers::ALL)
+}
+
+/// The figure's SVG document with the chosen layers.
+pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> {
+    let [w, h] = figure.size;
+    let [pw, ph] = figure.pixel_dimensions();
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" width="{pw}" height="{ph}" viewBox="0 0 {w} {h}">"#
+    );
+    let _ = writeln!(
+        s,
+        "<desc>barylab figure: {}x{} rendered pixels, {} point(s) per pixel, scale {}</desc>",
+        figure.canvas_size[0], figure.canvas_size[1], figure.pixel_size, figure.scale
+    );
+    s.push_str("<defs>\n");
+    for (i, v) in figure.views.iter().enumerate() {
+        let [x0, y0, x1, y1] = v.clip;
+        let _ = writeln!(
+            s,
+            r#"<clipPath id="view{i}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>"#,
+            n(x0),
+            n(y0),
+            n(x1 - x0),
+            n(y1 - y0)
+        );
+        let [iw, ih] = figure.canvas_size.map(|v| v * figure.pixel_size);
+        let _ = writeln!(
+            s,
+            r#"<clipPath id="image{i}"><rect x="{}" y="{}" width="{iw}" height="{ih}"/></clipPath>"#,
+            v.origin[0], v.origin[1]
+        );
+    }
+    s.push_str("</defs>\n");
+    if layers.images && figure.background == Background::White {
+        let _ = writeln!(s, r##"<rect width="{w}" height="{h}" fill="#ffffff"/>"##);
+    }
+    for (i, v) in figure.views.iter().enumerate() {
+        if layers.images {
+            image_element(&mut s, figure, v)?;
+        }
+        if layers.overlays {
+            let _ = writeln!(
+                s,
+                r#"<g clip-path="url(#view{i})" font-family="{FONT_FAMILY}, sans-serif" font-weight="{FONT_WEIGHT}">"#
+            );
+            let t = Transform {
+                origin: [f64::from(v.origin[0]), f64::from(v.origin[1])],
+                scale: f64::from(figure.pixel_size),
+            };
+            overlay(
+                &mut s,
+                &v.overlay,
+                t,
+                v.clip,
+                &format!("image{i}"),
+                figure.overlay_scale,
+            );
+            s.push_str("</g>\n");
+        }
+    }
+    s.push_str("</svg>\n");
+    Ok(s)
+}
+
+fn image_element(s: &mut String, figure: &Figure, v: &FigureView) -> Result<(), FigureError> {
+    let mut png = Vec::new();
+    v.raster
+        .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .map_err(|e| FigureError::Draw(e.to_string()))?;
+    let data = base64::engine::general_purpose::STANDARD.encode(&png);
+    let (iw, ih) = (
+        v.raster.width() / figure.scale,
+        v.raster.height() / figure.scale,
+    );
+    let _ = writeln!(
+        s,
+        r#"<image x="{}" y="{}" width="{iw}" height="{ih}" preserveAspectRatio="none" image-rendering="optimizeSpeed" style="image-rendering:pixelated" xlink:href="data:image/png;base64,{data}"/>"#,
+        v.origin[0], v.origin[1]
+    );
+    Ok(())
+}
+
+/// Canvas coordinates (rendered pixels) to figure points.
+#[derive(Clone, Copy, Debug)]
+struct Transform {
+    origin: [f64; 2],
+    scale: f64,
+}
+
+impl Transform {
+    fn point(&self, p: DVec2) -> [f32; 2] {
+        [
+            (self.origin[0] + p.x * self.scale) as f32,
+            (self.origin[1] + p.y * self.scale) as f32,
+        ]
+    }
+}
+
+/// A number for SVG: at most three decimals, no trailing zeros.
+fn n(v: f32) -> String {
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.into() }
+}
+
+fn hex(c: Rgba) -> String {
+    format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2])
+}
+
+/// `fill="..."` with its opacity, or `fill="none"`.
+fn fill(c: Rgba) -> String {
+    if c[3] == 0 {
+        r#"fill="none""#.into()
+    } else if c[3] == 255 {
+        format!(r#"fill="{}""#, hex(c))
+    } else {
+        format!(
+            r#"fill="{}" fill-opacity="{}""#,
+            hex(c),
+            n(f32::from(c[3]) / 255.0)
+        )
+    }
+}
+
+/// Stroke attributes; dashes are [`DASH`] overlay points long, times `k`.
+fn stroke(st: Option<Stroke>, dashed: bool, k: f32) -> String {
+    let Some(st) = st else {
+        return String::new();
+    };
+    let mut out = format!(
+        r#" stroke="{}" stroke-width="{}" stroke-linejoin="round""#,
+        hex(st.color),
+        n(st.width)
+    );
+    if st.color[3] != 255 {
+        let _ = write!(
+            out,
+            r#" stroke-opacity="{}""#,
+            n(f32::from(st.color[3]) / 255.0)
+        );
+    }
+    if dashed {
+        let _ = write!(
+            out,
+            r#" stroke-dasharray="{} {}""#,
+            n(DASH.0 * k),
+            n(DASH.1 * k)
+        );
+    }
+    out
+}
+
+fn points(pts: &[[f32; 2]]) -> String {
+    pts.iter()
+        .map(|p| format!("{},{}", n(p[0]), n(p[1])))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+fn escape(t: &str) -> String {
+    let mut out = String::with_capacity(t.len());
+    for c in t.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+fn rect(s: &mut String, b: Box2, rounding: f32, attrs: &str) {
+    let _ = writeln!(
+        s,
+        r#"<rect x="{}" y="{}" width="{}" height="{}"{} {attrs}/>"#,
+        n(b[0]),
+        n(b[1]),
+        n(b[2] - b[0]),
+        n(b[3] - b[1]),
+        if rounding > 0.0 {
+            format!(r#" rx="{}""#, n(rounding))
+        } else {
+            String::new()
+        }
+    );
+}
+
+/// A label: its background box (if any) and its text, in the box `b`.
+fn label(
+    s: &mut String,
+    b: Box2,
+    text: &str,
+    size: f32,
+    color: Rgba,
+    background: Option<Rgba>,
+    k: f32,
+) {
+    let pad = if background.is_some() {
+        LABEL_PAD.map(|v| v * k)
+    } else {
+        [0.0, 0.0]
+    };
+    if let Some(bg) = background {
+        rect(s, b, LABEL_ROUNDING * k, &fill(bg));
+    }
+    let ([width, _], ascent) = text::measure(text, size);
+    // textLength: a viewer without the Ubuntu font stretches or squeezes its fallback font
+    // to the measured width, so the text still fits its box.
+    let _ = writeln!(
+        s,
+        r#"<text x="{}" y="{}" font-size="{}" textLength="{}" lengthAdjust="spacingAndGlyphs" {} xml:space="preserve">{}</text>"#,
+        n(b[0] + pad[0]),
+        n(b[1] + pad[1] + ascent),
+        n(size),
+        n(width),
+        fill(color),
+        escape(text)
+    );
+}
+
+/// The overlay's shapes as SVG elements.
+/// The overlay's shapes (sizes already scaled) as SVG elements; `k` scales the fixed sizes
+/// of the drawing itself (label padding, dashes, the colour bar's frame and text).
+fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_clip: &str, k: f32) {
+    // Lines and areas stay on the image (a clipped triangle's outline can reach far off it);
+    // handles and labels may use the margin around it. Consecutive shapes on the image share
+    // one clipped group, so the painting order is kept.
+    let mut in_image_group = false;
+    for shape in &overlay.shapes {
+        let on_image = matches!(
+            shape,
+            Shape::Polygon { .. }
+                | Shape::Line { .. }
+                | Shape::Rect { .. }
+                | Shape::PixelGrid { .. }
+        );
+        if on_image != in_image_group {
+            if on_image {
+                let _ = writeln!(s, r#"<g clip-path="url(#{image_clip})">"#);
+            } else {
+                s.push_str("</g>\n");
+            }
+            in_image_group = on_image;
+        }
+        match shape {
+            Shape::Polygon {
+                points: pts,
+                fill: f,
+                stroke: st,
+                dashed,
+            } => {
+                let p: Vec<[f32; 2]> = pts.iter().map(|p| t.point(*p)).collect();
+                let _ = writeln!(
+                    s,
+                    r#"<polygon points="{}" {}{}/>"#,
+                    points(&p),
+                    fill(*f),
+                    stroke(*st, *dashed, k)
+                );
+            }
+            Shape::Line {
+                points: pts,
+                stroke: st,
+                dashed,
+            } => {
+                let p: Vec<[f32; 2]> = pts.iter().map(|p| t.point(*p)).collect();
+                let _ = writeln!(
+                    s,
+                    r#"<polyline points="{}" fill="none"{}/>"#,
+                    points(&p),
+                    stroke(Some(*st), *dashed, k)
+                );
+            }
+            Shape::Rect {
+                min,
+                max,
+                fill: f,
+                stroke: st,
+            } => {
+                let (a, b) = (t.point(*min), t.point(*max));
+                if f[3] > 0 {
+                    rect(s, [a[0], a[1], b[0], b[1]], 0.0, &fill(*f));
+                }
+                if let Some(st) = st {
+                    // The stroke lies outside the rectangle, as on screen.
+                    let e = st.width / 2.0;
+                    rect(
+                        s,
+                        [a[0] - e, a[1] - e, b[0] + e, b[1] + e],
+                        0.0,
+                        &format!(r#"fill="none"{}"#, stroke(Some(*st), false, k)),
+                    );
+                }
+            }
+            Shape::Circle {
+                centre,
+                radius,
+                fill: f,
+                stroke: st,
+            } => {
+                let c = t.point(*centre);
+                let _ = writeln!(
+                    s,
+                    r#"<circle cx="{}" cy="{}" r="{}" {}{}/>"#,
+                    n(c[0]),
+                    n(c[1]),
+                    n(*radius),
+                    fill(*f),
+                    stroke(*st, false, k)
+                );
+            }
+            Shape::Text {
+                at,
+                offset,
+                anchor,
+                text: txt,
+                size,
+                color,
+                background,
+            } => {
+                let (text_size, _) = text::measure(txt, *size);
+                let outer = text::padded(text_size, background.is_some(), k);
+                let b = text::place_label(t.point(*at), *offset, *anchor, outer, clip);
+                label(s, b, txt, *size, *color, *background, k);
+            }
+            Shape::PixelGrid {
+                width,
+                height,
+                line,
+                dots,
+            } => grid(s, t, clip, [*width, *height], *line, *dots),
+            Shape::ColorBar {
+                at,
+                offset,
+                size,
+                colors,
+                labels,
+                title,
+            } => {
+                let p = t.point(*at);
+                let min = [p[0] + offset[0], p[1] + offset[1]];
+                color_bar(
+                    s,
+                    [min[0], min[1], min[0] + size[0], min[1] + size[1]],
+                    colors,
+                    labels,
+                    title,
+                    k,
+                );
+            }
+        }
+    }
+    if in_image_group {
+        s.push_str("</g>\n");
+    }
+}
+
+fn grid(
+    s: &mut String,
+    t: Transform,
+    clip: Box2,
+    [width, height]: [u32; 2],
+    line: Stroke,
+    dots: Option<(f32, Rgba)>,
+) {
+    let (w, h) = (f64::from(width), f64::from(height));
+    let mut d = String::new();
+    for x in 0..=width {
+        let a = t.point(DVec2::new(f64::from(x), 0.0));
+        let b = t.point(DVec2::new(f64::from(x), h));
+        let _ = write!(d, "M{} {}V{}", n(a[0]), n(a[1]), n(b[1]));
+    }
+    for y in 0..=height {
+        let a = t.point(DVec2::new(0.0, f64::from(y)));
+        let b = t.point(DVec2::new(w, f64::from(y)));
+        let _ = write!(d, "M{} {}H{}", n(a[0]), n(a[1]), n(b[0]));
+    }
+    let _ = writeln!(
+        s,
+        r#"<path d="{d}" fill="none"{}/>"#,
+        stroke(Some(line), false, 1.0).replace(r#" stroke-linejoin="round""#, "")
+    );
+    if let Some((r, c)) = dots {
+        let mut d = String::new();
+        for y in 0..height {
+            for x in 0..width {
+                let p = t.point(DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5));
+                if p[0] >= clip[0] && p[0] <= clip[2] && p[1] >= clip[1] && p[1] <= clip[3] {
+                    let _ = write!(
+                        d,
+                        "M{} {}h{}v{}h-{}z",
+                        n(p[0] - r),
+                        n(p[1] - r),
+                        n(2.0 * r),
+                        n(2.0 * r),
+                        n(2.0 * r)
+                    );
+                }
+            }
+        }
+        let _ = writeln!(s, r#"<path d="{d}" {}/>"#, fill(c));
+    }
+}
+
+/// The colour bar as the screen draws it: a rounded background, the gradient from the first
+/// colour at the bottom to the last at the top, a white frame, ticks with labels, a title.
+fn color_bar(
+    s: &mut String,
+    r: Box2,
+    colors: &[Rgba],
+    labels: &[(f32, String)],
+    title: &str,
+    k: f32,
+) {
+    let back = [
+        r[0] - COLOR_BAR_BACK_MIN[0] * k,
+        r[1] - COLOR_BAR_BACK_MIN[1] * k,
+        r[2] + COLOR_BAR_BACK_MAX[0] * k,
+        r[3] + COLOR_BAR_BACK_MAX[1] * k,
+    ];
+    rect(s, back, COLOR_BAR_ROUNDING * k, &fill(LABEL_BG));
+    // One gradient through all the colours, evenly spaced from bottom to top (the screen
+    // draws the same as one band per pair of neighbouring colours).
+    let last = colors.len().saturating_sub(1).max(1);
+    let height = r[3] - r[1];
+    let id = format!("bar-{}-{}", r[0].round(), r[1].round());
+    let _ = write!(
+        s,
+        r#"<linearGradient id="{id}" x1="0" y1="1" x2="0" y2="0">"#
+    );
+    for (i, c) in colors.iter().enumerate() {
+        let _ = write!(
+            s,
+            r#"<stop offset="{}" stop-color="{}"/>"#,
+            n(i as f32 / last as f32),
+            hex(*c)
+        );
+    }
+    s.push_str("</linearGradient>\n");
+    rect(s, r, 0.0, &format!(r#"fill="url(#{id})""#));
+    // A white frame of one point, outside the bar.
+    let e = k / 2.0;
+    rect(
+        s,
+        [r[0] - e, r[1] - e, r[2] + e, r[3] + e],
+        0.0,
+        &format!(r##"fill="none" stroke="#ffffff" stroke-width="{}""##, n(k)),
+    );
+    let size = COLOR_BAR_TEXT * k;
+    for (f, l) in labels {
+        let y = r[3] - height * f;
+        let _ = writeln!(
+            s,
+            r#"<line x1="{}" y1="{}" x2="{}" y2="{}"{}/>"#,
+            n(r[2]),
+            n(y),
+            n(r[2] + COLOR_BAR_TICK * k),
+            n(y),
+            stroke(Some(Stroke::new(k, LABEL_TEXT)), false, k)
+        );
+        let (extent, _) = text::measure(l, size);
+        let b = Anchor::LeftCenter.box_at([r[2] + COLOR_BAR_LABEL_GAP * k, y], extent);
+        label(s, b, l, size, LABEL_TEXT, None, k);
+    }
+    let (extent, _) = text::measure(title, size);
+    let b = Anchor::CenterBottom.box_at(
+        [(r[0] + r[2]) / 2.0, r[1] - COLOR_BAR_LABEL_GAP * k],
+        extent,
+    );
+    label(s, b, title, size, LABEL_TEXT, None, k);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_short_and_text_is_escaped() {
+        assert_eq!(n(1.5), "1.5");
+        assert_eq!(n(2.0), "2");
+        assert_eq!(n(-0.0001), "0");
+        assert_eq!(n(0.12345), "0.123");
+        assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+        assert_eq!(fill([255, 0, 16, 255]), r##"fill="#ff0010""##);
+        assert_eq!(fill([0, 0, 0, 0]), r#"fill="none""#);
+    }
+}
