@@ -34,9 +34,36 @@ pub fn settings(width: u32, height: u32) -> RenderSettings {
     }
 }
 
+/// The full render (edge functions) of `mesh`, after checking that every other way of
+/// drawing it covers exactly the same pixels: the scanline rasterizer (same triangle in every
+/// pixel) and the colour-and-depth fast path of both rasterizers. So every conformance test
+/// written against this holds for all of them.
 pub fn draw(mesh: &ClipMesh, width: u32, height: u32) -> Render {
+    use barylab::raster::render::{Rasterizer, render_into};
+    use barylab::raster::{Buffers, Framebuffer};
     let tex = Texture::from_texels(1, 1, vec![[255; 4]]).expect("1x1 texture");
-    render(mesh, &tex, &settings(width, height)).expect("render")
+    let base = settings(width, height);
+    let reference = render(mesh, &tex, &base).expect("render");
+    for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
+        let s = RenderSettings { rasterizer, ..base };
+        let full = render(mesh, &tex, &s).expect("render");
+        assert!(
+            full.frame.triangle == reference.frame.triangle,
+            "{rasterizer:?}: coverage or owning triangle differs"
+        );
+        let mut fast = Framebuffer::new(0, 0, s.background);
+        render_into(&mut fast, mesh, &tex, &s, Buffers::ColorDepth).expect("render");
+        for y in 0..height {
+            for x in 0..width {
+                assert_eq!(
+                    fast.covered(x, y),
+                    reference.frame.covered(x, y),
+                    "{rasterizer:?} fast path: coverage differs at ({x}, {y})"
+                );
+            }
+        }
+    }
+    reference
 }
 
 /// Coverage as rows of '#' (covered) and '.' (not).
