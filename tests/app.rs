@@ -387,3 +387,29 @@ fn the_rasterizer_can_be_chosen_and_covers_the_same_pixels() {
     h.run();
     assert!(colors(&h) == edge_colors);
 }
+
+#[test]
+fn hovering_reuses_one_prober_per_render() {
+    let mut h = harness();
+    h.hover_at(pixel_centre(&h, [300, 300]));
+    h.run();
+    let built = h.state().probers_built();
+    assert!(built >= 1);
+    for p in [[310, 305], [320, 310], [200, 250]] {
+        h.hover_at(pixel_centre(&h, p));
+        h.run();
+    }
+    assert_eq!(
+        h.state().probers_built(),
+        built,
+        "a new prober for the same render"
+    );
+    // The inspector still follows the pointer, with the probe's numbers.
+    let trace = probe_of(&h, [200, 250]);
+    let shown = h.state().hover_report().map(|r| r.trace.pixel);
+    assert_eq!(shown, Some(trace.pixel));
+    // Another mode is another render: one more prober.
+    h.key_press(egui::Key::P);
+    h.run();
+    assert_eq!(h.state().probers_built(), built + 1);
+}

@@ -158,6 +158,13 @@ pub struct BaryApp {
     banner: Option<files::Banner>,
     /// Files to open at the start of the next frame (menu, typed path).
     to_open: Vec<PathBuf>,
+    /// The prober of the current render and mode (see `pixel_reports`).
+    prober: Option<(
+        (u64, crate::raster::Interpolation),
+        crate::probe::Prober<'static>,
+    )>,
+    /// How many probers were made (tests check that hovering reuses one).
+    probers_built: u64,
     bench: bench_panel::BenchPanel,
     export: export::ExportPanel,
 }
@@ -247,6 +254,8 @@ impl BaryApp {
             recent,
             banner: None,
             to_open: Vec::new(),
+            prober: None,
+            probers_built: 0,
             bench: bench_panel::BenchPanel::default(),
             export: export::ExportPanel::new(export_settings),
         };
@@ -318,6 +327,11 @@ impl BaryApp {
     }
 
     /// The canvas: views, renders, hovered pixel.
+    /// How many probers the inspector has made (one per render and mode it traced).
+    pub fn probers_built(&self) -> u64 {
+        self.probers_built
+    }
+
     pub fn canvas(&self) -> &CanvasState {
         &self.canvas
     }
@@ -486,14 +500,17 @@ impl BaryApp {
     }
 
     /// Probes the hovered and the pinned pixel (again only if the pixel or the render changed).
-    fn pixel_reports(&mut self, texture: &Texture) {
+    fn pixel_reports(&mut self, texture: &Arc<Texture>) {
         let mode = self.state.options().mode;
         let Some(out) = self.canvas.output.as_ref() else {
             self.hover_report = None;
             self.pin_report = None;
+            self.prober = None;
             return;
         };
         let mut error = None;
+        let prober = &mut self.prober;
+        let built = &mut self.probers_built;
         let mut update = |slot: &mut Option<PixelReport>, pixel: Option<[u32; 2]>| {
             let Some(p) = pixel else {
                 *slot = None;
@@ -502,7 +519,27 @@ impl BaryApp {
             if slot.as_ref().is_some_and(|r| r.is_for(out, mode, p)) {
                 return;
             }
-            *slot = match PixelReport::new(out, texture, mode, p) {
+            // One prober per render and mode: it clips and sets up every triangle once.
+            let tag = (out.generation, mode);
+            if prober.as_ref().is_none_or(|(t, _)| *t != tag) {
+                let settings = PixelReport::settings(out, mode);
+                *prober = match crate::probe::Prober::shared(&out.scene, texture.clone(), &settings)
+                {
+                    Ok(pr) => {
+                        *built += 1;
+                        Some((tag, pr))
+                    }
+                    Err(e) => {
+                        error = Some(e.to_string());
+                        *slot = None;
+                        return;
+                    }
+                };
+            }
+            let Some((_, pr)) = prober.as_ref() else {
+                return;
+            };
+            *slot = match PixelReport::with_prober(out, pr, p) {
                 Ok(r) => Some(r),
                 Err(e) => {
                     error = Some(e.to_string());

@@ -34,11 +34,31 @@ impl PixelReport {
         mode: Interpolation,
         pixel: [u32; 2],
     ) -> Result<Self, ProbeError> {
-        let settings = RenderSettings {
+        let settings = Self::settings(output, mode);
+        Self::with_prober(
+            output,
+            &Prober::new(&output.scene, texture, &settings)?,
+            pixel,
+        )
+    }
+
+    /// The settings a probe of `output` in `mode` traces with.
+    pub fn settings(output: &CanvasOutput, mode: Interpolation) -> RenderSettings {
+        RenderSettings {
             mode,
             ..output.scene.settings()
-        };
-        let trace = Prober::new(&output.scene, texture, &settings)?.pixel(pixel[0], pixel[1])?;
+        }
+    }
+
+    /// Probes `pixel` with a prober made for `output` (kept by the app for the render it
+    /// belongs to, so moving the pointer does not prepare every triangle again).
+    pub fn with_prober(
+        output: &CanvasOutput,
+        prober: &Prober<'_>,
+        pixel: [u32; 2],
+    ) -> Result<Self, ProbeError> {
+        let mode = prober.settings().mode;
+        let trace = prober.pixel(pixel[0], pixel[1])?;
         let document = format::document(&trace);
         Ok(Self {
             pixel,

@@ -526,7 +526,7 @@ pub struct Prober<'a> {
     form: SceneForm,
     spaces: Option<WorldSpaces>,
     names: Vec<String>,
-    texture: &'a Texture,
+    texture: TextureRef<'a>,
     settings: RenderSettings,
     triangles: Vec<PreparedTriangle>,
     params: ShadeParams,
@@ -541,11 +541,53 @@ fn vertex_name(i: usize) -> String {
     }
 }
 
+/// The texture a [`Prober`] samples: borrowed, or shared so the prober can be kept (the app
+/// keeps one per render, so moving the pointer does not clip and set up every triangle again).
+#[derive(Clone, Debug)]
+enum TextureRef<'a> {
+    Borrowed(&'a Texture),
+    Shared(std::sync::Arc<Texture>),
+}
+
+impl std::ops::Deref for TextureRef<'_> {
+    type Target = Texture;
+    fn deref(&self) -> &Texture {
+        match self {
+            TextureRef::Borrowed(t) => t,
+            TextureRef::Shared(t) => t,
+        }
+    }
+}
+
+impl Prober<'static> {
+    /// Like [`Prober::new`], holding a shared texture, so the prober can be kept.
+    pub fn shared(
+        scene: &Scene,
+        texture: std::sync::Arc<Texture>,
+        settings: &RenderSettings,
+    ) -> Result<Self, ProbeError> {
+        Self::build(scene, TextureRef::Shared(texture), settings)
+    }
+}
+
 impl<'a> Prober<'a> {
     /// Prepares the scene's triangles as [`render::render`] does.
     pub fn new(
         scene: &Scene,
         texture: &'a Texture,
+        settings: &RenderSettings,
+    ) -> Result<Self, ProbeError> {
+        Self::build(scene, TextureRef::Borrowed(texture), settings)
+    }
+
+    /// The settings the prober traces with.
+    pub fn settings(&self) -> &RenderSettings {
+        &self.settings
+    }
+
+    fn build(
+        scene: &Scene,
+        texture: TextureRef<'a>,
         settings: &RenderSettings,
     ) -> Result<Self, ProbeError> {
         let (w, h) = (settings.width, settings.height);
@@ -698,7 +740,7 @@ impl<'a> Prober<'a> {
         let color = match &winner {
             Some((ti, si, frag)) => {
                 let s = &self.triangles[*ti].setups[*si];
-                shade::shade(frag, self.texture, &self.params, &self.wire_gradients(s))
+                shade::shade(frag, &self.texture, &self.params, &self.wire_gradients(s))
             }
             None => self.settings.background,
         };
@@ -1013,7 +1055,7 @@ impl<'a> Prober<'a> {
                     .then(|| shade::edge_distance_px(f.edge_weights, &wire)),
                 wire: self.params.wireframe
                     && shade::edge_distance_px(f.edge_weights, &wire) < shade::WIRE_WIDTH_PX,
-                color: shade::shade(f, self.texture, &self.params, &wire),
+                color: shade::shade(f, &self.texture, &self.params, &wire),
             }
         });
 
@@ -1118,7 +1160,7 @@ impl<'a> Prober<'a> {
     }
 
     fn attribute(&self, s: &TriangleSetup, f: &Fragment, (x, y): (u32, u32)) -> AttributeTrace {
-        let t = self.texture;
+        let t = &*self.texture;
         let size = DVec2::new(f64::from(t.width()), f64::from(t.height()));
         let uv_a = f.affine.uv();
         let uv_p = f.correct.uv();
