@@ -450,6 +450,18 @@ fn field(ui: &mut Ui, v: &mut f64, speed: f64, tip: &str) -> bool {
     .changed()
 }
 
+/// A grid row with a vertex's uv as two numeric fields; sets `changed` when edited.
+fn uv_row(ui: &mut Ui, uv: Vec2, changed: &mut bool) -> Vec2 {
+    let mut uv = uv.as_dvec2();
+    ui.label(RichText::new(text::UV).weak());
+    ui.horizontal(|ui| {
+        *changed |= field(ui, &mut uv.x, 0.01, tips::UV);
+        *changed |= field(ui, &mut uv.y, 0.01, tips::UV);
+    });
+    ui.end_row();
+    uv.as_vec2()
+}
+
 fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     match scene {
         Scene::World(s) => {
@@ -467,18 +479,12 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                             changed |= field(ui, &mut p.z, 0.01, tips::POSITION);
                         });
                         ui.end_row();
-                        let mut uv = c.uv.as_dvec2();
-                        ui.label(RichText::new(text::UV).weak());
-                        ui.horizontal(|ui| {
-                            changed |= field(ui, &mut uv.x, 0.01, tips::UV);
-                            changed |= field(ui, &mut uv.y, 0.01, tips::UV);
-                        });
-                        ui.end_row();
+                        let uv = uv_row(ui, c.uv, &mut changed);
                         if changed {
                             out.push(Command::SetCorner {
                                 index: k,
                                 position: DVec3::new(p.x, p.y, p.z),
-                                uv: Vec2::new(uv.x as f32, uv.y as f32),
+                                uv,
                                 color: c.color,
                             });
                         }
@@ -502,18 +508,12 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                             changed |= field(ui, &mut c.w, 0.01, tips::CLIP);
                         });
                         ui.end_row();
-                        let mut uv = v.uv.as_dvec2();
-                        ui.label(RichText::new(text::UV).weak());
-                        ui.horizontal(|ui| {
-                            changed |= field(ui, &mut uv.x, 0.01, tips::UV);
-                            changed |= field(ui, &mut uv.y, 0.01, tips::UV);
-                        });
-                        ui.end_row();
+                        let uv = uv_row(ui, v.uv, &mut changed);
                         if changed {
                             out.push(Command::SetClipVertex {
                                 index: k,
                                 clip: DVec4::new(c.x, c.y, c.z, c.w),
-                                uv: Vec2::new(uv.x as f32, uv.y as f32),
+                                uv,
                             });
                         }
                     }

@@ -481,8 +481,9 @@ fn rasterize(
             band.inv_w[i] = frag.inv_w as f32;
         }
     };
-    // The lane path: colour and depth only; texture shading with nearest or bilinear
-    // filtering is done in lanes, anything else per pixel (after block rejection).
+    // The lane path (colour and depth only): every shading but trilinear texture lookups
+    // in the edge-function lanes (trilinear per pixel, after block rejection); the scanline
+    // lanes draw texture shading without wireframe, the rest goes per pixel.
     let lane_color = match params.shading {
         Shading::Texture => matches!(params.filter, Filter::Nearest | Filter::Bilinear)
             .then_some(lanes::LaneColor::Texture),

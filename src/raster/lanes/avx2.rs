@@ -10,7 +10,6 @@ use super::{
     Target, classify,
 };
 use crate::raster::interpolate::{Interpolation, screen_weights};
-use crate::raster::project::SUBPIXEL;
 use crate::raster::scanline::row_span;
 use crate::raster::setup::{TriangleSetup, sample_point};
 use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
@@ -558,10 +557,7 @@ pub(super) fn scanline_triangle(
 ) {
     let mut lookups = Lookups::new(sampler, wide);
     let consts = Constants::new(setup, mode, false, LaneColor::Texture);
-    let dl: [f64; 3] = setup
-        .edges
-        .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);
-    let step = Stepped::from_weights(dl, &consts, mode);
+    let step = Stepped::row_step(setup, &consts, mode);
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
     for y in y_start..=y_end {
@@ -571,16 +567,7 @@ pub(super) fn scanline_triangle(
         let e = setup.edge_values(sample_point(x0, y));
         let start = Stepped::from_weights(screen_weights(&e, setup.area2), &consts, mode);
         // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
-        let mut lanes = [start; LANES];
-        for k in 1..LANES {
-            let p = lanes[k - 1];
-            lanes[k] = Stepped {
-                u: p.u + step.u,
-                v: p.v + step.v,
-                inv_w: p.inv_w + step.inv_w,
-                depth: p.depth + step.depth,
-            };
-        }
+        let lanes = Stepped::lanes(start, &step);
         let load = |f: fn(&Stepped) -> f64, h: usize| {
             _mm256_setr_pd(
                 f(&lanes[4 * h]),

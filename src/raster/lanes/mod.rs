@@ -724,6 +724,30 @@ impl Stepped {
         }
         s
     }
+
+    /// The increments per pixel along a row: the map applied to the screen weights'
+    /// increments `-dir_y,i * 256 / (2A)` (as the per-pixel scanline rasterizer steps them).
+    fn row_step(setup: &TriangleSetup, c: &Constants, mode: Interpolation) -> Self {
+        let dl = setup
+            .edges
+            .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);
+        Self::from_weights(dl, c, mode)
+    }
+
+    /// The values of a row's first eight pixels: lane k is `start` after k single steps.
+    fn lanes(start: Self, step: &Self) -> [Self; LANES] {
+        let mut lanes = [start; LANES];
+        for k in 1..LANES {
+            let p = lanes[k - 1];
+            lanes[k] = Self {
+                u: p.u + step.u,
+                v: p.v + step.v,
+                inv_w: p.inv_w + step.inv_w,
+                depth: p.depth + step.depth,
+            };
+        }
+        lanes
+    }
 }
 
 #[inline(always)]
@@ -739,10 +763,7 @@ fn scanline_triangle_impl(
     let mode = shading.mode;
     let consts = Constants::new(setup, mode, false, LaneColor::Texture);
     let sampler = Sampler::new(texture, shading.filter, shading.wrap);
-    let dl: [f64; 3] = setup
-        .edges
-        .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);
-    let step = Stepped::from_weights(dl, &consts, mode);
+    let step = Stepped::row_step(setup, &consts, mode);
     let mut colors = [[0u8; 4]; LANES];
     for y in y_start..=y_end {
         let Some((x0, x1)) = row_span(setup, y) else {
@@ -751,16 +772,7 @@ fn scanline_triangle_impl(
         let e = setup.edge_values(sample_point(x0, y));
         let start = Stepped::from_weights(screen_weights(&e, setup.area2), &consts, mode);
         // Lane k holds pixel x0 + k; each chunk advances every lane by eight increments.
-        let mut lanes = [start; LANES];
-        for k in 1..LANES {
-            let p = lanes[k - 1];
-            lanes[k] = Stepped {
-                u: p.u + step.u,
-                v: p.v + step.v,
-                inv_w: p.inv_w + step.inv_w,
-                depth: p.depth + step.depth,
-            };
-        }
+        let mut lanes = Stepped::lanes(start, &step);
         let n = LANES as f64;
         let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
         let mut x = x0;
