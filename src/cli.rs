@@ -79,7 +79,7 @@ struct RenderArgs {
     /// weights_perspective.exr, depth.exr, inv_w.exr.
     #[arg(long, value_name = "DIR")]
     aov: Option<PathBuf>,
-    /// Which rasterizer visits the pixels: per-pixel edge functions, or seed 001's scanline
+    /// Which rasterizer visits the pixels: per-pixel edge functions, or the classic scanline
     /// with per-pixel stepping (same pixels, same values).
     #[arg(long, default_value = "edge")]
     rasterizer: RasterizerArg,

@@ -124,11 +124,11 @@ fn hovering_a_pixel_shows_the_probes_weights_in_the_inspector() {
     assert!(shows(&h, &format!("Pixel ({}, {})", p[0], p[1])));
     for k in 0..3 {
         let r = fmt_number(d.screen.rasterizer[k]);
-        let a = fmt_number(persp.seed004.weights[k]);
+        let a = fmt_number(persp.correction.weights[k]);
         assert!(shows(&h, &r), "screen weight {r} not shown");
         assert!(shows(&h, &a), "corrected weight {a} not shown");
     }
-    let w_p = format!("W_P = {}", fmt_number(persp.seed004.w_p));
+    let w_p = format!("W_P = {}", fmt_number(persp.correction.w_p));
     assert!(shows(&h, &w_p), "{w_p} not shown");
     // The same pixel in the framebuffer: the probe explains what was drawn.
     let render = out_render(&h);

@@ -206,7 +206,7 @@ fn export_writes_fresh_names_and_the_derivation_has_the_pixels_numbers() {
     let tex = std::fs::read_to_string(&first[3]).expect("tex");
     for doc in [&md, &tex] {
         assert!(doc.contains("100"), "pixel missing");
-        assert!(doc.contains(&fmt_number(p.seed004.w_p)), "W_P missing");
+        assert!(doc.contains(&fmt_number(p.correction.w_p)), "W_P missing");
         for w in detail.screen.rasterizer {
             assert!(doc.contains(&fmt_number(w)), "screen weight {w} missing");
         }

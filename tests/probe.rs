@@ -202,22 +202,21 @@ fn hand_worked_example() {
     let from_system = d.screen.from_system.expect("from system");
     assert!((0..3).all(|k| close(from_system[k], rst[k])));
 
-    // Seed 004.
+    // The 1/w correction.
     let p = d.perspective.expect("perspective");
     assert_eq!(p.w, [1.0, 2.0, 4.0]);
-    assert_eq!(p.seed004.inv_w, [1.0, 0.5, 0.25]);
-    assert_eq!(p.seed004.inv_w_p, 37.0 / 64.0);
-    assert!(close(p.seed004.w_p, 64.0 / 37.0));
+    assert_eq!(p.correction.inv_w, [1.0, 0.5, 0.25]);
+    assert_eq!(p.correction.inv_w_p, 37.0 / 64.0);
+    assert!(close(p.correction.w_p, 64.0 / 37.0));
     assert!(close(p.games101_w_reciprocal, 64.0 / 37.0));
     let abc = [16.0 / 37.0, 18.0 / 37.0, 3.0 / 37.0];
     for (k, expect) in abc.iter().enumerate() {
-        assert!(close(p.seed004.weights[k], *expect));
+        assert!(close(p.correction.weights[k], *expect));
         assert!(close(p.renderer_weights[k], *expect));
     }
 
-    // Seed 002.
+    // The 4x4 system, on the raw clip coordinates.
     let sys = d.system.expect("system");
-    assert!(sys.snapped);
     assert_eq!(
         sys.system.matrix,
         [
@@ -272,11 +271,10 @@ fn hand_worked_example() {
     );
     for needle in [
         "E_BC = 1048576",
-        "E_BC(A) = E_CA(B) = E_AB(C) = 4194304 (1/65536 px^2) = 64 px^2",
-        "r = E_BC(P)/E_BC(A) = 1048576/4194304 = 0.25",
+        "(r, s, t) = (0.25, 0.5625, 0.1875)",
         "1/W_P = r/W_A + s/W_B + t/W_C = 0.25·1 + 0.5625·0.5 + 0.1875·0.25 = 0.5781",
-        "W_P = 1/0.5781 = 1.73",
-        "a = r·W_P/W_A = 0.25·1.73/1 = 0.4324",
+        "W_P = 1/0.578125 = 1.73",
+        "a = r·W_P/W_A = 0.25·1.72973/1 = 0.4324",
         "d_P = r·d_A + s·d_B + t·d_C = 0.25·0.25 + 0.5625·0.5 + 0.1875·0.75 = 0.4844",
         "framebuffer(4, 6) = rgba(255, 0, 0, 255) = #ff0000",
     ] {
@@ -466,14 +464,14 @@ proptest! {
         if let (Some(p), Some(sys)) = (d.perspective, d.system) {
             let s = sys.system.solution;
             let from = d.screen.from_system.expect("unclipped: screen weights from the system");
-            let pscale = 1.0 + p.seed004.weights.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            let pscale = 1.0 + p.correction.weights.iter().fold(0.0f64, |m, x| m.max(x.abs()));
             for k in 0..3 {
                 prop_assert!((from[k] - r[k]).abs() < 1e-7 * scale, "{:?} vs {:?}", from, r);
-                prop_assert!((s[k] - p.seed004.weights[k]).abs() < 1e-7 * pscale);
-                prop_assert!((p.seed004.weights[k] - p.renderer_weights[k]).abs() < 1e-12 * pscale);
+                prop_assert!((s[k] - p.correction.weights[k]).abs() < 1e-7 * pscale);
+                prop_assert!((p.correction.weights[k] - p.renderer_weights[k]).abs() < 1e-12 * pscale);
             }
-            prop_assert!((s[3] - p.seed004.w_p).abs() < 1e-7 * p.seed004.w_p.abs().max(1.0));
-            prop_assert!((p.games101_w_reciprocal - p.seed004.w_p).abs() < 1e-12 * p.seed004.w_p);
+            prop_assert!((s[3] - p.correction.w_p).abs() < 1e-7 * p.correction.w_p.abs().max(1.0));
+            prop_assert!((p.games101_w_reciprocal - p.correction.w_p).abs() < 1e-12 * p.correction.w_p);
         }
     }
 
@@ -510,7 +508,7 @@ proptest! {
                 let Some(d) = t.detail.filter(|d| d.writes_pixel) else { continue; };
                 let Some(seen) = d.seen_point else { continue; };
                 let expect: [f64; 3] = match (&d.clipping, d.perspective) {
-                    (None, Some(p)) => p.seed004.weights,
+                    (None, Some(p)) => p.correction.weights,
                     _ => d.source_weights.expect("weights").perspective.map(f64::from),
                 };
                 // The snapping error relative to the triangle's size on screen.
@@ -553,7 +551,7 @@ fn json_has_the_documented_fields() {
         "/detail/screen/cross_product/sub_areas/0",
         "/detail/screen/gl_area/area",
         "/detail/screen/from_system/2",
-        "/detail/perspective/seed004/inv_w_p",
+        "/detail/perspective/correction/inv_w_p",
         "/detail/perspective/games101_w_reciprocal",
         "/detail/system/system/matrix/3/3",
         "/detail/system/system/solution/3",
@@ -570,8 +568,8 @@ fn json_has_the_documented_fields() {
     // Full precision: the JSON number is the f64 itself.
     let p = t.detail.expect("detail").perspective.expect("perspective");
     assert_eq!(
-        v["detail"]["perspective"]["seed004"]["w_p"].as_f64(),
-        Some(p.seed004.w_p)
+        v["detail"]["perspective"]["correction"]["w_p"].as_f64(),
+        Some(p.correction.w_p)
     );
 }
 

@@ -37,7 +37,7 @@ fn check(mesh: &ClipMesh) -> Result<(), TestCaseError> {
                 for x in 0..W {
                     let e = setup.edge_values(sample_point(x, y));
                     if setup.covers(&e) {
-                        by_edges.push((x, y, fragment(setup, e).expect("fragment")));
+                        by_edges.push((x, y, fragment(setup, x, y).expect("fragment")));
                     }
                 }
             }

@@ -158,7 +158,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
         return;
     };
     let v = &d.raster.vertices;
-    let seed = d.perspective.map(|p| p.seed004);
+    let seed = d.perspective.map(|p| p.correction);
     egui::ScrollArea::horizontal()
         .id_salt("summary-scroll")
         .show(ui, |ui| {
@@ -258,9 +258,9 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
             format!("({}, {})", r.pixel[0], r.pixel[1]),
             d.map_or("–".into(), |d| w3(d.screen.rasterizer)),
             d.and_then(|d| d.perspective)
-                .map_or("–".into(), |p| w3(p.seed004.weights)),
+                .map_or("–".into(), |p| w3(p.correction.weights)),
             d.and_then(|d| d.perspective)
-                .map_or("–".into(), |p| fmt_number(p.seed004.w_p)),
+                .map_or("–".into(), |p| fmt_number(p.correction.w_p)),
             d.and_then(|d| d.attribute.as_ref())
                 .map_or("–".into(), |a| pair32(a.uv_affine)),
             d.and_then(|d| d.attribute.as_ref())

@@ -10,7 +10,7 @@
 use std::fmt::Write as _;
 
 use super::{
-    CoverageTest, DistanceKind, EdgeTest, PixelTrace, Position, SceneForm, TapTrace,
+    CoverageTest, DistanceKind, EdgeTest, PixelTrace, Position, RasterVertex, SceneForm, TapTrace,
     TriangleCoverage, TriangleTrace,
 };
 use crate::raster::clip::PlaneName;
@@ -54,8 +54,13 @@ pub fn to_json(trace: &PixelTrace) -> String {
 // ---------------------------------------------------------------------------------------------
 // Numbers
 
-/// Significant digits shown in text, Markdown and LaTeX.
+/// Significant digits of a result shown in text, Markdown and LaTeX.
 pub const SIGNIFICANT_DIGITS: i32 = 4;
+
+/// Significant digits of an operand: a number left of an equation's last `=`. Two more than a
+/// result's, so that the arithmetic on the page checks at the precision shown
+/// (`W_P = 1/10.4047 = 0.09611`, not `1/10.4 = 0.09611`).
+pub const OPERAND_DIGITS: i32 = 6;
 
 /// A number with [`SIGNIFICANT_DIGITS`] significant digits, trailing zeros dropped; plain
 /// decimals from 1e-4 up to 1e6, else scientific (`1.234e-7`).
@@ -72,15 +77,26 @@ pub const SIGNIFICANT_DIGITS: i32 = 4;
 /// assert_eq!(fmt_number(-3.0e7), "-3e7");
 /// ```
 pub fn fmt_number(x: f64) -> String {
-    let (mantissa, exponent) = split_number(x);
+    fmt_digits(x, SIGNIFICANT_DIGITS)
+}
+
+/// [`fmt_number`] with `digits` significant digits.
+///
+/// ```
+/// use barylab::probe::format::fmt_digits;
+/// assert_eq!(fmt_digits(10.404_712, 6), "10.4047");
+/// assert_eq!(fmt_digits(1.0 / 10.404_712, 4), "0.09611");
+/// ```
+pub fn fmt_digits(x: f64, digits: i32) -> String {
+    let (mantissa, exponent) = split_number(x, digits);
     match exponent {
         Some(e) => format!("{mantissa}e{e}"),
         None => mantissa,
     }
 }
 
-/// Mantissa and (for scientific notation) exponent of [`fmt_number`].
-fn split_number(x: f64) -> (String, Option<i32>) {
+/// Mantissa and (for scientific notation) exponent of [`fmt_digits`].
+fn split_number(x: f64, digits: i32) -> (String, Option<i32>) {
     if x == 0.0 {
         return ("0".into(), None);
     }
@@ -89,10 +105,10 @@ fn split_number(x: f64) -> (String, Option<i32>) {
     }
     let e = x.abs().log10().floor() as i32;
     if (-4..6).contains(&e) {
-        let decimals = (SIGNIFICANT_DIGITS - 1 - e).max(0) as usize;
+        let decimals = (digits - 1 - e).max(0) as usize;
         (trim_zeros(format!("{x:.decimals$}")), None)
     } else {
-        let s = format!("{:.*e}", (SIGNIFICANT_DIGITS - 1) as usize, x);
+        let s = format!("{:.*e}", (digits - 1) as usize, x);
         match s.split_once('e') {
             Some((m, e)) => (trim_zeros(m.to_string()), e.parse().ok()),
             None => (s, None),
@@ -116,6 +132,9 @@ fn trim_zeros(s: String) -> String {
 pub enum M {
     /// A number, shown with [`SIGNIFICANT_DIGITS`].
     Num(f64),
+    /// A number that an equation computes with, shown with [`OPERAND_DIGITS`] (the builder
+    /// marks them: see [`mark_operands`]).
+    Operand(f64),
     /// An exact integer.
     Int(i64),
     /// A symbol: `base` or `base_sub`; greek names (`alpha`, `beta`, `gamma`, `Delta`) and
@@ -388,7 +407,39 @@ fn needs_parens(part: &[M], denominator: bool) -> bool {
     let product = part
         .iter()
         .any(|x| matches!(x, M::Op(Op::Mul) | M::Frac(..)));
-    sum || (denominator && (product || matches!(part, [M::Num(x)] if *x < 0.0)))
+    sum || (denominator && (product || matches!(part, [M::Num(x) | M::Operand(x)] if *x < 0.0)))
+}
+
+/// The significant digits a number token is shown with.
+fn digits_of(x: &M) -> i32 {
+    match x {
+        M::Operand(_) => OPERAND_DIGITS,
+        _ => SIGNIFICANT_DIGITS,
+    }
+}
+
+/// Marks the numbers an equation computes with: in each formula of a line (formulas are
+/// separated by [`Op::Sep`]), every number left of the last `=` becomes an [`M::Operand`];
+/// the result, right of it, stays an [`M::Num`].
+fn mark_operands(ms: &mut [M]) {
+    for formula in ms.split_mut(|x| matches!(x, M::Op(Op::Sep))) {
+        let last_eq = formula
+            .iter()
+            .rposition(|x| matches!(x, M::Op(Op::Eq | Op::Approx)));
+        if let Some(i) = last_eq {
+            formula[..i].iter_mut().for_each(mark_all);
+        }
+    }
+}
+
+fn mark_all(x: &mut M) {
+    match x {
+        M::Num(v) => *x = M::Operand(*v),
+        M::Frac(a, b) => a.iter_mut().chain(b.iter_mut()).for_each(mark_all),
+        M::Group(a) | M::Abs(a) => a.iter_mut().for_each(mark_all),
+        M::Tuple(parts) => parts.iter_mut().flatten().for_each(mark_all),
+        _ => {}
+    }
 }
 
 fn text_of(ms: &[M]) -> String {
@@ -396,8 +447,8 @@ fn text_of(ms: &[M]) -> String {
     let mut prev: Option<&M> = None;
     for x in ms {
         match x {
-            M::Num(v) => {
-                let n = fmt_number(*v);
+            M::Num(v) | M::Operand(v) => {
+                let n = fmt_digits(*v, digits_of(x));
                 if *v < 0.0 && binds_tightly(prev) {
                     let _ = write!(s, "({n})");
                 } else {
@@ -859,8 +910,8 @@ fn markdown_escape(s: &str) -> String {
     out
 }
 
-fn num_latex(v: f64) -> String {
-    let (mantissa, exponent) = split_number(v);
+fn num_latex(v: f64, digits: i32) -> String {
+    let (mantissa, exponent) = split_number(v, digits);
     match exponent {
         Some(e) => format!("{mantissa}\\times 10^{{{e}}}"),
         None => mantissa,
@@ -895,8 +946,8 @@ fn latex_of(ms: &[M]) -> String {
     let mut prev: Option<&M> = None;
     for x in ms {
         let s = match x {
-            M::Num(v) => {
-                let n = num_latex(*v);
+            M::Num(v) | M::Operand(v) => {
+                let n = num_latex(*v, digits_of(x));
                 if *v < 0.0 && binds_tightly(prev) {
                     format!("({n})")
                 } else {
@@ -966,7 +1017,7 @@ fn matrix_latex(lhs: &[M], rows: &[Vec<f64>], unknowns: &[M], rhs: &[f64]) -> St
         .iter()
         .map(|r| {
             r.iter()
-                .map(|&x| num_latex(x))
+                .map(|&x| num_latex(x, SIGNIFICANT_DIGITS))
                 .collect::<Vec<_>>()
                 .join(" & ")
         })
@@ -981,7 +1032,10 @@ fn matrix_latex(lhs: &[M], rows: &[Vec<f64>], unknowns: &[M], rhs: &[f64]) -> St
             .iter()
             .map(|x| latex_of(std::slice::from_ref(x)))
             .collect();
-        let r: Vec<String> = rhs.iter().map(|&x| num_latex(x)).collect();
+        let r: Vec<String> = rhs
+            .iter()
+            .map(|&x| num_latex(x, SIGNIFICANT_DIGITS))
+            .collect();
         let _ = write!(
             s,
             " \\begin{{bmatrix}} {} \\end{{bmatrix}} = \\begin{{bmatrix}} {} \\end{{bmatrix}}",
@@ -1037,7 +1091,12 @@ impl Builder {
         }
     }
 
-    fn para(&mut self, parts: Vec<Inline>) {
+    fn para(&mut self, mut parts: Vec<Inline>) {
+        for p in &mut parts {
+            if let Inline::M(ms) = p {
+                mark_operands(ms);
+            }
+        }
         self.push(Item::Para(parts));
     }
 
@@ -1045,11 +1104,13 @@ impl Builder {
         self.para(vec![t(s)]);
     }
 
-    fn eq(&mut self, ms: Vec<M>) {
+    fn eq(&mut self, mut ms: Vec<M>) {
+        mark_operands(&mut ms);
         self.push(Item::Eq(ms, None));
     }
 
-    fn eq_note(&mut self, ms: Vec<M>, note: impl Into<String>) {
+    fn eq_note(&mut self, mut ms: Vec<M>, note: impl Into<String>) {
+        mark_operands(&mut ms);
         self.push(Item::Eq(ms, Some(note.into())));
     }
 
@@ -1063,9 +1124,9 @@ impl Builder {
     }
 }
 
-/// Screen weights of the rasterized triangle's vertices, seed 004's names.
+/// Screen weights of the rasterized triangle's vertices, in the r, s, t / W_P notation.
 const SCREEN: [&str; 3] = ["r", "s", "t"];
-/// Perspective-correct weights, seed 004's names.
+/// Perspective-correct weights, in the r, s, t / W_P notation.
 const CORRECT: [&str; 3] = ["a", "b", "c"];
 
 fn mode_name(mode: Interpolation) -> &'static str {
@@ -1592,8 +1653,8 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         names3(&n)
     ));
     b.text(format!(
-        "r, s, t weigh {} in the 2D triangle on screen (seed 000 calls them alpha, beta, gamma). \
-         Window positions after snapping:",
+        "r, s, t weigh {} in the 2D triangle on screen (GAMES101 calls them alpha, beta, gamma). \
+         Window positions (unsnapped, as the interpolation uses them):",
         names3(&n)
     ));
     let mut pos = Vec::new();
@@ -1604,6 +1665,8 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         pos.extend([sym(n[k].clone()), EQ, tup(&v.window)]);
     }
     pos.extend([SEP, sym("P"), EQ, tup(&p)]);
+    // The inputs of the arithmetic below: shown with an operand's digits.
+    pos.iter_mut().for_each(mark_all);
     b.eq(pos);
     let wx = |k: usize| rv[k].window[0];
     let wy = |k: usize| rv[k].window[1];
@@ -1613,7 +1676,7 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
 
     // 1. Explicit formula.
     if let Some(f) = &sw.explicit {
-        b.text("1. The explicit formula (seed 000):");
+        b.text("1. The explicit formula (as in GAMES101):");
         // (y_P - y_A)(x_C - x_A) - (x_P - x_A)(y_C - y_A)
         let form = |u: usize| {
             vec![
@@ -1714,7 +1777,7 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     // 2. Cross products.
     if let Some(c) = &sw.cross_product {
         b.para(vec![
-            t("2. Ratios of signed areas from 2D cross products (seed 001), with "),
+            t("2. Ratios of signed areas from 2D cross products, with "),
             m(vec![
                 sym("u"),
                 CROSS,
@@ -1868,7 +1931,7 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         (Some(r), Some(sys)) => {
             let sol = sys.system.solution;
             b.text(
-                "4. From the 4x4 system of seed 002 (section below), which gives the weights \
+                "4. From the 4x4 system (section below), which gives the weights \
                  b on the triangle in space and the sample's w; projecting back to the screen:",
             );
             for k in 0..3 {
@@ -1887,54 +1950,44 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
             }
         }
         _ => b.text(
-            "4. The 4x4 system of seed 002 is solved on the source triangle (section below); \
+            "4. The 4x4 system is solved on the source triangle (section below); \
              since the rasterized triangle is a piece of the clipped triangle, its screen \
              weights do not come out of it.",
         ),
     }
 
     // The rasterizer.
-    let at_opposite = |k: usize| {
-        vec![
-            sym(format!("E_{}", d.coverage.edges[k].name)),
-            grp(sym(n[k].clone())),
-        ]
-    };
-    let mut whole = Vec::new();
-    for k in 0..3 {
-        whole.extend(at_opposite(k));
-        whole.push(EQ);
-    }
-    whole.extend([
-        int(d.raster.area2),
-        txt(" (1/65536 px^2)"),
-        EQ,
-        num(d.raster.area2 as f64 / 65536.0),
-        txt(" px^2"),
+    b.para(vec![
+        t(
+            "The rasterizer (setup::WeightPlanes) evaluates the same signed-area ratios in f64 \
+           from the unsnapped window positions, as llvmpipe sets up its interpolation: ",
+        ),
+        m(vec![
+            tup_m(SCREEN.iter().map(|c| sym(*c)).collect()),
+            EQ,
+            tup(&sw.rasterizer),
+        ]),
+        t(
+            ". The exact integer edge values of the snapped positions (the coverage section) \
+           only decide whether the pixel is covered.",
+        ),
     ]);
-    b.text(
-        "The rasterizer itself divides exact integer edge values (1/65536 px^2): the edge \
-         function at P over its value at the opposite vertex, which is twice the triangle's area:",
-    );
-    b.eq(whole);
-    for (k, e) in d.coverage.edges.iter().enumerate() {
-        let l = vec![
-            sym(SCREEN[k]),
-            EQ,
-            frac(
-                vec![sym(format!("E_{}", e.name)), grp(sym("P"))],
-                at_opposite(k),
-            ),
-            EQ,
-            frac(int(e.value), int(d.raster.area2)),
-            EQ,
-            num(sw.rasterizer[k]),
-        ];
-        if sw.rasterizer[k] < 0.0 {
-            b.eq_note(l, format!("negative: P is outside edge {}", e.name));
-        } else {
-            b.eq(l);
+    if !d.coverage.covered {
+        for (k, e) in d.coverage.edges.iter().enumerate() {
+            if sw.rasterizer[k] < 0.0 {
+                b.eq_note(
+                    vec![sym(SCREEN[k]), EQ, num(sw.rasterizer[k])],
+                    format!("negative: P is outside edge {}", e.name),
+                );
+            }
         }
+    }
+    if d.coverage.covered && sw.rasterizer.iter().any(|&w| w < 0.0) {
+        b.text(
+            "A weight is slightly negative although the pixel is covered: the snapped edges \
+             (1/256 px) cover the centre, the unsnapped triangle misses it by a hair. A GPU \
+             interpolates with the same negative weight.",
+        );
     }
     b.para(vec![
         t("All ways agree: the largest difference from the rasterizer's values is "),
@@ -1945,7 +1998,7 @@ fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
 
 fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     let n = raster_names(d);
-    b.section("Perspective correction with 1/w (seed 004)");
+    b.section("Perspective correction with 1/w (OpenGL 4.6, eq. 14.9)");
     let Some(p) = &d.perspective else {
         b.text(
             "The interpolated 1/w is not positive here: extended beyond its edges, the \
@@ -1954,7 +2007,7 @@ fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         );
         return;
     };
-    let s004 = &p.seed004;
+    let s004 = &p.correction;
     let r = d.screen.rasterizer;
     b.text(format!(
         "W is each vertex's clip-space w; with a perspective camera it is the depth in front of \
@@ -2018,7 +2071,7 @@ fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         num(s004.sum),
     ]);
     b.para(vec![
-        t("GAMES101's code (seed 000) writes the same with its screen weights alpha, beta, gamma: "),
+        t("GAMES101's code (Assignment 2, rasterize_triangle) writes the same with its screen weights alpha, beta, gamma: "),
         m(vec![
             sym("w_reciprocal"),
             EQ,
@@ -2056,30 +2109,53 @@ fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     }
     if let (Some(_), Some(sw)) = (&d.clipping, &d.source_weights) {
         let src: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
+        let rv = &d.raster.vertices;
+        let lam = tup_m(src.iter().map(|s| sym(format!("lambda_{s}"))).collect());
         b.para(vec![t(format!(
-            "The weights lambda of the source triangle {} at the pixel are the vertices' \
-             lambda interpolated the same way, first with r, s, t (screen), then with a, b, c:",
+            "The weights lambda of the source triangle {} at the pixel are an attribute like \
+             any other: each vertex of the rasterized triangle carries its lambda, and the \
+             pixel interpolates them. Perspective-correct, with a, b, c and the smooth lambda \
+             (at a vertex the clipper made: interpolated in clip space):",
             src.join(", ")
         ))]);
-        let lam = tup_m(src.iter().map(|s| sym(format!("lambda_{s}"))).collect());
+        let per_vertex = |f: fn(&RasterVertex) -> [f32; 3]| {
+            listing((0..3).map(|k| vec![sym(format!("lambda({})", n[k])), EQ, tup32(&f(&rv[k]))]))
+        };
+        b.eq(per_vertex(|v| v.source_weights));
         b.eq_note(
-            vec![
-                lam.clone(),
-                EQ,
-                tup32(&sw.screen),
-                TO,
-                txt("perspective-correct: "),
-                lam,
-                EQ,
-                tup32(&sw.perspective),
-            ],
+            [
+                vec![lam.clone(), EQ],
+                weighted(
+                    &p.renderer_weights,
+                    (0..3).map(|k| tup32(&rv[k].source_weights)).collect(),
+                ),
+                vec![EQ, tup32(&sw.perspective)],
+            ]
+            .concat(),
             "as written to the weight buffers",
         );
+        b.text(
+            "Affine, with r, s, t and the noperspective lambda: OpenGL keeps a noperspective \
+             attribute linear on the screen, so at a vertex the clipper made it is the source \
+             triangle's screen-linear lambda there, not the smooth value:",
+        );
+        b.eq(per_vertex(|v| v.source_weights_affine));
+        b.eq([
+            vec![lam, EQ],
+            weighted(
+                &d.screen.rasterizer,
+                (0..3)
+                    .map(|k| tup32(&rv[k].source_weights_affine))
+                    .collect(),
+            ),
+            vec![EQ, tup32(&sw.screen)],
+        ]
+        .concat());
     }
 }
 
 fn system_section(b: &mut Builder, d: &TriangleTrace) {
-    b.section("The 4x4 linear system (seed 002)");
+    b.section("The 4x4 linear system (Umetani, Applied Computer Graphics)");
     let src: Vec<String> = d.vertices.iter().map(|v| v.name.clone()).collect();
     let Some(sys) = &d.system else {
         b.text(
@@ -2099,13 +2175,9 @@ fn system_section(b: &mut Builder, d: &TriangleTrace) {
         src[1],
         src[2],
         src[2],
-        if sys.snapped {
-            " The x and y of each q are taken from the snapped window position (x_ndc w), so \
-             the system sees exactly the triangle the rasterizer drew."
-        } else {
-            " The source triangle's exact clip coordinates are used: the system never divides \
-             by w, so it works even with a vertex behind the camera."
-        }
+        " The source triangle's own clip coordinates are used: the system never divides by \
+         w, so it works even with a vertex behind the camera, and it reaches the exact answer \
+         independently of the rasterizer."
     ));
     let s = &sys.system;
     b.push(Item::Matrix {
@@ -2140,8 +2212,8 @@ fn system_section(b: &mut Builder, d: &TriangleTrace) {
     if d.clipping.is_none() {
         if let Some(p) = &d.perspective {
             let diff = (0..3)
-                .map(|k| (b3[k] - p.seed004.weights[k]).abs())
-                .fold((s.solution[3] - p.seed004.w_p).abs(), f64::max);
+                .map(|k| (b3[k] - p.correction.weights[k]).abs())
+                .fold((s.solution[3] - p.correction.w_p).abs(), f64::max);
             b.para(vec![
                 t("These are a, b, c and W_P from the 1/w method (largest difference "),
                 m1(num(diff)),
@@ -2157,7 +2229,7 @@ fn system_section(b: &mut Builder, d: &TriangleTrace) {
             m1(tup32(&sw.perspective)),
             t(" (largest difference "),
             m1(num(diff)),
-            t(", from f32 varyings and snapping)."),
+            t(", from the f32 varyings)."),
         ]);
     }
 }
@@ -2173,7 +2245,7 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         return;
     };
     let reference: Option<[f64; 3]> = if d.clipping.is_none() {
-        d.perspective.map(|p| p.seed004.weights)
+        d.perspective.map(|p| p.correction.weights)
     } else {
         d.source_weights.map(|w| w.perspective.map(f64::from))
     };
@@ -2295,7 +2367,7 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         }
         _ => {
             b.text(
-                "A clip-space scene has no camera, but the seed 002 solution is the point \
+                "A clip-space scene has no camera, but the 4x4 system's solution is the point \
                  itself, in clip space:",
             );
             let mut l = vec![sym("X"), EQ];
@@ -2331,7 +2403,7 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
             }),
             m1(num(diff)),
             t(if trace.scene_form != SceneForm::Clip {
-                "; the rasterizer snapped the vertices to 1/256 px, this ray does not)."
+                "; the ray is computed from the camera, the rasterizer from clip space)."
             } else {
                 ")."
             }),
@@ -2339,6 +2411,21 @@ fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     }
 }
 
+/// How a wrap mode maps a texel index into `0..size` (in words, for the nearest line).
+fn wrap_rule(wrap: Wrap, size: [u32; 2]) -> String {
+    let [w, h] = size;
+    match wrap {
+        Wrap::Repeat => format!("repeat, i mod {w}, j mod {h}"),
+        Wrap::MirroredRepeat => format!("mirrored repeat over {w}x{h}"),
+        Wrap::ClampToEdge => format!(
+            "clamp to 0..{}, 0..{}",
+            w.saturating_sub(1),
+            h.saturating_sub(1)
+        ),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
 fn taps_line(
     label: &str,
     uv: [f32; 2],
@@ -2346,6 +2433,8 @@ fn taps_line(
     taps: &[TapTrace],
     color: [u8; 4],
     filter: Filter,
+    wrap: Wrap,
+    size: [u32; 2],
 ) -> Vec<M> {
     let mut l = vec![txt(label.to_string()), tup32(&uv), TO];
     match filter {
@@ -2358,10 +2447,19 @@ fn taps_line(
                 ]),
             ]);
             if let Some(tp) = taps.first() {
-                l.extend([
-                    EQ,
-                    M::Tuple(vec![vec![int(tp.i.into())], vec![int(tp.j.into())]]),
-                ]);
+                let wrapped = M::Tuple(vec![vec![int(tp.i.into())], vec![int(tp.j.into())]]);
+                match tp.unwrapped {
+                    Some([i, j]) if [i, j] != [i64::from(tp.i), i64::from(tp.j)] => {
+                        l.extend([
+                            EQ,
+                            M::Tuple(vec![vec![int(i)], vec![int(j)]]),
+                            TO,
+                            txt(format!("{}: ", wrap_rule(wrap, size))),
+                            wrapped,
+                        ]);
+                    }
+                    _ => l.extend([EQ, wrapped]),
+                }
             }
         }
         Filter::Bilinear | Filter::Trilinear => {
@@ -2421,7 +2519,7 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         l.extend(weighted_sym(&CORRECT, &uvs));
         l.push(EQ);
         l.extend(weighted(
-            &p.seed004.weights,
+            &p.correction.weights,
             a.uv_vertices.iter().map(|u| tup32(u)).collect(),
         ));
         l.extend([EQ, tup32(&a.uv_perspective)]);
@@ -2525,6 +2623,8 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         &a.taps_affine,
         a.color_affine,
         filter,
+        trace.settings.wrap,
+        a.texture_size,
     ));
     b.eq(taps_line(
         "perspective ",
@@ -2533,6 +2633,8 @@ fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
         &a.taps_perspective,
         a.color_perspective,
         filter,
+        trace.settings.wrap,
+        a.texture_size,
     ));
     b.eq(listing((0..3).map(|k| {
         vec![
@@ -2559,7 +2661,7 @@ fn depth_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     b.section("Depth");
     b.text(
         "The depth buffer stores window depth d = (z/w + 1)/2. z/w is linear on the screen, \
-         so the screen weights interpolate it exactly, with no correction (seed 004's bonus):",
+         so the screen weights interpolate it exactly, with no correction:",
     );
     let mut l = vec![sym("d_P"), EQ];
     l.extend(weighted_sym(&SCREEN, &n.clone().map(|x| format!("d_{x}"))));
@@ -2595,7 +2697,7 @@ fn depth_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     b.eq_note(l, "screen weights: wrong");
     if let Some(p) = &d.perspective {
         let mut l = vec![sym(format!("{sname}_corrected")), EQ];
-        l.extend(weighted(&p.seed004.weights, zs));
+        l.extend(weighted(&p.correction.weights, zs));
         l.extend([EQ, num(dt.distance_corrected)]);
         let note = if dt.distance_kind == DistanceKind::ViewDepth
             && trace.matrices.is_some_and(|m| m.perspective)

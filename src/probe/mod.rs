@@ -8,10 +8,10 @@
 //! test as the renderer does (source triangles in order, `less than`, buffer cleared to 1)
 //! and shades with [`shade::shade`]. So [`PixelTrace::color`] is the rendered pixel.
 //!
-//! Beside those numbers the trace holds the same quantities computed the ways the seed posts
-//! teach them ([`weights`]): screen-space weights by the explicit formula (seed 000), by
-//! cross-product areas (seed 001) and by the OpenGL area form; the 1/w correction in the
-//! notation of seed 004; the 4x4 system of seed 002; and the 3D point where the ray through
+//! Beside those numbers the trace holds the same quantities computed the ways textbooks
+//! teach them ([`weights`]): screen-space weights by the explicit formula (GAMES101), by
+//! cross-product areas and by the OpenGL area form; the 1/w correction in the
+//! r, s, t / W_P notation; the 4x4 system (Umetani's Applied Computer Graphics notes); and the 3D point where the ray through
 //! the pixel centre meets the triangle's plane. [`format`] writes the trace as a worked
 //! example (text, Markdown, LaTeX); the trace itself serializes to JSON with the field names
 //! documented in `docs/probe.md`.
@@ -37,7 +37,7 @@ use crate::raster::shade::{self, ShadeParams, Shading};
 use crate::raster::texture::{Filter, Texture, Wrap};
 use crate::scene::Scene;
 
-use weights::{AreaWeights, ExplicitFormula, HomogeneousSystem, RayHit, Seed004};
+use weights::{AreaWeights, ExplicitFormula, HomogeneousSystem, RayHit, WpCorrection};
 
 /// Errors of the probe.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -213,9 +213,9 @@ pub struct TriangleTrace {
     pub coverage: CoverageTest,
     /// Screen-space weights of the rasterized triangle's vertices, several ways.
     pub screen: ScreenWeights,
-    /// The 1/w correction (seed 004); `None` if the interpolated 1/w is not positive.
+    /// The 1/w correction; `None` if the interpolated 1/w is not positive.
     pub perspective: Option<PerspectiveTrace>,
-    /// Seed 002's 4x4 system on the source triangle; `None` if singular.
+    /// The 4x4 system on the source triangle; `None` if singular.
     pub system: Option<SystemTrace>,
     /// The source triangle's weights as the rasterizer interpolated them (the varyings).
     pub source_weights: Option<SourceWeights>,
@@ -281,16 +281,22 @@ pub struct RasterVertex {
     pub source_vertex: Option<usize>,
     pub clip: [f64; 4],
     pub ndc: [f64; 3],
-    /// Snapped window position in pixels.
+    /// Window position in pixels before snapping: the interpolation weights come from it.
     pub window: [f64; 2],
+    /// Window position snapped to 1/256 pixel, in pixels (`fixed / 256`): coverage.
+    pub window_snapped: [f64; 2],
     /// Snapped window position in 1/256 pixel.
     pub fixed: [i64; 2],
     /// Window depth `(z_ndc + 1) / 2`.
     pub depth: f64,
     /// `1 / w`.
     pub inv_w: f64,
-    /// Weights of the source triangle's vertices (one-hot at a source vertex).
+    /// Weights of the source triangle's vertices (one-hot at a source vertex), the `smooth`
+    /// attribute: at a vertex the clipper made, interpolated in clip space.
     pub source_weights: [f32; 3],
+    /// The same as a `noperspective` attribute: at a vertex the clipper made, the source
+    /// triangle's screen-linear weights there (OpenGL 4.6, section 13.7.1).
+    pub source_weights_affine: [f32; 3],
     pub uv: [f32; 2],
     pub color: [f32; 3],
     /// View-space position (world scenes), from the clip position.
@@ -311,13 +317,13 @@ pub struct RasterTriangle {
 pub struct ScreenWeights {
     /// The rasterizer's: `E_i / (2 area)` from exact fixed-point edge values.
     pub rasterizer: [f64; 3],
-    /// Seed 000's explicit formula on the snapped window positions.
+    /// The explicit formula on the unsnapped window positions.
     pub explicit: Option<ExplicitFormula>,
-    /// Seed 001's cross-product areas.
+    /// Signed areas from 2D cross products.
     pub cross_product: Option<AreaWeights>,
     /// The OpenGL area form (eq. 14.8).
     pub gl_area: Option<AreaWeights>,
-    /// From seed 002's solution, `r = b_A W_A / w` (only when the rasterized triangle is the
+    /// From the 4x4 system's solution, `r = b_A W_A / w` (only when the rasterized triangle is the
     /// source triangle).
     pub from_system: Option<[f64; 3]>,
     /// Largest difference of any method from `rasterizer`.
@@ -329,7 +335,7 @@ pub struct ScreenWeights {
 pub struct PerspectiveTrace {
     /// `[W_A, W_B, W_C]`: clip w of the rasterized vertices.
     pub w: [f64; 3],
-    pub seed004: Seed004,
+    pub correction: WpCorrection,
     /// GAMES101's `w_reciprocal = 1 / (alpha/w_A + beta/w_B + gamma/w_C)` (it is W_P).
     pub games101_w_reciprocal: f64,
     /// The renderer's perspective-correct weights ([`interpolate::fragment`]).
@@ -338,14 +344,11 @@ pub struct PerspectiveTrace {
     pub renderer_inv_w: f64,
 }
 
-/// Seed 002's system on the source triangle.
+/// The 4x4 system on the source triangle.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct SystemTrace {
+    /// The system on the source triangle's clip coordinates `q`.
     pub system: HomogeneousSystem,
-    /// True when `q_x, q_y` were taken from the snapped window positions (`x_ndc w`), so the
-    /// system sees the rasterizer's triangle exactly; false when the source triangle was
-    /// clipped and its exact clip coordinates are used.
-    pub snapped: bool,
     /// The sample in NDC, `s`.
     pub s: [f64; 2],
 }
@@ -372,7 +375,7 @@ pub struct SeenPoint {
     /// Its window depth `(z/w + 1) / 2`.
     pub depth: f64,
     /// Its barycentric weights with respect to the source triangle (from the ray hit in a
-    /// world scene, from seed 002's solution in a clip-space scene).
+    /// world scene, from the 4x4 system's solution in a clip-space scene).
     pub weights: [f64; 3],
 }
 
@@ -440,6 +443,8 @@ pub struct TapTrace {
     pub i: u32,
     /// Row after wrapping (0 = bottom, v = 0).
     pub j: u32,
+    /// Nearest filtering: the texel `(floor(u W), floor(v H))` before the wrap mode applied.
+    pub unwrapped: Option<[i64; 2]>,
     pub weight: f32,
     pub texel: [u8; 4],
 }
@@ -702,7 +707,8 @@ impl<'a> Prober<'a> {
                     continue;
                 }
                 covering.get_or_insert(si);
-                let Some(mut frag) = interpolate::fragment(s, e) else {
+                let l = s.weights.at_pixel(x, y);
+                let Some(mut frag) = interpolate::fragment_from_weights(s, e, l) else {
                     continue;
                 };
                 frag.lod = self.lod(s, x, y, self.settings.mode);
@@ -726,7 +732,7 @@ impl<'a> Prober<'a> {
             if !listed {
                 continue;
             }
-            let chosen = covering.or_else(|| nearest_setup(tri, sp).map(|(si, _)| si));
+            let chosen = covering.or_else(|| nearest_setup(tri, x, y).map(|(si, _)| si));
             coverage.push(TriangleCoverage {
                 source: tri.source,
                 vertices: self.triangle_names(ti),
@@ -752,7 +758,7 @@ impl<'a> Prober<'a> {
                 .triangles
                 .iter()
                 .enumerate()
-                .filter_map(|(ti, t)| nearest_setup(t, sp).map(|(si, m)| (ti, si, m)))
+                .filter_map(|(ti, t)| nearest_setup(t, x, y).map(|(si, m)| (ti, si, m)))
                 .fold(None, |best: Option<(usize, usize, f64)>, c| match best {
                     Some(b) if b.2 >= c.2 => Some(b),
                     _ => Some(c),
@@ -937,10 +943,12 @@ impl<'a> Prober<'a> {
                 clip: v.clip.to_array(),
                 ndc: v.ndc.to_array(),
                 window: v.window.to_array(),
+                window_snapped: v.window_snapped().to_array(),
                 fixed: v.fixed.to_array(),
                 depth: v.depth,
                 inv_w: v.inv_w,
                 source_weights: v.varyings.bary(),
+                source_weights_affine: v.noperspective.bary(),
                 uv: v.varyings.uv().to_array(),
                 color: v.varyings.color().to_array(),
                 view: self
@@ -956,16 +964,16 @@ impl<'a> Prober<'a> {
         };
         let coverage = self.coverage_test(ti, si, sp);
         let e = s.edge_values(sp);
-        let frag = interpolate::fragment(s, e).map(|mut f| {
+        let rasterizer = s.weights.at_pixel(x, y);
+        let frag = interpolate::fragment_from_weights(s, e, rasterizer).map(|mut f| {
             f.lod = self.lod(s, x, y, self.settings.mode);
             f
         });
 
-        // Seed 002 on the source triangle.
-        let system = self.system(ti, clipped, ndc);
+        // The 4x4 system on the source triangle.
+        let system = self.system(ti, ndc);
 
         // Screen weights, four ways plus the rasterizer's.
-        let rasterizer = interpolate::screen_weights(&e, s.area2);
         let pos = s.v.map(|v| v.window);
         let explicit = weights::explicit_formula(window, pos);
         let cross_product = weights::cross_product_weights(window, pos);
@@ -1000,10 +1008,10 @@ impl<'a> Prober<'a> {
 
         let w = s.v.map(|v| v.clip.w);
         let perspective = frag.as_ref().and_then(|f| {
-            let seed = weights::seed004(f.screen, w)?;
+            let correction = weights::w_p_correction(f.screen, w)?;
             Some(PerspectiveTrace {
                 w,
-                seed004: seed,
+                correction,
                 games101_w_reciprocal: 1.0
                     / (f.screen[0] / w[0] + f.screen[1] / w[1] + f.screen[2] / w[2]),
                 renderer_weights: f.perspective,
@@ -1078,25 +1086,13 @@ impl<'a> Prober<'a> {
         }
     }
 
-    /// Seed 002's system for source triangle `ti`. Unclipped: `q_x, q_y` from the snapped
-    /// window positions, so the system sees exactly the rasterized triangle.
-    fn system(&self, ti: usize, clipped: bool, ndc: DVec2) -> Option<SystemTrace> {
-        let tri = &self.triangles[ti];
-        let source = render::source_vertices(&self.mesh, tri.source)?;
-        let q = if clipped {
-            source.map(|v| v.clip)
-        } else {
-            let s = tri.setups.first()?;
-            let vp = self.viewport();
-            s.v.map(|v| {
-                let n = ndc_of_window(v.window, vp);
-                DVec4::new(n.x * v.clip.w, n.y * v.clip.w, v.clip.z, v.clip.w)
-            })
-        };
-        let system = weights::solve_seed002(q, ndc)?;
+    /// The 4x4 system for source triangle `ti`, on its raw clip coordinates: it reaches the
+    /// exact answer on its own, independently of clipping, projection and the rasterizer.
+    fn system(&self, ti: usize, ndc: DVec2) -> Option<SystemTrace> {
+        let source = render::source_vertices(&self.mesh, self.triangles[ti].source)?;
+        let system = weights::solve_homogeneous_system(source.map(|v| v.clip), ndc)?;
         Some(SystemTrace {
             system,
-            snapped: !clipped,
             s: ndc.to_array(),
         })
     }
@@ -1189,6 +1185,8 @@ impl<'a> Prober<'a> {
                     level: tap.level,
                     i: tap.i,
                     j: tap.j,
+                    unwrapped: (filter == Filter::Nearest)
+                        .then(|| t.nearest_unwrapped(uv, tap.level)),
                     weight: tap.weight,
                     texel: t.texel_at(tap.level, tap.i, tap.j),
                 })
@@ -1223,13 +1221,14 @@ impl<'a> Prober<'a> {
     }
 }
 
-/// The set-up triangle of `tri` nearest to the sample: the largest smallest screen weight
-/// (`min_i E_i / (2 area)`), with that weight.
-fn nearest_setup(tri: &PreparedTriangle, sp: glam::I64Vec2) -> Option<(usize, f64)> {
+/// The set-up triangle of `tri` nearest to the centre of pixel (x, y): the largest smallest
+/// screen weight, with that weight.
+fn nearest_setup(tri: &PreparedTriangle, x: u32, y: u32) -> Option<(usize, f64)> {
     let mut best: Option<(usize, f64)> = None;
     for (si, s) in tri.setups.iter().enumerate() {
-        let e = s.edge_values(sp);
-        let m = interpolate::screen_weights(&e, s.area2)
+        let m = s
+            .weights
+            .at_pixel(x, y)
             .into_iter()
             .fold(f64::INFINITY, f64::min);
         if best.is_none_or(|b| m > b.1) {

@@ -1,4 +1,4 @@
-//! The weight formulas the probe shows side by side, each as taught in one of the seed posts.
+//! The weight formulas the probe shows side by side, each in the form a textbook or course writes it.
 //!
 //! All work in `f64` on positions given in pixels (window coordinates, y down) or in clip or
 //! view space. The rasterizer itself uses exact fixed-point edge functions
@@ -21,7 +21,7 @@ pub fn cross2(u: DVec2, v: DVec2) -> f64 {
     u.x * v.y - u.y * v.x
 }
 
-/// Seed 000's explicit formula, with its numerators and denominators.
+/// The explicit formula (GAMES101), with its numerators and denominators.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct ExplicitFormula {
     pub beta_numerator: f64,
@@ -33,7 +33,7 @@ pub struct ExplicitFormula {
 }
 
 /// Barycentric weights of `p` in the triangle `v = [A, B, C]` by the explicit formula of
-/// seed 000:
+/// the explicit formula:
 ///
 /// `beta = ((y - y_A)(x_C - x_A) - (x - x_A)(y_C - y_A)) / ((y_B - y_A)(x_C - x_A) - (x_B - x_A)(y_C - y_A))`,
 /// `gamma = ((y - y_A)(x_B - x_A) - (x - x_A)(y_B - y_A)) / ((y_C - y_A)(x_B - x_A) - (x_C - x_A)(y_B - y_A))`,
@@ -80,7 +80,7 @@ pub struct AreaWeights {
     pub weights: [f64; 3],
 }
 
-/// Weights as ratios of signed areas from 2D cross products (seed 001):
+/// Weights as ratios of signed areas from 2D cross products:
 /// `S_A = (BC x BP) / 2`, `S_B = (CA x CP) / 2`, `S_C = (AB x AP) / 2`, `S = (BC x BA) / 2`,
 /// weights `S_A / S`, `S_B / S`, `S_C / S`. A weight is negative when P is on the far side
 /// of the opposite edge. `None` for a degenerate triangle.
@@ -165,9 +165,9 @@ pub fn gl_area_weights(p: DVec2, v: [DVec2; 3]) -> Option<AreaWeights> {
     })
 }
 
-/// The perspective correction in the notation of seed 004.
+/// The perspective correction in the r, s, t / W_P notation (a derivation straight from homogeneous coordinates).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Seed004 {
+pub struct WpCorrection {
     /// `[1/W_A, 1/W_B, 1/W_C]`.
     pub inv_w: [f64; 3],
     /// `1/W_P = r/W_A + s/W_B + t/W_C`, linear on screen.
@@ -181,20 +181,20 @@ pub struct Seed004 {
 }
 
 /// Perspective-correct weights from screen weights `[r, s, t]` and clip `w` of the vertices
-/// (seed 004): `1/W_P = r/W_A + s/W_B + t/W_C`, `W_P = 1 / (1/W_P)`, `a = r W_P / W_A`,
+/// : `1/W_P = r/W_A + s/W_B + t/W_C`, `W_P = 1 / (1/W_P)`, `a = r W_P / W_A`,
 /// `b = s W_P / W_B`, `c = t W_P / W_C`. `None` if some `w` is not positive or `1/W_P` is not
 /// positive (the sample's ray meets the triangle's plane behind the camera).
 ///
 /// ```
-/// use barylab::probe::weights::seed004;
+/// use barylab::probe::weights::w_p_correction;
 /// // r, s, t = 1/4, 9/16, 3/16 and W = 1, 2, 4: 1/W_P = 1/4 + 9/32 + 3/64 = 37/64.
-/// let p = seed004([0.25, 0.5625, 0.1875], [1.0, 2.0, 4.0]).unwrap();
+/// let p = w_p_correction([0.25, 0.5625, 0.1875], [1.0, 2.0, 4.0]).unwrap();
 /// assert_eq!(p.inv_w_p, 37.0 / 64.0);
 /// assert!((p.w_p - 64.0 / 37.0).abs() < 1e-15);
 /// let expect = [16.0 / 37.0, 18.0 / 37.0, 3.0 / 37.0];
 /// assert!((0..3).all(|i| (p.weights[i] - expect[i]).abs() < 1e-15));
 /// ```
-pub fn seed004(screen: [f64; 3], w: [f64; 3]) -> Option<Seed004> {
+pub fn w_p_correction(screen: [f64; 3], w: [f64; 3]) -> Option<WpCorrection> {
     if !w.iter().all(|&w| w > 0.0) {
         return None;
     }
@@ -209,7 +209,7 @@ pub fn seed004(screen: [f64; 3], w: [f64; 3]) -> Option<Seed004> {
         screen[1] * w_p / w[1],
         screen[2] * w_p / w[2],
     ];
-    Some(Seed004 {
+    Some(WpCorrection {
         inv_w,
         inv_w_p,
         w_p,
@@ -224,7 +224,7 @@ pub fn seed004(screen: [f64; 3], w: [f64; 3]) -> Option<Seed004> {
 /// digits below this bound.
 pub const MIN_RELATIVE_DET: f64 = 1e-12;
 
-/// The 4x4 linear system of seed 002 with its solution.
+/// The 4x4 linear system (Umetani's Applied Computer Graphics notes) with its solution.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct HomogeneousSystem {
     /// The matrix, row by row.
@@ -237,7 +237,7 @@ pub struct HomogeneousSystem {
     pub residual: f64,
 }
 
-/// Solves seed 002's system for the weights on the 3D triangle and the sample's clip w:
+/// Solves the 4x4 system for the weights on the 3D triangle and the sample's clip w:
 ///
 /// ```text
 /// [ q_Ax  q_Bx  q_Cx  -s_x ]   [ b_A ]   [ 0 ]
@@ -252,18 +252,18 @@ pub struct HomogeneousSystem {
 /// (see [`MIN_RELATIVE_DET`]).
 ///
 /// ```
-/// use barylab::probe::weights::solve_seed002;
+/// use barylab::probe::weights::solve_homogeneous_system;
 /// use glam::{DVec2, DVec4};
 /// let q = [
 ///     DVec4::new(-1.0, -1.0, 0.0, 1.0),
 ///     DVec4::new(2.0, -2.0, 0.0, 2.0),
 ///     DVec4::new(-4.0, 4.0, 0.0, 4.0),
 /// ];
-/// let s = solve_seed002(q, DVec2::new(0.125, -0.625)).unwrap();
+/// let s = solve_homogeneous_system(q, DVec2::new(0.125, -0.625)).unwrap();
 /// let expect = [16.0 / 37.0, 18.0 / 37.0, 3.0 / 37.0, 64.0 / 37.0];
 /// assert!((0..4).all(|i| (s.solution[i] - expect[i]).abs() < 1e-14));
 /// ```
-pub fn solve_seed002(q: [DVec4; 3], s: DVec2) -> Option<HomogeneousSystem> {
+pub fn solve_homogeneous_system(q: [DVec4; 3], s: DVec2) -> Option<HomogeneousSystem> {
     let matrix = [
         [q[0].x, q[1].x, q[2].x, -s.x],
         [q[0].y, q[1].y, q[2].y, -s.y],

@@ -18,18 +18,6 @@ pub enum Interpolation {
     Perspective,
 }
 
-/// Screen-space weights from edge values: `l_i = E_i(P) / (2 area)`.
-///
-/// ```
-/// use barylab::raster::interpolate::screen_weights;
-/// assert_eq!(screen_weights(&[2, 1, 1], 4), [0.5, 0.25, 0.25]);
-/// ```
-pub fn screen_weights(e: &[i64; 3], area2: i64) -> [f64; 3] {
-    // One reciprocal instead of three divisions (the per-pixel path).
-    let inv = 1.0 / area2 as f64;
-    [e[0] as f64 * inv, e[1] as f64 * inv, e[2] as f64 * inv]
-}
-
 /// Perspective-correct weights from screen weights `l` and the vertices' 1/w:
 /// `a_i = (l_i / w_i) / (l_0 / w_0 + l_1 / w_1 + l_2 / w_2)`.
 ///
@@ -53,9 +41,10 @@ pub fn perspective_weights(l: &[f64; 3], inv_w: &[f64; 3]) -> Option<[f64; 3]> {
 /// Everything interpolated at one covered sample of one (clipped) triangle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fragment {
-    /// The three edge values at the sample.
+    /// The three edge values at the sample (snapped, exact: they decided coverage).
     pub edges: [i64; 3],
-    /// Screen-space weights of the rasterized triangle's vertices.
+    /// Screen-space weights of the rasterized triangle's vertices, from the unsnapped
+    /// positions ([`WeightPlanes`](super::setup::WeightPlanes)).
     pub screen: [f64; 3],
     /// Perspective-correct weights of the rasterized triangle's vertices.
     pub perspective: [f64; 3],
@@ -86,11 +75,25 @@ impl Fragment {
     }
 }
 
-/// Interpolates everything at a sample with the given edge values (the renderer and the probe
-/// both call this). Returns `None` if the perspective denominator is not positive, which
-/// cannot happen for a sample inside a clipped triangle (all w > 0).
-pub fn fragment(setup: &TriangleSetup, edges: [i64; 3]) -> Option<Fragment> {
-    let l = screen_weights(&edges, setup.area2);
+/// Interpolates everything at the centre of pixel (x, y) (the renderer and the probe both
+/// call this): the screen weights from [`WeightPlanes::at_pixel`], then everything else from
+/// them ([`fragment_from_weights`]). Returns `None` if the perspective denominator is not
+/// positive, which cannot happen for a sample inside a clipped triangle (all w > 0).
+///
+/// [`WeightPlanes::at_pixel`]: super::setup::WeightPlanes::at_pixel
+pub fn fragment(setup: &TriangleSetup, x: u32, y: u32) -> Option<Fragment> {
+    let edges = setup.edge_values(sample_point(x, y));
+    fragment_from_weights(setup, edges, setup.weights.at_pixel(x, y))
+}
+
+/// Everything at a sample from its edge values and screen weights `l`:
+/// `p_i = (l_i / w_i) / sum_k (l_k / w_k)`, `1/w = sum l_i / w_i`, `depth = sum l_i d_i`,
+/// `noperspective` attributes `sum l_i f_i`, `smooth` ones `sum p_i f_i`.
+pub fn fragment_from_weights(
+    setup: &TriangleSetup,
+    edges: [i64; 3],
+    l: [f64; 3],
+) -> Option<Fragment> {
     let inv_w = [setup.v[0].inv_w, setup.v[1].inv_w, setup.v[2].inv_w];
     let p = perspective_weights(&l, &inv_w)?;
     let vars = [
@@ -128,8 +131,7 @@ pub fn edge_weights(setup: &TriangleSetup, l: &[f64; 3]) -> [f32; 3] {
 /// The uv the triangle's plane gives at pixel centre (x, y), extrapolated beyond its edges
 /// (as a GPU's helper invocations do), with the mode's weights.
 pub fn uv_at(setup: &TriangleSetup, x: u32, y: u32, mode: Interpolation) -> Option<Vec2> {
-    let e = setup.edge_values(sample_point(x, y));
-    Some(fragment(setup, e)?.varyings(mode).uv())
+    Some(fragment(setup, x, y)?.varyings(mode).uv())
 }
 
 /// Texture level of detail at pixel (x, y), from uv differences across its 2x2 quad with

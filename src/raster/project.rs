@@ -1,8 +1,10 @@
 //! Perspective divide and viewport transform: clip -> NDC -> window coordinates.
 //!
 //! Window coordinates here are image coordinates: x to the right from the left edge, y down
-//! from the top row (NDC y = +1 is image row 0), in pixels; depth z in [0, 1]. Positions are
-//! snapped to 1/256 pixel, the sub-pixel precision of the rasterizer.
+//! from the top row (NDC y = +1 is image row 0), in pixels; depth z in [0, 1]. Each vertex
+//! keeps two positions, as llvmpipe does: the float position, from which the interpolation
+//! weights are set up (so interpolated values equal the exact answer), and the position
+//! snapped to 1/256 pixel, the sub-pixel precision that decides coverage.
 
 use glam::{DVec2, DVec3, DVec4, I64Vec2};
 
@@ -49,9 +51,9 @@ pub struct WindowVertex {
     pub clip: DVec4,
     /// Normalized device coordinates (x/w, y/w, z/w).
     pub ndc: DVec3,
-    /// Snapped window position in 1/256-pixel units.
+    /// Snapped window position in 1/256-pixel units: decides coverage.
     pub fixed: I64Vec2,
-    /// Snapped window position in pixels (`fixed / 256`).
+    /// Window position in pixels before snapping: the interpolation weights come from it.
     pub window: DVec2,
     /// Window depth `z_ndc / 2 + 1/2`, in [0, 1].
     pub depth: f64,
@@ -106,6 +108,13 @@ pub fn snap(window: DVec2) -> I64Vec2 {
     I64Vec2::new((window.x * s).round() as i64, (window.y * s).round() as i64)
 }
 
+impl WindowVertex {
+    /// The snapped window position in pixels: `fixed / 256`.
+    pub fn window_snapped(&self) -> DVec2 {
+        self.fixed.as_dvec2() / SUBPIXEL as f64
+    }
+}
+
 /// Divides, maps to the viewport and snaps one clipped vertex.
 pub fn project_vertex(v: &ClipVertex, viewport: Viewport) -> WindowVertex {
     let ndc = ndc_from_clip(v.clip);
@@ -115,7 +124,7 @@ pub fn project_vertex(v: &ClipVertex, viewport: Viewport) -> WindowVertex {
         clip: v.clip,
         ndc,
         fixed,
-        window: fixed.as_dvec2() / SUBPIXEL as f64,
+        window: win.truncate(),
         depth: win.z,
         inv_w: 1.0 / v.clip.w,
         varyings: v.varyings,

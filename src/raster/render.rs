@@ -43,7 +43,7 @@ pub enum Rasterizer {
     /// interpolated from its own weights.
     #[default]
     EdgeFunction,
-    /// Spans per row, attributes stepped per pixel (seed 001's incremental scanline).
+    /// Spans per row, attributes stepped per pixel (the incremental scanline).
     Scanline,
 }
 
@@ -521,7 +521,8 @@ fn rasterize(
                     &mut |x, y, e| per_pixel.push((x, y, e)),
                 );
                 for (x, y, e) in per_pixel {
-                    if let Some(frag) = interpolate::fragment(setup, e) {
+                    let l = setup.weights.at_pixel(x, y);
+                    if let Some(frag) = interpolate::fragment_from_weights(setup, e, l) {
                         write(band, x, y, &frag);
                     }
                 }
@@ -550,7 +551,8 @@ fn rasterize(
                     if !setup.covers(&e) {
                         continue;
                     }
-                    if let Some(frag) = interpolate::fragment(setup, e) {
+                    let l = setup.weights.at_pixel(x, y);
+                    if let Some(frag) = interpolate::fragment_from_weights(setup, e, l) {
                         write(band, x, y, &frag);
                     }
                 }

@@ -1,18 +1,19 @@
-//! The scanline rasterizer (seed 001, section 6): per row, the covered span is found from the
-//! edges; along the span every attribute is stepped by a constant increment per pixel.
+//! The scanline rasterizer (the classic incremental form): per row, the covered span is found
+//! from the edges; along the span every attribute is stepped by a constant increment per pixel.
 //!
 //! - Span ends are exact: along a row (sample y fixed) an edge function is
 //!   `E(px) = a px + K` with `a = -dir_y` (positions in 1/256 pixel), so the samples
 //!   `px = 256 c + 128` that pass it form a half-line found by one integer division, with the
 //!   same fill rule as [`TriangleSetup::covers`]. Coverage is therefore identical to the
 //!   edge-function rasterizer, pixel for pixel. `K` itself steps by `dir_x * 256` per row.
-//! - Along a span, screen-space quantities are linear: the screen weights `l_i`, the depth,
+//! - Along a span, screen-space quantities are linear: the screen weights `l_i` (set up from
+//!   the unsnapped positions, [`WeightPlanes`](super::setup::WeightPlanes)), the depth,
 //!   `1/w`, every `noperspective` attribute, and also `attribute / w` for `smooth` ones. Each
 //!   is stepped by its per-pixel increment; the perspective-correct value is recovered per
 //!   pixel as `(attribute / w) / (1 / w)`, as the Vulkan specification's note describes.
 //!   Values equal the edge-function rasterizer's up to floating-point rounding.
 
-use super::interpolate::{Fragment, screen_weights};
+use super::interpolate::Fragment;
 use super::project::SUBPIXEL;
 use super::setup::{Edge, TriangleSetup, sample_point};
 use super::varying::{NUM_VARYINGS, Varyings};
@@ -164,11 +165,8 @@ pub fn rasterize_rows(
     rows: std::ops::Range<u32>,
     mut visit: impl FnMut(u32, u32, &Fragment),
 ) {
-    // Per pixel along x, each edge value changes by a * 256 with a = -dir_y, so the screen
-    // weight l_i changes by -dir_y,i * 256 / area2.
-    let dl: [f64; 3] = setup
-        .edges
-        .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);
+    // Per pixel along x, the screen weight l_i changes by -d_y,i / area2.
+    let dl = setup.weights.step_x();
     // Everything stepped is linear in the screen weights, so its increments are the same
     // map applied to the weight increments.
     let steps = Values::from_weights(setup, dl);
@@ -179,7 +177,7 @@ pub fn rasterize_rows(
         };
         // Exact values at the span's first pixel, then stepping.
         let mut e = setup.edge_values(sample_point(x0, y));
-        let mut vals = Values::from_weights(setup, screen_weights(&e, setup.area2));
+        let mut vals = Values::from_weights(setup, setup.weights.at_pixel(x0, y));
         for x in x0..=x1 {
             if let Some(frag) = vals.fragment(setup, e) {
                 visit(x, y, &frag);

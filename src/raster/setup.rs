@@ -10,6 +10,12 @@
 //! edge is a *left* edge (interior to its right) or a *bottom* edge (horizontal, interior
 //! above); it is not covered on a top or right edge. Two triangles sharing an edge see it in
 //! opposite directions, so every sample on it belongs to exactly one of them.
+//!
+//! The interpolation weights are set up separately, in `f64` from the unsnapped window
+//! positions ([`WeightPlanes`]), as llvmpipe sets up its interpolation from the float
+//! positions: coverage follows the 1/256 grid, values follow the triangle itself. A sample
+//! the snapped edges cover can therefore get a weight of about -1e-6 (a GPU gives it the
+//! same).
 
 use glam::{DVec2, I64Vec2};
 
@@ -93,6 +99,94 @@ impl Edge {
     }
 }
 
+/// The screen-space weights `l_0, l_1, l_2` of a triangle as functions of the window
+/// position, from the vertices' unsnapped window positions `V_0, V_1, V_2` (pixels):
+///
+/// `l_i(P) = ((V_{i+2} - V_{i+1}) x (P - V_{i+1})) / ((V_1 - V_0) x (V_2 - V_0))`,
+///
+/// the signed area of (edge i, P) over the triangle's, computed in `f64` in exactly this
+/// order: `(d_x (P_y - S_y) - d_y (P_x - S_x)) * (1 / area2)` with `S = V_{i+1}`,
+/// `d = V_{i+2} - V_{i+1}`. The lane paths repeat these operations bit for bit.
+///
+/// ```
+/// use barylab::raster::setup::WeightPlanes;
+/// use glam::DVec2;
+/// let w = WeightPlanes::new([DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0), DVec2::new(0.0, 2.0)])
+///     .unwrap();
+/// // The centre of pixel (0, 0): P = (0.5, 0.5); l_1 = 0.5 / 4, l_2 = 0.5 / 2.
+/// assert_eq!(w.at_pixel(0, 0), [0.625, 0.125, 0.25]);
+/// // A vertex has weight 1 at itself, and the weights step by -d_y / area2 along a row.
+/// assert_eq!(w.at(DVec2::new(4.0, 0.0)), [0.0, 1.0, 0.0]);
+/// assert_eq!(w.step_x(), [-0.25, 0.25, 0.0]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WeightPlanes {
+    /// Start of edge `i`: `V_{i+1}`.
+    pub start: [DVec2; 3],
+    /// Direction of edge `i`: `V_{i+2} - V_{i+1}`.
+    pub dir: [DVec2; 3],
+    /// Twice the signed area, `(V_1 - V_0) x (V_2 - V_0)`, in pixel^2.
+    pub area2: f64,
+    /// `1 / area2`.
+    pub inv_area2: f64,
+}
+
+impl WeightPlanes {
+    /// `None` when the three positions have no finite, non-zero area.
+    pub fn new(v: [DVec2; 3]) -> Option<Self> {
+        let area2 = (v[1] - v[0]).perp_dot(v[2] - v[0]);
+        let inv_area2 = 1.0 / area2;
+        if area2 == 0.0 || !inv_area2.is_finite() || !area2.is_finite() {
+            return None;
+        }
+        let start = [v[1], v[2], v[0]];
+        let end = [v[2], v[0], v[1]];
+        Some(Self {
+            start,
+            dir: [0, 1, 2].map(|i| end[i] - start[i]),
+            area2,
+            inv_area2,
+        })
+    }
+
+    /// The part of `l_i`'s numerator that depends on the row: `d_x (P_y - S_y)`.
+    #[inline(always)]
+    pub fn row_term(&self, i: usize, y: f64) -> f64 {
+        self.dir[i].x * (y - self.start[i].y)
+    }
+
+    /// `l_i` from its row term at window x: `(row_term - d_y (P_x - S_x)) * (1 / area2)`.
+    #[inline(always)]
+    pub fn weight(&self, i: usize, row_term: f64, x: f64) -> f64 {
+        (row_term - self.dir[i].y * (x - self.start[i].x)) * self.inv_area2
+    }
+
+    /// The three weights at a window position.
+    pub fn at(&self, p: DVec2) -> [f64; 3] {
+        [0, 1, 2].map(|i| self.weight(i, self.row_term(i, p.y), p.x))
+    }
+
+    /// The three weights at the centre of pixel (col, row): `P = (col + 0.5, row + 0.5)`.
+    pub fn at_pixel(&self, col: u32, row: u32) -> [f64; 3] {
+        self.at(pixel_centre(col, row))
+    }
+
+    /// How much each weight changes from one pixel to the next along a row: `-d_y / area2`.
+    pub fn step_x(&self) -> [f64; 3] {
+        self.dir.map(|d| -d.y * self.inv_area2)
+    }
+
+    /// The gradient of `l_i` per pixel: `(-d_y, d_x) / area2`.
+    pub fn gradients(&self) -> [DVec2; 3] {
+        self.dir.map(|d| DVec2::new(-d.y, d.x) * self.inv_area2)
+    }
+}
+
+/// The centre of pixel (col, row) in window coordinates (pixels): `(col + 0.5, row + 0.5)`.
+pub fn pixel_centre(col: u32, row: u32) -> DVec2 {
+    DVec2::new(f64::from(col) + 0.5, f64::from(row) + 0.5)
+}
+
 /// A triangle ready for rasterization.
 #[derive(Clone, Copy, Debug)]
 pub struct TriangleSetup {
@@ -100,8 +194,13 @@ pub struct TriangleSetup {
     pub v: [WindowVertex; 3],
     /// Edge `i` is opposite vertex `i` (from vertex i+1 to vertex i+2).
     pub edges: [Edge; 3],
-    /// Twice the triangle's area, in 1/65536 pixel^2, always positive.
+    /// Twice the snapped triangle's area, in 1/65536 pixel^2, always positive.
     pub area2: i64,
+    /// The interpolation weights, from the unsnapped positions (see [`WeightPlanes`]); from
+    /// the snapped ones in the rare sliver whose unsnapped area is zero or of the other sign
+    /// than the snapped one (a triangle the grid made, whose weights the float positions
+    /// cannot give).
+    pub weights: WeightPlanes,
     pub facing: Facing,
     /// Inclusive pixel bounds `[x0, x1] x [y0, y1]` of candidate samples, within the viewport.
     pub bounds: PixelBounds,
@@ -155,10 +254,14 @@ pub fn setup_triangle(v: [WindowVertex; 3], viewport: Viewport) -> Option<Triang
         Edge::new(p[0], p[1], positive),
     ];
     let bounds = pixel_bounds(&p, viewport)?;
+    let weights = WeightPlanes::new(v.map(|v| v.window))
+        .filter(|w| (w.area2 > 0.0) == positive)
+        .or_else(|| WeightPlanes::new(v.map(|v| v.window_snapped())))?;
     Some(TriangleSetup {
         v,
         edges,
         area2: signed.abs(),
+        weights,
         // Clockwise in image coordinates (y down) is counter-clockwise... for y up; positive
         // area here means clockwise as displayed, which OpenGL calls the back face.
         facing: if positive {
@@ -205,13 +308,10 @@ impl TriangleSetup {
     }
 
     /// Screen gradient (per pixel) of each *source-triangle* weight across this triangle, with
-    /// the weights taken as screen-linear: `grad f = sum_k f_k grad l_k`, where
-    /// `grad l_k = 256 (-dir_k.y, dir_k.x) / area2` for edge k (positions in 1/256 pixel).
+    /// the weights taken as screen-linear: `grad f = sum_k f_k grad l_k`, with `grad l_k`
+    /// from [`WeightPlanes::gradients`].
     pub fn source_weight_gradients(&self) -> [DVec2; 3] {
-        let s = SUBPIXEL as f64 / self.area2 as f64;
-        let grad_l = self
-            .edges
-            .map(|e| DVec2::new(-e.dir.y as f64, e.dir.x as f64) * s);
+        let grad_l = self.weights.gradients();
         let mut out = [DVec2::ZERO; 3];
         for (i, g) in out.iter_mut().enumerate() {
             for (k, gl) in grad_l.iter().enumerate() {

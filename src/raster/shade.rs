@@ -12,7 +12,7 @@ pub enum Shading {
     /// The texture sampled at the interpolated uv.
     #[default]
     Texture,
-    /// The interpolated vertex colour (seed 003's red/green/blue corners).
+    /// The interpolated vertex colour (red/green/blue corners).
     VertexColor,
     /// The source triangle's three weights as red, green, blue.
     Barycentric,
@@ -24,7 +24,7 @@ pub enum Shading {
 pub const WIRE_COLOR: [u8; 4] = [16, 16, 24, 255];
 
 /// Wireframe line width inside each triangle, in pixels. The overlay thresholds the smallest
-/// weight (seed 003); the threshold for weight i is this width times the weight's screen
+/// weight; the threshold for weight i is this width times the weight's screen
 /// gradient, so lines keep one width on screen however close the triangle is.
 pub const WIRE_WIDTH_PX: f64 = 1.0;
 

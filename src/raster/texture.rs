@@ -46,7 +46,7 @@ pub enum BuiltinTexture {
     UvGrid,
     /// An 8x8 black-and-white checkerboard, 256x256 texels.
     Checker,
-    /// The 2x2 texture of seed 001: red, white / green, blue.
+    /// The 2x2 texture of the classic tutorial: red, white / green, blue.
     Rgbw2x2,
     /// 1024x1024 texels of deterministic colour noise (the benchmark texture: every lookup
     /// touches fresh memory, as with a photo).
@@ -489,10 +489,22 @@ impl Texture {
     /// The texel nearest filtering reads in one level: `(floor(u W), floor(v H))`, wrapped.
     fn nearest_texel(&self, uv: Vec2, wrap: Wrap, level: u32) -> (u32, u32) {
         let (w, h) = self.level_size(level);
-        (
-            wrap_coord(texel_floor(uv.x * w as f32), w, wrap),
-            wrap_coord(texel_floor(uv.y * h as f32), h, wrap),
-        )
+        let [i, j] = self.nearest_unwrapped(uv, level);
+        (wrap_coord(i, w, wrap), wrap_coord(j, h, wrap))
+    }
+
+    /// The texel nearest filtering reads before the wrap mode applies:
+    /// `(floor(u W), floor(v H))` (`u W` in `f32`, clamped as [`MAX_TEXEL_COORD`] says).
+    ///
+    /// ```
+    /// use barylab::raster::texture::Texture;
+    /// use glam::Vec2;
+    /// let t = Texture::from_texels(4, 4, vec![[0; 4]; 16]).unwrap();
+    /// assert_eq!(t.nearest_unwrapped(Vec2::new(1.3, -0.1), 0), [5, -1]);
+    /// ```
+    pub fn nearest_unwrapped(&self, uv: Vec2, level: u32) -> [i64; 2] {
+        let (w, h) = self.level_size(level);
+        [texel_floor(uv.x * w as f32), texel_floor(uv.y * h as f32)]
     }
 
     /// Nearest or bilinear taps in one mipmap level.
@@ -680,7 +692,7 @@ fn noise() -> Texture {
 }
 
 fn rgbw_2x2() -> Texture {
-    // Seed 001's picture[x][y]: (0,0) red, (0,1) white, (1,0) green, (1,1) blue, with y = v.
+    // The picture[x][y]: (0,0) red, (0,1) white, (1,0) green, (1,1) blue, with y = v.
     Texture::new_with_mips(
         2,
         2,

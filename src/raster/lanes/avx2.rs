@@ -9,9 +9,9 @@ use super::{
     BLOCK_ROWS, Block, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap, Stepped,
     Target, classify,
 };
-use crate::raster::interpolate::{Interpolation, screen_weights};
+use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span;
-use crate::raster::setup::{TriangleSetup, sample_point};
+use crate::raster::setup::{TriangleSetup, WeightPlanes};
 use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
@@ -332,17 +332,26 @@ fn dot3(w: &[__m256d; 3], x: [f64; 3]) -> __m256d {
     _mm256_add_pd(t, _mm256_mul_pd(w[2], _mm256_set1_pd(x[2])))
 }
 
-/// uv, depth (f64 lanes) and the validity bits of four samples from their edge values, as
+/// The screen weights at four window x (`px`, pixel centres) of one row, from the row terms
+/// `row[i]`: [`WeightPlanes::weight`]'s operations, `(row - d_y (x - S_x)) * (1 / area2)`.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn weights4(w: &WeightPlanes, row: &[f64; 3], px: __m256d) -> [__m256d; 3] {
+    [0, 1, 2].map(|i| {
+        let dx = _mm256_sub_pd(px, _mm256_set1_pd(w.start[i].x));
+        let t = _mm256_sub_pd(
+            _mm256_set1_pd(row[i]),
+            _mm256_mul_pd(_mm256_set1_pd(w.dir[i].y), dx),
+        );
+        _mm256_mul_pd(t, _mm256_set1_pd(w.inv_area2))
+    })
+}
+
+/// uv, depth (f64 lanes) and the validity bits of four samples from their screen weights, as
 /// `interpolate::fragment`.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn from_edges4(e: [__m256d; 3], c: &Constants, mode: Interpolation, color: LaneColor) -> Four {
-    let ia = _mm256_set1_pd(c.inv_area);
-    let l = [
-        _mm256_mul_pd(e[0], ia),
-        _mm256_mul_pd(e[1], ia),
-        _mm256_mul_pd(e[2], ia),
-    ];
+fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: LaneColor) -> Four {
     let q = [
         _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
         _mm256_mul_pd(l[1], _mm256_set1_pd(c.inv_w[1])),
@@ -392,7 +401,7 @@ fn from_edges4(e: [__m256d; 3], c: &Constants, mode: Interpolation, color: LaneC
     }
 }
 
-/// What [`from_edges4`] finds for four samples.
+/// What [`from_weights4`] finds for four samples.
 struct Four {
     u: __m256d,
     v: __m256d,
@@ -516,8 +525,13 @@ pub(super) fn edge_triangle(
                     if covered == 0 {
                         continue;
                     }
-                    let lo = from_edges4(lo, &consts, mode, color);
-                    let hi = from_edges4(hi, &consts, mode, color);
+                    let py = f64::from(y) + 0.5;
+                    let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
+                    let px = _mm256_set1_pd(f64::from(bx) + 0.5);
+                    let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
+                    let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
+                    let lo = from_weights4(lo, &consts, mode, color);
+                    let hi = from_weights4(hi, &consts, mode, color);
                     let ok = covered & (lo.ok | (hi.ok << 4));
                     if ok == 0 {
                         continue;
@@ -557,15 +571,14 @@ pub(super) fn scanline_triangle(
 ) {
     let mut lookups = Lookups::new(sampler, wide);
     let consts = Constants::new(setup, mode, false, LaneColor::Texture);
-    let step = Stepped::row_step(setup, &consts, mode);
+    let step = Stepped::row_step(&consts, mode);
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
     for y in y_start..=y_end {
         let Some((x0, x1)) = row_span(setup, y) else {
             continue;
         };
-        let e = setup.edge_values(sample_point(x0, y));
-        let start = Stepped::from_weights(screen_weights(&e, setup.area2), &consts, mode);
+        let start = Stepped::span_start(&consts, mode, x0, y);
         // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
         let lanes = Stepped::lanes(start, &step);
         let load = |f: fn(&Stepped) -> f64, h: usize| {

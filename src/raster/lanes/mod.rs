@@ -1,17 +1,21 @@
 //! The fast path: eight pixels of a row at a time, colour and depth only.
 //!
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
-//! (the app's canvas, `barylab bench`) and the shading is a texture with nearest or bilinear
-//! filtering (with the wireframe overlay on the edge-function path). Other shadings go
-//! through [`render`](super::render)'s per-pixel code (after the block rejection of the
+//! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
+//! nearest or bilinear filtering, vertex colour, barycentric and depth shading, and the
+//! wireframe overlay; the scanline lanes draw texture shading without the wireframe. Other
+//! cases (trilinear filtering, the scanline rasterizer's other shadings) go through
+//! [`render`](super::render)'s per-pixel code (after the block rejection of the
 //! edge-function path).
 //!
 //! - **Edge functions** ([`edge_triangle`]): the bounding box is walked in blocks of
 //!   [`LANES`] columns by [`BLOCK_ROWS`] rows. The three edge functions at a block's corners
 //!   reject it whole (all four corners outside one edge) or accept it whole (all inside every
 //!   edge: no per-pixel test). Per row, the edge values of the eight pixels are exact integers
-//!   carried in `f64` lanes (checked to stay below 2^52), and every later step repeats the
-//!   operations of [`interpolate::fragment`](super::interpolate::fragment) and
+//!   carried in `f64` lanes (checked to stay below 2^52) and decide coverage; the screen
+//!   weights are computed per lane with the operations of
+//!   [`WeightPlanes::weight`](super::setup::WeightPlanes::weight), and every later step
+//!   repeats the operations of [`interpolate::fragment`](super::interpolate::fragment) and
 //!   [`Texture::sample_rgba8`] in the same order, so the result is **bit-identical** to the
 //!   per-pixel renderer and to what the probe reports.
 //! - **Scanline** ([`scanline_triangle`]): exact integer spans per row
@@ -32,10 +36,10 @@
 
 use std::sync::atomic::{AtomicU8, Ordering};
 
-use super::interpolate::{Interpolation, screen_weights};
+use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
-use super::setup::{PixelBounds, TriangleSetup, sample_point};
+use super::setup::{PixelBounds, TriangleSetup, WeightPlanes};
 use super::shade::{WIRE_COLOR, WIRE_WIDTH_PX, unorm8};
 use super::texture::{
     Filter, MAX_TEXEL_COORD, Texture, Wrap, byte_from_sum, fast_floor, wrap_coord,
@@ -234,7 +238,7 @@ fn classify(planes: &EdgePlanes, cols: (i64, i64), rows: (i64, i64)) -> Block {
 /// [`interpolate::fragment`]: super::interpolate::fragment
 #[derive(Clone, Copy, Debug)]
 struct Constants {
-    inv_area: f64,
+    weights: WeightPlanes,
     inv_w: [f64; 3],
     depth: [f64; 3],
     u: [f64; 3],
@@ -282,7 +286,7 @@ impl Constants {
             }
         });
         Self {
-            inv_area: 1.0 / setup.area2 as f64,
+            weights: setup.weights,
             inv_w: setup.v.map(|v| v.inv_w),
             depth: setup.v.map(|v| v.depth),
             u: uv.map(|t| f64::from(t.x)),
@@ -343,18 +347,29 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
     }
 }
 
-/// From edge values, exactly as `interpolate::fragment` computes them: `l_i = E_i / (2A)`,
+/// The screen weights of the eight pixels `x, x + 1, ...` of row `y`, as
+/// [`WeightPlanes::at_pixel`] computes them.
+#[inline(always)]
+fn row_weights(w: &WeightPlanes, x: u32, y: u32) -> [F64s; 3] {
+    let py = f64::from(y) + 0.5;
+    let mut l = [[0.0; LANES]; 3];
+    for i in 0..3 {
+        let row = w.row_term(i, py);
+        for k in 0..LANES {
+            l[i][k] = w.weight(i, row, (f64::from(x) + OFFSETS[k]) + 0.5);
+        }
+    }
+    l
+}
+
+/// From screen weights, exactly as `interpolate::fragment` computes them:
 /// `q_i = l_i / w_i`, `p_i = q_i / sum q`, `uv = sum w_i uv_i` with the mode's weights,
 /// `depth = sum l_i d_i`; a sample is valid when `sum q` is positive and finite.
 #[inline(always)]
-fn from_edges(e: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
+fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
     let mut out = Samples::new();
     for k in 0..LANES {
-        let l = [
-            e[0][k] * c.inv_area,
-            e[1][k] * c.inv_area,
-            e[2][k] * c.inv_area,
-        ];
+        let l = [lw[0][k], lw[1][k], lw[2][k]];
         let q = [l[0] * c.inv_w[0], l[1] * c.inv_w[1], l[2] * c.inv_w[2]];
         let sum = q[0] + q[1] + q[2];
         out.ok[k] = sum > 0.0 && sum < f64::INFINITY;
@@ -620,7 +635,8 @@ fn edge_triangle_impl(
                     }
                     match &sampler {
                         Some(sampler) => {
-                            let mut s = from_edges(&e, &consts, mode);
+                            let l = row_weights(&consts.weights, bx, y);
+                            let mut s = from_weights(&l, &consts, mode);
                             for k in 0..LANES {
                                 s.ok[k] &= covered[k];
                             }
@@ -726,12 +742,14 @@ impl Stepped {
     }
 
     /// The increments per pixel along a row: the map applied to the screen weights'
-    /// increments `-dir_y,i * 256 / (2A)` (as the per-pixel scanline rasterizer steps them).
-    fn row_step(setup: &TriangleSetup, c: &Constants, mode: Interpolation) -> Self {
-        let dl = setup
-            .edges
-            .map(|e| (-e.dir.y * SUBPIXEL) as f64 / setup.area2 as f64);
-        Self::from_weights(dl, c, mode)
+    /// increments [`WeightPlanes::step_x`] (as the per-pixel scanline rasterizer steps them).
+    fn row_step(c: &Constants, mode: Interpolation) -> Self {
+        Self::from_weights(c.weights.step_x(), c, mode)
+    }
+
+    /// The values at the first pixel `x0` of a span of row `y`.
+    fn span_start(c: &Constants, mode: Interpolation, x0: u32, y: u32) -> Self {
+        Self::from_weights(c.weights.at_pixel(x0, y), c, mode)
     }
 
     /// The values of a row's first eight pixels: lane k is `start` after k single steps.
@@ -763,14 +781,13 @@ fn scanline_triangle_impl(
     let mode = shading.mode;
     let consts = Constants::new(setup, mode, false, LaneColor::Texture);
     let sampler = Sampler::new(texture, shading.filter, shading.wrap);
-    let step = Stepped::row_step(setup, &consts, mode);
+    let step = Stepped::row_step(&consts, mode);
     let mut colors = [[0u8; 4]; LANES];
     for y in y_start..=y_end {
         let Some((x0, x1)) = row_span(setup, y) else {
             continue;
         };
-        let e = setup.edge_values(sample_point(x0, y));
-        let start = Stepped::from_weights(screen_weights(&e, setup.area2), &consts, mode);
+        let start = Stepped::span_start(&consts, mode, x0, y);
         // Lane k holds pixel x0 + k; each chunk advances every lane by eight increments.
         let mut lanes = Stepped::lanes(start, &step);
         let n = LANES as f64;
