@@ -104,7 +104,7 @@ scene_tests! {
     far_checker: "far-checker.json",
     front: "front.json",
     orthographic: "orthographic.json",
-    seed001_2x2: "seed001-2x2.json",
+    seed001_2x2: "rgbw-2x2.json",
     vertex_colors: "vertex-colors.json",
 }
 

@@ -111,6 +111,10 @@ pub enum Output {
     VertexColor,
     /// `gl_PrimitiveID + 1` as little-endian RGBA bytes (0 = no triangle).
     TriangleId,
+    /// The interpolated values as floats, into an RGBA32F framebuffer:
+    /// `(u, v, window depth, 1/w)` (`gl_FragCoord.z`, `gl_FragCoord.w`); see
+    /// [`Llvmpipe::read_values`].
+    Values,
 }
 
 /// A live headless llvmpipe context with one scene loaded.
@@ -135,9 +139,17 @@ struct Objects {
     texture: glow::Texture,
     fbo: glow::Framebuffer,
     renderbuffers: [glow::Renderbuffer; 2],
+    /// The RGBA32F framebuffer of [`Output::Values`].
+    values_fbo: glow::Framebuffer,
+    values_renderbuffers: [glow::Renderbuffer; 2],
 }
 
-const OUTPUTS: [Output; 3] = [Output::Texture, Output::VertexColor, Output::TriangleId];
+const OUTPUTS: [Output; 4] = [
+    Output::Texture,
+    Output::VertexColor,
+    Output::TriangleId,
+    Output::Values,
+];
 const MODES: [Interpolation; 2] = [Interpolation::Affine, Interpolation::Perspective];
 
 fn program_index(output: Output, mode: Interpolation) -> usize {
@@ -169,10 +181,12 @@ void main() {
     out_color = texture(tex, v_uv);
 #elif OUTPUT == 1
     out_color = vec4(v_color, 1.0);
-#else
+#elif OUTPUT == 2
     uint id = uint(gl_PrimitiveID + 1);
     out_color = vec4(float(id & 255u), float((id >> 8) & 255u), float((id >> 16) & 255u),
                      float((id >> 24) & 255u)) / 255.0;
+#else
+    out_color = vec4(v_uv, gl_FragCoord.z, gl_FragCoord.w);
 #endif
 }
 ";
@@ -370,31 +384,9 @@ impl Llvmpipe {
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_S, wrap);
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_WRAP_T, wrap);
 
-            let fbo = gl.create_framebuffer()?;
-            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-            let color = gl.create_renderbuffer()?;
-            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(color));
             let (w, h) = (scene.width as i32, scene.height as i32);
-            gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA8, w, h);
-            gl.framebuffer_renderbuffer(
-                glow::FRAMEBUFFER,
-                glow::COLOR_ATTACHMENT0,
-                glow::RENDERBUFFER,
-                Some(color),
-            );
-            let depth = gl.create_renderbuffer()?;
-            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
-            gl.renderbuffer_storage(glow::RENDERBUFFER, glow::DEPTH_COMPONENT32F, w, h);
-            gl.framebuffer_renderbuffer(
-                glow::FRAMEBUFFER,
-                glow::DEPTH_ATTACHMENT,
-                glow::RENDERBUFFER,
-                Some(depth),
-            );
-            let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
-            if status != glow::FRAMEBUFFER_COMPLETE {
-                return Err(format!("framebuffer incomplete (status {status:#x})"));
-            }
+            let (values_fbo, values_renderbuffers) = Self::framebuffer(gl, glow::RGBA32F, w, h)?;
+            let (fbo, [color, depth]) = Self::framebuffer(gl, glow::RGBA8, w, h)?;
             gl.viewport(0, 0, w, h);
             gl.enable(glow::DEPTH_TEST);
             gl.depth_func(glow::LESS);
@@ -418,9 +410,52 @@ impl Llvmpipe {
                 texture,
                 fbo,
                 renderbuffers: [color, depth],
+                values_fbo,
+                values_renderbuffers,
             });
         }
         Ok(())
+    }
+
+    /// A `width x height` framebuffer with a colour buffer of `format` and a 32-bit float
+    /// depth buffer, left bound.
+    ///
+    /// # Safety
+    /// Plain GL calls: `gl` must be the current context.
+    unsafe fn framebuffer(
+        gl: &glow::Context,
+        format: u32,
+        w: i32,
+        h: i32,
+    ) -> Result<(glow::Framebuffer, [glow::Renderbuffer; 2]), String> {
+        // SAFETY: the caller's context is current; the objects are created here.
+        unsafe {
+            let fbo = gl.create_framebuffer()?;
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+            let color = gl.create_renderbuffer()?;
+            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(color));
+            gl.renderbuffer_storage(glow::RENDERBUFFER, format, w, h);
+            gl.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                glow::COLOR_ATTACHMENT0,
+                glow::RENDERBUFFER,
+                Some(color),
+            );
+            let depth = gl.create_renderbuffer()?;
+            gl.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));
+            gl.renderbuffer_storage(glow::RENDERBUFFER, glow::DEPTH_COMPONENT32F, w, h);
+            gl.framebuffer_renderbuffer(
+                glow::FRAMEBUFFER,
+                glow::DEPTH_ATTACHMENT,
+                glow::RENDERBUFFER,
+                Some(depth),
+            );
+            let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
+            if status != glow::FRAMEBUFFER_COMPLETE {
+                return Err(format!("framebuffer incomplete (status {status:#x})"));
+            }
+            Ok((fbo, [color, depth]))
+        }
     }
 
     fn unload(&mut self) {
@@ -439,7 +474,8 @@ impl Llvmpipe {
             }
             gl.delete_texture(o.texture);
             gl.delete_framebuffer(o.fbo);
-            for r in o.renderbuffers {
+            gl.delete_framebuffer(o.values_fbo);
+            for r in o.renderbuffers.into_iter().chain(o.values_renderbuffers) {
                 gl.delete_renderbuffer(r);
             }
         }
@@ -471,13 +507,19 @@ impl Llvmpipe {
             Filter::Bilinear => glow::LINEAR,
             Filter::Trilinear => return Err("trilinear needs mipmaps; not compared".into()),
         } as i32;
-        let bg = if output == Output::TriangleId {
+        let bg = if matches!(output, Output::TriangleId | Output::Values) {
             [0.0; 4]
         } else {
             o.background.map(|c| f32::from(c) / 255.0)
         };
+        let fbo = if output == Output::Values {
+            o.values_fbo
+        } else {
+            o.fbo
+        };
         // SAFETY: plain GL calls on the current context with the loaded objects.
         unsafe {
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, f);
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, f);
             gl.use_program(Some(o.programs[program_index(output, mode)]));
@@ -545,6 +587,44 @@ impl Llvmpipe {
         for row in (0..h).rev() {
             out.extend(
                 bytes[row * w * 4..(row + 1) * w * 4]
+                    .chunks_exact(4)
+                    .map(|c| [c[0], c[1], c[2], c[3]]),
+            );
+        }
+        Ok(out)
+    }
+
+    /// Draws [`Output::Values`] once and reads the floats back, image row 0 (the top) first:
+    /// per pixel `[u, v, window depth, 1/w]`, all 0 where nothing was drawn (1/w > 0 where
+    /// something was).
+    pub fn read_values(&self, mode: Interpolation) -> Result<Vec<[f32; 4]>, String> {
+        self.draw(Output::Values, Filter::Nearest, mode)?;
+        self.finish();
+        let o = self.objects.as_ref().ok_or("no scene loaded")?;
+        let (w, h) = (o.width as usize, o.height as usize);
+        let mut bytes = vec![0u8; w * h * 16];
+        // SAFETY: the buffer holds exactly width * height RGBA32F pixels.
+        unsafe {
+            self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
+            self.gl.read_pixels(
+                0,
+                0,
+                o.width as i32,
+                o.height as i32,
+                glow::RGBA,
+                glow::FLOAT,
+                glow::PixelPackData::Slice(Some(&mut bytes)),
+            );
+        }
+        let floats: Vec<f32> = bytes
+            .chunks_exact(4)
+            .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
+            .collect();
+        // GL's row 0 is the bottom one.
+        let mut out = Vec::with_capacity(w * h);
+        for row in (0..h).rev() {
+            out.extend(
+                floats[row * w * 4..(row + 1) * w * 4]
                     .chunks_exact(4)
                     .map(|c| [c[0], c[1], c[2], c[3]]),
             );
@@ -760,6 +840,73 @@ pub fn compare_mesh(
                 });
             }
         }
+    }
+    Ok(out)
+}
+
+/// How far barylab's interpolated values are from llvmpipe's, over the pixels both cover.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ValueComparison {
+    pub mode: Interpolation,
+    /// Pixels compared.
+    pub pixels: usize,
+    /// Largest |u - u_gl| or |v - v_gl|.
+    pub uv: f64,
+    /// Where it is (x, y), with barylab's and llvmpipe's uv there.
+    pub uv_at: Option<((u32, u32), [f32; 2], [f32; 2])>,
+    /// Largest |depth - depth_gl| (window depth).
+    pub depth: f64,
+    /// Largest |1/w - (1/w)_gl| relative to |(1/w)_gl|.
+    pub inv_w_relative: f64,
+}
+
+/// Draws `mesh` (its clip coordinates rounded to f32) with both and compares uv, window depth
+/// and 1/w, affine and perspective, over the pixels both cover.
+pub fn compare_values(
+    lp: &mut Llvmpipe,
+    mesh: &ClipMesh,
+    texture: &Texture,
+    base: &barylab::raster::RenderSettings,
+) -> Result<Vec<ValueComparison>, String> {
+    let mesh = mesh_at_f32(mesh);
+    lp.load(&GlScene::new(
+        &mesh,
+        texture,
+        base.width,
+        base.height,
+        base.wrap,
+        base.background,
+    ))?;
+    let mut out = Vec::new();
+    for mode in MODES {
+        let settings = barylab::raster::RenderSettings { mode, ..*base };
+        let ours = barylab::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
+        let gl = lp.read_values(mode)?;
+        let f = &ours.frame;
+        let uv = match mode {
+            Interpolation::Affine => &f.uv_affine,
+            Interpolation::Perspective => &f.uv_perspective,
+        };
+        let mut c = ValueComparison {
+            mode,
+            ..ValueComparison::default()
+        };
+        for (k, g) in gl.iter().enumerate() {
+            if f.triangle[k] == barylab::raster::NO_TRIANGLE || g[3] <= 0.0 {
+                continue;
+            }
+            c.pixels += 1;
+            let d = |a: f32, b: f32| (f64::from(a) - f64::from(b)).abs();
+            let duv = d(uv[k][0], g[0]).max(d(uv[k][1], g[1]));
+            if duv > c.uv {
+                c.uv = duv;
+                let xy = ((k as u32) % settings.width, (k as u32) / settings.width);
+                c.uv_at = Some((xy, uv[k], [g[0], g[1]]));
+            }
+            c.depth = c.depth.max(d(f.depth[k], g[2]));
+            c.inv_w_relative = c.inv_w_relative.max(d(f.inv_w[k], g[3]) / f64::from(g[3]));
+        }
+        out.push(c);
     }
     Ok(out)
 }

@@ -254,5 +254,27 @@ fn conformance() -> Result<(), String> {
             );
         }
     }
+    println!("\nInterpolated values, barylab against llvmpipe, over the pixels both cover:\n");
+    println!(
+        "| scene | size | mode | pixels | max uv difference | max depth difference | max 1/w difference (relative) |"
+    );
+    println!("|---|---|---|---|---|---|---|");
+    for (name, size) in CONFORMANCE_SCENES {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(name);
+        let (_, scene, texture) = gl::load(&path, size)?;
+        let s = scene.settings();
+        for c in gl::compare_values(&mut lp, &scene.to_mesh(), &texture, &s)? {
+            println!(
+                "| {name} | {}x{} | {} | {} | {:.1e} | {:.1e} | {:.1e} |",
+                s.width,
+                s.height,
+                mode_name(c.mode),
+                c.pixels,
+                c.uv,
+                c.depth,
+                c.inv_w_relative
+            );
+        }
+    }
     Ok(())
 }
