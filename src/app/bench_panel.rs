@@ -1,7 +1,7 @@
-//! The benchmark window: times the two rasterizers (edge functions and seed 001's scanline)
+//! The benchmark window: times the two rasterizers (edge functions and the classic scanline)
 //! over filter x mode x threads, in a background thread, on the current scene at the canvas
 //! size or on the 1080p reference scene; shows a table, a bar chart, the measured edge /
-//! scanline ratio next to seed 001's, and llvmpipe's reference figures.
+//! scanline ratio next to a published measurement, and llvmpipe's reference figures.
 //!
 //! The measuring is [`crate::bench`], the same as `barylab bench`.
 
@@ -21,7 +21,7 @@ pub mod text {
     pub const TITLE: &str = "Benchmark";
     pub const OPEN: &str = "Benchmark";
     pub const OPEN_TIP: &str = "Time the two rasterizers (edge functions, scanline) on this \
-        scene: every filter x mode x thread count, median ms per frame. Compare with seed 001's \
+        scene: every filter x mode x thread count, median ms per frame. Compare with a published \
         measurement and with Mesa's llvmpipe.";
     pub const RUN: &str = "Run";
     pub const RUN_TIP: &str = "Render every configuration the given number of times in the \
@@ -52,7 +52,7 @@ pub mod text {
     pub const MPIX: &str = "Mpix/s";
     pub const CHART_Y: &str = "ms per frame";
     pub const CHART_CAPTION: &str = "Median ms per frame, lower is faster.";
-    pub const SEED_CLAIM: &str = "Seed 001 measured per-pixel barycentric evaluation about 2x \
+    pub const SEED_CLAIM: &str = "A rasterizer tutorial measured per-pixel barycentric evaluation about 2x \
         slower than the scanline with increments: 1.40 ms vs 0.73 ms (= 1.9x).";
     pub const MEASURED_RATIO: &str = "Measured here: edge functions take";
     pub const MEASURED_RATIO_END: &str = "the scanline's time (median over the cells above).";

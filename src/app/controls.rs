@@ -99,7 +99,7 @@ pub mod tips {
         whole blocks rejected or accepted at once) is tested against the three edge functions \
         and interpolated from its own weights. The inspector shows exactly these numbers.";
     pub const SCANLINE: &str = "Per row, the covered span is found from the edges, and u/w, v/w, \
-        1/w are stepped by one addition per pixel (seed 001, section 6). Same pixels covered; \
+        1/w are stepped by one addition per pixel (the classic incremental scanline). Same pixels covered; \
         values equal up to rounding. The inspector still shows the edge-function derivation.";
     pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
         thresholding the smallest weight. Key: W";
