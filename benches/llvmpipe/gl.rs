@@ -844,6 +844,9 @@ pub fn compare_mesh(
     Ok(out)
 }
 
+/// A pixel (x, y) with barylab's and llvmpipe's uv there.
+pub type UvAt = ((u32, u32), [f32; 2], [f32; 2]);
+
 /// How far barylab's interpolated values are from llvmpipe's, over the pixels both cover.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ValueComparison {
@@ -852,8 +855,8 @@ pub struct ValueComparison {
     pub pixels: usize,
     /// Largest |u - u_gl| or |v - v_gl|.
     pub uv: f64,
-    /// Where it is (x, y), with barylab's and llvmpipe's uv there.
-    pub uv_at: Option<((u32, u32), [f32; 2], [f32; 2])>,
+    /// Where it is, with both uv there.
+    pub uv_at: Option<UvAt>,
     /// Largest |depth - depth_gl| (window depth).
     pub depth: f64,
     /// Largest |1/w - (1/w)_gl| relative to |(1/w)_gl|.
