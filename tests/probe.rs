@@ -133,7 +133,7 @@ fn every_pixel_of_a_model() {
 }
 
 /// The hand-worked scene: an 8x8 image, one triangle in clip space with window positions
-/// A = (0, 8), B = (8, 8), C = (0, 0) and w = 1, 2, 4, the 2x2 texture of seed 001 with
+/// A = (0, 8), B = (8, 8), C = (0, 0) and w = 1, 2, 4, the 2x2 texture (red, white / green, blue) with
 /// nearest filtering.
 const HAND_SCENE: &str = r#"{
   "width": 8, "height": 8,

@@ -133,7 +133,7 @@ pub enum M {
     /// A number, shown with [`SIGNIFICANT_DIGITS`].
     Num(f64),
     /// A number that an equation computes with, shown with [`OPERAND_DIGITS`] (the builder
-    /// marks them: see [`mark_operands`]).
+    /// marks them: see `mark_operands`).
     Operand(f64),
     /// An exact integer.
     Int(i64),

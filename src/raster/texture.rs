@@ -494,7 +494,7 @@ impl Texture {
     }
 
     /// The texel nearest filtering reads before the wrap mode applies:
-    /// `(floor(u W), floor(v H))` (`u W` in `f32`, clamped as [`MAX_TEXEL_COORD`] says).
+    /// `(floor(u W), floor(v H))` (`u W` in `f32`, clamped to `MAX_TEXEL_COORD`).
     ///
     /// ```
     /// use barylab::raster::texture::Texture;

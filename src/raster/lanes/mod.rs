@@ -5,7 +5,7 @@
 //! nearest or bilinear filtering, vertex colour, barycentric and depth shading, and the
 //! wireframe overlay; the scanline lanes draw texture shading without the wireframe. Other
 //! cases (trilinear filtering, the scanline rasterizer's other shadings) go through
-//! [`render`](super::render)'s per-pixel code (after the block rejection of the
+//! [`render`](mod@super::render)'s per-pixel code (after the block rejection of the
 //! edge-function path).
 //!
 //! - **Edge functions** ([`edge_triangle`]): the bounding box is walked in blocks of
