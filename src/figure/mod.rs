@@ -143,7 +143,8 @@ pub fn vertices_on_screen(scene: &Scene, viewport: Viewport) -> Vec<VertexOnScre
 }
 
 /// The triangle whose weights a trace shows (the one that wrote the pixel, or the nearest
-/// one for an uncovered pixel), as rasterized: snapped window positions, mesh vertex of each
+/// one for an uncovered pixel), as rasterized: unsnapped window positions (the weights come
+/// from them), mesh vertex of each
 /// corner (`None` for a point the clipper made) and the screen weights.
 pub fn triangle_mark(trace: &PixelTrace) -> Option<TriangleMark> {
     let d = trace.detail.as_ref()?;

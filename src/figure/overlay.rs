@@ -288,7 +288,7 @@ pub struct HandleMark {
     pub active: bool,
 }
 
-/// The three vertices (window positions, snapped, in triangle order) and mesh indices of the
+/// The three vertices (unsnapped window positions, in triangle order) and mesh indices of the
 /// triangle a marked pixel's weights refer to, with the weights. A vertex the clipper made has
 /// no mesh index.
 #[derive(Clone, Copy, Debug, PartialEq)]
