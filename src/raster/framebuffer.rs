@@ -6,6 +6,21 @@ use super::setup::Facing;
 /// Marks a pixel no triangle covers in [`Framebuffer::triangle`].
 pub const NO_TRIANGLE: u32 = u32::MAX;
 
+/// The depth test: a fragment at window depth `depth` replaces the buffer's `stored` value
+/// when it is nearer, `depth < stored` (OpenGL's `GL_LESS`; the buffer is cleared to 1, and a
+/// NaN depth fails). The AVX2 lanes repeat it as an ordered less-than compare.
+///
+/// ```
+/// use barylab::raster::framebuffer::depth_passes;
+/// assert!(depth_passes(0.25, 1.0));
+/// assert!(!depth_passes(0.5, 0.5));
+/// assert!(!depth_passes(f32::NAN, 1.0));
+/// ```
+#[inline(always)]
+pub fn depth_passes(depth: f32, stored: f32) -> bool {
+    depth < stored
+}
+
 /// Which per-pixel buffers a render fills.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum Buffers {

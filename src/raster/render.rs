@@ -465,8 +465,7 @@ fn rasterize(
         }
         let i = (y - band.y0) as usize * band.width as usize + x as usize;
         let depth = frag.depth as f32;
-        // Less-than depth test (a NaN depth fails it).
-        if depth.is_nan() || depth >= band.depth[i] {
+        if !super::framebuffer::depth_passes(depth, band.depth[i]) {
             return;
         }
         band.depth[i] = depth;

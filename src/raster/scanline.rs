@@ -33,8 +33,8 @@ fn ceil_div(n: i64, d: i64) -> i64 {
 fn edge_columns(edge: &Edge, py: i64) -> (i64, i64) {
     let a = -edge.dir.y;
     let k = edge.dir.x * (py - edge.start.y) + edge.dir.y * edge.start.x;
-    // Passing means E >= t, with t = 0 on an inclusive edge and t = 1 otherwise (E > 0).
-    let t = if edge.kind.inclusive() { 0 } else { 1 };
+    // Passing means E >= t (the fill rule's smallest passing value).
+    let t = edge.min_value();
     let half = SUBPIXEL / 2;
     if a == 0 {
         return if k >= t { (i64::MIN, i64::MAX) } else { (1, 0) };

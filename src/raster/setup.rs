@@ -93,9 +93,16 @@ impl Edge {
         self.dir.x * r.y - self.dir.y * r.x
     }
 
+    /// The smallest edge value that passes under the fill rule: 0 on an inclusive (left or
+    /// bottom) edge, 1 otherwise (edge values are integers). The lanes and the scanline
+    /// rasterizer test `value >= min_value()`.
+    pub fn min_value(&self) -> i64 {
+        if self.kind.inclusive() { 0 } else { 1 }
+    }
+
     /// Whether a sample with this edge value passes the edge under the fill rule.
     pub fn passes(&self, value: i64) -> bool {
-        value > 0 || (value == 0 && self.kind.inclusive())
+        value >= self.min_value()
     }
 }
 

@@ -50,6 +50,41 @@ pub fn edge_distance_px(weights: [f32; 3], gradients: &[glam::DVec2; 3]) -> f64 
     d
 }
 
+/// The wireframe test for one source-triangle weight: the sample is on the line when the
+/// weight changes on screen (`len = |grad l| > 0`, per pixel) and `weight / len`, its distance
+/// in pixels from that edge, is below [`WIRE_WIDTH_PX`]. The weight is the `f32` the varyings
+/// hold. (The AVX2 lanes repeat this test; `tests/fast_path.rs` compares them bit for bit.)
+///
+/// ```
+/// use barylab::raster::shade::on_wire_edge;
+/// assert!(on_wire_edge(0.05, 0.1)); // half a pixel from the edge
+/// assert!(!on_wire_edge(0.5, 0.1)); // five pixels away
+/// assert!(!on_wire_edge(0.0, 0.0)); // a weight that does not change has no edge here
+/// ```
+#[inline(always)]
+pub fn on_wire_edge(weight: f32, len: f64) -> bool {
+    len > 0.0 && f64::from(weight) / len < WIRE_WIDTH_PX
+}
+
+/// The grey of [`Shading::Depth`]: window depth `d` mapped from `range = (black, white)` to
+/// 8 bits, `unorm8((d - black) / (white - black))`; black when the range is empty. (The AVX2
+/// lanes repeat it; compared bit for bit by `tests/fast_path.rs`.)
+///
+/// ```
+/// use barylab::raster::shade::depth_grey;
+/// assert_eq!(depth_grey(0.75, (0.5, 1.0)), 128);
+/// assert_eq!(depth_grey(0.75, (1.0, 1.0)), 0);
+/// ```
+#[inline(always)]
+pub fn depth_grey(depth: f64, (black, white): (f64, f64)) -> u8 {
+    let g = if white > black {
+        ((depth - black) / (white - black)) as f32
+    } else {
+        0.0
+    };
+    unorm8(g)
+}
+
 /// Everything shading needs besides the fragment.
 #[derive(Clone, Copy, Debug)]
 pub struct ShadeParams {
@@ -87,7 +122,8 @@ pub fn shade(
     p: &ShadeParams,
     wire_gradients: &[glam::DVec2; 3],
 ) -> [u8; 4] {
-    if p.wireframe && edge_distance_px(frag.edge_weights, wire_gradients) < WIRE_WIDTH_PX {
+    if p.wireframe && (0..3).any(|i| on_wire_edge(frag.edge_weights[i], wire_gradients[i].length()))
+    {
         return WIRE_COLOR;
     }
     let v = frag.varyings(p.mode);
@@ -100,13 +136,7 @@ pub fn shade(
         }
         Shading::Barycentric => [unorm8(bary[0]), unorm8(bary[1]), unorm8(bary[2]), 255],
         Shading::Depth => {
-            let (lo, hi) = p.depth_range;
-            let g = if hi > lo {
-                ((frag.depth - lo) / (hi - lo)) as f32
-            } else {
-                0.0
-            };
-            let g = unorm8(g);
+            let g = depth_grey(frag.depth, p.depth_range);
             [g, g, g, 255]
         }
     }

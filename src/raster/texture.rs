@@ -247,8 +247,6 @@ fn add_texel(out: &mut [f32; 4], texel: [u8; 4], weight: f32) {
     }
 }
 
-/// Largest |texel coordinate| used for wrapping: far beyond any texture size, keeps the
-/// `f32 -> i64` conversion of huge or infinite uv well defined.
 /// A filtered channel in the 0..255 scale to a byte: `round(clamp(sum, 0, 255))`, half away
 /// from zero (NaN gives 0).
 ///
@@ -266,13 +264,40 @@ pub fn byte_from_sum(sum: f32) -> u8 {
     sum.clamp(0.0, 255.0).round() as u8
 }
 
+/// Largest |texel coordinate| used for wrapping: far beyond any texture size, keeps the
+/// `f32 -> i64` conversion of huge or infinite uv well defined.
 pub(crate) const MAX_TEXEL_COORD: f32 = 1e9;
 
-fn texel_floor(x: f32) -> i64 {
+/// `floor(x)` as a texel index: NaN gives 0, the coordinate is clamped to
+/// +-[`MAX_TEXEL_COORD`] first (so it also fits an `i32`).
+pub(crate) fn texel_floor(x: f32) -> i64 {
     if x.is_nan() {
         return 0;
     }
     fast_floor(x.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD)) as i64
+}
+
+/// The fraction of bilinear filtering along one axis at texel coordinate `x` (`u W - 1/2`):
+/// `clamp(x - floor(x), 0, 1)` with `floor` of the clamped coordinate, as [`texel_floor`]
+/// takes it; 0 for a non-finite `x`. The lane paths repeat it (AVX2, AVX-512: compared bit
+/// for bit by `tests/fast_path.rs`).
+pub(crate) fn bilinear_fraction(x: f32) -> f32 {
+    if x.is_finite() {
+        (x - fast_floor(x.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD))).clamp(0.0, 1.0)
+    } else {
+        0.0
+    }
+}
+
+/// The weights of the four texels of bilinear filtering, `(i0, j0), (i0 + 1, j0), (i0, j0 + 1),
+/// (i0 + 1, j0 + 1)`, from the fractions `a` (along u) and `b` (along v).
+///
+/// ```
+/// use barylab::raster::texture::bilinear_weights;
+/// assert_eq!(bilinear_weights(0.25, 0.5), [0.375, 0.125, 0.375, 0.125]);
+/// ```
+pub fn bilinear_weights(a: f32, b: f32) -> [f32; 4] {
+    [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b]
 }
 
 /// `floor(x)` for |x| <= 2^30 without a libm call: truncate towards zero, then step down
@@ -531,11 +556,12 @@ impl Texture {
                     j,
                     weight,
                 };
+                let wt = bilinear_weights(a, b);
                 let four = [
-                    tap(ia, ja, (1.0 - a) * (1.0 - b)),
-                    tap(ib, ja, a * (1.0 - b)),
-                    tap(ia, jb, (1.0 - a) * b),
-                    tap(ib, jb, a * b),
+                    tap(ia, ja, wt[0]),
+                    tap(ib, ja, wt[1]),
+                    tap(ia, jb, wt[2]),
+                    tap(ib, jb, wt[3]),
                 ];
                 let mut taps = [four[0]; 8];
                 taps[..4].copy_from_slice(&four);
@@ -605,19 +631,11 @@ impl Texture {
         let (w, h) = self.level_size(level);
         let (x, y) = (uv.x * w as f32 - 0.5, uv.y * h as f32 - 0.5);
         let (i0, j0) = (texel_floor(x), texel_floor(y));
-        // `texel_floor` clamped the coordinate; the fraction is taken from the same value.
-        let frac = |v: f32| {
-            if v.is_finite() {
-                (v - fast_floor(v.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD))).clamp(0.0, 1.0)
-            } else {
-                0.0
-            }
-        };
         (
             [wrap_coord(i0, w, wrap), wrap_coord(i0 + 1, w, wrap)],
             [wrap_coord(j0, h, wrap), wrap_coord(j0 + 1, h, wrap)],
-            frac(x),
-            frac(y),
+            bilinear_fraction(x),
+            bilinear_fraction(y),
         )
     }
 
@@ -632,7 +650,7 @@ impl Texture {
         scale: Option<f32>,
     ) {
         let ([ia, ib], [ja, jb], a, b) = self.bilinear_coords(uv, wrap, level);
-        let weights = [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b];
+        let weights = bilinear_weights(a, b);
         let texels = [(ia, ja), (ib, ja), (ia, jb), (ib, jb)];
         for (wt, (i, j)) in weights.into_iter().zip(texels) {
             let wt = match scale {

@@ -75,7 +75,7 @@ fn floor_coord(x: __m256) -> (__m256i, __m256) {
     (i, f)
 }
 
-/// `clamp(x - floor, 0, 1)` where x is finite, else 0 (the bilinear fraction).
+/// `texture::bilinear_fraction`, mirrored: `clamp(x - floor, 0, 1)` where x is finite, else 0.
 #[inline]
 #[target_feature(enable = "avx2")]
 fn fraction(x: __m256, floor: __m256) -> __m256 {
@@ -189,6 +189,7 @@ fn sample(s: &VecSampler<'_>, u: __m256, v: __m256) -> __m256i {
                 gather(s, ia, jb),
                 gather(s, ib, jb),
             ];
+            // `texture::bilinear_weights`, mirrored.
             let ones = _mm256_set1_ps(1.0);
             let (oa, ob) = (_mm256_sub_ps(ones, a), _mm256_sub_ps(ones, b));
             let weights = [
@@ -297,6 +298,7 @@ fn write(target: &mut Target<'_>, index: usize, ok: __m256i, depth: __m256, rgba
         let dp = target.depth.as_mut_ptr().add(index);
         let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
         let old = _mm256_maskload_ps(dp, ok);
+        // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
         let pass = _mm256_and_si256(
             ok,
             _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
@@ -377,7 +379,8 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
     if let Some(wire_consts) = &c.wire {
         for i in 0..3 {
             if wire_consts.len[i] > 0.0 {
-                // The weight as f32, as the varyings hold it, then over the gradient length.
+                // `shade::on_wire_edge`, mirrored: the weight as f32, as the varyings hold
+                // it, then over the gradient length.
                 let weight = _mm256_cvtps_pd(_mm256_cvtpd_ps(dot3(&l, wire_consts.bary[i])));
                 let d = _mm256_div_pd(weight, _mm256_set1_pd(wire_consts.len[i]));
                 wire |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
@@ -445,6 +448,7 @@ fn pack_opaque(r: __m256i, g: __m256i, b: __m256i) -> __m256i {
 fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
     match color {
         LaneColor::Depth(near, far) => {
+            // `shade::depth_grey`, mirrored.
             let grey = if far > near {
                 let scale = |d: __m256d| {
                     _mm256_div_pd(
@@ -465,7 +469,8 @@ fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
     }
 }
 
-/// The edge-function lane path (see the parent module), texture shading only.
+/// The edge-function lane path (see the parent module): every [`LaneColor`], with the
+/// wireframe.
 #[target_feature(enable = "avx2")]
 pub(super) fn edge_triangle(
     setup: &TriangleSetup,

@@ -20,7 +20,7 @@ fn floor_coord(x: __m512) -> (__m512i, __m512) {
     (_mm512_maskz_cvttps_epi32(ordered, f), f)
 }
 
-/// `clamp(x - floor, 0, 1)` where x is finite, else 0 (the bilinear fraction).
+/// `texture::bilinear_fraction`, mirrored: `clamp(x - floor, 0, 1)` where x is finite, else 0.
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn fraction(x: __m512, floor: __m512) -> __m512 {
@@ -148,6 +148,7 @@ pub(super) fn sample16(
                 gather(s, ia, jb),
                 gather(s, ib, jb),
             ];
+            // `texture::bilinear_weights`, mirrored.
             let ones = _mm512_set1_ps(1.0);
             let (oa, ob) = (_mm512_sub_ps(ones, a), _mm512_sub_ps(ones, b));
             let weights = [

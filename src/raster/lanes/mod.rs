@@ -36,13 +36,14 @@
 
 use std::sync::atomic::{AtomicU8, Ordering};
 
+use super::framebuffer::depth_passes;
 use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
 use super::setup::{PixelBounds, TriangleSetup, WeightPlanes};
-use super::shade::{WIRE_COLOR, WIRE_WIDTH_PX, unorm8};
+use super::shade::{WIRE_COLOR, depth_grey, on_wire_edge, unorm8};
 use super::texture::{
-    Filter, MAX_TEXEL_COORD, Texture, Wrap, byte_from_sum, fast_floor, wrap_coord,
+    self, Filter, Texture, Wrap, bilinear_fraction, bilinear_weights, byte_from_sum, wrap_coord,
 };
 
 #[cfg(target_arch = "x86_64")]
@@ -111,8 +112,8 @@ pub struct Target<'a> {
     pub depth: &'a mut [f32],
 }
 
-/// What the lanes can shade: a texture with nearest or bilinear filtering, with the
-/// wireframe overlay on the edge-function path.
+/// What the lanes shade: texture (nearest or bilinear), vertex colour, barycentric weights or
+/// depth ([`LaneColor`]), with the wireframe overlay on the edge-function path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LaneShading {
     pub mode: Interpolation,
@@ -121,7 +122,7 @@ pub struct LaneShading {
     /// The texture filter and wrap (used by [`LaneColor::Texture`]).
     pub filter: Filter,
     pub wrap: Wrap,
-    /// Draw the source triangles' edges (see [`WIRE_WIDTH_PX`]).
+    /// Draw the source triangles' edges (see [`on_wire_edge`]).
     pub wireframe: bool,
 }
 
@@ -178,7 +179,7 @@ impl EdgePlanes {
             out.a[i] = -e.dir.y * SUBPIXEL;
             out.b[i] = e.dir.x * SUBPIXEL;
             out.c[i] = e.dir.x * (half - e.start.y) - e.dir.y * (half - e.start.x);
-            out.t[i] = if e.kind.inclusive() { 0 } else { 1 };
+            out.t[i] = e.min_value();
         }
         out
     }
@@ -329,12 +330,7 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
     for k in 0..LANES {
         out[k] = match color {
             LaneColor::Depth(lo, hi) => {
-                let g = if hi > lo {
-                    ((s.depth64[k] - lo) / (hi - lo)) as f32
-                } else {
-                    0.0
-                };
-                let g = unorm8(g);
+                let g = depth_grey(s.depth64[k], (lo, hi));
                 [g, g, g, 255]
             }
             _ => [
@@ -390,22 +386,17 @@ fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
             for i in 0..3 {
                 let b = &wire.bary[i];
                 let weight = (l[0] * b[0] + l[1] * b[1] + l[2] * b[2]) as f32;
-                out.wire[k] |= wire.len[i] > 0.0 && f64::from(weight) / wire.len[i] < WIRE_WIDTH_PX;
+                out.wire[k] |= on_wire_edge(weight, wire.len[i]);
             }
         }
     }
     out
 }
 
-/// `floor(x)` as an integer texel coordinate, as the texture module's `texel_floor` (NaN
-/// gives 0, the coordinate is clamped to +-[`MAX_TEXEL_COORD`], which fits an `i32`).
+/// The texture module's `texel_floor` as an `i32` (it clamps to +-1e9, which fits).
 #[inline(always)]
 fn texel_floor(x: f32) -> i32 {
-    if x.is_nan() {
-        0
-    } else {
-        fast_floor(x.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD)) as i32
-    }
+    texture::texel_floor(x) as i32
 }
 
 /// A wrap mode applied to lanes of texel coordinates along one axis of `size` texels.
@@ -488,18 +479,10 @@ impl<'a> Sampler<'a> {
                     let x = u[k] * self.size.0 - 0.5;
                     let y = v[k] * self.size.1 - 0.5;
                     let (i0, j0) = (texel_floor(x), texel_floor(y));
-                    let frac = |t: f32| {
-                        if t.is_finite() {
-                            (t - fast_floor(t.clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD)))
-                                .clamp(0.0, 1.0)
-                        } else {
-                            0.0
-                        }
-                    };
-                    let (a, b) = (frac(x), frac(y));
+                    let (a, b) = (bilinear_fraction(x), bilinear_fraction(y));
                     let (ia, ib) = (self.wrap.0.apply(i0), self.wrap.0.apply(i0 + 1));
                     let (ja, jb) = (self.wrap.1.apply(j0), self.wrap.1.apply(j0 + 1));
-                    let weights = [(1.0 - a) * (1.0 - b), a * (1.0 - b), (1.0 - a) * b, a * b];
+                    let weights = bilinear_weights(a, b);
                     let texels = [
                         self.texel(ia, ja),
                         self.texel(ib, ja),
@@ -528,8 +511,7 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, s: &Samples, colors: &[[u8; 4]
             continue;
         }
         let i = row + x as usize + k;
-        // Less-than depth test (a NaN depth fails it).
-        if s.depth[k] < target.depth[i] {
+        if depth_passes(s.depth[k], target.depth[i]) {
             target.depth[i] = s.depth[k];
             target.color[i] = colors[k];
         }
