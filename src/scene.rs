@@ -48,6 +48,10 @@ pub enum SceneError {
 }
 
 /// Image file extensions accepted in place of a scene (lower case).
+/// Most triangles a clip scene's `subdivide` may make: well beyond the dense-mesh
+/// benchmarks (460,800), and a bound on the memory a small scene file can ask for.
+pub const MAX_SUBDIVIDED_TRIANGLES: u64 = 4_000_000;
+
 pub const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
 
 /// What a file given in place of a scene is, by its extension.
@@ -192,6 +196,11 @@ pub struct ClipScene {
     pub height: u32,
     pub vertices: Vec<ClipSceneVertex>,
     pub triangles: Vec<[u32; 3]>,
+    /// Split every triangle into `n x n` smaller ones on its barycentric grid
+    /// ([`ClipMesh::subdivided`]): the same surface, the same image, more triangles (the
+    /// dense-mesh benchmarks). 1 or absent: as given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub subdivide: Option<u32>,
     #[serde(default = "default_texture")]
     pub texture: String,
     #[serde(default)]
@@ -582,6 +591,19 @@ impl Scene {
                 }
             }
             Scene::Clip(s) => {
+                if let Some(k) = s.subdivide {
+                    let total = s.triangles.len() as u64 * u64::from(k) * u64::from(k);
+                    if k == 0 || total > MAX_SUBDIVIDED_TRIANGLES {
+                        return Err(invalid(
+                            path,
+                            &format!(
+                                "field `subdivide` is {k}: it must be at least 1 and give at most \
+                                 {MAX_SUBDIVIDED_TRIANGLES} triangles ({} triangles x {k}^2 = {total})",
+                                s.triangles.len()
+                            ),
+                        ));
+                    }
+                }
                 let n = s.vertices.len();
                 for (t, tri) in s.triangles.iter().enumerate() {
                     if let Some(&bad) = tri.iter().find(|&&i| i as usize >= n) {
@@ -618,7 +640,19 @@ impl Scene {
     pub fn triangle(&self, i: usize) -> Option<[u32; 3]> {
         match self {
             Scene::World(_) => [[0, 1, 2], [0, 2, 3]].get(i).copied(),
-            Scene::Clip(s) => s.triangles.get(i).copied(),
+            Scene::Clip(s) => match s.subdivide {
+                Some(n) if n > 1 => {
+                    let per_source = n as usize * n as usize;
+                    s.triangles.get(i / per_source)?;
+                    let base = (i / per_source) * ((n as usize + 1) * (n as usize + 2) / 2);
+                    Some(crate::raster::render::subdivided_triangle(
+                        n,
+                        base as u32,
+                        (i % per_source) as u32,
+                    ))
+                }
+                _ => s.triangles.get(i).copied(),
+            },
             Scene::Model(s) => s.mesh.triangles.get(i).copied(),
         }
     }
@@ -642,18 +676,24 @@ impl Scene {
                     triangles: vec![[0, 1, 2], [0, 2, 3]],
                 }
             }
-            Scene::Clip(s) => ClipMesh {
-                vertices: s
-                    .vertices
-                    .iter()
-                    .map(|v| MeshVertex {
-                        clip: v.clip,
-                        uv: v.uv,
-                        color: v.color,
-                    })
-                    .collect(),
-                triangles: s.triangles.clone(),
-            },
+            Scene::Clip(s) => {
+                let mesh = ClipMesh {
+                    vertices: s
+                        .vertices
+                        .iter()
+                        .map(|v| MeshVertex {
+                            clip: v.clip,
+                            uv: v.uv,
+                            color: v.color,
+                        })
+                        .collect(),
+                    triangles: s.triangles.clone(),
+                };
+                match s.subdivide {
+                    Some(n) if n > 1 => mesh.subdivided(n),
+                    _ => mesh,
+                }
+            }
             Scene::Model(s) => {
                 let aspect = f64::from(s.width) / f64::from(s.height);
                 let clip_from_world = s.camera().clip_from_world(aspect);

@@ -32,6 +32,102 @@ pub struct ClipMesh {
     pub triangles: Vec<[u32; 3]>,
 }
 
+impl ClipMesh {
+    /// Every triangle split into `n x n` triangles on its barycentric grid: the grid point
+    /// `(i, j, k)`, `i + j + k = n`, is `(i A + j B + k C) / n` in clip space, with its uv and
+    /// colour interpolated the same way. Clip-space interpolation is what perspective-correct
+    /// interpolation reproduces, so the subdivided mesh draws the same surface with the same
+    /// values (up to rounding). Points on an edge two triangles share are computed bit for bit
+    /// alike (the third weight is 0), so no crack opens. `n <= 1` returns a copy.
+    ///
+    /// ```
+    /// use barylab::raster::render::{ClipMesh, MeshVertex};
+    /// use glam::{DVec4, Vec2, Vec3};
+    /// let v = |x: f64, y: f64| MeshVertex { clip: DVec4::new(x, y, 0.0, 1.0), uv: Vec2::ZERO, color: Vec3::ONE };
+    /// let m = ClipMesh { vertices: vec![v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0)], triangles: vec![[0, 1, 2]] };
+    /// let s = m.subdivided(3);
+    /// assert_eq!(s.triangles.len(), 9);
+    /// assert_eq!(s.vertices.len(), 10); // (n + 1)(n + 2) / 2
+    /// ```
+    pub fn subdivided(&self, n: u32) -> ClipMesh {
+        if n <= 1 {
+            return self.clone();
+        }
+        let per_tri = ((n + 1) * (n + 2) / 2) as usize;
+        let mut out = ClipMesh {
+            vertices: Vec::with_capacity(self.triangles.len() * per_tri),
+            triangles: Vec::with_capacity(self.triangles.len() * (n * n) as usize),
+        };
+        let nf = f64::from(n);
+        for tri in &self.triangles {
+            let Some(v) = tri
+                .iter()
+                .map(|&i| self.vertices.get(i as usize).copied())
+                .collect::<Option<Vec<_>>>()
+            else {
+                // Kept as triangles with out-of-range indices (drawn as `BadIndex`), so the
+                // triangle numbers of the rest stay `source * n² + local`.
+                out.triangles
+                    .extend(std::iter::repeat_n([u32::MAX; 3], (n * n) as usize));
+                continue;
+            };
+            let base = out.vertices.len() as u32;
+            for i in 0..=n {
+                for j in 0..=(n - i) {
+                    let w = [
+                        f64::from(n - i - j) / nf,
+                        f64::from(i) / nf,
+                        f64::from(j) / nf,
+                    ];
+                    let mix3 = |f: &dyn Fn(&MeshVertex) -> DVec4| {
+                        f(&v[0]) * w[0] + f(&v[1]) * w[1] + f(&v[2]) * w[2]
+                    };
+                    let clip = mix3(&|m| m.clip);
+                    let uv = mix3(&|m| m.uv.as_dvec2().extend(0.0).extend(0.0));
+                    let color = mix3(&|m| m.color.as_dvec3().extend(0.0));
+                    out.vertices.push(MeshVertex {
+                        clip,
+                        uv: uv.truncate().truncate().as_vec2(),
+                        color: color.truncate().as_vec3(),
+                    });
+                }
+            }
+            out.triangles
+                .extend((0..n * n).map(|local| subdivided_triangle(n, base, local)));
+        }
+        out
+    }
+}
+
+/// Triangle `local` (0..n²) of one source triangle split by [`ClipMesh::subdivided`], whose
+/// grid vertices start at index `base`: the grid's row `i` (B's weight `i/n`) has
+/// `2 (n - i) - 1` triangles, alternately `(i, j), (i + 1, j), (i, j + 1)` and
+/// `(i + 1, j), (i + 1, j + 1), (i, j + 1)`, where grid point `(i, j)` (C's weight `j/n`) is
+/// vertex `base + i (n + 1) - i (i - 1) / 2 + j`.
+///
+/// ```
+/// use barylab::raster::render::subdivided_triangle;
+/// // n = 2: row 0 holds three triangles, row 1 one; grid points 0 1 2 / 3 4 / 5.
+/// assert_eq!(subdivided_triangle(2, 0, 0), [0, 3, 1]);
+/// assert_eq!(subdivided_triangle(2, 0, 1), [3, 4, 1]);
+/// assert_eq!(subdivided_triangle(2, 0, 2), [1, 4, 2]);
+/// assert_eq!(subdivided_triangle(2, 0, 3), [3, 5, 4]);
+/// ```
+pub fn subdivided_triangle(n: u32, base: u32, local: u32) -> [u32; 3] {
+    let index = |i: u32, j: u32| base + i * (n + 1) - i * i.saturating_sub(1) / 2 + j;
+    let (mut i, mut rest) = (0, local);
+    while i + 1 < n && rest >= 2 * (n - i) - 1 {
+        rest -= 2 * (n - i) - 1;
+        i += 1;
+    }
+    let j = rest / 2;
+    if rest % 2 == 0 {
+        [index(i, j), index(i + 1, j), index(i, j + 1)]
+    } else {
+        [index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)]
+    }
+}
+
 /// Which rasterizer visits the covered pixels. Both give the same coverage and values equal
 /// up to floating-point rounding.
 #[derive(
@@ -231,9 +327,7 @@ pub fn render_into(
         });
     }
     let viewport = settings.viewport();
-    let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
-        .map(|i| prepare_triangle(mesh, i, viewport))
-        .collect();
+    let triangles = prepare_all(mesh, viewport);
     let params = shade_params(settings, &triangles);
     resize(frame, w, h, buffers);
     rasterize_bands(
@@ -247,6 +341,20 @@ pub fn render_into(
     );
     Ok(triangles)
 }
+
+/// Clips, projects and sets up every source triangle, in parallel (rayon's current thread
+/// pool), in submission order.
+pub fn prepare_all(mesh: &ClipMesh, viewport: Viewport) -> Vec<PreparedTriangle> {
+    use rayon::prelude::*;
+    (0..mesh.triangles.len() as u32)
+        .into_par_iter()
+        .with_min_len(PREPARE_CHUNK)
+        .map(|i| prepare_triangle(mesh, i, viewport))
+        .collect()
+}
+
+/// Triangles one parallel task prepares at least: small meshes (the quad) stay on one thread.
+const PREPARE_CHUNK: usize = 256;
 
 /// Gives `frame` the size and buffers asked for (contents are cleared later, per band).
 fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
@@ -291,10 +399,32 @@ pub fn depth_range(triangles: &[PreparedTriangle]) -> (f64, f64) {
     if lo <= hi { (lo, hi) } else { (0.0, 1.0) }
 }
 
-/// Rows of the image each parallel task rasterizes. Every band draws all triangles in
-/// submission order, so each pixel sees the same fragments in the same order as a serial
-/// render and the output does not depend on the band size or the number of threads.
+/// Rows of the image each parallel task rasterizes. Every band draws the triangles that reach
+/// it in submission order, so each pixel sees the same fragments in the same order as a
+/// serial render and the output does not depend on the band size or the number of threads.
 pub const ROWS_PER_BAND: u32 = 16;
+
+/// The set-up triangles that reach each band of `rows_per_band` rows, in submission order, as
+/// `(triangle, setup)` indices: each band then visits only its own triangles (a dense mesh
+/// has hundreds of thousands, each in one or two bands).
+fn bin_by_band(
+    triangles: &[PreparedTriangle],
+    height: u32,
+    rows_per_band: u32,
+) -> Vec<Vec<(u32, u32)>> {
+    let bands = height.div_ceil(rows_per_band).max(1) as usize;
+    let mut bins: Vec<Vec<(u32, u32)>> = vec![Vec::new(); bands];
+    for (ti, tri) in triangles.iter().enumerate() {
+        for (si, setup) in tri.setups.iter().enumerate() {
+            let first = (setup.bounds.y0 / rows_per_band) as usize;
+            let last = ((setup.bounds.y1 / rows_per_band) as usize).min(bands - 1);
+            for bin in bins.iter_mut().take(last + 1).skip(first) {
+                bin.push((ti as u32, si as u32));
+            }
+        }
+    }
+    bins
+}
 
 /// Rasterizes all set-up triangles into `frame`, in parallel over bands of `rows_per_band`
 /// image rows (rayon's current thread pool). With `clear`, each band first clears its rows
@@ -309,15 +439,17 @@ pub fn rasterize_bands(
     clear: Option<[u8; 4]>,
 ) {
     use rayon::prelude::*;
-    let bands = RowBand::split(frame, rows_per_band.max(1));
-    bands.into_par_iter().for_each(|mut band| {
+    let rows_per_band = rows_per_band.max(1);
+    let bins = bin_by_band(triangles, frame.height, rows_per_band);
+    let bands = RowBand::split(frame, rows_per_band);
+    bands.into_par_iter().zip(bins).for_each(|(mut band, bin)| {
         if let Some(background) = clear {
             band.clear(background);
         }
-        for tri in triangles {
-            for setup in &tri.setups {
-                rasterize(setup, tri.source, texture, params, rasterizer, &mut band);
-            }
+        for (ti, si) in bin {
+            let tri = &triangles[ti as usize];
+            let setup = &tri.setups[si as usize];
+            rasterize(setup, tri.source, texture, params, rasterizer, &mut band);
         }
     });
 }
