@@ -4,7 +4,7 @@
 //! - [`scene`]: scene files (world, raw clip-space and OBJ model forms).
 //! - [`model`]: OBJ models.
 //! - [`probe`]: every number behind one pixel, and its derivation as text.
-//! - [`bench`]: timing the rasterizers (`barylab bench`, the app's benchmark panel).
+//! - [`bench`](mod@bench): timing the rasterizers (`barylab bench`, the app's benchmark panel).
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 //! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
 //! - [`app`]: the classroom app (egui); the modules above never use egui.

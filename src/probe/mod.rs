@@ -12,7 +12,7 @@
 //! teach them ([`weights`]): screen-space weights by the explicit formula (seed 000), by
 //! cross-product areas (seed 001) and by the OpenGL area form; the 1/w correction in the
 //! notation of seed 004; the 4x4 system of seed 002; and the 3D point where the ray through
-//! the pixel centre meets the triangle's plane. [`format`] writes the trace as a worked
+//! the pixel centre meets the triangle's plane. [`format`](mod@format) writes the trace as a worked
 //! example (text, Markdown, LaTeX); the trace itself serializes to JSON with the field names
 //! documented in `docs/probe.md`.
 //!

@@ -215,7 +215,7 @@ pub fn render(
 /// Renders a clip-space mesh into `frame`, reusing its memory: the frame is resized to the
 /// settings' size, given `buffers`, cleared to the background and drawn. Returns what
 /// happened to each source triangle. With [`Buffers::ColorDepth`] the lane path
-/// ([`lanes`](super::lanes)) draws whatever it can.
+/// ([`lanes`]) draws whatever it can.
 pub fn render_into(
     frame: &mut Framebuffer,
     mesh: &ClipMesh,

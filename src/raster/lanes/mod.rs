@@ -3,7 +3,7 @@
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`) and the shading is a texture with nearest or bilinear
 //! filtering (with the wireframe overlay on the edge-function path). Other shadings go
-//! through [`render`](super::render)'s per-pixel code (after the block rejection of the
+//! through [`render`](mod@super::render)'s per-pixel code (after the block rejection of the
 //! edge-function path).
 //!
 //! - **Edge functions** ([`edge_triangle`]): the bounding box is walked in blocks of
