@@ -1,12 +1,11 @@
-//! The File menu (native Open dialog, a typed path, recent files) and the typed-path window.
-//! They return [`FileCommand`]s; opening itself is [`super::files::open`].
+//! The File menu: the native Open dialog, the typed-path window ([`super::path_window`]),
+//! recent files. It returns [`FileCommand`]s; opening itself is [`super::files::open`].
 
-use std::path::PathBuf;
-
-use egui::{Color32, RichText, Ui};
+use egui::{RichText, Ui};
 
 use super::dialog::{DialogOutcome, NativeDialog};
 use super::files::{FileCommand, RecentFiles};
+use super::path_window::PathWindow;
 use crate::scene::IMAGE_EXTENSIONS;
 
 /// User-facing strings of the File menu and the typed-path window.
@@ -22,17 +21,11 @@ pub mod text {
     pub const NO_RECENT: &str = "(none yet)";
     pub const MISSING: &str = "missing";
     pub const CLEAR_RECENT: &str = "Clear the list";
-    pub const PATH_WINDOW: &str = "Open a file";
-    pub const PATH_HINT: &str = "/path/to/photo.jpg, model.obj or scene.json";
-    pub const OPEN_BUTTON: &str = "Open";
-    pub const BROWSE: &str = "Browse…";
     pub const DIALOG_TITLE: &str = "Open a scene, model or image";
     pub const FILTER_ALL: &str = "Scenes, models and images";
     pub const FILTER_SCENE: &str = "Scene (JSON)";
     pub const FILTER_MODEL: &str = "Model (OBJ)";
     pub const FILTER_IMAGE: &str = "Image";
-    pub const DIALOG_FAILED: &str = "The file dialog did not open (no desktop portal and no \
-        zenity found). Type the path of the file instead:";
     pub const DIALOG_WAITING: &str = "waiting for the file dialog…";
 }
 
@@ -40,21 +33,7 @@ pub mod text {
 #[derive(Default)]
 pub struct FilePicker {
     dialog: NativeDialog,
-    /// Whether the typed-path window is open.
-    pub path_window: bool,
-    /// The typed-path window's own state (its text field).
-    pub window: PathWindow,
-}
-
-/// The typed-path window's field and why the window is shown.
-#[derive(Default)]
-pub struct PathWindow {
-    /// Shown in the typed-path window when the native dialog failed.
-    pub dialog_failed: bool,
-    /// The text of the path field.
-    pub typed: String,
-    /// Give the path field the keyboard focus (the window just opened).
-    focus_field: bool,
+    pub path_window: PathWindow,
 }
 
 impl FilePicker {
@@ -63,8 +42,8 @@ impl FilePicker {
     pub fn apply(&mut self, ctx: &egui::Context, command: &FileCommand) {
         match command {
             FileCommand::OpenDialog => self.open_dialog(ctx),
-            FileCommand::ShowPathWindow { dialog_failed } => self.show_path_window(*dialog_failed),
-            FileCommand::ClosePathWindow => self.path_window = false,
+            FileCommand::ShowPathWindow { dialog_failed } => self.path_window.show(*dialog_failed),
+            FileCommand::ClosePathWindow => self.path_window.open = false,
             FileCommand::Open(_) | FileCommand::ClearRecent | FileCommand::DismissBanner => {}
         }
     }
@@ -83,17 +62,8 @@ impl FilePicker {
                 .pick_file()
         });
         if opened.is_err() {
-            self.show_path_window(true);
+            self.path_window.show(true);
         }
-    }
-
-    /// Opens the typed-path window; `dialog_failed` says why it is offered.
-    fn show_path_window(&mut self, dialog_failed: bool) {
-        self.window.dialog_failed = dialog_failed;
-        self.path_window = true;
-        self.window.focus_field = true;
-        // Start empty: typing must not append to the last path.
-        self.window.typed.clear();
     }
 
     /// Whether the native dialog is open.
@@ -167,58 +137,6 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
     });
     if waiting {
         ui.label(RichText::new(text::DIALOG_WAITING).weak());
-    }
-    out
-}
-
-/// The typed-path window (when `open`). It edits only its own field.
-pub fn path_window_ui(
-    ctx: &egui::Context,
-    open: bool,
-    window: &mut PathWindow,
-) -> Vec<FileCommand> {
-    let mut out = Vec::new();
-    if !open {
-        return out;
-    }
-    let mut window_open = true;
-    let mut submit = false;
-    egui::Window::new(text::PATH_WINDOW)
-        .open(&mut window_open)
-        .collapsible(false)
-        .default_width(560.0)
-        .anchor(egui::Align2::CENTER_TOP, [0.0, 100.0])
-        .show(ctx, |ui| {
-            if window.dialog_failed {
-                ui.label(RichText::new(text::DIALOG_FAILED).color(Color32::from_rgb(255, 200, 90)));
-            }
-            let field = ui.add(
-                egui::TextEdit::singleline(&mut window.typed)
-                    .hint_text(text::PATH_HINT)
-                    .desired_width(f32::INFINITY),
-            );
-            if std::mem::take(&mut window.focus_field) {
-                field.request_focus();
-            }
-            if field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-                submit = true;
-            }
-            ui.horizontal(|ui| {
-                if ui.button(text::OPEN_BUTTON).clicked() {
-                    submit = true;
-                }
-                if !window.dialog_failed && ui.button(text::BROWSE).clicked() {
-                    out.push(FileCommand::OpenDialog);
-                }
-            });
-        });
-    let typed = window.typed.trim();
-    if submit && !typed.is_empty() {
-        out.push(FileCommand::Open(PathBuf::from(typed)));
-        window_open = false;
-    }
-    if !window_open {
-        out.push(FileCommand::ClosePathWindow);
     }
     out
 }

@@ -8,9 +8,9 @@
 //!   saved between runs), [`edit`] and [`presets`] (scene edits, no egui).
 //! - Commands: [`command::AppCommand`], one enum for every panel's requests.
 //! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
-//!   commands: [`top_bar`], [`file_menu`], [`banner`], [`controls`], [`canvas`], [`inspector`],
-//!   [`status`], [`help`], [`export`], [`bench_panel`] (with [`bench_chart`]), and the
-//!   keyboard [`shortcuts`].
+//!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
+//!   [`canvas`], [`inspector`], [`status`], [`help`], [`export`], [`bench_panel`] (with
+//!   [`bench_chart`]), and the keyboard [`shortcuts`].
 //! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
 //!   canvas's renders and their cache), [`textures`] (the scene's texture), [`pixel`] and
 //!   [`reports`] (the inspector's probe of a pixel, one prober per render), [`paint`] (overlays
@@ -34,6 +34,7 @@ pub mod files;
 pub mod help;
 pub mod inspector;
 pub mod paint;
+pub mod path_window;
 pub mod persist;
 pub mod pixel;
 pub mod presets;
@@ -362,10 +363,9 @@ impl BaryApp {
                 out.extend(command::all(banner::banner_ui(ui, b)));
             });
         }
-        out.extend(command::all(file_menu::path_window_ui(
+        out.extend(command::all(path_window::path_window_ui(
             &ctx,
-            self.picker.path_window,
-            &mut self.picker.window,
+            &mut self.picker.path_window,
         )));
         if let Some((view, folder_text)) = self.export.view() {
             out.extend(command::all(export::export_ui(&ctx, &view, folder_text)));
