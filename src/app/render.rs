@@ -9,7 +9,7 @@ use egui::Color32;
 use super::edit;
 use super::state::AppState;
 use crate::figure::heatmap::{self, Heatmap};
-use crate::figure::{Compare, ViewContent, modes_for};
+use crate::figure::{Compare, ViewContent, modes_for, wipe_pixels};
 use crate::raster::project::Viewport;
 use crate::raster::render::{Rasterizer, Render};
 use crate::raster::{Buffers, Framebuffer, Interpolation, RenderSettings, Texture};
@@ -215,21 +215,16 @@ fn to_color32(pixels: &[[u8; 4]]) -> Vec<Color32> {
 
 /// Affine columns left of `column`, perspective-correct from it on.
 fn wipe_image(out: &CanvasOutput, column: u32) -> Vec<Color32> {
-    let (Some(a), Some(p)) = (
+    match (
         out.render(Interpolation::Affine),
         out.render(Interpolation::Perspective),
-    ) else {
-        return Vec::new();
-    };
-    let w = out.size[0] as usize;
-    a.frame
-        .color
-        .iter()
-        .zip(&p.frame.color)
-        .enumerate()
-        .map(|(i, (ca, cp))| {
-            let c = if (i % w) < column as usize { ca } else { cp };
-            Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3])
-        })
-        .collect()
+    ) {
+        (Some(a), Some(p)) => to_color32(&wipe_pixels(
+            &a.frame.color,
+            &p.frame.color,
+            out.size[0],
+            column,
+        )),
+        _ => Vec::new(),
+    }
 }
