@@ -1,8 +1,8 @@
 //! The app driven through egui_kittest: real clicks, hovers, drags and keys on the real UI.
 
-use barylab::app::edit::vertices_on_screen;
 use barylab::app::state::Command;
 use barylab::app::{AppOptions, BaryApp};
+use barylab::figure::vertices_on_screen;
 use barylab::probe::format::fmt_number;
 use barylab::raster::{BuiltinTexture, Interpolation, RenderSettings, Texture};
 use barylab::scene::Scene;
@@ -290,7 +290,7 @@ fn state_is_saved_on_exit_and_restored_on_start() {
     );
     for c in [
         Command::SetMode(Interpolation::Affine),
-        Command::SetCompare(barylab::app::state::Compare::Wipe),
+        Command::SetCompare(barylab::figure::Compare::Wipe),
         Command::Preset(barylab::app::presets::Preset::FarCorner),
     ] {
         app.push(c);

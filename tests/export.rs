@@ -5,8 +5,9 @@ use std::path::Path;
 use std::process::Command;
 
 use barylab::app::export::ExportCommand;
-use barylab::app::state::{Command as AppCommand, Compare};
+use barylab::app::state::Command as AppCommand;
 use barylab::app::{AppOptions, BaryApp};
+use barylab::figure::Compare;
 use egui::Pos2;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;

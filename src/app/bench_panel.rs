@@ -10,8 +10,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::time::Duration;
 
-use egui::{Color32, RichText, Ui};
+use egui::{RichText, Ui};
 
+use super::bench_chart;
 use crate::bench::{self, BenchRecord};
 use crate::raster::{ClipMesh, RenderSettings, Texture};
 use crate::scene::Scene;
@@ -41,28 +42,7 @@ pub mod text {
     pub const STOPPED: &str = "stopped";
     pub const NO_RESULTS: &str = "Press Run to measure.";
     pub const MEASURED: &str = "Measured";
-    pub const FILTER: &str = "filter";
-    pub const MODE: &str = "mode";
-    pub const THREADS: &str = "threads";
-    pub const EDGE: &str = "edge functions";
-    pub const SCANLINE: &str = "scanline";
-    pub const RATIO: &str = "edge / scanline";
-    pub const LLVMPIPE_REF: &str = "llvmpipe (reference)";
-    pub const MS: &str = "ms";
-    pub const MPIX: &str = "Mpix/s";
-    pub const CHART_Y: &str = "ms per frame";
     pub const CHART_CAPTION: &str = "Median ms per frame, lower is faster.";
-    pub const SEED_CLAIM: &str = "A rasterizer tutorial measured per-pixel barycentric evaluation about 2x \
-        slower than the scanline with increments: 1.40 ms vs 0.73 ms (= 1.9x).";
-    pub const MEASURED_RATIO: &str = "Measured here: edge functions take";
-    pub const MEASURED_RATIO_END: &str = "the scanline's time (median over the cells above).";
-    pub const REFERENCE_HEADING: &str = "llvmpipe reference figures";
-    pub const REFERENCE_NOTE: &str = "Mesa's llvmpipe (OpenGL on the CPU) drawing the reference \
-        scene, perspective-correct, draw only; measured on this project's 2-core machine, \
-        quoted from the performance issue (not measured by this window). \
-        `cargo bench --bench llvmpipe` measures them again.";
-    pub const THREAD_1: &str = "1 thread";
-    pub const THREADS_N: &str = "threads";
 }
 
 /// Which scene the benchmark draws.
@@ -264,76 +244,112 @@ impl BenchPanel {
     }
 }
 
-/// The top-bar toggle that opens and closes the window.
-pub fn toggle_ui(ui: &mut Ui, panel: &mut BenchPanel) {
-    if ui
-        .selectable_label(panel.open, text::OPEN)
-        .on_hover_text(text::OPEN_TIP)
-        .clicked()
-    {
-        panel.open = !panel.open;
+/// A change or an action of the benchmark window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BenchCommand {
+    /// Show or hide the window.
+    SetOpen(bool),
+    SetSource(BenchSource),
+    /// Frames per configuration.
+    SetFrames(u32),
+    /// Start measuring the chosen scene.
+    Run,
+    /// Stop the run going on.
+    Stop,
+}
+
+impl BenchPanel {
+    /// Applies a command; `current` is the scene as the canvas renders it (sized) and its
+    /// texture, if anything is rendered.
+    pub fn apply(
+        &mut self,
+        ctx: &egui::Context,
+        command: BenchCommand,
+        current: Option<(&Scene, &Arc<Texture>)>,
+    ) {
+        match command {
+            BenchCommand::SetOpen(open) => self.open = open,
+            BenchCommand::SetSource(source) => self.source = source,
+            BenchCommand::SetFrames(frames) => {
+                self.frames = frames.clamp(FRAMES_RANGE.0, FRAMES_RANGE.1);
+            }
+            BenchCommand::Run => {
+                let job = match self.source {
+                    BenchSource::Canvas => current
+                        .map(|(scene, texture)| {
+                            let (w, h) = scene.size();
+                            BenchJob::from_scene(
+                                scene,
+                                texture.clone(),
+                                format!("current scene, {w} x {h}"),
+                            )
+                        })
+                        .ok_or_else(|| text::NOTHING_TO_MEASURE.to_string()),
+                    BenchSource::Reference => BenchJob::reference(),
+                };
+                match job {
+                    Ok(job) => self.start(ctx, job),
+                    Err(e) => self.error = Some(e),
+                }
+            }
+            BenchCommand::Stop => {
+                self.stop();
+                self.error = Some(text::STOPPED.into());
+            }
+        }
+    }
+
+    /// Once per frame, before the window is drawn: takes what the run reported, and asks for
+    /// the next frame while it goes on.
+    pub fn frame(&mut self, ctx: &egui::Context) {
+        self.poll();
+        if self.is_running() {
+            ctx.request_repaint_after(POLL);
+        }
     }
 }
 
-/// The benchmark window. `current` is the scene as the canvas renders it (sized) and its
-/// texture, if anything is rendered.
-pub fn bench_ui(
-    ctx: &egui::Context,
-    panel: &mut BenchPanel,
-    current: Option<(&Scene, &Arc<Texture>)>,
-) {
-    panel.poll();
-    if panel.is_running() {
-        ctx.request_repaint_after(POLL);
-    }
+/// The benchmark window (when open).
+pub fn bench_ui(ctx: &egui::Context, panel: &BenchPanel) -> Vec<BenchCommand> {
+    let mut out = Vec::new();
     let mut open = panel.open;
     egui::Window::new(text::TITLE)
         .open(&mut open)
         .default_pos([360.0, 50.0])
         .default_size([900.0, 860.0])
         .vscroll(true)
-        .show(ctx, |ui| window_contents(ui, panel, current));
-    panel.open = open;
+        .show(ctx, |ui| window_contents(ui, panel, &mut out));
+    if open != panel.open {
+        out.push(BenchCommand::SetOpen(open));
+    }
+    out
 }
 
-fn window_contents(ui: &mut Ui, panel: &mut BenchPanel, current: Option<(&Scene, &Arc<Texture>)>) {
+fn window_contents(ui: &mut Ui, panel: &BenchPanel, out: &mut Vec<BenchCommand>) {
+    let mut source = panel.source;
     ui.horizontal(|ui| {
-        ui.radio_value(&mut panel.source, BenchSource::Canvas, text::SOURCE_CANVAS);
-        ui.radio_value(
-            &mut panel.source,
-            BenchSource::Reference,
-            text::SOURCE_REFERENCE,
-        )
-        .on_hover_text(text::SOURCE_REFERENCE_TIP);
+        ui.radio_value(&mut source, BenchSource::Canvas, text::SOURCE_CANVAS);
+        ui.radio_value(&mut source, BenchSource::Reference, text::SOURCE_REFERENCE)
+            .on_hover_text(text::SOURCE_REFERENCE_TIP);
     });
+    if source != panel.source {
+        out.push(BenchCommand::SetSource(source));
+    }
     ui.horizontal(|ui| {
         if panel.is_running() {
             if ui.button(text::STOP).clicked() {
-                panel.stop();
-                panel.error = Some(text::STOPPED.into());
+                out.push(BenchCommand::Stop);
             }
         } else if ui.button(text::RUN).on_hover_text(text::RUN_TIP).clicked() {
-            let job = match panel.source {
-                BenchSource::Canvas => current
-                    .map(|(scene, texture)| {
-                        let (w, h) = scene.size();
-                        BenchJob::from_scene(
-                            scene,
-                            texture.clone(),
-                            format!("current scene, {w} x {h}"),
-                        )
-                    })
-                    .ok_or_else(|| text::NOTHING_TO_MEASURE.to_string()),
-                BenchSource::Reference => BenchJob::reference(),
-            };
-            match job {
-                Ok(job) => panel.start(ui.ctx(), job),
-                Err(e) => panel.error = Some(e),
-            }
+            out.push(BenchCommand::Run);
         }
         let label = ui.label(text::FRAMES).on_hover_text(text::FRAMES_TIP);
-        ui.add(egui::DragValue::new(&mut panel.frames).range(FRAMES_RANGE.0..=FRAMES_RANGE.1))
+        let mut frames = panel.frames;
+        ui.add(egui::DragValue::new(&mut frames).range(FRAMES_RANGE.0..=FRAMES_RANGE.1))
             .labelled_by(label.id);
+        if frames != panel.frames {
+            out.push(BenchCommand::SetFrames(frames));
+        }
     });
     if panel.total > 0 && (panel.is_running() || panel.records.len() < panel.total) {
         let done = panel.records.len();
@@ -358,243 +374,15 @@ fn window_contents(ui: &mut Ui, panel: &mut BenchPanel, current: Option<(&Scene,
             ui.label(RichText::new(format!("{}: {m}", text::MEASURED)).strong());
         }
         let reference = panel.measured_reference;
-        table_ui(ui, &panel.records, reference);
+        bench_chart::table_ui(ui, &panel.records, reference);
         ui.add_space(6.0);
-        ratio_ui(ui, &panel.records);
+        bench_chart::ratio_ui(ui, &panel.records);
         ui.add_space(6.0);
         ui.label(RichText::new(text::CHART_CAPTION).small());
-        chart_ui(ui, &panel.records, reference);
+        bench_chart::chart_ui(ui, &panel.records, reference);
     }
     ui.separator();
-    reference_ui(ui);
-}
-
-/// llvmpipe's reference median for one cell (perspective only), if quoted.
-fn llvmpipe_reference(filter: &str, mode: &str, threads: usize) -> Option<f64> {
-    if mode != "perspective" {
-        return None;
-    }
-    bench::LLVMPIPE_REFERENCE_1080P
-        .iter()
-        .find(|(t, f, _)| *t == threads && *f == filter)
-        .map(|(_, _, ms)| *ms)
-}
-
-/// The filter x mode x threads cells in table order.
-fn cells(records: &[BenchRecord]) -> Vec<(String, String, usize)> {
-    let mut out: Vec<(String, String, usize)> = Vec::new();
-    for r in records {
-        let cell = (r.filter.clone(), r.mode.clone(), r.threads);
-        if !out.contains(&cell) {
-            out.push(cell);
-        }
-    }
-    out
-}
-
-fn table_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
-    let ms =
-        |r: Option<&BenchRecord>| r.map_or("…".to_string(), |r| format!("{:.1}", r.median_ms));
-    egui::Grid::new("bench_table")
-        .striped(true)
-        .spacing([18.0, 4.0])
-        .show(ui, |ui| {
-            for h in [text::FILTER, text::MODE, text::THREADS] {
-                ui.label(RichText::new(h).strong());
-            }
-            ui.label(
-                RichText::new(format!("{} {}", text::EDGE, text::MS))
-                    .strong()
-                    .color(EDGE_COLOR),
-            );
-            ui.label(
-                RichText::new(format!("{} {}", text::SCANLINE, text::MS))
-                    .strong()
-                    .color(SCANLINE_COLOR),
-            );
-            ui.label(RichText::new(text::RATIO).strong());
-            ui.label(RichText::new(format!("{} {}", text::EDGE, text::MPIX)).strong());
-            if reference {
-                ui.label(
-                    RichText::new(format!("{} {}", text::LLVMPIPE_REF, text::MS))
-                        .strong()
-                        .color(LLVMPIPE_COLOR),
-                );
-            }
-            ui.end_row();
-            for (filter, mode, threads) in cells(records) {
-                let edge = bench::find(records, "edge", &filter, &mode, threads);
-                let scan = bench::find(records, "scanline", &filter, &mode, threads);
-                ui.label(&filter);
-                ui.label(&mode);
-                ui.label(threads.to_string());
-                ui.monospace(ms(edge));
-                ui.monospace(ms(scan));
-                ui.monospace(
-                    bench::edge_over_scanline(records, &filter, &mode, threads)
-                        .map_or("…".to_string(), |x| format!("{x:.2}x")),
-                );
-                ui.monospace(edge.map_or("…".to_string(), |r| format!("{:.1}", r.mpix_per_s)));
-                if reference {
-                    ui.monospace(
-                        llvmpipe_reference(&filter, &mode, threads)
-                            .map_or("-".to_string(), |ms| format!("{ms:.1}")),
-                    );
-                }
-                ui.end_row();
-            }
-        });
-}
-
-/// The median over the measured cells of edge / scanline.
-fn median_ratio(records: &[BenchRecord]) -> Option<f64> {
-    let ratios: Vec<f64> = cells(records)
-        .iter()
-        .filter_map(|(f, m, t)| bench::edge_over_scanline(records, f, m, *t))
-        .collect();
-    bench::median(&ratios)
-}
-
-fn ratio_ui(ui: &mut Ui, records: &[BenchRecord]) {
-    ui.label(text::SEED_CLAIM);
-    if let Some(r) = median_ratio(records) {
-        ui.label(
-            RichText::new(format!(
-                "{} {r:.2}x {}",
-                text::MEASURED_RATIO,
-                text::MEASURED_RATIO_END
-            ))
-            .strong(),
-        );
-    }
-}
-
-const EDGE_COLOR: Color32 = Color32::from_rgb(90, 160, 240);
-const SCANLINE_COLOR: Color32 = Color32::from_rgb(240, 160, 60);
-const LLVMPIPE_COLOR: Color32 = Color32::from_rgb(150, 150, 150);
-/// The y range reaches this multiple of the tallest bar, leaving room for the legend.
-const LEGEND_HEADROOM: f64 = 1.3;
-/// Cell labels under the chart, in points (three short lines fit a cell's width).
-const TICK_LABEL_SIZE: f32 = 15.0;
-/// Bar width and offsets within a cell (cells are 1 apart on the x axis).
-const BAR_WIDTH: f64 = 0.26;
-
-fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
-    use egui_plot::{AxisHints, Bar, BarChart, Corner, GridMark, Legend, Plot};
-    let cells = cells(records);
-    let series = |name: &str,
-                  offset: f64,
-                  color: Color32,
-                  value: &dyn Fn(&str, &str, usize) -> Option<f64>| {
-        let bars: Vec<Bar> = cells
-            .iter()
-            .enumerate()
-            .filter_map(|(i, (f, m, t))| {
-                value(f, m, *t).map(|ms| {
-                    Bar::new(i as f64 + offset, ms)
-                        .width(BAR_WIDTH)
-                        .name(format!("{f} {m} {t}"))
-                })
-            })
-            .collect();
-        BarChart::new(name, bars).color(color)
-    };
-    let ms_of = |name: &'static str| {
-        move |f: &str, m: &str, t: usize| bench::find(records, name, f, m, t).map(|r| r.median_ms)
-    };
-    let edge = series(text::EDGE, -BAR_WIDTH, EDGE_COLOR, &ms_of("edge"));
-    let scan = series(text::SCANLINE, 0.0, SCANLINE_COLOR, &ms_of("scanline"));
-    let llvm = reference.then(|| {
-        series(text::LLVMPIPE_REF, BAR_WIDTH, LLVMPIPE_COLOR, &|f, m, t| {
-            llvmpipe_reference(f, m, t)
-        })
-    });
-    let labels: Vec<String> = cells
-        .iter()
-        .map(|(f, m, t)| {
-            let threads = if *t == 1 {
-                text::THREAD_1.to_string()
-            } else {
-                format!("{t} {}", text::THREADS_N)
-            };
-            format!("{f}\n{m}\n{threads}")
-        })
-        .collect();
-    let n = cells.len();
-    let tallest = records.iter().map(|r| r.median_ms).fold(0.0, f64::max);
-    Plot::new("bench_chart")
-        .height(280.0)
-        .legend(Legend::default().position(Corner::LeftTop))
-        .y_axis_label(text::CHART_Y)
-        .include_y(0.0)
-        .include_y(tallest * LEGEND_HEADROOM)
-        .include_x(-0.6)
-        .include_x(n as f64 - 0.4)
-        .allow_zoom(false)
-        .allow_drag(false)
-        .allow_scroll(false)
-        .allow_boxed_zoom(false)
-        .show_x(false)
-        .x_grid_spacer(move |_| {
-            (0..n)
-                .map(|i| GridMark {
-                    value: i as f64,
-                    step_size: 1.0,
-                })
-                .collect()
-        })
-        .custom_x_axes(vec![
-            AxisHints::new_x()
-                .min_thickness(60.0)
-                .tick_label_font(egui::FontId::proportional(TICK_LABEL_SIZE))
-                .formatter(move |mark, _| {
-                    let i = mark.value.round();
-                    if (mark.value - i).abs() < 1e-6 && i >= 0.0 {
-                        labels.get(i as usize).cloned().unwrap_or_default()
-                    } else {
-                        String::new()
-                    }
-                }),
-        ])
-        .show(ui, |plot| {
-            plot.bar_chart(edge);
-            plot.bar_chart(scan);
-            if let Some(l) = llvm {
-                plot.bar_chart(l);
-            }
-        });
-}
-
-fn reference_ui(ui: &mut Ui) {
-    ui.label(RichText::new(text::REFERENCE_HEADING).strong());
-    egui::Grid::new("llvmpipe_reference")
-        .spacing([18.0, 2.0])
-        .show(ui, |ui| {
-            ui.label("");
-            ui.label(RichText::new("nearest").strong());
-            ui.label(RichText::new("bilinear").strong());
-            ui.end_row();
-            for threads in [1usize, 2] {
-                ui.label(if threads == 1 {
-                    text::THREAD_1.to_string()
-                } else {
-                    format!("{threads} {}", text::THREADS_N)
-                });
-                for filter in ["nearest", "bilinear"] {
-                    let ms = llvmpipe_reference(filter, "perspective", threads);
-                    ui.monospace(ms.map_or("-".into(), |ms| {
-                        format!(
-                            "{ms:.1} {} ({:.0} {})",
-                            text::MS,
-                            bench::mpix_per_s(1920, 1080, ms),
-                            text::MPIX
-                        )
-                    }));
-                }
-                ui.end_row();
-            }
-        });
-    ui.label(RichText::new(text::REFERENCE_NOTE).small());
+    bench_chart::reference_ui(ui);
 }
 
 #[cfg(test)]
@@ -612,13 +400,5 @@ mod tests {
             job.mesh.vertices[2].clip,
             glam::DVec4::new(4.0, 4.0, 0.0, 4.0)
         );
-    }
-
-    #[test]
-    fn llvmpipe_reference_figures_are_for_perspective_only() {
-        assert_eq!(llvmpipe_reference("bilinear", "perspective", 1), Some(11.8));
-        assert_eq!(llvmpipe_reference("nearest", "perspective", 2), Some(2.5));
-        assert_eq!(llvmpipe_reference("nearest", "affine", 2), None);
-        assert_eq!(llvmpipe_reference("nearest", "perspective", 4), None);
     }
 }

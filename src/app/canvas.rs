@@ -1,29 +1,27 @@
 //! The canvas panel: the CPU-rendered image (one or two views), the overlays, the vertex
-//! handles, hovering and pinning pixels.
+//! handles, hovering and pinning pixels. The renders themselves: [`super::render`].
 
-use std::sync::Arc;
 use std::time::Instant;
 
 use egui::{Color32, CursorIcon, Id, Pos2, Rect, Sense, TextureHandle, TextureOptions, Ui};
 use glam::DVec2;
 
-use super::edit::{self, VertexOnScreen};
-use super::heatmap::{self, Heatmap};
-use super::overlay::{self, HandleMark, OverlayInput};
 use super::paint::{self, CanvasTransform};
 use super::pixel::PixelReport;
-use super::state::{AppState, Command, Compare};
+use super::render::{CanvasOutput, RenderCache, TextureKey, view_image};
+use super::state::{AppState, Command};
+use crate::figure::overlay::{self, HandleMark, OverlayInput};
+use crate::figure::{Compare, VertexOnScreen, ViewContent, vertices_on_screen};
 use crate::raster::project::Viewport;
-use crate::raster::render::Render;
-use crate::raster::{Buffers, Interpolation, Texture};
+use crate::raster::{Interpolation, Texture};
 use crate::scene::Scene;
 
 /// User-facing strings of the canvas.
 mod text {
-    pub const RENDER_FAILED: &str = "render failed";
     pub const HANDLE_TIP: &str = "Drag: move this corner parallel to the screen (it keeps its w).\n\
         Scroll or Shift+drag: push it away / pull it closer along its view ray \
         (same place on screen, different w).";
+    pub const WIPE_LINE: &str = "Drag to move the wipe line.";
 }
 
 /// Points between the two views of the side-by-side comparison.
@@ -41,8 +39,6 @@ const ORBIT_DEG_PER_POINT: f64 = 0.4;
 /// Model scenes: the camera distance is multiplied by e^(-this) per point scrolled up.
 const ZOOM_PER_SCROLL_POINT: f64 = 0.004;
 
-pub use crate::figure::ViewContent;
-
 /// One view on screen.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct View {
@@ -50,45 +46,6 @@ pub struct View {
     pub rect: Rect,
     pub transform: CanvasTransform,
     pub content: ViewContent,
-}
-
-/// Everything a render depends on; a new render happens only when this changes.
-#[derive(Clone, Debug, PartialEq)]
-struct RenderKey {
-    scene: Scene,
-    modes: Vec<Interpolation>,
-    rasterizer: crate::raster::render::Rasterizer,
-    texture: (String, Option<std::path::PathBuf>),
-}
-
-/// The rendered frames of the current state.
-pub struct CanvasOutput {
-    /// The scene as rendered (its size set to the render size).
-    pub scene: Scene,
-    pub size: [u32; 2],
-    /// One render per mode shown.
-    pub renders: Vec<(Interpolation, Arc<Render>)>,
-    pub heatmap: Option<Heatmap>,
-    /// Increments with every render.
-    pub generation: u64,
-}
-
-impl CanvasOutput {
-    /// The render in `mode`, or the first one.
-    pub fn render(&self, mode: Interpolation) -> Option<&Render> {
-        self.renders
-            .iter()
-            .find(|(m, _)| *m == mode)
-            .or(self.renders.first())
-            .map(|(_, r)| r.as_ref())
-    }
-
-    pub fn viewport(&self) -> Viewport {
-        Viewport {
-            width: self.size[0],
-            height: self.size[1],
-        }
-    }
 }
 
 /// Timings of the last render, for the status line.
@@ -106,30 +63,10 @@ enum DragKind {
     Wipe,
 }
 
-/// What one cached render depends on: the sized scene, the mode, the texture, the buffers,
-/// the rasterizer.
-type RenderCacheKey = (
-    Scene,
-    Interpolation,
-    TextureKey,
-    Buffers,
-    crate::raster::render::Rasterizer,
-);
-
-/// A texture's name and the folder it is resolved against.
-pub type TextureKey = (String, Option<std::path::PathBuf>);
-
-/// Renders kept for reuse, so flipping the mode back and forth or switching comparisons does
-/// not render again.
-const RENDER_CACHE: usize = 4;
-
 /// The canvas's state between frames (not saved).
 #[derive(Default)]
 pub struct CanvasState {
-    key: Option<RenderKey>,
-    cache: Vec<(RenderCacheKey, Arc<Render>)>,
-    /// A framebuffer of a render that left the cache, reused by the next render.
-    spare: Option<crate::raster::Framebuffer>,
+    renders: RenderCache,
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
     uploaded: Option<(u64, Compare, u32)>,
@@ -219,8 +156,6 @@ pub fn layout(
     (views, size)
 }
 
-use crate::figure::modes_for;
-
 impl CanvasState {
     /// Renders if anything the image depends on changed. Returns whether it rendered.
     pub fn update(
@@ -228,100 +163,28 @@ impl CanvasState {
         state: &AppState,
         size: [u32; 2],
         texture: &Texture,
-        texture_key: (String, Option<std::path::PathBuf>),
+        texture_key: TextureKey,
     ) -> bool {
-        let mut scene = state.scene.clone();
-        scene.set_size(size[0], size[1]);
-        let modes = modes_for(state.view.compare, state.options().mode);
-        // The mode is in `modes`; the scene's own mode field must not make keys differ.
-        let mut options = edit::options(&scene);
-        options.mode = Interpolation::Perspective;
-        edit::set_options(&mut scene, options);
-        let key = RenderKey {
-            scene,
-            modes,
-            rasterizer: state.view.rasterizer,
-            texture: texture_key,
-        };
-        if self.key.as_ref() == Some(&key) {
-            return false;
-        }
-        let start = Instant::now();
-        let mesh = key.scene.to_mesh();
-        let base = key.scene.settings();
-        // Only the difference heatmap reads the per-pixel uv buffers; everything else shows
-        // colour, which the fast path draws (bit-identical to the full render).
-        let buffers = if state.view.compare == Compare::Difference {
-            Buffers::All
-        } else {
-            Buffers::ColorDepth
-        };
-        let mut renders = Vec::new();
-        let mut rendered = false;
-        for &mode in &key.modes {
-            let one = (
-                key.scene.clone(),
-                mode,
-                key.texture.clone(),
-                buffers,
-                key.rasterizer,
-            );
-            if let Some((_, r)) = self.cache.iter().find(|(k, _)| *k == one) {
-                renders.push((mode, r.clone()));
-                continue;
-            }
-            let settings = crate::raster::RenderSettings {
-                mode,
-                rasterizer: key.rasterizer,
-                ..base
-            };
-            let mut frame = self
-                .spare
-                .take()
-                .unwrap_or_else(|| crate::raster::Framebuffer::new(0, 0, base.background));
-            match crate::raster::render_into(&mut frame, &mesh, texture, &settings, buffers) {
-                Ok(triangles) => {
-                    let r = Arc::new(Render { frame, triangles });
-                    self.cache.push((one, r.clone()));
-                    renders.push((mode, r));
-                    rendered = true;
-                }
-                Err(e) => {
-                    self.error = Some(format!("{}: {e}", text::RENDER_FAILED));
-                    return false;
-                }
-            }
-        }
-        if self.cache.len() > RENDER_CACHE {
-            for (_, old) in self.cache.drain(..self.cache.len() - RENDER_CACHE) {
-                // Keep the memory of a render nobody else holds for the next one.
-                if let Ok(r) = Arc::try_unwrap(old) {
-                    self.spare = Some(r.frame);
-                }
-            }
-        }
-        let heat = (state.view.compare == Compare::Difference)
-            .then(|| {
-                renders
-                    .first()
-                    .map(|(_, r)| heatmap::heatmap(&r.frame, (texture.width(), texture.height())))
-            })
-            .flatten();
-        if rendered {
-            self.timing.render_ms = start.elapsed().as_secs_f64() * 1e3;
-            self.timing.renders += 1;
-        }
         let generation = self.output.as_ref().map_or(0, |o| o.generation + 1);
-        self.output = Some(CanvasOutput {
-            scene: key.scene.clone(),
-            size,
-            renders,
-            heatmap: heat,
-            generation,
-        });
-        self.error = None;
-        self.key = Some(key);
-        true
+        match self
+            .renders
+            .update(state, size, texture, texture_key, generation)
+        {
+            Ok(None) => false,
+            Ok(Some(r)) => {
+                if let Some(ms) = r.render_ms {
+                    self.timing.render_ms = ms;
+                    self.timing.renders += 1;
+                }
+                self.output = Some(r.output);
+                self.error = None;
+                true
+            }
+            Err(e) => {
+                self.error = Some(e);
+                false
+            }
+        }
     }
 
     /// Builds the view images and uploads them, only if the render or the wipe moved.
@@ -335,29 +198,10 @@ impl CanvasState {
             return;
         }
         let start = Instant::now();
-        let size = [out.size[0] as usize, out.size[1] as usize];
         let images: Vec<egui::ColorImage> = self
             .views
             .iter()
-            .map(|v| {
-                let pixels: Vec<Color32> = match v.content {
-                    ViewContent::Mode(m) => out
-                        .render(m)
-                        .map(|r| to_color32(&r.frame.color))
-                        .unwrap_or_default(),
-                    ViewContent::Difference => out
-                        .heatmap
-                        .as_ref()
-                        .map(|h| to_color32(&h.pixels))
-                        .unwrap_or_default(),
-                    ViewContent::Wipe => wipe_image(out, wipe_col),
-                };
-                if pixels.len() == size[0] * size[1] {
-                    egui::ColorImage::new(size, pixels)
-                } else {
-                    egui::ColorImage::filled(size, Color32::BLACK)
-                }
-            })
+            .map(|v| view_image(out, v.content, wipe_col))
             .collect();
         self.textures.truncate(images.len());
         for (i, image) in images.into_iter().enumerate() {
@@ -376,51 +220,20 @@ impl CanvasState {
     }
 }
 
-fn to_color32(pixels: &[[u8; 4]]) -> Vec<Color32> {
-    pixels
-        .iter()
-        .map(|c| Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
-        .collect()
-}
-
-/// Affine columns left of `column`, perspective-correct from it on.
-fn wipe_image(out: &CanvasOutput, column: u32) -> Vec<Color32> {
-    let (Some(a), Some(p)) = (
-        out.render(Interpolation::Affine),
-        out.render(Interpolation::Perspective),
-    ) else {
-        return Vec::new();
-    };
-    let w = out.size[0] as usize;
-    a.frame
-        .color
-        .iter()
-        .zip(&p.frame.color)
-        .enumerate()
-        .map(|(i, (ca, cp))| {
-            let c = if (i % w) < column as usize { ca } else { cp };
-            Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3])
-        })
-        .collect()
-}
-
 /// Inputs the canvas needs besides its own state.
 pub struct CanvasInput<'a> {
     pub state: &'a AppState,
     pub texture: &'a Texture,
-    pub texture_key: (String, Option<std::path::PathBuf>),
+    pub texture_key: TextureKey,
     /// Derivations of the hovered and pinned pixels from the last frame (for the overlay).
     pub hover_report: Option<&'a PixelReport>,
     pub pin_report: Option<&'a PixelReport>,
 }
 
-/// The canvas panel.
-pub fn canvas_ui(
-    ui: &mut Ui,
-    canvas: &mut CanvasState,
-    input: CanvasInput<'_>,
-    out: &mut Vec<Command>,
-) {
+/// The canvas panel. It renders and uploads what changed, and keeps its own widget state
+/// (views, hovered pixel, drag) in `canvas`; every change to the app is a returned command.
+pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) -> Vec<Command> {
+    let mut out = Vec::new();
     let state = input.state;
     let view_settings = &state.view;
     let ppp = ui.ctx().pixels_per_point();
@@ -456,10 +269,10 @@ pub fn canvas_ui(
         if let Some(e) = &canvas.error {
             ui.colored_label(Color32::LIGHT_RED, e);
         }
-        return;
+        return out;
     };
     let viewport = output.viewport();
-    let vertices = edit::vertices_on_screen(&state.scene, viewport);
+    let vertices = vertices_on_screen(&state.scene, viewport);
     let painter = ui.painter().clone();
     let base_id = Id::unique("canvas");
     let mut hover = None;
@@ -483,7 +296,7 @@ pub fn canvas_ui(
         };
         let view_resp = ui.interact(view.rect, base_id.with(("view", vi)), sense);
         if is_model {
-            model_camera_input(ui, &view_resp, t.scale, viewport, out);
+            model_camera_input(ui, &view_resp, t.scale, viewport, &mut out);
         }
         let pointer_pixel = |p: Pos2| -> Option<[u32; 2]> {
             let c = t.to_canvas(p);
@@ -524,7 +337,7 @@ pub fn canvas_ui(
                     (p.x - view.rect.left()) / view.rect.width(),
                 ));
             }
-            r.on_hover_text(super::controls::tips::WIPE_LINE);
+            r.on_hover_text(text::WIPE_LINE);
         }
 
         // Handles.
@@ -655,6 +468,7 @@ pub fn canvas_ui(
             &overlay::build(&input_overlay),
         );
     }
+    out
 }
 
 /// Model scenes: drag orbits the camera about its target, Shift+drag or a right/middle drag

@@ -4,10 +4,11 @@ use egui::{Color32, DragValue, RichText, Slider, Ui};
 use glam::{DVec3, DVec4, Vec2};
 
 use super::edit::{self, FOV_RANGE_DEG};
-use super::overlay::{vertex_color, vertex_name};
 use super::paint::color;
 use super::presets::Preset;
-use super::state::{AppState, Command, Compare, PIXEL_SIZE_RANGE, UI_SCALE_RANGE};
+use super::state::{AppState, Command, PIXEL_SIZE_RANGE, UI_SCALE_RANGE};
+use crate::figure::Compare;
+use crate::figure::overlay::{vertex_color, vertex_name};
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
@@ -122,14 +123,14 @@ pub mod tips {
     pub const RESET_ALL: &str = "Back to the default scene and all default settings.";
     pub const TEXT_SIZE: &str = "Zoom the whole interface, for a projector. Keys: Ctrl + / Ctrl -";
     pub const RESET_VIEW: &str = "Back to the camera that frames the whole model. Key: Home";
-    pub const WIPE_LINE: &str = "Drag to move the wipe line.";
 }
 
 /// Width of numeric fields, in points.
 const FIELD_WIDTH: f32 = 64.0;
 
 /// The controls panel.
-pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
+pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
+    let mut out = Vec::new();
     let options = state.options();
     let view = &state.view;
 
@@ -266,7 +267,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
         view.show_grid,
         text::GRID,
         tips::GRID,
-        out,
+        &mut out,
         Command::SetShowGrid,
     );
     checkbox(
@@ -274,7 +275,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
         view.show_handles,
         text::HANDLES,
         tips::HANDLES,
-        out,
+        &mut out,
         Command::SetShowHandles,
     );
     checkbox(
@@ -282,7 +283,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
         view.show_sub_areas,
         text::SUB_AREAS,
         tips::SUB_AREAS,
-        out,
+        &mut out,
         Command::SetShowSubAreas,
     );
 
@@ -300,16 +301,18 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
     });
 
     section(ui, text::CAMERA);
-    camera_ui(ui, &state.scene, out);
+    camera_ui(ui, &state.scene, &mut out);
 
     ui.add_space(6.0);
     egui::CollapsingHeader::new(RichText::new(text::VERTICES).strong())
         .default_open(true)
-        .show(ui, |ui| vertices_ui(ui, &state.scene, out));
+        .show(ui, |ui| vertices_ui(ui, &state.scene, &mut out));
+    out
 }
 
 /// The reset buttons and the text size, for the top bar (laid out right to left).
-pub fn reset_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
+pub fn reset_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
+    let mut out = Vec::new();
     if ui
         .button(text::RESET_ALL)
         .on_hover_text(tips::RESET_ALL)
@@ -337,6 +340,7 @@ pub fn reset_ui(ui: &mut Ui, state: &AppState, out: &mut Vec<Command>) {
     {
         out.push(Command::SetUiScale(scale));
     }
+    out
 }
 
 fn section(ui: &mut Ui, title: &str) {

@@ -8,13 +8,13 @@ use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
-pub use crate::figure::MIN_HANDLE_W;
+use crate::figure::MIN_HANDLE_W;
 
 /// Range a single push may scale a vertex's distance by, so one scroll event cannot send a
 /// vertex to infinity or onto the camera.
 pub const PUSH_FACTOR_RANGE: (f64, f64) = (0.5, 2.0);
 
-pub use crate::figure::{VertexOnScreen, vertices_on_screen};
+use crate::figure::vertices_on_screen;
 
 /// Why an edit could not be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

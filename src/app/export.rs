@@ -4,12 +4,13 @@
 //! The figure is made by [`crate::figure`], the same code as `barylab figure`.
 
 use std::path::{Path, PathBuf};
-use std::sync::mpsc::{Receiver, TryRecvError};
 use std::sync::{Arc, Mutex};
 
 use egui::{Color32, RichText, Ui};
 use serde::{Deserialize, Serialize};
 
+use super::dialog::{DialogOutcome, NativeDialog};
+use super::screenshot::{self, ShotSlot};
 use super::state::AppState;
 use crate::figure::export::{self, ExportError, ExportRequest, ExportSelection};
 use crate::figure::{Background, Figure, FigureError, FigureOptions, SCALES, png};
@@ -52,7 +53,6 @@ pub mod text {
     pub const COPIED: &str = "figure copied to the clipboard";
     pub const CLIPBOARD_FAILED: &str = "cannot copy to the clipboard";
     pub const SCREENSHOT_FAILED: &str = "screenshot failed";
-    pub const SCREENSHOT_TIMEOUT: &str = "no screenshot arrived in time";
     pub const FOLDER_DIALOG: &str = "Folder for figures";
     pub const FOLDER_DIALOG_FAILED: &str = "no folder dialog available: type the folder";
 }
@@ -85,6 +85,8 @@ impl Default for ExportSettings {
 pub enum ExportCommand {
     Open,
     Close,
+    /// Show the native folder dialog.
+    BrowseFolder,
     SetFolder(PathBuf),
     SetScale(u32),
     SetBackground(Background),
@@ -126,9 +128,6 @@ impl Outcome {
     }
 }
 
-/// Where a screenshot callback reports.
-type ScreenshotSlot = Arc<Mutex<Option<Result<(), String>>>>;
-
 /// Give up waiting for a window screenshot after this long (a backend without screenshots
 /// never calls back).
 const SCREENSHOT_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(10);
@@ -141,9 +140,8 @@ pub struct ExportPanel {
     /// The text of the folder field.
     pub folder_text: String,
     pub outcome: Option<Outcome>,
-    commands: Vec<ExportCommand>,
-    dialog: Option<(Receiver<Option<PathBuf>>, std::time::Instant)>,
-    screenshot: Option<(PathBuf, ScreenshotSlot, std::time::Instant)>,
+    dialog: NativeDialog,
+    screenshot: Option<(PathBuf, ShotSlot, std::time::Instant)>,
     /// A window screenshot to take next frame, when the panel is not drawn.
     screenshot_due: Option<PathBuf>,
     clipboard: Option<arboard::Clipboard>,
@@ -175,74 +173,70 @@ impl ExportPanel {
         }
     }
 
-    /// Queues a command, as the panel's widgets do.
-    pub fn push(&mut self, command: ExportCommand) {
-        self.commands.push(command);
-    }
-
-    /// Applies the queued commands; runs the actions.
-    pub fn apply(&mut self, ctx: &egui::Context, app: &ExportContext<'_>) {
-        self.poll_dialog();
+    /// Once per frame: what the folder dialog and a window screenshot came back with; takes a
+    /// due screenshot. Returns the folder picked, as a command.
+    pub fn frame(&mut self, ctx: &egui::Context) -> Vec<ExportCommand> {
+        let picked = self.poll_dialog();
         self.poll_screenshot();
         self.take_due_screenshot(ctx);
-        if !self.commands.is_empty() {
-            // The panel shows the change next frame.
-            ctx.request_repaint();
-        }
-        for c in std::mem::take(&mut self.commands) {
-            match c {
-                ExportCommand::Open => self.open = true,
-                ExportCommand::Close => self.open = false,
-                ExportCommand::SetFolder(f) => {
-                    self.folder_text = f.display().to_string();
-                    self.settings.folder = Some(f);
-                }
-                ExportCommand::SetScale(s) if SCALES.contains(&s) => self.settings.scale = s,
-                ExportCommand::SetScale(_) => {}
-                ExportCommand::SetBackground(b) => self.settings.background = b,
-                ExportCommand::SetSelection(s) => self.settings.selection = s,
-                ExportCommand::Export => {
-                    self.outcome = Some(match self.export(app) {
-                        Ok(files) => {
-                            let summary = match files.first() {
-                                Some(f) if files.len() > 1 => format!(
-                                    "{} {} (+{} {})",
-                                    text::WROTE,
-                                    f.display(),
-                                    files.len() - 1,
-                                    text::MORE_FILES
-                                ),
-                                Some(f) => format!("{} {}", text::WROTE, f.display()),
-                                None => String::new(),
-                            };
-                            let mut lines: Vec<String> = files
-                                .iter()
-                                .map(|f| format!("{} {}", text::WROTE, f.display()))
-                                .collect();
-                            if let Some(json) = files
-                                .iter()
-                                .find(|f| f.extension().is_some_and(|e| e == "json"))
-                            {
-                                lines.push(text::AGAIN.to_string());
-                                lines.push(self.command(app, json));
-                            }
-                            Outcome {
-                                error: false,
-                                lines,
-                                summary,
-                            }
-                        }
-                        Err(e) => Outcome::failed(e),
-                    });
-                }
-                ExportCommand::Copy => {
-                    self.outcome = Some(match self.copy(app) {
-                        Ok(()) => Outcome::done(text::COPIED),
-                        Err(e) => Outcome::failed(e),
-                    });
-                }
-                ExportCommand::Screenshot => self.screenshot(ctx),
+        picked.into_iter().collect()
+    }
+
+    /// Applies a command; runs the actions.
+    pub fn apply(&mut self, ctx: &egui::Context, command: ExportCommand, app: &ExportContext<'_>) {
+        match command {
+            ExportCommand::Open => self.open = true,
+            ExportCommand::Close => self.open = false,
+            ExportCommand::BrowseFolder => self.open_folder_dialog(ctx),
+            ExportCommand::SetFolder(f) => {
+                self.folder_text = f.display().to_string();
+                self.settings.folder = Some(f);
             }
+            ExportCommand::SetScale(s) if SCALES.contains(&s) => self.settings.scale = s,
+            ExportCommand::SetScale(_) => {}
+            ExportCommand::SetBackground(b) => self.settings.background = b,
+            ExportCommand::SetSelection(s) => self.settings.selection = s,
+            ExportCommand::Export => {
+                self.outcome = Some(match self.export(app) {
+                    Ok(files) => {
+                        let summary = match files.first() {
+                            Some(f) if files.len() > 1 => format!(
+                                "{} {} (+{} {})",
+                                text::WROTE,
+                                f.display(),
+                                files.len() - 1,
+                                text::MORE_FILES
+                            ),
+                            Some(f) => format!("{} {}", text::WROTE, f.display()),
+                            None => String::new(),
+                        };
+                        let mut lines: Vec<String> = files
+                            .iter()
+                            .map(|f| format!("{} {}", text::WROTE, f.display()))
+                            .collect();
+                        if let Some(json) = files
+                            .iter()
+                            .find(|f| f.extension().is_some_and(|e| e == "json"))
+                        {
+                            lines.push(text::AGAIN.to_string());
+                            lines.push(self.command(app, json));
+                        }
+                        Outcome {
+                            error: false,
+                            lines,
+                            summary,
+                        }
+                    }
+                    Err(e) => Outcome::failed(e),
+                });
+            }
+            ExportCommand::Copy => {
+                self.outcome = Some(match self.copy(app) {
+                    Ok(()) => Outcome::done(text::COPIED),
+                    Err(e) => Outcome::failed(e),
+                });
+            }
+            ExportCommand::Screenshot => self.screenshot(ctx),
         }
     }
 
@@ -352,15 +346,9 @@ impl ExportPanel {
         let Some(path) = self.screenshot_due.take() else {
             return;
         };
-        let slot: ScreenshotSlot = Arc::new(Mutex::new(None));
-        let (report, target, repaint) = (slot.clone(), path.clone(), ctx.clone());
-        ctx.request_screenshot(move |image| {
-            let r = write_color_image(&image, &target);
-            if let Ok(mut s) = report.lock() {
-                *s = Some(r);
-            }
-            repaint.request_repaint();
-        });
+        let slot: ShotSlot = Arc::new(Mutex::new(None));
+        let target = path.clone();
+        screenshot::request(ctx, &slot, move |image| write_color_image(image, &target));
         self.screenshot = Some((path, slot, std::time::Instant::now()));
     }
 
@@ -368,11 +356,7 @@ impl ExportPanel {
         let Some((path, slot, started)) = &self.screenshot else {
             return;
         };
-        let mut done = slot.lock().ok().and_then(|s| s.clone());
-        if done.is_none() && started.elapsed() > SCREENSHOT_TIMEOUT {
-            done = Some(Err(text::SCREENSHOT_TIMEOUT.to_string()));
-        }
-        if let Some(r) = done {
+        if let Some(r) = screenshot::outcome(slot, *started, SCREENSHOT_TIMEOUT) {
             self.outcome = Some(match r {
                 Ok(()) => Outcome::done(format!("{} {}", text::WROTE, path.display())),
                 Err(e) => Outcome::failed(format!("{}: {e}", text::SCREENSHOT_FAILED)),
@@ -382,45 +366,28 @@ impl ExportPanel {
     }
 
     fn open_folder_dialog(&mut self, ctx: &egui::Context) {
-        if self.dialog.is_some() {
-            return;
-        }
-        let (tx, rx) = std::sync::mpsc::channel();
-        let repaint = ctx.clone();
         let start = self.settings.folder.clone();
-        let spawned = std::thread::Builder::new()
-            .name("folder dialog".into())
-            .spawn(move || {
-                let mut d = rfd::FileDialog::new().set_title(text::FOLDER_DIALOG);
-                if let Some(f) = start {
-                    d = d.set_directory(f);
-                }
-                let _ = tx.send(d.pick_folder());
-                repaint.request_repaint();
-            });
-        match spawned {
-            Ok(_) => self.dialog = Some((rx, std::time::Instant::now())),
-            Err(_) => self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED)),
+        let opened = self.dialog.open(ctx, "folder dialog", move || {
+            let mut d = rfd::FileDialog::new().set_title(text::FOLDER_DIALOG);
+            if let Some(f) = start {
+                d = d.set_directory(f);
+            }
+            d.pick_folder()
+        });
+        if opened.is_err() {
+            self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED));
         }
     }
 
-    fn poll_dialog(&mut self) {
-        let Some((rx, started)) = &self.dialog else {
-            return;
-        };
-        match rx.try_recv() {
-            Err(TryRecvError::Empty) => {}
-            Ok(Some(folder)) => {
-                self.dialog = None;
-                self.commands.insert(0, ExportCommand::SetFolder(folder));
+    /// The folder picked in the dialog, once it closed with one.
+    fn poll_dialog(&mut self) -> Option<ExportCommand> {
+        match self.dialog.poll()? {
+            DialogOutcome::Picked(folder) => Some(ExportCommand::SetFolder(folder)),
+            DialogOutcome::Failed => {
+                self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED));
+                None
             }
-            Ok(None) | Err(TryRecvError::Disconnected) => {
-                // Nobody cancels that fast: the dialog could not open.
-                if started.elapsed() < super::files::DIALOG_FAILED_WITHIN {
-                    self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED));
-                }
-                self.dialog = None;
-            }
+            DialogOutcome::Cancelled => None,
         }
     }
 }
@@ -458,25 +425,37 @@ pub fn figure_options(
 
 /// Writes an egui image as a new PNG file (never over an existing one).
 fn write_color_image(image: &egui::ColorImage, path: &Path) -> Result<(), String> {
-    let [w, h] = image.size;
-    let mut out = image::RgbaImage::new(w as u32, h as u32);
-    for (px, c) in out.pixels_mut().zip(&image.pixels) {
-        px.0 = c.to_srgba_unmultiplied();
-    }
-    let mut bytes = Vec::new();
-    out.write_to(
-        &mut std::io::Cursor::new(&mut bytes),
-        image::ImageFormat::Png,
-    )
-    .map_err(|e| e.to_string())?;
+    let bytes = screenshot::png_bytes(image)?;
     export::write_new(path, &bytes).map_err(|e| e.to_string())
 }
 
-/// The Export window.
-pub fn export_ui(ctx: &egui::Context, panel: &mut ExportPanel) {
-    if !panel.open || panel.hidden_for_screenshot() {
-        return;
+/// What the Export window shows ([`ExportPanel::view`]).
+pub struct ExportView<'a> {
+    pub settings: &'a ExportSettings,
+    pub outcome: Option<&'a Outcome>,
+}
+
+impl ExportPanel {
+    /// What the window shows, and the folder field's text (the one thing the window edits
+    /// itself); `None` when the window is not shown.
+    pub fn view(&mut self) -> Option<(ExportView<'_>, &mut String)> {
+        if !self.open || self.hidden_for_screenshot() {
+            return None;
+        }
+        let view = ExportView {
+            settings: &self.settings,
+            outcome: self.outcome.as_ref(),
+        };
+        Some((view, &mut self.folder_text))
     }
+}
+
+/// The Export window.
+pub fn export_ui(
+    ctx: &egui::Context,
+    panel: &ExportView<'_>,
+    folder_text: &mut String,
+) -> Vec<ExportCommand> {
     let mut open = true;
     let mut out = Vec::new();
     egui::Window::new(text::WINDOW)
@@ -487,14 +466,19 @@ pub fn export_ui(ctx: &egui::Context, panel: &mut ExportPanel) {
         // Low on the right, over the inspector: the canvas being exported stays in view.
         .pivot(egui::Align2::RIGHT_BOTTOM)
         .default_pos(ctx.content_rect().right_bottom() - egui::vec2(20.0, 60.0))
-        .show(ctx, |ui| window_contents(ui, panel, &mut out));
+        .show(ctx, |ui| window_contents(ui, panel, folder_text, &mut out));
     if !open {
         out.push(ExportCommand::Close);
     }
-    panel.commands.extend(out);
+    out
 }
 
-fn window_contents(ui: &mut Ui, panel: &mut ExportPanel, out: &mut Vec<ExportCommand>) {
+fn window_contents(
+    ui: &mut Ui,
+    panel: &ExportView<'_>,
+    folder_text: &mut String,
+    out: &mut Vec<ExportCommand>,
+) {
     let s = panel.settings.clone();
     egui::Grid::new("export-grid")
         .num_columns(2)
@@ -503,18 +487,18 @@ fn window_contents(ui: &mut Ui, panel: &mut ExportPanel, out: &mut Vec<ExportCom
             ui.label(text::FOLDER);
             ui.horizontal(|ui| {
                 let field = ui.add(
-                    egui::TextEdit::singleline(&mut panel.folder_text)
+                    egui::TextEdit::singleline(folder_text)
                         .hint_text(text::FOLDER_HINT)
                         .desired_width(340.0),
                 );
                 if field.changed() {
-                    let t = panel.folder_text.trim();
+                    let t = folder_text.trim();
                     if !t.is_empty() {
                         out.push(ExportCommand::SetFolder(PathBuf::from(t)));
                     }
                 }
                 if ui.button(text::BROWSE).clicked() {
-                    panel.open_folder_dialog(ui.ctx());
+                    out.push(ExportCommand::BrowseFolder);
                 }
             });
             ui.end_row();
@@ -581,7 +565,7 @@ fn window_contents(ui: &mut Ui, panel: &mut ExportPanel, out: &mut Vec<ExportCom
             out.push(ExportCommand::Screenshot);
         }
     });
-    if let Some(o) = &panel.outcome {
+    if let Some(o) = panel.outcome {
         ui.separator();
         let color = if o.error {
             Color32::from_rgb(255, 120, 110)

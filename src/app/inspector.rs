@@ -4,9 +4,9 @@
 
 use egui::{Color32, RichText, Ui};
 
-use super::overlay::{CLIP_POINT, NEGATIVE, vertex_color};
 use super::paint::color;
 use super::pixel::PixelReport;
+use crate::figure::overlay::{CLIP_POINT, NEGATIVE, vertex_color};
 use crate::probe::format::fmt_number;
 use crate::probe::{Position, TriangleCoverage};
 use crate::raster::Interpolation;

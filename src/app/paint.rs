@@ -4,7 +4,7 @@ use egui::epaint::{Mesh, PathStroke};
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape as EShape, Stroke as EStroke, StrokeKind};
 use glam::DVec2;
 
-use super::overlay::{Overlay, Rgba, Shape, Stroke};
+use crate::figure::overlay::{Overlay, Rgba, Shape, Stroke};
 
 /// Maps canvas coordinates (rendered pixels) to screen points.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -261,7 +261,7 @@ fn paint_color_bar(
         rect.min - egui::vec2(12.0, 40.0),
         rect.max + egui::vec2(56.0, 12.0),
     );
-    painter.rect_filled(back, 6.0, color(super::overlay::LABEL_BG));
+    painter.rect_filled(back, 6.0, color(crate::figure::overlay::LABEL_BG));
     let n = colors.len().saturating_sub(1).max(1);
     let mut mesh = Mesh::default();
     for (i, pair) in colors.windows(2).enumerate() {
@@ -282,7 +282,7 @@ fn paint_color_bar(
         EStroke::new(1.0, Color32::WHITE),
         StrokeKind::Outside,
     );
-    let text = color(super::overlay::LABEL_TEXT);
+    let text = color(crate::figure::overlay::LABEL_TEXT);
     for (t, l) in labels {
         let y = rect.bottom() - rect.height() * t;
         painter.line_segment(

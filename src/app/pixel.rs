@@ -2,8 +2,8 @@
 //! stages that drew the pixel), its worked-example document, and the triangle the overlay
 //! marks. Nothing here re-does the math.
 
-use super::canvas::CanvasOutput;
-use super::overlay::{PixelMark, TriangleMark};
+use super::render::CanvasOutput;
+use crate::figure::overlay::{PixelMark, TriangleMark};
 use crate::probe::format::{self, Document};
 use crate::probe::{PixelTrace, ProbeError, Prober};
 use crate::raster::{Interpolation, RenderSettings, Texture};
@@ -79,10 +79,8 @@ impl PixelReport {
         crate::figure::triangle_mark(&self.trace)
     }
 
+    /// The overlay's mark of this pixel ([`crate::figure::pixel_mark`]).
     pub fn mark(&self) -> PixelMark {
-        PixelMark {
-            pixel: self.pixel,
-            triangle: self.triangle(),
-        }
+        crate::figure::pixel_mark(&self.trace)
     }
 }

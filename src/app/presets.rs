@@ -119,7 +119,7 @@ impl Preset {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::app::edit::vertices_on_screen;
+    use crate::figure::vertices_on_screen;
     use crate::raster::project::Viewport;
 
     #[test]

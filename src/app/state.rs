@@ -1,5 +1,6 @@
-//! The app's state: what is saved between runs, and the commands that change it. Panels read
-//! the state and push [`Command`]s; the app applies them once per frame.
+//! The app's document: the scene and the view settings, and the [`Command`]s that change them.
+//! Panels read the state and return commands; the app applies them once per frame
+//! ([`AppState::apply`]). What of it is saved between runs: [`super::persist`].
 
 use std::path::PathBuf;
 
@@ -12,7 +13,7 @@ use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
-pub use crate::figure::Compare;
+use crate::figure::Compare;
 
 /// Smallest and largest pixel size (display pixels per rendered pixel).
 pub const PIXEL_SIZE_RANGE: (u32, u32) = (1, 32);
@@ -58,24 +59,6 @@ impl Default for ViewSettings {
     }
 }
 
-/// Everything saved between runs.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct SavedState {
-    /// The scene as JSON (parsed with [`Scene::from_json`] on restore).
-    pub scene_json: String,
-    /// Folder relative texture paths of the scene are resolved against.
-    pub scene_dir: Option<PathBuf>,
-    pub view: ViewSettings,
-    /// Recently opened files, newest first (kept by the app beside the state).
-    pub recent: super::files::RecentFiles,
-    /// The Export panel's folder, scale, background and file choice.
-    pub export: super::export::ExportSettings,
-}
-
-/// Key under which eframe stores [`SavedState`].
-pub const STORAGE_KEY: &str = "barylab_state";
-
 /// The live document: the scene and the view.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AppState {
@@ -95,48 +78,6 @@ impl Default for AppState {
 }
 
 impl AppState {
-    pub fn to_saved(&self) -> SavedState {
-        SavedState {
-            scene_json: self.scene.to_json(),
-            scene_dir: self.scene_dir.clone(),
-            view: self.view.clone(),
-            recent: Default::default(),
-            export: Default::default(),
-        }
-    }
-
-    /// Restores a saved state; a scene that no longer parses is replaced by the default scene
-    /// and the error is returned beside the state.
-    pub fn from_saved(saved: SavedState) -> (Self, Option<String>) {
-        let mut state = AppState {
-            view: saved.view,
-            ..AppState::default()
-        };
-        state.view.pixel_size = state
-            .view
-            .pixel_size
-            .clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);
-        if !(state.view.ui_scale >= UI_SCALE_RANGE.0 && state.view.ui_scale <= UI_SCALE_RANGE.1) {
-            state.view.ui_scale = ViewSettings::default().ui_scale;
-        }
-        let mut error = None;
-        if !saved.scene_json.is_empty() {
-            // Model scenes name their OBJ relative to the scene file's folder.
-            let name = saved.scene_dir.as_ref().map_or_else(
-                || "saved scene".to_string(),
-                |d| d.join("saved scene").display().to_string(),
-            );
-            match Scene::from_json(&saved.scene_json, &name) {
-                Ok(scene) => {
-                    state.scene = scene;
-                    state.scene_dir = saved.scene_dir;
-                }
-                Err(e) => error = Some(e.to_string()),
-            }
-        }
-        (state, error)
-    }
-
     pub fn options(&self) -> SceneOptions {
         edit::options(&self.scene)
     }
@@ -368,34 +309,6 @@ impl AppState {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn saved_state_round_trips_and_bad_scenes_fall_back_to_the_default() {
-        let mut s = AppState::default();
-        s.apply(Command::Preset(Preset::GrazingWall))
-            .expect("preset");
-        s.apply(Command::SetMode(Interpolation::Affine))
-            .expect("mode");
-        s.apply(Command::SetPixelSize(8)).expect("size");
-        let json = serde_json::to_string(&s.to_saved()).expect("json");
-        let back: SavedState = serde_json::from_str(&json).expect("parse");
-        let (restored, err) = AppState::from_saved(back);
-        assert_eq!(err, None);
-        assert_eq!(restored, s);
-
-        let broken = SavedState {
-            scene_json: "{\"quad\": 3}".into(),
-            ..SavedState::default()
-        };
-        let (restored, err) = AppState::from_saved(broken);
-        assert!(err.expect("error").starts_with("saved scene:"));
-        assert_eq!(restored.scene, Scene::default_scene());
-        // Old or partial saved states still load (serde default).
-        let partial: SavedState =
-            serde_json::from_str("{\"view\": {\"pixel_size\": 4}}").expect("partial state");
-        assert_eq!(partial.view.pixel_size, 4);
-        assert!(partial.view.show_handles);
-    }
 
     #[test]
     fn toggling_the_mode_and_moving_the_pin() {

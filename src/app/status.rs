@@ -3,7 +3,8 @@
 use egui::{Color32, RichText, Ui};
 
 use super::canvas::CanvasState;
-use super::state::{AppState, Compare};
+use super::state::AppState;
+use crate::figure::Compare;
 use crate::raster::Interpolation;
 
 /// User-facing strings of the status line.

@@ -101,6 +101,29 @@ pub fn wipe_column(wipe: f32, width: u32) -> u32 {
     (wipe.clamp(0.0, 1.0) * width as f32).round() as u32
 }
 
+/// The wipe view's pixels: the affine image left of `column`, the perspective-correct one from
+/// it on (both `width` pixels wide, row by row).
+pub fn wipe_pixels(
+    affine: &[[u8; 4]],
+    perspective: &[[u8; 4]],
+    width: u32,
+    column: u32,
+) -> Vec<[u8; 4]> {
+    let row = width as usize;
+    affine
+        .iter()
+        .zip(perspective)
+        .enumerate()
+        .map(|(k, (ca, cp))| {
+            if ((k % row) as u32) < column {
+                *ca
+            } else {
+                *cp
+            }
+        })
+        .collect()
+}
+
 /// Smallest clip w at which a vertex is drawn as a handle: at or behind the camera plane a
 /// vertex has no position on screen.
 pub const MIN_HANDLE_W: f64 = 1e-6;
@@ -487,20 +510,7 @@ impl Figure {
                     render_of(Interpolation::Perspective),
                 ) {
                     (Some(a), Some(p)) => {
-                        let row = (w * multiple) as usize;
-                        a.frame
-                            .color
-                            .iter()
-                            .zip(&p.frame.color)
-                            .enumerate()
-                            .map(|(k, (ca, cp))| {
-                                if ((k % row) as u32) < wipe_px {
-                                    *ca
-                                } else {
-                                    *cp
-                                }
-                            })
-                            .collect()
+                        wipe_pixels(&a.frame.color, &p.frame.color, w * multiple, wipe_px)
                     }
                     _ => Vec::new(),
                 },

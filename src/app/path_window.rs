@@ -1,0 +1,89 @@
+//! The typed-path window: open a file by typing its path, also offered when the native dialog
+//! cannot open.
+
+use std::path::PathBuf;
+
+use egui::{Color32, RichText};
+
+use super::files::FileCommand;
+
+/// User-facing strings of the typed-path window.
+pub mod text {
+    pub const PATH_WINDOW: &str = "Open a file";
+    pub const PATH_HINT: &str = "/path/to/photo.jpg, model.obj or scene.json";
+    pub const OPEN_BUTTON: &str = "Open";
+    pub const BROWSE: &str = "Browse…";
+    pub const DIALOG_FAILED: &str = "The file dialog did not open (no desktop portal and no \
+        zenity found). Type the path of the file instead:";
+}
+
+/// The typed-path window's state: whether it is shown, why, and its field.
+#[derive(Default)]
+pub struct PathWindow {
+    pub open: bool,
+    /// Shown in the window when the native dialog failed.
+    pub dialog_failed: bool,
+    /// The text of the path field.
+    pub typed: String,
+    /// Give the path field the keyboard focus (the window just opened).
+    focus_field: bool,
+}
+
+impl PathWindow {
+    /// Opens the window with an empty, focused field; `dialog_failed` says why it is offered.
+    pub fn show(&mut self, dialog_failed: bool) {
+        self.dialog_failed = dialog_failed;
+        self.open = true;
+        self.focus_field = true;
+        // Start empty: typing must not append to the last path.
+        self.typed.clear();
+    }
+}
+
+/// The typed-path window (when open). It edits only its own field.
+pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileCommand> {
+    let mut out = Vec::new();
+    if !window.open {
+        return out;
+    }
+    let mut window_open = true;
+    let mut submit = false;
+    egui::Window::new(text::PATH_WINDOW)
+        .open(&mut window_open)
+        .collapsible(false)
+        .default_width(560.0)
+        .anchor(egui::Align2::CENTER_TOP, [0.0, 100.0])
+        .show(ctx, |ui| {
+            if window.dialog_failed {
+                ui.label(RichText::new(text::DIALOG_FAILED).color(Color32::from_rgb(255, 200, 90)));
+            }
+            let field = ui.add(
+                egui::TextEdit::singleline(&mut window.typed)
+                    .hint_text(text::PATH_HINT)
+                    .desired_width(f32::INFINITY),
+            );
+            if std::mem::take(&mut window.focus_field) {
+                field.request_focus();
+            }
+            if field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                submit = true;
+            }
+            ui.horizontal(|ui| {
+                if ui.button(text::OPEN_BUTTON).clicked() {
+                    submit = true;
+                }
+                if !window.dialog_failed && ui.button(text::BROWSE).clicked() {
+                    out.push(FileCommand::OpenDialog);
+                }
+            });
+        });
+    let typed = window.typed.trim();
+    if submit && !typed.is_empty() {
+        out.push(FileCommand::Open(PathBuf::from(typed)));
+        window_open = false;
+    }
+    if !window_open {
+        out.push(FileCommand::ClosePathWindow);
+    }
+    out
+}

@@ -1,0 +1,134 @@
+//! What the app saves between runs, in eframe's storage under [`STORAGE_KEY`], and how it comes
+//! back: the scene, the view settings, the recent files and the Export panel's settings.
+
+use std::path::PathBuf;
+
+use serde::{Deserialize, Serialize};
+
+use super::export::ExportSettings;
+use super::files::RecentFiles;
+use super::state::{AppState, PIXEL_SIZE_RANGE, UI_SCALE_RANGE, ViewSettings};
+use crate::scene::Scene;
+
+/// Key under which eframe stores [`SavedState`].
+pub const STORAGE_KEY: &str = "barylab_state";
+
+/// Everything saved between runs. Every field has a default, so older or partial saved states
+/// still load.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SavedState {
+    /// The scene as JSON (parsed with [`Scene::from_json`] on restore).
+    pub scene_json: String,
+    /// Folder relative texture paths of the scene are resolved against.
+    pub scene_dir: Option<PathBuf>,
+    pub view: ViewSettings,
+    /// Recently opened files, newest first.
+    pub recent: RecentFiles,
+    /// The Export panel's folder, scale, background and file choice.
+    pub export: ExportSettings,
+}
+
+/// A saved state, restored.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Restored {
+    pub state: AppState,
+    pub recent: RecentFiles,
+    pub export: ExportSettings,
+    /// Why the saved scene could not be used (the default scene is used instead).
+    pub error: Option<String>,
+}
+
+impl SavedState {
+    /// What is saved of the app now.
+    pub fn capture(state: &AppState, recent: &RecentFiles, export: &ExportSettings) -> Self {
+        Self {
+            scene_json: state.scene.to_json(),
+            scene_dir: state.scene_dir.clone(),
+            view: state.view.clone(),
+            recent: recent.clone(),
+            export: export.clone(),
+        }
+    }
+
+    /// Restores a saved state: settings out of range get their defaults, and a scene that no
+    /// longer parses is replaced by the default scene (the error is returned beside it).
+    pub fn restore(self) -> Restored {
+        let mut state = AppState {
+            view: self.view,
+            ..AppState::default()
+        };
+        state.view.pixel_size = state
+            .view
+            .pixel_size
+            .clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);
+        if !(state.view.ui_scale >= UI_SCALE_RANGE.0 && state.view.ui_scale <= UI_SCALE_RANGE.1) {
+            state.view.ui_scale = ViewSettings::default().ui_scale;
+        }
+        let mut error = None;
+        if !self.scene_json.is_empty() {
+            // Model scenes name their OBJ relative to the scene file's folder.
+            let name = self.scene_dir.as_ref().map_or_else(
+                || "saved scene".to_string(),
+                |d| d.join("saved scene").display().to_string(),
+            );
+            match Scene::from_json(&self.scene_json, &name) {
+                Ok(scene) => {
+                    state.scene = scene;
+                    state.scene_dir = self.scene_dir;
+                }
+                Err(e) => error = Some(e.to_string()),
+            }
+        }
+        Restored {
+            state,
+            recent: self.recent,
+            export: self.export,
+            error,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::presets::Preset;
+    use crate::app::state::Command;
+    use crate::raster::Interpolation;
+
+    #[test]
+    fn saved_state_round_trips_and_bad_scenes_fall_back_to_the_default() {
+        let mut s = AppState::default();
+        s.apply(Command::Preset(Preset::GrazingWall))
+            .expect("preset");
+        s.apply(Command::SetMode(Interpolation::Affine))
+            .expect("mode");
+        s.apply(Command::SetPixelSize(8)).expect("size");
+        let mut recent = RecentFiles::default();
+        recent.push(std::path::Path::new("/tmp/a.json"));
+        let export = ExportSettings {
+            scale: 4,
+            ..ExportSettings::default()
+        };
+        let saved = SavedState::capture(&s, &recent, &export);
+        let json = serde_json::to_string(&saved).expect("json");
+        let back: SavedState = serde_json::from_str(&json).expect("parse");
+        let restored = back.restore();
+        assert_eq!(restored.error, None);
+        assert_eq!(restored.state, s);
+        assert_eq!((restored.recent, restored.export), (recent, export));
+
+        let broken = SavedState {
+            scene_json: "{\"quad\": 3}".into(),
+            ..SavedState::default()
+        };
+        let restored = broken.restore();
+        assert!(restored.error.expect("error").starts_with("saved scene:"));
+        assert_eq!(restored.state.scene, Scene::default_scene());
+        // Old or partial saved states still load (serde default).
+        let partial: SavedState =
+            serde_json::from_str("{\"view\": {\"pixel_size\": 4}}").expect("partial state");
+        assert_eq!(partial.view.pixel_size, 4);
+        assert!(partial.view.show_handles);
+    }
+}
