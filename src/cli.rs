@@ -4,11 +4,13 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use barylab::probe::format::Format;
 use barylab::raster::{self, Filter, Interpolation, Shading};
 use barylab::scene::Scene;
 use clap::{Parser, Subcommand, ValueEnum};
+
+use crate::output::{self, note, print};
 
 const EXAMPLES: &str = "\
 Examples:
@@ -45,6 +47,16 @@ struct Cli {
     /// Window size in points, e.g. 1500x950.
     #[arg(long, value_parser = parse_window_size, value_name = "WxH")]
     window_size: Option<(u32, u32)>,
+    /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: 75% of the
+    /// available memory, or the environment variable BARYLAB_MEMORY_LIMIT).
+    #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
+    memory_limit: Option<u64>,
+}
+
+/// Parses a memory size such as 2G, 512M or 1000000.
+fn parse_memory(s: &str) -> Result<u64, String> {
+    barylab::budget::parse_size(s)
+        .ok_or_else(|| format!("`{s}` is not a memory size like 2G, 512M or 1000000"))
 }
 
 #[derive(Subcommand, Debug)]
@@ -208,7 +220,7 @@ struct BenchArgs {
     /// Scene (default: assets/scenes/bench-1080p.json if present, else the built-in default).
     scene: Option<PathBuf>,
     /// Image size as WIDTHxHEIGHT (default: the scene's).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, allow_hyphen_values = true)]
     size: Option<(u32, u32)>,
     /// Frames rendered per configuration; the median is reported.
     #[arg(long, default_value_t = 9, value_parser = clap::value_parser!(u32).range(1..=10000))]
@@ -250,7 +262,7 @@ struct SceneOptions {
     #[arg(long)]
     mode: Option<ModeArg>,
     /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, allow_hyphen_values = true)]
     size: Option<(u32, u32)>,
     /// Texture filter (default: the scene's); trilinear uses mipmaps.
     #[arg(long)]
@@ -269,10 +281,12 @@ fn prepare(o: &SceneOptions) -> Result<(Scene, raster::Texture, raster::RenderSe
     if let Some((w, h)) = o.size {
         scene.set_size(w, h);
     }
+    // What drawing it takes (the probe and the figure set up every triangle too), before the
+    // texture is read.
+    let (w, h) = scene.size();
+    let (vertices, triangles) = scene.mesh_size();
+    barylab::budget::check_render(w, h, raster::Buffers::All, vertices, triangles)?;
     let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
-    for note in scene.notes().iter().chain(&texture_notes) {
-        eprintln!("note: {note}");
-    }
     let mut settings = scene.settings();
     if let Some(m) = o.mode {
         settings.mode = m.into();
@@ -284,6 +298,13 @@ fn prepare(o: &SceneOptions) -> Result<(Scene, raster::Texture, raster::RenderSe
         settings.shading = s.into();
     }
     settings.wireframe |= o.wireframe;
+    for note in scene
+        .notes_for(settings.shading)
+        .iter()
+        .chain(&texture_notes)
+    {
+        note!("note: {note}");
+    }
     Ok((scene, texture, settings))
 }
 
@@ -359,7 +380,7 @@ impl From<ShadingArg> for Shading {
 
 /// Parses "WIDTHxHEIGHT".
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("`{s}` is not a size like 800x600");
+    let bad = || format!("`{s}` is not a size like 800x600 (whole numbers from 1)");
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
     let h: u32 = h.trim().parse().map_err(|_| bad())?;
@@ -386,8 +407,10 @@ fn parse_args() -> Result<Cli, ExitCode> {
         if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion)
             || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
         {
-            let _ = e.print();
-            return ExitCode::SUCCESS;
+            return match print(&e.render().to_string()) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => output::report(&e),
+            };
         }
         // Clap's message is the paragraph before the first blank line; join it into one line.
         let text = e.render().to_string();
@@ -396,7 +419,7 @@ fn parse_args() -> Result<Cli, ExitCode> {
             .take_while(|l| !l.trim().is_empty())
             .map(str::trim)
             .collect();
-        eprintln!("{}", first.join(" "));
+        note!("{}", output::one_line(&first.join(" ")));
         ExitCode::from(2)
     })
 }
@@ -406,6 +429,9 @@ pub fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(code) => return code,
     };
+    if let Some(bytes) = cli.memory_limit {
+        barylab::budget::set_limit(bytes);
+    }
     let result = match cli.command {
         None => app(&cli),
         Some(Command::Render(args)) => render(&args),
@@ -415,10 +441,7 @@ pub fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e:#}");
-            ExitCode::FAILURE
-        }
+        Err(e) => output::report(&e),
     }
 }
 
@@ -439,8 +462,8 @@ fn app(cli: &Cli) -> Result<()> {
         Some(path) => {
             let opened = barylab::app::files::open(path, &Scene::default_scene())
                 .map_err(anyhow::Error::msg)?;
-            for note in &opened.notes {
-                eprintln!("note: {note}");
+            for n in &opened.notes {
+                note!("note: {n}");
             }
             Some(opened)
         }
@@ -478,7 +501,7 @@ fn report_skipped(triangles: &[raster::render::PreparedTriangle]) {
         } else {
             "triangles"
         };
-        eprintln!(
+        note!(
             "note: {} {noun} not drawn ({shown}{more}): {}",
             ids.len(),
             status.describe()
@@ -504,11 +527,10 @@ fn bench(args: &BenchArgs) -> Result<()> {
         .map(|config| barylab::bench::run_config(&mesh, &texture, &base, config, args.frames))
         .collect::<Result<Vec<_>, _>>()?;
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&records)?);
+        print(&format!("{}\n", serde_json::to_string_pretty(&records)?))
     } else {
-        print!("{}", barylab::bench::text_table(&records));
+        print(&barylab::bench::text_table(&records))
     }
-    Ok(())
 }
 
 /// Loads what the user named: a scene file, an OBJ model or an image
@@ -518,75 +540,97 @@ pub fn load_input(path: &Path) -> Result<(Scene, PathBuf)> {
 }
 
 fn render(args: &RenderArgs) -> Result<()> {
+    // Every output is checked before the (possibly long) render.
+    output::check_output(&args.output, &["png"])?;
+    if let Some(dir) = &args.aov {
+        barylab::aov::check_folder(dir)?;
+    }
     let (scene, texture, mut settings) = prepare(&args.input)?;
+    output::not_an_input(&args.output, &inputs(&args.input.scene, &scene))?;
     settings.rasterizer = args.rasterizer.into();
     let mesh = scene.to_mesh();
     let workers = pool(args.threads)?;
     let start = Instant::now();
     let out = workers.install(|| raster::render(&mesh, &texture, &settings))?;
     let ms = start.elapsed().as_secs_f64() * 1e3;
-    let ext = args
-        .output
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    if ext.as_deref() != Some("png") {
-        bail!("output {} must be a .png file", args.output.display());
+    // All files are written beside their places first and moved in together: a failure
+    // leaves every earlier file as it was.
+    let png = barylab::files::stage(&args.output, |w| {
+        out.frame
+            .to_image()
+            .write_to(w, image::ImageFormat::Png)
+            .map_err(std::io::Error::other)
+    })?;
+    let aovs = match &args.aov {
+        Some(dir) => barylab::aov::stage_aovs(dir, &out.frame, settings.mode)?,
+        None => Vec::new(),
+    };
+    for file in aovs {
+        file.commit()?;
     }
-    out.frame
-        .to_image()
-        .save(&args.output)
-        .with_context(|| format!("cannot write {}", args.output.display()))?;
-    if let Some(dir) = &args.aov {
-        barylab::aov::write_aovs(dir, &out.frame, settings.mode)?;
-    }
+    png.commit()?;
     report_skipped(&out.triangles);
     let drawn = out
         .triangles
         .iter()
         .filter(|t| t.status == raster::render::TriangleStatus::Drawn)
         .count();
-    println!(
-        "rendered {}x{} ({:?}, {} of {} triangles drawn) in {:.2} ms -> {}",
+    print(&format!(
+        "rendered {}x{} ({:?}, {} of {} triangles drawn) in {:.2} ms -> {}\n",
         settings.width,
         settings.height,
         settings.mode,
         drawn,
         out.triangles.len(),
         ms,
-        args.output.display()
-    );
-    Ok(())
+        barylab::files::shown(&args.output)
+    ))
+}
+
+/// Every file a command reads: the one named and those the scene reads.
+fn inputs(named: &Path, scene: &Scene) -> Vec<PathBuf> {
+    let base_dir = match barylab::scene::InputKind::of(named) {
+        Some(barylab::scene::InputKind::Scene) => named.parent().map(Path::to_path_buf),
+        _ => None,
+    };
+    let mut files = scene.input_files(&base_dir.unwrap_or_default());
+    files.push(named.to_path_buf());
+    files
+}
+
+/// Refuses a pixel option (`--pixel`, `--hover`) outside the image, naming the option.
+fn inside(option: &str, pixel: Option<(u32, u32)>, scene: &Scene) -> Result<()> {
+    let (w, h) = scene.size();
+    match pixel {
+        Some((x, y)) if x >= w || y >= h => anyhow::bail!(
+            "{option} {x},{y} is outside the {w}x{h} image (x must be 0..={}, y 0..={})",
+            w - 1,
+            h - 1
+        ),
+        _ => Ok(()),
+    }
 }
 
 fn probe(args: &ProbeArgs) -> Result<()> {
     let (scene, texture, settings) = prepare(&args.input)?;
+    inside("--pixel", Some(args.pixel), &scene)?;
     let (x, y) = args.pixel;
     let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
-        .with_context(|| args.input.scene.display().to_string())?;
-    print!(
-        "{}",
-        barylab::probe::format::write(&trace, args.format.into())
-    );
-    Ok(())
+        .with_context(|| barylab::files::shown(&args.input.scene))?;
+    print(&barylab::probe::format::write(&trace, args.format.into()))
 }
 
 fn figure(args: &FigureArgs) -> Result<()> {
     use barylab::figure::{Background, Figure, FigureOptions, png, svg};
-    let ext = args
+    output::check_output(&args.output, &["png", "svg"])?;
+    let svg_out = args
         .output
         .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let svg_out = match ext.as_deref() {
-        Some("svg") => true,
-        Some("png") => false,
-        _ => bail!(
-            "output {} must be a .png or .svg file",
-            args.output.display()
-        ),
-    };
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
     let (mut scene, texture, settings) = prepare(&args.input)?;
+    output::not_an_input(&args.output, &inputs(&args.input.scene, &scene))?;
+    inside("--pixel", args.pixel, &scene)?;
+    inside("--hover", args.hover, &scene)?;
     // The figure draws the scene as it is: the options become the scene's own.
     barylab::app::edit::set_options(
         &mut scene,
@@ -614,15 +658,16 @@ fn figure(args: &FigureArgs) -> Result<()> {
         overlay_scale: args.overlay_scale,
     };
     let fig = Figure::compose(&scene, &texture, &options)
-        .with_context(|| args.input.scene.display().to_string())?;
+        .with_context(|| barylab::files::shown(&args.input.scene))?;
     let bytes = if svg_out {
         svg::to_svg(&fig)?.into_bytes()
     } else {
         png::to_png(&fig)?
     };
-    std::fs::write(&args.output, bytes)
-        .with_context(|| format!("cannot write {}", args.output.display()))?;
+    barylab::files::write_bytes(&args.output, &bytes)?;
     let [w, h] = fig.pixel_dimensions();
-    println!("figure {w}x{h} -> {}", args.output.display());
-    Ok(())
+    print(&format!(
+        "figure {w}x{h} -> {}\n",
+        barylab::files::shown(&args.output)
+    ))
 }

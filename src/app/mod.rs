@@ -789,8 +789,11 @@ fn save_color_image(image: &egui::ColorImage, path: &Path) -> Result<(), String>
     for (px, c) in out.pixels_mut().zip(&image.pixels) {
         px.0 = c.to_srgba_unmultiplied();
     }
-    out.save(path)
-        .map_err(|e| format!("cannot write {}: {e}", path.display()))
+    crate::files::write_atomic(path, |w| {
+        out.write_to(w, image::ImageFormat::Png)
+            .map_err(std::io::Error::other)
+    })
+    .map_err(|e| e.to_string())
 }
 
 /// Loads a scene file and checks that its texture loads; returns the scene and its folder.

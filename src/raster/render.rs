@@ -94,6 +94,8 @@ impl RenderSettings {
 pub enum RenderError {
     #[error("image size {width}x{height} is outside 1..={max} pixels per side", max = MAX_IMAGE_SIZE)]
     BadSize { width: u32, height: u32 },
+    #[error(transparent)]
+    Memory(#[from] crate::budget::MemoryError),
 }
 
 /// Why a source triangle drew nothing, or that it was drawn.
@@ -230,10 +232,11 @@ pub fn render_into(
             height: h,
         });
     }
+    let n = mesh.triangles.len();
+    crate::budget::check_render(w, h, buffers, mesh.vertices.len(), n)?;
     let viewport = settings.viewport();
-    let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
-        .map(|i| prepare_triangle(mesh, i, viewport))
-        .collect();
+    let mut triangles = crate::budget::try_vec(n, "the set-up triangles")?;
+    triangles.extend((0..n as u32).map(|i| prepare_triangle(mesh, i, viewport)));
     let params = shade_params(settings, &triangles);
     resize(frame, w, h, buffers);
     rasterize_bands(
