@@ -271,6 +271,9 @@ pub fn check_output(path: &Path, extensions: &[&str]) -> Result<(), WriteError> 
     {
         return Err(refused(format!("it is {}", describe(&meta))));
     }
+    if path.as_os_str().as_encoded_bytes().ends_with(b"/") {
+        return Err(refused("it names a folder (it ends with /)".into()));
+    }
     check_folder(folder_of(path)).map_err(refused)
 }
 

@@ -89,10 +89,7 @@ pub fn clip_polygon(points: &[DVec2], lo: DVec2, hi: DVec2) -> Vec<DVec2> {
                 out.push(a);
             }
             if keep(a) != keep(b) {
-                let t = (bound - a[axis]) / (b[axis] - a[axis]);
-                let mut p = a + (b - a) * t;
-                p[axis] = bound;
-                out.push(p);
+                out.push(on_side(a, b, axis, bound));
             }
         }
         poly = out;
@@ -101,6 +98,20 @@ pub fn clip_polygon(points: &[DVec2], lo: DVec2, hi: DVec2) -> Vec<DVec2> {
         }
     }
     poly
+}
+
+/// Where segment a-b crosses the line `p[axis] = bound` (which it must cross). Measured from
+/// the end nearer the line: from a point at 1e20 the crossing would lose every digit.
+fn on_side(a: DVec2, b: DVec2, axis: usize, bound: f64) -> DVec2 {
+    let (p, q) = if (a[axis] - bound).abs() <= (b[axis] - bound).abs() {
+        (a, b)
+    } else {
+        (b, a)
+    };
+    let s = (bound - p[axis]) / (q[axis] - p[axis]);
+    let mut r = p + (q - p) * s;
+    r[axis] = bound;
+    r
 }
 
 /// The open polyline cut to the box `[lo, hi]`: the pieces inside, each at least two points
@@ -137,18 +148,21 @@ pub fn clip_polyline(points: &[DVec2], lo: DVec2, hi: DVec2) -> Vec<Vec<DVec2>> 
     pieces
 }
 
-/// The part of segment a-b inside the box, if any (Liang-Barsky).
+/// The part of segment a-b inside the box, if any (Liang-Barsky; the cut ends are found with
+/// [`on_side`]).
 fn clip_segment(a: DVec2, b: DVec2, lo: DVec2, hi: DVec2) -> Option<(DVec2, DVec2)> {
     if !(a.is_finite() && b.is_finite()) {
         return None;
     }
     let d = b - a;
+    // Entering and leaving parameters, with the side (axis, bound) that set them.
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [
-        (-d.x, a.x - lo.x),
-        (d.x, hi.x - a.x),
-        (-d.y, a.y - lo.y),
-        (d.y, hi.y - a.y),
+    let (mut enter, mut leave) = (None, None);
+    for (p, q, side) in [
+        (-d.x, a.x - lo.x, (0, lo.x)),
+        (d.x, hi.x - a.x, (0, hi.x)),
+        (-d.y, a.y - lo.y, (1, lo.y)),
+        (d.y, hi.y - a.y, (1, hi.y)),
     ] {
         if p == 0.0 {
             if q < 0.0 {
@@ -156,26 +170,21 @@ fn clip_segment(a: DVec2, b: DVec2, lo: DVec2, hi: DVec2) -> Option<(DVec2, DVec
             }
         } else {
             let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
+            if p < 0.0 && r > t0 {
+                (t0, enter) = (r, Some(side));
+            } else if p > 0.0 && r < t1 {
+                (t1, leave) = (r, Some(side));
             }
         }
     }
     if t0 > t1 {
         return None;
     }
-    let at = |t: f64| {
-        if t == 0.0 {
-            a
-        } else if t == 1.0 {
-            b
-        } else {
-            a + d * t
-        }
+    let at = |side: Option<(usize, f64)>, end: DVec2| match side {
+        Some((axis, bound)) => on_side(a, b, axis, bound),
+        None => end,
     };
-    Some((at(t0), at(t1)))
+    Some((at(enter, a), at(leave, b)))
 }
 
 #[cfg(test)]
