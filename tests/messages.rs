@@ -1,50 +1,9 @@
 //! Formats and messages for bad input (issue 18): TGA by its extension, truncated images,
 //! byte order marks, readable numbers, escaped and shortened file names, options named.
 
-use std::path::Path;
-use std::process::{Command, Output};
+mod bad_input;
 
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_barylab"))
-        .env("BARYLAB_MEMORY_LIMIT", "4G")
-        .args(args)
-        .output()
-        .expect("run barylab")
-}
-
-fn scene(name: &str) -> String {
-    format!("{}/assets/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
-}
-
-fn data(name: &str) -> String {
-    format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"))
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("utf-8 path")
-}
-
-/// Runs a command that must fail with a one-line error (exactly one line break, no blank
-/// line, no panic); returns the error.
-fn fails(args: &[&str]) -> String {
-    let out = run(args);
-    let err = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert!(!out.status.success(), "{args:?} succeeded");
-    assert!(!err.contains("panicked"), "{err}");
-    assert_eq!(
-        err.matches('\n').count(),
-        1,
-        "{args:?}: not one line:\n{err}"
-    );
-    err
-}
-
-fn succeeds(args: &[&str]) -> String {
-    let out = run(args);
-    let err = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert!(out.status.success(), "{args:?}: {err}");
-    err
-}
+use bad_input::{data, fails, s, scene, succeeds};
 
 #[test]
 fn tga_is_decoded_by_its_extension_and_truncated_images_are_errors() {
@@ -138,7 +97,10 @@ fn scene_messages_say_what_is_wrong_in_words() {
 fn options_are_named_and_checked_once() {
     let dir = tempfile::tempdir().expect("tempdir");
     let out = dir.path().join("out.png");
-    for (option, value) in [("--pixel", "900,9"), ("--hover", "9,900")] {
+    for (option, value, pixel) in [
+        ("--pixel", "900,9", "(900, 9)"),
+        ("--hover", "9,900", "(9, 900)"),
+    ] {
         let e = fails(&[
             "figure",
             &scene("default.json"),
@@ -149,13 +111,15 @@ fn options_are_named_and_checked_once() {
         ]);
         assert_eq!(e.matches("outside").count(), 1, "{e}");
         assert!(
-            e.contains(&format!("{option} {value} is outside the 800x600 image")),
+            e.contains(&format!(
+                "default.json: {option} {value}: pixel {pixel} is outside the 800x600 image"
+            )),
             "{e}"
         );
     }
     let e = fails(&["probe", &scene("default.json"), "--pixel", "800,0"]);
     assert!(
-        e.contains("--pixel 800,0 is outside") && e.matches("outside").count() == 1,
+        e.contains("--pixel 800,0: pixel (800, 0) is outside") && e.matches("outside").count() == 1,
         "{e}"
     );
     let e = fails(&[

@@ -169,12 +169,15 @@ fn inputs(named: &Path, scene: &Scene) -> Vec<PathBuf> {
     files
 }
 
-/// Refuses a pixel option (`--pixel`, `--hover`) outside the image, naming the option.
-fn inside(option: &str, pixel: Option<(u32, u32)>, scene: &Scene) -> Result<()> {
+/// Refuses a pixel option (`--pixel`, `--hover`) outside the image, naming the option and the
+/// scene file.
+fn inside(option: &str, pixel: Option<(u32, u32)>, o: &SceneOptions, scene: &Scene) -> Result<()> {
     let (w, h) = scene.size();
     match pixel {
         Some((x, y)) if x >= w || y >= h => anyhow::bail!(
-            "{option} {x},{y} is outside the {w}x{h} image (x must be 0..={}, y 0..={})",
+            "{}: {option} {x},{y}: pixel ({x}, {y}) is outside the {w}x{h} image \
+             (x must be 0..={}, y 0..={})",
+            barylab::files::shown(&o.scene),
             w - 1,
             h - 1
         ),
@@ -184,7 +187,7 @@ fn inside(option: &str, pixel: Option<(u32, u32)>, scene: &Scene) -> Result<()> 
 
 pub(super) fn probe(args: &ProbeArgs) -> Result<()> {
     let (scene, texture, settings) = prepare(&args.input)?;
-    inside("--pixel", Some(args.pixel), &scene)?;
+    inside("--pixel", Some(args.pixel), &args.input, &scene)?;
     let (x, y) = args.pixel;
     let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
         .with_context(|| barylab::files::shown(&args.input.scene))?;
@@ -200,8 +203,8 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
     let (mut scene, texture, settings) = prepare(&args.input)?;
     output::not_an_input(&args.output, &inputs(&args.input.scene, &scene))?;
-    inside("--pixel", args.pixel, &scene)?;
-    inside("--hover", args.hover, &scene)?;
+    inside("--pixel", args.pixel, &args.input, &scene)?;
+    inside("--hover", args.hover, &args.input, &scene)?;
     // The figure draws the scene as it is: the options become the scene's own.
     barylab::app::edit::set_options(
         &mut scene,
