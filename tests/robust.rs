@@ -4,7 +4,7 @@
 
 mod bad_input;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use bad_input::{
     bin, data, fails, fails_with, mkfifo, s, scene, stderr, succeeds, temporary_files, tool,
