@@ -236,4 +236,10 @@ mod tests {
         let small = render_need(16384, 16384, Buffers::ColorDepth, 4, 2);
         assert!(small < need / 4, "{}", bytes(small));
     }
+
+    #[test]
+    fn ten_million_triangles_need_gigabytes_at_any_size() {
+        let need = render_need(800, 600, Buffers::All, 10_000_000, 10_000_000);
+        assert!(need > 5 << 30, "{}", bytes(need));
+    }
 }

@@ -91,22 +91,26 @@ pub enum WriteError {
 
 /// What a file system entry is, for messages ("a FIFO", "a folder", ...).
 pub fn describe(meta: &Metadata) -> &'static str {
-    use std::os::unix::fs::FileTypeExt;
     let t = meta.file_type();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO (named pipe)";
+        } else if t.is_char_device() {
+            return "a character device";
+        } else if t.is_block_device() {
+            return "a block device";
+        } else if t.is_socket() {
+            return "a socket";
+        }
+    }
     if t.is_dir() {
         "a folder"
-    } else if t.is_fifo() {
-        "a FIFO (named pipe)"
-    } else if t.is_char_device() {
-        "a character device"
-    } else if t.is_block_device() {
-        "a block device"
-    } else if t.is_socket() {
-        "a socket"
     } else if t.is_file() {
         "a regular file"
     } else {
-        "not a file"
+        "not a regular file or folder"
     }
 }
 
@@ -227,12 +231,20 @@ pub fn number(v: f64) -> String {
     }
 }
 
-/// Whether `a` and `b` are the same file (same device and inode), following links. False when
+/// Whether `a` and `b` are the same file (by any name: links are followed). False when
 /// either does not exist.
 pub fn same_file(a: &Path, b: &Path) -> bool {
-    use std::os::unix::fs::MetadataExt;
-    match (std::fs::metadata(a), std::fs::metadata(b)) {
-        (Ok(x), Ok(y)) => x.dev() == y.dev() && x.ino() == y.ino(),
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        match (std::fs::metadata(a), std::fs::metadata(b)) {
+            (Ok(x), Ok(y)) => x.dev() == y.dev() && x.ino() == y.ino(),
+            _ => false,
+        }
+    }
+    #[cfg(not(unix))]
+    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(x), Ok(y)) => x == y,
         _ => false,
     }
 }
@@ -301,19 +313,24 @@ pub fn check_folder(folder: &Path) -> Result<(), String> {
 /// A new temporary file in `folder`, with the permissions `like` has (else the usual ones for
 /// a new file).
 fn temp_in(folder: &Path, like: Option<&Path>) -> io::Result<tempfile::NamedTempFile> {
-    use std::os::unix::fs::PermissionsExt;
-    /// Permissions of a new output file before the umask, as `File::create` uses.
-    const NEW_FILE_MODE: u32 = 0o666;
-    let permissions = like
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".barylab-").suffix(".part");
+    let earlier = like
         .and_then(|p| std::fs::metadata(p).ok())
         .filter(Metadata::is_file)
-        .map(|m| m.permissions())
-        .unwrap_or_else(|| std::fs::Permissions::from_mode(NEW_FILE_MODE));
-    tempfile::Builder::new()
-        .prefix(".barylab-")
-        .suffix(".part")
-        .permissions(permissions)
-        .tempfile_in(folder)
+        .map(|m| m.permissions());
+    #[cfg(unix)]
+    let earlier = earlier.or_else(|| {
+        use std::os::unix::fs::PermissionsExt;
+        /// Permissions of a new output file before the umask, as `File::create` uses
+        /// (tempfile's own default, 0o600, would hide the output from other users).
+        const NEW_FILE_MODE: u32 = 0o666;
+        Some(std::fs::Permissions::from_mode(NEW_FILE_MODE))
+    });
+    if let Some(p) = earlier {
+        builder.permissions(p);
+    }
+    builder.tempfile_in(folder)
 }
 
 /// A file written completely to a temporary file beside its destination, waiting to be moved
@@ -343,6 +360,12 @@ pub fn stage(
             problem: format!("it is {}", describe(&meta)),
         });
     }
+    // An output that is a link is written where the link points; the link stays.
+    let target = match std::fs::symlink_metadata(path) {
+        Ok(m) if m.file_type().is_symlink() => std::fs::canonicalize(path).map_err(io)?,
+        _ => path.to_path_buf(),
+    };
+    let path = target.as_path();
     let file = temp_in(folder_of(path), Some(path)).map_err(io)?;
     let mut w = BufWriter::new(file.reopen().map_err(io)?);
     write(&mut w).map_err(io)?;

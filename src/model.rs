@@ -76,14 +76,19 @@ impl ModelMesh {
     /// MTL), each up to its size cap; the memory it will need is checked first.
     pub fn load(path: &Path) -> Result<Self, ModelError> {
         let shown = files::shown(path);
+        // The memory the model will take, before its text is read.
+        if let Ok(meta) = std::fs::metadata(path)
+            && meta.is_file()
+        {
+            budget::check(
+                || format!("model {shown} ({})", files::bytes(meta.len())),
+                meta.len().saturating_mul(budget::MODEL_BYTES_PER_FILE_BYTE),
+            )?;
+        }
         let bytes = files::read_regular(path, FileKind::Model)?;
         if bytes.is_empty() {
             return Err(ModelError::EmptyFile { path: shown });
         }
-        budget::check(
-            || format!("model {shown} ({})", files::bytes(bytes.len() as u64)),
-            bytes.len() as u64 * budget::MODEL_BYTES_PER_FILE_BYTE,
-        )?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Self::from_obj(files::strip_bom(&bytes), &shown, &dir)
     }

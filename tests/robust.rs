@@ -338,6 +338,32 @@ fn outputs_are_checked_before_rendering_and_failures_leave_files_as_they_were() 
 }
 
 #[test]
+fn an_output_that_is_a_link_is_written_where_it_points_and_stays_a_link() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let real = dir.path().join("real.png");
+    let link = dir.path().join("link.png");
+    std::fs::write(&real, b"old").expect("write");
+    std::os::unix::fs::symlink(&real, &link).expect("link");
+    succeeds(&[
+        "render",
+        &scene("front.json"),
+        "--size",
+        "32x24",
+        "-o",
+        s(&link),
+    ]);
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .expect("link")
+            .file_type()
+            .is_symlink()
+    );
+    let img = image::open(&real).expect("a PNG where the link points");
+    assert_eq!((img.width(), img.height()), (32, 24));
+    assert_eq!(temporary_files(dir.path()), Vec::<PathBuf>::new());
+}
+
+#[test]
 fn an_output_that_is_an_input_is_refused() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = |n: &str| dir.path().join(n);
