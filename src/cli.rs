@@ -48,8 +48,8 @@ struct Cli {
     /// Window size in points, e.g. 1500x950.
     #[arg(long, value_parser = parse_window_size, value_name = "WxH")]
     window_size: Option<(u32, u32)>,
-    /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: 75% of the
-    /// available memory, or the environment variable BARYLAB_MEMORY_LIMIT).
+    /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
+    /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
     memory_limit: Option<u64>,
 }

@@ -132,6 +132,9 @@ fn options_are_named_and_checked_once() {
     ]);
     assert!(e.contains("`-5x10` is not a size like 800x600"), "{e}");
     assert!(!out.exists());
+    // The app's screenshot path is checked before a window opens.
+    let e = fails(&["--fresh", "--screenshot", s(&dir.path().join("shot.jpg"))]);
+    assert!(e.contains("shot.jpg") && e.contains("must be a .png file"), "{e}");
 }
 
 #[test]

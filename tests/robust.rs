@@ -86,50 +86,36 @@ fn a_full_standard_output_is_a_one_line_error() {
 fn requests_past_the_memory_budget_are_refused_with_need_and_limit() {
     let dir = tempfile::tempdir().expect("tempdir");
     let out = dir.path().join("out.png");
-    let e = fails(&[
-        "render",
-        &scene("default.json"),
-        "--size",
-        "16384x16384",
-        "-o",
-        s(&out),
-    ]);
-    assert!(
-        e.contains("16384x16384") && e.contains("15.3 GiB") && e.contains("4.0 GiB"),
-        "{e}"
-    );
-    assert!(
-        e.contains("BARYLAB_MEMORY_LIMIT") && e.contains("--memory-limit"),
-        "{e}"
-    );
-    let e = fails(&[
-        "figure",
-        &scene("default.json"),
-        "--size",
-        "16000x16000",
-        "-o",
-        s(&out),
-    ]);
-    assert!(
-        e.contains("16000x16000") && e.contains("needs about"),
-        "{e}"
-    );
-    // The scene fits, its figure at 4 PNG pixels per point (rendered again at 16000x16000)
-    // does not.
-    let e = fails(&[
-        "figure",
-        &scene("default.json"),
-        "--size",
-        "4000x4000",
-        "--scale",
-        "4",
-        "-o",
-        s(&out),
-    ]);
-    assert!(
-        e.contains("figure needs about") && e.contains("4.0 GiB"),
-        "{e}"
-    );
+    let default = scene("default.json");
+    // (options after the scene, parts of the message)
+    let cases: [(&[&str], &[&str]); 3] = [
+        (
+            &["render", "--size", "16384x16384"],
+            &[
+                "16384x16384",
+                "15.3 GiB",
+                "4.0 GiB",
+                "BARYLAB_MEMORY_LIMIT",
+                "--memory-limit",
+            ],
+        ),
+        (
+            &["figure", "--size", "16000x16000"],
+            &["16000x16000", "needs about"],
+        ),
+        // The scene fits, its figure at 4 PNG pixels per point (rendered again at
+        // 16000x16000) does not.
+        (
+            &["figure", "--size", "4000x4000", "--scale", "4"],
+            &["figure needs about", "4.0 GiB"],
+        ),
+    ];
+    for (options, needles) in cases {
+        let mut args = vec![options[0], &default, "-o", s(&out)];
+        args.extend_from_slice(&options[1..]);
+        let e = fails(&args);
+        assert!(needles.iter().all(|n| e.contains(n)), "{e}");
+    }
     let e = fails(&[
         "render",
         &scene("default.json"),
