@@ -134,7 +134,10 @@ fn options_are_named_and_checked_once() {
     assert!(!out.exists());
     // The app's screenshot path is checked before a window opens.
     let e = fails(&["--fresh", "--screenshot", s(&dir.path().join("shot.jpg"))]);
-    assert!(e.contains("shot.jpg") && e.contains("must be a .png file"), "{e}");
+    assert!(
+        e.contains("shot.jpg") && e.contains("must be a .png file"),
+        "{e}"
+    );
 }
 
 #[test]
