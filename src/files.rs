@@ -278,15 +278,26 @@ pub fn check_output(path: &Path, extensions: &[&str]) -> Result<(), WriteError> 
             )));
         }
     }
-    if let Ok(meta) = std::fs::metadata(path)
-        && !meta.is_file()
-    {
-        return Err(refused(format!("it is {}", describe(&meta))));
+    if let Some(problem) = existing_problem(path) {
+        return Err(refused(problem));
     }
     if path.as_os_str().as_encoded_bytes().ends_with(b"/") {
         return Err(refused("it names a folder (it ends with /)".into()));
     }
     check_folder(folder_of(path)).map_err(refused)
+}
+
+/// Why what is at an output path must not be replaced: a folder, a device, a FIFO, or a
+/// read-only file (the rename would replace it although it cannot be written).
+fn existing_problem(path: &Path) -> Option<String> {
+    let meta = std::fs::metadata(path).ok()?;
+    if !meta.is_file() {
+        Some(format!("it is {}", describe(&meta)))
+    } else if meta.permissions().readonly() {
+        Some("it is read-only".into())
+    } else {
+        None
+    }
 }
 
 /// Checks that files can be created in `folder`; the problem in words otherwise.
@@ -352,12 +363,10 @@ pub fn stage(
         path: shown(path),
         cause,
     };
-    if let Ok(meta) = std::fs::metadata(path)
-        && !meta.is_file()
-    {
+    if let Some(problem) = existing_problem(path) {
         return Err(WriteError::Refused {
             path: shown(path),
-            problem: format!("it is {}", describe(&meta)),
+            problem,
         });
     }
     // An output that is a link is written where the link points; the link stays.

@@ -273,7 +273,16 @@ fn outputs_are_checked_before_rendering_and_failures_leave_files_as_they_were() 
     ]);
     assert!(e.contains("folder") && e.contains("does not exist"), "{e}");
     let e = fails(&["render", &scene("default.json"), "-o", s(&d("dir.png/"))]);
-    assert!(e.contains("dir.png"), "{e}");
+    assert!(e.contains("dir.png") && e.contains("names a folder"), "{e}");
+    // A read-only file is not replaced.
+    let locked = d("locked.png");
+    std::fs::write(&locked, b"keep").expect("write");
+    let mut perms = std::fs::metadata(&locked).expect("meta").permissions();
+    perms.set_readonly(true);
+    std::fs::set_permissions(&locked, perms).expect("chmod");
+    let e = fails(&["render", &scene("default.json"), "-o", s(&locked)]);
+    assert!(e.contains("locked.png") && e.contains("read-only"), "{e}");
+    assert_eq!(std::fs::read(&locked).expect("read"), b"keep");
     assert_eq!(std::fs::read(&out).expect("out"), b"the good old picture");
 
     // An AOV set is all or nothing: one file cannot be written, so none is, and neither is
