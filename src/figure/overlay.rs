@@ -619,9 +619,16 @@ fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVec2) {
     });
 }
 
-/// A w value for labels: three significant digits.
+/// Magnitude of w from which labels use scientific notation: up to it, a label is at most
+/// six digits.
+pub const SCIENTIFIC_W: f64 = 1e6;
+
+/// A w value for labels: three significant digits; scientific notation from
+/// [`SCIENTIFIC_W`] on (a vertex near the eye plane has a w like 3.5e38).
 pub fn format_w(w: f64) -> String {
-    if w.abs() >= 100.0 {
+    if w.abs() >= SCIENTIFIC_W {
+        format!("{w:.2e}")
+    } else if w.abs() >= 100.0 {
         format!("{w:.0}")
     } else if w.abs() >= 10.0 {
         format!("{w:.1}")

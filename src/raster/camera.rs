@@ -9,6 +9,8 @@ use glam::dcamera::rh::view;
 use glam::{DMat4, DVec3};
 use serde::{Deserialize, Serialize};
 
+use crate::files::number;
+
 /// Errors for cameras that cannot form a valid projection.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CameraError {
@@ -16,15 +18,26 @@ pub enum CameraError {
     EyeIsTarget,
     #[error("the camera's up vector is zero or parallel to the viewing direction")]
     BadUp,
-    #[error("field of view {0} degrees is outside (0, 180)")]
+    #[error("field of view {} degrees is outside (0, 180)", number(*.0))]
     BadFov(f64),
-    #[error("near plane {near} and far plane {far} must satisfy 0 < near < far")]
+    #[error("near plane {} and far plane {} must satisfy 0 < near < far", number(*near), number(*far))]
     BadPlanes { near: f64, far: f64 },
-    #[error("orthographic height {0} must be positive")]
+    #[error("orthographic height {} must be positive", number(*.0))]
     BadHeight(f64),
     #[error("camera value is not a finite number")]
     NotFinite,
+    #[error(
+        "camera {what} is {}, larger than {} in magnitude",
+        number(*value),
+        number(MAX_CAMERA_VALUE)
+    )]
+    TooLarge { what: &'static str, value: f64 },
 }
+
+/// Largest accepted magnitude of a camera coordinate, near or far plane, or orthographic
+/// height. Far beyond any classroom scene; past it the view and projection matrices square
+/// or multiply values that overflow f64 or leave f32 depth without precision.
+pub const MAX_CAMERA_VALUE: f64 = 1e12;
 
 /// How view space is projected to clip space.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -87,6 +100,19 @@ impl Camera {
         if !finite {
             return Err(CameraError::NotFinite);
         }
+        let large = |what, v: DVec3| -> Result<(), CameraError> {
+            match v
+                .to_array()
+                .into_iter()
+                .find(|c| c.abs() > MAX_CAMERA_VALUE)
+            {
+                Some(value) => Err(CameraError::TooLarge { what, value }),
+                None => Ok(()),
+            }
+        };
+        large("eye", self.eye)?;
+        large("target", self.target)?;
+        large("up", self.up)?;
         let forward = self.target - self.eye;
         if forward.length_squared() == 0.0 {
             return Err(CameraError::EyeIsTarget);
@@ -111,11 +137,23 @@ impl Camera {
                 if !(height > 0.0 && height.is_finite()) {
                     return Err(CameraError::BadHeight(height));
                 }
+                if height > MAX_CAMERA_VALUE {
+                    return Err(CameraError::TooLarge {
+                        what: "orthographic height",
+                        value: height,
+                    });
+                }
                 (near, far)
             }
         };
         if !(near > 0.0 && far > near && far.is_finite()) {
             return Err(CameraError::BadPlanes { near, far });
+        }
+        if far > MAX_CAMERA_VALUE {
+            return Err(CameraError::TooLarge {
+                what: "far plane",
+                value: far,
+            });
         }
         Ok(())
     }

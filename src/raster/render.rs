@@ -190,6 +190,8 @@ impl RenderSettings {
 pub enum RenderError {
     #[error("image size {width}x{height} is outside 1..={max} pixels per side", max = MAX_IMAGE_SIZE)]
     BadSize { width: u32, height: u32 },
+    #[error(transparent)]
+    Memory(#[from] crate::budget::MemoryError),
 }
 
 /// Why a source triangle drew nothing, or that it was drawn.
@@ -326,6 +328,8 @@ pub fn render_into(
             height: h,
         });
     }
+    let n = mesh.triangles.len();
+    crate::budget::check_render(w, h, buffers, mesh.vertices.len(), n)?;
     let viewport = settings.viewport();
     let triangles = prepare_all(mesh, viewport);
     let params = shade_params(settings, &triangles);
