@@ -737,7 +737,7 @@ impl<'a> Prober<'a> {
                 source: tri.source,
                 vertices: self.triangle_names(ti),
                 status: tri.status,
-                clipped: tri.polygon.is_some_and(|p| !p.unclipped()),
+                clipped: tri.is_clipped(),
                 test: chosen.map(|si| self.coverage_test(ti, si, sp)),
                 depth_test,
             });
@@ -799,7 +799,7 @@ impl<'a> Prober<'a> {
         let tri = &self.triangles[ti];
         let names = self.triangle_names(ti);
         let source = render::source_vertices(&self.mesh, tri.source);
-        let Some(poly) = &tri.polygon else {
+        let Some(poly) = tri.polygon(&self.mesh, self.viewport()) else {
             return Vec::new();
         };
         let mut made = 0;
@@ -923,12 +923,13 @@ impl<'a> Prober<'a> {
         let viewport = self.viewport();
         let vertices: [VertexTrace; 3] = std::array::from_fn(|k| self.vertex_trace(ti, k));
         let behind = vertices.iter().any(|v| v.clip[3] <= 0.0);
-        let clipped = tri.polygon.is_some_and(|p| !p.unclipped());
+        let clipped = tri.is_clipped();
         let polygon = self.polygon(ti);
         let fan = self.fan_indices(ti, si, &polygon);
         let clipping = clipped.then(|| ClipTrace {
             planes: tri
-                .polygon
+                .clipped
+                .as_ref()
                 .map(|p| p.cut_by(viewport.guard_band_ndc()))
                 .unwrap_or_default(),
             polygon: polygon.clone(),

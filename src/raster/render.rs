@@ -229,13 +229,36 @@ pub struct PreparedTriangle {
     /// Index into [`ClipMesh::triangles`].
     pub source: u32,
     pub status: TriangleStatus,
-    /// The clipped polygon (`None` if the input was unusable).
-    pub polygon: Option<ClipPolygon>,
+    /// The clipped polygon, kept only where the clipper changed the triangle (`None` for an
+    /// unclipped or unusable one): most triangles are not clipped, and a polygon is about 1 KB
+    /// (see [`PreparedTriangle::polygon`] for every triangle's).
+    pub clipped: Option<Box<ClipPolygon>>,
     /// The fan triangles of the clipped polygon that can cover pixels.
     pub setups: Vec<TriangleSetup>,
 }
 
 impl PreparedTriangle {
+    /// The polygon the clipper made of this triangle of `mesh` (the triangle itself when the
+    /// clipper left it whole): the kept one, or the same clipping done again. `None` if the
+    /// input was unusable.
+    pub fn polygon(&self, mesh: &ClipMesh, viewport: Viewport) -> Option<ClipPolygon> {
+        match &self.clipped {
+            Some(p) => Some(**p),
+            None => {
+                let verts = source_vertices(mesh, self.source)?;
+                if !verts.iter().all(|v| v.clip.is_finite()) {
+                    return None;
+                }
+                Some(clip_triangle(&verts, viewport.guard_band_ndc()))
+            }
+        }
+    }
+
+    /// Whether the clipper changed the triangle.
+    pub fn is_clipped(&self) -> bool {
+        self.clipped.is_some()
+    }
+
     /// The facing of the drawn triangle, if any part of it was set up.
     pub fn facing(&self) -> Option<Facing> {
         self.setups.first().map(|s| s.facing)
@@ -261,7 +284,7 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
     let mut out = PreparedTriangle {
         source: index,
         status: TriangleStatus::BadIndex,
-        polygon: None,
+        clipped: None,
         setups: Vec::new(),
     };
     let Some(verts) = source_vertices(mesh, index) else {
@@ -272,7 +295,9 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
         return out;
     }
     let polygon = clip_triangle(&verts, viewport.guard_band_ndc());
-    out.polygon = Some(polygon);
+    if !polygon.unclipped() {
+        out.clipped = Some(Box::new(polygon));
+    }
     let pv = polygon.vertices();
     if pv.len() < 3 {
         out.status = TriangleStatus::ClippedAway;
