@@ -70,14 +70,7 @@ mod text {
     pub const BEHIND: &str = "behind the camera";
 }
 
-/// The name of a mesh vertex: A, B, C, ... then V6, V7, ...
-pub fn vertex_name(index: usize) -> String {
-    const LETTERS: &[u8] = b"ABCDEF";
-    match LETTERS.get(index) {
-        Some(&c) => char::from(c).to_string(),
-        None => format!("V{index}"),
-    }
-}
+pub use crate::scene::vertex_name;
 
 /// The colour of mesh vertex `index`.
 pub fn vertex_color(index: usize) -> Rgba {

@@ -26,17 +26,17 @@ pub mod weights;
 
 pub use trace::*;
 
-use glam::{DMat4, DVec2, DVec3, DVec4, Vec2};
+use glam::{DMat4, DVec2, DVec3, Vec2};
 
-use crate::raster::camera::{Camera, Projection};
+use crate::raster::camera::{Camera, CameraChain};
 use crate::raster::framebuffer;
 use crate::raster::interpolate::{self, Fragment, Interpolation};
-use crate::raster::project::{self, MAX_IMAGE_SIZE, SUBPIXEL, Viewport};
+use crate::raster::project::{self, SUBPIXEL, Viewport};
 use crate::raster::render::{self, ClipMesh, PreparedTriangle, RenderError, RenderSettings};
 use crate::raster::setup::{self, TriangleSetup};
 use crate::raster::shade::{self, ShadeParams};
-use crate::raster::texture::{Filter, Texture};
-use crate::scene::Scene;
+use crate::raster::texture::{self, Filter, Texture};
+use crate::scene::{Scene, vertex_name};
 
 /// Errors of the probe.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -56,32 +56,22 @@ pub enum ProbeError {
     Render(#[from] RenderError),
 }
 
-/// World-scene data the mesh does not keep.
+/// World-scene data the mesh does not keep: the object-space positions and the camera chain.
 #[derive(Clone, Debug)]
 struct WorldSpaces {
     object: Vec<DVec3>,
-    world_from_object: DMat4,
-    view_from_world: DMat4,
-    clip_from_view: DMat4,
-    view_from_clip: DMat4,
-    perspective: bool,
+    chain: CameraChain,
 }
 
 impl WorldSpaces {
     fn matrices(&self) -> Matrices {
         let rows = |m: DMat4| m.transpose().to_cols_array_2d();
         Matrices {
-            world_from_object: rows(self.world_from_object),
-            view_from_world: rows(self.view_from_world),
-            clip_from_view: rows(self.clip_from_view),
-            perspective: self.perspective,
+            world_from_object: rows(self.chain.world_from_object),
+            view_from_world: rows(self.chain.view_from_world),
+            clip_from_view: rows(self.chain.clip_from_view),
+            perspective: self.chain.perspective,
         }
-    }
-
-    /// View-space position of a clip-space point: `view_from_clip * clip`, divided by its w.
-    fn view_from_clip_point(&self, clip: DVec4) -> DVec3 {
-        let v = self.view_from_clip * clip;
-        v.truncate() / v.w
     }
 }
 
@@ -113,15 +103,6 @@ pub struct Prober<'a> {
     settings: RenderSettings,
     triangles: Vec<PreparedTriangle>,
     params: ShadeParams,
-}
-
-/// The name of mesh vertex `i`: A, B, C, ... then `V26`, `V27`, ...
-fn vertex_name(i: usize) -> String {
-    if i < 26 {
-        char::from(b'A' + i as u8).to_string()
-    } else {
-        format!("V{i}")
-    }
 }
 
 /// The texture a [`Prober`] samples: borrowed, or shared so the prober can be kept (the app
@@ -173,25 +154,14 @@ impl<'a> Prober<'a> {
         texture: TextureRef<'a>,
         settings: &RenderSettings,
     ) -> Result<Self, ProbeError> {
-        let (w, h) = (settings.width, settings.height);
-        if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
-            return Err(RenderError::BadSize {
-                width: w,
-                height: h,
-            }
-            .into());
-        }
         let mesh = scene.to_mesh();
+        let triangles = render::prepare_triangles(&mesh, settings)?;
         let spaces = |camera: Camera, object: Vec<DVec3>| {
             let (w, h) = scene.size();
-            let clip_from_view = camera.clip_from_view(f64::from(w) / f64::from(h));
+            let aspect = f64::from(w) / f64::from(h);
             Some(WorldSpaces {
                 object,
-                world_from_object: scene.world_from_object(),
-                view_from_world: camera.view_from_world(),
-                clip_from_view,
-                view_from_clip: clip_from_view.inverse(),
-                perspective: matches!(camera.projection, Projection::Perspective { .. }),
+                chain: CameraChain::new(&camera, scene.world_from_object(), aspect),
             })
         };
         let spaces = match scene {
@@ -200,10 +170,6 @@ impl<'a> Prober<'a> {
             Scene::Clip(_) => None,
         };
         let names = (0..mesh.vertices.len()).map(vertex_name).collect();
-        let viewport = settings.viewport();
-        let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
-            .map(|i| render::prepare_triangle(&mesh, i, viewport))
-            .collect();
         let params = render::shade_params(settings, &triangles);
         let form = match scene {
             Scene::World(_) => SceneForm::World,
@@ -270,7 +236,7 @@ impl<'a> Prober<'a> {
         }
         let sp = setup::sample_point(x, y);
         let window = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
-        let ndc = ndc_of_window(window, self.viewport());
+        let ndc = project::ndc_from_window(window, self.viewport());
 
         // The depth test, exactly as `render` runs it.
         let mut buffer: f32 = 1.0;
@@ -497,8 +463,7 @@ impl<'a> Prober<'a> {
         let (object, world, view) = match &self.spaces {
             Some(sp) => {
                 let object = sp.object.get(index as usize).copied().unwrap_or_default();
-                let world = sp.world_from_object.transform_point3(object);
-                let view = sp.view_from_world.transform_point3(world);
+                let (world, view) = sp.chain.world_and_view(object);
                 (
                     Some(object.to_array()),
                     Some(world.to_array()),
@@ -570,7 +535,7 @@ impl<'a> Prober<'a> {
                 view: self
                     .spaces
                     .as_ref()
-                    .map(|w| w.view_from_clip_point(v.clip).to_array()),
+                    .map(|w| w.chain.view_from_clip_point(v.clip).to_array()),
             }
         });
         let raster = RasterTriangle {
@@ -673,7 +638,7 @@ impl<'a> Prober<'a> {
                     .wireframe
                     .then(|| shade::edge_distance_px(f.edge_weights, &wire)),
                 wire: self.params.wireframe
-                    && shade::edge_distance_px(f.edge_weights, &wire) < shade::WIRE_WIDTH_PX,
+                    && (0..3).any(|i| shade::on_wire_edge(f.edge_weights[i], wire[i].length())),
                 color: shade::shade(f, &self.texture, &self.params, &wire),
             }
         });
@@ -711,25 +676,15 @@ impl<'a> Prober<'a> {
     fn seen_point(&self, ti: usize, ndc: DVec2, system: Option<&SystemTrace>) -> Option<SeenPoint> {
         match &self.spaces {
             Some(sp) => {
-                let unproject = |z: f64| {
-                    let v = sp.view_from_clip * DVec4::new(ndc.x, ndc.y, z, 1.0);
-                    v.truncate() / v.w
-                };
-                let (near, far) = (unproject(-1.0), unproject(1.0));
-                let (origin, direction) = if sp.perspective {
-                    (DVec3::ZERO, near)
-                } else {
-                    (near, far - near)
-                };
+                let (origin, direction) = sp.chain.view_ray(ndc);
                 let tri: [DVec3; 3] = std::array::from_fn(|k| {
                     let i = self.mesh.triangles[ti][k] as usize;
                     let object = sp.object.get(i).copied().unwrap_or_default();
-                    sp.view_from_world
-                        .transform_point3(sp.world_from_object.transform_point3(object))
+                    sp.chain.world_and_view(object).1
                 });
                 let hit = weights::ray_triangle(origin, direction, tri)?;
                 let view = DVec3::from_array(hit.point);
-                let clip = sp.clip_from_view * view.extend(1.0);
+                let clip = sp.chain.clip_from_view * view.extend(1.0);
                 Some(SeenPoint {
                     ray: Some(ViewRay {
                         origin: origin.to_array(),
@@ -737,14 +692,9 @@ impl<'a> Prober<'a> {
                     }),
                     hit: Some(hit),
                     view: Some(hit.point),
-                    world: Some(
-                        sp.view_from_world
-                            .inverse()
-                            .transform_point3(view)
-                            .to_array(),
-                    ),
+                    world: Some(sp.chain.world_from_view_point(view).to_array()),
                     clip: clip.to_array(),
-                    depth: (clip.z / clip.w + 1.0) / 2.0,
+                    depth: project::window_depth(clip.z / clip.w),
                     weights: hit.weights,
                 })
             }
@@ -759,7 +709,7 @@ impl<'a> Prober<'a> {
                     view: None,
                     world: None,
                     clip: clip.to_array(),
-                    depth: (clip.z / clip.w + 1.0) / 2.0,
+                    depth: project::window_depth(clip.z / clip.w),
                     weights: [b[0], b[1], b[2]],
                 })
             }
@@ -779,13 +729,8 @@ impl<'a> Prober<'a> {
                 .sum::<f64>()
                 * w_p
         };
-        // As `Texture::taps` computes them: `u W` in f32.
-        let texel = |uv: Vec2| {
-            [
-                f64::from(uv.x * t.width() as f32),
-                f64::from(uv.y * t.height() as f32),
-            ]
-        };
+        // As the filters compute them: `u W` in f32.
+        let texel = |uv: Vec2| t.texel_coords(uv, 0).map(f64::from);
         let (filter, wrap) = (self.settings.filter, self.settings.wrap);
         let lod_affine = self.lod(s, x, y, Interpolation::Affine);
         let lod_perspective = self.lod(s, x, y, Interpolation::Perspective);
@@ -804,7 +749,11 @@ impl<'a> Prober<'a> {
                 .collect()
         };
         let sample = |uv: Vec2, lod: f32| t.sample_rgba8(uv, filter, wrap, lod);
-        let diff = (uv_a.as_dvec2() - uv_p.as_dvec2()) * size;
+        let diff = DVec2::from_array(texture::texel_offset(
+            uv_a.as_dvec2().to_array(),
+            uv_p.as_dvec2().to_array(),
+            size.to_array(),
+        ));
         AttributeTrace {
             uv_vertices: uvs.map(|u| u.to_array()),
             uv_vertices_affine: s.v.map(|v| v.noperspective.uv().to_array()),
@@ -849,21 +798,8 @@ fn nearest_setup(tri: &PreparedTriangle, x: u32, y: u32) -> Option<(usize, f64)>
     best
 }
 
-/// NDC of a window position: `(2 x / W - 1, 1 - 2 y / H)`.
-///
-/// ```
-/// use barylab::probe::ndc_of_window;
-/// use barylab::raster::project::Viewport;
-/// use glam::DVec2;
-/// let n = ndc_of_window(DVec2::new(4.5, 6.5), Viewport { width: 8, height: 8 });
-/// assert_eq!(n, DVec2::new(0.125, -0.625));
-/// ```
-pub fn ndc_of_window(window: DVec2, viewport: Viewport) -> DVec2 {
-    DVec2::new(
-        2.0 * window.x / f64::from(viewport.width) - 1.0,
-        1.0 - 2.0 * window.y / f64::from(viewport.height),
-    )
-}
+/// NDC of a window position: [`project::ndc_from_window`], under the probe's older name.
+pub use crate::raster::project::ndc_from_window as ndc_of_window;
 
 /// Traces one pixel of a scene rendered with `settings` (see [`Prober`] for many pixels).
 ///

@@ -194,6 +194,26 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
     out
 }
 
+/// Checks the image size (1 to [`MAX_IMAGE_SIZE`] pixels per side) and prepares every source
+/// triangle of `mesh` with [`prepare_triangle`], in order: the first step of a render, and
+/// what the probe traces.
+pub fn prepare_triangles(
+    mesh: &ClipMesh,
+    settings: &RenderSettings,
+) -> Result<Vec<PreparedTriangle>, RenderError> {
+    let (w, h) = (settings.width, settings.height);
+    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
+        return Err(RenderError::BadSize {
+            width: w,
+            height: h,
+        });
+    }
+    let viewport = settings.viewport();
+    Ok((0..mesh.triangles.len() as u32)
+        .map(|i| prepare_triangle(mesh, i, viewport))
+        .collect())
+}
+
 /// The result of a render: the framebuffer and what happened to each source triangle.
 #[derive(Clone, Debug)]
 pub struct Render {
@@ -223,19 +243,9 @@ pub fn render_into(
     settings: &RenderSettings,
     buffers: Buffers,
 ) -> Result<Vec<PreparedTriangle>, RenderError> {
-    let (w, h) = (settings.width, settings.height);
-    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
-        return Err(RenderError::BadSize {
-            width: w,
-            height: h,
-        });
-    }
-    let viewport = settings.viewport();
-    let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
-        .map(|i| prepare_triangle(mesh, i, viewport))
-        .collect();
+    let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
-    resize(frame, w, h, buffers);
+    resize(frame, settings.width, settings.height, buffers);
     rasterize_bands(
         &triangles,
         texture,
