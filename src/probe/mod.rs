@@ -346,6 +346,8 @@ impl<'a> Prober<'a> {
                 window: window.to_array(),
                 fixed: sp.to_array(),
                 ndc: ndc.to_array(),
+                subpixel: SUBPIXEL,
+                edge_function_unit: SUBPIXEL * SUBPIXEL,
             },
             triangles: coverage,
             triangle_count: self.triangles.len(),
@@ -457,8 +459,8 @@ impl<'a> Prober<'a> {
         let projected = (clip.w > 0.0).then(|| {
             let ndc = project::ndc_from_clip(clip);
             let win = project::window_from_ndc(ndc, viewport);
-            let snapped = project::snap(win.truncate()).as_dvec2() / SUBPIXEL as f64;
-            (ndc, win, snapped)
+            let fixed = project::snap(win.truncate());
+            (ndc, win, fixed.as_dvec2() / SUBPIXEL as f64, fixed)
         });
         let (object, world, view) = match &self.spaces {
             Some(sp) => {
@@ -482,6 +484,7 @@ impl<'a> Prober<'a> {
             ndc: projected.map(|p| p.0.to_array()),
             window: projected.map(|p| p.1.to_array()),
             window_snapped: projected.map(|p| p.2.to_array()),
+            window_fixed: projected.map(|p| p.3.to_array()),
             inv_w: projected.map(|_| 1.0 / clip.w),
             uv: v.uv.to_array(),
             color: v.color.to_array(),
@@ -595,10 +598,31 @@ impl<'a> Prober<'a> {
             })
         });
 
-        let seen_point = self.seen_point(ti, ndc, system.as_ref());
         let source_weights = frag.map(|f| SourceWeights {
             screen: f.affine.bary(),
             perspective: f.correct.bary(),
+        });
+        // The system and the seen point against the rasterizer: (a, b, c) and W_P of the 1/w
+        // method for an unclipped triangle, the interpolated source weights for a clipped one.
+        let largest = |d: [f64; 3], r: [f64; 3], start: f64| {
+            (0..3).map(|k| (d[k] - r[k]).abs()).fold(start, f64::max)
+        };
+        let reference = if clipped {
+            source_weights.map(|w| (w.perspective.map(f64::from), None))
+        } else {
+            perspective.map(|p| (p.correction.weights, Some(p.correction.w_p)))
+        };
+        let system = system.map(|mut sys| {
+            let b = sys.system.solution;
+            sys.max_difference = reference.map(|(r, w_p)| {
+                let start = w_p.map_or(0.0, |w_p| (b[3] - w_p).abs());
+                largest([b[0], b[1], b[2]], r, start)
+            });
+            sys
+        });
+        let seen_point = self.seen_point(ti, ndc, system.as_ref()).map(|mut p| {
+            p.max_difference = reference.map(|(r, _)| largest(p.weights, r, 0.0));
+            p
         });
         let attribute = frag.map(|f| self.attribute(s, f, (x, y)));
         let depth = frag.map(|f| {
@@ -640,6 +664,7 @@ impl<'a> Prober<'a> {
                 wire: self.params.wireframe
                     && (0..3).any(|i| shade::on_wire_edge(f.edge_weights[i], wire[i].length())),
                 color: shade::shade(f, &self.texture, &self.params, &wire),
+                wire_width_px: self.params.wireframe.then_some(shade::WIRE_WIDTH_PX),
             }
         });
 
@@ -670,6 +695,7 @@ impl<'a> Prober<'a> {
         Some(SystemTrace {
             system,
             s: ndc.to_array(),
+            max_difference: None,
         })
     }
 
@@ -685,6 +711,7 @@ impl<'a> Prober<'a> {
                 let hit = weights::ray_triangle(origin, direction, tri)?;
                 let view = DVec3::from_array(hit.point);
                 let clip = sp.chain.clip_from_view * view.extend(1.0);
+                let ndc = project::ndc_from_clip(clip);
                 Some(SeenPoint {
                     ray: Some(ViewRay {
                         origin: origin.to_array(),
@@ -694,8 +721,10 @@ impl<'a> Prober<'a> {
                     view: Some(hit.point),
                     world: Some(sp.chain.world_from_view_point(view).to_array()),
                     clip: clip.to_array(),
-                    depth: project::window_depth(clip.z / clip.w),
+                    ndc: ndc.to_array(),
+                    depth: project::window_depth(ndc.z),
                     weights: hit.weights,
+                    max_difference: None,
                 })
             }
             None => {
@@ -703,14 +732,17 @@ impl<'a> Prober<'a> {
                 let b = sys.system.solution;
                 let source = render::source_vertices(&self.mesh, self.triangles[ti].source)?;
                 let clip = source[0].clip * b[0] + source[1].clip * b[1] + source[2].clip * b[2];
+                let ndc = project::ndc_from_clip(clip);
                 Some(SeenPoint {
                     ray: None,
                     hit: None,
                     view: None,
                     world: None,
                     clip: clip.to_array(),
-                    depth: project::window_depth(clip.z / clip.w),
+                    ndc: ndc.to_array(),
+                    depth: project::window_depth(ndc.z),
                     weights: [b[0], b[1], b[2]],
+                    max_difference: None,
                 })
             }
         }
@@ -761,6 +793,7 @@ impl<'a> Prober<'a> {
             uv_perspective: uv_p.to_array(),
             uv_games101: [g(0), g(1)],
             texture_size: [t.width(), t.height()],
+            last_texel: [t.width().saturating_sub(1), t.height().saturating_sub(1)],
             texel_affine: texel(uv_a),
             texel_perspective: texel(uv_p),
             texel_difference: diff.to_array(),

@@ -82,6 +82,11 @@ pub struct Sample {
     pub fixed: [i64; 2],
     /// In normalized device coordinates: `(2 x_w / W - 1, 1 - 2 y_w / H)`.
     pub ndc: [f64; 2],
+    /// Sub-pixel steps per pixel of the fixed-point positions:
+    /// [`SUBPIXEL`](crate::raster::project::SUBPIXEL), 256.
+    pub subpixel: i64,
+    /// Edge functions count in units of `1 / edge_function_unit` px²: `subpixel²`, 65536.
+    pub edge_function_unit: i64,
 }
 
 /// One source triangle at the sample.
@@ -202,6 +207,8 @@ pub struct VertexTrace {
     pub window: Option<[f64; 3]>,
     /// Window `(x, y)` snapped to 1/256 pixel; `None` if `w <= 0`.
     pub window_snapped: Option<[f64; 2]>,
+    /// The snapped position in 1/256-pixel units, `window_snapped · 256`; `None` if `w <= 0`.
+    pub window_fixed: Option<[i64; 2]>,
     /// `1/w`; `None` if `w <= 0`.
     pub inv_w: Option<f64>,
     pub uv: [f32; 2],
@@ -307,6 +314,10 @@ pub struct SystemTrace {
     pub system: HomogeneousSystem,
     /// The sample in NDC, `s`.
     pub s: [f64; 2],
+    /// The largest difference between the solution and the rasterizer's weights: with
+    /// `(a, b, c, W_P)` of the 1/w method for an unclipped triangle, with the interpolated
+    /// source weights (f32) for a clipped one; `None` where those do not exist.
+    pub max_difference: Option<f64>,
 }
 
 /// The source triangle's weights at the sample as interpolated by the rasterizer (its
@@ -328,11 +339,17 @@ pub struct SeenPoint {
     pub world: Option<[f64; 3]>,
     /// The point in clip space.
     pub clip: [f64; 4],
+    /// The point in NDC, `clip.xyz / clip.w`.
+    pub ndc: [f64; 3],
     /// Its window depth `(z/w + 1) / 2`.
     pub depth: f64,
     /// Its barycentric weights with respect to the source triangle (from the ray hit in a
     /// world scene, from the 4x4 system's solution in a clip-space scene).
     pub weights: [f64; 3],
+    /// The largest difference between `weights` and the rasterizer's: the perspective-correct
+    /// weights for an unclipped triangle, the interpolated source weights (f32) for a clipped
+    /// one; `None` where those do not exist.
+    pub max_difference: Option<f64>,
 }
 
 /// A ray in view space.
@@ -359,6 +376,8 @@ pub struct AttributeTrace {
     pub uv_games101: [f64; 2],
     /// `[width, height]` of the texture in texels.
     pub texture_size: [u32; 2],
+    /// The last texel index per axis, `[width - 1, height - 1]` (what clamp-to-edge clamps to).
+    pub last_texel: [u32; 2],
     /// `uv * size` for each way.
     pub texel_affine: [f64; 2],
     pub texel_perspective: [f64; 2],
@@ -444,6 +463,9 @@ pub struct ShadeTrace {
     pub edge_distance_px: Option<f64>,
     /// Whether the wireframe overlay coloured the pixel.
     pub wire: bool,
+    /// The wireframe's half width in pixels, [`WIRE_WIDTH_PX`](crate::raster::shade::WIRE_WIDTH_PX)
+    /// (wireframe on).
+    pub wire_width_px: Option<f64>,
     /// The colour the fragment shades to.
     pub color: [u8; 4],
 }

@@ -3,20 +3,18 @@
 use super::*;
 
 /// How a wrap mode maps a texel index into `0..size` (in words, for the nearest line).
-fn wrap_rule(wrap: Wrap, size: [u32; 2]) -> String {
-    let [w, h] = size;
+fn wrap_rule(wrap: Wrap, a: &AttributeTrace) -> String {
+    let [w, h] = a.texture_size;
+    let [last_i, last_j] = a.last_texel;
     match wrap {
         Wrap::Repeat => format!("repeat, i mod {w}, j mod {h}"),
         Wrap::MirroredRepeat => format!("mirrored repeat over {w}x{h}"),
-        Wrap::ClampToEdge => format!(
-            "clamp to 0..{}, 0..{}",
-            w.saturating_sub(1),
-            h.saturating_sub(1)
-        ),
+        Wrap::ClampToEdge => format!("clamp to 0..{last_i}, 0..{last_j}"),
     }
 }
 
-#[allow(clippy::too_many_arguments)]
+/// One way's texture lookup: uv, the texels read (`rule` says how the wrap mode maps an
+/// index), the colour.
 fn taps_line(
     label: &str,
     uv: [f32; 2],
@@ -24,8 +22,7 @@ fn taps_line(
     taps: &[TapTrace],
     color: [u8; 4],
     filter: Filter,
-    wrap: Wrap,
-    size: [u32; 2],
+    rule: &str,
 ) -> Vec<M> {
     let mut l = vec![txt(label.to_string()), tup32(&uv), TO];
     match filter {
@@ -45,7 +42,7 @@ fn taps_line(
                             EQ,
                             M::Tuple(vec![vec![int(i)], vec![int(j)]]),
                             TO,
-                            txt(format!("{}: ", wrap_rule(wrap, size))),
+                            txt(format!("{rule}: ")),
                             wrapped,
                         ]);
                     }
@@ -207,6 +204,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
             }
         }
     ));
+    let rule = wrap_rule(trace.settings.wrap, a);
     b.eq(taps_line(
         "affine ",
         a.uv_affine,
@@ -214,8 +212,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         &a.taps_affine,
         a.color_affine,
         filter,
-        trace.settings.wrap,
-        a.texture_size,
+        &rule,
     ));
     b.eq(taps_line(
         "perspective ",
@@ -224,8 +221,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         &a.taps_perspective,
         a.color_perspective,
         filter,
-        trace.settings.wrap,
-        a.texture_size,
+        &rule,
     ));
     b.eq(listing((0..3).map(|k| {
         vec![

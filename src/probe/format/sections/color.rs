@@ -18,13 +18,13 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
         return;
     };
     if let Some(sh) = &d.shade {
-        if let Some(dist) = sh.edge_distance_px {
+        if let (Some(dist), Some(width)) = (sh.edge_distance_px, sh.wire_width_px) {
             b.para(vec![
                 t("Wireframe: distance to the nearest source edge, smallest weight over its screen gradient: "),
                 m1(num(dist)),
                 t(format!(
                     " px; lines are drawn below {} px{}.",
-                    fmt_number(WIRE_WIDTH_PX),
+                    fmt_number(width),
                     if sh.wire { ", so this is a line pixel" } else { "" }
                 )),
             ]);

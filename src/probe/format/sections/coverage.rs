@@ -67,11 +67,12 @@ pub(super) fn coverage_section(b: &mut Builder, trace: &PixelTrace) {
             CROSS,
             grp(vec![sym("P"), MINUS, sym("U")]),
         ]),
-        t(
-            ", is twice the signed area of U, V, P, in exact integers of 1/65536 px^2, signed \
+        t(format!(
+            ", is twice the signed area of U, V, P, in exact integers of 1/{} px^2, signed \
              so that it is positive inside. Triangles are drawn in order; a fragment is kept if \
              its depth is less than the depth buffer's value (cleared to 1).",
-        ),
+            trace.sample.edge_function_unit
+        )),
     ]);
     if trace.triangles.len() < trace.triangle_count {
         b.text(format!(

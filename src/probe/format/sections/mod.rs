@@ -18,14 +18,14 @@ mod vertices;
 use super::model::*;
 use super::numbers::fmt_number;
 use crate::probe::{
-    CoverageTest, DistanceKind, EdgeTest, PixelTrace, Position, RasterVertex, SceneForm, TapTrace,
-    TriangleCoverage, TriangleTrace,
+    AttributeTrace, CoverageTest, DistanceKind, EdgeTest, PixelTrace, Position, RasterVertex,
+    SceneForm, TapTrace, TriangleCoverage, TriangleTrace,
 };
 use crate::raster::clip::PlaneName;
 use crate::raster::interpolate::Interpolation;
 use crate::raster::render::TriangleStatus;
 use crate::raster::setup::EdgeKind;
-use crate::raster::shade::{Shading, WIRE_WIDTH_PX};
+use crate::raster::shade::Shading;
 use crate::raster::texture::{Filter, Wrap};
 
 struct Builder {

@@ -12,11 +12,6 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
         );
         return;
     };
-    let reference: Option<[f64; 3]> = if d.clipping.is_none() {
-        d.perspective.map(|p| p.correction.weights)
-    } else {
-        d.source_weights.map(|w| w.perspective.map(f64::from))
-    };
     match (&sp.ray, &sp.hit) {
         (Some(ray), Some(hit)) => {
             let perspective = trace.matrices.is_some_and(|m| m.perspective);
@@ -36,13 +31,6 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
                 EQ,
                 tup(&ray.direction),
             ]);
-            let views: Vec<[f64; 3]> = d
-                .vertices
-                .iter()
-                .map(|v| v.view.unwrap_or_default())
-                .collect();
-            let vv = |k: usize| glam::DVec3::from_array(views[k]);
-            let nn = glam::DVec3::from_array(hit.normal);
             b.eq(vec![
                 sym("n"),
                 EQ,
@@ -50,14 +38,12 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
                 CROSS,
                 grp(vec![sym(src[2].clone()), MINUS, sym(src[0].clone())]),
                 EQ,
-                tup(&(vv(1) - vv(0)).to_array()),
+                tup(&hit.edges[0]),
                 CROSS,
-                tup(&(vv(2) - vv(0)).to_array()),
+                tup(&hit.edges[1]),
                 EQ,
                 tup(&hit.normal),
             ]);
-            let o = glam::DVec3::from_array(ray.origin);
-            let dir = glam::DVec3::from_array(ray.direction);
             b.eq(vec![
                 sym("k"),
                 EQ,
@@ -70,7 +56,7 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
                     vec![sym("n"), MUL, sym("dir")],
                 ),
                 EQ,
-                frac(num(nn.dot(vv(0) - o)), num(nn.dot(dir))),
+                frac(num(hit.t_numerator), num(hit.t_denominator)),
                 EQ,
                 num(hit.t),
             ]);
@@ -146,23 +132,12 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
             l.extend([EQ, tup(&sp.clip)]);
             b.eq(l);
             b.eq_note(
-                vec![
-                    frac(sym("X_xyz"), sym("X_w")),
-                    EQ,
-                    tup(&[
-                        sp.clip[0] / sp.clip[3],
-                        sp.clip[1] / sp.clip[3],
-                        sp.clip[2] / sp.clip[3],
-                    ]),
-                ],
+                vec![frac(sym("X_xyz"), sym("X_w")), EQ, tup(&sp.ndc)],
                 "its x and y are the sample's NDC",
             );
         }
     }
-    if let Some(r) = reference {
-        let diff = (0..3)
-            .map(|k| (sp.weights[k] - r[k]).abs())
-            .fold(0.0, f64::max);
+    if let Some(diff) = sp.max_difference {
         b.para(vec![
             t(if d.clipping.is_none() {
                 "These are the perspective-correct weights a, b, c (largest difference "

@@ -47,7 +47,10 @@ pub(super) fn sample_section(b: &mut Builder, trace: &PixelTrace) {
         num(s.ndc[1]),
     ]);
     b.para(vec![
-        t("The rasterizer works in exact integers of 1/256 pixel: "),
+        t(format!(
+            "The rasterizer works in exact integers of 1/{} pixel: ",
+            s.subpixel
+        )),
         m(vec![
             sym("P"),
             EQ,

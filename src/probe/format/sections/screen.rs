@@ -27,11 +27,8 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
     // The inputs of the arithmetic below: shown with an operand's digits.
     pos.iter_mut().for_each(mark_all);
     b.eq(pos);
-    let wx = |k: usize| rv[k].window[0];
-    let wy = |k: usize| rv[k].window[1];
     let xs = |k: usize| sym(format!("x_{}", n[k]));
     let ys = |k: usize| sym(format!("y_{}", n[k]));
-    let (px, py) = (p[0], p[1]);
 
     // 1. Explicit formula.
     if let Some(f) = &sw.explicit {
@@ -46,17 +43,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
                 grp(vec![ys(u), MINUS, ys(0)]),
             ]
         };
-        let vals = |py_: f64, px_: f64, u: usize| {
-            vec![
-                num(py_ - wy(0)),
-                MUL,
-                num(wx(u) - wx(0)),
-                MINUS,
-                num(px_ - wx(0)),
-                MUL,
-                num(wy(u) - wy(0)),
-            ]
-        };
+        let vals = |f: [f64; 4]| vec![num(f[0]), MUL, num(f[1]), MINUS, num(f[2]), MUL, num(f[3])];
         let dform = |u: usize, v: usize| {
             vec![
                 grp(vec![ys(u), MINUS, ys(0)]),
@@ -69,13 +56,13 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
         let mut l = vec![sym("N_beta"), EQ];
         l.extend(form(2));
         l.push(EQ);
-        l.extend(vals(py, px, 2));
+        l.extend(vals(f.beta_numerator_factors));
         l.extend([EQ, num(f.beta_numerator)]);
         b.eq(l);
         let mut l = vec![sym("D_beta"), EQ];
         l.extend(dform(1, 2));
         l.push(EQ);
-        l.extend(vals(wy(1), wx(1), 2));
+        l.extend(vals(f.beta_denominator_factors));
         l.extend([EQ, num(f.beta_denominator)]);
         b.eq(l);
         b.eq(vec![
@@ -92,13 +79,13 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
         let mut l = vec![sym("N_gamma"), EQ];
         l.extend(form(1));
         l.push(EQ);
-        l.extend(vals(py, px, 1));
+        l.extend(vals(f.gamma_numerator_factors));
         l.extend([EQ, num(f.gamma_numerator)]);
         b.eq(l);
         let mut l = vec![sym("D_gamma"), EQ];
         l.extend(dform(2, 1));
         l.push(EQ);
-        l.extend(vals(wy(2), wx(2), 1));
+        l.extend(vals(f.gamma_denominator_factors));
         l.extend([EQ, num(f.gamma_denominator)]);
         b.eq(l);
         b.eq(vec![
@@ -152,43 +139,41 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
             ]),
             t(". Each sub-area is the triangle of P with the edge opposite a vertex:"),
         ]);
-        let v2 = |k: usize| glam::DVec2::from_array(rv[k].window);
-        let pp = glam::DVec2::from_array(p);
-        let cross_line =
-            |lhs: M, a: &str, bb: &str, c_: &str, u: glam::DVec2, w: glam::DVec2, val: f64| {
-                // lhs = 1/2 (ab x ac) = 1/2 (u_x w_y - u_y w_x) = val
-                vec![
-                    lhs,
-                    EQ,
-                    sym("half"),
-                    grp(vec![
-                        sym(format!("{a}{bb}")),
-                        CROSS,
-                        sym(format!("{a}{c_}")),
-                    ]),
-                    EQ,
-                    sym("half"),
-                    grp(vec![
-                        num(u.x),
-                        MUL,
-                        num(w.y),
-                        MINUS,
-                        num(u.y),
-                        MUL,
-                        num(w.x),
-                    ]),
-                    EQ,
-                    num(val),
-                ]
-            };
+        // The vectors (u, v) of S, S_A, S_B, S_C.
+        let vectors = c.vectors.unwrap_or_default();
+        let cross_line = |lhs: M, a: &str, bb: &str, c_: &str, [u, w]: [[f64; 2]; 2], val: f64| {
+            // lhs = 1/2 (ab x ac) = 1/2 (u_x w_y - u_y w_x) = val
+            vec![
+                lhs,
+                EQ,
+                sym("half"),
+                grp(vec![
+                    sym(format!("{a}{bb}")),
+                    CROSS,
+                    sym(format!("{a}{c_}")),
+                ]),
+                EQ,
+                sym("half"),
+                grp(vec![
+                    num(u[0]),
+                    MUL,
+                    num(w[1]),
+                    MINUS,
+                    num(u[1]),
+                    MUL,
+                    num(w[0]),
+                ]),
+                EQ,
+                num(val),
+            ]
+        };
         b.eq_note(
             cross_line(
                 sym("S"),
                 &n[1],
                 &n[2],
                 &n[0],
-                v2(2) - v2(1),
-                v2(0) - v2(1),
+                vectors[0],
                 c.area,
             ),
             if c.area < 0.0 {
@@ -204,8 +189,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
                 &n[*i],
                 &n[*j],
                 "P",
-                v2(*j) - v2(*i),
-                pp - v2(*i),
+                vectors[k + 1],
                 c.sub_areas[k],
             );
             l.extend([
@@ -232,7 +216,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
             PLUS,
             sym(format!("S_{}", n[2])),
             EQ,
-            num(c.sub_areas[0] + c.sub_areas[1] + c.sub_areas[2]),
+            num(c.sub_area_sum),
             EQ,
             sym("S"),
         ]);
@@ -342,11 +326,12 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
         }
     }
     if d.coverage.covered && sw.rasterizer.iter().any(|&w| w < 0.0) {
-        b.text(
+        b.text(format!(
             "A weight is slightly negative although the pixel is covered: the snapped edges \
-             (1/256 px) cover the centre, the unsnapped triangle misses it by a hair. A GPU \
+             (1/{} px) cover the centre, the unsnapped triangle misses it by a hair. A GPU \
              interpolates with the same negative weight.",
-        );
+            trace.sample.subpixel
+        ));
     }
     b.para(vec![
         t("All ways agree: the largest difference from the rasterizer's values is "),

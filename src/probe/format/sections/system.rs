@@ -49,7 +49,6 @@ pub(super) fn system_section(b: &mut Builder, d: &TriangleTrace) {
         EQ,
         tup(&s.solution),
     ]);
-    let b3 = [s.solution[0], s.solution[1], s.solution[2]];
     if s.solution[3].is_nan() || s.solution[3] <= 0.0 {
         b.text(
             "w <= 0: the line through the eye and the pixel meets the triangle's plane behind \
@@ -57,11 +56,11 @@ pub(super) fn system_section(b: &mut Builder, d: &TriangleTrace) {
         );
         return;
     }
+    let Some(diff) = sys.max_difference else {
+        return;
+    };
     if d.clipping.is_none() {
-        if let Some(p) = &d.perspective {
-            let diff = (0..3)
-                .map(|k| (b3[k] - p.correction.weights[k]).abs())
-                .fold((s.solution[3] - p.correction.w_p).abs(), f64::max);
+        if d.perspective.is_some() {
             b.para(vec![
                 t("These are a, b, c and W_P from the 1/w method (largest difference "),
                 m1(num(diff)),
@@ -69,9 +68,6 @@ pub(super) fn system_section(b: &mut Builder, d: &TriangleTrace) {
             ]);
         }
     } else if let Some(sw) = &d.source_weights {
-        let diff = (0..3)
-            .map(|k| (b3[k] - f64::from(sw.perspective[k])).abs())
-            .fold(0.0, f64::max);
         b.para(vec![
             t("These are the source weights the rasterizer interpolated, "),
             m1(tup32(&sw.perspective)),

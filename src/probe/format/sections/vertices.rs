@@ -69,8 +69,8 @@ pub(super) fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &Triangle
         } else {
             b.eq(vec![sym(format!("clip_{n}")), EQ, tup(&v.clip)]);
         }
-        match (v.ndc, v.window, v.window_snapped, v.inv_w) {
-            (Some(ndc), Some(win), Some(snap), Some(inv_w)) => {
+        match (v.ndc, v.window, v.window_fixed, v.inv_w) {
+            (Some(ndc), Some(win), Some(fixed), Some(inv_w)) => {
                 b.eq(vec![
                     sym(format!("ndc_{n}")),
                     EQ,
@@ -98,12 +98,8 @@ pub(super) fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &Triangle
                     TO,
                     txt("snapped: "),
                     frac(
-                        M::Tuple(
-                            snap.iter()
-                                .map(|&c| vec![int((c * 256.0).round() as i64)])
-                                .collect(),
-                        ),
-                        int(256),
+                        M::Tuple(fixed.iter().map(|&c| vec![int(c)]).collect()),
+                        int(trace.sample.subpixel),
                     ),
                 ]);
                 b.eq(vec![
