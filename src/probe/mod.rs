@@ -2,7 +2,7 @@
 //!
 //! [`probe`] (or [`Prober::pixel`] for many pixels of one scene) traces the pixel centre
 //! `(x + 0.5, y + 0.5)` through the same functions the renderer runs: it prepares every
-//! source triangle with [`render::prepare_triangle`], evaluates the edge functions at
+//! source triangle with [`render::prepare_triangles`], evaluates the edge functions at
 //! [`setup::sample_point`] with [`TriangleSetup::edge_values`] and
 //! [`TriangleSetup::covers`], interpolates with [`interpolate::fragment`], resolves the depth
 //! test as the renderer does (source triangles in order, `less than`, buffer cleared to 1)
