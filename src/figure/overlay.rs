@@ -11,6 +11,8 @@
 use glam::DVec2;
 
 use crate::raster::Interpolation;
+/// Vertex names, shared with the derivation: A, B, C, ..., Z, then V26, ...
+pub use crate::scene::vertex_name;
 
 /// sRGB colour with straight (unmultiplied) alpha.
 pub type Rgba = [u8; 4];
@@ -69,8 +71,6 @@ mod text {
     pub const DIFFERENCE: &str = "|uv affine − uv perspective| in texels";
     pub const BEHIND: &str = "behind the camera";
 }
-
-pub use crate::scene::vertex_name;
 
 /// The colour of mesh vertex `index`.
 pub fn vertex_color(index: usize) -> Rgba {
