@@ -317,6 +317,23 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
     out
 }
 
+/// Checks the image size (1 to [`MAX_IMAGE_SIZE`] pixels per side) and prepares every source
+/// triangle of `mesh` with [`prepare_triangle`], in order: the first step of a render, and
+/// what the probe traces.
+pub fn prepare_triangles(
+    mesh: &ClipMesh,
+    settings: &RenderSettings,
+) -> Result<Vec<PreparedTriangle>, RenderError> {
+    let (w, h) = (settings.width, settings.height);
+    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
+        return Err(RenderError::BadSize {
+            width: w,
+            height: h,
+        });
+    }
+    Ok(prepare_all(mesh, settings.viewport()))
+}
+
 /// The result of a render: the framebuffer and what happened to each source triangle.
 #[derive(Clone, Debug)]
 pub struct Render {
@@ -347,18 +364,12 @@ pub fn render_into(
     buffers: Buffers,
 ) -> Result<Vec<PreparedTriangle>, RenderError> {
     let (w, h) = (settings.width, settings.height);
-    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
-        return Err(RenderError::BadSize {
-            width: w,
-            height: h,
-        });
+    if (1..=MAX_IMAGE_SIZE).contains(&w) && (1..=MAX_IMAGE_SIZE).contains(&h) {
+        crate::budget::check_render(w, h, buffers, mesh.vertices.len(), mesh.triangles.len())?;
     }
-    let n = mesh.triangles.len();
-    crate::budget::check_render(w, h, buffers, mesh.vertices.len(), n)?;
-    let viewport = settings.viewport();
-    let triangles = prepare_all(mesh, viewport);
+    let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
-    resize(frame, w, h, buffers);
+    resize(frame, settings.width, settings.height, buffers);
     rasterize_bands(
         &triangles,
         texture,

@@ -207,6 +207,21 @@ pub fn lod(duv_dx: Vec2, duv_dy: Vec2, width: u32, height: u32) -> f32 {
     if l.is_finite() { l } else { 0.0 }
 }
 
+/// How far apart two texture coordinates are, in texels of a `size` = (W, H) texture, per
+/// axis: `((u_1 - u_2) W, (v_1 - v_2) H)`; its length is the distance. In the precision of
+/// the caller: the heatmap computes it in `f32`, the probe in `f64`.
+///
+/// ```
+/// use barylab::raster::texture::texel_offset;
+/// assert_eq!(texel_offset([0.75f64, 0.5], [0.5, 0.25], [8.0, 4.0]), [2.0, 1.0]);
+/// ```
+pub fn texel_offset<T>(uv_1: [T; 2], uv_2: [T; 2], size: [T; 2]) -> [T; 2]
+where
+    T: Copy + std::ops::Sub<Output = T> + std::ops::Mul<Output = T>,
+{
+    [(uv_1[0] - uv_2[0]) * size[0], (uv_1[1] - uv_2[1]) * size[1]]
+}
+
 /// Largest texture side kept as is; larger images are downscaled on load.
 pub const MAX_TEXTURE_SIZE: u32 = 4096;
 
@@ -573,8 +588,22 @@ impl Texture {
     /// assert_eq!(t.nearest_unwrapped(Vec2::new(1.3, -0.1), 0), [5, -1]);
     /// ```
     pub fn nearest_unwrapped(&self, uv: Vec2, level: u32) -> [i64; 2] {
+        let [x, y] = self.texel_coords(uv, level);
+        [texel_floor(x), texel_floor(y)]
+    }
+
+    /// Texel coordinates of `uv` in mipmap `level` (W x H): `(u W, v H)`, in `f32` as the
+    /// filters compute them (texel row 0 is v = 0).
+    ///
+    /// ```
+    /// use barylab::raster::texture::Texture;
+    /// use glam::Vec2;
+    /// let t = Texture::from_texels(4, 2, vec![[0; 4]; 8]).unwrap();
+    /// assert_eq!(t.texel_coords(Vec2::new(0.5, 0.25), 0), [2.0, 0.5]);
+    /// ```
+    pub fn texel_coords(&self, uv: Vec2, level: u32) -> [f32; 2] {
         let (w, h) = self.level_size(level);
-        [texel_floor(uv.x * w as f32), texel_floor(uv.y * h as f32)]
+        [uv.x * w as f32, uv.y * h as f32]
     }
 
     /// Nearest or bilinear taps in one mipmap level.
