@@ -1,5 +1,9 @@
 //! The fast path: eight pixels of a row at a time, colour and depth only.
 //!
+//! (Longer than the project's ~600 lines: the portable lane code and the types the AVX2 and
+//! AVX-512 files mirror are kept together, so a reader sees every step of the arithmetic that
+//! must stay bit-identical in one place.)
+//!
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
 //! nearest or bilinear filtering, vertex colour, barycentric and depth shading, and the
