@@ -5,7 +5,7 @@
 //! centre is interpolated (`interpolate`), depth-tested (less-than) and shaded (`shade`).
 //! The probe calls [`prepare_triangle`] and [`interpolate::fragment`] exactly as done here.
 
-use super::clip::{ClipPolygon, ClipVertex, clip_triangle};
+use super::clip::{ClipPolygon, ClipVertex, clip_triangle, inside_every_plane};
 use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 use super::interpolate::{self, Fragment, Interpolation};
 use super::lanes::{self, LaneShading, Target};
@@ -184,19 +184,24 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
         out.status = TriangleStatus::NotFinite;
         return out;
     }
-    let polygon = clip_triangle(&verts, viewport.guard_band_ndc());
-    if !polygon.unclipped() {
+    let guard = viewport.guard_band_ndc();
+    if inside_every_plane(&verts, guard) {
+        // Most triangles of a mesh: nothing to clip, one set-up triangle.
+        let window = verts.map(|v| project_vertex(&v, viewport));
+        out.setups.extend(setup_triangle(window, viewport));
+    } else {
+        let polygon = clip_triangle(&verts, guard);
         out.clipped = Some(Box::new(polygon));
-    }
-    let pv = polygon.vertices();
-    if pv.len() < 3 {
-        out.status = TriangleStatus::ClippedAway;
-        return out;
-    }
-    let window: Vec<_> = pv.iter().map(|v| project_vertex(v, viewport)).collect();
-    for k in 1..window.len() - 1 {
-        if let Some(s) = setup_triangle([window[0], window[k], window[k + 1]], viewport) {
-            out.setups.push(s);
+        let pv = polygon.vertices();
+        if pv.len() < 3 {
+            out.status = TriangleStatus::ClippedAway;
+            return out;
+        }
+        let window: Vec<_> = pv.iter().map(|v| project_vertex(v, viewport)).collect();
+        for k in 1..window.len() - 1 {
+            if let Some(s) = setup_triangle([window[0], window[k], window[k + 1]], viewport) {
+                out.setups.push(s);
+            }
         }
     }
     out.status = if out.setups.is_empty() {
