@@ -72,9 +72,9 @@ impl<'a> RowBand<'a> {
         out
     }
 
-    /// Whether the per-pixel buffers besides colour and depth are present.
+    /// Whether every per-pixel buffer is present ([`Buffers::All`](super::framebuffer::Buffers::All)).
     pub(super) fn has_aovs(&self) -> bool {
-        self.triangle.len() == self.color.len()
+        self.weights_screen.len() == self.color.len()
     }
 
     /// Clears every buffer of the band: colour to `background`, depth to 1 (the far plane).

@@ -8,7 +8,7 @@
 use super::clip::{ClipPolygon, ClipVertex, clip_triangle, inside_every_plane};
 use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 use super::interpolate::{self, Fragment, Interpolation};
-use super::lanes::{self, LaneShading, Target};
+use super::lanes::{self, LaneShading, Target, UvTarget};
 use super::project::{MAX_IMAGE_SIZE, Viewport, project_vertex};
 use super::setup::{Facing, TriangleSetup, sample_point, setup_triangle};
 use super::shade::{ShadeParams, Shading, shade};
@@ -299,12 +299,13 @@ fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
     frame.color.resize(n, [0; 4]);
     frame.depth.resize(n, 1.0);
     let aov = if buffers == Buffers::All { n } else { 0 };
-    frame.triangle.resize(aov, NO_TRIANGLE);
+    let uv = if buffers == Buffers::ColorDepth { 0 } else { n };
+    frame.triangle.resize(uv, NO_TRIANGLE);
     frame.facing.resize(aov, Facing::Front);
     frame.weights_screen.resize(aov, [0.0; 3]);
     frame.weights_perspective.resize(aov, [0.0; 3]);
-    frame.uv_affine.resize(aov, [0.0; 2]);
-    frame.uv_perspective.resize(aov, [0.0; 2]);
+    frame.uv_affine.resize(uv, [0.0; 2]);
+    frame.uv_perspective.resize(uv, [0.0; 2]);
     frame.inv_w.resize(aov, 0.0);
 }
 
@@ -389,6 +390,7 @@ fn rasterize(
         [glam::DVec2::ZERO; 3]
     };
     let aovs = band.has_aovs();
+    let uvs = !band.uv_affine.is_empty();
     // Depth test, buffers and shading: the same for both rasterizers.
     let write = |band: &mut RowBand<'_>, x: u32, y: u32, frag: &Fragment| {
         let mut frag = *frag;
@@ -403,13 +405,15 @@ fn rasterize(
         }
         band.depth[i] = depth;
         band.color[i] = shade(&frag, texture, params, &wire);
-        if aovs {
+        if uvs {
             band.triangle[i] = source;
+            band.uv_affine[i] = frag.affine.uv().to_array();
+            band.uv_perspective[i] = frag.correct.uv().to_array();
+        }
+        if aovs {
             band.facing[i] = setup.facing;
             band.weights_screen[i] = frag.affine.bary();
             band.weights_perspective[i] = frag.correct.bary();
-            band.uv_affine[i] = frag.affine.uv().to_array();
-            band.uv_perspective[i] = frag.correct.uv().to_array();
             band.inv_w[i] = frag.inv_w as f32;
         }
     };
@@ -443,6 +447,12 @@ fn rasterize(
                     width,
                     color: band.color,
                     depth: band.depth,
+                    uv: uvs.then_some(UvTarget {
+                        source,
+                        triangle: band.triangle,
+                        uv_affine: band.uv_affine,
+                        uv_perspective: band.uv_perspective,
+                    }),
                 };
                 lanes::edge_triangle(
                     setup,
@@ -461,13 +471,14 @@ fn rasterize(
                 return;
             }
             (Rasterizer::Scanline, Some(shading))
-                if !shading.wireframe && shading.color == lanes::LaneColor::Texture =>
+                if !shading.wireframe && !uvs && shading.color == lanes::LaneColor::Texture =>
             {
                 let mut target = Target {
                     y0: band.y0,
                     width: band.width,
                     color: band.color,
                     depth: band.depth,
+                    uv: None,
                 };
                 lanes::scanline_triangle(setup, (y_start, y_end), texture, shading, &mut target);
                 return;
