@@ -369,6 +369,25 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
     }
 }
 
+/// The vertices' uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]`
+/// (the `noperspective` set, then the `smooth` one), for [`Constants::both_uv`].
+fn both_uv(setup: &TriangleSetup) -> [[f64; 3]; 4] {
+    let uv = |k: usize, smooth: bool| {
+        let v = if smooth {
+            &setup.v[k].varyings
+        } else {
+            &setup.v[k].noperspective
+        };
+        v.uv().as_dvec2()
+    };
+    [
+        [0, 1, 2].map(|k| uv(k, false).x),
+        [0, 1, 2].map(|k| uv(k, false).y),
+        [0, 1, 2].map(|k| uv(k, true).x),
+        [0, 1, 2].map(|k| uv(k, true).y),
+    ]
+}
+
 /// The screen weights of the eight pixels `x, x + 1, ...` of row `y`, as
 /// [`WeightPlanes::at_pixel`] computes them.
 #[inline(always)]
@@ -576,8 +595,7 @@ pub fn edge_triangle(
     #[cfg(target_arch = "x86_64")]
     {
         if vector_path() {
-            // The AVX2 writer stores colour and depth only; uv goes through the lane code.
-            if let (Some(sh), None) = (shading, &target.uv) {
+            if let Some(sh) = shading {
                 let sampler = avx2::VecSampler::new(texture, &sh);
                 if sh.color != LaneColor::Texture || sampler.is_some() {
                     // SAFETY: the CPU supports AVX2, checked by `vector_path`.
@@ -622,20 +640,7 @@ fn edge_triangle_impl(
     let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
     let mut consts = Constants::new(setup, mode, shading.is_some_and(|s| s.wireframe), color);
     if target.uv.is_some() {
-        let uv = |k: usize, smooth: bool| {
-            let v = if smooth {
-                &setup.v[k].varyings
-            } else {
-                &setup.v[k].noperspective
-            };
-            v.uv().as_dvec2()
-        };
-        consts.both_uv = Some([
-            [0, 1, 2].map(|k| uv(k, false).x),
-            [0, 1, 2].map(|k| uv(k, false).y),
-            [0, 1, 2].map(|k| uv(k, true).x),
-            [0, 1, 2].map(|k| uv(k, true).y),
-        ]);
+        consts.both_uv = Some(both_uv(setup));
     }
     let sampler = shading.map(|s| Sampler::new(texture, s.filter, s.wrap));
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
