@@ -38,7 +38,7 @@ pub struct Heatmap {
 const HEAT_STEPS: usize = 1024;
 
 /// The colour of a difference `d` on a scale from 0 to `scale_max` (the magma colour map, in
-/// [`HEAT_STEPS`] steps).
+/// 1024 steps).
 ///
 /// ```
 /// use barylab::figure::heatmap::heat_color;
