@@ -9,6 +9,8 @@
 //! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
 //! - [`files`]: reading only regular files with size caps, atomic writes, paths in messages.
 //! - [`budget`]: the memory budget checked before large allocations.
+//! - `gpu` (feature `gpu`, on by default): the same scene drawn by OpenGL through headless EGL,
+//!   compared with barylab's pixels (`barylab gpu-check`).
 //! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
@@ -17,6 +19,8 @@ pub mod bench;
 pub mod budget;
 pub mod figure;
 pub mod files;
+#[cfg(feature = "gpu")]
+pub mod gpu;
 pub mod model;
 pub mod probe;
 pub mod raster;
