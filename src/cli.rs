@@ -12,6 +12,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::output::{self, note, print};
 
 mod commands;
+#[cfg(feature = "gpu")]
+mod gpu_check;
 
 const EXAMPLES: &str = "\
 Examples:
@@ -79,6 +81,39 @@ enum Command {
         after_help = "Examples:\n  barylab bench\n  barylab bench assets/scenes/default.json --frames 20 --json"
     )]
     Bench(BenchArgs),
+    /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
+    /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
+    /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
+    /// coverage differs.
+    #[cfg(feature = "gpu")]
+    #[command(
+        name = "gpu-check",
+        after_help = "Examples:\n  barylab gpu-check assets/scenes/*.json\n  barylab gpu-check assets/scenes/default.json --mode affine --filter nearest --json"
+    )]
+    GpuCheck(GpuCheckArgs),
+}
+
+#[cfg(feature = "gpu")]
+#[derive(clap::Args, Debug)]
+struct GpuCheckArgs {
+    /// Scene files (JSON), OBJ models or images, as for `render`.
+    #[arg(required = true)]
+    scenes: Vec<PathBuf>,
+    /// Interpolation mode (default: each scene's).
+    #[arg(long)]
+    mode: Option<ModeArg>,
+    /// Texture filter (default: each scene's; trilinear is compared as bilinear).
+    #[arg(long)]
+    filter: Option<FilterArg>,
+    /// Image size as WIDTHxHEIGHT (default: each scene's).
+    #[arg(long, value_parser = parse_size, allow_hyphen_values = true)]
+    size: Option<(u32, u32)>,
+    /// Use Mesa's software rasterizer (llvmpipe) instead of the GPU.
+    #[arg(long)]
+    software: bool,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    json: bool,
 }
 
 #[derive(clap::Args, Debug)]
@@ -397,6 +432,8 @@ pub fn main() -> ExitCode {
         Some(Command::Probe(args)) => commands::probe(&args),
         Some(Command::Bench(args)) => commands::bench(&args),
         Some(Command::Figure(args)) => commands::figure(&args),
+        #[cfg(feature = "gpu")]
+        Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
