@@ -12,6 +12,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::output::{self, note, print};
 
 mod commands;
+mod compare;
 #[cfg(feature = "gpu")]
 mod gpu_check;
 
@@ -85,12 +86,67 @@ enum Command {
     /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
     /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
     /// coverage differs.
+    /// Compare an image from another rasterizer (a student's, a screenshot) with barylab's
+    /// render of the same scene: coverage, colours, a difference image, and the first
+    /// differing pixels each with a reason. Exits 0 when they agree, 1 when they differ.
+    #[command(
+        after_help = "Examples:\n  barylab compare assets/scenes/games101-a2.json output.png --background black\n  barylab compare assets/scenes/default.json shot.png -o diff.png --json"
+    )]
+    Compare(CompareArgs),
     #[cfg(feature = "gpu")]
     #[command(
         name = "gpu-check",
         after_help = "Examples:\n  barylab gpu-check assets/scenes/*.json\n  barylab gpu-check assets/scenes/default.json --mode affine --filter nearest --json"
     )]
     GpuCheck(GpuCheckArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct CompareArgs {
+    #[command(flatten)]
+    input: SceneOptions,
+    /// The image to compare (PNG, JPEG, BMP, TGA or WebP), the size barylab renders the scene.
+    image: PathBuf,
+    /// Write the difference image here (PNG): dim grey where they agree, red to yellow by
+    /// colour difference, magenta where only the image covers a pixel, cyan where only
+    /// barylab does.
+    #[arg(short, long)]
+    output: Option<PathBuf>,
+    /// The image's background colour (black, white, #rrggbb or R,G,B): other colours are
+    /// covered pixels. Default: by alpha if the image has transparent pixels, else the
+    /// scene's background colour.
+    #[arg(long, value_parser = parse_color, value_name = "COLOR")]
+    background: Option<[u8; 3]>,
+    /// 8-bit levels a channel may differ by and still agree.
+    #[arg(long, default_value_t = barylab::compare::DEFAULT_TOLERANCE)]
+    tolerance: u8,
+    /// Print the comparison as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Parses a colour: black, white, #rrggbb or R,G,B.
+fn parse_color(s: &str) -> Result<[u8; 3], String> {
+    let bad = || format!("`{s}` is not a colour like black, white, #1e90ff or 30,144,255");
+    let t = s.trim().to_ascii_lowercase();
+    match t.as_str() {
+        "black" => return Ok([0, 0, 0]),
+        "white" => return Ok([255, 255, 255]),
+        _ => {}
+    }
+    if let Some(hex) = t.strip_prefix('#') {
+        if hex.len() != 6 || !hex.is_ascii() {
+            return Err(bad());
+        }
+        let c = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).map_err(|_| bad());
+        return Ok([c(0)?, c(2)?, c(4)?]);
+    }
+    let parts: Vec<&str> = t.split(',').collect();
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let c = |i: usize| parts[i].trim().parse::<u8>().map_err(|_| bad());
+    Ok([c(0)?, c(1)?, c(2)?])
 }
 
 #[cfg(feature = "gpu")]
@@ -432,6 +488,7 @@ pub fn main() -> ExitCode {
         Some(Command::Probe(args)) => commands::probe(&args),
         Some(Command::Bench(args)) => commands::bench(&args),
         Some(Command::Figure(args)) => commands::figure(&args),
+        Some(Command::Compare(args)) => compare::run(&args),
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };
