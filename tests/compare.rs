@@ -240,3 +240,53 @@ fn coverage_by_alpha_when_the_image_is_transparent() {
     assert!(out.contains("covered: alpha of at least 128"), "{out}");
     assert!(out.contains("verdict: the images agree"), "{out}");
 }
+
+/// GAMES101 Assignment 2: barylab's render agrees; the course's usual mistakes are named.
+#[test]
+fn games101_assignment_2_mistakes_are_named() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let a2 = scene("games101-a2.json");
+    let run = |image: &Path| compare(&[&a2, s(image), "--background", "black"]);
+    let right = make_image("games101-a2.json", dir.path(), "right.png", |_| {}, as_is);
+    let (code, out, err) = run(&right);
+    assert_eq!(code, Some(0), "{out}{err}");
+    // The depth test reversed (z sign): the far triangle drawn over the near one.
+    let reversed = make_image(
+        "games101-a2.json",
+        dir.path(),
+        "reversed.png",
+        |_| {},
+        |mut m, _| {
+            for v in &mut m.vertices {
+                v.clip.z = -v.clip.z;
+            }
+            m
+        },
+    );
+    let (code, out, _) = run(&reversed);
+    assert_eq!(code, Some(1), "{out}");
+    assert!(out.contains("a reversed depth test (or z sign)"), "{out}");
+    // The projection's w with the wrong sign: the picture turned by 180 degrees.
+    let img = image::open(&right).expect("png");
+    let rotated = dir.path().join("rotated.png");
+    img.rotate180().save(&rotated).expect("save");
+    let (_, out, _) = run(&rotated);
+    assert!(
+        out.contains("verdict: looks rotated by 180 degrees"),
+        "{out}"
+    );
+    // insideTriangle(int x, int y, ...) truncating x + 0.5: samples at integer coordinates,
+    // in the framework's y-up rows.
+    let integer = make_image(
+        "games101-a2.json",
+        dir.path(),
+        "integer.png",
+        |_| {},
+        |m, s| shifted(&m, s.width, s.height, 0.5, -0.5),
+    );
+    let (_, out, _) = run(&integer);
+    assert!(
+        out.contains("verdict: looks like pixel centres at integer coordinates"),
+        "{out}"
+    );
+}

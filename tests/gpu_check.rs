@@ -84,7 +84,20 @@ fn sample_scenes_agree_with_llvmpipe_on_coverage() {
         for s in checked {
             let name = &s["scene"];
             assert_eq!(s["coverage_mismatches"], 0, "{name} {mode}: {s}");
-            assert_eq!(s["triangle_mismatches"], 0, "{name} {mode}: {s}");
+            // The spot model: one pixel where a vertex's window y is exactly a 1/256 rounding
+            // midpoint in llvmpipe's f32 viewport transform (f64: 0.0026 below it), so the
+            // two snap it to neighbouring grid points (docs/ground-truth.md).
+            let allowed = if name.as_str().is_some_and(|n| n.contains("spot")) {
+                1
+            } else {
+                0
+            };
+            assert!(
+                s["triangle_mismatches"]
+                    .as_u64()
+                    .is_some_and(|n| n <= allowed),
+                "{name} {mode}: {s}"
+            );
             assert!(s["covered"].as_u64().is_some_and(|n| n > 0), "{name}: {s}");
             // uv at llvmpipe's f32 accuracy, colours within rounding, except affine uv where
             // Mesa's clipper made vertices (the near plane in corner-behind, the far-off
@@ -97,6 +110,10 @@ fn sample_scenes_agree_with_llvmpipe_on_coverage() {
                 (4.0, 255)
             } else if named("far-checker") {
                 (1e-4, 3)
+            } else if named("spot") {
+                // 5856 triangles a few pixels across: llvmpipe's f32 plane equations lose
+                // more there (measured 4.0e-6 affine, 1.3e-5 perspective).
+                (5e-5, 3)
             } else {
                 (2e-6, 3)
             };
