@@ -356,6 +356,27 @@ struct SceneOptions {
     /// Overlay the triangles' edges (threshold on the smallest weight).
     #[arg(long)]
     wireframe: bool,
+    /// Which triangle owns a pixel centre exactly on a shared edge: llvmpipe's rule (left and
+    /// bottom edges in image rows, as OpenGL on Mesa) or the top-left rule of Direct3D and
+    /// Vulkan (default: the scene's, else llvmpipe).
+    #[arg(long, value_name = "RULE")]
+    tie_rule: Option<TieRuleArg>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum TieRuleArg {
+    Llvmpipe,
+    #[value(name = "top-left", alias = "top_left")]
+    TopLeft,
+}
+
+impl From<TieRuleArg> for raster::setup::TieRule {
+    fn from(r: TieRuleArg) -> Self {
+        match r {
+            TieRuleArg::Llvmpipe => Self::Llvmpipe,
+            TieRuleArg::TopLeft => Self::TopLeft,
+        }
+    }
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]

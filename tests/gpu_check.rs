@@ -79,6 +79,15 @@ fn sample_scenes_agree_with_llvmpipe_on_coverage() {
                 .is_some_and(|r| r.contains("llvmpipe")),
             "{report}"
         );
+        // llvmpipe's ties follow the llvmpipe rule, and the lattice tells the rules apart.
+        assert_eq!(report["ties"]["follows"], "llvmpipe", "{report}");
+        assert_eq!(report["ties"]["differing_llvmpipe"], 0, "{report}");
+        assert!(
+            report["ties"]["differing_top_left"]
+                .as_u64()
+                .is_some_and(|n| n > 100),
+            "{report}"
+        );
         let checked = report["scenes"].as_array().expect("scenes");
         assert_eq!(checked.len(), scenes.len());
         for s in checked {
@@ -141,6 +150,10 @@ fn sample_scenes_agree_with_llvmpipe_on_coverage() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert!(text.contains("OpenGL: llvmpipe"), "{text}");
+    assert!(
+        text.contains("ties: the GPU follows the llvmpipe rule"),
+        "{text}"
+    );
     assert!(text.contains("480x270"), "{text}");
     assert!(
         text.contains("coverage: 129600 of 129600 pixels covered by barylab; 0 mismatches"),

@@ -27,6 +27,9 @@ pub(super) fn prepare(
     if let Some((w, h)) = o.size {
         scene.set_size(w, h);
     }
+    if let Some(rule) = o.tie_rule {
+        scene.set_tie_rule(rule.into());
+    }
     // What drawing it takes (the probe and the figure set up every triangle too), before the
     // texture is read.
     let (w, h) = scene.size();

@@ -13,6 +13,8 @@ struct Report {
     vendor: String,
     renderer: String,
     version: String,
+    /// Which tie rule the GPU's ties follow.
+    ties: check::TieCheck,
     scenes: Vec<check::SceneCheck>,
 }
 
@@ -32,6 +34,7 @@ pub(super) fn run(args: &GpuCheckArgs) -> Result<()> {
         filter: args.filter.map(Into::into),
         size: args.size,
     };
+    let ties = check::tie_rule(&mut gl).map_err(|e| anyhow::anyhow!("gpu-check: {e}"))?;
     let mut scenes = Vec::new();
     for path in &args.scenes {
         scenes.push(check::check_scene(&mut gl, path, options).map_err(anyhow::Error::msg)?);
@@ -40,6 +43,7 @@ pub(super) fn run(args: &GpuCheckArgs) -> Result<()> {
         vendor: gl.vendor().to_string(),
         renderer: gl.renderer().to_string(),
         version: gl.version().to_string(),
+        ties,
         scenes,
     };
     if args.json {
@@ -74,6 +78,18 @@ fn pixels(list: &[[u32; 2]], total: usize) -> String {
 
 fn text(r: &Report) -> String {
     let mut out = format!("OpenGL: {} ({}; {})\n", r.renderer, r.vendor, r.version);
+    let t = &r.ties;
+    out.push_str(&match t.follows {
+        Some(rule) => format!(
+            "ties: the GPU follows {} ({} of the tie lattice's pixels would differ under the other rule)\n",
+            rule.describe(),
+            t.rules_differ_on
+        ),
+        None => format!(
+            "ties: the GPU follows neither rule: {} lattice pixels differ from the llvmpipe rule, {} from the top-left rule\n",
+            t.differing_llvmpipe, t.differing_top_left
+        ),
+    });
     for s in &r.scenes {
         out.push_str(&format!(
             "\n{} {}x{}, {}, {} filter, {}:\n",

@@ -5,6 +5,7 @@
 use serde::Serialize;
 
 use super::{CoverageBy, Image, Reference, Rendered, classify};
+use crate::raster::setup::TieRule;
 use crate::raster::{Framebuffer, Interpolation, Texture};
 
 /// One convention or mistake tried.
@@ -21,6 +22,9 @@ pub enum Kind {
     /// Samples at integer pixel coordinates `(x, y)` in image rows (y down) instead of the
     /// centres `(x + 0.5, y + 0.5)`.
     IntegerCentresYDown,
+    /// The other tie rule (top-left for a llvmpipe scene, and back): differs only on centres
+    /// exactly on an edge.
+    OtherTieRule,
     /// Samples at integer pixel coordinates in y-up rows (row 0 at the bottom, then written
     /// out top row first, as a framework with y up does).
     IntegerCentresYUp,
@@ -59,6 +63,9 @@ impl Tried {
                                  camera looking down -z"
                 .to_string(),
             Kind::OtherMode => format!("looks like {} interpolation", mode_words(self.other_mode)),
+            Kind::OtherTieRule => {
+                "looks like the other tie rule for centres exactly on an edge".to_string()
+            }
             Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => {
                 "looks like pixel centres at integer coordinates (x, y) instead of \
                  (x + 0.5, y + 0.5)"
@@ -94,6 +101,7 @@ impl Tried {
             Kind::YFlipped => "looks like y flipped",
             Kind::Rotated180 => "looks rotated by 180 degrees (w of the wrong sign)",
             Kind::OtherMode => "looks like the other interpolation mode",
+            Kind::OtherTieRule => "looks like the other tie rule",
             Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => {
                 "looks like pixel centres at integer coordinates"
             }
@@ -163,6 +171,21 @@ pub fn try_all(
         Kind::OtherMode,
         format!("barylab's {} render", mode_words(other_mode)),
         render(reference.mesh, other_mode)?,
+    );
+    let other_rule = match s.tie_rule {
+        TieRule::Llvmpipe => TieRule::TopLeft,
+        TieRule::TopLeft => TieRule::Llvmpipe,
+    };
+    let with_rule = crate::raster::RenderSettings {
+        tie_rule: other_rule,
+        ..*s
+    };
+    add(
+        Kind::OtherTieRule,
+        format!("barylab's render under {}", other_rule.describe()),
+        crate::raster::render(reference.mesh, reference.texture, &with_rule)
+            .map(|r| Rendered::of(&r.frame))
+            .map_err(|e| e.to_string())?,
     );
     // Sampling at (x, y) instead of (x + 0.5, y + 0.5) is the same as moving the geometry by
     // half a pixel the other way.

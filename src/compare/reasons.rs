@@ -6,6 +6,7 @@
 use super::{CoverageBy, Difference, Reference, rgb_difference};
 use crate::probe::{PixelTrace, Position, Prober, TriangleCoverage};
 use crate::raster::render::Render;
+use crate::raster::setup::TieRule;
 use crate::raster::{Interpolation, NO_TRIANGLE, RenderSettings};
 
 /// What the reasons need: a prober of the scene, barylab's render and the other mode's.
@@ -95,7 +96,12 @@ impl<'a> Context<'a> {
                 continue;
             };
             let kind = kind_words(e.kind);
-            let rule = "the tie rule (llvmpipe's: centres on left and bottom edges are covered)";
+            let rule = match self.reference.settings.tie_rule {
+                TieRule::Llvmpipe => {
+                    "the tie rule (llvmpipe's: left and bottom edges own their centres)"
+                }
+                TieRule::TopLeft => "the tie rule (top-left: left and top edges own their centres)",
+            };
             return match trace.written_by {
                 Some(w) => format!(
                     "centre exactly on edge {} ({kind}) of triangle {}: {rule} gives it to \

@@ -8,8 +8,10 @@ use serde::Serialize;
 
 use super::{GlScene, Gpu, Output, mesh_at_f32};
 use crate::bench::{filter_name, mode_name};
+use crate::raster::setup::TieRule;
 use crate::raster::{
-    ClipMesh, Filter, Interpolation, MeshVertex, NO_TRIANGLE, RenderSettings, Shading, Texture,
+    BuiltinTexture, ClipMesh, Filter, Interpolation, MeshVertex, NO_TRIANGLE, RenderSettings,
+    Shading, Texture,
 };
 
 /// Mismatched pixels listed in a report (all are counted).
@@ -302,4 +304,69 @@ pub fn tie_lattice() -> (ClipMesh, RenderSettings) {
         ..RenderSettings::default()
     };
     (mesh, settings)
+}
+
+/// Which tie rule the GPU's ties follow, from the [`tie_lattice`].
+#[derive(Clone, Debug, Serialize)]
+pub struct TieCheck {
+    /// The rule under which barylab gives every lattice pixel the GPU's triangle, if one does.
+    pub follows: Option<TieRule>,
+    /// Lattice pixels whose owner (or coverage) differs from the GPU's under barylab's
+    /// llvmpipe rule.
+    pub differing_llvmpipe: usize,
+    /// The same under the top-left rule.
+    pub differing_top_left: usize,
+    /// Lattice pixels where the two rules themselves differ (centres exactly on an edge
+    /// whose owner depends on the rule).
+    pub rules_differ_on: usize,
+}
+
+/// Draws the [`tie_lattice`] with the GPU and with barylab under each tie rule, and says which
+/// rule the GPU's owners match.
+pub fn tie_rule(gpu: &mut Gpu) -> Result<TieCheck, String> {
+    let (mesh, settings) = tie_lattice();
+    let mesh = mesh_at_f32(&mesh);
+    let texture = Texture::builtin(BuiltinTexture::Checker);
+    gpu.load(&GlScene::new(
+        &mesh,
+        &texture,
+        settings.width,
+        settings.height,
+        settings.wrap,
+        settings.background,
+    ))?;
+    let ids = gpu.render(
+        Output::TriangleId,
+        Filter::Nearest,
+        Interpolation::Perspective,
+    )?;
+    let owners = |tie_rule| -> Result<Vec<u32>, String> {
+        let s = RenderSettings {
+            tie_rule,
+            ..settings
+        };
+        let r = crate::raster::render(&mesh, &texture, &s).map_err(|e| e.to_string())?;
+        Ok(r.frame
+            .triangle
+            .iter()
+            .map(|&t| if t == NO_TRIANGLE { 0 } else { t + 1 })
+            .collect())
+    };
+    let (lp, tl) = (owners(TieRule::Llvmpipe)?, owners(TieRule::TopLeft)?);
+    let gl: Vec<u32> = ids.iter().map(|b| u32::from_le_bytes(*b)).collect();
+    let differing = |ours: &[u32]| ours.iter().zip(&gl).filter(|(a, b)| a != b).count();
+    let (differing_llvmpipe, differing_top_left) = (differing(&lp), differing(&tl));
+    let follows = if differing_llvmpipe == 0 {
+        Some(TieRule::Llvmpipe)
+    } else if differing_top_left == 0 {
+        Some(TieRule::TopLeft)
+    } else {
+        None
+    };
+    Ok(TieCheck {
+        follows,
+        differing_llvmpipe,
+        differing_top_left,
+        rules_differ_on: lp.iter().zip(&tl).filter(|(a, b)| a != b).count(),
+    })
 }

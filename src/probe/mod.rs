@@ -157,6 +157,8 @@ pub struct CoverageTest {
     pub position: Position,
     /// Whether the fill rule covers the sample.
     pub covered: bool,
+    /// The tie rule that decides a sample exactly on an edge.
+    pub tie_rule: setup::TieRule,
 }
 
 /// Where the sample lies relative to a triangle.
@@ -624,7 +626,7 @@ impl<'a> Prober<'a> {
         let names = (0..mesh.vertices.len()).map(vertex_name).collect();
         let viewport = settings.viewport();
         let triangles: Vec<PreparedTriangle> = (0..mesh.triangles.len() as u32)
-            .map(|i| render::prepare_triangle(&mesh, i, viewport))
+            .map(|i| render::prepare_triangle_with(&mesh, i, viewport, settings.tie_rule))
             .collect();
         let params = render::shade_params(settings, &triangles);
         let form = match scene {
@@ -865,6 +867,7 @@ impl<'a> Prober<'a> {
             edges,
             position,
             covered: s.covers(&e),
+            tie_rule: self.settings.tie_rule,
         }
     }
 

@@ -12,7 +12,7 @@ use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 use super::interpolate::{self, Fragment, Interpolation};
 use super::lanes::{self, LaneShading, Target};
 use super::project::{MAX_IMAGE_SIZE, Viewport, project_vertex};
-use super::setup::{Facing, TriangleSetup, sample_point, setup_triangle};
+use super::setup::{Facing, TieRule, TriangleSetup, sample_point, setup_triangle_with};
 use super::shade::{ShadeParams, Shading, shade};
 use super::texture::{Filter, Texture, Wrap};
 use super::varying::Varyings;
@@ -155,6 +155,8 @@ pub struct RenderSettings {
     pub wireframe: bool,
     pub background: [u8; 4],
     pub rasterizer: Rasterizer,
+    /// Which triangle owns a pixel centre exactly on a shared edge.
+    pub tie_rule: TieRule,
 }
 
 /// The default background: a dark slate grey, opaque.
@@ -172,6 +174,7 @@ impl Default for RenderSettings {
             wireframe: false,
             background: DEFAULT_BACKGROUND,
             rasterizer: Rasterizer::EdgeFunction,
+            tie_rule: TieRule::Llvmpipe,
         }
     }
 }
@@ -256,8 +259,18 @@ pub fn source_vertices(mesh: &ClipMesh, index: u32) -> Option<[ClipVertex; 3]> {
     Some(out)
 }
 
-/// Clips, projects and sets up one source triangle.
+/// Clips, projects and sets up one source triangle (under the default tie rule).
 pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> PreparedTriangle {
+    prepare_triangle_with(mesh, index, viewport, TieRule::default())
+}
+
+/// Like [`prepare_triangle`], with samples exactly on an edge decided by `rule`.
+pub fn prepare_triangle_with(
+    mesh: &ClipMesh,
+    index: u32,
+    viewport: Viewport,
+    rule: TieRule,
+) -> PreparedTriangle {
     let mut out = PreparedTriangle {
         source: index,
         status: TriangleStatus::BadIndex,
@@ -280,7 +293,8 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
     }
     let window: Vec<_> = pv.iter().map(|v| project_vertex(v, viewport)).collect();
     for k in 1..window.len() - 1 {
-        if let Some(s) = setup_triangle([window[0], window[k], window[k + 1]], viewport) {
+        if let Some(s) = setup_triangle_with([window[0], window[k], window[k + 1]], viewport, rule)
+        {
             out.setups.push(s);
         }
     }
@@ -331,7 +345,7 @@ pub fn render_into(
     let n = mesh.triangles.len();
     crate::budget::check_render(w, h, buffers, mesh.vertices.len(), n)?;
     let viewport = settings.viewport();
-    let triangles = prepare_all(mesh, viewport);
+    let triangles = prepare_all_with(mesh, viewport, settings.tie_rule);
     let params = shade_params(settings, &triangles);
     resize(frame, w, h, buffers);
     rasterize_bands(
@@ -349,11 +363,20 @@ pub fn render_into(
 /// Clips, projects and sets up every source triangle, in parallel (rayon's current thread
 /// pool), in submission order.
 pub fn prepare_all(mesh: &ClipMesh, viewport: Viewport) -> Vec<PreparedTriangle> {
+    prepare_all_with(mesh, viewport, TieRule::default())
+}
+
+/// Like [`prepare_all`], with samples exactly on an edge decided by `rule`.
+pub fn prepare_all_with(
+    mesh: &ClipMesh,
+    viewport: Viewport,
+    rule: TieRule,
+) -> Vec<PreparedTriangle> {
     use rayon::prelude::*;
     (0..mesh.triangles.len() as u32)
         .into_par_iter()
         .with_min_len(PREPARE_CHUNK)
-        .map(|i| prepare_triangle(mesh, i, viewport))
+        .map(|i| prepare_triangle_with(mesh, i, viewport, rule))
         .collect()
 }
 
