@@ -6,7 +6,7 @@ use std::path::Path;
 use glam::{DVec4, Vec2, Vec3};
 use serde::Serialize;
 
-use super::{GlScene, Gpu, Output, mesh_at_f32};
+use super::{Gpu, Output, mesh_at_f32};
 use crate::bench::{filter_name, mode_name};
 use crate::raster::setup::TieRule;
 use crate::raster::{
@@ -123,14 +123,7 @@ pub fn check_mesh(
         settings.wireframe = false;
     }
     let mesh = mesh_at_f32(mesh);
-    gpu.load(&GlScene::new(
-        &mesh,
-        texture,
-        settings.width,
-        settings.height,
-        settings.wrap,
-        settings.background,
-    ))?;
+    gpu.load_mesh(&mesh, texture, &settings)?;
     let ours = crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
     let ids = gpu.render(Output::TriangleId, settings.filter, settings.mode)?;
     let colors = gpu.render(output, settings.filter, settings.mode)?;
@@ -327,14 +320,7 @@ pub fn tie_rule(gpu: &mut Gpu) -> Result<TieCheck, String> {
     let (mesh, settings) = tie_lattice();
     let mesh = mesh_at_f32(&mesh);
     let texture = Texture::builtin(BuiltinTexture::Checker);
-    gpu.load(&GlScene::new(
-        &mesh,
-        &texture,
-        settings.width,
-        settings.height,
-        settings.wrap,
-        settings.background,
-    ))?;
+    gpu.load_mesh(&mesh, &texture, &settings)?;
     let ids = gpu.render(
         Output::TriangleId,
         Filter::Nearest,

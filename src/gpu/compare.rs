@@ -135,14 +135,7 @@ pub fn compare_mesh(
     base: &crate::raster::RenderSettings,
 ) -> Result<Vec<SceneComparison>, String> {
     let mesh = mesh_at_f32(mesh);
-    lp.load(&GlScene::new(
-        &mesh,
-        texture,
-        base.width,
-        base.height,
-        base.wrap,
-        base.background,
-    ))?;
+    lp.load_mesh(&mesh, texture, base)?;
     let mut out = Vec::new();
     for (output, shading, filters) in [
         (
@@ -224,14 +217,7 @@ pub fn compare_values(
     base: &crate::raster::RenderSettings,
 ) -> Result<Vec<ValueComparison>, String> {
     let mesh = mesh_at_f32(mesh);
-    lp.load(&GlScene::new(
-        &mesh,
-        texture,
-        base.width,
-        base.height,
-        base.wrap,
-        base.background,
-    ))?;
+    lp.load_mesh(&mesh, texture, base)?;
     let mut out = Vec::new();
     for mode in MODES {
         let settings = crate::raster::RenderSettings { mode, ..*base };

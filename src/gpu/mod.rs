@@ -281,6 +281,24 @@ impl Gpu {
         }
     }
 
+    /// Uploads `mesh` (its clip coordinates rounded to f32) with `texture`, at the settings'
+    /// size, wrap and background: see [`Gpu::load`].
+    pub fn load_mesh(
+        &mut self,
+        mesh: &crate::raster::ClipMesh,
+        texture: &crate::raster::Texture,
+        settings: &crate::raster::RenderSettings,
+    ) -> Result<(), String> {
+        self.load(&GlScene::new(
+            &mesh_at_f32(mesh),
+            texture,
+            settings.width,
+            settings.height,
+            settings.wrap,
+            settings.background,
+        ))
+    }
+
     /// Uploads a scene: vertex and index buffers, the texture (RGBA8, no mipmaps), and a
     /// `width x height` RGBA8 framebuffer with a 32-bit float depth buffer.
     pub fn load(&mut self, scene: &GlScene) -> Result<(), String> {
