@@ -31,7 +31,9 @@ Examples:
   barylab probe assets/scenes/default.json --pixel 400,420
   barylab probe assets/scenes/default.json --pixel 400,420 --mode affine --format markdown > notes.md
   barylab figure assets/scenes/default.json --pixel 400,420 -o fig.svg
-  barylab figure assets/scenes/default.json --size 400x300 --compare side --scale 2 -o fig.png";
+  barylab figure assets/scenes/default.json --size 400x300 --compare side --scale 2 -o fig.png
+  barylab compare assets/scenes/games101-a2.json output.png --background black -o diff.png
+  barylab gpu-check assets/scenes/*.json";
 
 /// barylab: see how a GPU interpolates across a triangle, pixel by pixel.
 #[derive(Parser, Debug)]
@@ -82,10 +84,6 @@ enum Command {
         after_help = "Examples:\n  barylab bench\n  barylab bench assets/scenes/default.json --frames 20 --json"
     )]
     Bench(BenchArgs),
-    /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
-    /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
-    /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
-    /// coverage differs.
     /// Compare an image from another rasterizer (a student's, a screenshot) with barylab's
     /// render of the same scene: coverage, colours, a difference image, and the first
     /// differing pixels each with a reason. Exits 0 when they agree, 1 when they differ.
@@ -93,6 +91,10 @@ enum Command {
         after_help = "Examples:\n  barylab compare assets/scenes/games101-a2.json output.png --background black\n  barylab compare assets/scenes/default.json shot.png -o diff.png --json"
     )]
     Compare(CompareArgs),
+    /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
+    /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
+    /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
+    /// coverage differs.
     #[cfg(feature = "gpu")]
     #[command(
         name = "gpu-check",
