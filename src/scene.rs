@@ -62,6 +62,23 @@ pub const MAX_SUBDIVIDED_TRIANGLES: u64 = 4_000_000;
 
 pub const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
 
+/// The name of mesh vertex `index`, the same in the derivation, the figures and the app: A, B,
+/// C, ..., Z, then `V26`, `V27`, ... (a world quad's corners are A, B, C, D).
+///
+/// ```
+/// use barylab::scene::vertex_name;
+/// assert_eq!(vertex_name(0), "A");
+/// assert_eq!(vertex_name(6), "G");
+/// assert_eq!(vertex_name(25), "Z");
+/// assert_eq!(vertex_name(26), "V26");
+/// ```
+pub fn vertex_name(index: usize) -> String {
+    match u8::try_from(index) {
+        Ok(i) if i < 26 => char::from(b'A' + i).to_string(),
+        _ => format!("V{index}"),
+    }
+}
+
 /// What a file given in place of a scene is, by its extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum InputKind {

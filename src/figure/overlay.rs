@@ -11,6 +11,8 @@
 use glam::DVec2;
 
 use crate::raster::Interpolation;
+/// Vertex names, shared with the derivation: A, B, C, ..., Z, then V26, ...
+pub use crate::scene::vertex_name;
 
 /// sRGB colour with straight (unmultiplied) alpha.
 pub type Rgba = [u8; 4];
@@ -68,15 +70,6 @@ mod text {
     pub const PERSPECTIVE: &str = "PERSPECTIVE-CORRECT";
     pub const DIFFERENCE: &str = "|uv affine − uv perspective| in texels";
     pub const BEHIND: &str = "behind the camera";
-}
-
-/// The name of a mesh vertex: A, B, C, ... then V6, V7, ...
-pub fn vertex_name(index: usize) -> String {
-    const LETTERS: &[u8] = b"ABCDEF";
-    match LETTERS.get(index) {
-        Some(&c) => char::from(c).to_string(),
-        None => format!("V{index}"),
-    }
 }
 
 /// The colour of mesh vertex `index`.
