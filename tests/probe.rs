@@ -103,6 +103,8 @@ scene_tests! {
     default: "default.json",
     far_checker: "far-checker.json",
     front: "front.json",
+    games101_a2: "games101-a2.json",
+    games101_a3_spot: "games101-a3-spot.json",
     orthographic: "orthographic.json",
     seed001_2x2: "rgbw-2x2.json",
     vertex_colors: "vertex-colors.json",
