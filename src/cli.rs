@@ -241,6 +241,19 @@ struct ProbeArgs {
     /// Output format: a worked example as text, Markdown or a LaTeX fragment, or JSON.
     #[arg(long, default_value = "text")]
     format: FormatArg,
+    /// Language of the derivation's prose: en, zh (zh-CN), or auto (the system locale:
+    /// LC_ALL, LC_MESSAGES, LANG). Formulas are the same in every language; LaTeX stays English.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
+}
+
+/// `--lang`: a language tag, or `auto` for the system locale.
+fn parse_lang(s: &str) -> Result<barylab::i18n::Lang, String> {
+    if s.eq_ignore_ascii_case("auto") {
+        Ok(barylab::i18n::Lang::detect())
+    } else {
+        s.parse()
+    }
 }
 
 /// What to draw and how: shared by `render` and `probe`, so a probe describes exactly what

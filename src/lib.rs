@@ -9,6 +9,8 @@
 //! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
 //! - [`files`]: reading only regular files with size caps, atomic writes, paths in messages.
 //! - [`budget`]: the memory budget checked before large allocations.
+//! - [`i18n`]: languages (English, Simplified Chinese), the string catalogues in `locales/`,
+//!   and finding a CJK font.
 //! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
@@ -17,7 +19,11 @@ pub mod bench;
 pub mod budget;
 pub mod figure;
 pub mod files;
+pub mod i18n;
 pub mod model;
 pub mod probe;
 pub mod raster;
 pub mod scene;
+
+// The string catalogues `locales/*.yml`, compiled in (see `i18n`).
+rust_i18n::i18n!("locales", fallback = "en");

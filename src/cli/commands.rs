@@ -191,7 +191,14 @@ pub(super) fn probe(args: &ProbeArgs) -> Result<()> {
     let (x, y) = args.pixel;
     let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
         .with_context(|| barylab::files::shown(&args.input.scene))?;
-    print(&barylab::probe::format::write(&trace, args.format.into()))
+    let format = args.format.into();
+    if format == barylab::probe::format::Format::Latex && args.lang != barylab::i18n::Lang::En {
+        eprintln!(
+            "note: the LaTeX fragment stays English (it compiles with plain pdflatex); for Chinese \
+             use --format markdown, or see docs/probe.md for ctex/xeCJK"
+        );
+    }
+    print(&barylab::probe::format::write_in(&trace, format, args.lang))
 }
 
 pub(super) fn figure(args: &FigureArgs) -> Result<()> {
