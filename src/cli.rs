@@ -142,6 +142,11 @@ struct FigureArgs {
     /// sample dots from 10).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=32))]
     pixel_size: u32,
+    /// Language of the labels: en, zh (zh-CN), or auto (the system locale). Chinese labels
+    /// need a CJK font (Noto Sans CJK SC, Source Han Sans SC, WenQuanYi, ...); without one
+    /// they stay English.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
     /// Background around the image (title strip, margins).
     #[arg(long, default_value = "transparent")]
     background: BackgroundArg,

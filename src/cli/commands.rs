@@ -238,7 +238,16 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         },
         overlay_scale: args.overlay_scale,
     };
-    let fig = Figure::compose(&scene, &texture, &options)
+    let mut lang = args.lang;
+    if lang != barylab::i18n::Lang::En && barylab::i18n::cjk_font().is_none() {
+        eprintln!(
+            "warning: no font with Chinese glyphs found (looked for {}); the figure's labels \
+             are in English",
+            barylab::i18n::CJK_FAMILIES.join(", ")
+        );
+        lang = barylab::i18n::Lang::En;
+    }
+    let fig = Figure::compose_in(&scene, &texture, &options, lang)
         .with_context(|| barylab::files::shown(&args.input.scene))?;
     let bytes = if svg_out {
         svg::to_svg(&fig)?.into_bytes()
