@@ -52,7 +52,7 @@ pub(super) fn depth_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
     if let Some(tz) = dt.distance_true {
         b.eq_note(
             vec![sym(format!("{sname}_true")), EQ, num(tz)],
-            tr!(b, "probe.depth.true"),
+            tr!(b, "probe.depth.seen_true"),
         );
     }
     if let Some(dp) = dt.depth_of_point {
