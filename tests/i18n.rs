@@ -164,3 +164,75 @@ fn languages_parse_and_follow_the_system_locale() {
         Lang::Zh
     );
 }
+
+/// The overlay's English labels (constants the app uses directly) are the catalogue's English
+/// entries, and the Chinese ones come from the catalogue.
+#[test]
+fn figure_labels_match_the_catalogue() {
+    use barylab::figure::overlay::{
+        HandleMark, OverlayInput, Shape, behind_camera_note, build, build_in, mode_label,
+        mode_label_in,
+    };
+    use barylab::raster::Interpolation;
+    assert_eq!(
+        mode_label(Interpolation::Affine),
+        tr(Lang::En, "figure.affine")
+    );
+    assert_eq!(
+        mode_label(Interpolation::Perspective),
+        tr(Lang::En, "figure.perspective")
+    );
+    assert_eq!(
+        mode_label_in(Interpolation::Perspective, Lang::Zh),
+        "透视校正插值"
+    );
+    let handles = vec![HandleMark {
+        index: 1,
+        window: None,
+        w: -1.0,
+        active: false,
+    }];
+    let note = behind_camera_note(&handles).expect("a note");
+    assert!(note.starts_with(&tr(Lang::En, "figure.behind")), "{note}");
+    let input = OverlayInput {
+        size: [100, 80],
+        pixel_size: 1,
+        pixels_per_point: 1.0,
+        mode: None,
+        show_grid: false,
+        handles,
+        hover: None,
+        pin: None,
+        sub_areas: false,
+        wipe: None,
+        color_bar: Some(10.0),
+    };
+    let texts = |lang: Lang| -> Vec<String> {
+        let overlay = if lang == Lang::En {
+            build(&input)
+        } else {
+            build_in(&input, lang)
+        };
+        overlay
+            .shapes
+            .iter()
+            .filter_map(|s| match s {
+                Shape::Text { text, .. } => Some(text.clone()),
+                Shape::ColorBar { title, .. } => Some(title.clone()),
+                _ => None,
+            })
+            .collect()
+    };
+    for lang in Lang::ALL {
+        let texts = texts(lang);
+        for key in ["figure.difference", "figure.texels"] {
+            assert!(texts.contains(&tr(lang, key)), "{lang}: {key} in {texts:?}");
+        }
+        assert!(
+            texts
+                .iter()
+                .any(|t| t.starts_with(&tr(lang, "figure.behind"))),
+            "{lang}: {texts:?}"
+        );
+    }
+}

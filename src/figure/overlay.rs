@@ -65,8 +65,9 @@ pub const TITLE_STRIP: f32 = 44.0;
 pub const GRID_FROM_PIXEL_SIZE: u32 = 6;
 pub const DOTS_FROM_PIXEL_SIZE: u32 = 10;
 
-/// User-facing strings of the overlay, in English (the catalogues' `figure.*` entries, which
-/// [`build_in`] uses for other languages; `tests/i18n.rs` checks that they agree).
+/// User-facing strings of the overlay, in English: the same as the catalogues' `figure.*`
+/// entries, which [`build_in`] uses for other languages (`tests/i18n.rs` checks that the
+/// English entries and these agree, through [`mode_label`] and [`build`]).
 mod text {
     pub const AFFINE: &str = "AFFINE (screen-space)";
     pub const PERSPECTIVE: &str = "PERSPECTIVE-CORRECT";
