@@ -235,6 +235,11 @@ struct FigureArgs {
     /// sample dots from 10).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=32))]
     pixel_size: u32,
+    /// Language of the labels: en, zh (zh-CN), or auto (the system locale). Chinese labels
+    /// need a CJK font (Noto Sans CJK SC, Source Han Sans SC, WenQuanYi, ...); without one
+    /// they stay English.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
     /// Background around the image (title strip, margins).
     #[arg(long, default_value = "transparent")]
     background: BackgroundArg,
@@ -338,6 +343,19 @@ struct ProbeArgs {
     /// Output format: a worked example as text, Markdown or a LaTeX fragment, or JSON.
     #[arg(long, default_value = "text")]
     format: FormatArg,
+    /// Language of the derivation's prose: en, zh (zh-CN), or auto (the system locale:
+    /// LC_ALL, LC_MESSAGES, LANG). Formulas are the same in every language; LaTeX stays English.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
+}
+
+/// `--lang`: a language tag, or `auto` for the system locale.
+fn parse_lang(s: &str) -> Result<barylab::i18n::Lang, String> {
+    if s.eq_ignore_ascii_case("auto") {
+        Ok(barylab::i18n::Lang::detect())
+    } else {
+        s.parse()
+    }
 }
 
 /// What to draw and how: shared by `render` and `probe`, so a probe describes exactly what

@@ -13,6 +13,8 @@
 //! - [`budget`]: the memory budget checked before large allocations.
 //! - `gpu` (feature `gpu`, on by default): the same scene drawn by OpenGL through headless EGL,
 //!   compared with barylab's pixels (`barylab gpu-check`).
+//! - [`i18n`]: languages (English, Simplified Chinese), the string catalogues in `locales/`,
+//!   and finding a CJK font.
 //! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
@@ -24,7 +26,11 @@ pub mod figure;
 pub mod files;
 #[cfg(feature = "gpu")]
 pub mod gpu;
+pub mod i18n;
 pub mod model;
 pub mod probe;
 pub mod raster;
 pub mod scene;
+
+// The string catalogues `locales/*.yml`, compiled in (see `i18n`).
+rust_i18n::i18n!("locales", fallback = "en");

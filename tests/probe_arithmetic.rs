@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
+use barylab::i18n::Lang;
 use barylab::probe::format::{self, Format};
 use barylab::probe::probe;
 use barylab::raster::{Filter, Interpolation, Wrap};
@@ -143,6 +144,46 @@ fn check_arithmetic(text: &str, what: &str) -> usize {
     checked
 }
 
+/// The numeric tokens of a text derivation, in order (the numbers, not the words around them;
+/// a token is a digit run with its decimal point and exponent). "2D" and "3D" are words (the
+/// Chinese text says 二维, 三维), not numbers.
+fn numbers(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let chars: Vec<char> = text.chars().collect();
+    for (i, &c) in chars.iter().enumerate() {
+        let exponent = (c == 'e' || c == '-')
+            && cur
+                .chars()
+                .last()
+                .is_some_and(|p| p.is_ascii_digit() || p == 'e')
+            && chars
+                .get(i + 1)
+                .is_some_and(|n| n.is_ascii_digit() || *n == '-');
+        if c.is_ascii_digit() || (c == '.' && !cur.is_empty()) || (!cur.is_empty() && exponent) {
+            cur.push(c);
+        } else if !cur.is_empty() {
+            let word = c == 'D' && cur.len() == 1;
+            let token = std::mem::take(&mut cur);
+            if !word {
+                out.push(token);
+            }
+        }
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    out
+}
+
+/// The formula lines of a text derivation (indented four spaces; prose has two).
+fn formulas(text: &str) -> String {
+    text.lines()
+        .filter(|l| l.starts_with("    "))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 #[test]
 fn every_printed_computation_checks_by_hand() {
     let cases = [
@@ -166,6 +207,15 @@ fn every_printed_computation_checks_by_hand() {
             let t = probe(&scene, &texture, &settings, (x, y)).expect("probe");
             let text = format::write(&t, Format::Text);
             total += check_arithmetic(&text, &format!("{name} ({x}, {y}) {mode:?}"));
+            // The Chinese derivation: the same arithmetic, the same numbers in the same order.
+            let zh = format::write_in(&t, Format::Text, Lang::Zh);
+            let checked = check_arithmetic(&zh, &format!("zh: {name} ({x}, {y}) {mode:?}"));
+            assert_eq!(checked, check_arithmetic(&text, "en"), "{name} ({x}, {y})");
+            assert_eq!(
+                numbers(&formulas(&zh)),
+                numbers(&formulas(&text)),
+                "{name} ({x}, {y}) {mode:?}"
+            );
         }
     }
     assert!(

@@ -198,7 +198,14 @@ pub(super) fn probe(args: &ProbeArgs) -> Result<()> {
     let (x, y) = args.pixel;
     let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
         .with_context(|| barylab::files::shown(&args.input.scene))?;
-    print(&barylab::probe::format::write(&trace, args.format.into()))
+    let format = args.format.into();
+    if format == barylab::probe::format::Format::Latex && args.lang != barylab::i18n::Lang::En {
+        eprintln!(
+            "note: the LaTeX fragment stays English (it compiles with plain pdflatex); for Chinese \
+             use --format markdown, or see docs/probe.md for ctex/xeCJK"
+        );
+    }
+    print(&barylab::probe::format::write_in(&trace, format, args.lang))
 }
 
 pub(super) fn figure(args: &FigureArgs) -> Result<()> {
@@ -238,7 +245,16 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         },
         overlay_scale: args.overlay_scale,
     };
-    let fig = Figure::compose(&scene, &texture, &options)
+    let mut lang = args.lang;
+    if lang != barylab::i18n::Lang::En && barylab::i18n::cjk_font().is_none() {
+        eprintln!(
+            "warning: no font with Chinese glyphs found (looked for {}); the figure's labels \
+             are in English",
+            barylab::i18n::CJK_FAMILIES.join(", ")
+        );
+        lang = barylab::i18n::Lang::En;
+    }
+    let fig = Figure::compose_in(&scene, &texture, &options, lang)
         .with_context(|| barylab::files::shown(&args.input.scene))?;
     let bytes = if svg_out {
         svg::to_svg(&fig)?.into_bytes()

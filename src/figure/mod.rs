@@ -25,6 +25,7 @@ pub mod png;
 pub mod svg;
 pub mod text;
 
+use crate::i18n::Lang;
 use glam::{DVec2, DVec4};
 use serde::{Deserialize, Serialize};
 
@@ -413,6 +414,8 @@ pub struct Figure {
     pub pinned: Option<PixelTrace>,
     /// The hovered pixel's trace.
     pub hovered: Option<PixelTrace>,
+    /// The labels' language (English when Chinese was asked for but no CJK font is installed).
+    pub lang: Lang,
 }
 
 impl Figure {
@@ -428,6 +431,22 @@ impl Figure {
         texture: &Texture,
         options: &FigureOptions,
     ) -> Result<Figure, FigureError> {
+        Figure::compose_in(scene, texture, options, Lang::En)
+    }
+
+    /// [`Figure::compose`] with the labels in `lang`. Chinese labels need a system CJK font
+    /// ([`crate::i18n::cjk_font`]); without one the labels stay English (never boxes), and
+    /// [`Figure::lang`] says which language was used.
+    pub fn compose_in(
+        scene: &Scene,
+        texture: &Texture,
+        options: &FigureOptions,
+        lang: Lang,
+    ) -> Result<Figure, FigureError> {
+        let lang = match lang {
+            Lang::Zh if crate::i18n::cjk_font().is_none() => Lang::En,
+            l => l,
+        };
         let o = options;
         if !SCALES.contains(&o.scale) {
             return Err(FigureError::Scale(o.scale));
@@ -579,7 +598,7 @@ impl Figure {
                 content,
                 origin,
                 raster,
-                overlay: overlay::build(&input).scaled(k),
+                overlay: overlay::build_in(&input, lang).scaled(k),
                 clip,
             });
         }
@@ -593,6 +612,7 @@ impl Figure {
             views,
             pinned,
             hovered,
+            lang,
         })
     }
 }

@@ -10,6 +10,7 @@
 
 use glam::DVec2;
 
+use crate::i18n::{Lang, tr};
 use crate::raster::Interpolation;
 /// Vertex names, shared with the derivation: A, B, C, ..., Z, then V26, ...
 pub use crate::scene::vertex_name;
@@ -64,7 +65,9 @@ pub const TITLE_STRIP: f32 = 44.0;
 pub const GRID_FROM_PIXEL_SIZE: u32 = 6;
 pub const DOTS_FROM_PIXEL_SIZE: u32 = 10;
 
-/// User-facing strings of the overlay.
+/// User-facing strings of the overlay, in English: the same as the catalogues' `figure.*`
+/// entries, which [`build_in`] uses for other languages (`tests/i18n.rs` checks that the
+/// English entries and these agree, through [`mode_label`] and [`build`]).
 mod text {
     pub const AFFINE: &str = "AFFINE (screen-space)";
     pub const PERSPECTIVE: &str = "PERSPECTIVE-CORRECT";
@@ -330,6 +333,24 @@ pub fn mode_label(mode: Interpolation) -> &'static str {
     }
 }
 
+/// The mode's badge text in `lang`.
+pub fn mode_label_in(mode: Interpolation, lang: Lang) -> String {
+    match (lang, mode) {
+        (Lang::En, _) => mode_label(mode).to_string(),
+        (_, Interpolation::Affine) => tr(lang, "figure.affine"),
+        (_, Interpolation::Perspective) => tr(lang, "figure.perspective"),
+    }
+}
+
+/// The overlay's other words in `lang`: the difference view's title, the colour bar's unit,
+/// "behind the camera".
+fn words(lang: Lang) -> [String; 3] {
+    match lang {
+        Lang::En => [text::DIFFERENCE, "texels", text::BEHIND].map(str::to_string),
+        _ => ["figure.difference", "figure.texels", "figure.behind"].map(|k| tr(lang, k)),
+    }
+}
+
 fn with_alpha(c: Rgba, a: u8) -> Rgba {
     [c[0], c[1], c[2], a]
 }
@@ -338,8 +359,15 @@ fn centre_of(pixel: [u32; 2]) -> DVec2 {
     DVec2::new(f64::from(pixel[0]) + 0.5, f64::from(pixel[1]) + 0.5)
 }
 
-/// Builds the overlay of one view.
+/// Builds the overlay of one view, with English labels.
 pub fn build(input: &OverlayInput) -> Overlay {
+    build_in(input, Lang::En)
+}
+
+/// Builds the overlay of one view with its labels in `lang` (the caller makes sure a font
+/// with the language's glyphs is there: see [`crate::i18n::cjk_font`]).
+pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
+    let [difference, texels, behind] = words(lang);
     let mut shapes = Vec::new();
     let [w, h] = input.size;
     let (wf, hf) = (f64::from(w), f64::from(h));
@@ -380,7 +408,7 @@ pub fn build(input: &OverlayInput) -> Overlay {
                 at: DVec2::new(x, 0.0),
                 offset: [dx, -TITLE_GAP],
                 anchor,
-                text: mode_label(mode).to_string(),
+                text: mode_label_in(mode, lang),
                 size: TEXT_BADGE,
                 color: LABEL_TEXT,
                 background: Some(LABEL_BG),
@@ -391,7 +419,7 @@ pub fn build(input: &OverlayInput) -> Overlay {
             at: DVec2::ZERO,
             offset: [0.0, -TITLE_GAP],
             anchor: Anchor::LeftBottom,
-            text: mode_label(mode).to_string(),
+            text: mode_label_in(mode, lang),
             size: TEXT_BADGE,
             color: LABEL_TEXT,
             background: Some(LABEL_BG),
@@ -403,7 +431,7 @@ pub fn build(input: &OverlayInput) -> Overlay {
             at: DVec2::ZERO,
             offset: [0.0, -TITLE_GAP],
             anchor: Anchor::LeftBottom,
-            text: text::DIFFERENCE.to_string(),
+            text: difference,
             size: TEXT_BADGE,
             color: LABEL_TEXT,
             background: Some(LABEL_BG),
@@ -426,7 +454,7 @@ pub fn build(input: &OverlayInput) -> Overlay {
             ],
             colors,
             labels,
-            title: "texels".to_string(),
+            title: texels,
         });
     }
 
@@ -451,7 +479,7 @@ pub fn build(input: &OverlayInput) -> Overlay {
     for handle in &input.handles {
         handle_shapes(&mut shapes, handle, centre);
     }
-    if let Some(note) = behind_camera_note(&input.handles) {
+    if let Some(note) = behind_note(&input.handles, &behind) {
         shapes.push(Shape::Text {
             at: DVec2::new(0.0, hf),
             offset: [10.0, -10.0],
@@ -632,12 +660,16 @@ pub fn format_w(w: f64) -> String {
 
 /// Labels for vertices behind the camera, listed in a corner of the view.
 pub fn behind_camera_note(handles: &[HandleMark]) -> Option<String> {
+    behind_note(handles, text::BEHIND)
+}
+
+fn behind_note(handles: &[HandleMark], behind: &str) -> Option<String> {
     let names: Vec<String> = handles
         .iter()
         .filter(|h| h.window.is_none())
         .map(|h| format!("{} (w = {})", vertex_name(h.index), format_w(h.w)))
         .collect();
-    (!names.is_empty()).then(|| format!("{}: {}", text::BEHIND, names.join(", ")))
+    (!names.is_empty()).then(|| format!("{behind}: {}", names.join(", ")))
 }
 
 #[cfg(test)]

@@ -10,23 +10,41 @@ use resvg::usvg;
 use super::svg::{self, Layers};
 use super::text::FONT_BYTES;
 use super::{Background, Figure, FigureError};
+use crate::i18n::Lang;
 
-/// The fonts resvg may use: only the overlay font (no system fonts are scanned).
-fn fonts() -> Arc<usvg::fontdb::Database> {
+/// The fonts resvg may use: only the overlay font (no system fonts are scanned), and for
+/// Chinese labels the system's CJK font ([`crate::i18n::cjk_font`]) as well.
+fn fonts(lang: Lang) -> Arc<usvg::fontdb::Database> {
     static DB: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
-    DB.get_or_init(|| {
+    static CJK: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
+    let overlay_only = || {
         let mut db = usvg::fontdb::Database::new();
         db.load_font_data(FONT_BYTES.to_vec());
         db.set_sans_serif_family(super::text::FONT_FAMILY);
-        Arc::new(db)
-    })
-    .clone()
+        db
+    };
+    match (lang, crate::i18n::cjk_font()) {
+        (Lang::Zh, Some(cjk)) => CJK
+            .get_or_init(|| {
+                let mut db = overlay_only();
+                db.load_font_data(cjk.data.as_ref().clone());
+                Arc::new(db)
+            })
+            .clone(),
+        _ => DB.get_or_init(|| Arc::new(overlay_only())).clone(),
+    }
 }
 
 /// Options for parsing the figure's SVG with the overlay font.
 pub fn svg_options() -> usvg::Options<'static> {
+    svg_options_in(Lang::En)
+}
+
+/// Options for parsing the figure's SVG with the overlay font and, for `lang` Chinese, the
+/// CJK font as the fallback for the characters the overlay font lacks.
+pub fn svg_options_in(lang: Lang) -> usvg::Options<'static> {
     usvg::Options {
-        fontdb: fonts(),
+        fontdb: fonts(lang),
         font_family: super::text::FONT_FAMILY.to_string(),
         ..usvg::Options::default()
     }
@@ -52,7 +70,7 @@ pub fn rasterize(figure: &Figure) -> Result<image::RgbaImage, FigureError> {
         );
     }
     let overlay = svg::document(figure, Layers::OVERLAYS)?;
-    let tree = usvg::Tree::from_str(&overlay, &svg_options())
+    let tree = usvg::Tree::from_str(&overlay, &svg_options_in(figure.lang))
         .map_err(|e| FigureError::Draw(format!("overlay SVG: {e}")))?;
     // The document's width and height are the PNG's pixels and its viewBox the points: usvg
     // already maps points to pixels.

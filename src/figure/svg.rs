@@ -55,6 +55,25 @@ pub fn to_svg(figure: &Figure) -> Result<String, FigureError> {
 }
 
 /// The figure's SVG document with the chosen layers.
+/// The `font-family` list of the overlays: the overlay font, then (for Chinese labels) the
+/// CJK families a viewer may have ([`crate::i18n::CJK_FAMILIES`]), then `sans-serif`.
+pub fn font_families(lang: crate::i18n::Lang) -> String {
+    let mut families = vec![FONT_FAMILY.to_string()];
+    if lang != crate::i18n::Lang::En {
+        if let Some(found) = crate::i18n::cjk_font() {
+            families.push(format!("'{}'", found.family));
+        }
+        for f in crate::i18n::CJK_FAMILIES {
+            let quoted = format!("'{f}'");
+            if !families.contains(&quoted) {
+                families.push(quoted);
+            }
+        }
+    }
+    families.push("sans-serif".to_string());
+    families.join(", ")
+}
+
 pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> {
     let [w, h] = figure.size;
     let [pw, ph] = figure.pixel_dimensions();
@@ -97,7 +116,8 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
         if layers.overlays {
             let _ = writeln!(
                 s,
-                r#"<g clip-path="url(#view{i})" font-family="{FONT_FAMILY}, sans-serif" font-weight="{FONT_WEIGHT}">"#
+                r#"<g clip-path="url(#view{i})" font-family="{}" font-weight="{FONT_WEIGHT}">"#,
+                font_families(figure.lang)
             );
             let t = Transform {
                 origin: [f64::from(v.origin[0]), f64::from(v.origin[1])],

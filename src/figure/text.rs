@@ -29,6 +29,34 @@ fn font() -> Option<&'static FontRef<'static>> {
         .as_ref()
 }
 
+/// The system's CJK font ([`crate::i18n::cjk_font`]), for the characters the overlay font
+/// lacks (Chinese labels); SVG renderers fall back the same way.
+fn cjk() -> Option<&'static FontRef<'static>> {
+    static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();
+    FONT.get_or_init(|| {
+        let f = crate::i18n::cjk_font()?;
+        FontRef::try_from_slice_and_index(f.data.as_slice(), f.index).ok()
+    })
+    .as_ref()
+}
+
+/// The advance of `c` at font size `size` in the CJK font, when the overlay font has no glyph
+/// for it and a CJK font is installed.
+fn cjk_advance(c: char, size: f32) -> Option<f32> {
+    let font = cjk()?;
+    let id = font.glyph_id(c);
+    if id.0 == 0 {
+        return None;
+    }
+    // ab_glyph scales by the line height: this scale makes one em `size` points, as for the
+    // overlay font.
+    let units = font.units_per_em().unwrap_or(1000.0);
+    Some(
+        font.as_scaled(size * font.height_unscaled() / units)
+            .h_advance(id),
+    )
+}
+
 /// Size of one line of text at font size `size` (points, the em size as in egui and SVG):
 /// width = sum of the glyph advances (with kerning), height = ascent - descent + line gap.
 /// Also returns the ascent (the baseline's distance below the top).
@@ -51,6 +79,13 @@ pub fn measure(text: &str, size: f32) -> ([f32; 2], f32) {
     let mut previous = None;
     for c in text.chars() {
         let id = scaled.glyph_id(c);
+        if id.0 == 0
+            && let Some(advance) = cjk_advance(c, size)
+        {
+            width += advance;
+            previous = None;
+            continue;
+        }
         if let Some(p) = previous {
             width += scaled.kern(p, id);
         }

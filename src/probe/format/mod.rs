@@ -8,7 +8,8 @@
 //! Layout: `numbers` formats numbers, `model` is the document model, `text`,
 //! `markdown` and `latex` render it, and `sections/` builds the derivation, one file per
 //! step; all user-facing words of the derivation are there. The formatter computes nothing:
-//! every number it prints is a field of the trace.
+//! every number it prints is a field of the trace. The words come from the catalogues
+//! `locales/*.yml` ([`crate::i18n`]): [`document_in`] and [`write_in`] take the language.
 
 mod latex;
 mod markdown;
@@ -21,9 +22,10 @@ mod text;
 
 pub use model::{Document, Inline, Item, M, Op, Section};
 pub use numbers::{OPERAND_DIGITS, SIGNIFICANT_DIGITS, fmt_digits, fmt_number};
-pub use sections::document;
+pub use sections::{document, document_in, filter_name, mode_name, shading_name, wrap_name};
 
 use super::PixelTrace;
+use crate::i18n::Lang;
 
 /// Output formats of `barylab probe`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,11 +40,17 @@ pub enum Format {
     Json,
 }
 
-/// Writes a trace in the given format.
+/// Writes a trace in the given format, in English.
 pub fn write(trace: &PixelTrace, format: Format) -> String {
+    write_in(trace, format, Lang::En)
+}
+
+/// Writes a trace in the given format with the prose in `lang` (text and Markdown; LaTeX is
+/// always English, for a plain pdflatex document, and JSON has no prose).
+pub fn write_in(trace: &PixelTrace, format: Format, lang: Lang) -> String {
     match format {
-        Format::Text => document(trace).to_text(),
-        Format::Markdown => document(trace).to_markdown(),
+        Format::Text => document_in(trace, lang).to_text(),
+        Format::Markdown => document_in(trace, lang).to_markdown(),
         Format::Latex => document(trace).to_latex(),
         Format::Json => to_json(trace),
     }

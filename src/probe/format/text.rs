@@ -370,12 +370,29 @@ impl Document {
     pub fn to_text(&self) -> String {
         let mut out = String::new();
         let _ = writeln!(out, "{}", self.title);
-        let _ = writeln!(out, "{}", "=".repeat(self.title.chars().count()));
+        let _ = writeln!(out, "{}", "=".repeat(display_width(&self.title)));
         for sec in &self.sections {
             let _ = writeln!(out, "\n{}", sec.title);
-            let _ = writeln!(out, "{}", "-".repeat(sec.title.chars().count()));
+            let _ = writeln!(out, "{}", "-".repeat(display_width(&sec.title)));
             items_to_text(&sec.items, &mut out);
         }
         out
     }
+}
+
+/// Terminal columns of a line: wide (CJK) characters and full-width punctuation take two, so a
+/// Chinese title's underline is as long as the title.
+fn display_width(s: &str) -> usize {
+    s.chars()
+        .map(|c| match c {
+            '\u{1100}'..='\u{115F}'
+            | '\u{2E80}'..='\u{A4CF}'
+            | '\u{AC00}'..='\u{D7A3}'
+            | '\u{F900}'..='\u{FAFF}'
+            | '\u{FE30}'..='\u{FE4F}'
+            | '\u{FF00}'..='\u{FF60}'
+            | '\u{FFE0}'..='\u{FFE6}' => 2,
+            _ => 1,
+        })
+        .sum()
 }

@@ -3,19 +3,21 @@
 use super::*;
 
 /// How a wrap mode maps a texel index into `0..size` (in words, for the nearest line).
-fn wrap_rule(wrap: Wrap, a: &AttributeTrace) -> String {
+fn wrap_rule(b: &Builder, wrap: Wrap, a: &AttributeTrace) -> String {
     let [w, h] = a.texture_size;
     let [last_i, last_j] = a.last_texel;
     match wrap {
-        Wrap::Repeat => format!("repeat, i mod {w}, j mod {h}"),
-        Wrap::MirroredRepeat => format!("mirrored repeat over {w}x{h}"),
-        Wrap::ClampToEdge => format!("clamp to 0..{last_i}, 0..{last_j}"),
+        Wrap::Repeat => tr!(b, "probe.attribute.wrap_repeat", w = w, h = h),
+        Wrap::MirroredRepeat => tr!(b, "probe.attribute.wrap_mirrored", w = w, h = h),
+        Wrap::ClampToEdge => tr!(b, "probe.attribute.wrap_clamp", i = last_i, j = last_j),
     }
 }
 
 /// One way's texture lookup: uv, the texels read (`rule` says how the wrap mode maps an
 /// index), the colour.
+#[allow(clippy::too_many_arguments)]
 fn taps_line(
+    b: &Builder,
     label: &str,
     uv: [f32; 2],
     texel: [f64; 2],
@@ -28,7 +30,7 @@ fn taps_line(
     match filter {
         Filter::Nearest => {
             l.extend([
-                txt("texel "),
+                txt(tr!(b, "probe.attribute.texel")),
                 M::Tuple(vec![
                     vec![sym("floor"), grp(num(texel[0]))],
                     vec![sym("floor"), grp(num(texel[1]))],
@@ -75,7 +77,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
     };
     let n = raster_names(d);
     let r = d.screen.rasterizer;
-    b.section("Texture coordinate and colour, both ways");
+    b.section(tr!(b, "probe.attribute.title"));
     b.eq(listing((0..3).map(|k| {
         vec![sym(format!("uv_{}", n[k])), EQ, tup32(&a.uv_vertices[k])]
     })));
@@ -88,8 +90,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
                     tup32(&a.uv_vertices_affine[k]),
                 ]
             })),
-            "for noperspective: at a vertex the clipper made, OpenGL interpolates along the \
-             cut edge with the screen-space fraction, so affine uv stays linear on screen",
+            tr!(b, "probe.attribute.noperspective"),
         );
     }
     let uvs: Vec<String> = n.iter().map(|x| format!("uv_{x}")).collect();
@@ -101,7 +102,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         a.uv_vertices_affine.iter().map(|u| tup32(u)).collect(),
     ));
     l.extend([EQ, tup32(&a.uv_affine)]);
-    b.eq_note(l, "screen weights: wrong under perspective");
+    b.eq_note(l, tr!(b, "probe.attribute.wrong"));
     if let Some(p) = &d.perspective {
         let mut l = vec![sym("uv_persp"), EQ];
         l.extend(weighted_sym(&CORRECT, &uvs));
@@ -111,7 +112,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
             a.uv_vertices.iter().map(|u| tup32(u)).collect(),
         ));
         l.extend([EQ, tup32(&a.uv_perspective)]);
-        b.eq_note(l, "perspective-correct");
+        b.eq_note(l, tr!(b, "probe.attribute.correct"));
         let mut inner = Vec::new();
         for k in 0..3 {
             if k > 0 {
@@ -122,10 +123,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
                 sym(format!("W_{}", n[k])),
             ));
         }
-        b.para(vec![t(
-            "The same by the OpenGL / GAMES101 form, interpolating uv/W and 1/W linearly and \
-             dividing:",
-        )]);
+        b.para(vec![t(tr!(b, "probe.attribute.games101"))]);
         b.eq(vec![
             sym("uv_persp"),
             EQ,
@@ -137,14 +135,16 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         ]);
     }
     let [tw, th] = a.texture_size;
-    b.para(vec![
-        t(format!("Texel coordinates: uv times the texture size {tw} x {th} (texel row 0 is the bottom, v = 0):")),
-    ]);
+    b.para(vec![t(tr!(b, "probe.attribute.texels", w = tw, h = th))]);
+    let (affine, perspective) = (
+        tr!(b, "probe.attribute.affine"),
+        tr!(b, "probe.attribute.perspective"),
+    );
     b.eq(vec![
-        txt("affine "),
+        txt(affine.clone()),
         tup(&a.texel_affine),
         SEP,
-        txt("perspective "),
+        txt(perspective.clone()),
         tup(&a.texel_perspective),
         SEP,
         sym("Delta"),
@@ -154,17 +154,12 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         M::Abs(vec![sym("Delta")]),
         EQ,
         num(a.texel_distance),
-        txt(" texels"),
+        txt(tr!(b, "probe.attribute.texels_unit")),
     ]);
     let filter = trace.settings.filter;
     if let Some(tri) = &a.trilinear {
         b.para(vec![
-            t(format!(
-                "Trilinear filtering: the level of detail comes from the uv differences across \
-                 the pixel's 2x2 quad (as GPUs compute derivatives), in texels of level 0, and \
-                 the texture has {} mipmap levels: ",
-                tri.levels
-            )),
+            t(tr!(b, "probe.attribute.trilinear", levels = tri.levels)),
             m(vec![
                 sym("lambda"),
                 EQ,
@@ -177,7 +172,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
                     ]),
                 ]),
             ]),
-            t("."),
+            t(tr!(b, "probe.period")),
         ]);
         b.eq(vec![
             sym("lambda_affine"),
@@ -189,24 +184,21 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
             num(f64::from(tri.lod_perspective)),
         ]);
     }
-    b.text(format!(
-        "The {} filter reads{}:",
-        filter_name(filter),
-        match filter {
-            Filter::Nearest => " the texel (floor(u W), floor(v H))",
-            Filter::Bilinear => {
-                " the 2x2 texels (i, j) around (u W - 1/2, v H - 1/2), weighted by the fractions; \
-                 the colour is the weighted sum"
-            }
-            Filter::Trilinear => {
-                " 2x2 texels (i, j, level) bilinearly in levels floor(lambda) and \
-                 floor(lambda) + 1 (level 0 alone when lambda <= 0), blended by frac(lambda)"
-            }
-        }
+    let what = match filter {
+        Filter::Nearest => tr!(b, "probe.attribute.reads_nearest"),
+        Filter::Bilinear => tr!(b, "probe.attribute.reads_bilinear"),
+        Filter::Trilinear => tr!(b, "probe.attribute.reads_trilinear"),
+    };
+    b.text(tr!(
+        b,
+        "probe.attribute.filter_reads",
+        filter = filter_name(b.lang, filter),
+        what = what
     ));
-    let rule = wrap_rule(trace.settings.wrap, a);
+    let rule = wrap_rule(b, trace.settings.wrap, a);
     b.eq(taps_line(
-        "affine ",
+        b,
+        &affine,
         a.uv_affine,
         a.texel_affine,
         &a.taps_affine,
@@ -215,7 +207,8 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         &rule,
     ));
     b.eq(taps_line(
-        "perspective ",
+        b,
+        &perspective,
         a.uv_perspective,
         a.texel_perspective,
         &a.taps_perspective,
@@ -231,10 +224,10 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         ]
     })));
     b.eq(vec![
-        txt("vertex colour: affine "),
+        txt(tr!(b, "probe.attribute.vertex_colour")),
         tup32(&a.vertex_color_affine),
         SEP,
-        txt("perspective "),
+        txt(perspective),
         tup32(&a.vertex_color_perspective),
     ]);
 }

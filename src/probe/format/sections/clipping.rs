@@ -6,22 +6,20 @@ pub(super) fn clipping_section(b: &mut Builder, d: &TriangleTrace) {
     let Some(c) = &d.clipping else {
         return;
     };
-    b.section("Clipping");
-    let planes: Vec<&str> = c.planes.iter().map(|p| plane_name(*p)).collect();
-    b.text(format!(
-        "The triangle crosses {}, so the clipper (Sutherland-Hodgman, in clip space) cut it \
-         into a polygon of {} vertices, drawn as a fan of triangles. A new vertex on edge UV \
-         is U + k (V - U) with the same k for every attribute, including its weights lambda \
-         with respect to the source triangle.",
-        planes.join(" and "),
-        c.polygon.len()
+    b.section(tr!(b, "probe.clipping.title"));
+    let planes: Vec<String> = c.planes.iter().map(|p| plane_name(b, *p)).collect();
+    b.text(tr!(
+        b,
+        "probe.clipping.intro",
+        planes = planes.join(&tr!(b, "probe.clipping.and")),
+        count = c.polygon.len()
     ));
     let src: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
     for p in &c.polygon {
         match p.source_vertex {
             Some(_) => b.eq_note(
                 vec![sym(p.name.clone()), EQ, tup(&p.clip)],
-                "a source vertex, kept",
+                tr!(b, "probe.clipping.kept"),
             ),
             None => b.eq_note(
                 vec![
@@ -33,7 +31,7 @@ pub(super) fn clipping_section(b: &mut Builder, d: &TriangleTrace) {
                     EQ,
                     tup32(&p.source_weights),
                 ],
-                "made by the clipper",
+                tr!(b, "probe.clipping.made"),
             ),
         }
     }
@@ -42,18 +40,16 @@ pub(super) fn clipping_section(b: &mut Builder, d: &TriangleTrace) {
         .iter()
         .map(|&k| c.polygon.get(k).map_or("?", |p| p.name.as_str()))
         .collect();
-    b.text(format!(
-        "The pixel is in fan triangle ({}). Each of its vertices carries its weights with \
-         respect to the source triangle {} as a varying; interpolating them gives the weights \
-         of {} at the pixel. The screen-space formulas below apply to the fan triangle{}.",
-        fan.join(", "),
-        src.join(", "),
-        src.join(", "),
-        if d.vertex_behind_camera {
-            ": the source triangle has a vertex with w <= 0, which has no position on the \
-             screen, so its own screen-space weights do not exist"
-        } else {
-            ""
-        }
+    let behind = if d.vertex_behind_camera {
+        tr!(b, "probe.clipping.behind")
+    } else {
+        String::new()
+    };
+    b.text(tr!(
+        b,
+        "probe.clipping.fan",
+        fan = fan.join(", "),
+        src = src.join(", "),
+        behind = behind
     ));
 }

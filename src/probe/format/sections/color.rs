@@ -3,82 +3,93 @@
 use super::*;
 
 pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
-    b.section("The colour written");
+    b.section(tr!(b, "probe.color.title"));
     let st = &trace.settings;
+    let lang = b.lang;
     let Some(d) = &trace.detail else {
         b.eq_note(
-            vec![txt(format!(
-                "pixel ({}, {}) = {}",
-                trace.pixel[0],
-                trace.pixel[1],
-                rgba(trace.color)
+            vec![txt(tr!(
+                b,
+                "probe.color.pixel",
+                x = trace.pixel[0],
+                y = trace.pixel[1],
+                rgba = rgba(trace.color)
             ))],
-            "background",
+            tr!(b, "probe.color.background"),
         );
         return;
     };
     if let Some(sh) = &d.shade {
         if let (Some(dist), Some(width)) = (sh.edge_distance_px, sh.wire_width_px) {
             b.para(vec![
-                t("Wireframe: distance to the nearest source edge, smallest weight over its screen gradient: "),
+                t(tr!(b, "probe.color.wireframe_before")),
                 m1(num(dist)),
-                t(format!(
-                    " px; lines are drawn below {} px{}.",
-                    fmt_number(width),
-                    if sh.wire { ", so this is a line pixel" } else { "" }
+                t(tr!(
+                    b,
+                    "probe.color.wireframe_after",
+                    width = fmt_number(width),
+                    line = if sh.wire {
+                        tr!(b, "probe.color.line_pixel")
+                    } else {
+                        String::new()
+                    }
                 )),
             ]);
         }
         let how = match st.shading {
-            Shading::Texture => format!(
-                "the texture sampled at uv_{} with the {} filter, times 255, rounded",
-                if st.mode == Interpolation::Affine {
+            Shading::Texture => tr!(
+                b,
+                "probe.color.texture",
+                uv = if st.mode == Interpolation::Affine {
                     "affine"
                 } else {
                     "persp"
                 },
-                filter_name(st.filter)
+                filter = filter_name(lang, st.filter)
             ),
-            Shading::VertexColor => format!(
-                "the vertex colour interpolated {}, times 255, rounded",
-                if st.mode == Interpolation::Affine {
-                    "affinely"
+            Shading::VertexColor => tr!(
+                b,
+                "probe.color.vertex",
+                how = if st.mode == Interpolation::Affine {
+                    tr!(b, "probe.color.affinely")
                 } else {
-                    "perspective-correctly"
+                    tr!(b, "probe.color.perspective_correctly")
                 }
             ),
-            Shading::Barycentric => format!(
-                "the source triangle's weights ({}) as red, green, blue, times 255, rounded",
-                if st.mode == Interpolation::Affine {
-                    "screen"
+            Shading::Barycentric => tr!(
+                b,
+                "probe.color.barycentric",
+                which = if st.mode == Interpolation::Affine {
+                    tr!(b, "probe.color.screen")
                 } else {
-                    "perspective-correct"
+                    tr!(b, "probe.color.perspective_correct")
                 }
             ),
-            Shading::Depth => "d_P as grey between the nearest (black) and farthest (white) \
-                               drawn vertex depth"
-                .to_string(),
+            Shading::Depth => tr!(b, "probe.color.depth"),
         };
         if d.writes_pixel {
-            b.text(format!("Shading: {how}."));
+            b.text(tr!(b, "probe.color.shading", how = how));
         } else {
-            b.text(format!(
-                "If the triangle covered the pixel, the shading ({how}) would give {}.",
-                rgba(sh.color)
+            b.text(tr!(
+                b,
+                "probe.color.would",
+                how = how,
+                rgba = rgba(sh.color)
             ));
         }
     }
     b.eq_note(
-        vec![txt(format!(
-            "framebuffer({}, {}) = {}",
-            trace.pixel[0],
-            trace.pixel[1],
-            rgba(trace.color)
+        vec![txt(tr!(
+            b,
+            "probe.color.framebuffer",
+            x = trace.pixel[0],
+            y = trace.pixel[1],
+            rgba = rgba(trace.color)
         ))],
         if trace.written_by.is_some() {
-            "the rendered pixel"
+            tr!(b, "probe.color.rendered")
         } else {
-            "background: no triangle covers it"
+            tr!(b, "probe.color.uncovered")
         },
     );
 }

@@ -13,51 +13,62 @@ fn edge_values_eq(test: &CoverageTest) -> Vec<M> {
     v
 }
 
-fn coverage_reason(test: &CoverageTest) -> String {
+fn coverage_reason(b: &Builder, test: &CoverageTest) -> String {
     let neg: Vec<&EdgeTest> = test.edges.iter().filter(|e| e.value < 0).collect();
     let zero: Vec<&EdgeTest> = test.edges.iter().filter(|e| e.value == 0).collect();
     match test.position {
-        Position::Inside => "All three are positive: the sample is inside, covered.".into(),
+        Position::Inside => tr!(b, "probe.coverage.inside"),
         Position::Outside => {
             let list: Vec<String> = neg.iter().map(|e| format!("E_{} < 0", e.name)).collect();
             let edges: Vec<String> = neg.iter().map(|e| e.name.clone()).collect();
-            format!(
-                "{}: the sample is outside edge{} {}, not covered.",
-                list.join(" and "),
-                if neg.len() > 1 { "s" } else { "" },
-                edges.join(" and ")
-            )
+            let list = list.join(&tr!(b, "probe.coverage.and_conditions"));
+            let edges = edges.join(&tr!(b, "probe.coverage.and_edges"));
+            if neg.len() > 1 {
+                tr!(b, "probe.coverage.outside_many", list = list, edges = edges)
+            } else {
+                tr!(b, "probe.coverage.outside_one", list = list, edges = edges)
+            }
         }
         Position::OnEdge => {
             let parts: Vec<String> = zero
                 .iter()
                 .map(|e| {
-                    format!(
-                        "E_{} = 0: on edge {}, {}",
-                        e.name,
-                        e.name,
-                        edge_kind_name(e.kind)
+                    tr!(
+                        b,
+                        "probe.coverage.on_edge",
+                        edge = e.name,
+                        kind = edge_kind_name(b, e.kind)
                     )
                 })
                 .collect();
-            let (covering, leaving) = match test.tie_rule {
-                TieRule::Llvmpipe => ("left and bottom", "top and right"),
-                TieRule::TopLeft => ("left and top", "bottom and right"),
-            };
-            let rule = match test.tie_rule {
-                TieRule::Llvmpipe => "The tie rule (llvmpipe's, as OpenGL on Mesa)",
-                TieRule::TopLeft => "The tie rule (top-left, as Direct3D and Vulkan state it)",
+            let parts = parts.join(&tr!(b, "probe.coverage.parts_sep"));
+            let (rule, covering, leaving) = match test.tie_rule {
+                TieRule::Llvmpipe => (
+                    tr!(b, "probe.coverage.rule_llvmpipe"),
+                    tr!(b, "probe.coverage.edges_left_bottom"),
+                    tr!(b, "probe.coverage.edges_top_right"),
+                ),
+                TieRule::TopLeft => (
+                    tr!(b, "probe.coverage.rule_top_left"),
+                    tr!(b, "probe.coverage.edges_left_top"),
+                    tr!(b, "probe.coverage.edges_bottom_right"),
+                ),
             };
             if test.covered {
-                format!(
-                    "{}. {rule} covers samples on {covering} edges: covered.",
-                    parts.join("; ")
+                tr!(
+                    b,
+                    "probe.coverage.fill_covered",
+                    parts = parts,
+                    rule = rule,
+                    edges = covering
                 )
             } else {
-                format!(
-                    "{}. {rule} leaves samples on {leaving} edges to the triangle \
-                     on the other side: not covered here.",
-                    parts.join("; ")
+                tr!(
+                    b,
+                    "probe.coverage.fill_not_covered",
+                    parts = parts,
+                    rule = rule,
+                    edges = leaving
                 )
             }
         }
@@ -65,9 +76,9 @@ fn coverage_reason(test: &CoverageTest) -> String {
 }
 
 pub(super) fn coverage_section(b: &mut Builder, trace: &PixelTrace) {
-    b.section("Which triangle covers it");
+    b.section(tr!(b, "probe.coverage.title"));
     b.para(vec![
-        t("The edge function of edge UV at P, "),
+        t(tr!(b, "probe.coverage.intro_before")),
         m(vec![
             sym("E_UV"),
             EQ,
@@ -75,67 +86,71 @@ pub(super) fn coverage_section(b: &mut Builder, trace: &PixelTrace) {
             CROSS,
             grp(vec![sym("P"), MINUS, sym("U")]),
         ]),
-        t(format!(
-            ", is twice the signed area of U, V, P, in exact integers of 1/{} px^2, signed \
-             so that it is positive inside. Triangles are drawn in order; a fragment is kept if \
-             its depth is less than the depth buffer's value (cleared to 1).",
-            trace.sample.edge_function_unit
+        t(tr!(
+            b,
+            "probe.coverage.intro_after",
+            unit = trace.sample.edge_function_unit
         )),
     ]);
     if trace.triangles.len() < trace.triangle_count {
-        b.text(format!(
-            "The mesh has {} triangles; listed are the {} whose bounding box contains the pixel.",
-            trace.triangle_count,
-            trace.triangles.len()
+        b.text(tr!(
+            b,
+            "probe.coverage.listed",
+            count = trace.triangle_count,
+            listed = trace.triangles.len()
         ));
     }
     for c in &trace.triangles {
         coverage_entry(b, c);
     }
     match (trace.written_by, &trace.detail) {
-        (Some(k), _) => b.text(format!("The pixel shows triangle {k}.")),
-        (None, Some(d)) => b.text(format!(
-            "No triangle covers the pixel: it keeps the background colour. The steps below \
-             use the nearest triangle, {} ({}), with its weights extended outside it; negative \
-             weights are marked.",
-            d.source,
-            names3(&d.coverage.vertices)
+        (Some(k), _) => b.text(tr!(b, "probe.coverage.shows", k = k)),
+        (None, Some(d)) => b.text(tr!(
+            b,
+            "probe.coverage.nearest",
+            source = d.source,
+            names = names3(&d.coverage.vertices)
         )),
-        (None, None) => b.text(
-            "No triangle covers the pixel, and no triangle was drawn at all: it keeps the \
-             background colour.",
-        ),
+        (None, None) => b.text(tr!(b, "probe.coverage.none")),
     }
 }
 
 fn coverage_entry(b: &mut Builder, c: &TriangleCoverage) {
-    let head = format!("Triangle {} ({})", c.source, names3(&c.vertices));
+    let head = tr!(
+        b,
+        "probe.coverage.head",
+        k = c.source,
+        names = names3(&c.vertices)
+    );
     let Some(test) = &c.test else {
-        b.text(format!("{head}: {}.", status_text(c.status)));
+        let status = status_text(b, c.status);
+        b.text(tr!(
+            b,
+            "probe.coverage.status",
+            head = head,
+            status = status
+        ));
         return;
     };
     if c.clipped {
-        b.text(format!(
-            "{head}, clipped; the sample is tested against fan triangle {} ({}):",
-            test.sub_triangle,
-            names3(&test.vertices)
+        b.text(tr!(
+            b,
+            "probe.coverage.clipped",
+            head = head,
+            fan = test.sub_triangle,
+            names = names3(&test.vertices)
         ));
     } else {
-        b.text(format!("{head}:"));
+        b.text(tr!(b, "probe.coverage.entry", head = head));
     }
     b.eq(edge_values_eq(test));
-    b.text(coverage_reason(test));
+    let reason = coverage_reason(b, test);
+    b.text(reason);
     if let Some(d) = &c.depth_test {
         let (op, verdict) = if d.passed {
-            (
-                Op::Lt,
-                "less than the depth buffer's value: the test passes, the fragment is written",
-            )
+            (Op::Lt, tr!(b, "probe.coverage.depth_pass"))
         } else {
-            (
-                Op::Ge,
-                "not less than the depth buffer's value: the test fails, the fragment is hidden",
-            )
+            (Op::Ge, tr!(b, "probe.coverage.depth_fail"))
         };
         b.eq_note(
             vec![

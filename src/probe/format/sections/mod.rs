@@ -1,6 +1,7 @@
 //! Building the derivation: [`document`] calls one function per section, each in its own
-//! file, in the order the pipeline runs. Every user-facing word of the derivation is in these
-//! files; every number they print is a field of the trace.
+//! file, in the order the pipeline runs. Every user-facing word of the derivation comes from
+//! the catalogues `locales/*.yml` (keys `probe.*`, looked up with [`tr!`]); every number they
+//! print is a field of the trace.
 
 mod attribute;
 mod clipping;
@@ -28,8 +29,23 @@ use crate::raster::setup::{EdgeKind, TieRule};
 use crate::raster::shade::Shading;
 use crate::raster::texture::{Filter, Wrap};
 
+pub(crate) use crate::i18n::Lang;
+
+/// A catalogue entry in the builder's language, with `%{name}` placeholders filled in:
+/// `tr!(b, "probe.sample.title")`, `tr!(b, "probe.coverage.shows", k = 3)`.
+macro_rules! tr {
+    ($b:expr, $key:expr) => {
+        rust_i18n::t!($key, locale = $b.lang.code()).into_owned()
+    };
+    ($b:expr, $key:expr, $($name:ident = $value:expr),+ $(,)?) => {
+        rust_i18n::t!($key, locale = $b.lang.code(), $($name = $value),+).into_owned()
+    };
+}
+use tr;
+
 struct Builder {
     doc: Document,
+    lang: Lang,
 }
 
 impl Builder {
@@ -89,64 +105,85 @@ const SCREEN: [&str; 3] = ["r", "s", "t"];
 /// Perspective-correct weights, in the r, s, t / W_P notation.
 const CORRECT: [&str; 3] = ["a", "b", "c"];
 
-fn mode_name(mode: Interpolation) -> &'static str {
-    match mode {
-        Interpolation::Affine => "affine (screen-space, like GLSL noperspective)",
-        Interpolation::Perspective => "perspective-correct (GLSL smooth)",
-    }
+/// The interpolation mode's name in `lang` (the probe's settings line).
+pub fn mode_name(lang: Lang, mode: Interpolation) -> String {
+    crate::i18n::tr(
+        lang,
+        match mode {
+            Interpolation::Affine => "probe.mode.affine",
+            Interpolation::Perspective => "probe.mode.perspective",
+        },
+    )
 }
 
-fn shading_name(s: Shading) -> &'static str {
-    match s {
-        Shading::Texture => "texture",
-        Shading::VertexColor => "vertex colour",
-        Shading::Barycentric => "barycentric weights as colour",
-        Shading::Depth => "depth as grey",
-    }
+/// The shading mode's name in `lang`.
+pub fn shading_name(lang: Lang, s: Shading) -> String {
+    crate::i18n::tr(
+        lang,
+        match s {
+            Shading::Texture => "probe.shading.texture",
+            Shading::VertexColor => "probe.shading.vertex_color",
+            Shading::Barycentric => "probe.shading.barycentric",
+            Shading::Depth => "probe.shading.depth",
+        },
+    )
 }
 
-fn filter_name(f: Filter) -> &'static str {
-    match f {
-        Filter::Nearest => "nearest",
-        Filter::Bilinear => "bilinear",
-        Filter::Trilinear => "trilinear",
-    }
+/// The texture filter's name in `lang`.
+pub fn filter_name(lang: Lang, f: Filter) -> String {
+    crate::i18n::tr(
+        lang,
+        match f {
+            Filter::Nearest => "probe.filter.nearest",
+            Filter::Bilinear => "probe.filter.bilinear",
+            Filter::Trilinear => "probe.filter.trilinear",
+        },
+    )
 }
 
-fn wrap_name(w: Wrap) -> &'static str {
-    match w {
-        Wrap::Repeat => "repeat",
-        Wrap::ClampToEdge => "clamp to edge",
-        Wrap::MirroredRepeat => "mirrored repeat",
-    }
+/// The wrap mode's name in `lang`.
+pub fn wrap_name(lang: Lang, w: Wrap) -> String {
+    crate::i18n::tr(
+        lang,
+        match w {
+            Wrap::Repeat => "probe.wrap.repeat",
+            Wrap::ClampToEdge => "probe.wrap.clamp_to_edge",
+            Wrap::MirroredRepeat => "probe.wrap.mirrored_repeat",
+        },
+    )
 }
 
-fn edge_kind_name(k: EdgeKind) -> &'static str {
+fn edge_kind_name(b: &Builder, k: EdgeKind) -> String {
     match k {
-        EdgeKind::Left => "a left edge",
-        EdgeKind::Right => "a right edge",
-        EdgeKind::Top => "a top edge (horizontal, interior below it)",
-        EdgeKind::Bottom => "a bottom edge (horizontal, interior above it)",
+        EdgeKind::Left => tr!(b, "probe.edge.left"),
+        EdgeKind::Right => tr!(b, "probe.edge.right"),
+        EdgeKind::Top => tr!(b, "probe.edge.top"),
+        EdgeKind::Bottom => tr!(b, "probe.edge.bottom"),
     }
 }
 
-fn plane_name(p: PlaneName) -> &'static str {
+fn plane_name(b: &Builder, p: PlaneName) -> String {
     match p {
-        PlaneName::Near => "the near plane (z >= -w)",
-        PlaneName::Far => "the far plane (z <= w)",
-        PlaneName::PositiveW => "the plane w > 0",
-        PlaneName::GuardLeft => "the left guard band",
-        PlaneName::GuardRight => "the right guard band",
-        PlaneName::GuardBottom => "the bottom guard band",
-        PlaneName::GuardTop => "the top guard band",
+        PlaneName::Near => tr!(b, "probe.plane.near"),
+        PlaneName::Far => tr!(b, "probe.plane.far"),
+        PlaneName::PositiveW => tr!(b, "probe.plane.positive_w"),
+        PlaneName::GuardLeft => tr!(b, "probe.plane.guard_left"),
+        PlaneName::GuardRight => tr!(b, "probe.plane.guard_right"),
+        PlaneName::GuardBottom => tr!(b, "probe.plane.guard_bottom"),
+        PlaneName::GuardTop => tr!(b, "probe.plane.guard_top"),
     }
 }
 
-fn status_text(s: TriangleStatus) -> String {
-    match s {
-        TriangleStatus::Drawn => s.describe().to_string(),
-        _ => format!("not drawn: {}", s.describe()),
-    }
+/// A triangle's status in words (the English entries are `TriangleStatus::describe`).
+fn status_text(b: &Builder, s: TriangleStatus) -> String {
+    let reason = match s {
+        TriangleStatus::Drawn => return tr!(b, "probe.status.drawn"),
+        TriangleStatus::BadIndex => tr!(b, "probe.status.bad_index"),
+        TriangleStatus::NotFinite => tr!(b, "probe.status.not_finite"),
+        TriangleStatus::ClippedAway => tr!(b, "probe.status.clipped_away"),
+        TriangleStatus::Empty => tr!(b, "probe.status.empty"),
+    };
+    tr!(b, "probe.status.not_drawn", reason = reason)
 }
 
 fn rgba(c: [u8; 4]) -> String {
@@ -168,16 +205,24 @@ fn raster_names(d: &TriangleTrace) -> [String; 3] {
     d.raster.vertices.clone().map(|v| v.name)
 }
 
-/// The derivation for a trace.
+/// The derivation for a trace, in English.
 pub fn document(trace: &PixelTrace) -> Document {
+    document_in(trace, Lang::En)
+}
+
+/// The derivation for a trace with its prose in `lang`; the formulas, symbols and numbers are
+/// the same in every language.
+pub fn document_in(trace: &PixelTrace, lang: Lang) -> Document {
     let [x, y] = trace.pixel;
     let [w, h] = trace.image_size;
     let mut b = Builder {
         doc: Document {
-            title: format!("barylab probe: pixel ({x}, {y}) of the {w}x{h} image"),
+            title: String::new(),
             sections: Vec::new(),
         },
+        lang,
     };
+    b.doc.title = tr!(b, "probe.title", x = x, y = y, w = w, h = h);
     settings::settings_section(&mut b, trace);
     sample::sample_section(&mut b, trace);
     coverage::coverage_section(&mut b, trace);

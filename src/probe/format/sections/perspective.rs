@@ -4,27 +4,23 @@ use super::*;
 
 pub(super) fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
     let n = raster_names(d);
-    b.section("Perspective correction with 1/w (OpenGL 4.6, eq. 14.9)");
+    b.section(tr!(b, "probe.perspective.title"));
     let Some(p) = &d.perspective else {
-        b.text(
-            "The interpolated 1/w is not positive here: extended beyond its edges, the \
-             triangle's plane lies behind the camera at this pixel, so there are no \
-             perspective-correct weights.",
-        );
+        b.text(tr!(b, "probe.perspective.none"));
         return;
     };
     let s004 = &p.correction;
     let r = d.screen.rasterizer;
-    b.text(format!(
-        "W is each vertex's clip-space w; with a perspective camera it is the depth in front of \
-         the eye. 1/W is linear on the screen, W itself is not. With the screen weights r, s, t \
-         of {}:{}",
-        names3(&n),
-        if p.w.iter().all(|&w| w == p.w[0]) {
-            " (all W are equal here, as with an orthographic camera, so a, b, c are r, s, t)"
-        } else {
-            ""
-        }
+    let equal = if p.w.iter().all(|&w| w == p.w[0]) {
+        tr!(b, "probe.perspective.all_equal")
+    } else {
+        String::new()
+    };
+    b.text(tr!(
+        b,
+        "probe.perspective.intro",
+        names = names3(&n),
+        equal = equal
     ));
     b.eq(listing((0..3).map(|k| {
         vec![
@@ -45,7 +41,7 @@ pub(super) fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &Trian
     l.push(EQ);
     l.extend(weighted(&r, s004.inv_w.iter().map(|&x| num(x)).collect()));
     l.extend([EQ, num(s004.inv_w_p)]);
-    b.eq_note(l, "linear on screen");
+    b.eq_note(l, tr!(b, "probe.perspective.linear"));
     b.eq(vec![
         sym("W_P"),
         EQ,
@@ -77,7 +73,7 @@ pub(super) fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &Trian
         num(s004.sum),
     ]);
     b.para(vec![
-        t("GAMES101's code (Assignment 2, rasterize_triangle) writes the same with its screen weights alpha, beta, gamma: "),
+        t(tr!(b, "probe.perspective.games101_before")),
         m(vec![
             sym("w_reciprocal"),
             EQ,
@@ -94,35 +90,30 @@ pub(super) fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &Trian
             EQ,
             num(p.games101_w_reciprocal),
         ]),
-        t(". Despite its name it is W_P itself, the reciprocal of the interpolated 1/w."),
+        t(tr!(b, "probe.perspective.games101_after")),
     ]);
     b.para(vec![
-        t("The renderer (interpolate::fragment) computed "),
+        t(tr!(b, "probe.perspective.renderer_before")),
         m(vec![
             tup_m(CORRECT.iter().map(|c| sym(*c)).collect()),
             EQ,
             tup(&p.renderer_weights),
         ]),
-        t(" and "),
+        t(tr!(b, "probe.perspective.and")),
         m(vec![frac(int(1), sym("W_P")), EQ, num(p.renderer_inv_w)]),
-        t("."),
+        t(tr!(b, "probe.period")),
     ]);
     if trace.settings.mode == Interpolation::Affine {
-        b.text(
-            "The mode is affine: the shader uses r, s, t directly; a, b, c are shown for \
-             comparison.",
-        );
+        b.text(tr!(b, "probe.perspective.affine_mode"));
     }
     if let (Some(_), Some(sw)) = (&d.clipping, &d.source_weights) {
         let src: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
         let rv = &d.raster.vertices;
         let lam = tup_m(src.iter().map(|s| sym(format!("lambda_{s}"))).collect());
-        b.para(vec![t(format!(
-            "The weights lambda of the source triangle {} at the pixel are an attribute like \
-             any other: each vertex of the rasterized triangle carries its lambda, and the \
-             pixel interpolates them. Perspective-correct, with a, b, c and the smooth lambda \
-             (at a vertex the clipper made: interpolated in clip space):",
-            src.join(", ")
+        b.para(vec![t(tr!(
+            b,
+            "probe.perspective.lambda_intro",
+            src = src.join(", ")
         ))]);
         let per_vertex = |f: fn(&RasterVertex) -> [f32; 3]| {
             listing((0..3).map(|k| vec![sym(format!("lambda({})", n[k])), EQ, tup32(&f(&rv[k]))]))
@@ -138,13 +129,9 @@ pub(super) fn perspective_section(b: &mut Builder, trace: &PixelTrace, d: &Trian
                 vec![EQ, tup32(&sw.perspective)],
             ]
             .concat(),
-            "as written to the weight buffers",
+            tr!(b, "probe.perspective.buffers"),
         );
-        b.text(
-            "Affine, with r, s, t and the noperspective lambda: OpenGL keeps a noperspective \
-             attribute linear on the screen, so at a vertex the clipper made it is the source \
-             triangle's screen-linear lambda there, not the smooth value:",
-        );
+        b.text(tr!(b, "probe.perspective.lambda_affine"));
         b.eq(per_vertex(|v| v.source_weights_affine));
         b.eq([
             vec![lam, EQ],

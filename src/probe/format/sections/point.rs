@@ -3,24 +3,19 @@
 use super::*;
 
 pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
-    b.section("The point on the triangle that the pixel sees");
+    b.section(tr!(b, "probe.point.title"));
     let src: Vec<String> = d.vertices.iter().map(|v| v.name.clone()).collect();
     let Some(sp) = &d.seen_point else {
-        b.text(
-            "The ray through the pixel centre is parallel to the triangle's plane: it sees no \
-             point of it.",
-        );
+        b.text(tr!(b, "probe.point.parallel"));
         return;
     };
     match (&sp.ray, &sp.hit) {
         (Some(ray), Some(hit)) => {
             let perspective = trace.matrices.is_some_and(|m| m.perspective);
             b.text(if perspective {
-                "In view space the eye is at the origin; the ray goes through the pixel centre \
-                 on the near plane:"
+                tr!(b, "probe.point.perspective")
             } else {
-                "Orthographic camera: the ray is parallel to -z, from the pixel centre on the \
-                 near plane to the far plane:"
+                tr!(b, "probe.point.orthographic")
             });
             b.eq(vec![
                 sym("O"),
@@ -63,7 +58,7 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
             if hit.t.is_nan() || hit.t <= 0.0 {
                 b.para(vec![
                     m(vec![sym("k"), M::Op(Op::Le), int(0)]),
-                    t(": the line meets the plane behind the start of the ray, not in front of the camera; the pixel sees no point of it."),
+                    t(tr!(b, "probe.point.behind")),
                 ]);
                 return;
             }
@@ -79,7 +74,7 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
                     EQ,
                     tup(&hit.point),
                 ],
-                "the seen point, view space",
+                tr!(b, "probe.point.seen"),
             );
             if let Some(wd) = sp.world {
                 b.eq(vec![
@@ -92,11 +87,7 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
                     tup(&wd),
                 ]);
             }
-            b.text(format!(
-                "Its own weights lambda, as ratios of signed areas in 3D measured along n ({} \
-                 in view space):",
-                src.join(", ")
-            ));
+            b.text(tr!(b, "probe.point.lambda", names = src.join(", ")));
             let pairs = [(1usize, 2usize), (2, 0), (0, 1)];
             for (k, (i, j)) in pairs.iter().enumerate() {
                 b.eq(vec![
@@ -120,10 +111,7 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
             }
         }
         _ => {
-            b.text(
-                "A clip-space scene has no camera, but the 4x4 system's solution is the point \
-                 itself, in clip space:",
-            );
+            b.text(tr!(b, "probe.point.clip_scene"));
             let mut l = vec![sym("X"), EQ];
             l.extend(weighted(
                 &sp.weights,
@@ -133,22 +121,22 @@ pub(super) fn point_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTra
             b.eq(l);
             b.eq_note(
                 vec![frac(sym("X_xyz"), sym("X_w")), EQ, tup(&sp.ndc)],
-                "its x and y are the sample's NDC",
+                tr!(b, "probe.point.ndc_note"),
             );
         }
     }
     if let Some(diff) = sp.max_difference {
         b.para(vec![
             t(if d.clipping.is_none() {
-                "These are the perspective-correct weights a, b, c (largest difference "
+                tr!(b, "probe.point.same_correct")
             } else {
-                "These are the source weights the rasterizer interpolated (largest difference "
+                tr!(b, "probe.point.same_source")
             }),
             m1(num(diff)),
             t(if trace.scene_form != SceneForm::Clip {
-                "; the ray is computed from the camera, the rasterizer from clip space)."
+                tr!(b, "probe.point.after_camera")
             } else {
-                ")."
+                tr!(b, "probe.point.after")
             }),
         ]);
     }

@@ -6,11 +6,8 @@ pub(super) fn sample_section(b: &mut Builder, trace: &PixelTrace) {
     let [x, y] = trace.pixel;
     let [w, h] = trace.image_size;
     let s = &trace.sample;
-    b.section("The sample point");
-    b.text(
-        "A pixel is sampled at its centre. Window coordinates are in pixels, x to the right, \
-         y down from the top row:",
-    );
+    b.section(tr!(b, "probe.sample.title"));
+    b.text(tr!(b, "probe.sample.intro"));
     b.eq(vec![
         sym("x_P"),
         EQ,
@@ -28,7 +25,7 @@ pub(super) fn sample_section(b: &mut Builder, trace: &PixelTrace) {
         EQ,
         num(s.window[1]),
     ]);
-    b.text("In normalized device coordinates (NDC y = +1 is the top row):");
+    b.text(tr!(b, "probe.sample.ndc"));
     b.eq(vec![
         sym("x_ndc"),
         EQ,
@@ -47,15 +44,12 @@ pub(super) fn sample_section(b: &mut Builder, trace: &PixelTrace) {
         num(s.ndc[1]),
     ]);
     b.para(vec![
-        t(format!(
-            "The rasterizer works in exact integers of 1/{} pixel: ",
-            s.subpixel
-        )),
+        t(tr!(b, "probe.sample.fixed", subpixel = s.subpixel)),
         m(vec![
             sym("P"),
             EQ,
             M::Tuple(vec![vec![int(s.fixed[0])], vec![int(s.fixed[1])]]),
         ]),
-        t("."),
+        t(tr!(b, "probe.period")),
     ]);
 }

@@ -7,15 +7,8 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
     let rv = &d.raster.vertices;
     let sw = &d.screen;
     let p = trace.sample.window;
-    b.section(format!(
-        "Screen-space weights r, s, t of {}, four ways",
-        names3(&n)
-    ));
-    b.text(format!(
-        "r, s, t weigh {} in the 2D triangle on screen (GAMES101 calls them alpha, beta, gamma). \
-         Window positions (unsnapped, as the interpolation uses them):",
-        names3(&n)
-    ));
+    b.section(tr!(b, "probe.screen.title", names = names3(&n)));
+    b.text(tr!(b, "probe.screen.intro", names = names3(&n)));
     let mut pos = Vec::new();
     for (k, v) in rv.iter().enumerate() {
         if k > 0 {
@@ -32,7 +25,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
 
     // 1. Explicit formula.
     if let Some(f) = &sw.explicit {
-        b.text("1. The explicit formula (as in GAMES101):");
+        b.text(tr!(b, "probe.screen.explicit"));
         // (y_P - y_A)(x_C - x_A) - (x_P - x_A)(y_C - y_A)
         let form = |u: usize| {
             vec![
@@ -123,7 +116,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
     // 2. Cross products.
     if let Some(c) = &sw.cross_product {
         b.para(vec![
-            t("2. Ratios of signed areas from 2D cross products, with "),
+            t(tr!(b, "probe.screen.cross_before")),
             m(vec![
                 sym("u"),
                 CROSS,
@@ -137,7 +130,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
                 MUL,
                 sym("v_x"),
             ]),
-            t(". Each sub-area is the triangle of P with the edge opposite a vertex:"),
+            t(tr!(b, "probe.screen.cross_after")),
         ]);
         // The vectors (u, v) of S, S_A, S_B, S_C.
         let vectors = c.vectors.unwrap_or_default();
@@ -168,18 +161,11 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
             ]
         };
         b.eq_note(
-            cross_line(
-                sym("S"),
-                &n[1],
-                &n[2],
-                &n[0],
-                vectors[0],
-                c.area,
-            ),
+            cross_line(sym("S"), &n[1], &n[2], &n[0], vectors[0], c.area),
             if c.area < 0.0 {
-                "negative: with y down, this order runs counter-clockwise on screen; the signs cancel in the ratios"
+                tr!(b, "probe.screen.area_negative")
             } else {
-                "positive: with y down, this order runs clockwise on screen"
+                tr!(b, "probe.screen.area_positive")
             },
         );
         let subs = [(1usize, 2usize), (2, 0), (0, 1)];
@@ -203,7 +189,11 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
             if c.weights[k] < 0.0 {
                 b.eq_note(
                     l,
-                    format!("negative: P is on the far side of edge {}{}", n[*i], n[*j]),
+                    tr!(
+                        b,
+                        "probe.screen.far_side",
+                        edge = format!("{}{}", n[*i], n[*j])
+                    ),
                 );
             } else {
                 b.eq(l);
@@ -225,7 +215,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
     // 3. OpenGL area form.
     if let Some(g) = &sw.gl_area {
         b.para(vec![
-            t("3. The OpenGL area form (OpenGL 4.6, eq. 14.8), with the shoelace area "),
+            t(tr!(b, "probe.screen.gl_before")),
             m(vec![
                 sym("area"),
                 M::Tuple(vec![vec![sym("p_1")], vec![sym("p_2")], vec![sym("p_3")]]),
@@ -242,7 +232,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
                     sym("y_i"),
                 ]),
             ]),
-            t(":"),
+            t(tr!(b, "probe.colon")),
         ]);
         let area_of = |pts: [&str; 3]| {
             vec![
@@ -273,10 +263,7 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
     match (&sw.from_system, &d.system) {
         (Some(r), Some(sys)) => {
             let sol = sys.system.solution;
-            b.text(
-                "4. From the 4x4 system (section below), which gives the weights \
-                 b on the triangle in space and the sample's w; projecting back to the screen:",
-            );
+            b.text(tr!(b, "probe.screen.system"));
             for k in 0..3 {
                 b.eq(vec![
                     sym(SCREEN[k]),
@@ -292,50 +279,39 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
                 ]);
             }
         }
-        _ => b.text(
-            "4. The 4x4 system is solved on the source triangle (section below); \
-             since the rasterized triangle is a piece of the clipped triangle, its screen \
-             weights do not come out of it.",
-        ),
+        _ => b.text(tr!(b, "probe.screen.system_clipped")),
     }
 
     // The rasterizer.
     b.para(vec![
-        t(
-            "The rasterizer (setup::WeightPlanes) evaluates the same signed-area ratios in f64 \
-           from the unsnapped window positions, as llvmpipe sets up its interpolation: ",
-        ),
+        t(tr!(b, "probe.screen.rasterizer_before")),
         m(vec![
             tup_m(SCREEN.iter().map(|c| sym(*c)).collect()),
             EQ,
             tup(&sw.rasterizer),
         ]),
-        t(
-            ". The exact integer edge values of the snapped positions (the coverage section) \
-           only decide whether the pixel is covered.",
-        ),
+        t(tr!(b, "probe.screen.rasterizer_after")),
     ]);
     if !d.coverage.covered {
         for (k, e) in d.coverage.edges.iter().enumerate() {
             if sw.rasterizer[k] < 0.0 {
                 b.eq_note(
                     vec![sym(SCREEN[k]), EQ, num(sw.rasterizer[k])],
-                    format!("negative: P is outside edge {}", e.name),
+                    tr!(b, "probe.screen.outside", edge = e.name),
                 );
             }
         }
     }
     if d.coverage.covered && sw.rasterizer.iter().any(|&w| w < 0.0) {
-        b.text(format!(
-            "A weight is slightly negative although the pixel is covered: the snapped edges \
-             (1/{} px) cover the centre, the unsnapped triangle misses it by a hair. A GPU \
-             interpolates with the same negative weight.",
-            trace.sample.subpixel
+        b.text(tr!(
+            b,
+            "probe.screen.slightly_negative",
+            subpixel = trace.sample.subpixel
         ));
     }
     b.para(vec![
-        t("All ways agree: the largest difference from the rasterizer's values is "),
+        t(tr!(b, "probe.screen.agree")),
         m1(num(sw.max_difference)),
-        t("."),
+        t(tr!(b, "probe.period")),
     ]);
 }

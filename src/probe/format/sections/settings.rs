@@ -5,13 +5,24 @@ use super::*;
 /// Section 1: the render settings.
 pub(super) fn settings_section(b: &mut Builder, trace: &PixelTrace) {
     let st = &trace.settings;
-    b.section("Settings");
-    b.text(format!("Interpolation: {}.", mode_name(st.mode)));
-    b.text(format!(
-        "Shading: {}; texture filter {}, wrap {}{}.",
-        shading_name(st.shading),
-        filter_name(st.filter),
-        wrap_name(st.wrap),
-        if st.wireframe { "; wireframe on" } else { "" }
+    let lang = b.lang;
+    b.section(tr!(b, "probe.settings.title"));
+    b.text(tr!(
+        b,
+        "probe.settings.interpolation",
+        mode = mode_name(lang, st.mode)
+    ));
+    let wire = if st.wireframe {
+        tr!(b, "probe.settings.wireframe_on")
+    } else {
+        String::new()
+    };
+    b.text(tr!(
+        b,
+        "probe.settings.shading",
+        shading = shading_name(lang, st.shading),
+        filter = filter_name(lang, st.filter),
+        wrap = wrap_name(lang, st.wrap),
+        wire = wire
     ));
 }

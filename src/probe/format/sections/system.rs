@@ -3,29 +3,19 @@
 use super::*;
 
 pub(super) fn system_section(b: &mut Builder, d: &TriangleTrace) {
-    b.section("The 4x4 linear system (Umetani, Applied Computer Graphics)");
+    b.section(tr!(b, "probe.system.title"));
     let src: Vec<String> = d.vertices.iter().map(|v| v.name.clone()).collect();
     let Some(sys) = &d.system else {
-        b.text(
-            "The system is singular here (the triangle is seen edge-on): the sample's ray does \
-             not meet its plane in one point.",
-        );
+        b.text(tr!(b, "probe.system.singular"));
         return;
     };
-    b.text(format!(
-        "Unknowns: the weights b of {} on the triangle in space, and w, the sample's clip w. \
-         The clip-space point b_{} q_{} + b_{} q_{} + b_{} q_{} must be (s_x w, s_y w, z, w) with s \
-         the sample in NDC, and the weights sum to 1.{}",
-        src.join(", "),
-        src[0],
-        src[0],
-        src[1],
-        src[1],
-        src[2],
-        src[2],
-        " The source triangle's own clip coordinates are used: the system never divides by \
-         w, so it works even with a vertex behind the camera, and it reaches the exact answer \
-         independently of the rasterizer."
+    b.text(tr!(
+        b,
+        "probe.system.intro",
+        names = src.join(", "),
+        v0 = src[0],
+        v1 = src[1],
+        v2 = src[2]
     ));
     let s = &sys.system;
     b.push(Item::Matrix {
@@ -50,10 +40,7 @@ pub(super) fn system_section(b: &mut Builder, d: &TriangleTrace) {
         tup(&s.solution),
     ]);
     if s.solution[3].is_nan() || s.solution[3] <= 0.0 {
-        b.text(
-            "w <= 0: the line through the eye and the pixel meets the triangle's plane behind \
-             the camera, so the pixel sees no point of the plane.",
-        );
+        b.text(tr!(b, "probe.system.behind"));
         return;
     }
     let Some(diff) = sys.max_difference else {
@@ -62,18 +49,18 @@ pub(super) fn system_section(b: &mut Builder, d: &TriangleTrace) {
     if d.clipping.is_none() {
         if d.perspective.is_some() {
             b.para(vec![
-                t("These are a, b, c and W_P from the 1/w method (largest difference "),
+                t(tr!(b, "probe.system.same_before")),
                 m1(num(diff)),
-                t(")."),
+                t(tr!(b, "probe.system.same_after")),
             ]);
         }
     } else if let Some(sw) = &d.source_weights {
         b.para(vec![
-            t("These are the source weights the rasterizer interpolated, "),
+            t(tr!(b, "probe.system.source_before")),
             m1(tup32(&sw.perspective)),
-            t(" (largest difference "),
+            t(tr!(b, "probe.system.source_mid")),
             m1(num(diff)),
-            t(", from the f32 varyings)."),
+            t(tr!(b, "probe.system.source_after")),
         ]);
     }
 }

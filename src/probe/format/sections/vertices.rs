@@ -3,25 +3,22 @@
 use super::*;
 
 pub(super) fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTrace) {
-    b.section(format!(
-        "The vertices of triangle {} in every space",
-        d.source
-    ));
+    b.section(tr!(b, "probe.vertices.title", k = d.source));
     let [w, h] = trace.image_size;
     if let Some(mats) = &trace.matrices {
         let tilted = mats.world_from_object != glam::DMat4::IDENTITY.to_cols_array_2d();
         b.para(vec![
-            t("Object"),
+            t(tr!(b, "probe.vertices.object")),
             m1(TO),
-            t("world"),
+            t(tr!(b, "probe.vertices.world")),
             m1(TO),
-            t("view (the camera, looking down -z)"),
+            t(tr!(b, "probe.vertices.view")),
             m1(TO),
-            t("clip (the projection), then divide by w"),
+            t(tr!(b, "probe.vertices.clip")),
             m1(TO),
-            t("NDC"),
+            t(tr!(b, "probe.vertices.ndc")),
             m1(TO),
-            t("window."),
+            t(tr!(b, "probe.vertices.window")),
         ]);
         if tilted {
             b.matrix(vec![sym("M_world"), EQ], rows4(&mats.world_from_object));
@@ -29,11 +26,16 @@ pub(super) fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &Triangle
         b.matrix(vec![sym("M_view"), EQ], rows4(&mats.view_from_world));
         b.matrix(vec![sym("M_proj"), EQ], rows4(&mats.clip_from_view));
     } else {
-        b.text("A clip-space scene: the vertices are given in clip space.");
+        b.text(tr!(b, "probe.vertices.clip_scene"));
     }
     for v in &d.vertices {
         let n = &v.name;
-        b.para(vec![t(format!("Vertex {n} (mesh vertex {}):", v.index))]);
+        b.para(vec![t(tr!(
+            b,
+            "probe.vertices.vertex",
+            name = n,
+            index = v.index
+        ))]);
         if let (Some(o), Some(wd), Some(vw)) = (v.object, v.world, v.view) {
             if o != wd {
                 b.eq(vec![
@@ -96,7 +98,7 @@ pub(super) fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &Triangle
                     EQ,
                     tup(&win[..2]),
                     TO,
-                    txt("snapped: "),
+                    txt(tr!(b, "probe.vertices.snapped")),
                     frac(
                         M::Tuple(fixed.iter().map(|&c| vec![int(c)]).collect()),
                         int(trace.sample.subpixel),
@@ -125,11 +127,7 @@ pub(super) fn vertices_section(b: &mut Builder, trace: &PixelTrace, d: &Triangle
                         M::Op(Op::Le),
                         int(0),
                     ]),
-                    t(format!(
-                        ": {n} is at or behind the plane of the eye. It has no NDC or window \
-                         position (dividing by w <= 0 would mirror it through the eye), so the \
-                         clipper cuts the triangle in clip space before the divide."
-                    )),
+                    t(tr!(b, "probe.vertices.behind", name = n)),
                 ]);
             }
         }
