@@ -319,8 +319,8 @@ fn derivation_ui(ui: &mut Ui, r: &PixelReport) {
     }
 }
 
-/// One section of the worked example: prose lines (indented by two spaces) wrap; formula
-/// lines (four spaces) keep their layout in a horizontally scrolling block.
+/// One section of the worked example: prose lines (indented by two spaces) and formula lines
+/// (four spaces, monospace) both wrap at the panel's width, so nothing is cut off.
 fn section_ui(ui: &mut Ui, index: usize, text: &str) {
     let mut formulas: Vec<&str> = Vec::new();
     let mut block = 0;
@@ -328,14 +328,11 @@ fn section_ui(ui: &mut Ui, index: usize, text: &str) {
         if formulas.is_empty() {
             return;
         }
-        egui::ScrollArea::horizontal()
-            .id_salt(("derivation-scroll", index, *block))
-            .show(ui, |ui| {
-                ui.add(
-                    egui::Label::new(RichText::new(formulas.join("\n")).monospace().size(15.0))
-                        .extend(),
-                );
-            });
+        ui.push_id(("derivation-block", index, *block), |ui| {
+            ui.add(
+                egui::Label::new(RichText::new(formulas.join("\n")).monospace().size(15.0)).wrap(),
+            );
+        });
         formulas.clear();
         *block += 1;
     };

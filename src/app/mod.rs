@@ -32,16 +32,21 @@ pub mod export;
 pub mod file_menu;
 pub mod files;
 pub mod help;
+pub mod history;
+pub mod image_size;
 pub mod inspector;
+pub mod layout;
 pub mod paint;
 pub mod path_window;
 pub mod persist;
 pub mod pixel;
+pub mod present;
 pub mod presets;
 pub mod render;
 pub mod reports;
 pub mod screenshot;
 pub mod shortcuts;
+pub mod side_panels;
 pub mod state;
 pub mod status;
 pub mod style;
@@ -55,7 +60,7 @@ use std::time::Instant;
 
 use self::banner::Banner;
 use self::bench_panel::BenchPanel;
-use self::canvas::{CanvasInput, CanvasState};
+use self::canvas::CanvasState;
 use self::command::AppCommand;
 use self::export::{ExportCommand, ExportContext, ExportPanel};
 use self::file_menu::FilePicker;
@@ -64,9 +69,10 @@ use self::persist::{STORAGE_KEY, SavedState};
 use self::pixel::PixelReport;
 use self::reports::PixelReports;
 use self::screenshot::{ShotSlot, StartupShot};
+use self::side_panels::Side;
 use self::state::AppState;
 use self::status::{FrameTiming, Message};
-use self::textures::{TextureCache, texture_key};
+use self::textures::TextureCache;
 use crate::raster::Texture;
 use crate::scene::Scene;
 
@@ -91,6 +97,10 @@ pub struct AppOptions {
     pub persist: bool,
     /// Initial window size in points.
     pub window_size: Option<[f32; 2]>,
+    /// Start in presentation mode.
+    pub present: bool,
+    /// Start with this pixel pinned.
+    pub pin: Option<[u32; 2]>,
 }
 
 /// Errors that stop the app.
@@ -102,10 +112,6 @@ pub enum AppError {
     Screenshot { path: String, message: String },
 }
 
-/// Side panel widths in points. Fixed, so that nothing in them (a number growing a digit)
-/// can move the canvas under a dragged corner.
-const CONTROLS_WIDTH: f32 = 400.0;
-const INSPECTOR_WIDTH: f32 = 460.0;
 /// Default window size in points.
 const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];
 
@@ -129,6 +135,13 @@ pub struct BaryApp {
     banner: Option<Banner>,
     bench: BenchPanel,
     export: ExportPanel,
+    /// Presentation mode: panels hidden, the pixel card in large print.
+    presenting: bool,
+    /// The preset loaded last (Page Down / Page Up step on from it).
+    last_preset: Option<presets::Preset>,
+    /// The side panel asked for last: it gets the room when both do not fit.
+    panel_first: Side,
+    history: history::History,
 }
 
 impl BaryApp {
@@ -175,9 +188,16 @@ impl BaryApp {
             banner: None,
             bench: BenchPanel::default(),
             export: ExportPanel::new(export_settings),
+            presenting: options.present,
+            last_preset: None,
+            panel_first: Side::default(),
+            history: history::History::default(),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
+        }
+        if let Some(p) = options.pin {
+            app.push(state::Command::Pin(Some(p)));
         }
         app
     }
@@ -266,6 +286,16 @@ impl BaryApp {
         &mut self.bench
     }
 
+    /// The undo history.
+    pub fn history(&self) -> &history::History {
+        &self.history
+    }
+
+    /// Whether the app is in presentation mode.
+    pub fn presenting(&self) -> bool {
+        self.presenting
+    }
+
     /// The message on the status line.
     pub fn message(&self) -> Option<&str> {
         self.message.as_ref().map(|m| m.text.as_str())
@@ -291,6 +321,8 @@ impl BaryApp {
                 canvas_size: self.canvas.output.as_ref().map(|o| o.size),
                 help_open: self.help_open,
                 export_open: self.export.open,
+                presenting: self.presenting,
+                last_preset: self.last_preset,
             },
         ));
         // Files dropped on the window, or picked in the Open dialog.
@@ -333,7 +365,11 @@ impl BaryApp {
         let picked = self.export.frame(&ctx);
         self.export_message(&ctx, outcome_before);
         self.commands.splice(0..0, command::all(picked));
+        let before = history::Snapshot::of(&self.state);
         self.apply_commands(&ctx, &texture);
+        // A drag (a button held) is one undo step, taken when it is released.
+        let held = ctx.input(|i| i.pointer.any_down());
+        self.history.track(before, &self.state, held);
         self.timing.ui_ms = start.elapsed().as_secs_f64() * 1e3;
         if let Some(shot) = &mut self.screenshot {
             shot.step(&ctx, self.canvas.output.is_some());
@@ -344,6 +380,11 @@ impl BaryApp {
     fn panels(&mut self, ui: &mut egui::Ui, texture: &Arc<Texture>) {
         let ctx = ui.ctx().clone();
         let mut out: Vec<AppCommand> = Vec::new();
+        if self.presenting {
+            self.presentation(ui, texture, &mut out);
+            self.commands.extend(out);
+            return;
+        }
         egui::Panel::top("top").show(ui, |ui| {
             out.extend(top_bar::top_bar_ui(
                 ui,
@@ -354,6 +395,7 @@ impl BaryApp {
                     export_open: self.export.open,
                     help_open: self.help_open,
                     bench_open: self.bench.open,
+                    presenting: self.presenting,
                 },
             ));
         });
@@ -379,49 +421,8 @@ impl BaryApp {
                 self.message.as_ref(),
             );
         });
-        if self.state.view.show_controls {
-            egui::Panel::left("controls")
-                .resizable(false)
-                .exact_size(CONTROLS_WIDTH)
-                .show(ui, |ui| {
-                    egui::ScrollArea::vertical()
-                        .auto_shrink([false, false])
-                        .show(ui, |ui| {
-                            out.extend(command::all(controls::controls_ui(ui, &self.state)));
-                        });
-                });
-        }
-        if self.state.view.show_inspector {
-            egui::Panel::right("inspector")
-                .resizable(false)
-                .exact_size(INSPECTOR_WIDTH)
-                .show(ui, |ui| {
-                    // Content never widens the panel: a wide line scrolls instead. (A panel
-                    // that grew with the hovered pixel's text would move the canvas under
-                    // the pointer, change the hovered pixel, and so on.)
-                    let width = ui.available_width();
-                    egui::ScrollArea::both()
-                        .auto_shrink([false, false])
-                        .show(ui, |ui| {
-                            ui.set_max_width(width);
-                            inspector::inspector_ui(
-                                ui,
-                                self.reports.hover.as_ref(),
-                                self.reports.pin.as_ref(),
-                            );
-                        });
-                });
-        }
-        egui::CentralPanel::default().show(ui, |ui| {
-            let input = CanvasInput {
-                state: &self.state,
-                texture,
-                texture_key: texture_key(&self.state.scene, self.state.scene_dir.as_deref()),
-                hover_report: self.reports.hover.as_ref(),
-                pin_report: self.reports.pin.as_ref(),
-            };
-            out.extend(command::all(canvas::canvas_ui(ui, &mut self.canvas, input)));
-        });
+        self.side_panels_ui(ui, &mut out);
+        self.canvas_panel(ui, texture, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(help::text::TITLE)
             .open(&mut help_open)
@@ -462,6 +463,12 @@ impl BaryApp {
     fn apply(&mut self, ctx: &egui::Context, command: AppCommand, texture: &Arc<Texture>) {
         match command {
             AppCommand::State(c) => {
+                match c {
+                    state::Command::Preset(p) => self.last_preset = Some(p),
+                    state::Command::SetShowControls(true) => self.panel_first = Side::Controls,
+                    state::Command::SetShowInspector(true) => self.panel_first = Side::Inspector,
+                    _ => {}
+                }
                 if let Err(e) = self.state.apply(c) {
                     self.set_error(e.to_string());
                 }
@@ -471,6 +478,7 @@ impl BaryApp {
                     state: &self.state,
                     texture,
                     size: self.canvas.output.as_ref().map(|o| o.size),
+                    pixel_size: self.canvas.pixel_size,
                     hovered: self.canvas.hover,
                     pixels_per_point: ctx.pixels_per_point(),
                 };
@@ -487,6 +495,13 @@ impl BaryApp {
             AppCommand::File(FileCommand::DismissBanner) => self.banner = None,
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
+            AppCommand::SetPresenting(on) => self.presenting = on,
+            AppCommand::Undo => {
+                self.history.undo(&mut self.state);
+            }
+            AppCommand::Redo => {
+                self.history.redo(&mut self.state);
+            }
         }
     }
 }

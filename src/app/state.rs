@@ -39,6 +39,10 @@ pub struct ViewSettings {
     /// Which rasterizer draws the canvas (both give the same coverage; the inspector follows
     /// the edge-function derivation).
     pub rasterizer: crate::raster::render::Rasterizer,
+    /// The rendered image follows the window (`pixel_size` screen pixels per rendered pixel)
+    /// instead of keeping the scene's own size. Off by default: a fixed size keeps every
+    /// pixel, and so a pin, where it is through any layout change.
+    pub fit_window: bool,
 }
 
 impl Default for ViewSettings {
@@ -55,6 +59,7 @@ impl Default for ViewSettings {
             pinned: None,
             ui_scale: 1.0,
             rasterizer: Default::default(),
+            fit_window: false,
         }
     }
 }
@@ -122,6 +127,9 @@ pub enum Command {
     SetCompare(Compare),
     SetWipe(f32),
     SetPixelSize(u32),
+    /// Render at this fixed size (the scene's size, so exports carry it), or `None`: follow
+    /// the window.
+    SetImageSize(Option<[u32; 2]>),
     SetShowGrid(bool),
     SetShowHandles(bool),
     SetShowSubAreas(bool),
@@ -190,8 +198,11 @@ impl AppState {
             }
             Command::Preset(p) => {
                 let texture = self.scene.texture_name().to_string();
+                let (w, h) = self.scene.size();
                 let mut scene = p.scene();
                 edit::set_options(&mut scene, options);
+                // The image size is the teacher's choice, not the preset's.
+                scene.set_size(w, h);
                 if let Scene::World(s) = &mut scene {
                     s.texture = texture;
                 } else {
@@ -201,7 +212,9 @@ impl AppState {
                 self.view.pinned = None;
             }
             Command::ResetScene => {
+                let (w, h) = self.scene.size();
                 self.scene = Scene::default_scene();
+                self.scene.set_size(w, h);
                 self.scene_dir = None;
                 self.view.pinned = None;
             }
@@ -239,6 +252,17 @@ impl AppState {
                     // The pixel grid changes, so a pinned pixel would point elsewhere.
                     self.view.pinned = None;
                 }
+            }
+            Command::SetImageSize(None) => self.view.fit_window = true,
+            Command::SetImageSize(Some([w, h])) => {
+                let max = crate::raster::project::MAX_IMAGE_SIZE;
+                let (w, h) = (w.clamp(1, max), h.clamp(1, max));
+                if self.view.fit_window || self.scene.size() != (w, h) {
+                    // Another image: a pinned pixel would point at another surface point.
+                    self.view.pinned = None;
+                }
+                self.scene.set_size(w, h);
+                self.view.fit_window = false;
             }
             Command::SetShowGrid(b) => self.view.show_grid = b,
             Command::SetShowHandles(b) => self.view.show_handles = b,

@@ -69,13 +69,22 @@ pub fn status_ui(
         ui.label(RichText::new(mode_text).strong().color(mode_color));
         ui.separator();
         if let Some(out) = &canvas.output {
+            // Screen pixels per rendered pixel: whole when magnified.
+            let px = canvas
+                .views
+                .first()
+                .map_or(1.0, |v| v.transform.scale * ui.ctx().pixels_per_point());
+            let px = if (px - px.round()).abs() < 1e-3 {
+                format!("{}", px.round())
+            } else {
+                format!("{px:.2}")
+            };
             ui.label(format!(
-                "{} {}×{} {} {}×",
+                "{} {}×{} {} {px}×",
                 text::CANVAS,
                 out.size[0],
                 out.size[1],
                 text::AT,
-                state.view.pixel_size
             ));
             ui.separator();
         }
