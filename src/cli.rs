@@ -1,14 +1,17 @@
 //! Command-line parsing and the headless commands.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Instant;
 
-use anyhow::{Context, Result, bail};
+use anyhow::Result;
 use barylab::probe::format::Format;
 use barylab::raster::{self, Filter, Interpolation, Shading};
 use barylab::scene::Scene;
 use clap::{Parser, Subcommand, ValueEnum};
+
+use crate::output::{self, note, print};
+
+mod commands;
 
 const EXAMPLES: &str = "\
 Examples:
@@ -52,6 +55,16 @@ struct Cli {
     /// Start with this pixel of the image pinned (e.g. for a --screenshot).
     #[arg(long, value_parser = parse_pixel, value_name = "X,Y")]
     pin: Option<(u32, u32)>,
+    /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
+    /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
+    #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
+    memory_limit: Option<u64>,
+}
+
+/// Parses a memory size such as 2G, 512M or 1000000.
+fn parse_memory(s: &str) -> Result<u64, String> {
+    barylab::budget::parse_size(s)
+        .ok_or_else(|| format!("`{s}` is not a memory size like 2G, 512M or 1000000"))
 }
 
 #[derive(Subcommand, Debug)]
@@ -215,7 +228,7 @@ struct BenchArgs {
     /// Scene (default: assets/scenes/bench-1080p.json if present, else the built-in default).
     scene: Option<PathBuf>,
     /// Image size as WIDTHxHEIGHT (default: the scene's).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, allow_hyphen_values = true)]
     size: Option<(u32, u32)>,
     /// Frames rendered per configuration; the median is reported.
     #[arg(long, default_value_t = 9, value_parser = clap::value_parser!(u32).range(1..=10000))]
@@ -223,15 +236,6 @@ struct BenchArgs {
     /// Print a JSON array of records instead of a table.
     #[arg(long)]
     json: bool,
-}
-
-/// A thread pool of `n` workers (or rayon's default when `None`).
-fn pool(threads: Option<u16>) -> Result<rayon::ThreadPool> {
-    let mut b = rayon::ThreadPoolBuilder::new();
-    if let Some(n) = threads {
-        b = b.num_threads(usize::from(n));
-    }
-    b.build().context("cannot start worker threads")
 }
 
 #[derive(clap::Args, Debug)]
@@ -257,7 +261,7 @@ struct SceneOptions {
     #[arg(long)]
     mode: Option<ModeArg>,
     /// Image size as WIDTHxHEIGHT, e.g. 800x600 (default: the scene's).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, allow_hyphen_values = true)]
     size: Option<(u32, u32)>,
     /// Texture filter (default: the scene's); trilinear uses mipmaps.
     #[arg(long)]
@@ -268,30 +272,6 @@ struct SceneOptions {
     /// Overlay the triangles' edges (threshold on the smallest weight).
     #[arg(long)]
     wireframe: bool,
-}
-
-/// Loads the input, its texture (printing any notes) and the settings with the options applied.
-fn prepare(o: &SceneOptions) -> Result<(Scene, raster::Texture, raster::RenderSettings)> {
-    let (mut scene, base_dir) = load_input(&o.scene)?;
-    if let Some((w, h)) = o.size {
-        scene.set_size(w, h);
-    }
-    let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
-    for note in scene.notes().iter().chain(&texture_notes) {
-        eprintln!("note: {note}");
-    }
-    let mut settings = scene.settings();
-    if let Some(m) = o.mode {
-        settings.mode = m.into();
-    }
-    if let Some(f) = o.filter {
-        settings.filter = f.into();
-    }
-    if let Some(s) = o.shading {
-        settings.shading = s.into();
-    }
-    settings.wireframe |= o.wireframe;
-    Ok((scene, texture, settings))
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -366,7 +346,7 @@ impl From<ShadingArg> for Shading {
 
 /// Parses "WIDTHxHEIGHT".
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("`{s}` is not a size like 800x600");
+    let bad = || format!("`{s}` is not a size like 800x600 (whole numbers from 1)");
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
     let h: u32 = h.trim().parse().map_err(|_| bad())?;
@@ -393,8 +373,10 @@ fn parse_args() -> Result<Cli, ExitCode> {
         if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion)
             || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
         {
-            let _ = e.print();
-            return ExitCode::SUCCESS;
+            return match print(&e.render().to_string()) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => output::report(&e),
+            };
         }
         // Clap's message is the paragraph before the first blank line; join it into one line.
         let text = e.render().to_string();
@@ -403,7 +385,7 @@ fn parse_args() -> Result<Cli, ExitCode> {
             .take_while(|l| !l.trim().is_empty())
             .map(str::trim)
             .collect();
-        eprintln!("{}", first.join(" "));
+        note!("{}", output::one_line(&first.join(" ")));
         ExitCode::from(2)
     })
 }
@@ -413,19 +395,19 @@ pub fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(code) => return code,
     };
+    if let Some(bytes) = cli.memory_limit {
+        barylab::budget::set_limit(bytes);
+    }
     let result = match cli.command {
         None => app(&cli),
-        Some(Command::Render(args)) => render(&args),
-        Some(Command::Probe(args)) => probe(&args),
-        Some(Command::Bench(args)) => bench(&args),
-        Some(Command::Figure(args)) => figure(&args),
+        Some(Command::Render(args)) => commands::render(&args),
+        Some(Command::Probe(args)) => commands::probe(&args),
+        Some(Command::Bench(args)) => commands::bench(&args),
+        Some(Command::Figure(args)) => commands::figure(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e:#}");
-            ExitCode::FAILURE
-        }
+        Err(e) => output::report(&e),
     }
 }
 
@@ -442,12 +424,15 @@ fn parse_window_size(s: &str) -> Result<(u32, u32), String> {
 
 /// Opens the app.
 fn app(cli: &Cli) -> Result<()> {
+    if let Some(shot) = &cli.screenshot {
+        output::check_output(shot, &["png"])?;
+    }
     let opened = match &cli.scene {
         Some(path) => {
             let opened = barylab::app::files::open(path, &Scene::default_scene())
                 .map_err(anyhow::Error::msg)?;
-            for note in &opened.notes {
-                eprintln!("note: {note}");
+            for n in &opened.notes {
+                note!("note: {n}");
             }
             Some(opened)
         }
@@ -464,174 +449,5 @@ fn app(cli: &Cli) -> Result<()> {
         pin: cli.pin.map(|(x, y)| [x, y]),
     };
     barylab::app::run(options)?;
-    Ok(())
-}
-
-/// Prints one note per reason for triangles that were not drawn, naming the first few.
-fn report_skipped(triangles: &[raster::render::PreparedTriangle]) {
-    use raster::render::TriangleStatus as S;
-    const LISTED: usize = 8;
-    for status in [S::BadIndex, S::NotFinite, S::ClippedAway, S::Empty] {
-        let ids: Vec<String> = triangles
-            .iter()
-            .filter(|t| t.status == status)
-            .map(|t| t.source.to_string())
-            .collect();
-        if ids.is_empty() {
-            continue;
-        }
-        let more = if ids.len() > LISTED { ", ..." } else { "" };
-        let shown = ids[..ids.len().min(LISTED)].join(", ");
-        let noun = if ids.len() == 1 {
-            "triangle"
-        } else {
-            "triangles"
-        };
-        eprintln!(
-            "note: {} {noun} not drawn ({shown}{more}): {}",
-            ids.len(),
-            status.describe()
-        );
-    }
-}
-
-fn bench(args: &BenchArgs) -> Result<()> {
-    let default_path = Path::new("assets/scenes/bench-1080p.json");
-    let (mut scene, base_dir) = match &args.scene {
-        Some(p) => load_input(p)?,
-        None if default_path.exists() => load_input(default_path)?,
-        None => (Scene::default_scene(), PathBuf::new()),
-    };
-    if let Some((w, h)) = args.size {
-        scene.set_size(w, h);
-    }
-    let texture = scene.load_texture(&base_dir)?;
-    let mesh = scene.to_mesh();
-    let base = scene.settings();
-    let records = barylab::bench::matrix(barylab::bench::available_cores())
-        .into_iter()
-        .map(|config| barylab::bench::run_config(&mesh, &texture, &base, config, args.frames))
-        .collect::<Result<Vec<_>, _>>()?;
-    if args.json {
-        println!("{}", serde_json::to_string_pretty(&records)?);
-    } else {
-        print!("{}", barylab::bench::text_table(&records));
-    }
-    Ok(())
-}
-
-/// Loads what the user named: a scene file, an OBJ model or an image
-/// ([`barylab::scene::open_input`], shared with the app).
-pub fn load_input(path: &Path) -> Result<(Scene, PathBuf)> {
-    Ok(barylab::scene::open_input(path)?)
-}
-
-fn render(args: &RenderArgs) -> Result<()> {
-    let (scene, texture, mut settings) = prepare(&args.input)?;
-    settings.rasterizer = args.rasterizer.into();
-    let mesh = scene.to_mesh();
-    let workers = pool(args.threads)?;
-    let start = Instant::now();
-    let out = workers.install(|| raster::render(&mesh, &texture, &settings))?;
-    let ms = start.elapsed().as_secs_f64() * 1e3;
-    let ext = args
-        .output
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    if ext.as_deref() != Some("png") {
-        bail!("output {} must be a .png file", args.output.display());
-    }
-    out.frame
-        .to_image()
-        .save(&args.output)
-        .with_context(|| format!("cannot write {}", args.output.display()))?;
-    if let Some(dir) = &args.aov {
-        barylab::aov::write_aovs(dir, &out.frame, settings.mode)?;
-    }
-    report_skipped(&out.triangles);
-    let drawn = out
-        .triangles
-        .iter()
-        .filter(|t| t.status == raster::render::TriangleStatus::Drawn)
-        .count();
-    println!(
-        "rendered {}x{} ({:?}, {} of {} triangles drawn) in {:.2} ms -> {}",
-        settings.width,
-        settings.height,
-        settings.mode,
-        drawn,
-        out.triangles.len(),
-        ms,
-        args.output.display()
-    );
-    Ok(())
-}
-
-fn probe(args: &ProbeArgs) -> Result<()> {
-    let (scene, texture, settings) = prepare(&args.input)?;
-    let (x, y) = args.pixel;
-    let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
-        .with_context(|| args.input.scene.display().to_string())?;
-    print!(
-        "{}",
-        barylab::probe::format::write(&trace, args.format.into())
-    );
-    Ok(())
-}
-
-fn figure(args: &FigureArgs) -> Result<()> {
-    use barylab::figure::{Background, Figure, FigureOptions, png, svg};
-    let ext = args
-        .output
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    let svg_out = match ext.as_deref() {
-        Some("svg") => true,
-        Some("png") => false,
-        _ => bail!(
-            "output {} must be a .png or .svg file",
-            args.output.display()
-        ),
-    };
-    let (mut scene, texture, settings) = prepare(&args.input)?;
-    // The figure draws the scene as it is: the options become the scene's own.
-    barylab::app::edit::set_options(
-        &mut scene,
-        barylab::app::edit::SceneOptions {
-            mode: settings.mode,
-            shading: settings.shading,
-            filter: settings.filter,
-            wireframe: settings.wireframe,
-        },
-    );
-    let options = FigureOptions {
-        compare: args.compare.into(),
-        pixel_size: args.pixel_size,
-        wipe: args.wipe,
-        show_grid: !args.no_grid,
-        show_handles: !args.no_handles,
-        show_sub_areas: !args.no_sub_areas,
-        pinned: args.pixel.map(|(x, y)| [x, y]),
-        hovered: args.hover.map(|(x, y)| [x, y]),
-        scale: args.scale,
-        background: match args.background {
-            BackgroundArg::Transparent => Background::Transparent,
-            BackgroundArg::White => Background::White,
-        },
-        overlay_scale: args.overlay_scale,
-    };
-    let fig = Figure::compose(&scene, &texture, &options)
-        .with_context(|| args.input.scene.display().to_string())?;
-    let bytes = if svg_out {
-        svg::to_svg(&fig)?.into_bytes()
-    } else {
-        png::to_png(&fig)?
-    };
-    std::fs::write(&args.output, bytes)
-        .with_context(|| format!("cannot write {}", args.output.display()))?;
-    let [w, h] = fig.pixel_dimensions();
-    println!("figure {w}x{h} -> {}", args.output.display());
     Ok(())
 }

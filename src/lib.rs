@@ -7,12 +7,16 @@
 //! - [`bench`](mod@bench): timing the rasterizers (`barylab bench`, the app's benchmark panel).
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 //! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
+//! - [`files`]: reading only regular files with size caps, atomic writes, paths in messages.
+//! - [`budget`]: the memory budget checked before large allocations.
 //! - [`app`]: the classroom app (egui); the modules above never use egui.
 
 pub mod aov;
 pub mod app;
 pub mod bench;
+pub mod budget;
 pub mod figure;
+pub mod files;
 pub mod model;
 pub mod probe;
 pub mod raster;

@@ -4,15 +4,24 @@ use std::path::{Path, PathBuf};
 
 use glam::{DVec3, Vec2, Vec3};
 
+use crate::budget::{self, MemoryError};
+use crate::files::{self, FileKind, ReadError};
+
 /// Largest accepted |coordinate| in a model file. Beyond this the f32 positions of the file
 /// have too little precision for a classroom-sized view, and framing the camera fails.
 pub const MAX_MODEL_COORD: f64 = 1e6;
 
+/// The note for a model without texture coordinates (after its name); the scene adds what
+/// that means for its shading.
+pub const NO_UV: &str = "has no texture coordinates (vt) on every face";
+
 /// Errors while loading a model. Each names the file.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelError {
-    #[error("cannot read model {path}: {cause}")]
-    Read { path: String, cause: std::io::Error },
+    #[error(transparent)]
+    File(#[from] ReadError),
+    #[error(transparent)]
+    Memory(#[from] MemoryError),
     #[error("model {path} is empty (0 bytes)")]
     EmptyFile { path: String },
     #[error("cannot load model {path}: {reason}")]
@@ -63,28 +72,56 @@ pub struct ModelMesh {
 }
 
 impl ModelMesh {
-    /// Reads an OBJ file, triangulating polygons.
+    /// Reads an OBJ file, triangulating polygons. Only regular files are read (the OBJ, its
+    /// MTL), each up to its size cap; the memory it will need is checked first.
     pub fn load(path: &Path) -> Result<Self, ModelError> {
-        let shown = path.display().to_string();
-        let meta = std::fs::metadata(path).map_err(|cause| ModelError::Read {
-            path: shown.clone(),
-            cause,
-        })?;
-        if meta.len() == 0 {
+        let shown = files::shown(path);
+        // The memory the model will take, before its text is read.
+        if let Ok(meta) = std::fs::metadata(path)
+            && meta.is_file()
+        {
+            budget::check(
+                || format!("model {shown} ({})", files::bytes(meta.len())),
+                meta.len().saturating_mul(budget::MODEL_BYTES_PER_FILE_BYTE),
+            )?;
+        }
+        let bytes = files::read_regular(path, FileKind::Model)?;
+        if bytes.is_empty() {
             return Err(ModelError::EmptyFile { path: shown });
         }
-        let (models, materials) =
-            tobj::load_obj(path, &tobj::GPU_LOAD_OPTIONS).map_err(|e| ModelError::Parse {
-                path: shown.clone(),
-                reason: explain(&e),
-            })?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        Self::from_obj(files::strip_bom(&bytes), &shown, &dir)
+    }
+
+    /// Parses OBJ text; `shown` names it in messages, and its MTL and texture paths are
+    /// relative to `dir`.
+    pub fn from_obj(bytes: &[u8], shown: &str, dir: &Path) -> Result<Self, ModelError> {
+        let shown = shown.to_string();
+        // tobj's loader gives no reason for a failed MTL: keep ours for the note.
+        let mtl_error = std::cell::RefCell::new(None::<String>);
+        let load_mtl = |name: &Path| match files::read_regular(&dir.join(name), FileKind::Material)
+        {
+            Ok(text) => tobj::load_mtl_buf(&mut files::strip_bom(&text)),
+            Err(e) => {
+                mtl_error.replace(Some(e.to_string()));
+                Err(tobj::LoadError::OpenFileFailed)
+            }
+        };
+        let (models, materials) =
+            tobj::load_obj_buf(&mut &bytes[..], &tobj::GPU_LOAD_OPTIONS, load_mtl).map_err(
+                |e| ModelError::Parse {
+                    path: shown.clone(),
+                    reason: explain(&e),
+                },
+            )?;
+        let dir = dir.to_path_buf();
         let mut out = ModelMesh::default();
         let materials = match materials {
             Ok(m) => m,
             Err(e) => {
+                let why = mtl_error.take().unwrap_or_else(|| explain(&e));
                 out.notes.push(format!(
-                    "the material library (mtllib) of {shown} could not be loaded ({e}); \
+                    "the material library (mtllib) of {shown} could not be loaded ({why}); \
                      drawing without materials"
                 ));
                 Vec::new()
@@ -151,9 +188,8 @@ impl ModelMesh {
         }
         out.has_uv = all_have_uv;
         if !all_have_uv {
-            out.notes.push(format!(
-                "{shown} has no texture coordinates (vt) on every face; shading by vertex colour"
-            ));
+            // What this means depends on the shading chosen later: see `Scene::notes_for`.
+            out.notes.push(format!("{shown} {NO_UV}"));
         }
         Ok(out)
     }

@@ -13,18 +13,25 @@ use std::sync::Arc;
 use glam::{DMat4, DVec3, DVec4, Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
+use crate::budget::{self, MemoryError};
+use crate::files::{self, FileKind, ReadError, shown};
 use crate::model::{ModelError, ModelMesh};
 use crate::raster::camera::{Camera, CameraError, Projection};
 use crate::raster::project::MAX_IMAGE_SIZE;
 use crate::raster::render::{ClipMesh, DEFAULT_BACKGROUND, MeshVertex, RenderSettings};
 use crate::raster::texture::{BuiltinTexture, Filter, Texture, TextureError, Wrap};
 use crate::raster::{Interpolation, Shading};
+use json::{parse_error, strict};
+
+mod json;
 
 /// Errors while reading or checking a scene.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    #[error("cannot read scene {path}: {cause}")]
-    Read { path: String, cause: std::io::Error },
+    #[error(transparent)]
+    File(#[from] ReadError),
+    #[error(transparent)]
+    Memory(#[from] MemoryError),
     #[error("{path}:{line}:{column}: {field}{message}")]
     Parse {
         path: String,
@@ -53,6 +60,23 @@ pub enum SceneError {
 pub const MAX_SUBDIVIDED_TRIANGLES: u64 = 4_000_000;
 
 pub const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
+
+/// The name of mesh vertex `index`, the same in the derivation, the figures and the app: A, B,
+/// C, ..., Z, then `V26`, `V27`, ... (a world quad's corners are A, B, C, D).
+///
+/// ```
+/// use barylab::scene::vertex_name;
+/// assert_eq!(vertex_name(0), "A");
+/// assert_eq!(vertex_name(6), "G");
+/// assert_eq!(vertex_name(25), "Z");
+/// assert_eq!(vertex_name(26), "V26");
+/// ```
+pub fn vertex_name(index: usize) -> String {
+    match u8::try_from(index) {
+        Ok(i) if i < 26 => char::from(b'A' + i).to_string(),
+        _ => format!("V{index}"),
+    }
+}
 
 /// What a file given in place of a scene is, by its extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -105,9 +129,7 @@ pub fn open_input(path: &Path) -> Result<(Scene, PathBuf), SceneError> {
             Scene::load(path)?,
             path.parent().map(Path::to_path_buf).unwrap_or_default(),
         )),
-        None => Err(SceneError::UnknownKind {
-            path: path.display().to_string(),
-        }),
+        None => Err(SceneError::UnknownKind { path: shown(path) }),
     }
 }
 
@@ -291,6 +313,7 @@ pub enum Scene {
 
 /// Decides the form before the strict parse, so errors name the right fields.
 #[derive(Deserialize)]
+#[serde(expecting = "a scene: a JSON object with `quad`, `vertices` or `model`")]
 struct FormProbe {
     #[serde(default)]
     quad: Option<serde::de::IgnoredAny>,
@@ -300,41 +323,21 @@ struct FormProbe {
     model: Option<serde::de::IgnoredAny>,
 }
 
-/// Strips serde_json's " at line L column C" suffix (we print the position in front).
-fn bare_message(e: &serde_json::Error) -> String {
-    let s = e.to_string();
-    match s.rfind(" at line ") {
-        Some(i) => s[..i].to_string(),
-        None => s,
-    }
-}
-
-fn parse_error(path: &str, e: serde_json::Error, field: String) -> SceneError {
-    SceneError::Parse {
-        path: path.to_string(),
-        line: e.line(),
-        column: e.column(),
-        field: if field.is_empty() || field == "." {
-            String::new()
-        } else {
-            format!("field `{field}`: ")
-        },
-        message: bare_message(&e),
-    }
-}
-
-fn strict<T: serde::de::DeserializeOwned>(text: &str, path: &str) -> Result<T, SceneError> {
-    let de = &mut serde_json::Deserializer::from_str(text);
-    let value: T = serde_path_to_error::deserialize(de).map_err(|e| {
-        let field = e.path().to_string();
-        parse_error(path, e.into_inner(), field)
-    })?;
-    Ok(value)
-}
-
 impl Scene {
-    /// Parses a scene from JSON text; `path` names it in errors.
+    /// Parses a scene from JSON text; `path` names it in errors, and a model path in the scene
+    /// is relative to its folder.
     pub fn from_json(text: &str, path: &str) -> Result<Self, SceneError> {
+        Self::parse(
+            text,
+            path,
+            Path::new(path).parent().unwrap_or(Path::new("")),
+        )
+    }
+
+    /// Parses a scene from JSON text (a leading byte order mark is ignored); `path` names it
+    /// in errors; a model path is relative to `dir`.
+    fn parse(text: &str, path: &str, dir: &Path) -> Result<Self, SceneError> {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let probe: FormProbe =
             serde_json::from_str(text).map_err(|e| parse_error(path, e, String::new()))?;
         let forms = [
@@ -347,7 +350,6 @@ impl Scene {
             [false, true, false] => Scene::Clip(strict(text, path)?),
             [false, false, true] => {
                 let mut s: ModelScene = strict(text, path)?;
-                let dir = Path::new(path).parent().unwrap_or(Path::new(""));
                 s.mesh = Arc::new(ModelMesh::load(&resolve(dir, &s.model))?);
                 Scene::Model(s)
             }
@@ -370,12 +372,20 @@ impl Scene {
 
     /// Reads and parses a scene file.
     pub fn load(path: &Path) -> Result<Self, SceneError> {
-        let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|cause| SceneError::Read {
-            path: shown.clone(),
-            cause,
+        let bytes = files::read_regular(path, FileKind::Scene)?;
+        let name = shown(path);
+        budget::check(
+            || format!("scene {name} ({})", files::bytes(bytes.len() as u64)),
+            bytes.len() as u64 * budget::SCENE_BYTES_PER_FILE_BYTE,
+        )?;
+        let text = std::str::from_utf8(&bytes).map_err(|e| {
+            invalid(
+                &name,
+                &format!("is not UTF-8 text (bad byte at offset {})", e.valid_up_to()),
+            )
         })?;
-        Self::from_json(&text, &shown)
+        // The directory the model path resolves against is the file's, not the shown name's.
+        Self::parse(text, &name, path.parent().unwrap_or(Path::new("")))
     }
 
     /// The scene as pretty JSON (the form it was read in).
@@ -478,12 +488,49 @@ impl Scene {
         scene
     }
 
-    /// Things the user should be told about the scene that did not stop it loading.
-    pub fn notes(&self) -> Vec<String> {
-        match self {
-            Scene::Model(s) => s.mesh.notes.clone(),
-            _ => Vec::new(),
+    /// The files the scene reads besides the scene file itself: its texture image (unless
+    /// built in) and its model, resolved against `base_dir`.
+    pub fn input_files(&self, base_dir: &Path) -> Vec<PathBuf> {
+        let mut files = Vec::new();
+        if let Scene::Model(s) = self {
+            files.push(resolve(base_dir, &s.model));
         }
+        let texture = self.texture_name();
+        if BuiltinTexture::from_name(texture).is_none() {
+            files.push(resolve(base_dir, texture));
+        }
+        files
+    }
+
+    /// Things the user should be told about the scene that did not stop it loading, for the
+    /// scene's own shading.
+    pub fn notes(&self) -> Vec<String> {
+        self.notes_for(self.settings().shading)
+    }
+
+    /// Like [`Scene::notes`], for the shading it is drawn with (the command line may choose
+    /// another): a model without texture coordinates says what that shading shows.
+    pub fn notes_for(&self, shading: Shading) -> Vec<String> {
+        let Scene::Model(s) = self else {
+            return Vec::new();
+        };
+        s.mesh
+            .notes
+            .iter()
+            .map(|n| {
+                if !n.ends_with(crate::model::NO_UV) {
+                    return n.clone();
+                }
+                let meaning = match shading {
+                    Shading::Texture => {
+                        "; the texture shows as one colour (every vertex has uv (0, 0))"
+                    }
+                    Shading::VertexColor => "; shading by vertex colour",
+                    Shading::Barycentric | Shading::Depth => "",
+                };
+                format!("{n}{meaning}")
+            })
+            .collect()
     }
 
     /// The default quad showing an image file as its texture.
@@ -654,6 +701,15 @@ impl Scene {
                 _ => s.triangles.get(i).copied(),
             },
             Scene::Model(s) => s.mesh.triangles.get(i).copied(),
+        }
+    }
+
+    /// The number of vertices and triangles of [`Scene::to_mesh`], without building it.
+    pub fn mesh_size(&self) -> (usize, usize) {
+        match self {
+            Scene::World(_) => (4, 2),
+            Scene::Clip(s) => (s.vertices.len(), s.triangles.len()),
+            Scene::Model(s) => (s.mesh.positions.len(), s.mesh.triangles.len()),
         }
     }
 

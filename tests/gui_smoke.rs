@@ -41,7 +41,11 @@ impl Drop for Xvfb {
     }
 }
 
+/// Held while an Xvfb starts, so tests running in parallel do not pick the same display.
+static STARTING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 fn start_xvfb(xvfb: &Path) -> Xvfb {
+    let _starting = STARTING.lock().unwrap_or_else(|e| e.into_inner());
     let n = free_display();
     let child = Command::new(xvfb)
         .args([

@@ -560,6 +560,22 @@ fn json_has_the_documented_fields() {
         "/detail/attribute/taps_perspective/0/texel",
         "/detail/depth/distance_corrected",
         "/detail/shade/color",
+        // Added for the formatter, which prints only trace fields:
+        "/sample/subpixel",
+        "/sample/edge_function_unit",
+        "/detail/vertices/0/window_fixed/1",
+        "/detail/screen/explicit/beta_numerator_factors/3",
+        "/detail/screen/explicit/gamma_denominator_factors/0",
+        "/detail/screen/cross_product/sub_area_sum",
+        "/detail/screen/cross_product/vectors/3/1/0",
+        "/detail/system/max_difference",
+        "/detail/seen_point/ndc/2",
+        "/detail/seen_point/max_difference",
+        "/detail/seen_point/hit/edges/1/2",
+        "/detail/seen_point/hit/t_numerator",
+        "/detail/seen_point/hit/t_denominator",
+        "/detail/attribute/last_texel/1",
+        "/detail/shade/wire_width_px",
     ] {
         assert!(v.pointer(pointer).is_some(), "missing {pointer}");
     }

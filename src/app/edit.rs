@@ -1,9 +1,9 @@
 //! Scene edits the app makes: moving a vertex under the cursor, pushing it along its view ray,
 //! the render options stored in a scene. No GUI code here.
 
-use glam::{DVec2, DVec3, DVec4};
+use glam::{DMat4, DVec2, DVec3, DVec4};
 
-use crate::raster::camera::{Camera, Projection};
+use crate::raster::camera::{Camera, CameraChain, Projection};
 use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
@@ -29,21 +29,7 @@ pub enum EditError {
     Model,
 }
 
-/// NDC (x, y) of a window position: `x = 2 x_w / W - 1`, `y = 1 - 2 y_w / H`.
-///
-/// ```
-/// use barylab::app::edit::ndc_from_window;
-/// use barylab::raster::project::Viewport;
-/// use glam::DVec2;
-/// let vp = Viewport { width: 8, height: 4 };
-/// assert_eq!(ndc_from_window(DVec2::new(4.0, 0.0), vp), DVec2::new(0.0, 1.0));
-/// ```
-pub fn ndc_from_window(window: DVec2, viewport: Viewport) -> DVec2 {
-    DVec2::new(
-        2.0 * window.x / f64::from(viewport.width) - 1.0,
-        1.0 - 2.0 * window.y / f64::from(viewport.height),
-    )
-}
+pub use crate::raster::project::ndc_from_window;
 
 /// Replaces a world scene's corners by their tilted positions and sets the tilt to zero, so a
 /// corner can be moved without the pivot (the corners' centre) moving the others.
@@ -79,16 +65,14 @@ pub fn move_vertex_to(
     match scene {
         Scene::World(s) => {
             let corner = s.quad.get_mut(index).ok_or(EditError::NoVertex(index))?;
-            let view_from_world = s.camera.view_from_world();
-            let view_from_clip = s.camera.clip_from_view(aspect).inverse();
-            let view = view_from_world.transform_point3(corner.position);
+            let chain = CameraChain::new(&s.camera, DMat4::IDENTITY, aspect);
+            let view = chain.view_from_world.transform_point3(corner.position);
             // The view ray through the target: unproject the NDC point at the near and far
             // planes, then intersect with the plane z_view = const through the vertex.
-            let near = view_from_clip.project_point3(DVec3::new(ndc.x, ndc.y, -1.0));
-            let far = view_from_clip.project_point3(DVec3::new(ndc.x, ndc.y, 1.0));
+            let (near, far) = (chain.unproject(ndc, -1.0), chain.unproject(ndc, 1.0));
             let t = (view.z - near.z) / (far.z - near.z);
             let moved_view = near + t * (far - near);
-            let world = view_from_world.inverse().transform_point3(moved_view);
+            let world = chain.world_from_view_point(moved_view);
             if !world.is_finite() {
                 return Err(EditError::NotFinite);
             }

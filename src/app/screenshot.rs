@@ -115,7 +115,7 @@ impl StartupShot {
 /// Writes a screenshot as PNG, replacing the file.
 fn save(image: &egui::ColorImage, path: &Path) -> Result<(), String> {
     let bytes = png_bytes(image)?;
-    std::fs::write(path, bytes).map_err(|e| format!("cannot write {}: {e}", path.display()))
+    crate::files::write_bytes(path, &bytes).map_err(|e| e.to_string())
 }
 
 /// What became of a `--screenshot` once the window has closed.

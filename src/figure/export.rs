@@ -2,7 +2,6 @@
 //! Markdown and LaTeX, and the scene file that reproduces the figure. Names are fresh
 //! (`figure-001.png`, `figure-002.png`, ...): nothing is ever overwritten.
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::{Figure, FigureError, png, svg};
@@ -37,11 +36,11 @@ impl Default for ExportSelection {
 pub enum ExportError {
     #[error("cannot use folder {path}: {cause}")]
     Folder { path: String, cause: std::io::Error },
-    #[error("cannot write {path}: {cause}")]
-    Write { path: String, cause: std::io::Error },
+    #[error(transparent)]
+    Write(#[from] crate::files::WriteError),
     #[error("no free file name {stem}-001 ... {stem}-{last} in {folder}", last = MAX_NUMBER)]
     NoFreeName { stem: String, folder: String },
-    #[error("{0}")]
+    #[error(transparent)]
     Figure(#[from] FigureError),
 }
 
@@ -63,31 +62,22 @@ pub fn fresh_stem(folder: &Path, stem: &str, extensions: &[&str]) -> Result<Stri
         })
         .ok_or_else(|| ExportError::NoFreeName {
             stem: stem.to_string(),
-            folder: folder.display().to_string(),
+            folder: crate::files::shown(folder),
         })
 }
 
 /// Creates `folder` (and its parents) if needed; the error names it.
 pub fn prepare_folder(folder: &Path) -> Result<(), ExportError> {
     std::fs::create_dir_all(folder).map_err(|cause| ExportError::Folder {
-        path: folder.display().to_string(),
+        path: crate::files::shown(folder),
         cause,
     })
 }
 
-/// Writes `bytes` to a new file; fails (never overwrites) if it exists.
+/// Writes `bytes` to a new file, atomically (a temporary file renamed into place); fails
+/// (never overwrites) if it exists.
 pub fn write_new(path: &Path, bytes: &[u8]) -> Result<(), ExportError> {
-    let err = |cause| ExportError::Write {
-        path: path.display().to_string(),
-        cause,
-    };
-    let mut f = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)
-        .map_err(err)?;
-    f.write_all(bytes).map_err(err)?;
-    f.sync_all().map_err(err)
+    Ok(crate::files::write_new(path, bytes)?)
 }
 
 /// The scene file of a figure: `scene` (sized as rendered) with its texture and model paths

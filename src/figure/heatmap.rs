@@ -2,8 +2,10 @@
 //! texture coordinates of each pixel are. Reads the framebuffer (which holds both); no GUI code.
 
 use crate::raster::Framebuffer;
+use crate::raster::texture::texel_offset;
 
-/// One pixel's difference in texels: `|((u_a - u_p) W, (v_a - v_p) H)|` for a W x H texture.
+/// One pixel's difference in texels: the length of [`texel_offset`],
+/// `|((u_a - u_p) W, (v_a - v_p) H)|` for a W x H texture, in `f32`.
 ///
 /// ```
 /// use barylab::figure::heatmap::texel_difference;
@@ -12,8 +14,7 @@ use crate::raster::Framebuffer;
 /// assert!((d - 5.0).abs() < 1e-4);
 /// ```
 pub fn texel_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: (u32, u32)) -> f32 {
-    let du = (uv_affine[0] - uv_perspective[0]) * size.0 as f32;
-    let dv = (uv_affine[1] - uv_perspective[1]) * size.1 as f32;
+    let [du, dv] = texel_offset(uv_affine, uv_perspective, [size.0 as f32, size.1 as f32]);
     (du * du + dv * dv).sqrt()
 }
 

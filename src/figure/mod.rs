@@ -17,6 +17,7 @@
 //! rendered pixels are the subject, so they stay the scene's pixels, drawn as
 //! `s * pixel_size` square PNG pixels each.
 
+pub mod bounds;
 pub mod export;
 pub mod heatmap;
 pub mod overlay;
@@ -351,12 +352,32 @@ pub enum FigureError {
          use a smaller scale, pixel size or image size"
     )]
     TooLarge { width: u64, height: u64 },
-    #[error("{0}")]
+    #[error(transparent)]
     Probe(#[from] ProbeError),
-    #[error("render failed: {0}")]
+    #[error(transparent)]
     Render(#[from] RenderError),
+    #[error(transparent)]
+    Memory(#[from] crate::budget::MemoryError),
     #[error("cannot draw the figure: {0}")]
     Draw(String),
+}
+
+/// Checks the memory a figure needs before it is made: `renders` renders of `size` pixels
+/// with every buffer, the probe's set-up triangles, and the figure's `pixels` (the canvas,
+/// each view's raster, the overlay, the output image).
+fn figure_fits(
+    mesh: &crate::raster::ClipMesh,
+    size: [u32; 2],
+    renders: usize,
+    pixels: [u64; 2],
+) -> Result<(), crate::budget::MemoryError> {
+    use crate::budget::{FIGURE_BYTES_PER_PIXEL, check, render_need};
+    use crate::raster::Buffers;
+    let (v, t) = (mesh.vertices.len(), mesh.triangles.len());
+    let need = renders as u64 * render_need(size[0], size[1], Buffers::All, v, t)
+        + render_need(0, 0, Buffers::All, v, t)
+        + pixels[0] * pixels[1] * FIGURE_BYTES_PER_PIXEL;
+    check(|| format!("a {}x{} figure", pixels[0], pixels[1]), need)
 }
 
 /// One view of a figure.
@@ -440,20 +461,28 @@ impl Figure {
             });
         }
 
-        // The traces, on the scene at its own size, in its mode (as the inspector shows them).
-        let prober = Prober::new(scene, texture, &settings)?;
-        let trace = |p: Option<[u32; 2]>| p.map(|[x, y]| prober.pixel(x, y)).transpose();
-        let pinned = trace(o.pinned)?;
-        let hovered = trace(o.hovered)?;
-
         // The renders, again at the scale when the pixel size is 1.
         let multiple = if o.pixel_size == 1 { o.scale } else { 1 };
         let upscale = o.pixel_size * o.scale / multiple;
         let mut hi = scene.clone();
         hi.set_size(w * multiple, h * multiple);
         let mesh = hi.to_mesh();
+        let modes = modes_for(o.compare, mode);
+        figure_fits(
+            &mesh,
+            [w * multiple, h * multiple],
+            modes.len(),
+            [px_w, px_h],
+        )?;
+
+        // The traces, on the scene at its own size, in its mode (as the inspector shows them).
+        let prober = Prober::new(scene, texture, &settings)?;
+        let trace = |p: Option<[u32; 2]>| p.map(|[x, y]| prober.pixel(x, y)).transpose();
+        let pinned = trace(o.pinned)?;
+        let hovered = trace(o.hovered)?;
+
         let mut renders: Vec<(Interpolation, Render)> = Vec::new();
-        for m in modes_for(o.compare, mode) {
+        for m in modes {
             let s = RenderSettings {
                 mode: m,
                 ..hi.settings()

@@ -11,6 +11,8 @@
 use glam::DVec2;
 
 use crate::raster::Interpolation;
+/// Vertex names, shared with the derivation: A, B, C, ..., Z, then V26, ...
+pub use crate::scene::vertex_name;
 
 /// sRGB colour with straight (unmultiplied) alpha.
 pub type Rgba = [u8; 4];
@@ -68,15 +70,6 @@ mod text {
     pub const PERSPECTIVE: &str = "PERSPECTIVE-CORRECT";
     pub const DIFFERENCE: &str = "|uv affine − uv perspective| in texels";
     pub const BEHIND: &str = "behind the camera";
-}
-
-/// The name of a mesh vertex: A, B, C, ... then V6, V7, ...
-pub fn vertex_name(index: usize) -> String {
-    const LETTERS: &[u8] = b"ABCDEF";
-    match LETTERS.get(index) {
-        Some(&c) => char::from(c).to_string(),
-        None => format!("V{index}"),
-    }
 }
 
 /// The colour of mesh vertex `index`.
@@ -619,9 +612,16 @@ fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVec2) {
     });
 }
 
-/// A w value for labels: three significant digits.
+/// Magnitude of w from which labels use scientific notation: up to it, a label is at most
+/// six digits.
+pub const SCIENTIFIC_W: f64 = 1e6;
+
+/// A w value for labels: three significant digits; scientific notation from
+/// [`SCIENTIFIC_W`] on (a vertex near the eye plane has a w like 3.5e38).
 pub fn format_w(w: f64) -> String {
-    if w.abs() >= 100.0 {
+    if w.abs() >= SCIENTIFIC_W {
+        format!("{w:.2e}")
+    } else if w.abs() >= 100.0 {
         format!("{w:.0}")
     } else if w.abs() >= 10.0 {
         format!("{w:.1}")

@@ -105,7 +105,7 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
             };
             overlay(
                 &mut s,
-                &v.overlay,
+                &super::bounds::bounded(&v.overlay, figure.canvas_size),
                 t,
                 v.clip,
                 &format!("image{i}"),

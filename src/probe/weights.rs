@@ -30,6 +30,15 @@ pub struct ExplicitFormula {
     pub gamma_denominator: f64,
     /// `[alpha, beta, gamma]`.
     pub weights: [f64; 3],
+    /// The four differences of `N_beta = f_0 f_1 - f_2 f_3`:
+    /// `[y_P - y_A, x_C - x_A, x_P - x_A, y_C - y_A]`.
+    pub beta_numerator_factors: [f64; 4],
+    /// Of `D_beta`: `[y_B - y_A, x_C - x_A, x_B - x_A, y_C - y_A]`.
+    pub beta_denominator_factors: [f64; 4],
+    /// Of `N_gamma`: `[y_P - y_A, x_B - x_A, x_P - x_A, y_B - y_A]`.
+    pub gamma_numerator_factors: [f64; 4],
+    /// Of `D_gamma`: `[y_C - y_A, x_B - x_A, x_C - x_A, y_B - y_A]`.
+    pub gamma_denominator_factors: [f64; 4],
 }
 
 /// Barycentric weights of `p` in the triangle `v = [A, B, C]` by the explicit formula of
@@ -51,10 +60,18 @@ pub struct ExplicitFormula {
 /// ```
 pub fn explicit_formula(p: DVec2, v: [DVec2; 3]) -> Option<ExplicitFormula> {
     let [a, b, c] = v;
-    let beta_numerator = (p.y - a.y) * (c.x - a.x) - (p.x - a.x) * (c.y - a.y);
-    let beta_denominator = (b.y - a.y) * (c.x - a.x) - (b.x - a.x) * (c.y - a.y);
-    let gamma_numerator = (p.y - a.y) * (b.x - a.x) - (p.x - a.x) * (b.y - a.y);
-    let gamma_denominator = (c.y - a.y) * (b.x - a.x) - (c.x - a.x) * (b.y - a.y);
+    // `[y_Q - y_A, x_U - x_A, x_Q - x_A, y_U - y_A]`, the factors of
+    // `(y_Q - y_A)(x_U - x_A) - (x_Q - x_A)(y_U - y_A)`.
+    let factors = |q: DVec2, u: DVec2| [q.y - a.y, u.x - a.x, q.x - a.x, u.y - a.y];
+    let value = |f: [f64; 4]| f[0] * f[1] - f[2] * f[3];
+    let beta_numerator_factors = factors(p, c);
+    let beta_denominator_factors = factors(b, c);
+    let gamma_numerator_factors = factors(p, b);
+    let gamma_denominator_factors = factors(c, b);
+    let beta_numerator = value(beta_numerator_factors);
+    let beta_denominator = value(beta_denominator_factors);
+    let gamma_numerator = value(gamma_numerator_factors);
+    let gamma_denominator = value(gamma_denominator_factors);
     if beta_denominator == 0.0 || gamma_denominator == 0.0 {
         return None;
     }
@@ -66,6 +83,10 @@ pub fn explicit_formula(p: DVec2, v: [DVec2; 3]) -> Option<ExplicitFormula> {
         gamma_numerator,
         gamma_denominator,
         weights: [1.0 - beta - gamma, beta, gamma],
+        beta_numerator_factors,
+        beta_denominator_factors,
+        gamma_numerator_factors,
+        gamma_denominator_factors,
     })
 }
 
@@ -78,6 +99,11 @@ pub struct AreaWeights {
     pub area: f64,
     /// `[S_A / S, S_B / S, S_C / S]`.
     pub weights: [f64; 3],
+    /// `S_A + S_B + S_C` (equal to `S` up to rounding).
+    pub sub_area_sum: f64,
+    /// The cross-product form only: the vectors `(u, v)` of `S = ½ u x v`, `S_A`, `S_B`,
+    /// `S_C` in that order: `(BC, BA)`, `(BC, BP)`, `(CA, CP)`, `(AB, AP)`.
+    pub vectors: Option<[[[f64; 2]; 2]; 4]>,
 }
 
 /// Weights as ratios of signed areas from 2D cross products:
@@ -101,19 +127,23 @@ pub struct AreaWeights {
 /// ```
 pub fn cross_product_weights(p: DVec2, v: [DVec2; 3]) -> Option<AreaWeights> {
     let [a, b, c] = v;
-    let area = cross2(c - b, a - b) / 2.0;
+    // (u, v) of S, S_A, S_B, S_C: (BC, BA), (BC, BP), (CA, CP), (AB, AP).
+    let vectors = [
+        (c - b, a - b),
+        (c - b, p - b),
+        (a - c, p - c),
+        (b - a, p - a),
+    ];
+    let [area, sub_areas @ ..] = vectors.map(|(u, w)| cross2(u, w) / 2.0);
     if area == 0.0 {
         return None;
     }
-    let sub_areas = [
-        cross2(c - b, p - b) / 2.0,
-        cross2(a - c, p - c) / 2.0,
-        cross2(b - a, p - a) / 2.0,
-    ];
     Some(AreaWeights {
         sub_areas,
         area,
         weights: sub_areas.map(|s| s / area),
+        sub_area_sum: sub_areas[0] + sub_areas[1] + sub_areas[2],
+        vectors: Some(vectors.map(|(u, w)| [u.to_array(), w.to_array()])),
     })
 }
 
@@ -162,6 +192,8 @@ pub fn gl_area_weights(p: DVec2, v: [DVec2; 3]) -> Option<AreaWeights> {
         sub_areas,
         area,
         weights: sub_areas.map(|s| s / area),
+        sub_area_sum: sub_areas[0] + sub_areas[1] + sub_areas[2],
+        vectors: None,
     })
 }
 
@@ -305,6 +337,12 @@ pub const MIN_RAY_PLANE_COSINE: f64 = 1e-9;
 pub struct RayHit {
     /// The plane normal `n = (B - A) x (C - A)`.
     pub normal: [f64; 3],
+    /// `[B - A, C - A]`.
+    pub edges: [[f64; 3]; 2],
+    /// `n.(A - O)`, the numerator of `t`.
+    pub t_numerator: f64,
+    /// `n.d`, the denominator of `t`.
+    pub t_denominator: f64,
     /// The ray parameter of the hit, `t = n.(A - O) / n.d`.
     pub t: f64,
     /// The point `O + t d`.
@@ -339,7 +377,8 @@ pub fn ray_triangle(origin: DVec3, dir: DVec3, tri: [DVec3; 3]) -> Option<RayHit
     if nn.is_nan() || nn <= 0.0 || nd.is_nan() || grazing {
         return None;
     }
-    let t = n.dot(a - origin) / nd;
+    let t_numerator = n.dot(a - origin);
+    let t = t_numerator / nd;
     let p = origin + dir * t;
     let weights = [
         n.dot((b - p).cross(c - p)) / nn,
@@ -348,6 +387,9 @@ pub fn ray_triangle(origin: DVec3, dir: DVec3, tri: [DVec3; 3]) -> Option<RayHit
     ];
     Some(RayHit {
         normal: n.to_array(),
+        edges: [(b - a).to_array(), (c - a).to_array()],
+        t_numerator,
+        t_denominator: nd,
         t,
         point: p.to_array(),
         weights,

@@ -6,8 +6,10 @@
 
 use glam::dcamera::rh::proj::opengl;
 use glam::dcamera::rh::view;
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec2, DVec3, DVec4};
 use serde::{Deserialize, Serialize};
+
+use crate::files::number;
 
 /// Errors for cameras that cannot form a valid projection.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -16,15 +18,26 @@ pub enum CameraError {
     EyeIsTarget,
     #[error("the camera's up vector is zero or parallel to the viewing direction")]
     BadUp,
-    #[error("field of view {0} degrees is outside (0, 180)")]
+    #[error("field of view {} degrees is outside (0, 180)", number(*.0))]
     BadFov(f64),
-    #[error("near plane {near} and far plane {far} must satisfy 0 < near < far")]
+    #[error("near plane {} and far plane {} must satisfy 0 < near < far", number(*near), number(*far))]
     BadPlanes { near: f64, far: f64 },
-    #[error("orthographic height {0} must be positive")]
+    #[error("orthographic height {} must be positive", number(*.0))]
     BadHeight(f64),
     #[error("camera value is not a finite number")]
     NotFinite,
+    #[error(
+        "camera {what} is {}, larger than {} in magnitude",
+        number(*value),
+        number(MAX_CAMERA_VALUE)
+    )]
+    TooLarge { what: &'static str, value: f64 },
 }
+
+/// Largest accepted magnitude of a camera coordinate, near or far plane, or orthographic
+/// height. Far beyond any classroom scene; past it the view and projection matrices square
+/// or multiply values that overflow f64 or leave f32 depth without precision.
+pub const MAX_CAMERA_VALUE: f64 = 1e12;
 
 /// How view space is projected to clip space.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -87,6 +100,19 @@ impl Camera {
         if !finite {
             return Err(CameraError::NotFinite);
         }
+        let large = |what, v: DVec3| -> Result<(), CameraError> {
+            match v
+                .to_array()
+                .into_iter()
+                .find(|c| c.abs() > MAX_CAMERA_VALUE)
+            {
+                Some(value) => Err(CameraError::TooLarge { what, value }),
+                None => Ok(()),
+            }
+        };
+        large("eye", self.eye)?;
+        large("target", self.target)?;
+        large("up", self.up)?;
         let forward = self.target - self.eye;
         if forward.length_squared() == 0.0 {
             return Err(CameraError::EyeIsTarget);
@@ -111,11 +137,23 @@ impl Camera {
                 if !(height > 0.0 && height.is_finite()) {
                     return Err(CameraError::BadHeight(height));
                 }
+                if height > MAX_CAMERA_VALUE {
+                    return Err(CameraError::TooLarge {
+                        what: "orthographic height",
+                        value: height,
+                    });
+                }
                 (near, far)
             }
         };
         if !(near > 0.0 && far > near && far.is_finite()) {
             return Err(CameraError::BadPlanes { near, far });
+        }
+        if far > MAX_CAMERA_VALUE {
+            return Err(CameraError::TooLarge {
+                what: "far plane",
+                value: far,
+            });
         }
         Ok(())
     }
@@ -195,5 +233,84 @@ impl Camera {
     /// The full matrix world -> clip space: `clip_from_view * view_from_world`.
     pub fn clip_from_world(&self, aspect: f64) -> DMat4 {
         self.clip_from_view(aspect) * self.view_from_world()
+    }
+}
+
+/// A scene's camera chain: object -> world -> view -> clip, each matrix named by what it maps,
+/// and the way back from clip space and NDC to view space. The probe follows vertices and the
+/// pixel's view ray through it; the app moves vertices along it.
+///
+/// ```
+/// use barylab::raster::camera::{Camera, CameraChain, Projection};
+/// use glam::{DMat4, DVec2, DVec3};
+/// let cam = Camera {
+///     eye: DVec3::ZERO, target: DVec3::NEG_Z, up: DVec3::Y,
+///     projection: Projection::Perspective { fov_y_deg: 90.0, near: 1.0, far: 3.0 },
+/// };
+/// let chain = CameraChain::new(&cam, DMat4::IDENTITY, 1.0);
+/// // The centre of the screen looks straight down -z, from the eye.
+/// let (origin, dir) = chain.view_ray(DVec2::ZERO);
+/// assert_eq!(origin, DVec3::ZERO);
+/// assert!((dir - DVec3::new(0.0, 0.0, -1.0)).length() < 1e-12);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraChain {
+    pub world_from_object: DMat4,
+    pub view_from_world: DMat4,
+    pub clip_from_view: DMat4,
+    /// `clip_from_view^-1`.
+    pub view_from_clip: DMat4,
+    /// Whether the projection is a perspective one (else orthographic).
+    pub perspective: bool,
+}
+
+impl CameraChain {
+    /// The chain of `camera` for an image of `aspect` = width / height, with the object's
+    /// placement `world_from_object`.
+    pub fn new(camera: &Camera, world_from_object: DMat4, aspect: f64) -> Self {
+        let clip_from_view = camera.clip_from_view(aspect);
+        Self {
+            world_from_object,
+            view_from_world: camera.view_from_world(),
+            clip_from_view,
+            view_from_clip: clip_from_view.inverse(),
+            perspective: matches!(camera.projection, Projection::Perspective { .. }),
+        }
+    }
+
+    /// World and view position of an object-space point: `world = world_from_object object`,
+    /// `view = view_from_world world`.
+    pub fn world_and_view(&self, object: DVec3) -> (DVec3, DVec3) {
+        let world = self.world_from_object.transform_point3(object);
+        (world, self.view_from_world.transform_point3(world))
+    }
+
+    /// World position of a view-space point: `view_from_world^-1 view`.
+    pub fn world_from_view_point(&self, view: DVec3) -> DVec3 {
+        self.view_from_world.inverse().transform_point3(view)
+    }
+
+    /// View-space position of a clip-space point: `view_from_clip clip`, divided by its w.
+    pub fn view_from_clip_point(&self, clip: DVec4) -> DVec3 {
+        let v = self.view_from_clip * clip;
+        v.truncate() / v.w
+    }
+
+    /// The view-space point at NDC `(x, y, z_ndc)`: [`CameraChain::view_from_clip_point`] of
+    /// `(x, y, z_ndc, 1)` (z_ndc = -1 is the near plane, +1 the far plane).
+    pub fn unproject(&self, ndc: DVec2, z_ndc: f64) -> DVec3 {
+        self.view_from_clip_point(DVec4::new(ndc.x, ndc.y, z_ndc, 1.0))
+    }
+
+    /// The view ray through NDC `(x, y)`, as `(origin, direction)` in view space: from the eye
+    /// at the origin through the point on the near plane (perspective), or from the near-plane
+    /// point to the far-plane point, parallel to -z (orthographic).
+    pub fn view_ray(&self, ndc: DVec2) -> (DVec3, DVec3) {
+        let (near, far) = (self.unproject(ndc, -1.0), self.unproject(ndc, 1.0));
+        if self.perspective {
+            (DVec3::ZERO, near)
+        } else {
+            (near, far - near)
+        }
     }
 }

@@ -91,7 +91,36 @@ pub fn window_from_ndc(ndc: DVec3, viewport: Viewport) -> DVec3 {
     DVec3::new(
         (ndc.x + 1.0) * f64::from(viewport.width) / 2.0,
         (1.0 - ndc.y) * f64::from(viewport.height) / 2.0,
-        (ndc.z + 1.0) / 2.0,
+        window_depth(ndc.z),
+    )
+}
+
+/// Window depth of an NDC depth (the depth range [0, 1]): `d = (z_ndc + 1) / 2`.
+///
+/// ```
+/// use barylab::raster::project::window_depth;
+/// assert_eq!(window_depth(-1.0), 0.0);
+/// assert_eq!(window_depth(0.5), 0.75);
+/// ```
+pub fn window_depth(z_ndc: f64) -> f64 {
+    (z_ndc + 1.0) / 2.0
+}
+
+/// NDC (x, y) of a window position, the inverse of [`window_from_ndc`]:
+/// `x_ndc = 2 x / W - 1`, `y_ndc = 1 - 2 y / H`.
+///
+/// ```
+/// use barylab::raster::project::{ndc_from_window, Viewport};
+/// use glam::DVec2;
+/// let n = ndc_from_window(DVec2::new(4.5, 6.5), Viewport { width: 8, height: 8 });
+/// assert_eq!(n, DVec2::new(0.125, -0.625));
+/// let vp = Viewport { width: 8, height: 4 };
+/// assert_eq!(ndc_from_window(DVec2::new(4.0, 0.0), vp), DVec2::new(0.0, 1.0));
+/// ```
+pub fn ndc_from_window(window: DVec2, viewport: Viewport) -> DVec2 {
+    DVec2::new(
+        2.0 * window.x / f64::from(viewport.width) - 1.0,
+        1.0 - 2.0 * window.y / f64::from(viewport.height),
     )
 }
 

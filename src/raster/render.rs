@@ -190,6 +190,8 @@ impl RenderSettings {
 pub enum RenderError {
     #[error("image size {width}x{height} is outside 1..={max} pixels per side", max = MAX_IMAGE_SIZE)]
     BadSize { width: u32, height: u32 },
+    #[error(transparent)]
+    Memory(#[from] crate::budget::MemoryError),
 }
 
 /// Why a source triangle drew nothing, or that it was drawn.
@@ -227,13 +229,36 @@ pub struct PreparedTriangle {
     /// Index into [`ClipMesh::triangles`].
     pub source: u32,
     pub status: TriangleStatus,
-    /// The clipped polygon (`None` if the input was unusable).
-    pub polygon: Option<ClipPolygon>,
+    /// The clipped polygon, kept only where the clipper changed the triangle (`None` for an
+    /// unclipped or unusable one): most triangles are not clipped, and a polygon is about 1 KB
+    /// (see [`PreparedTriangle::polygon`] for every triangle's).
+    pub clipped: Option<Box<ClipPolygon>>,
     /// The fan triangles of the clipped polygon that can cover pixels.
     pub setups: Vec<TriangleSetup>,
 }
 
 impl PreparedTriangle {
+    /// The polygon the clipper made of this triangle of `mesh` (the triangle itself when the
+    /// clipper left it whole): the kept one, or the same clipping done again. `None` if the
+    /// input was unusable.
+    pub fn polygon(&self, mesh: &ClipMesh, viewport: Viewport) -> Option<ClipPolygon> {
+        match &self.clipped {
+            Some(p) => Some(**p),
+            None => {
+                let verts = source_vertices(mesh, self.source)?;
+                if !verts.iter().all(|v| v.clip.is_finite()) {
+                    return None;
+                }
+                Some(clip_triangle(&verts, viewport.guard_band_ndc()))
+            }
+        }
+    }
+
+    /// Whether the clipper changed the triangle.
+    pub fn is_clipped(&self) -> bool {
+        self.clipped.is_some()
+    }
+
     /// The facing of the drawn triangle, if any part of it was set up.
     pub fn facing(&self) -> Option<Facing> {
         self.setups.first().map(|s| s.facing)
@@ -259,7 +284,7 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
     let mut out = PreparedTriangle {
         source: index,
         status: TriangleStatus::BadIndex,
-        polygon: None,
+        clipped: None,
         setups: Vec::new(),
     };
     let Some(verts) = source_vertices(mesh, index) else {
@@ -270,7 +295,9 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
         return out;
     }
     let polygon = clip_triangle(&verts, viewport.guard_band_ndc());
-    out.polygon = Some(polygon);
+    if !polygon.unclipped() {
+        out.clipped = Some(Box::new(polygon));
+    }
     let pv = polygon.vertices();
     if pv.len() < 3 {
         out.status = TriangleStatus::ClippedAway;
@@ -288,6 +315,23 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
         TriangleStatus::Drawn
     };
     out
+}
+
+/// Checks the image size (1 to [`MAX_IMAGE_SIZE`] pixels per side) and prepares every source
+/// triangle of `mesh` with [`prepare_triangle`], in order: the first step of a render, and
+/// what the probe traces.
+pub fn prepare_triangles(
+    mesh: &ClipMesh,
+    settings: &RenderSettings,
+) -> Result<Vec<PreparedTriangle>, RenderError> {
+    let (w, h) = (settings.width, settings.height);
+    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
+        return Err(RenderError::BadSize {
+            width: w,
+            height: h,
+        });
+    }
+    Ok(prepare_all(mesh, settings.viewport()))
 }
 
 /// The result of a render: the framebuffer and what happened to each source triangle.
@@ -320,16 +364,12 @@ pub fn render_into(
     buffers: Buffers,
 ) -> Result<Vec<PreparedTriangle>, RenderError> {
     let (w, h) = (settings.width, settings.height);
-    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
-        return Err(RenderError::BadSize {
-            width: w,
-            height: h,
-        });
+    if (1..=MAX_IMAGE_SIZE).contains(&w) && (1..=MAX_IMAGE_SIZE).contains(&h) {
+        crate::budget::check_render(w, h, buffers, mesh.vertices.len(), mesh.triangles.len())?;
     }
-    let viewport = settings.viewport();
-    let triangles = prepare_all(mesh, viewport);
+    let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
-    resize(frame, w, h, buffers);
+    resize(frame, settings.width, settings.height, buffers);
     rasterize_bands(
         &triangles,
         texture,

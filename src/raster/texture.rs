@@ -81,15 +81,50 @@ impl BuiltinTexture {
 /// Errors while loading a texture from a file.
 #[derive(Debug, thiserror::Error)]
 pub enum TextureError {
-    #[error("cannot read texture {path}: {cause}")]
-    Read { path: String, cause: std::io::Error },
-    #[error("cannot decode texture {path}: {cause}")]
+    #[error(transparent)]
+    File(#[from] crate::files::ReadError),
+    #[error("cannot decode texture {path}: {message}")]
     Decode {
         path: String,
-        cause: image::ImageError,
+        /// The decoder's message, on one line.
+        message: String,
     },
     #[error("texture {path} is empty (no pixels or 0 bytes)")]
     Empty { path: String },
+}
+
+/// A decoder's message on one line, without trailing blank lines.
+fn one_line(message: &str) -> String {
+    message
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Why an image file of `format` is cut short, if it is: decoders fill a truncated JPEG with
+/// grey and may accept a PNG without its end, so the file's end marker is checked here.
+fn truncated(format: image::ImageFormat, bytes: &[u8]) -> Option<&'static str> {
+    match format {
+        image::ImageFormat::Jpeg => {
+            // The picture's data starts at its last start-of-scan marker (an embedded
+            // thumbnail comes before it) and ends with the end-of-image marker; neither
+            // byte pair occurs inside the entropy-coded data.
+            let last = |marker: [u8; 2]| bytes.windows(2).rposition(|w| w == marker);
+            match (last([0xFF, 0xDA]), last([0xFF, 0xD9])) {
+                (Some(sos), Some(eoi)) if eoi > sos => None,
+                _ => Some("the JPEG file is truncated (no end-of-image marker after its data)"),
+            }
+        }
+        image::ImageFormat::Png => {
+            // The last chunk: length 0, type IEND, its CRC.
+            let iend = b"\0\0\0\0IEND\xAE\x42\x60\x82";
+            (!bytes.windows(iend.len()).any(|w| w == iend))
+                .then_some("the PNG file is truncated (no IEND chunk)")
+        }
+        _ => None,
+    }
 }
 
 /// An RGBA8 texture; texel row 0 is the bottom row (v = 0).
@@ -170,6 +205,21 @@ pub fn lod(duv_dx: Vec2, duv_dy: Vec2, width: u32, height: u32) -> f32 {
     let rho = (duv_dx * size).length().max((duv_dy * size).length());
     let l = rho.log2();
     if l.is_finite() { l } else { 0.0 }
+}
+
+/// How far apart two texture coordinates are, in texels of a `size` = (W, H) texture, per
+/// axis: `((u_1 - u_2) W, (v_1 - v_2) H)`; its length is the distance. In the precision of
+/// the caller: the heatmap computes it in `f32`, the probe in `f64`.
+///
+/// ```
+/// use barylab::raster::texture::texel_offset;
+/// assert_eq!(texel_offset([0.75f64, 0.5], [0.5, 0.25], [8.0, 4.0]), [2.0, 1.0]);
+/// ```
+pub fn texel_offset<T>(uv_1: [T; 2], uv_2: [T; 2], size: [T; 2]) -> [T; 2]
+where
+    T: Copy + std::ops::Sub<Output = T> + std::ops::Mul<Output = T>,
+{
+    [(uv_1[0] - uv_2[0]) * size[0], (uv_1[1] - uv_2[1]) * size[1]]
 }
 
 /// Largest texture side kept as is; larger images are downscaled on load.
@@ -376,7 +426,7 @@ impl Texture {
         let (w, h) = img.dimensions();
         if w.max(h) <= MAX_TEXTURE_SIZE {
             let tex = Self::from_image(&img).ok_or(TextureError::Empty {
-                path: path.display().to_string(),
+                path: crate::files::shown(path),
             })?;
             return Ok((tex, None));
         }
@@ -385,28 +435,38 @@ impl Texture {
         let nh = ((f64::from(h) * scale).round() as u32).max(1);
         let small = image::imageops::resize(&img, nw, nh, image::imageops::FilterType::Triangle);
         let tex = Self::from_image(&small).ok_or(TextureError::Empty {
-            path: path.display().to_string(),
+            path: crate::files::shown(path),
         })?;
         let note = format!(
             "texture {} is {w}x{h}; downscaled to {nw}x{nh} for speed",
-            path.display()
+            crate::files::shown(path)
         );
         Ok((tex, Some(note)))
     }
 
     fn decode(path: &Path) -> Result<image::RgbaImage, TextureError> {
-        let shown = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|cause| TextureError::Read {
-            path: shown.clone(),
-            cause,
-        })?;
+        use crate::files::{FileKind, read_regular, shown};
+        let bytes = read_regular(path, FileKind::Texture)?;
         if bytes.is_empty() {
-            return Err(TextureError::Empty { path: shown });
+            return Err(TextureError::Empty { path: shown(path) });
         }
-        let img = image::load_from_memory(&bytes).map_err(|cause| TextureError::Decode {
-            path: shown.clone(),
-            cause,
-        })?;
+        let decode_error = |message: String| TextureError::Decode {
+            path: shown(path),
+            message: one_line(&message),
+        };
+        let mut reader = image::ImageReader::new(std::io::Cursor::new(&bytes[..]))
+            .with_guessed_format()
+            .map_err(|e| decode_error(e.to_string()))?;
+        // TGA has no signature to sniff: fall back on the file's extension.
+        if reader.format().is_none() {
+            reader.set_format(
+                image::ImageFormat::from_path(path).map_err(|e| decode_error(e.to_string()))?,
+            );
+        }
+        if let Some(problem) = reader.format().and_then(|f| truncated(f, &bytes)) {
+            return Err(decode_error(problem.to_string()));
+        }
+        let img = reader.decode().map_err(|e| decode_error(e.to_string()))?;
         Ok(img.to_rgba8())
     }
 
@@ -528,8 +588,22 @@ impl Texture {
     /// assert_eq!(t.nearest_unwrapped(Vec2::new(1.3, -0.1), 0), [5, -1]);
     /// ```
     pub fn nearest_unwrapped(&self, uv: Vec2, level: u32) -> [i64; 2] {
+        let [x, y] = self.texel_coords(uv, level);
+        [texel_floor(x), texel_floor(y)]
+    }
+
+    /// Texel coordinates of `uv` in mipmap `level` (W x H): `(u W, v H)`, in `f32` as the
+    /// filters compute them (texel row 0 is v = 0).
+    ///
+    /// ```
+    /// use barylab::raster::texture::Texture;
+    /// use glam::Vec2;
+    /// let t = Texture::from_texels(4, 2, vec![[0; 4]; 8]).unwrap();
+    /// assert_eq!(t.texel_coords(Vec2::new(0.5, 0.25), 0), [2.0, 0.5]);
+    /// ```
+    pub fn texel_coords(&self, uv: Vec2, level: u32) -> [f32; 2] {
         let (w, h) = self.level_size(level);
-        [texel_floor(uv.x * w as f32), texel_floor(uv.y * h as f32)]
+        [uv.x * w as f32, uv.y * h as f32]
     }
 
     /// Nearest or bilinear taps in one mipmap level.

@@ -1,0 +1,245 @@
+//! The memory budget: what a render, a figure, a scene or a model needs is estimated before
+//! anything is allocated, and a request past the budget is refused with a message giving the
+//! need and the limit (instead of the process being killed for want of memory).
+//!
+//! The limit is, in order: [`set_limit`] (the command line's `--memory-limit`), the
+//! environment variable [`LIMIT_ENV`], or [`AVAILABLE_SHARE`] of the memory the system reports
+//! available (`MemAvailable` in `/proc/meminfo`), else [`FALLBACK_LIMIT`].
+
+use std::sync::OnceLock;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use crate::files::bytes;
+use crate::raster::framebuffer::{Buffers, Framebuffer};
+use crate::raster::render::{MeshVertex, PreparedTriangle};
+use crate::raster::setup::TriangleSetup;
+
+/// Environment variable that sets the limit, e.g. `BARYLAB_MEMORY_LIMIT=2G`.
+pub const LIMIT_ENV: &str = "BARYLAB_MEMORY_LIMIT";
+
+/// Share of the available memory a request may use by default: the rest stays for the
+/// system, the other programs, and estimates that come out low.
+pub const AVAILABLE_SHARE: f64 = 0.75;
+
+/// The limit when the system does not say how much memory is available (no `/proc/meminfo`).
+pub const FALLBACK_LIMIT: u64 = 4 << 30;
+
+/// Bytes of memory per byte of OBJ text while it is parsed and turned into a mesh: the
+/// parser's positions, texture coordinates, index map and the mesh (f64 positions, colours)
+/// beside the text itself. Measured about 5 on sample models; 8 leaves room.
+pub const MODEL_BYTES_PER_FILE_BYTE: u64 = 8;
+
+/// Bytes of memory per byte of scene JSON while it is parsed (the text, the parsed vertices
+/// and triangles, and the checking pass).
+pub const SCENE_BYTES_PER_FILE_BYTE: u64 = 4;
+
+/// Bytes per pixel of a figure's PNG beyond its renders: the canvas, the overlay layer, the
+/// output image and the encoded PNG (4 bytes each).
+pub const FIGURE_BYTES_PER_PIXEL: u64 = 16;
+
+/// Set by `--memory-limit`; 0 means not set.
+static OVERRIDE: AtomicU64 = AtomicU64::new(0);
+
+/// A request that does not fit, or a limit that cannot be understood.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum MemoryError {
+    #[error(
+        "{what} needs about {need} of memory, more than the limit of {limit} ({origin}); \
+         see --memory-limit"
+    )]
+    TooLarge {
+        what: String,
+        need: String,
+        limit: String,
+        origin: String,
+    },
+    #[error("{LIMIT_ENV}={value} is not a memory size like 2G, 512M or 1000000")]
+    BadEnv { value: String },
+    #[error("cannot allocate memory for {what} ({need})")]
+    Allocation { what: String, need: String },
+}
+
+/// The memory limit and where it came from (for messages).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Limit {
+    pub bytes: u64,
+    pub source: String,
+}
+
+/// Sets the limit for the rest of the run (the command line's `--memory-limit`).
+pub fn set_limit(bytes: u64) {
+    OVERRIDE.store(bytes.max(1), Ordering::Relaxed);
+}
+
+/// Parses a memory size: a whole number of bytes, optionally followed by K, M, G or T (powers
+/// of 1024, an optional "i" and "B" allowed: `512M`, `2GiB`, `1.5G`).
+pub fn parse_size(s: &str) -> Option<u64> {
+    let t = s.trim();
+    let digits = t
+        .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .unwrap_or(t.len());
+    let (number, unit) = t.split_at(digits);
+    let number: f64 = number.parse().ok()?;
+    let unit = unit.trim().to_ascii_lowercase();
+    let unit = unit.trim_end_matches('b').trim_end_matches('i');
+    let scale: u64 = match unit {
+        "" => 1,
+        "k" => 1 << 10,
+        "m" => 1 << 20,
+        "g" => 1 << 30,
+        "t" => 1 << 40,
+        _ => return None,
+    };
+    let v = number * scale as f64;
+    (v.is_finite() && v >= 1.0 && v < u64::MAX as f64).then_some(v as u64)
+}
+
+/// The available memory the system reports, in bytes.
+fn available() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb.saturating_mul(1024))
+}
+
+/// The current limit.
+pub fn limit() -> Result<Limit, MemoryError> {
+    let set = OVERRIDE.load(Ordering::Relaxed);
+    if set > 0 {
+        return Ok(Limit {
+            bytes: set,
+            source: "--memory-limit".into(),
+        });
+    }
+    if let Some(value) = std::env::var_os(LIMIT_ENV) {
+        let value = value.to_string_lossy().into_owned();
+        return match parse_size(&value) {
+            Some(b) => Ok(Limit {
+                bytes: b,
+                source: LIMIT_ENV.into(),
+            }),
+            None => Err(MemoryError::BadEnv {
+                value: crate::files::text(&value),
+            }),
+        };
+    }
+    // Read once: the share of what was available when the program started.
+    static DEFAULT: OnceLock<Limit> = OnceLock::new();
+    Ok(DEFAULT
+        .get_or_init(|| match available() {
+            Some(a) => Limit {
+                bytes: (a as f64 * AVAILABLE_SHARE) as u64,
+                source: format!("{:.0}% of the available memory", AVAILABLE_SHARE * 100.0),
+            },
+            None => Limit {
+                bytes: FALLBACK_LIMIT,
+                source: "the default when available memory is unknown".into(),
+            },
+        })
+        .clone())
+}
+
+/// Refuses `need` bytes for `what` ("a 16384x16384 render") past the limit.
+pub fn check(what: impl FnOnce() -> String, need: u64) -> Result<(), MemoryError> {
+    let limit = limit()?;
+    if need <= limit.bytes {
+        return Ok(());
+    }
+    Err(MemoryError::TooLarge {
+        what: what(),
+        need: bytes(need),
+        limit: bytes(limit.bytes),
+        origin: limit.source,
+    })
+}
+
+/// A vector of `n` elements' capacity, or an error naming `what` when the memory cannot be had.
+pub fn try_vec<T>(n: usize, what: &str) -> Result<Vec<T>, MemoryError> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| MemoryError::Allocation {
+            what: what.to_string(),
+            need: bytes((n as u64).saturating_mul(size_of::<T>() as u64)),
+        })?;
+    Ok(v)
+}
+
+/// Bytes per pixel of a framebuffer with `buffers`.
+pub fn framebuffer_bytes_per_pixel(buffers: Buffers) -> u64 {
+    let f = Framebuffer::with_buffers(1, 1, [0; 4], buffers);
+    let per = |n: usize, size: usize| (n * size) as u64;
+    per(f.color.len(), size_of::<[u8; 4]>())
+        + per(f.depth.len(), size_of::<f32>())
+        + per(f.triangle.len(), size_of::<u32>())
+        + per(f.facing.len(), 1)
+        + per(f.weights_screen.len(), size_of::<[f32; 3]>())
+        + per(f.weights_perspective.len(), size_of::<[f32; 3]>())
+        + per(f.uv_affine.len(), size_of::<[f32; 2]>())
+        + per(f.uv_perspective.len(), size_of::<[f32; 2]>())
+        + per(f.inv_w.len(), size_of::<f32>())
+}
+
+/// What a render of `width` x `height` with `buffers` of a mesh with `vertices` and
+/// `triangles` needs: the framebuffer, the output image (4 bytes a pixel), the mesh, and one
+/// set-up triangle per source triangle (clipped triangles take more, found by fallible
+/// allocation).
+pub fn render_need(
+    width: u32,
+    height: u32,
+    buffers: Buffers,
+    vertices: usize,
+    triangles: usize,
+) -> u64 {
+    let pixels = u64::from(width) * u64::from(height);
+    let per_triangle = (size_of::<PreparedTriangle>() + size_of::<TriangleSetup>()) as u64;
+    pixels * (framebuffer_bytes_per_pixel(buffers) + 4)
+        + vertices as u64 * size_of::<MeshVertex>() as u64
+        + triangles as u64 * (per_triangle + size_of::<[u32; 3]>() as u64)
+}
+
+/// Checks a render before it starts; `what` is named in the message.
+pub fn check_render(
+    width: u32,
+    height: u32,
+    buffers: Buffers,
+    vertices: usize,
+    triangles: usize,
+) -> Result<(), MemoryError> {
+    check(
+        || {
+            let t = if triangles == 1 { "" } else { "s" };
+            format!("a {width}x{height} render of {triangles} triangle{t}")
+        },
+        render_need(width, height, buffers, vertices, triangles),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse_with_units() {
+        assert_eq!(parse_size("1000"), Some(1000));
+        assert_eq!(parse_size("512M"), Some(512 << 20));
+        assert_eq!(parse_size("2GiB"), Some(2 << 30));
+        assert_eq!(parse_size("1.5g"), Some(3 << 29));
+        assert_eq!(parse_size("-5"), None);
+        assert_eq!(parse_size("lots"), None);
+        assert_eq!(parse_size("0"), None);
+    }
+
+    #[test]
+    fn a_full_size_render_needs_gigabytes() {
+        let need = render_need(16384, 16384, Buffers::All, 4, 2);
+        assert!(need > 14 << 30, "{}", bytes(need));
+        let small = render_need(16384, 16384, Buffers::ColorDepth, 4, 2);
+        assert!(small < need / 4, "{}", bytes(small));
+    }
+
+    #[test]
+    fn ten_million_triangles_need_gigabytes_at_any_size() {
+        let need = render_need(800, 600, Buffers::All, 10_000_000, 10_000_000);
+        assert!(need > 5 << 30, "{}", bytes(need));
+    }
+}
