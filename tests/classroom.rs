@@ -310,3 +310,44 @@ fn the_exported_derivation_is_what_barylab_probe_prints_for_the_exported_scene()
     );
     assert_eq!(String::from_utf8_lossy(&run.stdout), md);
 }
+
+#[test]
+fn save_scene_writes_the_json_that_render_and_probe_read() {
+    use barylab::app::files::FileCommand;
+    let mut h = harness(egui::vec2(1280.0, 800.0));
+    h.state_mut()
+        .push(Command::Preset(barylab::app::presets::Preset::GrazingWall));
+    h.state_mut().push(Command::SetImageSize(Some([320, 240])));
+    h.run();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("lesson.json");
+    h.state_mut().push(FileCommand::SaveTo(path.clone()));
+    h.run();
+    assert!(
+        h.state()
+            .message()
+            .is_some_and(|m| m.contains("lesson.json"))
+    );
+    let saved = Scene::load(&path).expect("saved scene loads");
+    assert_eq!(saved, h.state().state().scene);
+    assert_eq!(saved.size(), (320, 240));
+    // File > Save writes the same file again, with the newest edit, and nothing else.
+    h.state_mut().push(Command::SetFov(40.0));
+    h.state_mut()
+        .push(Command::Preset(barylab::app::presets::Preset::FrontFacing));
+    h.state_mut().push(FileCommand::Save);
+    h.run();
+    assert_eq!(Scene::load(&path).expect("saved"), h.state().state().scene);
+    assert_eq!(std::fs::read_dir(dir.path()).expect("list").count(), 1);
+    let run = Process::new(env!("CARGO_BIN_EXE_barylab"))
+        .arg("probe")
+        .arg(&path)
+        .args(["--pixel", "160,120"])
+        .output()
+        .expect("run barylab probe");
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}

@@ -53,13 +53,17 @@ pub struct History {
 }
 
 impl History {
-    /// Once per frame, after the frame's commands: `before` is the state before them;
-    /// `gesture` is whether a pointer button is still held (the edit goes on).
-    pub fn track(&mut self, before: Snapshot, now: &AppState, gesture: bool) {
+    /// Once per frame, after the frame's commands: `before` is the state before them (`None`
+    /// when there were none: nothing changed); `gesture` is whether a pointer button is still
+    /// held (the edit goes on).
+    pub fn track(&mut self, before: Option<Snapshot>, now: &AppState, gesture: bool) {
         if std::mem::take(&mut self.restored) {
             return;
         }
-        if self.pending.is_none() && before.differs(&Snapshot::of(now)) {
+        if let Some(before) = before
+            && self.pending.is_none()
+            && before.differs(&Snapshot::of(now))
+        {
             self.pending = Some(before);
         }
         if !gesture {
@@ -148,13 +152,13 @@ mod tests {
                     yaw_deg: 0.0,
                 }))
                 .expect("tilt");
-            h.track(before, &state, held);
+            h.track(Some(before), &state, held);
         }
         assert_eq!(h.undo_steps(), 1);
         // The mode is a view choice: not a step, and undo keeps it.
         let before = Snapshot::of(&state);
         state.apply(Command::ToggleMode).expect("mode");
-        h.track(before, &state, false);
+        h.track(Some(before), &state, false);
         assert_eq!(h.undo_steps(), 1);
         let mode = state.options().mode;
         assert!(h.undo(&mut state));
@@ -178,7 +182,7 @@ mod tests {
             state
                 .apply(Command::SetFov(20.0 + f64::from(k) * 0.1))
                 .expect("fov");
-            h.track(before, &state, false);
+            h.track(Some(before), &state, false);
         }
         let mut undone = 0;
         while h.undo(&mut state) {

@@ -142,6 +142,8 @@ pub struct BaryApp {
     /// The side panel asked for last: it gets the room when both do not fit.
     panel_first: Side,
     history: history::History,
+    /// The scene file the scene came from or was saved to last (File > Save writes it).
+    scene_file: Option<PathBuf>,
 }
 
 impl BaryApp {
@@ -192,6 +194,7 @@ impl BaryApp {
             last_preset: None,
             panel_first: Side::default(),
             history: history::History::default(),
+            scene_file: None,
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
@@ -202,8 +205,36 @@ impl BaryApp {
         app
     }
 
+    /// Saves the scene (at the size the canvas renders it) to `path`; the outcome goes to the
+    /// status line.
+    pub fn save_scene(&mut self, path: &Path) {
+        let mut scene = self.state.scene.clone();
+        if let Some(out) = &self.canvas.output {
+            scene.set_size(out.size[0], out.size[1]);
+        }
+        match files::save(path, &scene, self.state.scene_dir.as_deref()) {
+            Ok(done) => {
+                self.message = Some(Message {
+                    text: done,
+                    error: false,
+                });
+                self.scene_file = Some(path.to_path_buf());
+                self.recent.push(path);
+            }
+            Err(e) => self.set_error(e),
+        }
+    }
+
     /// Applies a file that loaded.
     fn opened(&mut self, opened: OpenedFile) {
+        if matches!(opened.what, files::Opened::Scene { .. }) {
+            // A model is not a scene file: Save asks where.
+            self.scene_file = opened
+                .path
+                .extension()
+                .is_some_and(|e| e == "json")
+                .then(|| opened.path.clone());
+        }
         self.commands.push(opened.command().into());
         self.textures.pending = Some(opened.texture.clone());
         self.recent.push(&opened.path);
@@ -365,7 +396,8 @@ impl BaryApp {
         let picked = self.export.frame(&ctx);
         self.export_message(&ctx, outcome_before);
         self.commands.splice(0..0, command::all(picked));
-        let before = history::Snapshot::of(&self.state);
+        // (Only a frame with commands can change the scene; a scene can be large.)
+        let before = (!self.commands.is_empty()).then(|| history::Snapshot::of(&self.state));
         self.apply_commands(&ctx, &texture);
         // A drag (a button held) is one undo step, taken when it is released.
         let held = ctx.input(|i| i.pointer.any_down());
@@ -493,6 +525,11 @@ impl BaryApp {
             AppCommand::File(FileCommand::Open(path)) => self.open_file(&path),
             AppCommand::File(FileCommand::ClearRecent) => self.recent.0.clear(),
             AppCommand::File(FileCommand::DismissBanner) => self.banner = None,
+            AppCommand::File(FileCommand::Save) => match self.scene_file.clone() {
+                Some(path) => self.save_scene(&path),
+                None => self.picker.apply(ctx, &FileCommand::SaveAsDialog),
+            },
+            AppCommand::File(FileCommand::SaveTo(path)) => self.save_scene(&path),
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
             AppCommand::SetPresenting(on) => self.presenting = on,

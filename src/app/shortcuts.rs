@@ -129,6 +129,10 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if i.consume_key(Modifiers::COMMAND, Key::O) {
             cmds.push(FileCommand::OpenDialog.into());
         }
+        // Ctrl+Shift+S before Ctrl+S (which would also match it).
+        if i.consume_key(Modifiers::COMMAND | Modifiers::SHIFT, Key::S) {
+            extra.push(FileCommand::SaveAsDialog.into());
+        }
         if i.consume_key(Modifiers::COMMAND, Key::S) {
             // The first Ctrl+S opens the Export window, the next one exports.
             cmds.push(
