@@ -351,3 +351,32 @@ fn save_scene_writes_the_json_that_render_and_probe_read() {
         String::from_utf8_lossy(&run.stderr)
     );
 }
+
+#[test]
+fn a_red_message_goes_when_its_cause_does() {
+    let mut h = harness(egui::vec2(1280.0, 800.0));
+    let bad = Command::SetCorner {
+        index: 0,
+        position: glam::DVec3::new(f64::NAN, 0.0, 0.0),
+        uv: glam::Vec2::ZERO,
+        color: glam::Vec3::ONE,
+    };
+    h.state_mut().push(bad.clone());
+    h.run();
+    assert!(h.state().message().is_some(), "the failed edit is reported");
+    // The next edit that works replaces the cause.
+    h.state_mut().push(Command::SetTilt(barylab::scene::Tilt {
+        pitch_deg: 10.0,
+        yaw_deg: 0.0,
+    }));
+    h.run();
+    assert_eq!(h.state().message(), None);
+    // A preset starts afresh too.
+    h.state_mut().push(bad);
+    h.run();
+    assert!(h.state().message().is_some());
+    h.state_mut()
+        .push(Command::Preset(barylab::app::presets::Preset::Floor));
+    h.run();
+    assert_eq!(h.state().message(), None);
+}

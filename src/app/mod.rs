@@ -20,6 +20,7 @@
 //! The overlays and the difference heatmap are described in [`crate::figure`], which the
 //! exported figures share.
 
+pub mod access;
 pub mod banner;
 pub mod bench_chart;
 pub mod bench_panel;
@@ -62,17 +63,16 @@ use self::banner::Banner;
 use self::bench_panel::BenchPanel;
 use self::canvas::CanvasState;
 use self::command::AppCommand;
-use self::export::{ExportCommand, ExportContext, ExportPanel};
+use self::export::{ExportContext, ExportPanel};
 use self::file_menu::FilePicker;
 use self::files::{FileCommand, OpenedFile, RecentFiles};
 use self::persist::{STORAGE_KEY, SavedState};
-use self::pixel::PixelReport;
 use self::reports::PixelReports;
 use self::screenshot::{ShotSlot, StartupShot};
 use self::side_panels::Side;
 use self::state::AppState;
-use self::status::{FrameTiming, Message};
-use self::textures::TextureCache;
+use self::status::{Cause, FrameTiming, Message};
+use self::textures::{TextureCache, texture_key};
 use crate::raster::Texture;
 use crate::scene::Scene;
 
@@ -161,10 +161,10 @@ impl BaryApp {
             let restored = saved.restore();
             (state, recent, export_settings) = (restored.state, restored.recent, restored.export);
             if let Some(e) = restored.error {
-                message = Some(Message {
-                    text: format!("{}: {e}", text::RESTORE_FAILED),
-                    error: true,
-                });
+                message = Some(Message::error(
+                    format!("{}: {e}", text::RESTORE_FAILED),
+                    None,
+                ));
             }
         }
         if let Some((scene, dir)) = options.scene {
@@ -214,10 +214,7 @@ impl BaryApp {
         }
         match files::save(path, &scene, self.state.scene_dir.as_deref()) {
             Ok(done) => {
-                self.message = Some(Message {
-                    text: done,
-                    error: false,
-                });
+                self.message = Some(Message::note(done));
                 self.scene_file = Some(path.to_path_buf());
                 self.recent.push(path);
             }
@@ -257,83 +254,8 @@ impl BaryApp {
         self.open_file(path);
     }
 
-    /// The banner's lines (what the last opened file did, or why it did not open).
-    pub fn banner(&self) -> Option<Vec<String>> {
-        self.banner.as_ref().map(Banner::lines)
-    }
-
-    /// The recent files, newest first.
-    pub fn recent_files(&self) -> &[PathBuf] {
-        &self.recent.0
-    }
-
-    /// The Export panel (settings, last outcome).
-    pub fn export_panel(&self) -> &ExportPanel {
-        &self.export
-    }
-
-    /// Queues an Export panel command, as its widgets do.
-    pub fn push_export(&mut self, command: ExportCommand) {
-        self.push(command);
-    }
-
-    /// The current state (scene and view).
-    pub fn state(&self) -> &AppState {
-        &self.state
-    }
-
-    /// The canvas: views, renders, hovered pixel.
-    pub fn canvas(&self) -> &CanvasState {
-        &self.canvas
-    }
-
-    /// How many probers the inspector has made (one per render and mode it traced).
-    pub fn probers_built(&self) -> u64 {
-        self.reports.probers_built
-    }
-
-    /// The report of the hovered pixel shown in the inspector.
-    pub fn hover_report(&self) -> Option<&PixelReport> {
-        self.reports.hover.as_ref()
-    }
-
-    /// The report of the pinned pixel.
-    pub fn pin_report(&self) -> Option<&PixelReport> {
-        self.reports.pin.as_ref()
-    }
-
-    /// Queues a command, as a panel would; it is applied at the end of the next frame.
-    pub fn push(&mut self, command: impl Into<AppCommand>) {
-        self.commands.push(command.into());
-    }
-
-    /// The benchmark window's state.
-    pub fn bench(&self) -> &BenchPanel {
-        &self.bench
-    }
-
-    /// The benchmark window's state, to change.
-    pub fn bench_mut(&mut self) -> &mut BenchPanel {
-        &mut self.bench
-    }
-
-    /// The undo history.
-    pub fn history(&self) -> &history::History {
-        &self.history
-    }
-
-    /// Whether the app is in presentation mode.
-    pub fn presenting(&self) -> bool {
-        self.presenting
-    }
-
-    /// The message on the status line.
-    pub fn message(&self) -> Option<&str> {
-        self.message.as_ref().map(|m| m.text.as_str())
-    }
-
     fn set_error(&mut self, text: String) {
-        self.message = Some(Message { text, error: true });
+        self.message = Some(Message::error(text, None));
     }
 
     /// The whole UI, inside the given `Ui` (eframe's root `Ui`, or a test harness's).
@@ -371,8 +293,13 @@ impl BaryApp {
         let (texture, texture_error) = self
             .textures
             .get(&self.state.scene, self.state.scene_dir.as_deref());
-        if let Some(e) = texture_error {
-            self.set_error(e);
+        let key = texture_key(&self.state.scene, self.state.scene_dir.as_deref());
+        match texture_error {
+            Some(e) => self.message = Some(Message::error(e, Some(Cause::Texture(key)))),
+            None => status::clear_if(
+                &mut self.message,
+                |c| matches!(c, Cause::Texture(k) if *k != key),
+            ),
         }
         let hover_before = self.canvas.hover;
         self.panels(ui, &texture);
@@ -385,8 +312,9 @@ impl BaryApp {
             self.canvas.hover,
             self.state.view.pinned,
         );
-        if let Some(e) = error {
-            self.set_error(e);
+        match error {
+            Some(e) => self.message = Some(Message::error(e, Some(Cause::Probe))),
+            None => status::clear_if(&mut self.message, |c| *c == Cause::Probe),
         }
         if self.canvas.hover != hover_before || reports_before != self.reports.key() {
             // The inspector and overlay drew last frame's pixel; draw again with this one.
@@ -501,8 +429,22 @@ impl BaryApp {
                     state::Command::SetShowInspector(true) => self.panel_first = Side::Inspector,
                     _ => {}
                 }
-                if let Err(e) = self.state.apply(c) {
-                    self.set_error(e.to_string());
+                // A new scene leaves every error about the old one behind.
+                let fresh = matches!(
+                    c,
+                    state::Command::Preset(_)
+                        | state::Command::ResetScene
+                        | state::Command::ResetAll
+                        | state::Command::OpenScene(..)
+                );
+                match self.state.apply(c) {
+                    Err(e) => self.message = Some(Message::error(e.to_string(), Some(Cause::Edit))),
+                    Ok(()) if fresh => {
+                        if self.message.as_ref().is_some_and(|m| m.error) {
+                            self.message = None;
+                        }
+                    }
+                    Ok(()) => status::clear_if(&mut self.message, |c| *c == Cause::Edit),
                 }
             }
             AppCommand::Export(c) => {
@@ -552,6 +494,7 @@ impl BaryApp {
             self.message = Some(Message {
                 text: o.summary.clone(),
                 error: o.error,
+                cause: None,
             });
             ctx.request_repaint();
         }
