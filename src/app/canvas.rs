@@ -518,10 +518,12 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
                 _ => None,
             },
         };
+        // Overlays stay on the canvas (the image and its title strip), never over the panels.
         let clip = Rect::from_min_max(
             view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
             view.rect.max + egui::vec2(2.0, 2.0),
-        );
+        )
+        .intersect(available);
         paint::paint(
             &painter,
             clip,

@@ -243,7 +243,16 @@ impl AppState {
                 edit::set_options(&mut self.scene, options);
             }
             Command::SetRasterizer(r) => self.view.rasterizer = r,
-            Command::SetCompare(c) => self.view.compare = c,
+            Command::SetCompare(c) => {
+                // The wipe line starts on the quad, not at the middle of the image.
+                if c == Compare::Wipe
+                    && self.view.compare != Compare::Wipe
+                    && let Some(x) = quad_centre(&self.scene)
+                {
+                    self.view.wipe = x;
+                }
+                self.view.compare = c;
+            }
             Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),
             Command::SetPixelSize(p) => {
                 let p = p.clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);
@@ -330,6 +339,33 @@ impl AppState {
     }
 }
 
+/// The horizontal middle of the scene's vertices on screen (those in front of the camera),
+/// as a fraction of the image width, kept off the very edges.
+fn quad_centre(scene: &Scene) -> Option<f32> {
+    let (w, h) = scene.size();
+    let viewport = Viewport {
+        width: w,
+        height: h,
+    };
+    let xs: Vec<f64> = crate::figure::vertices_on_screen(scene, viewport)
+        .iter()
+        .filter_map(|v| v.window.map(|p| p.x))
+        .collect();
+    if xs.is_empty() || w == 0 {
+        return None;
+    }
+    let (lo, hi) = xs
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+            (lo.min(x), hi.max(x))
+        });
+    let x = ((lo + hi) / 2.0 / f64::from(w)).clamp(WIPE_EDGE, 1.0 - WIPE_EDGE);
+    x.is_finite().then_some(x as f32)
+}
+
+/// The wipe line starts at least this fraction of the width from either edge.
+const WIPE_EDGE: f64 = 0.1;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -348,5 +384,20 @@ mod tests {
         })
         .expect("move");
         assert_eq!(s.view.pinned, Some([0, 6]));
+    }
+
+    #[test]
+    fn the_wipe_line_starts_on_the_quad() {
+        let mut s = AppState::default();
+        // The floor moved to the right.
+        if let Scene::World(w) = &mut s.scene {
+            for c in &mut w.quad {
+                c.position.x += 1.0;
+            }
+        }
+        let x = quad_centre(&s.scene).expect("corners on screen");
+        s.apply(Command::SetCompare(Compare::Wipe)).expect("wipe");
+        assert_eq!(s.view.wipe, x);
+        assert!(x > 0.6, "{x}");
     }
 }
