@@ -9,8 +9,10 @@
 //! - Commands: [`command::AppCommand`], one enum for every panel's requests.
 //! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
 //!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
-//!   [`canvas`], [`inspector`], [`status`], [`help`], [`export`], [`bench_panel`] (with
-//!   [`bench_chart`]), and the keyboard [`shortcuts`].
+//!   [`image_size`], [`canvas`], [`inspector`], [`present`], [`status`], [`help`], [`export`],
+//!   [`bench_panel`] (with [`bench_chart`]), and the keyboard [`shortcuts`].
+//! - Around them: [`layout`] (side panels, canvas, presentation card; [`side_panels`] is the
+//!   arithmetic), [`history`] (undo and redo), [`access`] (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
 //!   canvas's renders and their cache), [`textures`] (the scene's texture), [`pixel`] and
 //!   [`reports`] (the inspector's probe of a pixel, one prober per render), [`paint`] (overlays

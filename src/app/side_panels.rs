@@ -10,6 +10,9 @@ pub const PANEL_MIN: f32 = 220.0;
 /// Points: the default widths.
 pub const CONTROLS_DEFAULT: f32 = 300.0;
 pub const INSPECTOR_DEFAULT: f32 = 380.0;
+/// The inspector's least share of the panels' room when both are open (its numbers need it
+/// more than the controls do).
+pub const INSPECTOR_SHARE: f32 = 0.55;
 /// Points a side panel takes beyond its width (its separator line and resize margin).
 pub const PANEL_SLACK: f32 = 10.0;
 /// Points: the central panel's margin around the canvas.
@@ -61,9 +64,13 @@ pub fn fits(budget: f32, controls: bool, inspector: bool, first: Side) -> Fits {
         if inspector { Fit::Strip } else { Fit::Hidden },
     );
     if wanted == 2 && budget >= 2.0 * PANEL_MIN {
-        // Each may grow while the other keeps its narrowest.
+        // The controls (laid out first) leave the inspector its default width or a fair
+        // share; the inspector may then take the rest.
+        let reserve = INSPECTOR_DEFAULT
+            .min(budget * INSPECTOR_SHARE)
+            .max(PANEL_MIN);
         c = Fit::Open {
-            max: budget - PANEL_MIN,
+            max: (budget - reserve).max(PANEL_MIN),
         };
         i = Fit::Open {
             max: budget - PANEL_MIN,

@@ -25,7 +25,7 @@ pub mod text {
 }
 
 /// Points the whole bar takes in one row; below that the View menu holds most of it.
-const FULL_BAR: f32 = 1010.0;
+const FULL_BAR: f32 = 1340.0;
 
 /// What the top bar shows besides the state.
 pub struct TopBarInput<'a> {
