@@ -131,19 +131,20 @@ impl BaryApp {
             .fill(present::CARD_FILL)
             .inner_margin(egui::Margin::same(12));
         let (hover, pin) = (self.reports.hover.as_ref(), self.reports.pin.as_ref());
+        let size = present::card_text(rect.height());
         if rect.width() < PRESENT_SIDE_CARD_ASPECT * rect.height() {
             let spacing = ui.spacing().item_spacing.y;
             egui::Panel::bottom("present-card")
                 .frame(frame)
                 .resizable(false)
-                .exact_size(present::card_height(rect.width() - 24.0, spacing) + 24.0)
-                .show(ui, |ui| present::card_ui(ui, hover, pin));
+                .exact_size(present::card_height(rect.width() - 24.0, spacing, size) + 24.0)
+                .show(ui, |ui| present::card_ui(ui, hover, pin, size));
         } else {
             egui::Panel::right("present-card")
                 .frame(frame)
                 .resizable(false)
                 .exact_size(rect.width() * PRESENT_SIDE_CARD_SHARE)
-                .show(ui, |ui| present::card_ui(ui, hover, pin));
+                .show(ui, |ui| present::card_ui(ui, hover, pin, size));
         }
         self.canvas_panel(ui, texture, out);
     }

@@ -31,20 +31,27 @@ pub mod text {
     pub const LEAVE: &str = "F5 / Esc: leave · Page Down / Up: presets";
 }
 
-/// Text size of the card's numbers, in points (times the text size setting).
-pub const CARD_TEXT: f32 = 26.0;
-/// The card's height in points for a card `width` points wide: always the same for a window,
-/// whatever pixel it shows (a card that grew with its content would move the canvas under
-/// the pointer, change the hovered pixel, and so on).
-pub fn card_height(width: f32, spacing: f32) -> f32 {
+/// Text size of the card's numbers in points (times the text size setting), for a window
+/// `height` points high: 26 at 768, larger on a larger screen.
+pub fn card_text(height: f32) -> f32 {
+    (height / 29.5).clamp(CARD_TEXT_RANGE.0, CARD_TEXT_RANGE.1)
+}
+
+/// Smallest and largest card text size, in points.
+const CARD_TEXT_RANGE: (f32, f32) = (26.0, 44.0);
+
+/// The card's height in points for a card `width` points wide with text `size`: always the
+/// same for a window, whatever pixel it shows (a card that grew with its content would move
+/// the canvas under the pointer, change the hovered pixel, and so on).
+pub fn card_height(width: f32, spacing: f32, size: f32) -> f32 {
     // The title, then the table (a header and three vertices) beside four lines, or above
     // them.
-    let rows = if width >= SIDE_BY_SIDE_EMS * CARD_TEXT {
+    let rows = if width >= SIDE_BY_SIDE_EMS * size {
         5.0
     } else {
         9.0
     };
-    rows * (ROW * CARD_TEXT + spacing) + 0.5 * CARD_TEXT
+    rows * (ROW * size + spacing) + 0.5 * size
 }
 
 /// A row's height, in text heights.
@@ -62,12 +69,12 @@ const INK: Color32 = Color32::WHITE;
 const DIM: Color32 = Color32::from_rgb(170, 180, 200);
 const ACCENT: Color32 = Color32::from_rgb(255, 214, 90);
 
-fn big(s: impl Into<String>) -> RichText {
-    RichText::new(s).monospace().size(CARD_TEXT).color(INK)
+fn big(s: impl Into<String>, size: f32) -> RichText {
+    RichText::new(s).monospace().size(size).color(INK)
 }
 
-fn label(s: &str) -> RichText {
-    RichText::new(s).monospace().size(CARD_TEXT).color(DIM)
+fn label(s: &str, size: f32) -> RichText {
+    RichText::new(s).monospace().size(size).color(DIM)
 }
 
 fn num(x: f64) -> String {
@@ -83,7 +90,14 @@ fn pair(uv: [f32; 2]) -> String {
 }
 
 /// The card, for the pinned pixel's report if any, else the hovered one's.
-pub fn card_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&PixelReport>) {
+pub fn card_ui(
+    ui: &mut Ui,
+    hovered: Option<&PixelReport>,
+    pinned: Option<&PixelReport>,
+    size: f32,
+) {
+    let big = |s: String| big(s, size);
+    let label = |s: &str| label(s, size);
     let focus = pinned
         .map(|r| (r, text::PINNED))
         .or(hovered.map(|r| (r, text::HOVERED)));
@@ -106,16 +120,16 @@ pub fn card_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&Pixel
                 );
             }
             None => {
-                ui.label(big(text::NO_PIXEL).color(ACCENT));
+                ui.label(big(text::NO_PIXEL.into()).color(ACCENT));
             }
         }
-        ui.label(RichText::new(text::LEAVE).size(CARD_TEXT * 0.55).color(DIM));
+        ui.label(RichText::new(text::LEAVE).size(size * 0.55).color(DIM));
     });
     let Some((r, _)) = focus else {
         return;
     };
     let Some(d) = &r.trace.detail else {
-        ui.label(big(text::NOT_COVERED));
+        ui.label(big(text::NOT_COVERED.into()));
         return;
     };
     let correction = d.perspective.map(|p| p.correction);
@@ -124,7 +138,7 @@ pub fn card_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&Pixel
     let grid = |ui: &mut Ui| {
         let cell = |ui: &mut Ui, t: RichText, ems: f32| {
             ui.add_sized(
-                [ems * CARD_TEXT * 0.62, CARD_TEXT * ROW],
+                [ems * size * 0.62, size * ROW],
                 egui::Label::new(t).wrap_mode(egui::TextWrapMode::Extend),
             );
         };
@@ -136,7 +150,7 @@ pub fn card_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&Pixel
         });
         for (k, v) in d.raster.vertices.iter().enumerate() {
             ui.horizontal(|ui| {
-                cell(ui, big(&v.name).color(ACCENT).strong(), 1.5);
+                cell(ui, big(v.name.clone()).color(ACCENT).strong(), 1.5);
                 cell(ui, big(num(d.screen.rasterizer[k])), NUMBER_EMS);
                 cell(ui, big(num(v.inv_w)), NUMBER_EMS);
                 let c = correction.map_or("–".into(), |c| num(c.weights[k]));
@@ -167,10 +181,10 @@ pub fn card_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&Pixel
     };
     // Side by side when the card is wide enough, else one above the other (decided from the
     // width alone, so the layout cannot flip back and forth).
-    if ui.available_width() >= SIDE_BY_SIDE_EMS * CARD_TEXT {
+    if ui.available_width() >= SIDE_BY_SIDE_EMS * size {
         ui.horizontal_top(|ui| {
             ui.vertical(grid);
-            ui.add_space(CARD_TEXT);
+            ui.add_space(size);
             ui.vertical(lines);
         });
     } else {
