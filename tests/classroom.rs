@@ -380,3 +380,32 @@ fn a_red_message_goes_when_its_cause_does() {
     h.run();
     assert_eq!(h.state().message(), None);
 }
+
+#[test]
+fn escape_closes_an_open_menu_before_it_unpins() {
+    let mut h = harness(egui::vec2(1500.0, 950.0));
+    let p = [300, 420];
+    let pos = pixel_centre(&h, p);
+    click(&mut h, pos);
+    away(&mut h);
+    h.get_by_label("File").click();
+    h.run();
+    assert!(
+        h.query_by_label("Save scene as…").is_some(),
+        "the menu is open"
+    );
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert!(
+        h.query_by_label("Save scene as…").is_none(),
+        "Escape closed the menu"
+    );
+    assert_eq!(
+        h.state().state().view.pinned,
+        Some(p),
+        "and left the pin alone"
+    );
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert_eq!(h.state().state().view.pinned, None);
+}
