@@ -20,7 +20,7 @@ mod text {
 /// Presentation mode: windows wider than this many heights get the card beside the canvas
 /// (taking this share of the width), others below it.
 const PRESENT_SIDE_CARD_ASPECT: f32 = 1.5;
-const PRESENT_SIDE_CARD_SHARE: f32 = 0.36;
+const PRESENT_SIDE_CARD_SHARE: f32 = 0.38;
 
 impl BaryApp {
     /// The side panels, in what the canvas can spare; their commands go to `out`.

@@ -60,7 +60,7 @@ const ROW: f32 = 1.3;
 /// heights of width.
 const SIDE_BY_SIDE_EMS: f32 = 30.0;
 /// Characters of a number column.
-const NUMBER_EMS: f32 = 8.0;
+const NUMBER_EMS: f32 = 7.0;
 /// Significant digits on the card: enough to see the difference, few enough to read.
 const DIGITS: i32 = 4;
 /// The card's colours: white on near-black.
