@@ -7,8 +7,33 @@
 
 use std::time::Instant;
 
+use crate::figure::heatmap;
 use crate::raster::render::{Rasterizer, RenderError};
-use crate::raster::{self, ClipMesh, Filter, Interpolation, RenderSettings, Texture};
+use crate::raster::{self, Buffers, ClipMesh, Filter, Interpolation, RenderSettings, Texture};
+
+/// What a timed frame draws, as the app's compare modes do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum View {
+    /// One image in the configuration's mode (colour and depth).
+    #[default]
+    Single,
+    /// Both modes, side by side (two colour-and-depth renders).
+    Side,
+    /// Both modes, one each side of the wipe line (two renders; composing them is a copy).
+    Wipe,
+    /// Both modes with the triangle and uv buffers, then the texel-difference heatmap.
+    Difference,
+}
+
+/// The short name of a view in records and tables.
+pub fn view_name(v: View) -> &'static str {
+    match v {
+        View::Single => "single",
+        View::Side => "side",
+        View::Wipe => "wipe",
+        View::Difference => "difference",
+    }
+}
 
 /// One cell of the matrix: what to draw with and on how many worker threads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -26,8 +51,12 @@ pub struct BenchRecord {
     pub rasterizer: String,
     /// `nearest` or `bilinear`.
     pub filter: String,
-    /// `affine` or `perspective`.
+    /// `affine` or `perspective` (with a two-mode view: the mode of the single view it is
+    /// compared with).
     pub mode: String,
+    /// `single`, `side`, `wipe` or `difference` ([`View`]).
+    #[serde(default = "single_view")]
+    pub view: String,
     pub threads: usize,
     pub width: u32,
     pub height: u32,
@@ -148,6 +177,40 @@ pub fn mpix_per_s(width: u32, height: u32, ms: f64) -> f64 {
     f64::from(width) * f64::from(height) / (ms * 1e3)
 }
 
+fn single_view() -> String {
+    view_name(View::Single).to_string()
+}
+
+/// Draws one frame of `view` for timing, in the frames given (one per mode; reused from frame
+/// to frame): [`draw_frame`] for each image, and for the difference view the heatmap
+/// (`figure::heatmap`) of the uv buffers, as the app's canvas does.
+pub fn draw_view(
+    frames: &mut [raster::Framebuffer; 2],
+    mesh: &ClipMesh,
+    texture: &Texture,
+    settings: &RenderSettings,
+    view: View,
+) -> Result<(), RenderError> {
+    let [a, p] = frames;
+    let both = |a: &mut raster::Framebuffer, p: &mut raster::Framebuffer, buffers| {
+        for (frame, mode) in [(a, Interpolation::Affine), (p, Interpolation::Perspective)] {
+            let s = RenderSettings { mode, ..*settings };
+            raster::render_into(frame, mesh, texture, &s, buffers)?;
+        }
+        Ok::<(), RenderError>(())
+    };
+    match view {
+        View::Single => draw_frame(a, mesh, texture, settings),
+        View::Side | View::Wipe => both(a, p, Buffers::ColorDepth),
+        View::Difference => {
+            both(a, p, Buffers::ColorDepthUv)?;
+            let h = heatmap::heatmap(p, (texture.width(), texture.height()));
+            std::hint::black_box(h);
+            Ok(())
+        }
+    }
+}
+
 /// Times `frames` frames of one configuration, `base` giving everything else (size, wrap,
 /// shading, background), and returns the median.
 pub fn run_config(
@@ -156,6 +219,18 @@ pub fn run_config(
     base: &RenderSettings,
     config: BenchConfig,
     frames: u32,
+) -> Result<BenchRecord, BenchError> {
+    run_view(mesh, texture, base, config, frames, View::Single)
+}
+
+/// [`run_config`] drawing `view` in each frame ([`draw_view`]).
+pub fn run_view(
+    mesh: &ClipMesh,
+    texture: &Texture,
+    base: &RenderSettings,
+    config: BenchConfig,
+    frames: u32,
+    view: View,
 ) -> Result<BenchRecord, BenchError> {
     if frames == 0 {
         return Err(BenchError::NoFrames);
@@ -174,10 +249,10 @@ pub fn run_config(
             reason: e.to_string(),
         })?;
     let mut times = Vec::with_capacity(frames as usize);
-    let mut frame = raster::Framebuffer::new(0, 0, settings.background);
+    let mut images = [0, 1].map(|_| raster::Framebuffer::new(0, 0, settings.background));
     for _ in 0..frames {
         let start = Instant::now();
-        workers.install(|| draw_frame(&mut frame, mesh, texture, &settings))?;
+        workers.install(|| draw_view(&mut images, mesh, texture, &settings, view))?;
         times.push(start.elapsed().as_secs_f64() * 1e3);
     }
     let median_ms = median(&times).ok_or(BenchError::NoFrames)?;
@@ -185,6 +260,7 @@ pub fn run_config(
         rasterizer: rasterizer_name(config.rasterizer).to_string(),
         filter: filter_name(config.filter).to_string(),
         mode: mode_name(config.mode).to_string(),
+        view: view_name(view).to_string(),
         threads: config.threads,
         width: settings.width,
         height: settings.height,
@@ -196,15 +272,16 @@ pub fn run_config(
 /// The records as the plain-text table `barylab bench` prints (header line first).
 pub fn text_table(records: &[BenchRecord]) -> String {
     let mut out = format!(
-        "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11} {:>9}\n",
-        "rasterizer", "filter", "mode", "threads", "size", "median ms", "Mpix/s"
+        "{:<10} {:<9} {:<12} {:<10} {:>7} {:>11} {:>11} {:>9}\n",
+        "rasterizer", "filter", "mode", "view", "threads", "size", "median ms", "Mpix/s"
     );
     for r in records {
         out.push_str(&format!(
-            "{:<10} {:<9} {:<12} {:>7} {:>11} {:>11.2} {:>9.1}\n",
+            "{:<10} {:<9} {:<12} {:<10} {:>7} {:>11} {:>11.2} {:>9.1}\n",
             r.rasterizer,
             r.filter,
             r.mode,
+            r.view,
             r.threads,
             format!("{}x{}", r.width, r.height),
             r.median_ms,
@@ -234,7 +311,8 @@ pub fn find<'a>(
 /// ```
 /// use barylab::bench::{BenchRecord, edge_over_scanline};
 /// let rec = |r: &str, ms: f64| BenchRecord {
-///     rasterizer: r.into(), filter: "nearest".into(), mode: "affine".into(), threads: 1,
+///     rasterizer: r.into(), filter: "nearest".into(), mode: "affine".into(),
+///     view: "single".into(), threads: 1,
 ///     width: 10, height: 10, median_ms: ms, mpix_per_s: 0.0,
 /// };
 /// let records = [rec("edge", 3.0), rec("scanline", 2.0)];

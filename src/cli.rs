@@ -236,6 +236,10 @@ struct BenchArgs {
     /// Print a JSON array of records instead of a table.
     #[arg(long)]
     json: bool,
+    /// What each frame draws, as the app's compare modes: one image, both modes (side by side
+    /// or wiped), or both with the difference heatmap.
+    #[arg(long, value_enum, default_value = "single")]
+    view: barylab::bench::View,
 }
 
 #[derive(clap::Args, Debug)]

@@ -304,3 +304,39 @@ fn render_options_for_rasterizer_and_threads_and_bench_json() {
         .collect();
     assert_eq!(names.into_iter().collect::<Vec<_>>(), ["edge", "scanline"]);
 }
+
+/// `bench --view` times what each compare mode draws, and says so in every record; a mesh
+/// scene with `subdivide` benchmarks as the dense mesh it makes.
+#[test]
+fn bench_views_and_dense_meshes() {
+    let bench_scene = format!(
+        "{}/assets/bench/bench-mesh-5k.json",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    for view in ["single", "side", "wipe", "difference"] {
+        let o = Command::new(env!("CARGO_BIN_EXE_barylab"))
+            .args([
+                "bench",
+                &bench_scene,
+                "--size",
+                "96x54",
+                "--frames",
+                "1",
+                "--view",
+                view,
+                "--json",
+            ])
+            .output()
+            .expect("bench");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let records: Vec<serde_json::Value> = serde_json::from_slice(&o.stdout).expect("JSON");
+        assert!(!records.is_empty());
+        assert!(records.iter().all(|r| r["view"] == view), "{records:?}");
+    }
+    let o = Command::new(env!("CARGO_BIN_EXE_barylab"))
+        .args(["bench", &bench_scene, "--view", "sideways"])
+        .output()
+        .expect("bench");
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("sideways"));
+}

@@ -75,6 +75,24 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
             bad, None,
             "{what}, vector level {vector:?}: (x, y, fast, reference)"
         );
+        // The heatmap's buffers (colour, depth, triangle, uv both ways), bit for bit too.
+        set_vector_level(vector);
+        render_into(&mut frame, mesh, tex, s, Buffers::ColorDepthUv).expect("render");
+        set_vector_level(VectorLevel::Avx512);
+        assert!(frame.weights_screen.is_empty() && frame.inv_w.is_empty());
+        let bits = |uv: [f32; 2]| uv.map(f32::to_bits);
+        let bad = (0..reference.color.len()).find(|&i| {
+            frame.color[i] != reference.color[i]
+                || frame.depth[i].to_bits() != reference.depth[i].to_bits()
+                || frame.triangle[i] != reference.triangle[i]
+                || bits(frame.uv_affine[i]) != bits(reference.uv_affine[i])
+                || bits(frame.uv_perspective[i]) != bits(reference.uv_perspective[i])
+        });
+        assert_eq!(
+            bad.map(|i| (i % reference.width as usize, i / reference.width as usize)),
+            None,
+            "{what}, vector level {vector:?}: uv buffers differ at (x, y)"
+        );
     }
 }
 

@@ -109,6 +109,7 @@ fn child(args: &Args, threads: usize) -> Result<(), String> {
                 rasterizer: "llvmpipe".into(),
                 filter: filter_name(filter).into(),
                 mode: mode_name(mode).into(),
+                view: barylab::bench::view_name(barylab::bench::View::Single).to_string(),
                 threads,
                 width: scene.width,
                 height: scene.height,

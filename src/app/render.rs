@@ -116,10 +116,11 @@ impl RenderCache {
         let start = Instant::now();
         let mesh = key.scene.to_mesh();
         let base = key.scene.settings();
-        // Only the difference heatmap reads the per-pixel uv buffers; everything else shows
-        // colour, which the fast path draws (bit-identical to the full render).
+        // Only the difference heatmap reads the per-pixel uv buffers (which the edge-function
+        // lanes also draw); everything else shows colour. Both are bit-identical to the full
+        // render.
         let buffers = if state.view.compare == Compare::Difference {
-            Buffers::All
+            Buffers::ColorDepthUv
         } else {
             Buffers::ColorDepth
         };

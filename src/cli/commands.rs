@@ -95,7 +95,9 @@ pub(super) fn bench(args: &BenchArgs) -> Result<()> {
     let base = scene.settings();
     let records = barylab::bench::matrix(barylab::bench::available_cores())
         .into_iter()
-        .map(|config| barylab::bench::run_config(&mesh, &texture, &base, config, args.frames))
+        .map(|config| {
+            barylab::bench::run_view(&mesh, &texture, &base, config, args.frames, args.view)
+        })
         .collect::<Result<Vec<_>, _>>()?;
     if args.json {
         print(&format!("{}\n", serde_json::to_string_pretty(&records)?))

@@ -201,6 +201,14 @@ pub fn screen_fraction(p: DVec4, q: DVec4, v: DVec4) -> Option<f64> {
     t.is_finite().then_some(t)
 }
 
+/// Whether every vertex is inside every clipping plane: then [`clip_triangle`] returns the
+/// triangle unchanged (its `unclipped()` is true), and the renderer skips building the polygon.
+pub fn inside_every_plane(tri: &[ClipVertex; 3], guard_band_ndc: f64) -> bool {
+    planes(guard_band_ndc)
+        .iter()
+        .all(|p| tri.iter().all(|v| p.distance(v.clip) >= 0.0))
+}
+
 /// Clips a triangle against all planes (Sutherland-Hodgman in clip space).
 ///
 /// Returns the clipped convex polygon, which may be empty (fewer than 3 vertices) when the

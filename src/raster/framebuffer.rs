@@ -31,6 +31,9 @@ pub enum Buffers {
     /// Colour and depth only; the other buffers are left empty (the fast path for display
     /// and benchmarks).
     ColorDepth,
+    /// Colour, depth, the triangle and uv both ways: what the difference heatmap reads. The
+    /// edge-function lanes draw it (the weights, facing and 1/w buffers are left empty).
+    ColorDepthUv,
 }
 
 /// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold 0 in every
@@ -70,14 +73,29 @@ impl Framebuffer {
     /// A cleared framebuffer with the given buffers.
     pub fn with_buffers(width: u32, height: u32, background: [u8; 4], buffers: Buffers) -> Self {
         let n = width as usize * height as usize;
-        if buffers == Buffers::ColorDepth {
-            return Self {
-                width,
-                height,
-                color: vec![background; n],
-                depth: vec![1.0; n],
-                ..Self::new(0, 0, background)
-            };
+        match buffers {
+            Buffers::ColorDepth => {
+                return Self {
+                    width,
+                    height,
+                    color: vec![background; n],
+                    depth: vec![1.0; n],
+                    ..Self::new(0, 0, background)
+                };
+            }
+            Buffers::ColorDepthUv => {
+                return Self {
+                    width,
+                    height,
+                    color: vec![background; n],
+                    depth: vec![1.0; n],
+                    triangle: vec![NO_TRIANGLE; n],
+                    uv_affine: vec![[0.0; 2]; n],
+                    uv_perspective: vec![[0.0; 2]; n],
+                    ..Self::new(0, 0, background)
+                };
+            }
+            Buffers::All => {}
         }
         Self {
             width,
@@ -101,8 +119,10 @@ impl Framebuffer {
 
     /// Which buffers this framebuffer has.
     pub fn buffers(&self) -> Buffers {
-        if self.triangle.len() == self.color.len() {
+        if self.weights_screen.len() == self.color.len() {
             Buffers::All
+        } else if self.uv_affine.len() == self.color.len() {
+            Buffers::ColorDepthUv
         } else {
             Buffers::ColorDepth
         }

@@ -2,11 +2,13 @@
 //! `camera` -> `clip` -> `project` -> `setup` -> `interpolate` -> `shade` (with `texture`) ->
 //! `framebuffer`, driven by `render`. Nothing here depends on the GUI.
 
+mod bands;
 pub mod camera;
 pub mod clip;
 pub mod framebuffer;
 pub mod interpolate;
 pub mod lanes;
+pub mod mesh;
 pub mod project;
 pub mod render;
 pub mod scanline;

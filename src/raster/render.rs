@@ -5,128 +5,18 @@
 //! centre is interpolated (`interpolate`), depth-tested (less-than) and shaded (`shade`).
 //! The probe calls [`prepare_triangle`] and [`interpolate::fragment`] exactly as done here.
 
-use glam::{DVec4, Vec2, Vec3};
-
-use super::clip::{ClipPolygon, ClipVertex, clip_triangle};
+use super::clip::{ClipPolygon, ClipVertex, clip_triangle, inside_every_plane};
 use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 use super::interpolate::{self, Fragment, Interpolation};
-use super::lanes::{self, LaneShading, Target};
+use super::lanes::{self, LaneShading, Target, UvTarget};
 use super::project::{MAX_IMAGE_SIZE, Viewport, project_vertex};
 use super::setup::{Facing, TriangleSetup, sample_point, setup_triangle};
 use super::shade::{ShadeParams, Shading, shade};
 use super::texture::{Filter, Texture, Wrap};
 use super::varying::Varyings;
 
-/// One vertex of a mesh, already in clip space.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct MeshVertex {
-    pub clip: DVec4,
-    pub uv: Vec2,
-    pub color: Vec3,
-}
-
-/// Triangles over clip-space vertices: what the rasterizer draws.
-#[derive(Clone, Debug, PartialEq, Default)]
-pub struct ClipMesh {
-    pub vertices: Vec<MeshVertex>,
-    pub triangles: Vec<[u32; 3]>,
-}
-
-impl ClipMesh {
-    /// Every triangle split into `n x n` triangles on its barycentric grid: the grid point
-    /// `(i, j, k)`, `i + j + k = n`, is `(i A + j B + k C) / n` in clip space, with its uv and
-    /// colour interpolated the same way. Clip-space interpolation is what perspective-correct
-    /// interpolation reproduces, so the subdivided mesh draws the same surface with the same
-    /// values (up to rounding). Points on an edge two triangles share are computed bit for bit
-    /// alike (the third weight is 0), so no crack opens. `n <= 1` returns a copy.
-    ///
-    /// ```
-    /// use barylab::raster::render::{ClipMesh, MeshVertex};
-    /// use glam::{DVec4, Vec2, Vec3};
-    /// let v = |x: f64, y: f64| MeshVertex { clip: DVec4::new(x, y, 0.0, 1.0), uv: Vec2::ZERO, color: Vec3::ONE };
-    /// let m = ClipMesh { vertices: vec![v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0)], triangles: vec![[0, 1, 2]] };
-    /// let s = m.subdivided(3);
-    /// assert_eq!(s.triangles.len(), 9);
-    /// assert_eq!(s.vertices.len(), 10); // (n + 1)(n + 2) / 2
-    /// ```
-    pub fn subdivided(&self, n: u32) -> ClipMesh {
-        if n <= 1 {
-            return self.clone();
-        }
-        let per_tri = ((n + 1) * (n + 2) / 2) as usize;
-        let mut out = ClipMesh {
-            vertices: Vec::with_capacity(self.triangles.len() * per_tri),
-            triangles: Vec::with_capacity(self.triangles.len() * (n * n) as usize),
-        };
-        let nf = f64::from(n);
-        for tri in &self.triangles {
-            let Some(v) = tri
-                .iter()
-                .map(|&i| self.vertices.get(i as usize).copied())
-                .collect::<Option<Vec<_>>>()
-            else {
-                // Kept as triangles with out-of-range indices (drawn as `BadIndex`), so the
-                // triangle numbers of the rest stay `source * n² + local`.
-                out.triangles
-                    .extend(std::iter::repeat_n([u32::MAX; 3], (n * n) as usize));
-                continue;
-            };
-            let base = out.vertices.len() as u32;
-            for i in 0..=n {
-                for j in 0..=(n - i) {
-                    let w = [
-                        f64::from(n - i - j) / nf,
-                        f64::from(i) / nf,
-                        f64::from(j) / nf,
-                    ];
-                    let mix3 = |f: &dyn Fn(&MeshVertex) -> DVec4| {
-                        f(&v[0]) * w[0] + f(&v[1]) * w[1] + f(&v[2]) * w[2]
-                    };
-                    let clip = mix3(&|m| m.clip);
-                    let uv = mix3(&|m| m.uv.as_dvec2().extend(0.0).extend(0.0));
-                    let color = mix3(&|m| m.color.as_dvec3().extend(0.0));
-                    out.vertices.push(MeshVertex {
-                        clip,
-                        uv: uv.truncate().truncate().as_vec2(),
-                        color: color.truncate().as_vec3(),
-                    });
-                }
-            }
-            out.triangles
-                .extend((0..n * n).map(|local| subdivided_triangle(n, base, local)));
-        }
-        out
-    }
-}
-
-/// Triangle `local` (0..n²) of one source triangle split by [`ClipMesh::subdivided`], whose
-/// grid vertices start at index `base`: the grid's row `i` (B's weight `i/n`) has
-/// `2 (n - i) - 1` triangles, alternately `(i, j), (i + 1, j), (i, j + 1)` and
-/// `(i + 1, j), (i + 1, j + 1), (i, j + 1)`, where grid point `(i, j)` (C's weight `j/n`) is
-/// vertex `base + i (n + 1) - i (i - 1) / 2 + j`.
-///
-/// ```
-/// use barylab::raster::render::subdivided_triangle;
-/// // n = 2: row 0 holds three triangles, row 1 one; grid points 0 1 2 / 3 4 / 5.
-/// assert_eq!(subdivided_triangle(2, 0, 0), [0, 3, 1]);
-/// assert_eq!(subdivided_triangle(2, 0, 1), [3, 4, 1]);
-/// assert_eq!(subdivided_triangle(2, 0, 2), [1, 4, 2]);
-/// assert_eq!(subdivided_triangle(2, 0, 3), [3, 5, 4]);
-/// ```
-pub fn subdivided_triangle(n: u32, base: u32, local: u32) -> [u32; 3] {
-    let index = |i: u32, j: u32| base + i * (n + 1) - i * i.saturating_sub(1) / 2 + j;
-    let (mut i, mut rest) = (0, local);
-    while i + 1 < n && rest >= 2 * (n - i) - 1 {
-        rest -= 2 * (n - i) - 1;
-        i += 1;
-    }
-    let j = rest / 2;
-    if rest % 2 == 0 {
-        [index(i, j), index(i + 1, j), index(i, j + 1)]
-    } else {
-        [index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)]
-    }
-}
+use super::bands::{RowBand, bin_by_band};
+pub use super::mesh::{ClipMesh, MeshVertex, subdivided_triangle};
 
 /// Which rasterizer visits the covered pixels. Both give the same coverage and values equal
 /// up to floating-point rounding.
@@ -294,19 +184,24 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
         out.status = TriangleStatus::NotFinite;
         return out;
     }
-    let polygon = clip_triangle(&verts, viewport.guard_band_ndc());
-    if !polygon.unclipped() {
+    let guard = viewport.guard_band_ndc();
+    if inside_every_plane(&verts, guard) {
+        // Most triangles of a mesh: nothing to clip, one set-up triangle.
+        let window = verts.map(|v| project_vertex(&v, viewport));
+        out.setups.extend(setup_triangle(window, viewport));
+    } else {
+        let polygon = clip_triangle(&verts, guard);
         out.clipped = Some(Box::new(polygon));
-    }
-    let pv = polygon.vertices();
-    if pv.len() < 3 {
-        out.status = TriangleStatus::ClippedAway;
-        return out;
-    }
-    let window: Vec<_> = pv.iter().map(|v| project_vertex(v, viewport)).collect();
-    for k in 1..window.len() - 1 {
-        if let Some(s) = setup_triangle([window[0], window[k], window[k + 1]], viewport) {
-            out.setups.push(s);
+        let pv = polygon.vertices();
+        if pv.len() < 3 {
+            out.status = TriangleStatus::ClippedAway;
+            return out;
+        }
+        let window: Vec<_> = pv.iter().map(|v| project_vertex(v, viewport)).collect();
+        for k in 1..window.len() - 1 {
+            if let Some(s) = setup_triangle([window[0], window[k], window[k + 1]], viewport) {
+                out.setups.push(s);
+            }
         }
     }
     out.status = if out.setups.is_empty() {
@@ -404,12 +299,13 @@ fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
     frame.color.resize(n, [0; 4]);
     frame.depth.resize(n, 1.0);
     let aov = if buffers == Buffers::All { n } else { 0 };
-    frame.triangle.resize(aov, NO_TRIANGLE);
+    let uv = if buffers == Buffers::ColorDepth { 0 } else { n };
+    frame.triangle.resize(uv, NO_TRIANGLE);
     frame.facing.resize(aov, Facing::Front);
     frame.weights_screen.resize(aov, [0.0; 3]);
     frame.weights_perspective.resize(aov, [0.0; 3]);
-    frame.uv_affine.resize(aov, [0.0; 2]);
-    frame.uv_perspective.resize(aov, [0.0; 2]);
+    frame.uv_affine.resize(uv, [0.0; 2]);
+    frame.uv_perspective.resize(uv, [0.0; 2]);
     frame.inv_w.resize(aov, 0.0);
 }
 
@@ -444,28 +340,6 @@ pub fn depth_range(triangles: &[PreparedTriangle]) -> (f64, f64) {
 /// serial render and the output does not depend on the band size or the number of threads.
 pub const ROWS_PER_BAND: u32 = 16;
 
-/// The set-up triangles that reach each band of `rows_per_band` rows, in submission order, as
-/// `(triangle, setup)` indices: each band then visits only its own triangles (a dense mesh
-/// has hundreds of thousands, each in one or two bands).
-fn bin_by_band(
-    triangles: &[PreparedTriangle],
-    height: u32,
-    rows_per_band: u32,
-) -> Vec<Vec<(u32, u32)>> {
-    let bands = height.div_ceil(rows_per_band).max(1) as usize;
-    let mut bins: Vec<Vec<(u32, u32)>> = vec![Vec::new(); bands];
-    for (ti, tri) in triangles.iter().enumerate() {
-        for (si, setup) in tri.setups.iter().enumerate() {
-            let first = (setup.bounds.y0 / rows_per_band) as usize;
-            let last = ((setup.bounds.y1 / rows_per_band) as usize).min(bands - 1);
-            for bin in bins.iter_mut().take(last + 1).skip(first) {
-                bin.push((ti as u32, si as u32));
-            }
-        }
-    }
-    bins
-}
-
 /// Rasterizes all set-up triangles into `frame`, in parallel over bands of `rows_per_band`
 /// image rows (rayon's current thread pool). With `clear`, each band first clears its rows
 /// to that background (depth to 1, the other buffers to their empty values).
@@ -494,118 +368,6 @@ pub fn rasterize_bands(
     });
 }
 
-/// Mutable views of rows `y0..y0 + rows` of every framebuffer buffer.
-struct RowBand<'a> {
-    y0: u32,
-    rows: u32,
-    width: u32,
-    color: &'a mut [[u8; 4]],
-    depth: &'a mut [f32],
-    triangle: &'a mut [u32],
-    facing: &'a mut [Facing],
-    weights_screen: &'a mut [[f32; 3]],
-    weights_perspective: &'a mut [[f32; 3]],
-    uv_affine: &'a mut [[f32; 2]],
-    uv_perspective: &'a mut [[f32; 2]],
-    inv_w: &'a mut [f32],
-}
-
-impl<'a> RowBand<'a> {
-    /// Cuts the framebuffer into bands of `rows_per_band` rows (the last may be shorter).
-    fn split(frame: &'a mut Framebuffer, rows_per_band: u32) -> Vec<RowBand<'a>> {
-        let width = frame.width;
-        let mut rest = RowBand {
-            y0: 0,
-            rows: frame.height,
-            width,
-            color: &mut frame.color,
-            depth: &mut frame.depth,
-            triangle: &mut frame.triangle,
-            facing: &mut frame.facing,
-            weights_screen: &mut frame.weights_screen,
-            weights_perspective: &mut frame.weights_perspective,
-            uv_affine: &mut frame.uv_affine,
-            uv_perspective: &mut frame.uv_perspective,
-            inv_w: &mut frame.inv_w,
-        };
-        let mut out = Vec::new();
-        while rest.rows > rows_per_band {
-            let (head, tail) = rest.split_at(rows_per_band);
-            out.push(head);
-            rest = tail;
-        }
-        out.push(rest);
-        out
-    }
-
-    /// Whether the per-pixel buffers besides colour and depth are present.
-    fn has_aovs(&self) -> bool {
-        self.triangle.len() == self.color.len()
-    }
-
-    /// Clears every buffer of the band: colour to `background`, depth to 1 (the far plane).
-    fn clear(&mut self, background: [u8; 4]) {
-        self.color.fill(background);
-        self.depth.fill(1.0);
-        self.triangle.fill(NO_TRIANGLE);
-        self.facing.fill(Facing::Front);
-        self.weights_screen.fill([0.0; 3]);
-        self.weights_perspective.fill([0.0; 3]);
-        self.uv_affine.fill([0.0; 2]);
-        self.uv_perspective.fill([0.0; 2]);
-        self.inv_w.fill(0.0);
-    }
-
-    /// The first `rows` rows and the remainder.
-    fn split_at(self, rows: u32) -> (RowBand<'a>, RowBand<'a>) {
-        let n = rows as usize * self.width as usize;
-        // Absent buffers (`Buffers::ColorDepth`) are empty and stay empty in both halves.
-        fn cut<T>(s: &mut [T], n: usize) -> (&mut [T], &mut [T]) {
-            let n = n.min(s.len());
-            s.split_at_mut(n)
-        }
-        let (color, color_t) = self.color.split_at_mut(n);
-        let (depth, depth_t) = self.depth.split_at_mut(n);
-        let (triangle, triangle_t) = cut(self.triangle, n);
-        let (facing, facing_t) = cut(self.facing, n);
-        let (ws, ws_t) = cut(self.weights_screen, n);
-        let (wp, wp_t) = cut(self.weights_perspective, n);
-        let (ua, ua_t) = cut(self.uv_affine, n);
-        let (up, up_t) = cut(self.uv_perspective, n);
-        let (iw, iw_t) = cut(self.inv_w, n);
-        (
-            RowBand {
-                y0: self.y0,
-                rows,
-                width: self.width,
-                color,
-                depth,
-                triangle,
-                facing,
-                weights_screen: ws,
-                weights_perspective: wp,
-                uv_affine: ua,
-                uv_perspective: up,
-                inv_w: iw,
-            },
-            RowBand {
-                y0: self.y0 + rows,
-                rows: self.rows - rows,
-                width: self.width,
-                color: color_t,
-                depth: depth_t,
-                triangle: triangle_t,
-                facing: facing_t,
-                weights_screen: ws_t,
-                weights_perspective: wp_t,
-                uv_affine: ua_t,
-                uv_perspective: up_t,
-                inv_w: iw_t,
-            },
-        )
-    }
-}
-
 /// Visits every covered pixel centre of one set-up triangle within a band, depth-tests and
 /// writes it.
 fn rasterize(
@@ -628,6 +390,7 @@ fn rasterize(
         [glam::DVec2::ZERO; 3]
     };
     let aovs = band.has_aovs();
+    let uvs = !band.uv_affine.is_empty();
     // Depth test, buffers and shading: the same for both rasterizers.
     let write = |band: &mut RowBand<'_>, x: u32, y: u32, frag: &Fragment| {
         let mut frag = *frag;
@@ -642,13 +405,15 @@ fn rasterize(
         }
         band.depth[i] = depth;
         band.color[i] = shade(&frag, texture, params, &wire);
-        if aovs {
+        if uvs {
             band.triangle[i] = source;
+            band.uv_affine[i] = frag.affine.uv().to_array();
+            band.uv_perspective[i] = frag.correct.uv().to_array();
+        }
+        if aovs {
             band.facing[i] = setup.facing;
             band.weights_screen[i] = frag.affine.bary();
             band.weights_perspective[i] = frag.correct.bary();
-            band.uv_affine[i] = frag.affine.uv().to_array();
-            band.uv_perspective[i] = frag.correct.uv().to_array();
             band.inv_w[i] = frag.inv_w as f32;
         }
     };
@@ -682,6 +447,12 @@ fn rasterize(
                     width,
                     color: band.color,
                     depth: band.depth,
+                    uv: uvs.then_some(UvTarget {
+                        source,
+                        triangle: band.triangle,
+                        uv_affine: band.uv_affine,
+                        uv_perspective: band.uv_perspective,
+                    }),
                 };
                 lanes::edge_triangle(
                     setup,
@@ -700,13 +471,14 @@ fn rasterize(
                 return;
             }
             (Rasterizer::Scanline, Some(shading))
-                if !shading.wireframe && shading.color == lanes::LaneColor::Texture =>
+                if !shading.wireframe && !uvs && shading.color == lanes::LaneColor::Texture =>
             {
                 let mut target = Target {
                     y0: band.y0,
                     width: band.width,
                     color: band.color,
                     depth: band.depth,
+                    uv: None,
                 };
                 lanes::scanline_triangle(setup, (y_start, y_end), texture, shading, &mut target);
                 return;

@@ -1,7 +1,8 @@
 //! The lane paths written with AVX2 intrinsics: the same operations in the same order as
 //! the portable lane code in the parent module (and so as the per-pixel renderer), eight
 //! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
-//! is a mask or a clamp on both axes; tests check the two agree bit for bit.
+//! is a mask or a clamp on both axes; tests check the two agree bit for bit. (Over 600 lines:
+//! one intrinsic per operation of the portable code, kept in one file to compare side by side.)
 
 use std::arch::x86_64::*;
 
@@ -221,6 +222,8 @@ struct Pending {
     wire: i32,
     /// Buffer index of lane 0.
     index: usize,
+    /// `[u_affine, v_affine, u_smooth, v_smooth]` for a target with uv buffers.
+    both_uv: Option<[__m256; 4]>,
 }
 
 /// Texture lookups of chunks: one at a time with AVX2, or two at a time with AVX-512.
@@ -282,14 +285,37 @@ fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
             mask_from_bits(chunk.wire),
         );
     }
-    write(target, chunk.index, chunk.valid, chunk.depth, rgba);
+    let pass = write(target, chunk.index, chunk.valid, chunk.depth, rgba);
+    if let (Some(uv), Some(both)) = (target.uv.as_mut(), &chunk.both_uv) {
+        // The lanes that passed the depth test, stored one by one (the buffers hold uv pairs).
+        let bits = _mm256_movemask_ps(_mm256_castsi256_ps(pass));
+        let mut lanes = [[0.0f32; 8]; 4];
+        for (out, v) in lanes.iter_mut().zip(both) {
+            // SAFETY: `out` holds exactly eight f32.
+            unsafe { _mm256_storeu_ps(out.as_mut_ptr(), *v) };
+        }
+        for k in 0..8 {
+            if bits & (1 << k) != 0 {
+                let i = chunk.index + k;
+                uv.triangle[i] = uv.source;
+                uv.uv_affine[i] = [lanes[0][k], lanes[1][k]];
+                uv.uv_perspective[i] = [lanes[2][k], lanes[3][k]];
+            }
+        }
+    }
 }
 
 /// Depth-tests and writes eight pixels starting at buffer index `index` of the band; lanes
-/// outside `ok` are neither read nor written.
+/// outside `ok` are neither read nor written. Returns the lanes that passed.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn write(target: &mut Target<'_>, index: usize, ok: __m256i, depth: __m256, rgba: __m256i) {
+fn write(
+    target: &mut Target<'_>,
+    index: usize,
+    ok: __m256i,
+    depth: __m256,
+    rgba: __m256i,
+) -> __m256i {
     debug_assert!(index < target.depth.len() && target.depth.len() == target.color.len());
     // SAFETY: the caller's `ok` enables only lanes of pixels inside the band's row (columns
     // up to the triangle's last column, which is inside the image), so every accessed
@@ -305,6 +331,7 @@ fn write(target: &mut Target<'_>, index: usize, ok: __m256i, depth: __m256, rgba
         );
         _mm256_maskstore_ps(dp, pass, depth);
         _mm256_maskstore_epi32(cp, pass, rgba);
+        pass
     }
 }
 
@@ -364,17 +391,25 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
         _mm256_cmp_pd::<_CMP_GT_OQ>(sum, _mm256_setzero_pd()),
         _mm256_cmp_pd::<_CMP_LT_OQ>(sum, _mm256_set1_pd(f64::INFINITY)),
     );
+    let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
+    let p = [
+        _mm256_mul_pd(q[0], inv),
+        _mm256_mul_pd(q[1], inv),
+        _mm256_mul_pd(q[2], inv),
+    ];
     let w = match mode {
-        Interpolation::Perspective => {
-            let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
-            [
-                _mm256_mul_pd(q[0], inv),
-                _mm256_mul_pd(q[1], inv),
-                _mm256_mul_pd(q[2], inv),
-            ]
-        }
+        Interpolation::Perspective => p,
         Interpolation::Affine => l,
     };
+    // uv both ways for the heatmap's buffers, as the lane code computes them.
+    let both_uv = c.both_uv.map(|b| {
+        [
+            dot3(&l, b[0]),
+            dot3(&l, b[1]),
+            dot3(&p, b[2]),
+            dot3(&p, b[3]),
+        ]
+    });
     let mut wire = 0;
     if let Some(wire_consts) = &c.wire {
         for i in 0..3 {
@@ -401,6 +436,7 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
         ok: _mm256_movemask_pd(ok),
         wire,
         channels,
+        both_uv,
     }
 }
 
@@ -414,6 +450,8 @@ struct Four {
     wire: i32,
     /// Vertex colour or barycentric channels (zero for the other shadings).
     channels: [__m256d; 3],
+    /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
+    both_uv: Option<[__m256d; 4]>,
 }
 
 /// `unorm8(x)`: `round(clamp(x, 0, 1) * 255)`, half away from zero (NaN gives 0).
@@ -483,7 +521,10 @@ pub(super) fn edge_triangle(
     let (mode, color) = (shading.mode, shading.color);
     let mut lookups = sampler.map(|s| Lookups::new(s, wide));
     let planes = EdgePlanes::new(setup);
-    let consts = Constants::new(setup, mode, shading.wireframe, color);
+    let mut consts = Constants::new(setup, mode, shading.wireframe, color);
+    if target.uv.is_some() {
+        consts.both_uv = Some(super::both_uv(setup));
+    }
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
     let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
     let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
@@ -548,6 +589,10 @@ pub(super) fn edge_triangle(
                         valid: mask_from_bits(ok),
                         wire: lo.wire | (hi.wire << 4),
                         index: (y - target.y0) as usize * target.width as usize + bx as usize,
+                        both_uv: lo
+                            .both_uv
+                            .zip(hi.both_uv)
+                            .map(|(l, h)| [0, 1, 2, 3].map(|j| to_f32(l[j], h[j]))),
                     };
                     match lookups.as_mut() {
                         Some(l) if color == LaneColor::Texture => l.push(target, chunk),
@@ -635,6 +680,7 @@ pub(super) fn scanline_triangle(
                     valid: mask_from_bits(ok),
                     wire: 0,
                     index: row + x as usize,
+                    both_uv: None,
                 };
                 lookups.push(target, chunk);
             }

@@ -1,5 +1,9 @@
 //! The fast path: eight pixels of a row at a time, colour and depth only.
 //!
+//! (Longer than the project's ~600 lines: the portable lane code and the types the AVX2 and
+//! AVX-512 files mirror are kept together, so a reader sees every step of the arithmetic that
+//! must stay bit-identical in one place.)
+//!
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
 //! nearest or bilinear filtering, vertex colour, barycentric and depth shading, and the
@@ -104,12 +108,27 @@ type Mask = [bool; LANES];
 /// Lane offsets 0, 1, ..., 7 as `f64`.
 const OFFSETS: F64s = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
 
-/// Where the lanes write: the colour and depth rows `y0..` of one band of the framebuffer.
+/// Where the lanes write: the colour and depth rows `y0..` of one band of the framebuffer, and
+/// optionally the triangle and uv both ways ([`Buffers::ColorDepthUv`]).
+///
+/// [`Buffers::ColorDepthUv`]: super::framebuffer::Buffers::ColorDepthUv
 pub struct Target<'a> {
     pub y0: u32,
     pub width: u32,
     pub color: &'a mut [[u8; 4]],
     pub depth: &'a mut [f32],
+    pub uv: Option<UvTarget<'a>>,
+}
+
+/// The triangle and uv buffers of a band, for the difference heatmap: where a fragment passes
+/// the depth test, its source triangle, its `noperspective` uv and its `smooth` uv, as
+/// [`interpolate::fragment`](super::interpolate::fragment) computes them (bit for bit).
+pub struct UvTarget<'a> {
+    /// The source triangle being drawn.
+    pub source: u32,
+    pub triangle: &'a mut [u32],
+    pub uv_affine: &'a mut [[f32; 2]],
+    pub uv_perspective: &'a mut [[f32; 2]],
 }
 
 /// What the lanes shade: texture (nearest or bilinear), vertex colour, barycentric weights or
@@ -244,6 +263,9 @@ struct Constants {
     depth: [f64; 3],
     u: [f64; 3],
     v: [f64; 3],
+    /// uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]` per vertex, when
+    /// the target wants them.
+    both_uv: Option<[[f64; 3]; 4]>,
     /// `channels[c][k]`: channel `c` of vertex `k` for vertex-colour or barycentric shading.
     channels: [[f64; 3]; 3],
     wire: Option<Wire>,
@@ -292,6 +314,7 @@ impl Constants {
             depth: setup.v.map(|v| v.depth),
             u: uv.map(|t| f64::from(t.x)),
             v: uv.map(|t| f64::from(t.y)),
+            both_uv: None,
             channels,
             wire,
         }
@@ -308,6 +331,8 @@ struct Samples {
     wire: Mask,
     channels: [F32s; 3],
     depth64: F64s,
+    /// `[u_affine, v_affine, u_smooth, v_smooth]` (when [`Constants::both_uv`] is set).
+    both_uv: [F32s; 4],
 }
 
 impl Samples {
@@ -320,6 +345,7 @@ impl Samples {
             wire: [false; LANES],
             channels: [[0.0; LANES]; 3],
             depth64: [0.0; LANES],
+            both_uv: [[0.0; LANES]; 4],
         }
     }
 }
@@ -341,6 +367,25 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
             ],
         };
     }
+}
+
+/// The vertices' uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]`
+/// (the `noperspective` set, then the `smooth` one), for [`Constants::both_uv`].
+fn both_uv(setup: &TriangleSetup) -> [[f64; 3]; 4] {
+    let uv = |k: usize, smooth: bool| {
+        let v = if smooth {
+            &setup.v[k].varyings
+        } else {
+            &setup.v[k].noperspective
+        };
+        v.uv().as_dvec2()
+    };
+    [
+        [0, 1, 2].map(|k| uv(k, false).x),
+        [0, 1, 2].map(|k| uv(k, false).y),
+        [0, 1, 2].map(|k| uv(k, true).x),
+        [0, 1, 2].map(|k| uv(k, true).y),
+    ]
 }
 
 /// The screen weights of the eight pixels `x, x + 1, ...` of row `y`, as
@@ -370,6 +415,13 @@ fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
         let sum = q[0] + q[1] + q[2];
         out.ok[k] = sum > 0.0 && sum < f64::INFINITY;
         let inv = 1.0 / sum;
+        if let Some(b) = &c.both_uv {
+            let p = [q[0] * inv, q[1] * inv, q[2] * inv];
+            for (j, x) in b.iter().enumerate() {
+                let w = if j < 2 { &l } else { &p };
+                out.both_uv[j][k] = (w[0] * x[0] + w[1] * x[1] + w[2] * x[2]) as f32;
+            }
+        }
         let w = match mode {
             Interpolation::Perspective => [q[0] * inv, q[1] * inv, q[2] * inv],
             Interpolation::Affine => l,
@@ -514,6 +566,12 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, s: &Samples, colors: &[[u8; 4]
         if depth_passes(s.depth[k], target.depth[i]) {
             target.depth[i] = s.depth[k];
             target.color[i] = colors[k];
+            if let Some(uv) = target.uv.as_mut() {
+                let b = &s.both_uv;
+                uv.triangle[i] = uv.source;
+                uv.uv_affine[i] = [b[0][k], b[1][k]];
+                uv.uv_perspective[i] = [b[2][k], b[3][k]];
+            }
         }
     }
 }
@@ -580,7 +638,10 @@ fn edge_triangle_impl(
     let planes = EdgePlanes::new(setup);
     let color = shading.map_or(LaneColor::Texture, |s| s.color);
     let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
-    let consts = Constants::new(setup, mode, shading.is_some_and(|s| s.wireframe), color);
+    let mut consts = Constants::new(setup, mode, shading.is_some_and(|s| s.wireframe), color);
+    if target.uv.is_some() {
+        consts.both_uv = Some(both_uv(setup));
+    }
     let sampler = shading.map(|s| Sampler::new(texture, s.filter, s.wrap));
     let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
     let a = planes.a.map(|v| v as f64);

@@ -4,11 +4,15 @@
 //! appears upright on a quad whose uv (0,0) is its lower-left corner. Images loaded from files
 //! are flipped on load accordingly.
 
-use std::path::Path;
-
-use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
+
+mod builtin;
+mod load;
+mod mip;
+
+pub use load::TextureError;
+use mip::mip_chain;
 
 /// Texture minification/magnification filter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -78,55 +82,6 @@ impl BuiltinTexture {
     }
 }
 
-/// Errors while loading a texture from a file.
-#[derive(Debug, thiserror::Error)]
-pub enum TextureError {
-    #[error(transparent)]
-    File(#[from] crate::files::ReadError),
-    #[error("cannot decode texture {path}: {message}")]
-    Decode {
-        path: String,
-        /// The decoder's message, on one line.
-        message: String,
-    },
-    #[error("texture {path} is empty (no pixels or 0 bytes)")]
-    Empty { path: String },
-}
-
-/// A decoder's message on one line, without trailing blank lines.
-fn one_line(message: &str) -> String {
-    message
-        .lines()
-        .map(str::trim)
-        .filter(|l| !l.is_empty())
-        .collect::<Vec<_>>()
-        .join(" ")
-}
-
-/// Why an image file of `format` is cut short, if it is: decoders fill a truncated JPEG with
-/// grey and may accept a PNG without its end, so the file's end marker is checked here.
-fn truncated(format: image::ImageFormat, bytes: &[u8]) -> Option<&'static str> {
-    match format {
-        image::ImageFormat::Jpeg => {
-            // The picture's data starts at its last start-of-scan marker (an embedded
-            // thumbnail comes before it) and ends with the end-of-image marker; neither
-            // byte pair occurs inside the entropy-coded data.
-            let last = |marker: [u8; 2]| bytes.windows(2).rposition(|w| w == marker);
-            match (last([0xFF, 0xDA]), last([0xFF, 0xD9])) {
-                (Some(sos), Some(eoi)) if eoi > sos => None,
-                _ => Some("the JPEG file is truncated (no end-of-image marker after its data)"),
-            }
-        }
-        image::ImageFormat::Png => {
-            // The last chunk: length 0, type IEND, its CRC.
-            let iend = b"\0\0\0\0IEND\xAE\x42\x60\x82";
-            (!bytes.windows(iend.len()).any(|w| w == iend))
-                .then_some("the PNG file is truncated (no IEND chunk)")
-        }
-        _ => None,
-    }
-}
-
 /// An RGBA8 texture; texel row 0 is the bottom row (v = 0).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Texture {
@@ -143,49 +98,6 @@ struct Level {
     width: u32,
     height: u32,
     texels: Vec<[u8; 4]>,
-}
-
-/// The next mipmap level, as glGenerateMipmap: size `max(1, floor(n / 2))`, each texel the
-/// rounded mean of the 2x2 texels it covers (clamped at odd edges).
-fn half_level(w: u32, h: u32, texels: &[[u8; 4]]) -> Level {
-    let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
-    let at = |i: u32, j: u32| texels[(j.min(h - 1) * w + i.min(w - 1)) as usize];
-    let mut out = Vec::with_capacity((nw * nh) as usize);
-    for j in 0..nh {
-        for i in 0..nw {
-            let q = [
-                at(2 * i, 2 * j),
-                at(2 * i + 1, 2 * j),
-                at(2 * i, 2 * j + 1),
-                at(2 * i + 1, 2 * j + 1),
-            ];
-            let mut c = [0u8; 4];
-            for (k, ch) in c.iter_mut().enumerate() {
-                let sum: u32 = q.iter().map(|t| u32::from(t[k])).sum();
-                *ch = ((sum + 2) / 4) as u8;
-            }
-            out.push(c);
-        }
-    }
-    Level {
-        width: nw,
-        height: nh,
-        texels: out,
-    }
-}
-
-fn mip_chain(w: u32, h: u32, texels: &[[u8; 4]]) -> Vec<Level> {
-    let mut mips: Vec<Level> = Vec::new();
-    let (mut cw, mut ch) = (w, h);
-    while cw > 1 || ch > 1 {
-        let next = match mips.last() {
-            Some(l) => half_level(cw, ch, &l.texels),
-            None => half_level(cw, ch, texels),
-        };
-        (cw, ch) = (next.width, next.height);
-        mips.push(next);
-    }
-    mips
 }
 
 /// Level of detail from the uv derivatives across a pixel (OpenGL 4.6 eq. 8.7 - 8.9):
@@ -412,62 +324,6 @@ impl Texture {
             }
         }
         Self::from_texels(w, h, texels)
-    }
-
-    /// Loads PNG, JPEG, BMP, TGA or WebP from a file, converting to RGBA8.
-    pub fn load(path: &Path) -> Result<Self, TextureError> {
-        Ok(Self::load_noted(path)?.0)
-    }
-
-    /// Like [`Texture::load`]; images larger than [`MAX_TEXTURE_SIZE`] on a side are
-    /// downscaled (keeping the aspect ratio), and the note says so.
-    pub fn load_noted(path: &Path) -> Result<(Self, Option<String>), TextureError> {
-        let img = Self::decode(path)?;
-        let (w, h) = img.dimensions();
-        if w.max(h) <= MAX_TEXTURE_SIZE {
-            let tex = Self::from_image(&img).ok_or(TextureError::Empty {
-                path: crate::files::shown(path),
-            })?;
-            return Ok((tex, None));
-        }
-        let scale = f64::from(MAX_TEXTURE_SIZE) / f64::from(w.max(h));
-        let nw = ((f64::from(w) * scale).round() as u32).max(1);
-        let nh = ((f64::from(h) * scale).round() as u32).max(1);
-        let small = image::imageops::resize(&img, nw, nh, image::imageops::FilterType::Triangle);
-        let tex = Self::from_image(&small).ok_or(TextureError::Empty {
-            path: crate::files::shown(path),
-        })?;
-        let note = format!(
-            "texture {} is {w}x{h}; downscaled to {nw}x{nh} for speed",
-            crate::files::shown(path)
-        );
-        Ok((tex, Some(note)))
-    }
-
-    fn decode(path: &Path) -> Result<image::RgbaImage, TextureError> {
-        use crate::files::{FileKind, read_regular, shown};
-        let bytes = read_regular(path, FileKind::Texture)?;
-        if bytes.is_empty() {
-            return Err(TextureError::Empty { path: shown(path) });
-        }
-        let decode_error = |message: String| TextureError::Decode {
-            path: shown(path),
-            message: one_line(&message),
-        };
-        let mut reader = image::ImageReader::new(std::io::Cursor::new(&bytes[..]))
-            .with_guessed_format()
-            .map_err(|e| decode_error(e.to_string()))?;
-        // TGA has no signature to sniff: fall back on the file's extension.
-        if reader.format().is_none() {
-            reader.set_format(
-                image::ImageFormat::from_path(path).map_err(|e| decode_error(e.to_string()))?,
-            );
-        }
-        if let Some(problem) = reader.format().and_then(|f| truncated(f, &bytes)) {
-            return Err(decode_error(problem.to_string()));
-        }
-        let img = reader.decode().map_err(|e| decode_error(e.to_string()))?;
-        Ok(img.to_rgba8())
     }
 
     /// The texels as an image with row 0 at the top, for display and export.
@@ -738,149 +594,10 @@ impl Texture {
     /// A built-in procedural texture.
     pub fn builtin(which: BuiltinTexture) -> Self {
         match which {
-            BuiltinTexture::UvGrid => uv_grid(),
-            BuiltinTexture::Checker => checker(),
-            BuiltinTexture::Rgbw2x2 => rgbw_2x2(),
-            BuiltinTexture::Noise => noise(),
-        }
-    }
-}
-
-fn checker() -> Texture {
-    const SIZE: u32 = 256;
-    const CELLS: u32 = 8;
-    let cell = SIZE / CELLS;
-    let mut texels = Vec::with_capacity((SIZE * SIZE) as usize);
-    for j in 0..SIZE {
-        for i in 0..SIZE {
-            let dark = (i / cell + j / cell).is_multiple_of(2);
-            texels.push(if dark {
-                [40, 40, 40, 255]
-            } else {
-                [235, 235, 235, 255]
-            });
-        }
-    }
-    Texture::new_with_mips(SIZE, SIZE, texels)
-}
-
-/// SplitMix64-style integer hash: a fixed, platform-independent pseudo-random texel.
-fn hash(mut x: u64) -> u64 {
-    x = x.wrapping_add(0x9E37_79B9_7F4A_7C15);
-    x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    x ^ (x >> 31)
-}
-
-fn noise() -> Texture {
-    const SIZE: u32 = 1024;
-    let texels = (0..u64::from(SIZE * SIZE))
-        .map(|i| {
-            let h = hash(i).to_le_bytes();
-            [h[0], h[1], h[2], 255]
-        })
-        .collect();
-    Texture::new_with_mips(SIZE, SIZE, texels)
-}
-
-fn rgbw_2x2() -> Texture {
-    // The picture[x][y]: (0,0) red, (0,1) white, (1,0) green, (1,1) blue, with y = v.
-    Texture::new_with_mips(
-        2,
-        2,
-        vec![
-            [255, 0, 0, 255],
-            [0, 255, 0, 255],
-            [255, 255, 255, 255],
-            [0, 0, 255, 255],
-        ],
-    )
-}
-
-/// 8x8 cells of 64 texels. Cell (c, r) (c along u, r along v) is tinted by its position and
-/// labelled "c,r"; thin dark lines separate the cells and a thicker line marks the borders.
-fn uv_grid() -> Texture {
-    const SIZE: u32 = 512;
-    const CELLS: u32 = 8;
-    let cell = SIZE / CELLS;
-    // Draw top-down in an image, then flip into texel order.
-    let mut img = image::RgbaImage::new(SIZE, SIZE);
-    for (x, y, px) in img.enumerate_pixels_mut() {
-        let c = x / cell;
-        let r = CELLS - 1 - y / cell;
-        let (fu, fv) = (c as f32 / (CELLS - 1) as f32, r as f32 / (CELLS - 1) as f32);
-        let light = (c + r).is_multiple_of(2);
-        let base = if light { 0.92 } else { 0.78 };
-        let rgb = [
-            base - 0.35 * (1.0 - fu) * fv,
-            base - 0.30 * fu * (1.0 - fv),
-            base - 0.35 * (1.0 - fu) * (1.0 - fv) - 0.2 * fu * fv,
-        ];
-        let (lx, ly) = (x % cell, y % cell);
-        let line = lx == 0 || ly == 0 || lx == cell - 1 || ly == cell - 1;
-        let border = x < 3 || y < 3 || x >= SIZE - 3 || y >= SIZE - 3;
-        *px = if border {
-            image::Rgba([20, 20, 30, 255])
-        } else if line {
-            image::Rgba([70, 70, 90, 255])
-        } else {
-            image::Rgba([
-                (rgb[0] * 255.0) as u8,
-                (rgb[1] * 255.0) as u8,
-                (rgb[2] * 255.0) as u8,
-                255,
-            ])
-        };
-    }
-    if let Ok(font) = FontRef::try_from_slice(epaint_default_fonts::HACK_REGULAR) {
-        for r in 0..CELLS {
-            for c in 0..CELLS {
-                let label = format!("{c},{r}");
-                let x0 = c * cell;
-                let y0 = (CELLS - 1 - r) * cell;
-                draw_text_centered(&mut img, &font, &label, x0, y0, cell, [25, 25, 40]);
-            }
-        }
-    }
-    Texture::from_image(&img).unwrap_or_else(checker)
-}
-
-/// Draws `text` centred in the square cell at (x0, y0) of side `cell`.
-fn draw_text_centered(
-    img: &mut image::RgbaImage,
-    font: &FontRef<'_>,
-    text: &str,
-    x0: u32,
-    y0: u32,
-    cell: u32,
-    rgb: [u8; 3],
-) {
-    let scale = PxScale::from(cell as f32 * 0.42);
-    let scaled = font.as_scaled(scale);
-    let width: f32 = text
-        .chars()
-        .map(|ch| scaled.h_advance(font.glyph_id(ch)))
-        .sum();
-    let mut pen_x = x0 as f32 + (cell as f32 - width) / 2.0;
-    let baseline = y0 as f32 + (cell as f32 + scaled.ascent() + scaled.descent()) / 2.0;
-    for ch in text.chars() {
-        let id = font.glyph_id(ch);
-        let glyph = id.with_scale_and_position(scale, ab_glyph::point(pen_x, baseline));
-        pen_x += scaled.h_advance(id);
-        if let Some(outlined) = font.outline_glyph(glyph) {
-            let b = outlined.px_bounds();
-            outlined.draw(|gx, gy, coverage| {
-                let px = b.min.x as i64 + i64::from(gx);
-                let py = b.min.y as i64 + i64::from(gy);
-                if px < 0 || py < 0 || px >= img.width() as i64 || py >= img.height() as i64 {
-                    return;
-                }
-                let p = img.get_pixel_mut(px as u32, py as u32);
-                for (channel, ink) in p.0.iter_mut().zip(rgb) {
-                    let bg = f32::from(*channel);
-                    *channel = (bg + (f32::from(ink) - bg) * coverage.clamp(0.0, 1.0)) as u8;
-                }
-            });
+            BuiltinTexture::UvGrid => builtin::uv_grid(),
+            BuiltinTexture::Checker => builtin::checker(),
+            BuiltinTexture::Rgbw2x2 => builtin::rgbw_2x2(),
+            BuiltinTexture::Noise => builtin::noise(),
         }
     }
 }
