@@ -12,6 +12,9 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::output::{self, note, print};
 
 mod commands;
+mod compare;
+#[cfg(feature = "gpu")]
+mod gpu_check;
 
 const EXAMPLES: &str = "\
 Examples:
@@ -29,7 +32,9 @@ Examples:
   barylab probe assets/scenes/default.json --pixel 400,420
   barylab probe assets/scenes/default.json --pixel 400,420 --mode affine --format markdown > notes.md
   barylab figure assets/scenes/default.json --pixel 400,420 -o fig.svg
-  barylab figure assets/scenes/default.json --size 400x300 --compare side --scale 2 -o fig.png";
+  barylab figure assets/scenes/default.json --size 400x300 --compare side --scale 2 -o fig.png
+  barylab compare assets/scenes/games101-a2.json output.png --background black -o diff.png
+  barylab gpu-check assets/scenes/*.json";
 
 /// barylab: see how a GPU interpolates across a triangle, pixel by pixel.
 #[derive(Parser, Debug)]
@@ -86,6 +91,94 @@ enum Command {
         after_help = "Examples:\n  barylab bench\n  barylab bench assets/scenes/default.json --frames 20 --json"
     )]
     Bench(BenchArgs),
+    /// Compare an image from another rasterizer (a student's, a screenshot) with barylab's
+    /// render of the same scene: coverage, colours, a difference image, and the first
+    /// differing pixels each with a reason. Exits 0 when they agree, 1 when they differ.
+    #[command(
+        after_help = "Examples:\n  barylab compare assets/scenes/games101-a2.json output.png --background black\n  barylab compare assets/scenes/default.json shot.png -o diff.png --json"
+    )]
+    Compare(CompareArgs),
+    /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
+    /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
+    /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
+    /// coverage differs.
+    #[cfg(feature = "gpu")]
+    #[command(
+        name = "gpu-check",
+        after_help = "Examples:\n  barylab gpu-check assets/scenes/*.json\n  barylab gpu-check assets/scenes/default.json --mode affine --filter nearest --json"
+    )]
+    GpuCheck(GpuCheckArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct CompareArgs {
+    #[command(flatten)]
+    input: SceneOptions,
+    /// The image to compare (PNG, JPEG, BMP, TGA or WebP), the size barylab renders the scene.
+    image: PathBuf,
+    /// Write the difference image here (PNG): dim grey where they agree, red to yellow by
+    /// colour difference, magenta where only the image covers a pixel, cyan where only
+    /// barylab does.
+    #[arg(short, long)]
+    output: Option<PathBuf>,
+    /// The image's background colour (black, white, #rrggbb or R,G,B): other colours are
+    /// covered pixels. Default: by alpha if the image has transparent pixels, else the
+    /// scene's background colour.
+    #[arg(long, value_parser = parse_color, value_name = "COLOR")]
+    background: Option<[u8; 3]>,
+    /// 8-bit levels a channel may differ by and still agree.
+    #[arg(long, default_value_t = barylab::compare::DEFAULT_TOLERANCE)]
+    tolerance: u8,
+    /// Print the comparison as JSON.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Parses a colour: black, white, #rrggbb or R,G,B.
+fn parse_color(s: &str) -> Result<[u8; 3], String> {
+    let bad = || format!("`{s}` is not a colour like black, white, #1e90ff or 30,144,255");
+    let t = s.trim().to_ascii_lowercase();
+    match t.as_str() {
+        "black" => return Ok([0, 0, 0]),
+        "white" => return Ok([255, 255, 255]),
+        _ => {}
+    }
+    if let Some(hex) = t.strip_prefix('#') {
+        if hex.len() != 6 || !hex.is_ascii() {
+            return Err(bad());
+        }
+        let c = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).map_err(|_| bad());
+        return Ok([c(0)?, c(2)?, c(4)?]);
+    }
+    let parts: Vec<&str> = t.split(',').collect();
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let c = |i: usize| parts[i].trim().parse::<u8>().map_err(|_| bad());
+    Ok([c(0)?, c(1)?, c(2)?])
+}
+
+#[cfg(feature = "gpu")]
+#[derive(clap::Args, Debug)]
+struct GpuCheckArgs {
+    /// Scene files (JSON), OBJ models or images, as for `render`.
+    #[arg(required = true)]
+    scenes: Vec<PathBuf>,
+    /// Interpolation mode (default: each scene's).
+    #[arg(long)]
+    mode: Option<ModeArg>,
+    /// Texture filter (default: each scene's; trilinear is compared as bilinear).
+    #[arg(long)]
+    filter: Option<FilterArg>,
+    /// Image size as WIDTHxHEIGHT (default: each scene's).
+    #[arg(long, value_parser = parse_size, allow_hyphen_values = true)]
+    size: Option<(u32, u32)>,
+    /// Use Mesa's software rasterizer (llvmpipe) instead of the GPU.
+    #[arg(long)]
+    software: bool,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    json: bool,
 }
 
 #[derive(clap::Args, Debug)]
@@ -276,6 +369,27 @@ struct SceneOptions {
     /// Overlay the triangles' edges (threshold on the smallest weight).
     #[arg(long)]
     wireframe: bool,
+    /// Which triangle owns a pixel centre exactly on a shared edge: llvmpipe's rule (left and
+    /// bottom edges in image rows, as OpenGL on Mesa) or the top-left rule of Direct3D and
+    /// Vulkan (default: the scene's, else llvmpipe).
+    #[arg(long, value_name = "RULE")]
+    tie_rule: Option<TieRuleArg>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum TieRuleArg {
+    Llvmpipe,
+    #[value(name = "top-left", alias = "top_left")]
+    TopLeft,
+}
+
+impl From<TieRuleArg> for raster::setup::TieRule {
+    fn from(r: TieRuleArg) -> Self {
+        match r {
+            TieRuleArg::Llvmpipe => Self::Llvmpipe,
+            TieRuleArg::TopLeft => Self::TopLeft,
+        }
+    }
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -408,6 +522,9 @@ pub fn main() -> ExitCode {
         Some(Command::Probe(args)) => commands::probe(&args),
         Some(Command::Bench(args)) => commands::bench(&args),
         Some(Command::Figure(args)) => commands::figure(&args),
+        Some(Command::Compare(args)) => compare::run(&args),
+        #[cfg(feature = "gpu")]
+        Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

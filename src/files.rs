@@ -32,6 +32,8 @@ pub enum FileKind {
     Model,
     Material,
     Texture,
+    /// An image compared with barylab's render (`barylab compare`).
+    Image,
 }
 
 impl FileKind {
@@ -42,6 +44,7 @@ impl FileKind {
             FileKind::Model => "model",
             FileKind::Material => "material library",
             FileKind::Texture => "texture",
+            FileKind::Image => "image",
         }
     }
 
@@ -51,7 +54,7 @@ impl FileKind {
             FileKind::Scene => MAX_SCENE_BYTES,
             FileKind::Model => MAX_MODEL_BYTES,
             FileKind::Material => MAX_MATERIAL_BYTES,
-            FileKind::Texture => MAX_TEXTURE_BYTES,
+            FileKind::Texture | FileKind::Image => MAX_TEXTURE_BYTES,
         }
     }
 }

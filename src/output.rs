@@ -22,6 +22,12 @@ pub const MAX_MESSAGE_CHARS: usize = 2000;
 #[error("standard output was closed")]
 pub struct BrokenPipe;
 
+/// A check that ran to the end and found differences (`gpu-check`, `compare`): its report is
+/// printed; the program ends with exit code 1 after this line on standard error.
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct Differs(pub String);
+
 /// Prints a line to standard error; a closed or full standard error is ignored (there is
 /// nowhere left to report it).
 macro_rules! note {
@@ -47,6 +53,10 @@ pub fn print(text: &str) -> Result<()> {
 pub fn report(e: &anyhow::Error) -> ExitCode {
     if e.downcast_ref::<BrokenPipe>().is_some() {
         return ExitCode::from(BROKEN_PIPE_EXIT);
+    }
+    if let Some(d) = e.downcast_ref::<Differs>() {
+        note!("{}", one_line(&d.0));
+        return ExitCode::FAILURE;
     }
     note!("error: {}", one_line(&format!("{e:#}")));
     ExitCode::FAILURE

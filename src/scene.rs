@@ -19,6 +19,7 @@ use crate::model::{ModelError, ModelMesh};
 use crate::raster::camera::{Camera, CameraError, Projection};
 use crate::raster::project::MAX_IMAGE_SIZE;
 use crate::raster::render::{ClipMesh, DEFAULT_BACKGROUND, MeshVertex, RenderSettings};
+use crate::raster::setup::TieRule;
 use crate::raster::texture::{BuiltinTexture, Filter, Texture, TextureError, Wrap};
 use crate::raster::{Interpolation, Shading};
 use json::{parse_error, strict};
@@ -193,6 +194,9 @@ pub struct WorldScene {
     pub wireframe: bool,
     #[serde(default = "default_background")]
     pub background: [u8; 4],
+    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
+    #[serde(default, skip_serializing_if = "TieRule::is_default")]
+    pub tie_rule: TieRule,
 }
 
 /// A vertex of the raw clip-space form.
@@ -237,6 +241,9 @@ pub struct ClipScene {
     pub wireframe: bool,
     #[serde(default = "default_background")]
     pub background: [u8; 4],
+    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
+    #[serde(default, skip_serializing_if = "TieRule::is_default")]
+    pub tie_rule: TieRule,
 }
 
 /// The model form: an OBJ file seen by a camera.
@@ -267,6 +274,9 @@ pub struct ModelScene {
     pub wireframe: bool,
     #[serde(default = "default_background")]
     pub background: [u8; 4],
+    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
+    #[serde(default, skip_serializing_if = "TieRule::is_default")]
+    pub tie_rule: TieRule,
     /// The loaded model (filled when the scene is loaded).
     #[serde(skip)]
     pub mesh: Arc<ModelMesh>,
@@ -287,6 +297,7 @@ impl ModelScene {
             shading: None,
             wireframe: false,
             background: DEFAULT_BACKGROUND,
+            tie_rule: TieRule::default(),
             mesh: Arc::new(ModelMesh::load(model_path)?),
         })
     }
@@ -428,6 +439,7 @@ impl Scene {
             shading: Shading::Texture,
             wireframe: false,
             background: DEFAULT_BACKGROUND,
+            tie_rule: TieRule::default(),
         })
     }
 
@@ -542,6 +554,15 @@ impl Scene {
         scene
     }
 
+    /// Sets which triangle owns a pixel centre exactly on a shared edge.
+    pub fn set_tie_rule(&mut self, rule: TieRule) {
+        match self {
+            Scene::World(s) => s.tie_rule = rule,
+            Scene::Clip(s) => s.tie_rule = rule,
+            Scene::Model(s) => s.tie_rule = rule,
+        }
+    }
+
     /// The render settings the scene asks for.
     pub fn settings(&self) -> RenderSettings {
         let (width, height) = self.size();
@@ -571,8 +592,14 @@ impl Scene {
                 (s.mode, s.filter, s.wrap, shading, s.wireframe, s.background)
             }
         };
+        let tie_rule = match self {
+            Scene::World(s) => s.tie_rule,
+            Scene::Clip(s) => s.tie_rule,
+            Scene::Model(s) => s.tie_rule,
+        };
         RenderSettings {
             rasterizer: Default::default(),
+            tie_rule,
             width,
             height,
             mode,

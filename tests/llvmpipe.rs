@@ -5,8 +5,7 @@
 //! Coverage and the owning triangle must match exactly; colours within the tolerances below,
 //! each with its reason. `cargo bench --bench llvmpipe -- --conformance` prints the full table.
 
-#[path = "../benches/llvmpipe/gl.rs"]
-mod gl;
+use barylab::gpu as gl;
 
 use std::path::Path;
 
@@ -61,13 +60,13 @@ const LLVMPIPE_CLIPPED_AFFINE_UV: f64 = 0.2;
 /// One test at a time talks to Mesa (the environment is set once, before EGL is loaded).
 static MESA: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
-fn llvmpipe() -> Option<(std::sync::MutexGuard<'static, ()>, gl::Llvmpipe)> {
+fn llvmpipe() -> Option<(std::sync::MutexGuard<'static, ()>, gl::Gpu)> {
     let guard = MESA
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
     static ENV: std::sync::Once = std::sync::Once::new();
     ENV.call_once(gl::force_llvmpipe_env);
-    match gl::Llvmpipe::new() {
+    match gl::Gpu::new() {
         Ok(lp) => Some((guard, lp)),
         Err(e) if std::env::var("CI").as_deref() == Ok("true") => {
             panic!("llvmpipe is required on CI: {e}")
@@ -86,7 +85,7 @@ fn scene_path(name: &str) -> std::path::PathBuf {
 }
 
 /// Checks one scene; returns a line per configuration for the failure message.
-fn check(lp: &mut gl::Llvmpipe, name: &str, size: Option<(u32, u32)>, colours: bool) {
+fn check(lp: &mut gl::Gpu, name: &str, size: Option<(u32, u32)>, colours: bool) {
     let results = gl::compare_scene(lp, &scene_path(name), size).expect(name);
     assert_eq!(results.len(), 6, "{name}: configurations compared");
     for c in &results {
@@ -204,84 +203,12 @@ fn values_match_llvmpipe_at_its_accuracy() {
 /// llvmpipe gives it.
 #[test]
 fn edges_through_pixel_centres_match_llvmpipe() {
-    use barylab::raster::{ClipMesh, MeshVertex, RenderSettings, Texture, texture::BuiltinTexture};
-    use glam::{DVec4, Vec2, Vec3};
+    use barylab::raster::{Texture, texture::BuiltinTexture};
     let Some((_mesa, mut lp)) = llvmpipe() else {
         return;
     };
-    let (w, h) = (64u32, 48u32);
-    // Window position (x right, y down) to clip space with w = 1.
-    let vertex = |x: f64, y: f64, k: usize| MeshVertex {
-        clip: DVec4::new(
-            2.0 * x / f64::from(w) - 1.0,
-            1.0 - 2.0 * y / f64::from(h),
-            0.0,
-            1.0,
-        ),
-        uv: Vec2::new((x / f64::from(w)) as f32, (y / f64::from(h)) as f32),
-        color: Vec3::new(
-            (k % 3) as f32 / 2.0,
-            (k % 5) as f32 / 4.0,
-            (k % 7) as f32 / 6.0,
-        ),
-    };
-    let mut mesh = ClipMesh::default();
-    // A 7x5 lattice, 6 px apart, at pixel centres; cells split along alternating diagonals.
-    let (nx, ny, step, origin) = (7usize, 5usize, 6.0, (4.5, 5.5));
-    for j in 0..ny {
-        for i in 0..nx {
-            let k = mesh.vertices.len();
-            mesh.vertices.push(vertex(
-                origin.0 + step * i as f64,
-                origin.1 + step * j as f64,
-                k,
-            ));
-        }
-    }
-    let at = |i: usize, j: usize| (j * nx + i) as u32;
-    for j in 0..ny - 1 {
-        for i in 0..nx - 1 {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            if (i + j) % 2 == 0 {
-                mesh.triangles.extend([[a, b, c], [a, c, d]]);
-            } else {
-                mesh.triangles.extend([[a, b, d], [b, c, d]]);
-            }
-        }
-    }
-    // A fan of 12 triangles around the pixel centre (52.5, 30.5), spokes at slopes that hit
-    // pixel centres (multiples of 45 degrees and 2:1 steps).
-    let centre = mesh.vertices.len() as u32;
-    mesh.vertices.push(vertex(52.5, 30.5, 0));
-    let spokes = [
-        (8, 0),
-        (8, 4),
-        (8, 8),
-        (4, 8),
-        (0, 8),
-        (-4, 8),
-        (-8, 8),
-        (-8, 0),
-        (-8, -8),
-        (0, -8),
-        (4, -8),
-        (8, -8),
-    ];
-    let first = mesh.vertices.len() as u32;
-    for (k, (dx, dy)) in spokes.iter().enumerate() {
-        mesh.vertices
-            .push(vertex(52.5 + f64::from(*dx), 30.5 + f64::from(*dy), k + 1));
-    }
-    for k in 0..spokes.len() as u32 {
-        mesh.triangles
-            .push([centre, first + k, first + (k + 1) % spokes.len() as u32]);
-    }
+    let (mesh, settings) = gl::check::tie_lattice();
     let texture = Texture::builtin(BuiltinTexture::Checker);
-    let settings = RenderSettings {
-        width: w,
-        height: h,
-        ..RenderSettings::default()
-    };
     let results = gl::compare_mesh(&mut lp, &mesh, &texture, &settings).expect("compare");
     for c in &results {
         eprintln!(

@@ -12,7 +12,7 @@
 //! llvmpipe reads `LP_NUM_THREADS` when it starts, so each thread count runs in a child
 //! process of this program (`--child`) with the variable set.
 
-mod gl;
+use barylab::gpu as gl;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -99,7 +99,7 @@ fn scene_path(args: &Args) -> PathBuf {
 /// Measures every filter x mode with the thread count llvmpipe was started with.
 fn child(args: &Args, threads: usize) -> Result<(), String> {
     let (scene, _, _) = gl::load(&scene_path(args), args.size)?;
-    let mut lp = gl::Llvmpipe::new()?;
+    let mut lp = gl::Gpu::new()?;
     lp.load(&scene)?;
     let mut records = Vec::new();
     for filter in [Filter::Nearest, Filter::Bilinear] {
@@ -133,7 +133,7 @@ fn parent(args: &Args) -> Result<(), String> {
     let mut renderer = String::new();
     {
         // Check once, in this process, that llvmpipe is there (one clear message if not).
-        let lp = gl::Llvmpipe::new()?;
+        let lp = gl::Gpu::new()?;
         renderer.push_str(lp.renderer());
     }
     for threads in barylab::bench::thread_counts(barylab::bench::available_cores()) {
@@ -226,7 +226,7 @@ fn markdown(records: &[BenchRecord], scene: &Path, renderer: &str, frames: u32) 
 
 /// Renders each conformance scene with both and prints how they compare.
 fn conformance() -> Result<(), String> {
-    let mut lp = gl::Llvmpipe::new()?;
+    let mut lp = gl::Gpu::new()?;
     println!("Compared with {}.\n", lp.renderer());
     println!(
         "| scene | size | output | filter | mode | coverage mismatches | triangle mismatches | pixels differing | max channel diff | nearest: max texels from a texel edge |"

@@ -20,10 +20,15 @@ fn pool(threads: Option<u16>) -> Result<rayon::ThreadPool> {
 }
 
 /// Loads the input, its texture (printing any notes) and the settings with the options applied.
-fn prepare(o: &SceneOptions) -> Result<(Scene, raster::Texture, raster::RenderSettings)> {
+pub(super) fn prepare(
+    o: &SceneOptions,
+) -> Result<(Scene, raster::Texture, raster::RenderSettings)> {
     let (mut scene, base_dir) = load_input(&o.scene)?;
     if let Some((w, h)) = o.size {
         scene.set_size(w, h);
+    }
+    if let Some(rule) = o.tie_rule {
+        scene.set_tie_rule(rule.into());
     }
     // What drawing it takes (the probe and the figure set up every triangle too), before the
     // texture is read.
@@ -161,7 +166,7 @@ pub(super) fn render(args: &RenderArgs) -> Result<()> {
 }
 
 /// Every file a command reads: the one named and those the scene reads.
-fn inputs(named: &Path, scene: &Scene) -> Vec<PathBuf> {
+pub(super) fn inputs(named: &Path, scene: &Scene) -> Vec<PathBuf> {
     let base_dir = match barylab::scene::InputKind::of(named) {
         Some(barylab::scene::InputKind::Scene) => named.parent().map(Path::to_path_buf),
         _ => None,

@@ -454,6 +454,7 @@ impl<'a> Prober<'a> {
             edges,
             position,
             covered: s.covers(&e),
+            tie_rule: self.settings.tie_rule,
         }
     }
 }

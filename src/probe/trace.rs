@@ -9,7 +9,7 @@ use super::weights::{AreaWeights, ExplicitFormula, HomogeneousSystem, RayHit, Wp
 use crate::raster::clip::PlaneName;
 use crate::raster::interpolate::Interpolation;
 use crate::raster::render::TriangleStatus;
-use crate::raster::setup::{EdgeKind, Facing};
+use crate::raster::setup::{EdgeKind, Facing, TieRule};
 use crate::raster::shade::Shading;
 use crate::raster::texture::{Filter, Wrap};
 
@@ -118,6 +118,8 @@ pub struct CoverageTest {
     pub position: Position,
     /// Whether the fill rule covers the sample.
     pub covered: bool,
+    /// The tie rule that decides a sample exactly on an edge.
+    pub tie_rule: TieRule,
 }
 
 /// Where the sample lies relative to a triangle.

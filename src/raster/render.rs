@@ -10,7 +10,7 @@ use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 use super::interpolate::{self, Fragment, Interpolation};
 use super::lanes::{self, LaneShading, Target, UvTarget};
 use super::project::{MAX_IMAGE_SIZE, Viewport, project_vertex};
-use super::setup::{Facing, TriangleSetup, sample_point, setup_triangle};
+use super::setup::{Facing, TieRule, TriangleSetup, sample_point, setup_triangle_with};
 use super::shade::{ShadeParams, Shading, shade};
 use super::texture::{Filter, Texture, Wrap};
 use super::varying::Varyings;
@@ -45,6 +45,8 @@ pub struct RenderSettings {
     pub wireframe: bool,
     pub background: [u8; 4],
     pub rasterizer: Rasterizer,
+    /// Which triangle owns a pixel centre exactly on a shared edge.
+    pub tie_rule: TieRule,
 }
 
 /// The default background: a dark slate grey, opaque.
@@ -62,6 +64,7 @@ impl Default for RenderSettings {
             wireframe: false,
             background: DEFAULT_BACKGROUND,
             rasterizer: Rasterizer::EdgeFunction,
+            tie_rule: TieRule::Llvmpipe,
         }
     }
 }
@@ -169,8 +172,18 @@ pub fn source_vertices(mesh: &ClipMesh, index: u32) -> Option<[ClipVertex; 3]> {
     Some(out)
 }
 
-/// Clips, projects and sets up one source triangle.
+/// Clips, projects and sets up one source triangle (under the default tie rule).
 pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> PreparedTriangle {
+    prepare_triangle_with(mesh, index, viewport, TieRule::default())
+}
+
+/// Like [`prepare_triangle`], with samples exactly on an edge decided by `rule`.
+pub fn prepare_triangle_with(
+    mesh: &ClipMesh,
+    index: u32,
+    viewport: Viewport,
+    rule: TieRule,
+) -> PreparedTriangle {
     let mut out = PreparedTriangle {
         source: index,
         status: TriangleStatus::BadIndex,
@@ -188,7 +201,8 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
     if inside_every_plane(&verts, guard) {
         // Most triangles of a mesh: nothing to clip, one set-up triangle.
         let window = verts.map(|v| project_vertex(&v, viewport));
-        out.setups.extend(setup_triangle(window, viewport));
+        out.setups
+            .extend(setup_triangle_with(window, viewport, rule));
     } else {
         let polygon = clip_triangle(&verts, guard);
         out.clipped = Some(Box::new(polygon));
@@ -199,7 +213,9 @@ pub fn prepare_triangle(mesh: &ClipMesh, index: u32, viewport: Viewport) -> Prep
         }
         let window: Vec<_> = pv.iter().map(|v| project_vertex(v, viewport)).collect();
         for k in 1..window.len() - 1 {
-            if let Some(s) = setup_triangle([window[0], window[k], window[k + 1]], viewport) {
+            if let Some(s) =
+                setup_triangle_with([window[0], window[k], window[k + 1]], viewport, rule)
+            {
                 out.setups.push(s);
             }
         }
@@ -226,7 +242,11 @@ pub fn prepare_triangles(
             height: h,
         });
     }
-    Ok(prepare_all(mesh, settings.viewport()))
+    Ok(prepare_all_with(
+        mesh,
+        settings.viewport(),
+        settings.tie_rule,
+    ))
 }
 
 /// The result of a render: the framebuffer and what happened to each source triangle.
@@ -280,11 +300,20 @@ pub fn render_into(
 /// Clips, projects and sets up every source triangle, in parallel (rayon's current thread
 /// pool), in submission order.
 pub fn prepare_all(mesh: &ClipMesh, viewport: Viewport) -> Vec<PreparedTriangle> {
+    prepare_all_with(mesh, viewport, TieRule::default())
+}
+
+/// Like [`prepare_all`], with samples exactly on an edge decided by `rule`.
+pub fn prepare_all_with(
+    mesh: &ClipMesh,
+    viewport: Viewport,
+    rule: TieRule,
+) -> Vec<PreparedTriangle> {
     use rayon::prelude::*;
     (0..mesh.triangles.len() as u32)
         .into_par_iter()
         .with_min_len(PREPARE_CHUNK)
-        .map(|i| prepare_triangle(mesh, i, viewport))
+        .map(|i| prepare_triangle_with(mesh, i, viewport, rule))
         .collect()
 }
 

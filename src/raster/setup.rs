@@ -9,7 +9,10 @@
 //! Fill rule (image rows, row 0 at the top): a sample exactly on an edge is covered when the
 //! edge is a *left* edge (interior to its right) or a *bottom* edge (horizontal, interior
 //! above); it is not covered on a top or right edge. Two triangles sharing an edge see it in
-//! opposite directions, so every sample on it belongs to exactly one of them.
+//! opposite directions, so every sample on it belongs to exactly one of them. That is
+//! llvmpipe's rule under OpenGL ([`TieRule::Llvmpipe`], the default); [`TieRule::TopLeft`] is
+//! the top-left rule as Direct3D and Vulkan state it in their y-down coordinates (left and
+//! top edges own their samples).
 //!
 //! The interpolation weights are set up separately, in `f64` from the unsnapped window
 //! positions ([`WeightPlanes`]), as llvmpipe sets up its interpolation from the float
@@ -41,9 +44,62 @@ pub enum EdgeKind {
 }
 
 impl EdgeKind {
-    /// Samples exactly on left and bottom edges are covered.
+    /// Samples exactly on left and bottom edges are covered (the default tie rule,
+    /// [`TieRule::Llvmpipe`]).
     pub fn inclusive(self) -> bool {
-        matches!(self, EdgeKind::Left | EdgeKind::Bottom)
+        TieRule::Llvmpipe.inclusive(self)
+    }
+}
+
+/// Which edges own the samples exactly on them: the tie rule (a "fill rule" in OpenGL's and
+/// Direct3D's words). Both give every sample on an edge shared by two triangles to exactly
+/// one of them.
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum TieRule {
+    /// As Mesa's llvmpipe under OpenGL: in image rows (y down), left and bottom edges. (It is
+    /// the top-left rule applied to OpenGL's window coordinates, whose y points up.)
+    #[default]
+    Llvmpipe,
+    /// The top-left rule as Direct3D and Vulkan state it in their y-down framebuffer
+    /// coordinates: left edges, and top edges (horizontal, interior below).
+    TopLeft,
+}
+
+impl TieRule {
+    /// Whether samples exactly on an edge of this kind are covered under this rule.
+    pub fn inclusive(self, kind: EdgeKind) -> bool {
+        match self {
+            TieRule::Llvmpipe => matches!(kind, EdgeKind::Left | EdgeKind::Bottom),
+            TieRule::TopLeft => matches!(kind, EdgeKind::Left | EdgeKind::Top),
+        }
+    }
+
+    /// The name in scene files and on the command line: `llvmpipe` or `top_left`.
+    pub fn name(self) -> &'static str {
+        match self {
+            TieRule::Llvmpipe => "llvmpipe",
+            TieRule::TopLeft => "top_left",
+        }
+    }
+
+    /// The rule in words, e.g. for the probe's coverage section.
+    pub fn describe(self) -> &'static str {
+        match self {
+            TieRule::Llvmpipe => {
+                "the llvmpipe rule (OpenGL on Mesa): centres on left and bottom edges are covered"
+            }
+            TieRule::TopLeft => {
+                "the top-left rule (Direct3D, Vulkan): centres on left and top edges are covered"
+            }
+        }
+    }
+
+    /// Whether this is the default rule (scene files leave it out).
+    pub fn is_default(&self) -> bool {
+        *self == TieRule::default()
     }
 }
 
@@ -54,6 +110,8 @@ pub struct Edge {
     /// Edge direction, oriented so that the interior is on the non-negative side.
     pub dir: I64Vec2,
     pub kind: EdgeKind,
+    /// Whether samples exactly on the edge are covered (the tie rule for `kind`).
+    pub inclusive: bool,
 }
 
 impl Edge {
@@ -63,6 +121,11 @@ impl Edge {
     /// `dir_y > 0`: right edge; `dir_y = 0` and `dir_x < 0`: interior above, bottom edge;
     /// `dir_y = 0` and `dir_x > 0`: top edge.
     pub fn new(start: I64Vec2, end: I64Vec2, positive_area: bool) -> Self {
+        Self::with_rule(start, end, positive_area, TieRule::Llvmpipe)
+    }
+
+    /// Like [`Edge::new`], with samples on the edge decided by `rule`.
+    pub fn with_rule(start: I64Vec2, end: I64Vec2, positive_area: bool, rule: TieRule) -> Self {
         let d = end - start;
         let dir = if positive_area { d } else { -d };
         let kind = if dir.y < 0 {
@@ -74,7 +137,12 @@ impl Edge {
         } else {
             EdgeKind::Top
         };
-        Self { start, dir, kind }
+        Self {
+            start,
+            dir,
+            kind,
+            inclusive: rule.inclusive(kind),
+        }
     }
 
     /// The edge function at a point in 1/256-pixel units (units of 1/65536 pixel^2).
@@ -93,11 +161,11 @@ impl Edge {
         self.dir.x * r.y - self.dir.y * r.x
     }
 
-    /// The smallest edge value that passes under the fill rule: 0 on an inclusive (left or
-    /// bottom) edge, 1 otherwise (edge values are integers). The lanes and the scanline
-    /// rasterizer test `value >= min_value()`.
+    /// The smallest edge value that passes under the fill rule: 0 on an inclusive edge (left
+    /// or bottom under the default rule), 1 otherwise (edge values are integers). The lanes
+    /// and the scanline rasterizer test `value >= min_value()`.
     pub fn min_value(&self) -> i64 {
-        if self.kind.inclusive() { 0 } else { 1 }
+        if self.inclusive { 0 } else { 1 }
     }
 
     /// Whether a sample with this edge value passes the edge under the fill rule.
@@ -246,9 +314,18 @@ pub fn sample_point(col: u32, row: u32) -> I64Vec2 {
     )
 }
 
-/// Sets up a triangle. Returns `None` for a zero-area triangle or one whose bounds miss the
-/// viewport.
+/// Sets up a triangle under the default tie rule. Returns `None` for a zero-area triangle or
+/// one whose bounds miss the viewport.
 pub fn setup_triangle(v: [WindowVertex; 3], viewport: Viewport) -> Option<TriangleSetup> {
+    setup_triangle_with(v, viewport, TieRule::default())
+}
+
+/// Like [`setup_triangle`], with samples exactly on an edge decided by `rule`.
+pub fn setup_triangle_with(
+    v: [WindowVertex; 3],
+    viewport: Viewport,
+    rule: TieRule,
+) -> Option<TriangleSetup> {
     let p = [v[0].fixed, v[1].fixed, v[2].fixed];
     let signed = signed_area2(p[0], p[1], p[2]);
     if signed == 0 {
@@ -256,9 +333,9 @@ pub fn setup_triangle(v: [WindowVertex; 3], viewport: Viewport) -> Option<Triang
     }
     let positive = signed > 0;
     let edges = [
-        Edge::new(p[1], p[2], positive),
-        Edge::new(p[2], p[0], positive),
-        Edge::new(p[0], p[1], positive),
+        Edge::with_rule(p[1], p[2], positive, rule),
+        Edge::with_rule(p[2], p[0], positive, rule),
+        Edge::with_rule(p[0], p[1], positive, rule),
     ];
     let bounds = pixel_bounds(&p, viewport)?;
     let weights = WeightPlanes::new(v.map(|v| v.window))

@@ -31,6 +31,7 @@ pub fn settings(width: u32, height: u32) -> RenderSettings {
         wireframe: false,
         background: [0, 0, 0, 0],
         rasterizer: Default::default(),
+        tie_rule: Default::default(),
     }
 }
 

@@ -40,14 +40,22 @@ fn coverage_reason(test: &CoverageTest) -> String {
                     )
                 })
                 .collect();
+            let (covering, leaving) = match test.tie_rule {
+                TieRule::Llvmpipe => ("left and bottom", "top and right"),
+                TieRule::TopLeft => ("left and top", "bottom and right"),
+            };
+            let rule = match test.tie_rule {
+                TieRule::Llvmpipe => "The tie rule (llvmpipe's, as OpenGL on Mesa)",
+                TieRule::TopLeft => "The tie rule (top-left, as Direct3D and Vulkan state it)",
+            };
             if test.covered {
                 format!(
-                    "{}. The fill rule covers samples on left and bottom edges: covered.",
+                    "{}. {rule} covers samples on {covering} edges: covered.",
                     parts.join("; ")
                 )
             } else {
                 format!(
-                    "{}. The fill rule leaves samples on top and right edges to the triangle \
+                    "{}. {rule} leaves samples on {leaving} edges to the triangle \
                      on the other side: not covered here.",
                     parts.join("; ")
                 )

@@ -24,7 +24,7 @@ use crate::probe::{
 use crate::raster::clip::PlaneName;
 use crate::raster::interpolate::Interpolation;
 use crate::raster::render::TriangleStatus;
-use crate::raster::setup::EdgeKind;
+use crate::raster::setup::{EdgeKind, TieRule};
 use crate::raster::shade::Shading;
 use crate::raster::texture::{Filter, Wrap};
 

@@ -1,17 +1,20 @@
-//! Drawing a barylab clip-space mesh with Mesa's llvmpipe through OpenGL 3.3 core on a headless
-//! EGL context (surfaceless platform), to time it and to read its image back.
+//! Drawing a barylab clip-space mesh with OpenGL 3.3 core on a headless EGL context
+//! (surfaceless platform): Mesa's llvmpipe, or this computer's GPU. Times it and reads its
+//! image back.
 //!
-//! Shared by the `llvmpipe` benchmark (benches/llvmpipe/main.rs) and the conformance test
-//! (tests/llvmpipe.rs, which includes this file by path).
+//! Used by `barylab gpu-check`, the `llvmpipe` benchmark (benches/llvmpipe/main.rs) and the
+//! conformance test (tests/llvmpipe.rs). Behind the default cargo feature `gpu`.
 
-#![allow(dead_code)] // each includer uses a different part
+pub mod check;
+mod compare;
+mod scene;
+
+pub use compare::*;
+pub use scene::{GlScene, mesh_at_f32};
 
 use std::time::Instant;
 
-use std::path::Path;
-
-use barylab::raster::{ClipMesh, Filter, Interpolation, Shading, Texture, Wrap};
-use barylab::scene::Scene;
+use crate::raster::{Filter, Interpolation, Wrap};
 use glow::HasContext;
 use khronos_egl as egl;
 
@@ -30,78 +33,6 @@ pub fn force_llvmpipe_env() {
     }
 }
 
-/// What to draw: clip-space positions and uv/colour per vertex, the triangles, the texture.
-pub struct GlScene {
-    pub width: u32,
-    pub height: u32,
-    /// Per vertex: clip x, y, z, w, u, v, r, g, b (f32, as the GPU gets them).
-    pub vertices: Vec<[f32; 9]>,
-    pub indices: Vec<u32>,
-    pub texture_width: u32,
-    pub texture_height: u32,
-    /// RGBA8, row 0 first (t = 0, barylab's texel row 0).
-    pub texels: Vec<u8>,
-    pub wrap: Wrap,
-    pub background: [u8; 4],
-}
-
-impl GlScene {
-    /// The mesh as the GPU gets it: clip coordinates rounded to f32.
-    pub fn new(
-        mesh: &ClipMesh,
-        texture: &Texture,
-        width: u32,
-        height: u32,
-        wrap: Wrap,
-        background: [u8; 4],
-    ) -> Self {
-        let vertices = mesh
-            .vertices
-            .iter()
-            .map(|v| {
-                [
-                    v.clip.x as f32,
-                    v.clip.y as f32,
-                    v.clip.z as f32,
-                    v.clip.w as f32,
-                    v.uv.x,
-                    v.uv.y,
-                    v.color.x,
-                    v.color.y,
-                    v.color.z,
-                ]
-            })
-            .collect();
-        let mut texels = Vec::with_capacity((texture.width() * texture.height() * 4) as usize);
-        for j in 0..texture.height() {
-            for i in 0..texture.width() {
-                texels.extend_from_slice(&texture.texel(i, j));
-            }
-        }
-        Self {
-            width,
-            height,
-            vertices,
-            indices: mesh.triangles.iter().flatten().copied().collect(),
-            texture_width: texture.width(),
-            texture_height: texture.height(),
-            texels,
-            wrap,
-            background,
-        }
-    }
-}
-
-/// A copy of `mesh` whose clip coordinates are rounded to f32, so that barylab draws exactly
-/// the coordinates OpenGL gets.
-pub fn mesh_at_f32(mesh: &ClipMesh) -> ClipMesh {
-    let mut m = mesh.clone();
-    for v in &mut m.vertices {
-        v.clip = v.clip.as_vec4().as_dvec4();
-    }
-    m
-}
-
 /// What the fragment shader outputs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Output {
@@ -113,17 +44,19 @@ pub enum Output {
     TriangleId,
     /// The interpolated values as floats, into an RGBA32F framebuffer:
     /// `(u, v, window depth, 1/w)` (`gl_FragCoord.z`, `gl_FragCoord.w`); see
-    /// [`Llvmpipe::read_values`].
+    /// [`Gpu::read_values`].
     Values,
 }
 
-/// A live headless llvmpipe context with one scene loaded.
-pub struct Llvmpipe {
+/// A live headless OpenGL context (llvmpipe or a GPU) with one scene loaded.
+pub struct Gpu {
     egl: egl::DynamicInstance<egl::EGL1_4>,
     display: egl::Display,
     context: egl::Context,
     gl: glow::Context,
+    vendor: String,
     renderer: String,
+    version: String,
     objects: Option<Objects>,
 }
 
@@ -191,11 +124,25 @@ void main() {
 }
 ";
 
-impl Llvmpipe {
-    /// Loads libEGL, opens the surfaceless display and makes a GL 3.3 core context current
-    /// on this thread. Fails with a one-line reason when EGL, the platform or llvmpipe is
-    /// missing. Call [`force_llvmpipe_env`] first.
+impl Gpu {
+    /// Mesa's llvmpipe: loads libEGL, opens the surfaceless display and makes a GL 3.3 core
+    /// context current on this thread. Fails with a one-line reason when EGL, the platform or
+    /// llvmpipe is missing. Call [`force_llvmpipe_env`] first.
     pub fn new() -> Result<Self, String> {
+        let gpu = Self::open()?;
+        if !gpu.renderer.contains("llvmpipe") {
+            return Err(format!(
+                "the OpenGL renderer is `{}`, not llvmpipe",
+                gpu.renderer
+            ));
+        }
+        Ok(gpu)
+    }
+
+    /// Whatever OpenGL 3.3 core the headless EGL display gives: this computer's GPU, or
+    /// llvmpipe after [`force_llvmpipe_env`]. Fails with a one-line reason when EGL, the
+    /// platform or OpenGL 3.3 is missing.
+    pub fn open() -> Result<Self, String> {
         // SAFETY: libEGL is the system's EGL library, which implements the EGL 1.4 API.
         let egl = unsafe { egl::DynamicInstance::<egl::EGL1_4>::load_required() }
             .map_err(|e| format!("cannot load libEGL.so.1 (install libegl1 libegl-mesa0): {e}"))?;
@@ -244,16 +191,16 @@ impl Llvmpipe {
             })
         };
         // SAFETY: a current context.
-        let renderer = unsafe { gl.get_parameter_string(glow::RENDERER) };
-        if !renderer.contains("llvmpipe") {
-            return Err(format!("the OpenGL renderer is `{renderer}`, not llvmpipe"));
-        }
+        let [vendor, renderer, version] = [glow::VENDOR, glow::RENDERER, glow::VERSION]
+            .map(|p| unsafe { gl.get_parameter_string(p) });
         Ok(Self {
             egl,
             display,
             context,
             gl,
+            vendor,
             renderer,
+            version,
             objects: None,
         })
     }
@@ -279,6 +226,16 @@ impl Llvmpipe {
     /// The GL_RENDERER string, e.g. `llvmpipe (LLVM 15.0.6, 256 bits)`.
     pub fn renderer(&self) -> &str {
         &self.renderer
+    }
+
+    /// The GL_VENDOR string, e.g. `Mesa`.
+    pub fn vendor(&self) -> &str {
+        &self.vendor
+    }
+
+    /// The GL_VERSION string, e.g. `4.5 (Core Profile) Mesa 22.3.6`.
+    pub fn version(&self) -> &str {
+        &self.version
     }
 
     fn compile(&self, output: Output, mode: Interpolation) -> Result<glow::Program, String> {
@@ -322,6 +279,24 @@ impl Llvmpipe {
             }
             Ok(program)
         }
+    }
+
+    /// Uploads `mesh` (its clip coordinates rounded to f32) with `texture`, at the settings'
+    /// size, wrap and background: see [`Gpu::load`].
+    pub fn load_mesh(
+        &mut self,
+        mesh: &crate::raster::ClipMesh,
+        texture: &crate::raster::Texture,
+        settings: &crate::raster::RenderSettings,
+    ) -> Result<(), String> {
+        self.load(&GlScene::new(
+            &mesh_at_f32(mesh),
+            texture,
+            settings.width,
+            settings.height,
+            settings.wrap,
+            settings.background,
+        ))
     }
 
     /// Uploads a scene: vertex and index buffers, the texture (RGBA8, no mipmaps), and a
@@ -487,7 +462,7 @@ impl Llvmpipe {
         self.draw_elements()
     }
 
-    /// Draws the loaded scene's triangles with the state [`Llvmpipe::clear`] set.
+    /// Draws the loaded scene's triangles with the state [`Gpu::clear`] set.
     pub fn draw_elements(&self) -> Result<(), String> {
         let o = self.objects.as_ref().ok_or("no scene loaded")?;
         // SAFETY: the loaded index buffer holds `index_count` indices.
@@ -561,7 +536,7 @@ impl Llvmpipe {
             self.finish();
             times.push(start.elapsed().as_secs_f64() * 1e3);
         }
-        barylab::bench::median(&times).ok_or_else(|| "no frames".to_string())
+        crate::bench::median(&times).ok_or_else(|| "no frames".to_string())
     }
 
     /// Reads the framebuffer back as RGBA8, image row 0 (the top) first.
@@ -645,271 +620,11 @@ impl Llvmpipe {
     }
 }
 
-impl Drop for Llvmpipe {
+impl Drop for Gpu {
     fn drop(&mut self) {
         self.unload();
         let _ = self.egl.make_current(self.display, None, None, None);
         let _ = self.egl.destroy_context(self.display, self.context);
         let _ = self.egl.terminate(self.display);
     }
-}
-
-/// How barylab's image of a scene compares with llvmpipe's.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Comparison {
-    pub pixels: usize,
-    /// Pixels covered in one image and not in the other.
-    pub coverage_mismatch: Vec<(u32, u32)>,
-    /// Pixels covered by different source triangles.
-    pub triangle_mismatch: Vec<(u32, u32)>,
-    /// Covered pixels whose colour differs in any channel.
-    pub color_differing: usize,
-    /// The largest difference of one channel.
-    pub max_channel_diff: u8,
-    /// Where that largest difference is (x, y).
-    pub max_at: Option<(u32, u32)>,
-    /// For nearest filtering (when barylab's uv is given): the largest distance, in texels,
-    /// from a differing pixel's sample point to the nearest texel boundary along u or v.
-    /// Near 0 means every difference is a tie that rounding decides either way.
-    pub max_boundary_distance: f32,
-}
-
-/// Distance, in texels, from texel coordinate `s = u * size` to the nearest texel boundary
-/// (an integer): `|s - round(s)|`.
-pub fn boundary_distance(s: f32) -> f32 {
-    (s - s.round()).abs()
-}
-
-/// Compares barylab's triangle ids and colours with llvmpipe's (`gl_ids`: `TriangleId`
-/// output; `gl_colors`: the colour output), pixel by pixel.
-/// `nearest_uv`: barylab's uv per pixel and the texture size, for nearest filtering.
-pub fn compare(
-    width: u32,
-    ours_triangle: &[u32],
-    ours_color: &[[u8; 4]],
-    gl_ids: &[[u8; 4]],
-    gl_colors: &[[u8; 4]],
-    nearest_uv: Option<(&[[f32; 2]], u32, u32)>,
-) -> Comparison {
-    let mut c = Comparison {
-        pixels: ours_color.len(),
-        ..Comparison::default()
-    };
-    for (k, (((&tri, ours), id), theirs)) in ours_triangle
-        .iter()
-        .zip(ours_color)
-        .zip(gl_ids)
-        .zip(gl_colors)
-        .enumerate()
-    {
-        let xy = ((k as u32) % width, (k as u32) / width);
-        let gl_id = u32::from_le_bytes(*id);
-        let ours_covered = tri != barylab::raster::NO_TRIANGLE;
-        if ours_covered != (gl_id != 0) {
-            c.coverage_mismatch.push(xy);
-            continue;
-        }
-        if !ours_covered {
-            continue;
-        }
-        if gl_id != tri + 1 {
-            c.triangle_mismatch.push(xy);
-        }
-        let diff = (0..4)
-            .map(|i| ours[i].abs_diff(theirs[i]))
-            .max()
-            .unwrap_or(0);
-        if diff > 0 {
-            c.color_differing += 1;
-            if let Some((uv, tw, th)) = nearest_uv {
-                let [u, v] = uv[k];
-                let d = boundary_distance(u * tw as f32).min(boundary_distance(v * th as f32));
-                c.max_boundary_distance = c.max_boundary_distance.max(d);
-            }
-        }
-        if diff > c.max_channel_diff {
-            c.max_channel_diff = diff;
-            c.max_at = Some(xy);
-        }
-    }
-    c
-}
-
-/// Loads a scene (optionally resized) as the GPU gets it, with its render settings.
-pub fn load(path: &Path, size: Option<(u32, u32)>) -> Result<(GlScene, Scene, Texture), String> {
-    let (mut scene, base) =
-        barylab::scene::open_input(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    if let Some((w, h)) = size {
-        scene.set_size(w, h);
-    }
-    let texture = scene
-        .load_texture(&base)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    let s = scene.settings();
-    let mesh = mesh_at_f32(&scene.to_mesh());
-    Ok((
-        GlScene::new(&mesh, &texture, s.width, s.height, s.wrap, s.background),
-        scene,
-        texture,
-    ))
-}
-
-pub struct SceneComparison {
-    pub width: u32,
-    pub height: u32,
-    pub output: Output,
-    pub filter: Filter,
-    pub mode: Interpolation,
-    pub result: Comparison,
-}
-
-/// Texture (nearest, bilinear) and vertex colour, affine and perspective.
-pub fn compare_scene(
-    lp: &mut Llvmpipe,
-    path: &Path,
-    size: Option<(u32, u32)>,
-) -> Result<Vec<SceneComparison>, String> {
-    let (_, scene, texture) = load(path, size)?;
-    compare_mesh(lp, &scene.to_mesh(), &texture, &scene.settings())
-}
-
-/// Draws `mesh` (its clip coordinates rounded to f32) with both, with the texture (nearest,
-/// bilinear) and with the vertex colours, affine and perspective, and compares the images.
-/// `base` gives the size, wrap and background.
-pub fn compare_mesh(
-    lp: &mut Llvmpipe,
-    mesh: &ClipMesh,
-    texture: &Texture,
-    base: &barylab::raster::RenderSettings,
-) -> Result<Vec<SceneComparison>, String> {
-    let mesh = mesh_at_f32(mesh);
-    lp.load(&GlScene::new(
-        &mesh,
-        texture,
-        base.width,
-        base.height,
-        base.wrap,
-        base.background,
-    ))?;
-    let mut out = Vec::new();
-    for (output, shading, filters) in [
-        (
-            Output::Texture,
-            Shading::Texture,
-            &[Filter::Nearest, Filter::Bilinear][..],
-        ),
-        (
-            Output::VertexColor,
-            Shading::VertexColor,
-            &[Filter::Nearest][..],
-        ),
-    ] {
-        for &filter in filters {
-            for mode in [Interpolation::Affine, Interpolation::Perspective] {
-                let settings = barylab::raster::RenderSettings {
-                    filter,
-                    mode,
-                    shading,
-                    wireframe: false,
-                    ..*base
-                };
-                let ours = barylab::raster::render(&mesh, texture, &settings)
-                    .map_err(|e| e.to_string())?;
-                let ids = lp.render(Output::TriangleId, filter, mode)?;
-                let colors = lp.render(output, filter, mode)?;
-                let uv = match mode {
-                    Interpolation::Affine => &ours.frame.uv_affine,
-                    Interpolation::Perspective => &ours.frame.uv_perspective,
-                };
-                let nearest_uv = (output == Output::Texture && filter == Filter::Nearest)
-                    .then_some((&uv[..], texture.width(), texture.height()));
-                out.push(SceneComparison {
-                    width: settings.width,
-                    height: settings.height,
-                    output,
-                    filter,
-                    mode,
-                    result: compare(
-                        settings.width,
-                        &ours.frame.triangle,
-                        &ours.frame.color,
-                        &ids,
-                        &colors,
-                        nearest_uv,
-                    ),
-                });
-            }
-        }
-    }
-    Ok(out)
-}
-
-/// A pixel (x, y) with barylab's and llvmpipe's uv there.
-pub type UvAt = ((u32, u32), [f32; 2], [f32; 2]);
-
-/// How far barylab's interpolated values are from llvmpipe's, over the pixels both cover.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct ValueComparison {
-    pub mode: Interpolation,
-    /// Pixels compared.
-    pub pixels: usize,
-    /// Largest |u - u_gl| or |v - v_gl|.
-    pub uv: f64,
-    /// Where it is, with both uv there.
-    pub uv_at: Option<UvAt>,
-    /// Largest |depth - depth_gl| (window depth).
-    pub depth: f64,
-    /// Largest |1/w - (1/w)_gl| relative to |(1/w)_gl|.
-    pub inv_w_relative: f64,
-}
-
-/// Draws `mesh` (its clip coordinates rounded to f32) with both and compares uv, window depth
-/// and 1/w, affine and perspective, over the pixels both cover.
-pub fn compare_values(
-    lp: &mut Llvmpipe,
-    mesh: &ClipMesh,
-    texture: &Texture,
-    base: &barylab::raster::RenderSettings,
-) -> Result<Vec<ValueComparison>, String> {
-    let mesh = mesh_at_f32(mesh);
-    lp.load(&GlScene::new(
-        &mesh,
-        texture,
-        base.width,
-        base.height,
-        base.wrap,
-        base.background,
-    ))?;
-    let mut out = Vec::new();
-    for mode in MODES {
-        let settings = barylab::raster::RenderSettings { mode, ..*base };
-        let ours = barylab::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
-        let gl = lp.read_values(mode)?;
-        let f = &ours.frame;
-        let uv = match mode {
-            Interpolation::Affine => &f.uv_affine,
-            Interpolation::Perspective => &f.uv_perspective,
-        };
-        let mut c = ValueComparison {
-            mode,
-            ..ValueComparison::default()
-        };
-        for (k, g) in gl.iter().enumerate() {
-            if f.triangle[k] == barylab::raster::NO_TRIANGLE || g[3] <= 0.0 {
-                continue;
-            }
-            c.pixels += 1;
-            let d = |a: f32, b: f32| (f64::from(a) - f64::from(b)).abs();
-            let duv = d(uv[k][0], g[0]).max(d(uv[k][1], g[1]));
-            if duv > c.uv {
-                c.uv = duv;
-                let xy = ((k as u32) % settings.width, (k as u32) / settings.width);
-                c.uv_at = Some((xy, uv[k], [g[0], g[1]]));
-            }
-            c.depth = c.depth.max(d(f.depth[k], g[2]));
-            c.inv_w_relative = c.inv_w_relative.max(d(f.inv_w[k], g[3]) / f64::from(g[3]));
-        }
-        out.push(c);
-    }
-    Ok(out)
 }

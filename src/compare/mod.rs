@@ -1,0 +1,297 @@
+//! `barylab compare`: an image from someone else's rasterizer (a student's homework, a
+//! screenshot) against barylab's render of the same scene, pixel by pixel.
+//!
+//! Coverage of the other image comes from its alpha (at least half opaque is covered) or from
+//! a background colour (anything else is covered). Each differing pixel gets a one-line
+//! reason from the probe ([`reasons`]); whole-image explanations (y flipped, rotated, affine
+//! interpolation, pixel centres at integer coordinates) are tried by rendering or
+//! transforming barylab's image that way and counting what still differs ([`hypotheses`]).
+
+pub mod hypotheses;
+pub mod reasons;
+
+use serde::Serialize;
+
+use crate::raster::{ClipMesh, Interpolation, NO_TRIANGLE, RenderSettings, Texture};
+use crate::scene::Scene;
+
+/// Differing pixels listed with their reasons (all are counted).
+pub const LISTED: usize = 12;
+
+/// Default tolerance: 8-bit levels one channel may differ by and still agree (two rasterizers
+/// that follow the same rules still round and filter a little differently: llvmpipe and
+/// barylab differ by up to 2 with bilinear filtering).
+pub const DEFAULT_TOLERANCE: u8 = 2;
+
+/// How the other image says which pixels are covered.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "by", content = "color")]
+pub enum CoverageBy {
+    /// Alpha of at least 128.
+    Alpha,
+    /// Any colour other than this one (within the tolerance).
+    Background([u8; 3]),
+}
+
+/// An image to compare: RGBA8, row 0 at the top.
+#[derive(Clone, Debug)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<[u8; 4]>,
+}
+
+impl Image {
+    /// Whether some pixel is not fully opaque.
+    pub fn has_transparency(&self) -> bool {
+        self.pixels.iter().any(|p| p[3] < 255)
+    }
+}
+
+/// What is compared: the scene and barylab's settings for it.
+pub struct Reference<'a> {
+    pub scene: &'a Scene,
+    pub mesh: &'a ClipMesh,
+    pub texture: &'a Texture,
+    pub settings: RenderSettings,
+}
+
+/// How a pixel differs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Difference {
+    /// The other image covers it, barylab does not.
+    OnlyTheirs,
+    /// barylab covers it, the other image does not.
+    OnlyOurs,
+    /// Both cover it, with colours more than the tolerance apart.
+    Color,
+}
+
+/// One differing pixel with its reason.
+#[derive(Clone, Debug, Serialize)]
+pub struct PixelDifference {
+    pub pixel: [u32; 2],
+    pub difference: Difference,
+    /// The other image's RGBA.
+    pub theirs: [u8; 4],
+    /// barylab's RGBA.
+    pub ours: [u8; 4],
+    /// The source triangle barylab drew there.
+    pub triangle: Option<u32>,
+    /// One line: why they differ, from the probe.
+    pub reason: String,
+}
+
+/// The result of a comparison.
+#[derive(Clone, Debug, Serialize)]
+pub struct Comparison {
+    pub width: u32,
+    pub height: u32,
+    pub mode: Interpolation,
+    pub coverage_by: CoverageBy,
+    pub tolerance: u8,
+    pub pixels: usize,
+    /// Pixels barylab covers.
+    pub covered: usize,
+    pub only_theirs: usize,
+    pub only_ours: usize,
+    /// Pixels both cover whose colours differ by more than the tolerance.
+    pub color_differing: usize,
+    /// Over the pixels both cover: the largest difference of one channel (RGB).
+    pub max_color_difference: u8,
+    pub max_color_at: Option<[u32; 2]>,
+    /// The whole-image explanations tried, best first, with what each leaves differing.
+    pub hypotheses: Vec<hypotheses::Tried>,
+    /// The explanation that fits much better than barylab's own image, if any.
+    pub looks_like: Option<String>,
+    /// The first differing pixels in row order.
+    pub first: Vec<PixelDifference>,
+}
+
+impl Comparison {
+    /// Pixels that differ in coverage or colour.
+    pub fn differing(&self) -> usize {
+        self.only_theirs + self.only_ours + self.color_differing
+    }
+
+    /// Whether the images agree: same coverage, colours within the tolerance.
+    pub fn agrees(&self) -> bool {
+        self.differing() == 0
+    }
+}
+
+/// Largest difference of the R, G, B channels.
+pub fn rgb_difference(a: [u8; 4], b: [u8; 4]) -> u8 {
+    (0..3).map(|i| a[i].abs_diff(b[i])).max().unwrap_or(0)
+}
+
+/// Whether the other image covers a pixel.
+pub fn covered_by(p: [u8; 4], by: CoverageBy, tolerance: u8) -> bool {
+    match by {
+        CoverageBy::Alpha => p[3] >= 128,
+        CoverageBy::Background(bg) => rgb_difference(p, [bg[0], bg[1], bg[2], 255]) > tolerance,
+    }
+}
+
+/// A rendered image in the terms of the comparison: colour and coverage per pixel.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    pub color: Vec<[u8; 4]>,
+    pub covered: Vec<bool>,
+}
+
+impl Rendered {
+    fn of(frame: &crate::raster::Framebuffer) -> Self {
+        Self {
+            color: frame.color.clone(),
+            covered: frame.triangle.iter().map(|&t| t != NO_TRIANGLE).collect(),
+        }
+    }
+}
+
+/// How pixel `k` of the other image differs from `reference` (`None`: they agree).
+pub fn classify(
+    theirs: [u8; 4],
+    reference: &Rendered,
+    k: usize,
+    by: CoverageBy,
+    tolerance: u8,
+) -> Option<Difference> {
+    let ours = reference.color[k];
+    let (t, o) = (covered_by(theirs, by, tolerance), reference.covered[k]);
+    match (t, o) {
+        (false, false) => None,
+        (true, false) => {
+            // Against a background colour, the other image's pixel counts as covered only if
+            // it differs from barylab's too (barylab's background may be another colour).
+            let same = matches!(by, CoverageBy::Background(_))
+                && rgb_difference(theirs, ours) <= tolerance;
+            (!same).then_some(Difference::OnlyTheirs)
+        }
+        (false, true) => {
+            // A covered pixel whose colour is the background's cannot be told apart.
+            let same = matches!(by, CoverageBy::Background(_)) && !covered_by(ours, by, tolerance);
+            (!same).then_some(Difference::OnlyOurs)
+        }
+        (true, true) => (rgb_difference(theirs, ours) > tolerance).then_some(Difference::Color),
+    }
+}
+
+/// Compares `theirs` with barylab's render of `reference`. The sizes must match (checked by
+/// the caller, who names the files).
+pub fn compare(
+    theirs: &Image,
+    reference: &Reference,
+    by: CoverageBy,
+    tolerance: u8,
+) -> Result<Comparison, String> {
+    let s = &reference.settings;
+    if (theirs.width, theirs.height) != (s.width, s.height) {
+        return Err(format!(
+            "the image is {}x{}, the scene renders {}x{}",
+            theirs.width, theirs.height, s.width, s.height
+        ));
+    }
+    let render =
+        crate::raster::render(reference.mesh, reference.texture, s).map_err(|e| e.to_string())?;
+    let ours = Rendered::of(&render.frame);
+    let width = s.width;
+    let mut c = Comparison {
+        width,
+        height: s.height,
+        mode: s.mode,
+        coverage_by: by,
+        tolerance,
+        pixels: ours.color.len(),
+        covered: ours.covered.iter().filter(|&&c| c).count(),
+        only_theirs: 0,
+        only_ours: 0,
+        color_differing: 0,
+        max_color_difference: 0,
+        max_color_at: None,
+        hypotheses: Vec::new(),
+        looks_like: None,
+        first: Vec::new(),
+    };
+    let mut differing = Vec::new();
+    for (k, &p) in theirs.pixels.iter().enumerate() {
+        let xy = [(k as u32) % width, (k as u32) / width];
+        if ours.covered[k] && covered_by(p, by, tolerance) {
+            let d = rgb_difference(p, ours.color[k]);
+            if d > c.max_color_difference {
+                c.max_color_difference = d;
+                c.max_color_at = Some(xy);
+            }
+        }
+        let Some(d) = classify(p, &ours, k, by, tolerance) else {
+            continue;
+        };
+        match d {
+            Difference::OnlyTheirs => c.only_theirs += 1,
+            Difference::OnlyOurs => c.only_ours += 1,
+            Difference::Color => c.color_differing += 1,
+        }
+        if differing.len() < LISTED {
+            differing.push((k, d));
+        }
+    }
+    if c.agrees() {
+        return Ok(c);
+    }
+    let tried = hypotheses::try_all(theirs, reference, &render.frame, by, tolerance)?;
+    let best = tried
+        .iter()
+        .filter(|h| h.differing * 2 < c.differing())
+        .min_by_key(|h| h.differing);
+    c.looks_like = best.map(|h| h.verdict());
+    let context = reasons::Context::new(reference, &render, by, tolerance)?;
+    for (k, d) in differing {
+        let xy = [(k as u32) % width, (k as u32) / width];
+        let explained = best.filter(|h| !h.differs_at(k));
+        let reason = match explained {
+            Some(h) => h.pixel_reason(k, &render.frame, reference.texture),
+            None => context.reason(xy, d, theirs.pixels[k])?,
+        };
+        let t = render.frame.triangle[k];
+        c.first.push(PixelDifference {
+            pixel: xy,
+            difference: d,
+            theirs: theirs.pixels[k],
+            ours: ours.color[k],
+            triangle: (t != NO_TRIANGLE).then_some(t),
+            reason,
+        });
+    }
+    c.hypotheses = tried;
+    Ok(c)
+}
+
+/// The difference image: barylab's image in dim grey where the two agree, red to yellow by
+/// how much a colour differs, magenta where only the other image covers a pixel and cyan
+/// where only barylab does.
+pub fn difference_image(
+    theirs: &Image,
+    reference: &Reference,
+    by: CoverageBy,
+    tolerance: u8,
+) -> Result<image::RgbaImage, String> {
+    let render = crate::raster::render(reference.mesh, reference.texture, &reference.settings)
+        .map_err(|e| e.to_string())?;
+    let ours = Rendered::of(&render.frame);
+    let mut out = image::RgbaImage::new(theirs.width, theirs.height);
+    for (k, (px, &p)) in out.pixels_mut().zip(&theirs.pixels).enumerate() {
+        let o = ours.color[k];
+        let grey = ((u32::from(o[0]) * 3 + u32::from(o[1]) * 6 + u32::from(o[2])) / 10 / 3) as u8;
+        px.0 = match classify(p, &ours, k, by, tolerance) {
+            None => [grey, grey, grey, 255],
+            Some(Difference::OnlyTheirs) => [255, 0, 255, 255],
+            Some(Difference::OnlyOurs) => [0, 255, 255, 255],
+            Some(Difference::Color) => {
+                let d = rgb_difference(p, o);
+                [255, d.saturating_mul(2), 0, 255]
+            }
+        };
+    }
+    Ok(out)
+}

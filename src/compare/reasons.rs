@@ -1,0 +1,304 @@
+//! One line per differing pixel, from the probe's trace of barylab's pixel: a centre exactly
+//! on an edge (the tie rule), a centre a hair from an edge (snapping), the other interpolation
+//! mode's colour, two triangles at one centre (the depth test), an edge pixel with a blended
+//! colour (anti-aliasing).
+
+use super::{CoverageBy, Difference, Reference, rgb_difference};
+use crate::probe::{PixelTrace, Position, Prober, TriangleCoverage};
+use crate::raster::render::Render;
+use crate::raster::setup::TieRule;
+use crate::raster::{Interpolation, NO_TRIANGLE, RenderSettings};
+
+/// What the reasons need: a prober of the scene, barylab's render and the other mode's.
+pub struct Context<'a> {
+    prober: Prober<'a>,
+    render: &'a Render,
+    other: Render,
+    reference: &'a Reference<'a>,
+    tolerance: u8,
+}
+
+impl<'a> Context<'a> {
+    pub fn new(
+        reference: &'a Reference<'a>,
+        render: &'a Render,
+        _by: CoverageBy,
+        tolerance: u8,
+    ) -> Result<Self, String> {
+        let prober = Prober::new(reference.scene, reference.texture, &reference.settings)
+            .map_err(|e| e.to_string())?;
+        let mode = match reference.settings.mode {
+            Interpolation::Affine => Interpolation::Perspective,
+            Interpolation::Perspective => Interpolation::Affine,
+        };
+        let settings = RenderSettings {
+            mode,
+            ..reference.settings
+        };
+        let other = crate::raster::render(reference.mesh, reference.texture, &settings)
+            .map_err(|e| e.to_string())?;
+        Ok(Self {
+            prober,
+            render,
+            other,
+            reference,
+            tolerance,
+        })
+    }
+
+    /// Why pixel `(x, y)` differs as `d`, the other image's colour there being `theirs`.
+    pub fn reason(
+        &self,
+        [x, y]: [u32; 2],
+        d: Difference,
+        theirs: [u8; 4],
+    ) -> Result<String, String> {
+        let trace = self.prober.pixel(x, y).map_err(|e| e.to_string())?;
+        Ok(match d {
+            Difference::OnlyTheirs | Difference::OnlyOurs => self.coverage_reason(&trace, d),
+            Difference::Color => self.colour_reason(&trace, theirs),
+        })
+    }
+
+    fn name(t: &TriangleCoverage) -> String {
+        t.vertices.concat()
+    }
+
+    /// The distance in pixels from the sample to edge `i` of the set-up triangle tested.
+    fn edge_distance(&self, t: &TriangleCoverage, i: usize) -> Option<f64> {
+        let test = t.test.as_ref()?;
+        let setup = self
+            .render
+            .triangles
+            .get(t.source as usize)?
+            .setups
+            .get(test.sub_triangle)?;
+        let len = setup.edges[i].dir.as_dvec2().length();
+        (len > 0.0)
+            .then(|| test.edges[i].value as f64 / len / crate::raster::project::SUBPIXEL as f64)
+    }
+
+    fn coverage_reason(&self, trace: &PixelTrace, d: Difference) -> String {
+        let by_name = |source: u32| {
+            trace
+                .triangles
+                .iter()
+                .find(|t| t.source == source)
+                .map(Self::name)
+                .unwrap_or_else(|| source.to_string())
+        };
+        for t in &trace.triangles {
+            let Some(test) = &t.test else { continue };
+            if test.position != Position::OnEdge {
+                continue;
+            }
+            let Some(e) = test.edges.iter().find(|e| e.value == 0) else {
+                continue;
+            };
+            let kind = kind_words(e.kind);
+            let rule = match self.reference.settings.tie_rule {
+                TieRule::Llvmpipe => {
+                    "the tie rule (llvmpipe's: left and bottom edges own their centres)"
+                }
+                TieRule::TopLeft => "the tie rule (top-left: left and top edges own their centres)",
+            };
+            return match trace.written_by {
+                Some(w) => format!(
+                    "centre exactly on edge {} ({kind}) of triangle {}: {rule} gives it to \
+                     triangle {}",
+                    e.name,
+                    Self::name(t),
+                    by_name(w)
+                ),
+                None => format!(
+                    "centre exactly on edge {} ({kind}) of triangle {}: {rule} leaves it out, \
+                     and no triangle lies on the other side",
+                    e.name,
+                    Self::name(t)
+                ),
+            };
+        }
+        match (d, trace.written_by) {
+            (Difference::OnlyOurs, Some(w)) => {
+                let Some(t) = trace.triangles.iter().find(|t| t.source == w) else {
+                    return format!("barylab's triangle {w} covers this centre");
+                };
+                let nearest = (0..3)
+                    .filter_map(|i| Some((i, self.edge_distance(t, i)?)))
+                    .min_by(|a, b| a.1.total_cmp(&b.1));
+                match (nearest, &t.test) {
+                    (Some((i, dist)), Some(test)) => format!(
+                        "centre {} px inside edge {} of triangle {}{}",
+                        px(dist),
+                        test.edges[i].name,
+                        Self::name(t),
+                        closeness(dist, "leaves it out")
+                    ),
+                    _ => format!("barylab's triangle {} covers this centre", Self::name(t)),
+                }
+            }
+            _ => {
+                // The triangle whose outside the centre is least far into.
+                let nearest = trace
+                    .triangles
+                    .iter()
+                    .filter_map(|t| {
+                        let out = (0..3)
+                            .filter_map(|i| self.edge_distance(t, i).map(|d| (i, d)))
+                            .filter(|&(_, d)| d < 0.0)
+                            .min_by(|a, b| a.1.total_cmp(&b.1))?;
+                        Some((t, out))
+                    })
+                    .min_by(|a, b| b.1.1.total_cmp(&a.1.1));
+                match nearest {
+                    Some((t, (i, dist))) => format!(
+                        "centre {} px outside edge {} of triangle {}{}",
+                        px(-dist),
+                        t.test
+                            .as_ref()
+                            .map(|s| s.edges[i].name.as_str())
+                            .unwrap_or("?"),
+                        Self::name(t),
+                        closeness(-dist, "covers it")
+                    ),
+                    None => "no triangle comes near this pixel centre in barylab's render".into(),
+                }
+            }
+        }
+    }
+
+    fn colour_reason(&self, trace: &PixelTrace, theirs: [u8; 4]) -> String {
+        let [x, y] = trace.pixel;
+        let f = &self.render.frame;
+        let k = (y * f.width + x) as usize;
+        let ours = f.color[k];
+        let other = self.other.frame.color[k];
+        let diff = rgb_difference(theirs, ours);
+        if rgb_difference(theirs, other) <= self.tolerance {
+            let (p, a) = (f.uv_perspective[k], f.uv_affine[k]);
+            let tex = self.reference.texture;
+            let texels = ((p[0] - a[0]).abs() * tex.width() as f32)
+                .max((p[1] - a[1]).abs() * tex.height() as f32);
+            let words = match self.reference.settings.mode {
+                Interpolation::Affine => "perspective-correct",
+                Interpolation::Perspective => "affine",
+            };
+            return format!(
+                "uv differs by {texels:.1} texels between perspective-correct and affine here, \
+                 and this colour is barylab's {words} one: looks like {words} interpolation"
+            );
+        }
+        let covering: Vec<&TriangleCoverage> = trace
+            .triangles
+            .iter()
+            .filter(|t| t.depth_test.is_some())
+            .collect();
+        if let (Some(w), true) = (trace.written_by, covering.len() > 1) {
+            let front = covering.iter().find(|t| t.source == w);
+            let behind = covering.iter().find(|t| t.source != w);
+            if let (Some(front), Some(behind)) = (front, behind) {
+                let depth = |t: &TriangleCoverage| t.depth_test.map_or(f32::NAN, |d| d.depth);
+                return format!(
+                    "triangles {} and {} both cover this centre; barylab keeps the nearer {} \
+                     (window depth {:.5} < {:.5}): a reversed depth test (or z sign) would \
+                     show {}",
+                    Self::name(front),
+                    Self::name(behind),
+                    Self::name(front),
+                    depth(front),
+                    depth(behind),
+                    Self::name(behind)
+                );
+            }
+        }
+        if let Some(n) = self.blended_with_neighbour(x, y, theirs) {
+            return format!(
+                "an edge pixel whose colour lies between barylab's and its neighbour's at \
+                 ({}, {}): looks like anti-aliasing (supersampling or MSAA)",
+                n.0, n.1
+            );
+        }
+        let uv = match self.reference.settings.mode {
+            Interpolation::Affine => f.uv_affine[k],
+            Interpolation::Perspective => f.uv_perspective[k],
+        };
+        let tri = f.triangle[k];
+        format!(
+            "colour differs by {diff} levels; barylab draws triangle {} here with uv ({:.4}, \
+             {:.4}) and colour {:?}",
+            if tri == NO_TRIANGLE {
+                "-".to_string()
+            } else {
+                tri.to_string()
+            },
+            uv[0],
+            uv[1],
+            [ours[0], ours[1], ours[2]]
+        )
+    }
+
+    /// A 4-neighbour with another triangle (or none) whose colour, with barylab's, brackets
+    /// `theirs` in every channel.
+    fn blended_with_neighbour(&self, x: u32, y: u32, theirs: [u8; 4]) -> Option<(u32, u32)> {
+        let f = &self.render.frame;
+        let k = (y * f.width + x) as usize;
+        let ours = f.color[k];
+        let tol = i32::from(self.tolerance);
+        let neighbours = [(-1i64, 0i64), (1, 0), (0, -1), (0, 1)];
+        neighbours.iter().find_map(|&(dx, dy)| {
+            let (nx, ny) = (i64::from(x) + dx, i64::from(y) + dy);
+            if nx < 0 || ny < 0 || nx >= i64::from(f.width) || ny >= i64::from(f.height) {
+                return None;
+            }
+            let j = (ny as u32 * f.width + nx as u32) as usize;
+            if f.triangle[j] == f.triangle[k] {
+                return None;
+            }
+            let other = f.color[j];
+            let between = (0..3).all(|c| {
+                let (a, b, t) = (
+                    i32::from(ours[c]),
+                    i32::from(other[c]),
+                    i32::from(theirs[c]),
+                );
+                t >= a.min(b) - tol && t <= a.max(b) + tol
+            });
+            (between && rgb_difference(theirs, other) > self.tolerance)
+                .then_some((nx as u32, ny as u32))
+        })
+    }
+}
+
+fn kind_words(k: crate::raster::setup::EdgeKind) -> &'static str {
+    use crate::raster::setup::EdgeKind as E;
+    match k {
+        E::Left => "a left edge",
+        E::Right => "a right edge",
+        E::Top => "a top edge",
+        E::Bottom => "a bottom edge",
+    }
+}
+
+/// A distance in pixels, with enough digits for a hair's breadth.
+fn px(d: f64) -> String {
+    if d < 0.01 {
+        format!("{d:.4}")
+    } else {
+        format!("{d:.2}")
+    }
+}
+
+/// What a centre this close to an edge means; `other` is what the other image did.
+fn closeness(d: f64, other: &str) -> String {
+    let subpixel = 1.0 / crate::raster::project::SUBPIXEL as f64;
+    if d <= subpixel {
+        format!(
+            ": within 1/256 pixel, where snapping the vertices to the 1/256 grid decides; \
+             the other image {other}"
+        )
+    } else if d < 0.5 {
+        format!(": the other image {other}, as a sample moved by less than half a pixel would")
+    } else {
+        format!(": clearly decided, yet the other image {other}")
+    }
+}

@@ -1,0 +1,75 @@
+//! A barylab mesh as OpenGL gets it: clip coordinates rounded to f32, the texture's bytes.
+
+use crate::raster::{ClipMesh, Texture, Wrap};
+
+/// What to draw: clip-space positions and uv/colour per vertex, the triangles, the texture.
+pub struct GlScene {
+    pub width: u32,
+    pub height: u32,
+    /// Per vertex: clip x, y, z, w, u, v, r, g, b (f32, as the GPU gets them).
+    pub vertices: Vec<[f32; 9]>,
+    pub indices: Vec<u32>,
+    pub texture_width: u32,
+    pub texture_height: u32,
+    /// RGBA8, row 0 first (t = 0, barylab's texel row 0).
+    pub texels: Vec<u8>,
+    pub wrap: Wrap,
+    pub background: [u8; 4],
+}
+
+impl GlScene {
+    /// The mesh as the GPU gets it: clip coordinates rounded to f32.
+    pub fn new(
+        mesh: &ClipMesh,
+        texture: &Texture,
+        width: u32,
+        height: u32,
+        wrap: Wrap,
+        background: [u8; 4],
+    ) -> Self {
+        let vertices = mesh
+            .vertices
+            .iter()
+            .map(|v| {
+                [
+                    v.clip.x as f32,
+                    v.clip.y as f32,
+                    v.clip.z as f32,
+                    v.clip.w as f32,
+                    v.uv.x,
+                    v.uv.y,
+                    v.color.x,
+                    v.color.y,
+                    v.color.z,
+                ]
+            })
+            .collect();
+        let mut texels = Vec::with_capacity((texture.width() * texture.height() * 4) as usize);
+        for j in 0..texture.height() {
+            for i in 0..texture.width() {
+                texels.extend_from_slice(&texture.texel(i, j));
+            }
+        }
+        Self {
+            width,
+            height,
+            vertices,
+            indices: mesh.triangles.iter().flatten().copied().collect(),
+            texture_width: texture.width(),
+            texture_height: texture.height(),
+            texels,
+            wrap,
+            background,
+        }
+    }
+}
+
+/// A copy of `mesh` whose clip coordinates are rounded to f32, so that barylab draws exactly
+/// the coordinates OpenGL gets.
+pub fn mesh_at_f32(mesh: &ClipMesh) -> ClipMesh {
+    let mut m = mesh.clone();
+    for v in &mut m.vertices {
+        v.clip = v.clip.as_vec4().as_dvec4();
+    }
+    m
+}
