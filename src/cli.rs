@@ -25,6 +25,7 @@ Examples:
   barylab render photo.jpg -o out.png       the photo on the default quad
   barylab render assets/models/torus.obj -o out.png
   barylab --screenshot shot.png             open the app, save a screenshot, exit
+  barylab --screenshot s.png --window 1024x768 --present   the same, as on a projector
   barylab render assets/scenes/default.json -o out.png
   barylab render assets/scenes/default.json --mode affine --size 400x300 -o affine.png
   barylab render assets/scenes/clip-two-triangles.json --filter nearest --aov aov/ -o out.png
@@ -50,9 +51,15 @@ struct Cli {
     /// Start from the built-in defaults instead of the state saved last time (and do not save).
     #[arg(long)]
     fresh: bool,
-    /// Window size in points, e.g. 1500x950.
-    #[arg(long, value_parser = parse_window_size, value_name = "WxH")]
+    /// Window size in points, e.g. 1024x768 (also `--window`).
+    #[arg(long, alias = "window", value_parser = parse_window_size, value_name = "WxH")]
     window_size: Option<(u32, u32)>,
+    /// Start in presentation mode (panels hidden, the pixel card shown); F5 or Esc leaves it.
+    #[arg(long)]
+    present: bool,
+    /// Start with this pixel of the image pinned (e.g. for a --screenshot).
+    #[arg(long, value_parser = parse_pixel, value_name = "X,Y")]
+    pin: Option<(u32, u32)>,
     /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
     /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
@@ -577,6 +584,8 @@ fn app(cli: &Cli) -> Result<()> {
         // A screenshot run is reproducible: it neither reads nor writes saved state.
         persist: !cli.fresh && cli.screenshot.is_none(),
         window_size: cli.window_size.map(|(w, h)| [w as f32, h as f32]),
+        present: cli.present,
+        pin: cli.pin.map(|(x, y)| [x, y]),
     };
     barylab::app::run(options)?;
     Ok(())

@@ -19,6 +19,7 @@ fn the_benchmark_window_measures_the_canvas_and_shows_the_table() {
         .with_max_steps(30)
         .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
     // Coarse pixels: a small canvas to render.
+    h.state_mut().push(Command::SetImageSize(None));
     h.state_mut().push(Command::SetPixelSize(16));
     h.run();
     let size = h.state().canvas().output.as_ref().expect("rendered").size;

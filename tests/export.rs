@@ -65,6 +65,7 @@ fn ctrl_s_exports_what_barylab_figure_draws_from_the_exported_scene() {
     for c in [
         AppCommand::SetCompare(Compare::Wipe),
         AppCommand::SetWipe(0.3),
+        AppCommand::SetImageSize(None),
         AppCommand::SetPixelSize(4),
         // Text size 1.5: overlays 1.5 times larger on screen, and so in the figure.
         AppCommand::SetUiScale(1.5),

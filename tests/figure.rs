@@ -33,6 +33,14 @@ fn pinned(pixel: [u32; 2], scale: u32) -> FigureOptions {
     }
 }
 
+/// The scene's render settings on a white figure: the image's background is white too.
+fn on_white(scene: &Scene) -> raster::RenderSettings {
+    raster::RenderSettings {
+        background: [255, 255, 255, 255],
+        ..scene.settings()
+    }
+}
+
 fn barylab(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_barylab"))
         .current_dir(root())
@@ -62,14 +70,15 @@ fn png_size_follows_the_scale_and_the_raster_is_a_real_re_render() {
         // The view's raster is the scene rendered at scale x the size, not an upscale.
         let mut hi = scene.clone();
         hi.set_size(200 * scale, 150 * scale);
-        let direct = raster::render(&hi.to_mesh(), &texture, &hi.settings()).expect("render");
+        let direct = raster::render(&hi.to_mesh(), &texture, &on_white(&hi)).expect("render");
         assert!(
             fig.views[0].raster == direct.frame.to_image(),
             "scale {scale}"
         );
         // The PNG holds that raster where no overlay covers it: the top-left image corner
-        // (the default quad lies lower down; no label reaches there).
+        // (the default quad lies lower down; no label reaches there), white for print.
         let o = fig.views[0].origin.map(|v| v * scale);
+        assert_eq!(image.get_pixel(o[0], o[1]).0, [255, 255, 255, 255]);
         for (x, y) in [(0, 0), (3 * scale, 2 * scale)] {
             assert_eq!(
                 image.get_pixel(o[0] + x, o[1] + y),
@@ -90,7 +99,7 @@ fn a_magnified_figure_keeps_the_scenes_pixels() {
         ..pinned([20, 20], 2)
     };
     let fig = Figure::compose(&scene, &texture, &options).expect("figure");
-    let direct = raster::render(&scene.to_mesh(), &texture, &scene.settings()).expect("render");
+    let direct = raster::render(&scene.to_mesh(), &texture, &on_white(&scene)).expect("render");
     let r = &fig.views[0].raster;
     assert_eq!(r.dimensions(), (40 * 16, 30 * 16));
     for (x, y) in [(0, 0), (13, 7), (20, 20), (39, 29)] {

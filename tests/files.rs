@@ -374,7 +374,9 @@ fn a_model_orbits_pans_zooms_and_resets() {
     let forward = (z.target - z.eye).normalize();
     assert!(moved.dot(forward).abs() < 1e-9 * moved.length().max(1.0));
 
-    // Reset view: the framing camera again.
+    // Reset view: the framing camera again (the button may be below the panel's fold).
+    h.get_by_label("Reset view").scroll_to_me();
+    h.run();
     h.get_by_label("Reset view").click();
     h.run();
     assert_eq!(camera(&h), framing);

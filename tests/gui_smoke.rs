@@ -41,14 +41,18 @@ impl Drop for Xvfb {
     }
 }
 
+/// Held while an Xvfb starts, so tests running in parallel do not pick the same display.
+static STARTING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 fn start_xvfb(xvfb: &Path) -> Xvfb {
+    let _starting = STARTING.lock().unwrap_or_else(|e| e.into_inner());
     let n = free_display();
     let child = Command::new(xvfb)
         .args([
             &format!(":{n}"),
             "-screen",
             "0",
-            "1400x900x24",
+            "1920x1080x24",
             "-nolisten",
             "tcp",
         ])
@@ -169,6 +173,60 @@ fn the_window_opens_renders_and_saves_a_screenshot() {
             bg_pixels > 1000,
             "{name}: canvas background not found ({bg_pixels} px)"
         );
+    }
+}
+
+/// The bounding box of the pixels in the scene's background colour (the rendered image
+/// around the quad), as a share of the screenshot's area.
+fn image_share(img: &image::RgbaImage) -> f64 {
+    let bg = barylab::raster::render::DEFAULT_BACKGROUND;
+    let (mut x0, mut y0, mut x1, mut y1) = (u32::MAX, u32::MAX, 0, 0);
+    for (x, y, p) in img.enumerate_pixels() {
+        if p.0 == bg {
+            (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
+        }
+    }
+    if x1 < x0 {
+        return 0.0;
+    }
+    f64::from((x1 - x0 + 1) * (y1 - y0 + 1)) / f64::from(img.width() * img.height())
+}
+
+#[test]
+fn projector_windows_keep_a_large_image_with_and_without_presentation_mode() {
+    let Some(xvfb) = xvfb_or_skip() else {
+        return;
+    };
+    let x = start_xvfb(&xvfb);
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (w, h) in [(1024, 768), (1280, 800), (1920, 1080)] {
+        for present in [false, true] {
+            let shot = dir.path().join(format!("{w}x{h}-{present}.png"));
+            let size = format!("{w}x{h}");
+            let mut args = vec![
+                "--screenshot",
+                shot.to_str().expect("utf-8 path"),
+                "--window",
+                &size,
+                "--pin",
+                "400,420",
+            ];
+            if present {
+                args.push("--present");
+            }
+            let (ok, err) = run_app(&x.display, &args);
+            assert!(ok, "barylab failed: {err}");
+            let img = image::open(&shot).expect("screenshot PNG").to_rgba8();
+            assert_eq!((img.width(), img.height()), (w, h));
+            // The 800x600 image (its background around the quad) takes a good part of the
+            // window: the panels fold away rather than crush it.
+            let share = image_share(&img);
+            let least = if present { 0.35 } else { 0.3 };
+            assert!(
+                share > least,
+                "{size} present={present}: image {share:.2} of the window"
+            );
+        }
     }
 }
 

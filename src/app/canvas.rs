@@ -9,7 +9,7 @@ use glam::DVec2;
 use super::paint::{self, CanvasTransform};
 use super::pixel::PixelReport;
 use super::render::{CanvasOutput, RenderCache, TextureKey, view_image};
-use super::state::{AppState, Command};
+use super::state::{AppState, Command, PIXEL_SIZE_RANGE};
 use crate::figure::overlay::{self, HandleMark, OverlayInput};
 use crate::figure::{Compare, VertexOnScreen, ViewContent, vertices_on_screen};
 use crate::raster::project::Viewport;
@@ -26,6 +26,9 @@ mod text {
 
 /// Points between the two views of the side-by-side comparison.
 const SIDE_BY_SIDE_GAP: f32 = crate::figure::SIDE_BY_SIDE_GAP as f32;
+/// Screen pixels per rendered pixel from which a fixed-size image is magnified by a whole
+/// number.
+pub const WHOLE_PIXELS_FROM: f32 = 2.0;
 /// Points: extra grab radius around a handle.
 const HANDLE_GRAB_SLACK: f32 = 6.0;
 /// Points: half-width of the wipe line's grab area.
@@ -38,6 +41,14 @@ const PUSH_PER_SCROLL_POINT: f64 = 0.004;
 const ORBIT_DEG_PER_POINT: f64 = 0.4;
 /// Model scenes: the camera distance is multiplied by e^(-this) per point scrolled up.
 const ZOOM_PER_SCROLL_POINT: f64 = 0.004;
+
+/// Magnified pixels stay crisp squares; a large image shrunk into a small canvas is averaged
+/// rather than decimated.
+const VIEW_TEXTURE: TextureOptions = TextureOptions {
+    magnification: egui::TextureFilter::Nearest,
+    minification: egui::TextureFilter::Linear,
+    ..TextureOptions::NEAREST
+};
 
 /// One view on screen.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,18 +87,50 @@ pub struct CanvasState {
     pub hover: Option<[u32; 2]>,
     pub timing: CanvasTiming,
     pub error: Option<String>,
+    /// Screen pixels per rendered pixel as drawn (whole, 1 to 32): the overlay's grid and
+    /// the exported figure's pixel size.
+    pub pixel_size: u32,
+    /// The canvas's whole area on screen (points), the views inside it (`None` before the
+    /// first frame).
+    pub area: Option<Rect>,
+}
+
+/// How the rendered image's size is chosen.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Sizing {
+    /// A fixed size (the scene's), drawn as large as the view allows: whole screen pixels per
+    /// rendered pixel when magnified, so every pixel is the same square.
+    Fixed([u32; 2]),
+    /// Follow the window: `pixel_size` screen pixels per rendered pixel, the aspect ratio
+    /// (width / height) of the scene.
+    Fit { aspect: f32, pixel_size: u32 },
+}
+
+/// The canvas's views, the render size and the points per rendered pixel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layout {
+    pub views: Vec<(Rect, ViewContent)>,
+    pub size: [u32; 2],
+    /// Points per rendered pixel.
+    pub scale: f32,
+}
+
+impl Layout {
+    /// Screen pixels per rendered pixel, as a whole number for the overlay's grid and the
+    /// figure's pixel size (at least 1, at most the largest pixel size).
+    pub fn pixel_size(&self, pixels_per_point: f32) -> u32 {
+        let px = (self.scale * pixels_per_point).round();
+        (px as u32).clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1)
+    }
 }
 
 /// Splits the available rectangle into the views of a comparison, each the largest rectangle
-/// of the scene's aspect ratio (`aspect` = width / height) that fits, and fixes the render
-/// size: `floor(points * pixels_per_point / pixel_size)` rendered pixels per side.
-pub fn layout(
-    available: Rect,
-    compare: Compare,
-    aspect: f32,
-    pixel_size: u32,
-    pixels_per_point: f32,
-) -> (Vec<(Rect, ViewContent)>, [u32; 2]) {
+/// of the image's aspect ratio that fits, and fixes the render size and the scale.
+pub fn layout(available: Rect, compare: Compare, sizing: Sizing, pixels_per_point: f32) -> Layout {
+    let aspect = match sizing {
+        Sizing::Fixed([w, h]) => w.max(1) as f32 / h.max(1) as f32,
+        Sizing::Fit { aspect, .. } => aspect,
+    };
     let aspect = if aspect.is_finite() && aspect > 0.0 {
         aspect
     } else {
@@ -125,19 +168,36 @@ pub fn layout(
         Compare::Wipe => vec![(available, ViewContent::Wipe)],
         Compare::Difference => vec![(available, ViewContent::Difference)],
     };
-    let scale = pixel_size as f32 / pixels_per_point;
-    let max = crate::raster::project::MAX_IMAGE_SIZE;
-    let size_of = |r: Rect| {
-        let fit_w = r.width().min(r.height() * aspect).max(1.0);
-        let fit_h = (fit_w / aspect).max(1.0);
-        let w = ((fit_w / scale).floor() as u32).clamp(1, max);
-        let h = ((fit_h / scale).floor() as u32).clamp(1, max);
-        [w, h]
-    };
-    let size = size_of(Rect::from_min_max(
+    let first = Rect::from_min_max(
         areas[0].0.min + egui::vec2(0.0, overlay::TITLE_STRIP),
         areas[0].0.max,
-    ));
+    );
+    let ppp = pixels_per_point.max(0.01);
+    let max = crate::raster::project::MAX_IMAGE_SIZE;
+    let (size, scale) = match sizing {
+        Sizing::Fit { pixel_size, .. } => {
+            let scale = pixel_size as f32 / ppp;
+            let fit_w = first.width().min(first.height() * aspect).max(1.0);
+            let fit_h = (fit_w / aspect).max(1.0);
+            let w = ((fit_w / scale).floor() as u32).clamp(1, max);
+            let h = ((fit_h / scale).floor() as u32).clamp(1, max);
+            ([w, h], scale)
+        }
+        Sizing::Fixed([w, h]) => {
+            let (w, h) = (w.clamp(1, max), h.clamp(1, max));
+            let fit = (first.width().max(1.0) / w as f32).min(first.height().max(1.0) / h as f32);
+            // Screen pixels per rendered pixel: whole from WHOLE_PIXELS_FROM on, so every
+            // magnified pixel is the same crisp square; below that a pixel is too small to
+            // see on its own and the image fills the canvas.
+            let px = fit * ppp;
+            let px = if px >= WHOLE_PIXELS_FROM {
+                px.floor()
+            } else {
+                px
+            };
+            ([w, h], px / ppp)
+        }
+    };
     let views = areas
         .into_iter()
         .map(|(area, content)| {
@@ -146,14 +206,11 @@ pub fn layout(
             let shown = egui::vec2(size[0] as f32 * scale, size[1] as f32 * scale);
             let min = area.center() - shown / 2.0;
             // Snap to whole physical pixels so nearest magnification is crisp.
-            let min = Pos2::new(
-                (min.x * pixels_per_point).round() / pixels_per_point,
-                (min.y * pixels_per_point).round() / pixels_per_point,
-            );
+            let min = Pos2::new((min.x * ppp).round() / ppp, (min.y * ppp).round() / ppp);
             (Rect::from_min_size(min, shown), content)
         })
         .collect();
-    (views, size)
+    Layout { views, size, scale }
 }
 
 impl CanvasState {
@@ -206,12 +263,11 @@ impl CanvasState {
         self.textures.truncate(images.len());
         for (i, image) in images.into_iter().enumerate() {
             match self.textures.get_mut(i) {
-                Some(t) => t.set(image, TextureOptions::NEAREST),
-                None => self.textures.push(ctx.load_texture(
-                    format!("canvas-{i}"),
-                    image,
-                    TextureOptions::NEAREST,
-                )),
+                Some(t) => t.set(image, VIEW_TEXTURE),
+                None => {
+                    self.textures
+                        .push(ctx.load_texture(format!("canvas-{i}"), image, VIEW_TEXTURE))
+                }
             }
         }
         self.uploaded = Some(tag);
@@ -238,17 +294,22 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
     let view_settings = &state.view;
     let ppp = ui.ctx().pixels_per_point();
     let available = ui.available_rect_before_wrap();
+    canvas.area = Some(available);
     let (scene_w, scene_h) = state.scene.size();
-    let (areas, size) = layout(
-        available,
-        view_settings.compare,
-        scene_w as f32 / scene_h as f32,
-        view_settings.pixel_size,
-        ppp,
-    );
+    let sizing = if view_settings.fit_window {
+        Sizing::Fit {
+            aspect: scene_w as f32 / scene_h as f32,
+            pixel_size: view_settings.pixel_size,
+        }
+    } else {
+        Sizing::Fixed([scene_w, scene_h])
+    };
+    let lay = layout(available, view_settings.compare, sizing, ppp);
+    let (size, scale) = (lay.size, lay.scale);
+    canvas.pixel_size = lay.pixel_size(ppp);
     canvas.update(state, size, input.texture, input.texture_key.clone());
-    let scale = view_settings.pixel_size as f32 / ppp;
-    canvas.views = areas
+    canvas.views = lay
+        .views
         .iter()
         .map(|&(rect, content)| View {
             rect,
@@ -432,7 +493,7 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
     for view in &canvas.views {
         let input_overlay = OverlayInput {
             size,
-            pixel_size: view_settings.pixel_size,
+            pixel_size: canvas.pixel_size,
             pixels_per_point: ppp,
             mode: match view.content {
                 ViewContent::Mode(m) => Some(m),
@@ -457,10 +518,12 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
                 _ => None,
             },
         };
+        // Overlays stay on the canvas (the image and its title strip), never over the panels.
         let clip = Rect::from_min_max(
             view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
             view.rect.max + egui::vec2(2.0, 2.0),
-        );
+        )
+        .intersect(available);
         paint::paint(
             &painter,
             clip,

@@ -20,6 +20,12 @@ pub enum AppCommand {
     File(FileCommand),
     /// Show or hide the help window.
     SetHelpOpen(bool),
+    /// Enter or leave presentation mode.
+    SetPresenting(bool),
+    /// Undo the last scene edit.
+    Undo,
+    /// Redo the last undone scene edit.
+    Redo,
 }
 
 impl From<Command> for AppCommand {

@@ -104,8 +104,8 @@ pub mod tips {
         values equal up to rounding. The inspector still shows the edge-function derivation.";
     pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
         thresholding the smallest weight. Key: W";
-    pub const PIXEL_SIZE: &str = "Render at a lower resolution and magnify, so each rendered pixel \
-        is this many screen pixels wide. Keys: [ and ]";
+    pub const PIXEL_SIZE: &str = "With \"Fit window\": render at a lower resolution and \
+        magnify, so each rendered pixel is this many screen pixels wide. Keys: [ and ]";
     pub const GRID: &str = "At large pixel sizes, draw the pixel grid and the pixel centres \
         where the samples are taken. Key: G";
     pub const HANDLES: &str = "Show the draggable corner handles with their w. Key: H";
@@ -135,7 +135,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     let view = &state.view;
 
     section(ui, text::INTERPOLATION);
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         for (mode, label, tip, c) in [
             (
                 Interpolation::Affine,
@@ -203,7 +203,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
             }
         }
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label(text::FILTER);
         for (f, label, tip) in [
             (Filter::Nearest, text::NEAREST, tips::NEAREST),
@@ -227,7 +227,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     {
         out.push(Command::SetWireframe(wire));
     }
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         use crate::raster::render::Rasterizer;
         ui.label(text::RASTERIZER);
         for (r, label, tip) in [
@@ -249,9 +249,11 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     });
 
     section(ui, text::PIXELS);
+    out.extend(super::image_size::image_size_ui(ui, state));
     let mut px = view.pixel_size;
     if ui
-        .add(
+        .add_enabled(
+            view.fit_window,
             Slider::new(&mut px, PIXEL_SIZE_RANGE.0..=PIXEL_SIZE_RANGE.1)
                 .logarithmic(true)
                 .suffix("×")
@@ -310,22 +312,22 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     out
 }
 
-/// The reset buttons and the text size, for the top bar (laid out right to left).
+/// The reset buttons and the text size, for the top bar.
 pub fn reset_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     let mut out = Vec::new();
-    if ui
-        .button(text::RESET_ALL)
-        .on_hover_text(tips::RESET_ALL)
-        .clicked()
-    {
-        out.push(Command::ResetAll);
-    }
     if ui
         .button(text::RESET_SCENE)
         .on_hover_text(tips::RESET_SCENE)
         .clicked()
     {
         out.push(Command::ResetScene);
+    }
+    if ui
+        .button(text::RESET_ALL)
+        .on_hover_text(tips::RESET_ALL)
+        .clicked()
+    {
+        out.push(Command::ResetAll);
     }
     ui.separator();
     let mut scale = state.view.ui_scale;

@@ -153,6 +153,8 @@ pub struct ExportContext<'a> {
     pub texture: &'a Texture,
     /// The canvas's rendered size.
     pub size: Option<[u32; 2]>,
+    /// Screen pixels per rendered pixel as the canvas draws them (the figure's pixel size).
+    pub pixel_size: u32,
     /// The hovered pixel (marked like on screen).
     pub hovered: Option<[u32; 2]>,
     /// Screen pixels per point: overlays are drawn this much larger, as on screen.
@@ -251,7 +253,7 @@ impl ExportPanel {
     fn figure(&self, app: &ExportContext<'_>) -> Result<(Scene, Figure), String> {
         let size = app.size.ok_or_else(|| text::NO_CANVAS.to_string())?;
         let scene = figure_scene(app.state, size);
-        let options = figure_options(app.state, app.hovered, &self.settings, app.pixels_per_point);
+        let options = figure_options(app, &self.settings);
         let figure = Figure::compose(&scene, app.texture, &options)
             .map_err(|e: FigureError| e.to_string())?;
         Ok((scene, figure))
@@ -260,7 +262,7 @@ impl ExportPanel {
     /// The `barylab figure` command that makes the exported PNG again from the exported scene
     /// file `json`.
     pub fn command(&self, app: &ExportContext<'_>, json: &Path) -> String {
-        let options = figure_options(app.state, app.hovered, &self.settings, app.pixels_per_point);
+        let options = figure_options(app, &self.settings);
         let quote = |p: &Path| {
             let s = p.display().to_string();
             if s.contains([' ', '\'', '"']) {
@@ -400,17 +402,12 @@ pub fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
 }
 
 /// The figure options of the canvas as shown, with the export's scale and background;
-/// `pixels_per_point` is the screen's (the overlay scale).
-pub fn figure_options(
-    state: &AppState,
-    hovered: Option<[u32; 2]>,
-    settings: &ExportSettings,
-    pixels_per_point: f32,
-) -> FigureOptions {
-    let v = &state.view;
+/// the pixel size and the overlay scale are the screen's.
+pub fn figure_options(app: &ExportContext<'_>, settings: &ExportSettings) -> FigureOptions {
+    let (v, hovered, pixels_per_point) = (&app.state.view, app.hovered, app.pixels_per_point);
     FigureOptions {
         compare: v.compare,
-        pixel_size: v.pixel_size,
+        pixel_size: app.pixel_size,
         wipe: v.wipe,
         show_grid: v.show_grid,
         show_handles: v.show_handles,

@@ -15,6 +15,14 @@ pub mod text {
     pub const OPEN_TIP: &str = "Open a scene (.json), a model (.obj) or an image \
         (PNG, JPEG, BMP, TGA, WebP: it becomes the texture). You can also drop files on the \
         window. Key: Ctrl+O";
+    pub const SAVE: &str = "Save scene";
+    pub const SAVE_TIP: &str = "Save the scene (corners, camera, texture, image size) as a \
+        JSON file that barylab render, probe and figure read: to the file it came from, else \
+        ask where.";
+    pub const SAVE_AS: &str = "Save scene as…";
+    pub const SAVE_AS_TIP: &str = "Save the scene to a new JSON file. Key: Ctrl+Shift+S";
+    pub const SAVE_DIALOG_TITLE: &str = "Save the scene";
+    pub const SAVE_NAME: &str = "scene.json";
     pub const TYPE_PATH: &str = "Type a path…";
     pub const TYPE_PATH_TIP: &str = "Open a file by typing its path.";
     pub const RECENT: &str = "Recent files";
@@ -33,6 +41,7 @@ pub mod text {
 #[derive(Default)]
 pub struct FilePicker {
     dialog: NativeDialog,
+    save_dialog: NativeDialog,
     pub path_window: PathWindow,
 }
 
@@ -43,8 +52,13 @@ impl FilePicker {
         match command {
             FileCommand::OpenDialog => self.open_dialog(ctx),
             FileCommand::ShowPathWindow { dialog_failed } => self.path_window.show(*dialog_failed),
+            FileCommand::SaveAsDialog => self.save_dialog(ctx),
             FileCommand::ClosePathWindow => self.path_window.open = false,
-            FileCommand::Open(_) | FileCommand::ClearRecent | FileCommand::DismissBanner => {}
+            FileCommand::Open(_)
+            | FileCommand::ClearRecent
+            | FileCommand::DismissBanner
+            | FileCommand::Save
+            | FileCommand::SaveTo(_) => {}
         }
     }
 
@@ -66,14 +80,33 @@ impl FilePicker {
         }
     }
 
-    /// Whether the native dialog is open.
+    /// Opens the native Save dialog; the typed-path window (saving) when it cannot.
+    fn save_dialog(&mut self, ctx: &egui::Context) {
+        let opened = self.save_dialog.open(ctx, "save dialog", move || {
+            rfd::FileDialog::new()
+                .set_title(text::SAVE_DIALOG_TITLE)
+                .set_file_name(text::SAVE_NAME)
+                .add_filter(text::FILTER_SCENE, &["json"])
+                .save_file()
+        });
+        if opened.is_err() {
+            self.path_window.show_save(true);
+        }
+    }
+
+    /// Whether a native dialog is open.
     pub fn waiting(&self) -> bool {
-        self.dialog.is_open()
+        self.dialog.is_open() || self.save_dialog.is_open()
     }
 
     /// What the dialog's closing asks for: the picked file to open, or the typed-path window
     /// when it could not open.
     pub fn poll(&mut self) -> Option<FileCommand> {
+        match self.save_dialog.poll() {
+            Some(DialogOutcome::Picked(path)) => return Some(FileCommand::SaveTo(path)),
+            Some(DialogOutcome::Failed) => self.path_window.show_save(true),
+            Some(DialogOutcome::Cancelled) | None => {}
+        }
         match self.dialog.poll()? {
             DialogOutcome::Picked(path) => Some(FileCommand::Open(path)),
             DialogOutcome::Failed => Some(FileCommand::ShowPathWindow {
@@ -106,6 +139,16 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
                 dialog_failed: false,
             });
             ui.close();
+        }
+        ui.separator();
+        for (label, tip, command) in [
+            (text::SAVE, text::SAVE_TIP, FileCommand::Save),
+            (text::SAVE_AS, text::SAVE_AS_TIP, FileCommand::SaveAsDialog),
+        ] {
+            if ui.button(label).on_hover_text(tip).clicked() {
+                out.push(command);
+                ui.close();
+            }
         }
         ui.separator();
         ui.label(RichText::new(text::RECENT).weak());

@@ -17,6 +17,7 @@ use crate::scene::{InputKind, Scene, open_input};
 
 /// User-facing strings of opening a file.
 pub mod text {
+    pub const SAVED: &str = "saved the scene to";
     pub const NO_UV_TEXTURE: &str = "the model has no texture coordinates, so the image shows \
         as one colour; it is shaded by vertex colour";
 }
@@ -39,6 +40,12 @@ pub enum FileCommand {
     ClearRecent,
     /// Hide the banner.
     DismissBanner,
+    /// Save the scene to the file it came from or was last saved to (else ask where).
+    Save,
+    /// Ask where to save the scene (the native dialog, else the typed-path window).
+    SaveAsDialog,
+    /// Save the scene to this file.
+    SaveTo(PathBuf),
 }
 
 /// What opening a file changes.
@@ -143,4 +150,13 @@ pub fn load_scene(path: &Path) -> Result<(Scene, PathBuf), String> {
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     scene.load_texture(&dir).map_err(|e| e.to_string())?;
     Ok((scene, dir))
+}
+
+/// Writes `scene` as the JSON that `barylab render`, `probe` and `figure` read, its texture and
+/// model paths made absolute against `scene_dir` (so it loads from anywhere), atomically: the
+/// file is whole or as it was.
+pub fn save(path: &Path, scene: &Scene, scene_dir: Option<&Path>) -> Result<String, String> {
+    let json = crate::figure::export::scene_json(scene, scene_dir);
+    crate::files::write_bytes(path, json.as_bytes()).map_err(|e| e.to_string())?;
+    Ok(format!("{} {}", text::SAVED, path.display()))
 }

@@ -41,12 +41,26 @@ pub mod text {
     pub const KEY_ROWS: &[(&str, &str)] = &[
         ("P", "switch affine / perspective-correct"),
         ("1 2 3 4", "single view, side by side, wipe, difference"),
-        ("[  ]", "smaller / larger pixels"),
+        (
+            "[  ]",
+            "smaller / larger image (with Fit window: smaller / larger pixels)",
+        ),
         ("W", "wireframe (edges and the diagonal)"),
         ("G", "pixel grid and sample points"),
         ("H", "corner handles"),
         ("Arrow keys", "move the pinned pixel by one"),
-        ("Esc", "close this help, else unpin"),
+        (
+            "Esc",
+            "close a menu, else this help, else leave presentation mode, else unpin",
+        ),
+        (
+            "F5",
+            "presentation mode: the canvas and the pixel's numbers in large print",
+        ),
+        ("Page Down / Page Up", "next / previous preset"),
+        ("Ctrl + Z", "undo the last scene edit (a whole drag is one)"),
+        ("Ctrl + Shift + Z or Ctrl + Y", "redo"),
+        ("Ctrl + Shift + S", "save the scene as a JSON file"),
         ("Ctrl + R", "reset the scene"),
         ("Ctrl + O", "open a scene, model or image"),
         (

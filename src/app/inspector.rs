@@ -29,9 +29,9 @@ pub mod text {
     pub const EMPTY: &str = "no area on screen";
     pub const NOTHING_DRAWN: &str = "nothing is drawn";
     pub const VERTEX: &str = "vertex";
-    pub const SCREEN: &str = "screen r s t";
+    pub const SCREEN: &str = "r s t";
     pub const INV_W: &str = "1/W";
-    pub const CORRECTED: &str = "corrected a b c";
+    pub const CORRECTED: &str = "a b c";
     pub const SCREEN_TIP: &str = "Screen-space weights: signed sub-area over area of the triangle on screen. \
         Negative means the pixel is on the far side of the opposite edge.";
     pub const INV_W_TIP: &str =
@@ -60,7 +60,7 @@ pub mod text {
 const OPEN_SECTIONS: [usize; 4] = [2, 4, 5, 8];
 
 /// Points: width of a number column.
-const NUMBER_WIDTH: f32 = 84.0;
+const NUMBER_WIDTH: f32 = 64.0;
 
 fn weight_text(w: f64) -> RichText {
     let t = RichText::new(fmt_number(w)).monospace();
@@ -164,7 +164,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
         .show(ui, |ui| {
             egui::Grid::new(("summary", r.pixel))
                 .num_columns(4)
-                .spacing([14.0, 4.0])
+                .spacing([8.0, 4.0])
                 .striped(true)
                 .show(ui, |ui| {
                     ui.label(RichText::new(text::VERTEX).weak());
@@ -319,8 +319,8 @@ fn derivation_ui(ui: &mut Ui, r: &PixelReport) {
     }
 }
 
-/// One section of the worked example: prose lines (indented by two spaces) wrap; formula
-/// lines (four spaces) keep their layout in a horizontally scrolling block.
+/// One section of the worked example: prose lines (indented by two spaces) and formula lines
+/// (four spaces, monospace) both wrap at the panel's width, so nothing is cut off.
 fn section_ui(ui: &mut Ui, index: usize, text: &str) {
     let mut formulas: Vec<&str> = Vec::new();
     let mut block = 0;
@@ -328,14 +328,11 @@ fn section_ui(ui: &mut Ui, index: usize, text: &str) {
         if formulas.is_empty() {
             return;
         }
-        egui::ScrollArea::horizontal()
-            .id_salt(("derivation-scroll", index, *block))
-            .show(ui, |ui| {
-                ui.add(
-                    egui::Label::new(RichText::new(formulas.join("\n")).monospace().size(15.0))
-                        .extend(),
-                );
-            });
+        ui.push_id(("derivation-block", index, *block), |ui| {
+            ui.add(
+                egui::Label::new(RichText::new(formulas.join("\n")).monospace().size(15.0)).wrap(),
+            );
+        });
         formulas.clear();
         *block += 1;
     };

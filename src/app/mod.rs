@@ -9,8 +9,10 @@
 //! - Commands: [`command::AppCommand`], one enum for every panel's requests.
 //! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
 //!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
-//!   [`canvas`], [`inspector`], [`status`], [`help`], [`export`], [`bench_panel`] (with
-//!   [`bench_chart`]), and the keyboard [`shortcuts`].
+//!   [`image_size`], [`canvas`], [`inspector`], [`present`], [`status`], [`help`], [`export`],
+//!   [`bench_panel`] (with [`bench_chart`]), and the keyboard [`shortcuts`].
+//! - Around them: [`layout`] (side panels, canvas, presentation card; [`side_panels`] is the
+//!   arithmetic), [`history`] (undo and redo), [`access`] (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
 //!   canvas's renders and their cache), [`textures`] (the scene's texture), [`pixel`] and
 //!   [`reports`] (the inspector's probe of a pixel, one prober per render), [`paint`] (overlays
@@ -20,6 +22,7 @@
 //! The overlays and the difference heatmap are described in [`crate::figure`], which the
 //! exported figures share.
 
+pub mod access;
 pub mod banner;
 pub mod bench_chart;
 pub mod bench_panel;
@@ -32,16 +35,21 @@ pub mod export;
 pub mod file_menu;
 pub mod files;
 pub mod help;
+pub mod history;
+pub mod image_size;
 pub mod inspector;
+pub mod layout;
 pub mod paint;
 pub mod path_window;
 pub mod persist;
 pub mod pixel;
+pub mod present;
 pub mod presets;
 pub mod render;
 pub mod reports;
 pub mod screenshot;
 pub mod shortcuts;
+pub mod side_panels;
 pub mod state;
 pub mod status;
 pub mod style;
@@ -55,17 +63,17 @@ use std::time::Instant;
 
 use self::banner::Banner;
 use self::bench_panel::BenchPanel;
-use self::canvas::{CanvasInput, CanvasState};
+use self::canvas::CanvasState;
 use self::command::AppCommand;
-use self::export::{ExportCommand, ExportContext, ExportPanel};
+use self::export::{ExportContext, ExportPanel};
 use self::file_menu::FilePicker;
 use self::files::{FileCommand, OpenedFile, RecentFiles};
 use self::persist::{STORAGE_KEY, SavedState};
-use self::pixel::PixelReport;
 use self::reports::PixelReports;
 use self::screenshot::{ShotSlot, StartupShot};
+use self::side_panels::Side;
 use self::state::AppState;
-use self::status::{FrameTiming, Message};
+use self::status::{Cause, FrameTiming, Message};
 use self::textures::{TextureCache, texture_key};
 use crate::raster::Texture;
 use crate::scene::Scene;
@@ -91,6 +99,10 @@ pub struct AppOptions {
     pub persist: bool,
     /// Initial window size in points.
     pub window_size: Option<[f32; 2]>,
+    /// Start in presentation mode.
+    pub present: bool,
+    /// Start with this pixel pinned.
+    pub pin: Option<[u32; 2]>,
 }
 
 /// Errors that stop the app.
@@ -102,10 +114,6 @@ pub enum AppError {
     Screenshot { path: String, message: String },
 }
 
-/// Side panel widths in points. Fixed, so that nothing in them (a number growing a digit)
-/// can move the canvas under a dragged corner.
-const CONTROLS_WIDTH: f32 = 400.0;
-const INSPECTOR_WIDTH: f32 = 460.0;
 /// Default window size in points.
 const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];
 
@@ -129,6 +137,15 @@ pub struct BaryApp {
     banner: Option<Banner>,
     bench: BenchPanel,
     export: ExportPanel,
+    /// Presentation mode: panels hidden, the pixel card in large print.
+    presenting: bool,
+    /// The preset loaded last (Page Down / Page Up step on from it).
+    last_preset: Option<presets::Preset>,
+    /// The side panel asked for last: it gets the room when both do not fit.
+    panel_first: Side,
+    history: history::History,
+    /// The scene file the scene came from or was saved to last (File > Save writes it).
+    scene_file: Option<PathBuf>,
 }
 
 impl BaryApp {
@@ -146,10 +163,10 @@ impl BaryApp {
             let restored = saved.restore();
             (state, recent, export_settings) = (restored.state, restored.recent, restored.export);
             if let Some(e) = restored.error {
-                message = Some(Message {
-                    text: format!("{}: {e}", text::RESTORE_FAILED),
-                    error: true,
-                });
+                message = Some(Message::error(
+                    format!("{}: {e}", text::RESTORE_FAILED),
+                    None,
+                ));
             }
         }
         if let Some((scene, dir)) = options.scene {
@@ -175,15 +192,48 @@ impl BaryApp {
             banner: None,
             bench: BenchPanel::default(),
             export: ExportPanel::new(export_settings),
+            presenting: options.present,
+            last_preset: None,
+            panel_first: Side::default(),
+            history: history::History::default(),
+            scene_file: None,
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
         }
+        if let Some(p) = options.pin {
+            app.push(state::Command::Pin(Some(p)));
+        }
         app
+    }
+
+    /// Saves the scene (at the size the canvas renders it) to `path`; the outcome goes to the
+    /// status line.
+    pub fn save_scene(&mut self, path: &Path) {
+        let mut scene = self.state.scene.clone();
+        if let Some(out) = &self.canvas.output {
+            scene.set_size(out.size[0], out.size[1]);
+        }
+        match files::save(path, &scene, self.state.scene_dir.as_deref()) {
+            Ok(done) => {
+                self.message = Some(Message::note(done));
+                self.scene_file = Some(path.to_path_buf());
+                self.recent.push(path);
+            }
+            Err(e) => self.set_error(e),
+        }
     }
 
     /// Applies a file that loaded.
     fn opened(&mut self, opened: OpenedFile) {
+        if matches!(opened.what, files::Opened::Scene { .. }) {
+            // A model is not a scene file: Save asks where.
+            self.scene_file = opened
+                .path
+                .extension()
+                .is_some_and(|e| e == "json")
+                .then(|| opened.path.clone());
+        }
         self.commands.push(opened.command().into());
         self.textures.pending = Some(opened.texture.clone());
         self.recent.push(&opened.path);
@@ -206,73 +256,8 @@ impl BaryApp {
         self.open_file(path);
     }
 
-    /// The banner's lines (what the last opened file did, or why it did not open).
-    pub fn banner(&self) -> Option<Vec<String>> {
-        self.banner.as_ref().map(Banner::lines)
-    }
-
-    /// The recent files, newest first.
-    pub fn recent_files(&self) -> &[PathBuf] {
-        &self.recent.0
-    }
-
-    /// The Export panel (settings, last outcome).
-    pub fn export_panel(&self) -> &ExportPanel {
-        &self.export
-    }
-
-    /// Queues an Export panel command, as its widgets do.
-    pub fn push_export(&mut self, command: ExportCommand) {
-        self.push(command);
-    }
-
-    /// The current state (scene and view).
-    pub fn state(&self) -> &AppState {
-        &self.state
-    }
-
-    /// The canvas: views, renders, hovered pixel.
-    pub fn canvas(&self) -> &CanvasState {
-        &self.canvas
-    }
-
-    /// How many probers the inspector has made (one per render and mode it traced).
-    pub fn probers_built(&self) -> u64 {
-        self.reports.probers_built
-    }
-
-    /// The report of the hovered pixel shown in the inspector.
-    pub fn hover_report(&self) -> Option<&PixelReport> {
-        self.reports.hover.as_ref()
-    }
-
-    /// The report of the pinned pixel.
-    pub fn pin_report(&self) -> Option<&PixelReport> {
-        self.reports.pin.as_ref()
-    }
-
-    /// Queues a command, as a panel would; it is applied at the end of the next frame.
-    pub fn push(&mut self, command: impl Into<AppCommand>) {
-        self.commands.push(command.into());
-    }
-
-    /// The benchmark window's state.
-    pub fn bench(&self) -> &BenchPanel {
-        &self.bench
-    }
-
-    /// The benchmark window's state, to change.
-    pub fn bench_mut(&mut self) -> &mut BenchPanel {
-        &mut self.bench
-    }
-
-    /// The message on the status line.
-    pub fn message(&self) -> Option<&str> {
-        self.message.as_ref().map(|m| m.text.as_str())
-    }
-
     fn set_error(&mut self, text: String) {
-        self.message = Some(Message { text, error: true });
+        self.message = Some(Message::error(text, None));
     }
 
     /// The whole UI, inside the given `Ui` (eframe's root `Ui`, or a test harness's).
@@ -291,6 +276,8 @@ impl BaryApp {
                 canvas_size: self.canvas.output.as_ref().map(|o| o.size),
                 help_open: self.help_open,
                 export_open: self.export.open,
+                presenting: self.presenting,
+                last_preset: self.last_preset,
             },
         ));
         // Files dropped on the window, or picked in the Open dialog.
@@ -308,8 +295,13 @@ impl BaryApp {
         let (texture, texture_error) = self
             .textures
             .get(&self.state.scene, self.state.scene_dir.as_deref());
-        if let Some(e) = texture_error {
-            self.set_error(e);
+        let key = texture_key(&self.state.scene, self.state.scene_dir.as_deref());
+        match texture_error {
+            Some(e) => self.message = Some(Message::error(e, Some(Cause::Texture(key)))),
+            None => status::clear_if(
+                &mut self.message,
+                |c| matches!(c, Cause::Texture(k) if *k != key),
+            ),
         }
         let hover_before = self.canvas.hover;
         self.panels(ui, &texture);
@@ -322,8 +314,9 @@ impl BaryApp {
             self.canvas.hover,
             self.state.view.pinned,
         );
-        if let Some(e) = error {
-            self.set_error(e);
+        match error {
+            Some(e) => self.message = Some(Message::error(e, Some(Cause::Probe))),
+            None => status::clear_if(&mut self.message, |c| *c == Cause::Probe),
         }
         if self.canvas.hover != hover_before || reports_before != self.reports.key() {
             // The inspector and overlay drew last frame's pixel; draw again with this one.
@@ -333,7 +326,12 @@ impl BaryApp {
         let picked = self.export.frame(&ctx);
         self.export_message(&ctx, outcome_before);
         self.commands.splice(0..0, command::all(picked));
+        // (Only a frame with commands can change the scene; a scene can be large.)
+        let before = (!self.commands.is_empty()).then(|| history::Snapshot::of(&self.state));
         self.apply_commands(&ctx, &texture);
+        // A drag (a button held) is one undo step, taken when it is released.
+        let held = ctx.input(|i| i.pointer.any_down());
+        self.history.track(before, &self.state, held);
         self.timing.ui_ms = start.elapsed().as_secs_f64() * 1e3;
         if let Some(shot) = &mut self.screenshot {
             shot.step(&ctx, self.canvas.output.is_some());
@@ -344,6 +342,11 @@ impl BaryApp {
     fn panels(&mut self, ui: &mut egui::Ui, texture: &Arc<Texture>) {
         let ctx = ui.ctx().clone();
         let mut out: Vec<AppCommand> = Vec::new();
+        if self.presenting {
+            self.presentation(ui, texture, &mut out);
+            self.commands.extend(out);
+            return;
+        }
         egui::Panel::top("top").show(ui, |ui| {
             out.extend(top_bar::top_bar_ui(
                 ui,
@@ -354,6 +357,7 @@ impl BaryApp {
                     export_open: self.export.open,
                     help_open: self.help_open,
                     bench_open: self.bench.open,
+                    presenting: self.presenting,
                 },
             ));
         });
@@ -379,49 +383,8 @@ impl BaryApp {
                 self.message.as_ref(),
             );
         });
-        if self.state.view.show_controls {
-            egui::Panel::left("controls")
-                .resizable(false)
-                .exact_size(CONTROLS_WIDTH)
-                .show(ui, |ui| {
-                    egui::ScrollArea::vertical()
-                        .auto_shrink([false, false])
-                        .show(ui, |ui| {
-                            out.extend(command::all(controls::controls_ui(ui, &self.state)));
-                        });
-                });
-        }
-        if self.state.view.show_inspector {
-            egui::Panel::right("inspector")
-                .resizable(false)
-                .exact_size(INSPECTOR_WIDTH)
-                .show(ui, |ui| {
-                    // Content never widens the panel: a wide line scrolls instead. (A panel
-                    // that grew with the hovered pixel's text would move the canvas under
-                    // the pointer, change the hovered pixel, and so on.)
-                    let width = ui.available_width();
-                    egui::ScrollArea::both()
-                        .auto_shrink([false, false])
-                        .show(ui, |ui| {
-                            ui.set_max_width(width);
-                            inspector::inspector_ui(
-                                ui,
-                                self.reports.hover.as_ref(),
-                                self.reports.pin.as_ref(),
-                            );
-                        });
-                });
-        }
-        egui::CentralPanel::default().show(ui, |ui| {
-            let input = CanvasInput {
-                state: &self.state,
-                texture,
-                texture_key: texture_key(&self.state.scene, self.state.scene_dir.as_deref()),
-                hover_report: self.reports.hover.as_ref(),
-                pin_report: self.reports.pin.as_ref(),
-            };
-            out.extend(command::all(canvas::canvas_ui(ui, &mut self.canvas, input)));
-        });
+        self.side_panels_ui(ui, &mut out);
+        self.canvas_panel(ui, texture, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(help::text::TITLE)
             .open(&mut help_open)
@@ -462,8 +425,28 @@ impl BaryApp {
     fn apply(&mut self, ctx: &egui::Context, command: AppCommand, texture: &Arc<Texture>) {
         match command {
             AppCommand::State(c) => {
-                if let Err(e) = self.state.apply(c) {
-                    self.set_error(e.to_string());
+                match c {
+                    state::Command::Preset(p) => self.last_preset = Some(p),
+                    state::Command::SetShowControls(true) => self.panel_first = Side::Controls,
+                    state::Command::SetShowInspector(true) => self.panel_first = Side::Inspector,
+                    _ => {}
+                }
+                // A new scene leaves every error about the old one behind.
+                let fresh = matches!(
+                    c,
+                    state::Command::Preset(_)
+                        | state::Command::ResetScene
+                        | state::Command::ResetAll
+                        | state::Command::OpenScene(..)
+                );
+                match self.state.apply(c) {
+                    Err(e) => self.message = Some(Message::error(e.to_string(), Some(Cause::Edit))),
+                    Ok(()) if fresh => {
+                        if self.message.as_ref().is_some_and(|m| m.error) {
+                            self.message = None;
+                        }
+                    }
+                    Ok(()) => status::clear_if(&mut self.message, |c| *c == Cause::Edit),
                 }
             }
             AppCommand::Export(c) => {
@@ -471,6 +454,7 @@ impl BaryApp {
                     state: &self.state,
                     texture,
                     size: self.canvas.output.as_ref().map(|o| o.size),
+                    pixel_size: self.canvas.pixel_size,
                     hovered: self.canvas.hover,
                     pixels_per_point: ctx.pixels_per_point(),
                 };
@@ -485,8 +469,20 @@ impl BaryApp {
             AppCommand::File(FileCommand::Open(path)) => self.open_file(&path),
             AppCommand::File(FileCommand::ClearRecent) => self.recent.0.clear(),
             AppCommand::File(FileCommand::DismissBanner) => self.banner = None,
+            AppCommand::File(FileCommand::Save) => match self.scene_file.clone() {
+                Some(path) => self.save_scene(&path),
+                None => self.picker.apply(ctx, &FileCommand::SaveAsDialog),
+            },
+            AppCommand::File(FileCommand::SaveTo(path)) => self.save_scene(&path),
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
+            AppCommand::SetPresenting(on) => self.presenting = on,
+            AppCommand::Undo => {
+                self.history.undo(&mut self.state);
+            }
+            AppCommand::Redo => {
+                self.history.redo(&mut self.state);
+            }
         }
     }
 }
@@ -500,6 +496,7 @@ impl BaryApp {
             self.message = Some(Message {
                 text: o.summary.clone(),
                 error: o.error,
+                cause: None,
             });
             ctx.request_repaint();
         }

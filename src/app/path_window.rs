@@ -12,6 +12,9 @@ pub mod text {
     pub const PATH_WINDOW: &str = "Open a file";
     pub const PATH_HINT: &str = "/path/to/photo.jpg, model.obj or scene.json";
     pub const OPEN_BUTTON: &str = "Open";
+    pub const SAVE_WINDOW: &str = "Save the scene";
+    pub const SAVE_HINT: &str = "/path/to/scene.json";
+    pub const SAVE_BUTTON: &str = "Save";
     pub const BROWSE: &str = "Browse…";
     pub const DIALOG_FAILED: &str = "The file dialog did not open (no desktop portal and no \
         zenity found). Type the path of the file instead:";
@@ -27,6 +30,8 @@ pub struct PathWindow {
     pub typed: String,
     /// Give the path field the keyboard focus (the window just opened).
     focus_field: bool,
+    /// The typed path is where to save the scene, not a file to open.
+    pub saving: bool,
 }
 
 impl PathWindow {
@@ -37,6 +42,13 @@ impl PathWindow {
         self.focus_field = true;
         // Start empty: typing must not append to the last path.
         self.typed.clear();
+        self.saving = false;
+    }
+
+    /// Opens the window to type where to save the scene.
+    pub fn show_save(&mut self, dialog_failed: bool) {
+        self.show(dialog_failed);
+        self.saving = true;
     }
 }
 
@@ -48,7 +60,12 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
     }
     let mut window_open = true;
     let mut submit = false;
-    egui::Window::new(text::PATH_WINDOW)
+    let (title, hint, button) = if window.saving {
+        (text::SAVE_WINDOW, text::SAVE_HINT, text::SAVE_BUTTON)
+    } else {
+        (text::PATH_WINDOW, text::PATH_HINT, text::OPEN_BUTTON)
+    };
+    egui::Window::new(title)
         .open(&mut window_open)
         .collapsible(false)
         .default_width(560.0)
@@ -59,7 +76,7 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
             }
             let field = ui.add(
                 egui::TextEdit::singleline(&mut window.typed)
-                    .hint_text(text::PATH_HINT)
+                    .hint_text(hint)
                     .desired_width(f32::INFINITY),
             );
             if std::mem::take(&mut window.focus_field) {
@@ -69,17 +86,26 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
                 submit = true;
             }
             ui.horizontal(|ui| {
-                if ui.button(text::OPEN_BUTTON).clicked() {
+                if ui.button(button).clicked() {
                     submit = true;
                 }
                 if !window.dialog_failed && ui.button(text::BROWSE).clicked() {
-                    out.push(FileCommand::OpenDialog);
+                    out.push(if window.saving {
+                        FileCommand::SaveAsDialog
+                    } else {
+                        FileCommand::OpenDialog
+                    });
                 }
             });
         });
     let typed = window.typed.trim();
     if submit && !typed.is_empty() {
-        out.push(FileCommand::Open(PathBuf::from(typed)));
+        let path = PathBuf::from(typed);
+        out.push(if window.saving {
+            FileCommand::SaveTo(path)
+        } else {
+            FileCommand::Open(path)
+        });
         window_open = false;
     }
     if !window_open {

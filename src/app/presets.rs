@@ -104,11 +104,17 @@ impl Preset {
                     up: DVec3::Y,
                     projection: perspective(70.0),
                 };
+                // A flat parallelogram (its centre, half-diagonals to A and B),
+                // tilted so that A alone passes behind the camera: the near plane cuts a
+                // plane, as clipping does on a GPU, and nothing folds.
+                let c = DVec3::new(0.3, 0.1, -3.0);
+                let (a, b) = (DVec3::new(-1.2, -0.9, 3.3), DVec3::new(1.5, -0.8, -0.6));
+                let at = |p: DVec3| [p.x, p.y, p.z];
                 s.quad = [
-                    corner([-1.0, -0.8, 1.0], [0.0, 0.0], red),
-                    corner([1.5, -0.8, -3.0], [1.0, 0.0], green),
-                    corner([1.5, 1.2, -3.0], [1.0, 1.0], blue),
-                    corner([-1.5, 1.2, -3.0], [0.0, 1.0], yellow),
+                    corner(at(c + a), [0.0, 0.0], red),
+                    corner(at(c + b), [1.0, 0.0], green),
+                    corner(at(c - a), [1.0, 1.0], blue),
+                    corner(at(c - b), [0.0, 1.0], yellow),
                 ];
             }
         }
@@ -146,5 +152,13 @@ mod tests {
         assert!(wall[0].w() / wall[1].w() > 5.0);
         let behind = vertices_on_screen(&Preset::CornerBehind.scene(), vp);
         assert!(behind[0].window.is_none() && behind[1..].iter().all(|v| v.window.is_some()));
+        // Planar: D - A = C - B (a parallelogram), so the two triangles share one plane.
+        let Scene::World(w) = Preset::CornerBehind.scene() else {
+            panic!("world scene")
+        };
+        let q = w.quad.map(|c| c.position);
+        assert!(((q[3] - q[0]) - (q[2] - q[1])).length() < 1e-12);
+        let normal = (q[1] - q[0]).cross(q[3] - q[0]);
+        assert!(normal.dot(q[2] - q[0]).abs() < 1e-12);
     }
 }

@@ -6,6 +6,7 @@ use egui::{Key, Modifiers};
 use super::command::AppCommand;
 use super::export::ExportCommand;
 use super::files::FileCommand;
+use super::presets::Preset;
 use super::state::{AppState, Command, PIXEL_SIZE_RANGE};
 use crate::figure::Compare;
 
@@ -16,6 +17,9 @@ pub struct ShortcutInput<'a> {
     pub canvas_size: Option<[u32; 2]>,
     pub help_open: bool,
     pub export_open: bool,
+    pub presenting: bool,
+    /// The preset loaded last (Page Down / Page Up step on from it).
+    pub last_preset: Option<Preset>,
 }
 
 /// The commands of the keys pressed this frame (none while a text field has the keyboard).
@@ -26,6 +30,8 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
     let none = Modifiers::NONE;
     let mut cmds: Vec<AppCommand> = Vec::new();
     let mut help = false;
+    let popup_open = egui::Popup::is_any_open(ctx);
+    let mut extra: Vec<AppCommand> = Vec::new();
     ctx.input_mut(|i| {
         let mut key = |k| i.consume_key(none, k);
         let mut state = |c: Command| cmds.push(c.into());
@@ -53,17 +59,39 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if key(Key::H) {
             state(Command::SetShowHandles(!view.show_handles));
         }
+        // [ and ]: the pixel size when the image fits the window, else the image size.
+        let (w, h) = input.state.scene.size();
         if key(Key::OpenBracket) {
-            state(Command::SetPixelSize(smaller_pixel(view.pixel_size)));
+            state(if view.fit_window {
+                Command::SetPixelSize(smaller_pixel(view.pixel_size))
+            } else {
+                Command::SetImageSize(Some(step_size([w, h], false)))
+            });
         }
         if key(Key::CloseBracket) {
-            state(Command::SetPixelSize(larger_pixel(view.pixel_size)));
+            state(if view.fit_window {
+                Command::SetPixelSize(larger_pixel(view.pixel_size))
+            } else {
+                Command::SetImageSize(Some(step_size([w, h], true)))
+            });
         }
-        if key(Key::Escape) {
+        // Escape closes an open menu or popup first (egui does), then the help window, then
+        // leaves presentation mode, then unpins.
+        if !popup_open && key(Key::Escape) {
             if input.help_open {
                 help = true;
+            } else if input.presenting {
+                extra.push(AppCommand::SetPresenting(false));
             } else {
                 state(Command::Pin(None));
+            }
+        }
+        if key(Key::F5) {
+            extra.push(AppCommand::SetPresenting(!input.presenting));
+        }
+        for (k, forward) in [(Key::PageDown, true), (Key::PageUp, false)] {
+            if key(k) {
+                state(Command::Preset(step_preset(input.last_preset, forward)));
             }
         }
         if key(Key::Home) {
@@ -86,11 +114,24 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
                 }
             }
         }
+        // Ctrl+Shift+Z before Ctrl+Z (which would also match it).
+        if i.consume_key(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z)
+            || i.consume_key(Modifiers::COMMAND, Key::Y)
+        {
+            extra.push(AppCommand::Redo);
+        }
+        if i.consume_key(Modifiers::COMMAND, Key::Z) {
+            extra.push(AppCommand::Undo);
+        }
         if i.consume_key(Modifiers::COMMAND, Key::R) {
             state(Command::ResetScene);
         }
         if i.consume_key(Modifiers::COMMAND, Key::O) {
             cmds.push(FileCommand::OpenDialog.into());
+        }
+        // Ctrl+Shift+S before Ctrl+S (which would also match it).
+        if i.consume_key(Modifiers::COMMAND | Modifiers::SHIFT, Key::S) {
+            extra.push(FileCommand::SaveAsDialog.into());
         }
         if i.consume_key(Modifiers::COMMAND, Key::S) {
             // The first Ctrl+S opens the Export window, the next one exports.
@@ -104,6 +145,7 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
             );
         }
     });
+    cmds.extend(extra);
     if help {
         cmds.push(AppCommand::SetHelpOpen(!input.help_open));
     }
@@ -116,4 +158,31 @@ fn smaller_pixel(p: u32) -> u32 {
 
 fn larger_pixel(p: u32) -> u32 {
     (p * 2).min(PIXEL_SIZE_RANGE.1)
+}
+
+/// The next offered image size above (`larger`) or below `size` (by pixel count); `size`
+/// itself at either end.
+fn step_size(size: [u32; 2], larger: bool) -> [u32; 2] {
+    let count = |s: [u32; 2]| u64::from(s[0]) * u64::from(s[1]);
+    let sizes = super::image_size::IMAGE_SIZES;
+    let next = if larger {
+        sizes.iter().find(|s| count(**s) > count(size))
+    } else {
+        sizes.iter().rev().find(|s| count(**s) < count(size))
+    };
+    next.copied().unwrap_or(size)
+}
+
+/// The preset after (`forward`) or before `last`; the first or the last one when none was
+/// loaded yet.
+fn step_preset(last: Option<Preset>, forward: bool) -> Preset {
+    let all = Preset::ALL;
+    let n = all.len();
+    let next = match (last.and_then(|p| all.iter().position(|q| *q == p)), forward) {
+        (Some(i), true) => (i + 1) % n,
+        (Some(i), false) => (i + n - 1) % n,
+        (None, true) => 0,
+        (None, false) => n - 1,
+    };
+    all[next]
 }

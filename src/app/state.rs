@@ -39,6 +39,10 @@ pub struct ViewSettings {
     /// Which rasterizer draws the canvas (both give the same coverage; the inspector follows
     /// the edge-function derivation).
     pub rasterizer: crate::raster::render::Rasterizer,
+    /// The rendered image follows the window (`pixel_size` screen pixels per rendered pixel)
+    /// instead of keeping the scene's own size. Off by default: a fixed size keeps every
+    /// pixel, and so a pin, where it is through any layout change.
+    pub fit_window: bool,
 }
 
 impl Default for ViewSettings {
@@ -55,6 +59,7 @@ impl Default for ViewSettings {
             pinned: None,
             ui_scale: 1.0,
             rasterizer: Default::default(),
+            fit_window: false,
         }
     }
 }
@@ -122,6 +127,9 @@ pub enum Command {
     SetCompare(Compare),
     SetWipe(f32),
     SetPixelSize(u32),
+    /// Render at this fixed size (the scene's size, so exports carry it), or `None`: follow
+    /// the window.
+    SetImageSize(Option<[u32; 2]>),
     SetShowGrid(bool),
     SetShowHandles(bool),
     SetShowSubAreas(bool),
@@ -190,8 +198,11 @@ impl AppState {
             }
             Command::Preset(p) => {
                 let texture = self.scene.texture_name().to_string();
+                let (w, h) = self.scene.size();
                 let mut scene = p.scene();
                 edit::set_options(&mut scene, options);
+                // The image size is the teacher's choice, not the preset's.
+                scene.set_size(w, h);
                 if let Scene::World(s) = &mut scene {
                     s.texture = texture;
                 } else {
@@ -201,7 +212,9 @@ impl AppState {
                 self.view.pinned = None;
             }
             Command::ResetScene => {
+                let (w, h) = self.scene.size();
                 self.scene = Scene::default_scene();
+                self.scene.set_size(w, h);
                 self.scene_dir = None;
                 self.view.pinned = None;
             }
@@ -230,7 +243,16 @@ impl AppState {
                 edit::set_options(&mut self.scene, options);
             }
             Command::SetRasterizer(r) => self.view.rasterizer = r,
-            Command::SetCompare(c) => self.view.compare = c,
+            Command::SetCompare(c) => {
+                // The wipe line starts on the quad, not at the middle of the image.
+                if c == Compare::Wipe
+                    && self.view.compare != Compare::Wipe
+                    && let Some(x) = quad_centre(&self.scene)
+                {
+                    self.view.wipe = x;
+                }
+                self.view.compare = c;
+            }
             Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),
             Command::SetPixelSize(p) => {
                 let p = p.clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);
@@ -239,6 +261,17 @@ impl AppState {
                     // The pixel grid changes, so a pinned pixel would point elsewhere.
                     self.view.pinned = None;
                 }
+            }
+            Command::SetImageSize(None) => self.view.fit_window = true,
+            Command::SetImageSize(Some([w, h])) => {
+                let max = crate::raster::project::MAX_IMAGE_SIZE;
+                let (w, h) = (w.clamp(1, max), h.clamp(1, max));
+                if self.view.fit_window || self.scene.size() != (w, h) {
+                    // Another image: a pinned pixel would point at another surface point.
+                    self.view.pinned = None;
+                }
+                self.scene.set_size(w, h);
+                self.view.fit_window = false;
             }
             Command::SetShowGrid(b) => self.view.show_grid = b,
             Command::SetShowHandles(b) => self.view.show_handles = b,
@@ -306,6 +339,33 @@ impl AppState {
     }
 }
 
+/// The horizontal middle of the scene's vertices on screen (those in front of the camera),
+/// as a fraction of the image width, kept off the very edges.
+fn quad_centre(scene: &Scene) -> Option<f32> {
+    let (w, h) = scene.size();
+    let viewport = Viewport {
+        width: w,
+        height: h,
+    };
+    let xs: Vec<f64> = crate::figure::vertices_on_screen(scene, viewport)
+        .iter()
+        .filter_map(|v| v.window.map(|p| p.x))
+        .collect();
+    if xs.is_empty() || w == 0 {
+        return None;
+    }
+    let (lo, hi) = xs
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+            (lo.min(x), hi.max(x))
+        });
+    let x = ((lo + hi) / 2.0 / f64::from(w)).clamp(WIPE_EDGE, 1.0 - WIPE_EDGE);
+    x.is_finite().then_some(x as f32)
+}
+
+/// The wipe line starts at least this fraction of the width from either edge.
+const WIPE_EDGE: f64 = 0.1;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -324,5 +384,20 @@ mod tests {
         })
         .expect("move");
         assert_eq!(s.view.pinned, Some([0, 6]));
+    }
+
+    #[test]
+    fn the_wipe_line_starts_on_the_quad() {
+        let mut s = AppState::default();
+        // The floor moved to the right.
+        if let Scene::World(w) = &mut s.scene {
+            for c in &mut w.quad {
+                c.position.x += 1.0;
+            }
+        }
+        let x = quad_centre(&s.scene).expect("corners on screen");
+        s.apply(Command::SetCompare(Compare::Wipe)).expect("wipe");
+        assert_eq!(s.view.wipe, x);
+        assert!(x > 0.6, "{x}");
     }
 }

@@ -42,6 +42,47 @@ pub struct FrameTiming {
 pub struct Message {
     pub text: String,
     pub error: bool,
+    /// What an error is about, so it goes when its cause does.
+    pub cause: Option<Cause>,
+}
+
+/// What a red message on the status line is about.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Cause {
+    /// This texture did not load (goes when the scene names another one).
+    Texture(super::render::TextureKey),
+    /// The hovered or pinned pixel could not be probed (goes with the next good probe).
+    Probe,
+    /// A scene edit could not be done (goes with the next edit that works).
+    Edit,
+}
+
+impl Message {
+    pub fn note(text: String) -> Self {
+        Self {
+            text,
+            error: false,
+            cause: None,
+        }
+    }
+
+    pub fn error(text: String, cause: Option<Cause>) -> Self {
+        Self {
+            text,
+            error: true,
+            cause,
+        }
+    }
+}
+
+/// Clears `message` if it is an error whose cause `gone` says is gone.
+pub fn clear_if(message: &mut Option<Message>, gone: impl Fn(&Cause) -> bool) {
+    if message
+        .as_ref()
+        .is_some_and(|m| m.error && m.cause.as_ref().is_some_and(&gone))
+    {
+        *message = None;
+    }
 }
 
 /// The status line.
@@ -69,13 +110,22 @@ pub fn status_ui(
         ui.label(RichText::new(mode_text).strong().color(mode_color));
         ui.separator();
         if let Some(out) = &canvas.output {
+            // Screen pixels per rendered pixel: whole when magnified.
+            let px = canvas
+                .views
+                .first()
+                .map_or(1.0, |v| v.transform.scale * ui.ctx().pixels_per_point());
+            let px = if (px - px.round()).abs() < 1e-3 {
+                format!("{}", px.round())
+            } else {
+                format!("{px:.2}")
+            };
             ui.label(format!(
-                "{} {}×{} {} {}×",
+                "{} {}×{} {} {px}×",
                 text::CANVAS,
                 out.size[0],
                 out.size[1],
                 text::AT,
-                state.view.pixel_size
             ));
             ui.separator();
         }

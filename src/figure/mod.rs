@@ -193,7 +193,11 @@ pub fn pixel_mark(trace: &PixelTrace) -> PixelMark {
     }
 }
 
-/// The figure's background outside the image (title strip, margins, gap).
+/// The image's background on a white figure.
+const WHITE: [u8; 4] = [255, 255, 255, 255];
+
+/// The figure's background outside the image (title strip, margins, gap); a white figure
+/// (for print) draws the image on white too.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Background {
@@ -500,11 +504,19 @@ impl Figure {
         let pinned = trace(o.pinned)?;
         let hovered = trace(o.hovered)?;
 
+        // On a white figure (for print) the image's background is white too: no dark block
+        // around the quad on paper.
+        let base = hi.settings();
+        let image_background = match o.background {
+            Background::White => WHITE,
+            Background::Transparent => base.background,
+        };
         let mut renders: Vec<(Interpolation, Render)> = Vec::new();
         for m in modes {
             let s = RenderSettings {
                 mode: m,
-                ..hi.settings()
+                background: image_background,
+                ..base
             };
             renders.push((m, crate::raster::render(&mesh, texture, &s)?));
         }

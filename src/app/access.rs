@@ -1,0 +1,89 @@
+//! What tests and the binary read of the app, and how they queue commands as the panels do.
+
+use std::path::PathBuf;
+
+use super::banner::Banner;
+use super::bench_panel::BenchPanel;
+use super::canvas::CanvasState;
+use super::command::AppCommand;
+use super::export::{ExportCommand, ExportPanel};
+use super::pixel::PixelReport;
+use super::state::AppState;
+use super::{BaryApp, history};
+
+impl BaryApp {
+    /// The banner's lines (what the last opened file did, or why it did not open).
+    pub fn banner(&self) -> Option<Vec<String>> {
+        self.banner.as_ref().map(Banner::lines)
+    }
+
+    /// The recent files, newest first.
+    pub fn recent_files(&self) -> &[PathBuf] {
+        &self.recent.0
+    }
+
+    /// The Export panel (settings, last outcome).
+    pub fn export_panel(&self) -> &ExportPanel {
+        &self.export
+    }
+
+    /// Queues an Export panel command, as its widgets do.
+    pub fn push_export(&mut self, command: ExportCommand) {
+        self.push(command);
+    }
+
+    /// The current state (scene and view).
+    pub fn state(&self) -> &AppState {
+        &self.state
+    }
+
+    /// The canvas: views, renders, hovered pixel.
+    pub fn canvas(&self) -> &CanvasState {
+        &self.canvas
+    }
+
+    /// How many probers the inspector has made (one per render and mode it traced).
+    pub fn probers_built(&self) -> u64 {
+        self.reports.probers_built
+    }
+
+    /// The report of the hovered pixel shown in the inspector.
+    pub fn hover_report(&self) -> Option<&PixelReport> {
+        self.reports.hover.as_ref()
+    }
+
+    /// The report of the pinned pixel.
+    pub fn pin_report(&self) -> Option<&PixelReport> {
+        self.reports.pin.as_ref()
+    }
+
+    /// Queues a command, as a panel would; it is applied at the end of the next frame.
+    pub fn push(&mut self, command: impl Into<AppCommand>) {
+        self.commands.push(command.into());
+    }
+
+    /// The benchmark window's state.
+    pub fn bench(&self) -> &BenchPanel {
+        &self.bench
+    }
+
+    /// The benchmark window's state, to change.
+    pub fn bench_mut(&mut self) -> &mut BenchPanel {
+        &mut self.bench
+    }
+
+    /// The undo history.
+    pub fn history(&self) -> &history::History {
+        &self.history
+    }
+
+    /// Whether the app is in presentation mode.
+    pub fn presenting(&self) -> bool {
+        self.presenting
+    }
+
+    /// The message on the status line.
+    pub fn message(&self) -> Option<&str> {
+        self.message.as_ref().map(|m| m.text.as_str())
+    }
+}

@@ -1,0 +1,183 @@
+//! The layout of the app's window around the canvas: the side panels (each open, folded to a
+//! strip, or hidden, so the canvas keeps at least half of the window: [`super::side_panels`]),
+//! the canvas panel, and presentation mode's card beside or below the canvas.
+
+use std::sync::Arc;
+
+use super::canvas::{self, CanvasInput};
+use super::command::{self, AppCommand};
+use super::side_panels::{self, Fit};
+use super::textures::texture_key;
+use super::{BaryApp, controls, inspector, present, state, top_bar};
+use crate::raster::Texture;
+
+/// User-facing strings of the layout.
+mod text {
+    pub const STRIP_TIP: &str = "the window has no room for it beside the canvas. Click to open \
+        it (the other panel folds away); a larger window or a smaller text size shows both.";
+}
+
+/// Presentation mode: windows wider than this many heights get the card beside the canvas
+/// (taking this share of the width), others below it.
+const PRESENT_SIDE_CARD_ASPECT: f32 = 1.5;
+const PRESENT_SIDE_CARD_SHARE: f32 = 0.38;
+
+impl BaryApp {
+    /// The side panels, in what the canvas can spare; their commands go to `out`.
+    pub(super) fn side_panels_ui(&mut self, ui: &mut egui::Ui, out: &mut Vec<AppCommand>) {
+        let ctx = ui.ctx().clone();
+        // The side panels take what the canvas can spare (at least half of the window's
+        // area stays the canvas's); one that does not fit is a strip that opens it.
+        let row = ui.available_rect_before_wrap();
+        let window = ctx.content_rect();
+        let budget = side_panels::budget([window.width(), window.height()], row.height());
+        let fits = side_panels::fits(
+            budget,
+            self.state.view.show_controls,
+            self.state.view.show_inspector,
+            self.panel_first,
+        );
+        let mut controls_width = 0.0;
+        match fits.controls {
+            Fit::Hidden => {}
+            Fit::Strip => {
+                controls_width = side_panels::STRIP;
+                out.extend(strip(ui, "controls-strip", true, top_bar::text::CONTROLS));
+            }
+            Fit::Open { max } => {
+                let r = egui::Panel::left("controls")
+                    .resizable(true)
+                    .default_size(side_panels::CONTROLS_DEFAULT)
+                    .size_range(side_panels::PANEL_MIN..=max)
+                    .show(ui, |ui| {
+                        // Content never widens the panel (see the inspector below).
+                        let width = ui.available_width();
+                        egui::ScrollArea::both()
+                            .auto_shrink([false, false])
+                            .show(ui, |ui| {
+                                ui.set_max_width(width);
+                                out.extend(command::all(controls::controls_ui(ui, &self.state)));
+                            });
+                    });
+                controls_width = r.response.rect.width();
+            }
+        }
+        match fits.inspector {
+            Fit::Hidden => {}
+            Fit::Strip => {
+                out.extend(strip(
+                    ui,
+                    "inspector-strip",
+                    false,
+                    top_bar::text::INSPECTOR,
+                ));
+            }
+            Fit::Open { max } => {
+                let max = max.min(budget - controls_width).max(side_panels::PANEL_MIN);
+                egui::Panel::right("inspector")
+                    .resizable(true)
+                    .default_size(side_panels::INSPECTOR_DEFAULT)
+                    .size_range(side_panels::PANEL_MIN..=max)
+                    .show(ui, |ui| {
+                        // Content never widens the panel: lines wrap at its width, and
+                        // anything wider still scrolls. (A panel that grew with the hovered
+                        // pixel's text would move the canvas under the pointer, change the
+                        // hovered pixel, and so on.)
+                        let width = ui.available_width();
+                        egui::ScrollArea::both()
+                            .auto_shrink([false, false])
+                            .show(ui, |ui| {
+                                ui.set_max_width(width);
+                                inspector::inspector_ui(
+                                    ui,
+                                    self.reports.hover.as_ref(),
+                                    self.reports.pin.as_ref(),
+                                );
+                            });
+                    });
+            }
+        }
+    }
+
+    /// The canvas in the rest of the window.
+    pub(super) fn canvas_panel(
+        &mut self,
+        ui: &mut egui::Ui,
+        texture: &Arc<Texture>,
+        out: &mut Vec<AppCommand>,
+    ) {
+        egui::CentralPanel::default().show(ui, |ui| {
+            let input = CanvasInput {
+                state: &self.state,
+                texture,
+                texture_key: texture_key(&self.state.scene, self.state.scene_dir.as_deref()),
+                hover_report: self.reports.hover.as_ref(),
+                pin_report: self.reports.pin.as_ref(),
+            };
+            out.extend(command::all(canvas::canvas_ui(ui, &mut self.canvas, input)));
+        });
+    }
+
+    /// Presentation mode: the card (below the canvas in a window about as tall as wide, else
+    /// beside it) and the canvas in all the rest.
+    pub(super) fn presentation(
+        &mut self,
+        ui: &mut egui::Ui,
+        texture: &Arc<Texture>,
+        out: &mut Vec<AppCommand>,
+    ) {
+        let rect = ui.ctx().content_rect();
+        let frame = egui::Frame::new()
+            .fill(present::CARD_FILL)
+            .inner_margin(egui::Margin::same(12));
+        let (hover, pin) = (self.reports.hover.as_ref(), self.reports.pin.as_ref());
+        let size = present::card_text(rect.height());
+        if rect.width() < PRESENT_SIDE_CARD_ASPECT * rect.height() {
+            let spacing = ui.spacing().item_spacing.y;
+            egui::Panel::bottom("present-card")
+                .frame(frame)
+                .resizable(false)
+                .exact_size(present::card_height(rect.width() - 24.0, spacing, size) + 24.0)
+                .show(ui, |ui| present::card_ui(ui, hover, pin, size));
+        } else {
+            egui::Panel::right("present-card")
+                .frame(frame)
+                .resizable(false)
+                .exact_size(rect.width() * PRESENT_SIDE_CARD_SHARE)
+                .show(ui, |ui| present::card_ui(ui, hover, pin, size));
+        }
+        self.canvas_panel(ui, texture, out);
+    }
+}
+
+/// A collapsed side panel: a strip with one button that opens it (and lets it have the room
+/// first).
+fn strip(ui: &mut egui::Ui, id: &'static str, left: bool, name: &str) -> Vec<AppCommand> {
+    let mut out = Vec::new();
+    let panel = if left {
+        egui::Panel::left(id)
+    } else {
+        egui::Panel::right(id)
+    };
+    panel
+        .resizable(false)
+        .exact_size(side_panels::STRIP)
+        .show(ui, |ui| {
+            let icon = if left { "»" } else { "«" };
+            if ui
+                .button(icon)
+                .on_hover_text(format!("{name}: {}", text::STRIP_TIP))
+                .clicked()
+            {
+                out.push(
+                    if left {
+                        state::Command::SetShowControls(true)
+                    } else {
+                        state::Command::SetShowInspector(true)
+                    }
+                    .into(),
+                );
+            }
+        });
+    out
+}

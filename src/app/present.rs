@@ -1,0 +1,194 @@
+//! Presentation mode's card: the pinned (else hovered) pixel's key numbers, large and high
+//! contrast, for the back of a lecture hall. Every number is the probe trace's (the same
+//! trace the inspector shows); nothing is computed here.
+
+use egui::{Color32, RichText, Ui};
+
+use super::pixel::PixelReport;
+use crate::probe::format::fmt_digits;
+use crate::raster::Interpolation;
+
+/// User-facing strings of the presentation card.
+pub mod text {
+    pub const BUTTON: &str = "Present";
+    pub const BUTTON_TIP: &str = "Presentation mode: the canvas as large as the window allows \
+        and the pixel's key numbers in large print. Keys: F5 (Esc leaves), Page Down / Page Up \
+        step through the presets.";
+    pub const NO_PIXEL: &str = "Hover or click a pixel on the quad";
+    pub const NOT_COVERED: &str = "the quad does not cover this pixel";
+    pub const PIXEL: &str = "Pixel";
+    pub const PINNED: &str = "pinned";
+    pub const HOVERED: &str = "hovered";
+    pub const AFFINE: &str = "affine";
+    pub const PERSPECTIVE: &str = "perspective-correct";
+    pub const SCREEN: &str = "r s t";
+    pub const INV_W: &str = "1/W";
+    pub const CORRECTED: &str = "a b c";
+    pub const INV_W_P: &str = "1/W_P";
+    pub const W_P: &str = "W_P";
+    pub const UV_AFFINE: &str = "uv affine";
+    pub const UV_PERSPECTIVE: &str = "uv perspective";
+    pub const LEAVE: &str = "F5 / Esc: leave · Page Down / Up: presets";
+}
+
+/// Text size of the card's numbers in points (times the text size setting), for a window
+/// `height` points high: 26 at 768, larger on a larger screen.
+pub fn card_text(height: f32) -> f32 {
+    (height / 29.5).clamp(CARD_TEXT_RANGE.0, CARD_TEXT_RANGE.1)
+}
+
+/// Smallest and largest card text size, in points.
+const CARD_TEXT_RANGE: (f32, f32) = (26.0, 44.0);
+
+/// The card's height in points for a card `width` points wide with text `size`: always the
+/// same for a window, whatever pixel it shows (a card that grew with its content would move
+/// the canvas under the pointer, change the hovered pixel, and so on).
+pub fn card_height(width: f32, spacing: f32, size: f32) -> f32 {
+    // The title, then the table (a header and three vertices) beside four lines, or above
+    // them.
+    let rows = if width >= SIDE_BY_SIDE_EMS * size {
+        5.0
+    } else {
+        9.0
+    };
+    rows * (ROW * size + spacing) + 0.5 * size
+}
+
+/// A row's height, in text heights.
+const ROW: f32 = 1.3;
+/// The card puts the weights table and the other lines side by side from this many text
+/// heights of width.
+const SIDE_BY_SIDE_EMS: f32 = 30.0;
+/// Characters of a number column.
+const NUMBER_EMS: f32 = 7.0;
+/// Significant digits on the card: enough to see the difference, few enough to read.
+const DIGITS: i32 = 4;
+/// The card's colours: white on near-black.
+pub const CARD_FILL: Color32 = Color32::from_rgb(8, 10, 16);
+const INK: Color32 = Color32::WHITE;
+const DIM: Color32 = Color32::from_rgb(170, 180, 200);
+const ACCENT: Color32 = Color32::from_rgb(255, 214, 90);
+
+fn big(s: impl Into<String>, size: f32) -> RichText {
+    RichText::new(s).monospace().size(size).color(INK)
+}
+
+fn label(s: &str, size: f32) -> RichText {
+    RichText::new(s).monospace().size(size).color(DIM)
+}
+
+fn num(x: f64) -> String {
+    fmt_digits(x, DIGITS)
+}
+
+fn pair(uv: [f32; 2]) -> String {
+    format!(
+        "({}, {})",
+        fmt_digits(f64::from(uv[0]), DIGITS),
+        fmt_digits(f64::from(uv[1]), DIGITS)
+    )
+}
+
+/// The card, for the pinned pixel's report if any, else the hovered one's.
+pub fn card_ui(
+    ui: &mut Ui,
+    hovered: Option<&PixelReport>,
+    pinned: Option<&PixelReport>,
+    size: f32,
+) {
+    let big = |s: String| big(s, size);
+    let label = |s: &str| label(s, size);
+    let focus = pinned
+        .map(|r| (r, text::PINNED))
+        .or(hovered.map(|r| (r, text::HOVERED)));
+    ui.horizontal_wrapped(|ui| {
+        match focus {
+            Some((r, how)) => {
+                let mode = match r.mode {
+                    Interpolation::Affine => text::AFFINE,
+                    Interpolation::Perspective => text::PERSPECTIVE,
+                };
+                ui.label(
+                    big(format!(
+                        "{} {}, {} ({how}) · {mode}",
+                        text::PIXEL,
+                        r.pixel[0],
+                        r.pixel[1]
+                    ))
+                    .color(ACCENT)
+                    .strong(),
+                );
+            }
+            None => {
+                ui.label(big(text::NO_PIXEL.into()).color(ACCENT));
+            }
+        }
+        ui.label(RichText::new(text::LEAVE).size(size * 0.55).color(DIM));
+    });
+    let Some((r, _)) = focus else {
+        return;
+    };
+    let Some(d) = &r.trace.detail else {
+        ui.label(big(text::NOT_COVERED.into()));
+        return;
+    };
+    let correction = d.perspective.map(|p| p.correction);
+    // A table of fixed-width cells (monospace numbers line up; no measured layout that could
+    // change from frame to frame).
+    let grid = |ui: &mut Ui| {
+        let cell = |ui: &mut Ui, t: RichText, ems: f32| {
+            ui.add_sized(
+                [ems * size * 0.62, size * ROW],
+                egui::Label::new(t).wrap_mode(egui::TextWrapMode::Extend),
+            );
+        };
+        ui.horizontal(|ui| {
+            cell(ui, label(""), 1.5);
+            for h in [text::SCREEN, text::INV_W, text::CORRECTED] {
+                cell(ui, label(h), NUMBER_EMS);
+            }
+        });
+        for (k, v) in d.raster.vertices.iter().enumerate() {
+            ui.horizontal(|ui| {
+                cell(ui, big(v.name.clone()).color(ACCENT).strong(), 1.5);
+                cell(ui, big(num(d.screen.rasterizer[k])), NUMBER_EMS);
+                cell(ui, big(num(v.inv_w)), NUMBER_EMS);
+                let c = correction.map_or("–".into(), |c| num(c.weights[k]));
+                cell(ui, big(c), NUMBER_EMS);
+            });
+        }
+    };
+    let lines = |ui: &mut Ui| {
+        if let Some(c) = correction {
+            ui.label(big(format!("{} = {}", text::INV_W_P, num(c.inv_w_p))));
+            ui.label(big(format!("{} = {}", text::W_P, num(c.w_p))));
+        }
+        if let Some(a) = &d.attribute {
+            let strong = |t: RichText, on: bool| if on { t.color(ACCENT) } else { t };
+            ui.label(strong(
+                big(format!("{} {}", text::UV_AFFINE, pair(a.uv_affine))),
+                r.mode == Interpolation::Affine,
+            ));
+            ui.label(strong(
+                big(format!(
+                    "{} {}",
+                    text::UV_PERSPECTIVE,
+                    pair(a.uv_perspective)
+                )),
+                r.mode == Interpolation::Perspective,
+            ));
+        }
+    };
+    // Side by side when the card is wide enough, else one above the other (decided from the
+    // width alone, so the layout cannot flip back and forth).
+    if ui.available_width() >= SIDE_BY_SIDE_EMS * size {
+        ui.horizontal_top(|ui| {
+            ui.vertical(grid);
+            ui.add_space(size);
+            ui.vertical(lines);
+        });
+    } else {
+        grid(ui);
+        lines(ui);
+    }
+}
