@@ -314,6 +314,55 @@ fn state_is_saved_on_exit_and_restored_on_start() {
     assert_eq!(fresh.state().scene, Scene::default_scene());
 }
 
+/// The real app keeps its state in a file of its own, written atomically (`files::write_bytes`,
+/// whose failure cases tests/robust.rs covers): it is what the app restores first, a save
+/// leaves no temporary file behind, and a damaged file falls back to eframe's storage.
+#[test]
+fn state_file_is_written_atomically_and_read_first() {
+    use eframe::App as _;
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("data").join("barylab-state.json");
+    let persist = || AppOptions {
+        persist: true,
+        ..AppOptions::default()
+    };
+    let mut app = BaryApp::new_with_state_file(None, persist(), Some(path.clone()));
+    app.push(Command::Preset(barylab::app::presets::Preset::FarCorner));
+    let mut h = Harness::builder()
+        .with_size(SIZE)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    h.run();
+    let saved = h.state().state().clone();
+    assert_ne!(saved.scene, Scene::default_scene());
+    let mut storage = MemoryStorage::default();
+    h.state_mut().save(&mut storage);
+    assert!(path.is_file(), "the state file was not written");
+    let names: Vec<_> = std::fs::read_dir(path.parent().expect("folder"))
+        .expect("folder")
+        .map(|e| e.expect("entry").file_name())
+        .collect();
+    assert_eq!(
+        names,
+        ["barylab-state.json"],
+        "a temporary file was left behind"
+    );
+    // Restored from the file alone, with an empty eframe storage.
+    let restored = BaryApp::new_with_state_file(
+        Some(&MemoryStorage::default()),
+        persist(),
+        Some(path.clone()),
+    );
+    assert_eq!(restored.state(), &saved);
+    // A damaged file (a crash of some other writer, a full disk) is not trusted: eframe's copy
+    // of the same save restores the scene.
+    std::fs::write(&path, b"{\"scene_json\": \"{\\\"wid").expect("damage");
+    let fallback = BaryApp::new_with_state_file(Some(&storage), persist(), Some(path.clone()));
+    assert_eq!(fallback.state(), &saved);
+    // Without persistence the file is neither read nor written.
+    let fresh = BaryApp::new_with_state_file(None, AppOptions::default(), Some(path));
+    assert_eq!(fresh.state().scene, Scene::default_scene());
+}
+
 #[test]
 fn scrolling_on_a_handle_pushes_the_corner_away_along_its_ray() {
     let mut h = harness();

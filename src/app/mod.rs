@@ -82,6 +82,7 @@ use crate::scene::Scene;
 mod text {
     pub const TITLE: &str = "barylab — how a GPU interpolates across a triangle";
     pub const RESTORE_FAILED: &str = "could not restore the saved scene, using the default";
+    pub const SAVE_STATE_FAILED: &str = "could not save the app's state";
 }
 
 /// How the app is started.
@@ -128,6 +129,8 @@ pub struct BaryApp {
     message: Option<Message>,
     timing: FrameTiming,
     persist: bool,
+    /// Where the state is kept atomically besides eframe's storage (the real app only).
+    state_file: Option<PathBuf>,
     screenshot: Option<StartupShot>,
     reports: PixelReports,
     applied_zoom: Option<f32>,
@@ -152,13 +155,25 @@ impl BaryApp {
     /// Creates the app: restores the saved state (if `options.persist`), then opens
     /// `options.scene` if given.
     pub fn new(storage: Option<&dyn eframe::Storage>, options: AppOptions) -> Self {
+        Self::new_with_state_file(storage, options, None)
+    }
+
+    /// [`BaryApp::new`] that also keeps its state in `state_file` (see
+    /// [`persist::state_file`]): read first on start, written atomically on save.
+    pub fn new_with_state_file(
+        storage: Option<&dyn eframe::Storage>,
+        options: AppOptions,
+        state_file: Option<PathBuf>,
+    ) -> Self {
         let mut message = None;
         let mut state = AppState::default();
         let mut recent = RecentFiles::default();
         let mut export_settings = export::ExportSettings::default();
+        let state_file = state_file.filter(|_| options.persist);
+        let from_file = state_file.as_deref().and_then(persist::read_state_file);
         if options.persist
-            && let Some(saved) =
-                storage.and_then(|s| eframe::get_value::<SavedState>(s, STORAGE_KEY))
+            && let Some(saved) = from_file
+                .or_else(|| storage.and_then(|s| eframe::get_value::<SavedState>(s, STORAGE_KEY)))
         {
             let restored = saved.restore();
             (state, recent, export_settings) = (restored.state, restored.recent, restored.export);
@@ -183,6 +198,7 @@ impl BaryApp {
             message,
             timing: FrameTiming::default(),
             persist: options.persist,
+            state_file,
             screenshot: options.screenshot.map(StartupShot::new),
             reports: PixelReports::default(),
             applied_zoom: None,
@@ -512,6 +528,11 @@ impl eframe::App for BaryApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if self.persist {
             let saved = SavedState::capture(&self.state, &self.recent, &self.export.settings);
+            if let Some(path) = &self.state_file
+                && let Err(e) = persist::write_state_file(path, &saved)
+            {
+                eprintln!("barylab: {}: {e}", text::SAVE_STATE_FAILED);
+            }
             eframe::set_value(storage, STORAGE_KEY, &saved);
         }
     }
@@ -543,7 +564,7 @@ pub fn run(options: AppOptions) -> Result<(), AppError> {
         "barylab",
         native,
         Box::new(move |cc| {
-            let app = BaryApp::new(cc.storage, options);
+            let app = BaryApp::new_with_state_file(cc.storage, options, persist::state_file());
             if let (Some(shot), Ok(mut s)) = (&app.screenshot, slot.lock()) {
                 *s = Some(shot.slot());
             }

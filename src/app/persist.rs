@@ -89,6 +89,30 @@ impl SavedState {
     }
 }
 
+/// The file the app keeps its saved state in: `barylab-state.json` in eframe's storage folder
+/// for the app (`~/.local/share/barylab` on Linux). eframe's own storage file is rewritten in
+/// place, so a full disk or a crash while saving could lose it; this one is written to a
+/// temporary file and renamed ([`write_state_file`]), so the last good state always survives.
+pub fn state_file() -> Option<PathBuf> {
+    eframe::storage_dir("barylab").map(|d| d.join("barylab-state.json"))
+}
+
+/// The saved state in `path`, if it is there and reads as one.
+pub fn read_state_file(path: &std::path::Path) -> Option<SavedState> {
+    let bytes = crate::files::read_regular(path, crate::files::FileKind::Scene).ok()?;
+    serde_json::from_slice(&bytes).ok()
+}
+
+/// Writes the saved state to `path` atomically (temporary file in the same folder, then
+/// rename), creating the folder if needed.
+pub fn write_state_file(path: &std::path::Path, saved: &SavedState) -> Result<(), String> {
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    }
+    let json = serde_json::to_vec_pretty(saved).map_err(|e| e.to_string())?;
+    crate::files::write_bytes(path, &json).map_err(|e| e.to_string())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
