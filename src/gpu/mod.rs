@@ -557,16 +557,8 @@ impl Gpu {
                 glow::PixelPackData::Slice(Some(&mut bytes)),
             );
         }
-        // GL's row 0 is the bottom one.
-        let mut out = Vec::with_capacity(w * h);
-        for row in (0..h).rev() {
-            out.extend(
-                bytes[row * w * 4..(row + 1) * w * 4]
-                    .chunks_exact(4)
-                    .map(|c| [c[0], c[1], c[2], c[3]]),
-            );
-        }
-        Ok(out)
+        let pixels = bytes.chunks_exact(4).map(|c| [c[0], c[1], c[2], c[3]]);
+        Ok(top_row_first(pixels.collect(), w, h))
     }
 
     /// Draws [`Output::Values`] once and reads the floats back, image row 0 (the top) first:
@@ -591,20 +583,11 @@ impl Gpu {
                 glow::PixelPackData::Slice(Some(&mut bytes)),
             );
         }
-        let floats: Vec<f32> = bytes
-            .chunks_exact(4)
-            .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
-            .collect();
-        // GL's row 0 is the bottom one.
-        let mut out = Vec::with_capacity(w * h);
-        for row in (0..h).rev() {
-            out.extend(
-                floats[row * w * 4..(row + 1) * w * 4]
-                    .chunks_exact(4)
-                    .map(|c| [c[0], c[1], c[2], c[3]]),
-            );
-        }
-        Ok(out)
+        let float = |b: &[u8]| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+        let pixels = bytes
+            .chunks_exact(16)
+            .map(|p| [0, 4, 8, 12].map(|k| float(&p[k..k + 4])));
+        Ok(top_row_first(pixels.collect(), w, h))
     }
 
     /// Draws once and reads back.
@@ -627,4 +610,13 @@ impl Drop for Gpu {
         let _ = self.egl.destroy_context(self.display, self.context);
         let _ = self.egl.terminate(self.display);
     }
+}
+
+/// Pixels read back from GL (row 0 at the bottom) in image order, row 0 at the top.
+fn top_row_first<T: Copy>(bottom_first: Vec<T>, width: usize, height: usize) -> Vec<T> {
+    let mut out = Vec::with_capacity(width * height);
+    for row in (0..height).rev() {
+        out.extend_from_slice(&bottom_first[row * width..(row + 1) * width]);
+    }
+    out
 }
