@@ -193,10 +193,16 @@ pub(super) fn matrix_latex(lhs: &[M], rows: &[Vec<f64>], unknowns: &[M], rhs: &[
 }
 
 pub(super) fn inline_latex(parts: &[Inline]) -> String {
+    inline_with(parts, latex_escape)
+}
+
+/// Prose with inline math: text through `escape`, each formula as `$...$` in LaTeX (what both
+/// LaTeX and Markdown with MathJax/KaTeX read).
+pub(super) fn inline_with(parts: &[Inline], escape: fn(&str) -> String) -> String {
     parts
         .iter()
         .map(|p| match p {
-            Inline::T(s) => latex_escape(s),
+            Inline::T(s) => escape(s),
             Inline::M(ms) => format!("${}$", latex_of(ms)),
         })
         .collect()

@@ -21,13 +21,7 @@ pub(super) fn markdown_escape(s: &str) -> String {
 }
 
 pub(super) fn inline_markdown(parts: &[Inline]) -> String {
-    parts
-        .iter()
-        .map(|p| match p {
-            Inline::T(s) => markdown_escape(s),
-            Inline::M(ms) => format!("${}$", latex_of(ms)),
-        })
-        .collect()
+    super::latex::inline_with(parts, markdown_escape)
 }
 
 impl Document {
