@@ -290,7 +290,8 @@ pub fn bench_ui(ctx: &egui::Context, panel: &BenchPanel) -> Vec<BenchCommand> {
     let lang = super::locale::lang(ctx);
     let mut out = Vec::new();
     let mut open = panel.open;
-    egui::Window::new(&lang.tr("app.bench_panel.title"))
+    egui::Window::new(lang.tr("app.bench_panel.title"))
+        .id(egui::Id::unique("bench-window"))
         .open(&mut open)
         .default_pos([360.0, 50.0])
         .default_size([900.0, 860.0])

@@ -430,7 +430,8 @@ pub fn export_ui(
     let lang = super::locale::lang(ctx);
     let mut open = true;
     let mut out = Vec::new();
-    egui::Window::new(&lang.tr("app.export.window"))
+    egui::Window::new(lang.tr("app.export.window"))
+        .id(egui::Id::unique("export-window"))
         .open(&mut open)
         .collapsible(false)
         .resizable(false)

@@ -425,7 +425,8 @@ impl BaryApp {
         self.side_panels_ui(ui, &mut out);
         self.canvas_panel(ui, texture, &mut out);
         let mut help_open = self.help_open;
-        egui::Window::new(&lang.tr("app.help.title"))
+        egui::Window::new(lang.tr("app.help.title"))
+            .id(egui::Id::unique("help-window"))
             .open(&mut help_open)
             .default_width(620.0)
             .show(&ctx, help::help_ui);
@@ -479,7 +480,10 @@ impl BaryApp {
                         | state::Command::OpenScene(..)
                 );
                 match self.state.apply(c) {
-                    Err(e) => self.message = Some(Message::error(e.to_string(), Some(Cause::Edit))),
+                    Err(e) => {
+                        self.message =
+                            Some(Message::error(e.message(self.lang), Some(Cause::Edit)));
+                    }
                     Ok(()) if fresh => {
                         if self.message.as_ref().is_some_and(|m| m.error) {
                             self.message = None;

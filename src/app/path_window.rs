@@ -62,6 +62,7 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
         )
     };
     egui::Window::new(title)
+        .id(egui::Id::unique("path-window"))
         .open(&mut window_open)
         .collapsible(false)
         .default_width(560.0)
