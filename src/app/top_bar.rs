@@ -11,8 +11,14 @@ use super::state::{AppState, Command};
 use super::{bench_panel, controls, file_menu, files};
 use crate::i18n::Lang;
 
-/// Points the whole bar takes in one row; below that the View menu holds most of it.
-const FULL_BAR: f32 = 1340.0;
+/// Points the whole bar takes in one row, with the language switch at its end (the Chinese
+/// words are shorter); below that the View menu holds most of it.
+fn full_bar(lang: Lang) -> f32 {
+    match lang {
+        Lang::En => 1480.0,
+        Lang::Zh => 1340.0,
+    }
+}
 
 /// What the top bar shows besides the state.
 pub struct TopBarInput<'a> {
@@ -32,7 +38,7 @@ pub struct TopBarInput<'a> {
 pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
     let lang = super::locale::lang(ui.ctx());
     let mut out: Vec<AppCommand> = Vec::new();
-    let compact = ui.available_width() < FULL_BAR;
+    let compact = ui.available_width() < full_bar(lang);
     ui.horizontal(|ui| {
         ui.label(egui::RichText::new("barylab").strong());
         ui.separator();
