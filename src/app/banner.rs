@@ -110,7 +110,7 @@ pub fn banner_ui(ui: &mut Ui, b: &Banner) -> Vec<FileCommand> {
         .corner_radius(4.0)
         .show(ui, |ui| {
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
-                if ui.button(&lang.tr("app.banner.dismiss")).clicked() {
+                if ui.button(lang.tr("app.banner.dismiss")).clicked() {
                     out.push(FileCommand::DismissBanner);
                 }
                 ui.vertical(|ui| {

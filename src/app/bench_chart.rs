@@ -63,7 +63,7 @@ pub fn table_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
                 .strong()
                 .color(SCANLINE_COLOR),
             );
-            ui.label(RichText::new(&lang.tr("app.bench_chart.ratio")).strong());
+            ui.label(RichText::new(lang.tr("app.bench_chart.ratio")).strong());
             ui.label(
                 RichText::new(format!(
                     "{} {}",
@@ -133,7 +133,7 @@ fn median_ratio(records: &[BenchRecord]) -> Option<f64> {
 /// The published claim and the measured edge / scanline ratio.
 pub fn ratio_ui(ui: &mut Ui, records: &[BenchRecord]) {
     let lang = super::locale::lang(ui.ctx());
-    ui.label(&lang.tr("app.bench_chart.published_claim"));
+    ui.label(lang.tr("app.bench_chart.published_claim"));
     if let Some(r) = median_ratio(records) {
         ui.label(
             RichText::new(lang.tr_with(
@@ -216,7 +216,7 @@ pub fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
     Plot::new("bench_chart")
         .height(280.0)
         .legend(Legend::default().position(Corner::LeftTop))
-        .y_axis_label(&lang.tr("app.bench_chart.chart_y"))
+        .y_axis_label(lang.tr("app.bench_chart.chart_y"))
         .include_y(0.0)
         .include_y(tallest * LEGEND_HEADROOM)
         .include_x(-0.6)
@@ -259,7 +259,7 @@ pub fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
 /// llvmpipe's reference figures for the 1080p scene.
 pub fn reference_ui(ui: &mut Ui) {
     let lang = super::locale::lang(ui.ctx());
-    ui.label(RichText::new(&lang.tr("app.bench_chart.reference_heading")).strong());
+    ui.label(RichText::new(lang.tr("app.bench_chart.reference_heading")).strong());
     egui::Grid::new("llvmpipe_reference")
         .spacing([18.0, 2.0])
         .show(ui, |ui| {
@@ -287,7 +287,7 @@ pub fn reference_ui(ui: &mut Ui) {
                 ui.end_row();
             }
         });
-    ui.label(RichText::new(&lang.tr("app.bench_chart.reference_note")).small());
+    ui.label(RichText::new(lang.tr("app.bench_chart.reference_note")).small());
 }
 
 #[cfg(test)]

@@ -310,33 +310,33 @@ fn window_contents(ui: &mut Ui, panel: &BenchPanel, out: &mut Vec<BenchCommand>)
         ui.radio_value(
             &mut source,
             BenchSource::Canvas,
-            &lang.tr("app.bench_panel.source_canvas"),
+            lang.tr("app.bench_panel.source_canvas"),
         );
         ui.radio_value(
             &mut source,
             BenchSource::Reference,
-            &lang.tr("app.bench_panel.source_reference"),
+            lang.tr("app.bench_panel.source_reference"),
         )
-        .on_hover_text(&lang.tr("app.bench_panel.source_reference_tip"));
+        .on_hover_text(lang.tr("app.bench_panel.source_reference_tip"));
     });
     if source != panel.source {
         out.push(BenchCommand::SetSource(source));
     }
     ui.horizontal(|ui| {
         if panel.is_running() {
-            if ui.button(&lang.tr("app.bench_panel.stop")).clicked() {
+            if ui.button(lang.tr("app.bench_panel.stop")).clicked() {
                 out.push(BenchCommand::Stop);
             }
         } else if ui
-            .button(&lang.tr("app.bench_panel.run"))
-            .on_hover_text(&lang.tr("app.bench_panel.run_tip"))
+            .button(lang.tr("app.bench_panel.run"))
+            .on_hover_text(lang.tr("app.bench_panel.run_tip"))
             .clicked()
         {
             out.push(BenchCommand::Run);
         }
         let label = ui
-            .label(&lang.tr("app.bench_panel.frames"))
-            .on_hover_text(&lang.tr("app.bench_panel.frames_tip"));
+            .label(lang.tr("app.bench_panel.frames"))
+            .on_hover_text(lang.tr("app.bench_panel.frames_tip"));
         let mut frames = panel.frames;
         ui.add(egui::DragValue::new(&mut frames).range(FRAMES_RANGE.0..=FRAMES_RANGE.1))
             .labelled_by(label.id);
@@ -361,7 +361,7 @@ fn window_contents(ui: &mut Ui, panel: &BenchPanel, out: &mut Vec<BenchCommand>)
     }
     ui.separator();
     if panel.records.is_empty() {
-        ui.label(&lang.tr("app.bench_panel.no_results"));
+        ui.label(lang.tr("app.bench_panel.no_results"));
     } else {
         if let Some(m) = &panel.measured {
             ui.label(
@@ -373,7 +373,7 @@ fn window_contents(ui: &mut Ui, panel: &BenchPanel, out: &mut Vec<BenchCommand>)
         ui.add_space(6.0);
         bench_chart::ratio_ui(ui, &panel.records);
         ui.add_space(6.0);
-        ui.label(RichText::new(&lang.tr("app.bench_panel.chart_caption")).small());
+        ui.label(RichText::new(lang.tr("app.bench_panel.chart_caption")).small());
         bench_chart::chart_ui(ui, &panel.records, reference);
     }
     ui.separator();

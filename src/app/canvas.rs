@@ -394,7 +394,7 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
                     (p.x - view.rect.left()) / view.rect.width(),
                 ));
             }
-            r.on_hover_text(&lang.tr("app.canvas.wipe_line"));
+            r.on_hover_text(lang.tr("app.canvas.wipe_line"));
         }
 
         // Handles.
@@ -466,7 +466,7 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
                         });
                     }
                 }
-                r.on_hover_text(&lang.tr("app.canvas.handle_tip"));
+                r.on_hover_text(lang.tr("app.canvas.handle_tip"));
             }
         }
     }

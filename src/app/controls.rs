@@ -136,7 +136,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         }
     });
     ui.horizontal_wrapped(|ui| {
-        ui.label(&lang.tr("app.controls.filter"));
+        ui.label(lang.tr("app.controls.filter"));
         for (f, label, tip) in [
             (
                 Filter::Nearest,
@@ -165,15 +165,15 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     });
     let mut wire = options.wireframe;
     if ui
-        .checkbox(&mut wire, &lang.tr("app.controls.wireframe"))
-        .on_hover_text(&lang.tr("app.controls.tip.wireframe"))
+        .checkbox(&mut wire, lang.tr("app.controls.wireframe"))
+        .on_hover_text(lang.tr("app.controls.tip.wireframe"))
         .changed()
     {
         out.push(Command::SetWireframe(wire));
     }
     ui.horizontal_wrapped(|ui| {
         use crate::raster::render::Rasterizer;
-        ui.label(&lang.tr("app.controls.rasterizer"));
+        ui.label(lang.tr("app.controls.rasterizer"));
         for (r, label, tip) in [
             (
                 Rasterizer::EdgeFunction,
@@ -205,9 +205,9 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
             Slider::new(&mut px, PIXEL_SIZE_RANGE.0..=PIXEL_SIZE_RANGE.1)
                 .logarithmic(true)
                 .suffix("×")
-                .text(&lang.tr("app.controls.pixel_size")),
+                .text(lang.tr("app.controls.pixel_size")),
         )
-        .on_hover_text(&lang.tr("app.controls.tip.pixel_size"))
+        .on_hover_text(lang.tr("app.controls.tip.pixel_size"))
         .changed()
     {
         out.push(Command::SetPixelSize(px));
@@ -242,7 +242,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         for p in Preset::ALL {
             if ui
                 .button(preset_name(p, lang))
-                .on_hover_text(&lang.tr("app.controls.tip.preset"))
+                .on_hover_text(lang.tr("app.controls.tip.preset"))
                 .clicked()
             {
                 out.push(Command::Preset(p));
@@ -254,7 +254,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     camera_ui(ui, &state.scene, &mut out);
 
     ui.add_space(6.0);
-    egui::CollapsingHeader::new(RichText::new(&lang.tr("app.controls.vertices")).strong())
+    egui::CollapsingHeader::new(RichText::new(lang.tr("app.controls.vertices")).strong())
         .default_open(true)
         .show(ui, |ui| vertices_ui(ui, &state.scene, &mut out));
     out
@@ -265,15 +265,15 @@ pub fn reset_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     if ui
-        .button(&lang.tr("app.controls.reset_scene"))
-        .on_hover_text(&lang.tr("app.controls.tip.reset_scene"))
+        .button(lang.tr("app.controls.reset_scene"))
+        .on_hover_text(lang.tr("app.controls.tip.reset_scene"))
         .clicked()
     {
         out.push(Command::ResetScene);
     }
     if ui
-        .button(&lang.tr("app.controls.reset_all"))
-        .on_hover_text(&lang.tr("app.controls.tip.reset_all"))
+        .button(lang.tr("app.controls.reset_all"))
+        .on_hover_text(lang.tr("app.controls.tip.reset_all"))
         .clicked()
     {
         out.push(Command::ResetAll);
@@ -284,9 +284,9 @@ pub fn reset_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         .add(
             Slider::new(&mut scale, UI_SCALE_RANGE.0..=UI_SCALE_RANGE.1)
                 .step_by(0.05)
-                .text(&lang.tr("app.controls.text_size")),
+                .text(lang.tr("app.controls.text_size")),
         )
-        .on_hover_text(&lang.tr("app.controls.tip.text_size"))
+        .on_hover_text(lang.tr("app.controls.tip.text_size"))
         .changed()
     {
         out.push(Command::SetUiScale(scale));
@@ -324,7 +324,7 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
         return;
     }
     let Scene::World(s) = scene else {
-        ui.label(&lang.tr("app.controls.no_tilt_clip"));
+        ui.label(lang.tr("app.controls.no_tilt_clip"));
         return;
     };
     let mut tilt = s.tilt;
@@ -333,17 +333,17 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
         .add(
             Slider::new(&mut tilt.pitch_deg, -90.0..=90.0)
                 .suffix("°")
-                .text(&lang.tr("app.controls.pitch")),
+                .text(lang.tr("app.controls.pitch")),
         )
-        .on_hover_text(&lang.tr("app.controls.tip.pitch"))
+        .on_hover_text(lang.tr("app.controls.tip.pitch"))
         .changed();
     changed |= ui
         .add(
             Slider::new(&mut tilt.yaw_deg, -90.0..=90.0)
                 .suffix("°")
-                .text(&lang.tr("app.controls.yaw")),
+                .text(lang.tr("app.controls.yaw")),
         )
-        .on_hover_text(&lang.tr("app.controls.tip.yaw"))
+        .on_hover_text(lang.tr("app.controls.tip.yaw"))
         .changed();
     if changed {
         out.push(Command::SetTilt(Tilt {
@@ -356,9 +356,9 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
             .add(
                 Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
                     .suffix("°")
-                    .text(&lang.tr("app.controls.fov")),
+                    .text(lang.tr("app.controls.fov")),
             )
-            .on_hover_text(&lang.tr("app.controls.tip.fov"))
+            .on_hover_text(lang.tr("app.controls.tip.fov"))
             .changed()
     {
         out.push(Command::SetFov(fov));
@@ -368,22 +368,22 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
 /// Model scenes: how to move the camera, the field of view, reset.
 fn model_camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     let lang = super::locale::lang(ui.ctx());
-    ui.label(RichText::new(&lang.tr("app.controls.model_camera_hint")).weak());
+    ui.label(RichText::new(lang.tr("app.controls.model_camera_hint")).weak());
     if let Some(mut fov) = edit::fov_deg(scene)
         && ui
             .add(
                 Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
                     .suffix("°")
-                    .text(&lang.tr("app.controls.fov")),
+                    .text(lang.tr("app.controls.fov")),
             )
-            .on_hover_text(&lang.tr("app.controls.tip.fov"))
+            .on_hover_text(lang.tr("app.controls.tip.fov"))
             .changed()
     {
         out.push(Command::SetFov(fov));
     }
     if ui
-        .button(&lang.tr("app.controls.reset_view"))
-        .on_hover_text(&lang.tr("app.controls.tip.reset_view"))
+        .button(lang.tr("app.controls.reset_view"))
+        .on_hover_text(lang.tr("app.controls.tip.reset_view"))
         .clicked()
     {
         out.push(Command::ResetCamera);
@@ -411,7 +411,7 @@ fn field(ui: &mut Ui, v: &mut f64, speed: f64, tip: &str) -> bool {
 fn uv_row(ui: &mut Ui, uv: Vec2, changed: &mut bool) -> Vec2 {
     let lang = super::locale::lang(ui.ctx());
     let mut uv = uv.as_dvec2();
-    ui.label(RichText::new(&lang.tr("app.controls.uv")).weak());
+    ui.label(RichText::new(lang.tr("app.controls.uv")).weak());
     ui.horizontal(|ui| {
         *changed |= field(ui, &mut uv.x, 0.01, &lang.tr("app.controls.tip.uv"));
         *changed |= field(ui, &mut uv.y, 0.01, &lang.tr("app.controls.tip.uv"));

@@ -197,7 +197,7 @@ impl ExportPanel {
             }
             ExportCommand::Copy => {
                 self.outcome = Some(match self.copy(app) {
-                    Ok(()) => Outcome::done(&lang.tr("app.export.copied")),
+                    Ok(()) => Outcome::done(lang.tr("app.export.copied")),
                     Err(e) => Outcome::failed(e),
                 });
             }
@@ -343,14 +343,14 @@ impl ExportPanel {
         let lang = super::locale::lang(ctx);
         let start = self.settings.folder.clone();
         let opened = self.dialog.open(ctx, "folder dialog", move || {
-            let mut d = rfd::FileDialog::new().set_title(&lang.tr("app.export.folder_dialog"));
+            let mut d = rfd::FileDialog::new().set_title(lang.tr("app.export.folder_dialog"));
             if let Some(f) = start {
                 d = d.set_directory(f);
             }
             d.pick_folder()
         });
         if opened.is_err() {
-            self.outcome = Some(Outcome::failed(&lang.tr("app.export.folder_dialog_failed")));
+            self.outcome = Some(Outcome::failed(lang.tr("app.export.folder_dialog_failed")));
         }
     }
 
@@ -360,7 +360,7 @@ impl ExportPanel {
         match self.dialog.poll()? {
             DialogOutcome::Picked(folder) => Some(ExportCommand::SetFolder(folder)),
             DialogOutcome::Failed => {
-                self.outcome = Some(Outcome::failed(&lang.tr("app.export.folder_dialog_failed")));
+                self.outcome = Some(Outcome::failed(lang.tr("app.export.folder_dialog_failed")));
                 None
             }
             DialogOutcome::Cancelled => None,
@@ -458,11 +458,11 @@ fn window_contents(
         .num_columns(2)
         .spacing([12.0, 8.0])
         .show(ui, |ui| {
-            ui.label(&lang.tr("app.export.folder"));
+            ui.label(lang.tr("app.export.folder"));
             ui.horizontal(|ui| {
                 let field = ui.add(
                     egui::TextEdit::singleline(folder_text)
-                        .hint_text(&lang.tr("app.export.folder_hint"))
+                        .hint_text(lang.tr("app.export.folder_hint"))
                         .desired_width(340.0),
                 );
                 if field.changed() {
@@ -471,19 +471,19 @@ fn window_contents(
                         out.push(ExportCommand::SetFolder(PathBuf::from(t)));
                     }
                 }
-                if ui.button(&lang.tr("app.export.browse")).clicked() {
+                if ui.button(lang.tr("app.export.browse")).clicked() {
                     out.push(ExportCommand::BrowseFolder);
                 }
             });
             ui.end_row();
 
-            ui.label(&lang.tr("app.export.scale"))
-                .on_hover_text(&lang.tr("app.export.scale_tip"));
+            ui.label(lang.tr("app.export.scale"))
+                .on_hover_text(lang.tr("app.export.scale_tip"));
             ui.horizontal(|ui| {
                 for k in SCALES {
                     if ui
                         .selectable_label(s.scale == k, format!("{k}x"))
-                        .on_hover_text(&lang.tr("app.export.scale_tip"))
+                        .on_hover_text(lang.tr("app.export.scale_tip"))
                         .clicked()
                     {
                         out.push(ExportCommand::SetScale(k));
@@ -492,7 +492,7 @@ fn window_contents(
             });
             ui.end_row();
 
-            ui.label(&lang.tr("app.export.background"));
+            ui.label(lang.tr("app.export.background"));
             ui.horizontal(|ui| {
                 for (b, label) in [
                     (Background::White, &lang.tr("app.export.white")),
@@ -507,34 +507,34 @@ fn window_contents(
         });
     ui.add_space(4.0);
     let mut sel = s.selection;
-    ui.checkbox(&mut sel.png, &lang.tr("app.export.png"));
-    ui.checkbox(&mut sel.svg, &lang.tr("app.export.svg"));
-    ui.checkbox(&mut sel.derivation, &lang.tr("app.export.derivation"))
-        .on_hover_text(&lang.tr("app.export.derivation_tip"));
-    ui.checkbox(&mut sel.scene, &lang.tr("app.export.scene"))
-        .on_hover_text(&lang.tr("app.export.scene_tip"));
+    ui.checkbox(&mut sel.png, lang.tr("app.export.png"));
+    ui.checkbox(&mut sel.svg, lang.tr("app.export.svg"));
+    ui.checkbox(&mut sel.derivation, lang.tr("app.export.derivation"))
+        .on_hover_text(lang.tr("app.export.derivation_tip"));
+    ui.checkbox(&mut sel.scene, lang.tr("app.export.scene"))
+        .on_hover_text(lang.tr("app.export.scene_tip"));
     if sel != s.selection {
         out.push(ExportCommand::SetSelection(sel));
     }
     ui.add_space(4.0);
     ui.horizontal(|ui| {
         if ui
-            .button(RichText::new(&lang.tr("app.export.export")).strong())
-            .on_hover_text(&lang.tr("app.export.button_tip"))
+            .button(RichText::new(lang.tr("app.export.export")).strong())
+            .on_hover_text(lang.tr("app.export.button_tip"))
             .clicked()
         {
             out.push(ExportCommand::Export);
         }
         if ui
-            .button(&lang.tr("app.export.copy"))
-            .on_hover_text(&lang.tr("app.export.copy_tip"))
+            .button(lang.tr("app.export.copy"))
+            .on_hover_text(lang.tr("app.export.copy_tip"))
             .clicked()
         {
             out.push(ExportCommand::Copy);
         }
         if ui
-            .button(&lang.tr("app.export.screenshot"))
-            .on_hover_text(&lang.tr("app.export.screenshot_tip"))
+            .button(lang.tr("app.export.screenshot"))
+            .on_hover_text(lang.tr("app.export.screenshot_tip"))
             .clicked()
         {
             out.push(ExportCommand::Screenshot);

@@ -40,11 +40,11 @@ impl FilePicker {
         all.extend(IMAGE_EXTENSIONS);
         let opened = self.dialog.open(ctx, "file dialog", move || {
             rfd::FileDialog::new()
-                .set_title(&lang.tr("app.file_menu.dialog_title"))
-                .add_filter(&lang.tr("app.file_menu.filter_all"), &all)
-                .add_filter(&lang.tr("app.file_menu.filter_scene"), &["json"])
-                .add_filter(&lang.tr("app.file_menu.filter_model"), &["obj"])
-                .add_filter(&lang.tr("app.file_menu.filter_image"), &IMAGE_EXTENSIONS)
+                .set_title(lang.tr("app.file_menu.dialog_title"))
+                .add_filter(lang.tr("app.file_menu.filter_all"), &all)
+                .add_filter(lang.tr("app.file_menu.filter_scene"), &["json"])
+                .add_filter(lang.tr("app.file_menu.filter_model"), &["obj"])
+                .add_filter(lang.tr("app.file_menu.filter_image"), &IMAGE_EXTENSIONS)
                 .pick_file()
         });
         if opened.is_err() {
@@ -57,9 +57,9 @@ impl FilePicker {
         let lang = super::locale::lang(ctx);
         let opened = self.save_dialog.open(ctx, "save dialog", move || {
             rfd::FileDialog::new()
-                .set_title(&lang.tr("app.file_menu.save_dialog_title"))
-                .set_file_name(&lang.tr("app.file_menu.save_name"))
-                .add_filter(&lang.tr("app.file_menu.filter_scene"), &["json"])
+                .set_title(lang.tr("app.file_menu.save_dialog_title"))
+                .set_file_name(lang.tr("app.file_menu.save_name"))
+                .add_filter(lang.tr("app.file_menu.filter_scene"), &["json"])
                 .save_file()
         });
         if opened.is_err() {
@@ -95,18 +95,18 @@ impl FilePicker {
 pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<FileCommand> {
     let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
-    ui.menu_button(&lang.tr("app.file_menu.file"), |ui| {
+    ui.menu_button(lang.tr("app.file_menu.file"), |ui| {
         if ui
-            .button(&lang.tr("app.file_menu.open"))
-            .on_hover_text(&lang.tr("app.file_menu.open_tip"))
+            .button(lang.tr("app.file_menu.open"))
+            .on_hover_text(lang.tr("app.file_menu.open_tip"))
             .clicked()
         {
             out.push(FileCommand::OpenDialog);
             ui.close();
         }
         if ui
-            .button(&lang.tr("app.file_menu.type_path"))
-            .on_hover_text(&lang.tr("app.file_menu.type_path_tip"))
+            .button(lang.tr("app.file_menu.type_path"))
+            .on_hover_text(lang.tr("app.file_menu.type_path_tip"))
             .clicked()
         {
             out.push(FileCommand::ShowPathWindow {
@@ -133,9 +133,9 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
             }
         }
         ui.separator();
-        ui.label(RichText::new(&lang.tr("app.file_menu.recent")).weak());
+        ui.label(RichText::new(lang.tr("app.file_menu.recent")).weak());
         if recent.0.is_empty() {
-            ui.label(RichText::new(&lang.tr("app.file_menu.no_recent")).weak());
+            ui.label(RichText::new(lang.tr("app.file_menu.no_recent")).weak());
         }
         for p in &recent.0 {
             let name = p
@@ -156,12 +156,12 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
                 ui.close();
             }
         }
-        if !recent.0.is_empty() && ui.button(&lang.tr("app.file_menu.clear_recent")).clicked() {
+        if !recent.0.is_empty() && ui.button(lang.tr("app.file_menu.clear_recent")).clicked() {
             out.push(FileCommand::ClearRecent);
         }
     });
     if waiting {
-        ui.label(RichText::new(&lang.tr("app.file_menu.dialog_waiting")).weak());
+        ui.label(RichText::new(lang.tr("app.file_menu.dialog_waiting")).weak());
     }
     out
 }

@@ -24,7 +24,7 @@ pub fn image_size_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         Some(s) => format!("{} {}", label(s), &lang.tr("app.image_size.scene_size")),
     };
     ui.horizontal(|ui| {
-        ui.label(&lang.tr("app.image_size.image_size"));
+        ui.label(lang.tr("app.image_size.image_size"));
         egui::ComboBox::from_id_salt("image-size")
             .selected_text(shown)
             .show_ui(ui, |ui| {
@@ -34,14 +34,14 @@ pub fn image_size_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
                     }
                 }
                 if ui
-                    .selectable_label(current.is_none(), &lang.tr("app.image_size.fit_window"))
+                    .selectable_label(current.is_none(), lang.tr("app.image_size.fit_window"))
                     .clicked()
                 {
                     out.push(Command::SetImageSize(None));
                 }
             })
             .response
-            .on_hover_text(&lang.tr("app.image_size.tip"));
+            .on_hover_text(lang.tr("app.image_size.tip"));
     });
     out
 }

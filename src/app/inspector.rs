@@ -103,7 +103,7 @@ fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
         }
         None => {
             ui.label(
-                RichText::new(&lang.tr("app.inspector.not_covered"))
+                RichText::new(lang.tr("app.inspector.not_covered"))
                     .color(color(NEGATIVE))
                     .strong(),
             );
@@ -115,9 +115,9 @@ fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
                 ));
             }
             if t.detail.is_some() {
-                ui.label(RichText::new(&lang.tr("app.inspector.nearest")).weak());
+                ui.label(RichText::new(lang.tr("app.inspector.nearest")).weak());
             } else {
-                ui.label(&lang.tr("app.inspector.nothing_drawn"));
+                ui.label(lang.tr("app.inspector.nothing_drawn"));
             }
         }
     }
@@ -139,13 +139,13 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
                 .spacing([8.0, 4.0])
                 .striped(true)
                 .show(ui, |ui| {
-                    ui.label(RichText::new(&lang.tr("app.inspector.vertex")).weak());
-                    ui.label(RichText::new(&lang.tr("app.inspector.screen")).weak())
-                        .on_hover_text(&lang.tr("app.inspector.screen_tip"));
-                    ui.label(RichText::new(&lang.tr("app.inspector.inv_w")).weak())
-                        .on_hover_text(&lang.tr("app.inspector.inv_w_tip"));
-                    ui.label(RichText::new(&lang.tr("app.inspector.corrected")).weak())
-                        .on_hover_text(&lang.tr("app.inspector.corrected_tip"));
+                    ui.label(RichText::new(lang.tr("app.inspector.vertex")).weak());
+                    ui.label(RichText::new(lang.tr("app.inspector.screen")).weak())
+                        .on_hover_text(lang.tr("app.inspector.screen_tip"));
+                    ui.label(RichText::new(lang.tr("app.inspector.inv_w")).weak())
+                        .on_hover_text(lang.tr("app.inspector.inv_w_tip"));
+                    ui.label(RichText::new(lang.tr("app.inspector.corrected")).weak())
+                        .on_hover_text(lang.tr("app.inspector.corrected_tip"));
                     ui.end_row();
                     for (k, vk) in v.iter().enumerate() {
                         let mesh = vk
@@ -155,7 +155,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
                         let c = mesh.map_or(CLIP_POINT, vertex_color);
                         let name = ui.label(RichText::new(&vk.name).strong().color(color(c)));
                         if mesh.is_none() {
-                            name.on_hover_text(&lang.tr("app.inspector.clipped_vertex_tip"));
+                            name.on_hover_text(lang.tr("app.inspector.clipped_vertex_tip"));
                         }
                         ui.add_sized(
                             [NUMBER_WIDTH, 20.0],
@@ -235,7 +235,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
 /// Pinned and hovered side by side: the numbers that differ from pixel to pixel.
 fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
     let lang = super::locale::lang(ui.ctx());
-    ui.label(RichText::new(&lang.tr("app.inspector.compare")).strong());
+    ui.label(RichText::new(lang.tr("app.inspector.compare")).strong());
     let rows = |r: &PixelReport| -> Vec<String> {
         let d = r.trace.detail.as_ref();
         let w3 = |w: [f64; 3]| {
@@ -275,8 +275,8 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
                 .striped(true)
                 .show(ui, |ui| {
                     ui.label("");
-                    ui.label(RichText::new(&lang.tr("app.inspector.pinned")).weak());
-                    ui.label(RichText::new(&lang.tr("app.inspector.hovered")).weak());
+                    ui.label(RichText::new(lang.tr("app.inspector.pinned")).weak());
+                    ui.label(RichText::new(lang.tr("app.inspector.hovered")).weak());
                     ui.end_row();
                     for ((n, x), y) in names.iter().zip(&a).zip(&b) {
                         ui.add(egui::Label::new(RichText::new(*n).weak()).extend());
@@ -338,10 +338,10 @@ fn section_ui(ui: &mut Ui, index: usize, text: &str) {
 /// The inspector panel.
 pub fn inspector_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&PixelReport>) {
     let lang = super::locale::lang(ui.ctx());
-    ui.heading(&lang.tr("app.inspector.title"));
+    ui.heading(lang.tr("app.inspector.title"));
     let focus = hovered.or(pinned);
     let Some(focus) = focus else {
-        ui.label(&lang.tr("app.inspector.hover_hint"));
+        ui.label(lang.tr("app.inspector.hover_hint"));
         return;
     };
     let role = if hovered.is_some() {

@@ -70,7 +70,7 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
         .show(ctx, |ui| {
             if window.dialog_failed {
                 ui.label(
-                    RichText::new(&lang.tr("app.path_window.dialog_failed"))
+                    RichText::new(lang.tr("app.path_window.dialog_failed"))
                         .color(Color32::from_rgb(255, 200, 90)),
                 );
             }
@@ -89,8 +89,7 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
                 if ui.button(button).clicked() {
                     submit = true;
                 }
-                if !window.dialog_failed && ui.button(&lang.tr("app.path_window.browse")).clicked()
-                {
+                if !window.dialog_failed && ui.button(lang.tr("app.path_window.browse")).clicked() {
                     out.push(if window.saving {
                         FileCommand::SaveAsDialog
                     } else {

@@ -147,13 +147,14 @@ mod tests {
             scale: 4,
             ..ExportSettings::default()
         };
-        let saved = SavedState::capture(&s, &recent, &export);
+        let saved = SavedState::capture(&s, &recent, &export, Lang::Zh);
         let json = serde_json::to_string(&saved).expect("json");
         let back: SavedState = serde_json::from_str(&json).expect("parse");
         let restored = back.restore();
         assert_eq!(restored.error, None);
         assert_eq!(restored.state, s);
         assert_eq!((restored.recent, restored.export), (recent, export));
+        assert_eq!(restored.lang, Some(Lang::Zh));
 
         let broken = SavedState {
             scene_json: "{\"quad\": 3}".into(),

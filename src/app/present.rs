@@ -102,7 +102,7 @@ pub fn card_ui(
             }
         }
         ui.label(
-            RichText::new(&lang.tr("app.present.leave"))
+            RichText::new(lang.tr("app.present.leave"))
                 .size(size * 0.55)
                 .color(DIM),
         );

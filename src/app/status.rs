@@ -132,7 +132,7 @@ pub fn status_ui(
             &lang.tr("app.status.frame"),
             frame
         ))
-        .on_hover_text(&lang.tr("app.status.frame_tip"));
+        .on_hover_text(lang.tr("app.status.frame_tip"));
         if let Some(m) = message {
             ui.separator();
             let c = if m.error {
@@ -143,7 +143,7 @@ pub fn status_ui(
             ui.label(RichText::new(&m.text).color(c));
         }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            ui.label(RichText::new(&lang.tr("app.status.help")).weak());
+            ui.label(RichText::new(lang.tr("app.status.help")).weak());
         });
     });
 }

@@ -49,20 +49,20 @@ pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
         )));
         ui.separator();
         if ui
-            .selectable_label(input.presenting, &lang.tr("app.present.button"))
-            .on_hover_text(&lang.tr("app.present.button_tip"))
+            .selectable_label(input.presenting, lang.tr("app.present.button"))
+            .on_hover_text(lang.tr("app.present.button_tip"))
             .clicked()
         {
             out.push(AppCommand::SetPresenting(!input.presenting));
         }
         if compact {
-            ui.menu_button(&lang.tr("app.top_bar.view"), |ui| {
+            ui.menu_button(lang.tr("app.top_bar.view"), |ui| {
                 toggles(ui, input, &mut out);
                 ui.separator();
                 out.extend(command::all(controls::reset_ui(ui, input.state)));
             })
             .response
-            .on_hover_text(&lang.tr("app.top_bar.view_tip"));
+            .on_hover_text(lang.tr("app.top_bar.view_tip"));
         } else {
             toggles(ui, input, &mut out);
             ui.separator();
@@ -107,22 +107,22 @@ fn toggles(ui: &mut Ui, input: &TopBarInput<'_>, out: &mut Vec<AppCommand>) {
     let lang = super::locale::lang(ui.ctx());
     let view = &input.state.view;
     if ui
-        .selectable_label(view.show_controls, &lang.tr("app.top_bar.controls"))
-        .on_hover_text(&lang.tr("app.top_bar.controls_tip"))
+        .selectable_label(view.show_controls, lang.tr("app.top_bar.controls"))
+        .on_hover_text(lang.tr("app.top_bar.controls_tip"))
         .clicked()
     {
         out.push(Command::SetShowControls(!view.show_controls).into());
     }
     if ui
-        .selectable_label(view.show_inspector, &lang.tr("app.top_bar.inspector"))
-        .on_hover_text(&lang.tr("app.top_bar.inspector_tip"))
+        .selectable_label(view.show_inspector, lang.tr("app.top_bar.inspector"))
+        .on_hover_text(lang.tr("app.top_bar.inspector_tip"))
         .clicked()
     {
         out.push(Command::SetShowInspector(!view.show_inspector).into());
     }
     if ui
-        .selectable_label(input.export_open, &lang.tr("app.export.button"))
-        .on_hover_text(&lang.tr("app.export.button_tip"))
+        .selectable_label(input.export_open, lang.tr("app.export.button"))
+        .on_hover_text(lang.tr("app.export.button_tip"))
         .clicked()
     {
         out.push(
@@ -135,15 +135,15 @@ fn toggles(ui: &mut Ui, input: &TopBarInput<'_>, out: &mut Vec<AppCommand>) {
         );
     }
     if ui
-        .selectable_label(input.help_open, &lang.tr("app.top_bar.help"))
-        .on_hover_text(&lang.tr("app.top_bar.help_tip"))
+        .selectable_label(input.help_open, lang.tr("app.top_bar.help"))
+        .on_hover_text(lang.tr("app.top_bar.help_tip"))
         .clicked()
     {
         out.push(AppCommand::SetHelpOpen(!input.help_open));
     }
     if ui
-        .selectable_label(input.bench_open, &lang.tr("app.bench_panel.open"))
-        .on_hover_text(&lang.tr("app.bench_panel.open_tip"))
+        .selectable_label(input.bench_open, lang.tr("app.bench_panel.open"))
+        .on_hover_text(lang.tr("app.bench_panel.open_tip"))
         .clicked()
     {
         out.push(bench_panel::BenchCommand::SetOpen(!input.bench_open).into());
