@@ -11,12 +11,15 @@ use super::state::{AppState, Command};
 use super::{bench_panel, controls, file_menu, files};
 use crate::i18n::Lang;
 
+/// The text size slider's width in the bar, in points.
+const BAR_SLIDER: f32 = 140.0;
+
 /// Points the whole bar takes in one row, with the language switch at its end (the Chinese
 /// words are shorter); below that the View menu holds most of it.
 fn full_bar(lang: Lang) -> f32 {
     match lang {
-        Lang::En => 1480.0,
-        Lang::Zh => 1340.0,
+        Lang::En => 1450.0,
+        Lang::Zh => 1300.0,
     }
 }
 
@@ -66,7 +69,11 @@ pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
         } else {
             toggles(ui, input, &mut out);
             ui.separator();
-            out.extend(command::all(controls::reset_ui(ui, input.state)));
+            // A shorter text size slider than the panels' leaves room for the language switch.
+            ui.scope(|ui| {
+                ui.spacing_mut().slider_width = BAR_SLIDER;
+                out.extend(command::all(controls::reset_ui(ui, input.state)));
+            });
         }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             out.extend(language_ui(ui, lang, input.cjk_font));
