@@ -33,6 +33,16 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     let mut out = Vec::new();
     let options = state.options();
     let view = &state.view;
+    fit_sliders(
+        ui,
+        &[
+            "app.controls.pixel_size",
+            "app.controls.pitch",
+            "app.controls.yaw",
+            "app.controls.fov",
+        ]
+        .map(|k| lang.tr(k)),
+    );
 
     section(ui, &lang.tr("app.controls.interpolation"));
     ui.horizontal_wrapped(|ui| {
@@ -292,6 +302,27 @@ pub fn reset_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         out.push(Command::SetUiScale(scale));
     }
     out
+}
+
+/// Room for a slider's value field (with its unit), in points.
+const SLIDER_VALUE: f32 = 64.0;
+
+/// Narrows this panel's sliders so that the longest of their `labels` fits beside them in
+/// either language, at any text size (a slider's label is drawn to its right and would be cut
+/// at the panel's edge).
+fn fit_sliders(ui: &mut Ui, labels: &[String]) {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let widest = labels
+        .iter()
+        .map(|l| {
+            ui.painter()
+                .layout_no_wrap(l.clone(), font.clone(), Color32::WHITE)
+                .size()
+                .x
+        })
+        .fold(0.0, f32::max);
+    let room = ui.available_width() - widest - SLIDER_VALUE - 2.0 * ui.spacing().item_spacing.x;
+    ui.spacing_mut().slider_width = room.clamp(60.0, 180.0);
 }
 
 fn section(ui: &mut Ui, title: &str) {

@@ -69,27 +69,29 @@ const KEY_ROWS: &[(&str, &str)] = &[
     ("app.help.key_rows.k19.key", "app.help.key_rows.k19.what"),
 ];
 
-/// The help window's contents.
+/// The help window's contents (they scroll when the window is shorter than they are).
 pub fn help_ui(ui: &mut Ui) {
     let lang = super::locale::lang(ui.ctx());
-    ui.label(lang.tr("app.help.intro"));
-    ui.add_space(8.0);
-    for (id, title, rows) in [
-        ("help-mouse", "app.help.mouse", MOUSE_ROWS),
-        ("help-keys", "app.help.keys", KEY_ROWS),
-    ] {
-        ui.label(RichText::new(lang.tr(title)).strong());
-        egui::Grid::new(id)
-            .num_columns(2)
-            .striped(true)
-            .spacing([16.0, 4.0])
-            .show(ui, |ui| {
-                for (k, what) in rows {
-                    ui.label(RichText::new(lang.tr(k)).monospace().strong());
-                    ui.label(lang.tr(what));
-                    ui.end_row();
-                }
-            });
+    egui::ScrollArea::vertical().show(ui, |ui| {
+        ui.label(lang.tr("app.help.intro"));
         ui.add_space(8.0);
-    }
+        for (id, title, rows) in [
+            ("help-mouse", "app.help.mouse", MOUSE_ROWS),
+            ("help-keys", "app.help.keys", KEY_ROWS),
+        ] {
+            ui.label(RichText::new(lang.tr(title)).strong());
+            egui::Grid::new(id)
+                .num_columns(2)
+                .striped(true)
+                .spacing([16.0, 4.0])
+                .show(ui, |ui| {
+                    for (k, what) in rows {
+                        ui.label(RichText::new(lang.tr(k)).monospace().strong());
+                        ui.label(lang.tr(what));
+                        ui.end_row();
+                    }
+                });
+            ui.add_space(8.0);
+        }
+    });
 }
