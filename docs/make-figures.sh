@@ -18,7 +18,7 @@ done
 # shows timings, so tests/docs_figures.rs does not compare them.
 if [[ -n "${DISPLAY:-}" ]]; then
   rm -f docs/figures/app-zh.png
-  ./target/release/barylab --fresh --lang zh --window 1280x800 --text-size 1.2 --pin 400,420 \
+  ./target/release/barylab --fresh --lang zh --window 1280x800 --pin 400,420 \
     --screenshot docs/figures/app-zh.png
   echo "docs/figures/app-zh.png"
 fi
