@@ -17,7 +17,8 @@
 //!   canvas's renders and their cache), [`textures`] (the scene's texture), [`pixel`] and
 //!   [`reports`] (the inspector's probe of a pixel, one prober per render), [`paint`] (overlays
 //!   with egui), [`dialog`] (native file dialogs), [`screenshot`] (window screenshots),
-//!   [`style`] (text sizes, zoom).
+//!   [`style`] (text sizes, zoom), [`locale`] (the language the panels show, from the
+//!   catalogues' `app:` section, and the Chinese font).
 //!
 //! The overlays and the difference heatmap are described in [`crate::figure`], which the
 //! exported figures share.
@@ -56,10 +57,13 @@ pub mod status;
 pub mod style;
 pub mod textures;
 pub mod top_bar;
+mod window;
+
+pub use window::run;
 
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 use std::time::Instant;
 
 use self::banner::Banner;
@@ -71,7 +75,7 @@ use self::file_menu::FilePicker;
 use self::files::{FileCommand, OpenedFile, RecentFiles};
 use self::persist::{STORAGE_KEY, SavedState};
 use self::reports::PixelReports;
-use self::screenshot::{ShotSlot, StartupShot};
+use self::screenshot::StartupShot;
 use self::side_panels::Side;
 use self::state::AppState;
 use self::status::{Cause, FrameTiming, Message};
@@ -120,9 +124,6 @@ pub enum AppError {
     #[error("screenshot {path}: {message}")]
     Screenshot { path: String, message: String },
 }
-
-/// Default window size in points.
-const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];
 
 /// The app.
 pub struct BaryApp {
@@ -569,46 +570,4 @@ impl eframe::App for BaryApp {
     fn persist_egui_memory(&self) -> bool {
         self.persist
     }
-}
-
-/// Opens the window and runs the app until it is closed.
-pub fn run(options: AppOptions) -> Result<(), AppError> {
-    // The title follows the language once the app runs ([`BaryApp::sync_lang`]).
-    let lang = options.lang.unwrap_or(options.system_lang);
-    let size = options.window_size.unwrap_or(WINDOW_SIZE);
-    let native = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default()
-            .with_title(lang.tr("app.title"))
-            .with_app_id("barylab")
-            .with_inner_size(size)
-            .with_min_inner_size([800.0, 500.0]),
-        persist_window: options.persist,
-        // Dithering would add noise to the canvas; its pixels must show exactly.
-        dithering: false,
-        ..Default::default()
-    };
-    let screenshot = options.screenshot.clone();
-    // Where the app's `--screenshot` reports, read once the window has closed.
-    let result_slot: Arc<Mutex<Option<ShotSlot>>> = Arc::new(Mutex::new(None));
-    let slot = result_slot.clone();
-    eframe::run_native(
-        "barylab",
-        native,
-        Box::new(move |cc| {
-            let app = BaryApp::new_with_state_file(cc.storage, options, persist::state_file());
-            if let (Some(shot), Ok(mut s)) = (&app.screenshot, slot.lock()) {
-                *s = Some(shot.slot());
-            }
-            Ok(Box::new(app))
-        }),
-    )
-    .map_err(|e| AppError::Window(e.to_string()))?;
-    if let Some(path) = screenshot {
-        let shot = result_slot.lock().ok().and_then(|s| s.clone());
-        screenshot::result_of(shot.as_ref()).map_err(|message| AppError::Screenshot {
-            path: path.display().to_string(),
-            message,
-        })?;
-    }
-    Ok(())
 }
