@@ -154,6 +154,33 @@ fn chinese_mode_shows_no_english_catalogue_text() {
     assert!(shows(&h_en, &en["app.controls.interpolation"]));
 }
 
+/// A projector's narrow bar at the largest text size has room for one language button: the
+/// other language's, which still switches.
+#[test]
+fn a_narrow_bar_offers_the_other_language() {
+    if !have_cjk_font() {
+        return;
+    }
+    let mut app = BaryApp::new(None, AppOptions::default());
+    app.push(Command::SetUiScale(2.5));
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1024.0, 768.0))
+        .with_max_steps(30)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    for _ in 0..4 {
+        h.step();
+    }
+    h.run();
+    assert!(shows(&h, "中文") && !shows(&h, "English"));
+    h.get_by_label("中文").click();
+    h.run();
+    assert_eq!(h.state().lang(), Lang::Zh);
+    assert!(shows(&h, "English") && !shows(&h, "中文"));
+    h.get_by_label("English").click();
+    h.run();
+    assert_eq!(h.state().lang(), Lang::En);
+}
+
 /// The inspector's derivation is written in the app's language, and follows a switch.
 #[test]
 fn the_derivation_follows_the_language() {

@@ -83,22 +83,34 @@ pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
 }
 
 /// The language switch, English / 中文, at the bar's right end (outside the View menu, so it
-/// is always one click away). Without a Chinese font, Chinese is offered in English words and
-/// choosing it says why it cannot be shown.
+/// is always one click away). Where the bar has no room for both (a narrow window at a large
+/// text size) only the other language is offered. Without a Chinese font, Chinese is offered in
+/// English words and choosing it says why it cannot be shown.
 fn language_ui(ui: &mut Ui, lang: Lang, cjk_font: bool) -> Option<AppCommand> {
+    let name = |l: Lang| match l {
+        Lang::Zh if !cjk_font => "Chinese",
+        l => l.native_name(),
+    };
+    let font = egui::TextStyle::Button.resolve(ui.style());
+    let width = |text: &str| {
+        ui.painter()
+            .layout_no_wrap(text.to_string(), font.clone(), egui::Color32::WHITE)
+            .size()
+            .x
+            + 2.0 * ui.spacing().button_padding.x
+            + ui.spacing().item_spacing.x
+    };
+    let both: f32 = Lang::ALL.into_iter().map(|l| width(name(l))).sum();
+    let room = ui.available_width() >= both;
     let mut picked = None;
     // Right to left: the last language first.
-    for l in Lang::ALL.into_iter().rev() {
-        let name = match l {
-            Lang::Zh if !cjk_font => "Chinese",
-            l => l.native_name(),
-        };
+    for l in Lang::ALL.into_iter().rev().filter(|&l| room || l != lang) {
         let tip = match l {
             Lang::Zh if !cjk_font => Lang::En.tr(super::locale::NO_CJK_FONT),
             l => l.tr("app.top_bar.lang_tip"),
         };
         if ui
-            .selectable_label(lang == l, name)
+            .selectable_label(lang == l, name(l))
             .on_hover_text(tip)
             .clicked()
             && lang != l
