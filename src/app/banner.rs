@@ -66,9 +66,12 @@ impl Banner {
 
     /// Everything the banner says, one line each (for tests and the status line).
     pub fn lines(&self) -> Vec<String> {
-        let note = self.lang.tr("app.banner.note");
         std::iter::once(self.text.clone())
-            .chain(self.notes.iter().map(|n| format!("{note}: {n}")))
+            .chain(
+                self.notes
+                    .iter()
+                    .map(|n| self.lang.tr_with("app.banner.note", &[("note", n)])),
+            )
             .collect()
     }
 }
@@ -121,7 +124,7 @@ pub fn banner_ui(ui: &mut Ui, b: &Banner) -> Vec<FileCommand> {
                     for n in &b.notes {
                         ui.add(
                             egui::Label::new(
-                                RichText::new(format!("{}: {n}", &lang.tr("app.banner.note")))
+                                RichText::new(lang.tr_with("app.banner.note", &[("note", n)]))
                                     .color(Color32::from_rgb(255, 215, 120)),
                             )
                             .wrap(),

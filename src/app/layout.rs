@@ -167,7 +167,7 @@ fn strip(ui: &mut egui::Ui, id: &'static str, left: bool, name: &str) -> Vec<App
             let icon = if left { "»" } else { "«" };
             if ui
                 .button(icon)
-                .on_hover_text(format!("{name}: {}", &lang.tr("app.layout.strip_tip")))
+                .on_hover_text(lang.tr_with("app.layout.strip_tip", &[("panel", &name)]))
                 .clicked()
             {
                 out.push(
