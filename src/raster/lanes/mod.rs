@@ -1,9 +1,5 @@
 //! The fast path: eight pixels of a row at a time, colour and depth only.
 //!
-//! (Longer than the project's ~600 lines: the portable lane code and the types the AVX2 and
-//! AVX-512 files mirror are kept together, so a reader sees every step of the arithmetic that
-//! must stay bit-identical in one place.)
-//!
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
 //! nearest or bilinear filtering, vertex colour, barycentric and depth shading, and the
@@ -49,6 +45,16 @@ use super::shade::{WIRE_COLOR, depth_grey, on_wire_edge, unorm8};
 use super::texture::{
     self, Filter, Texture, Wrap, bilinear_fraction, bilinear_weights, byte_from_sum, wrap_coord,
 };
+
+mod blocks;
+mod sampler;
+mod scanline;
+
+pub use blocks::EdgePlanes;
+use blocks::{Block, classify};
+use sampler::{LaneWrap, Sampler};
+use scanline::Stepped;
+pub use scanline::scanline_triangle;
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
@@ -154,103 +160,6 @@ pub enum LaneColor {
     Barycentric,
     /// Grey from the window depth, black at `.0` and white at `.1`.
     Depth(f64, f64),
-}
-
-/// The edge functions of a triangle as planes over pixel indices:
-/// `E_i(col, row) = a_i col + b_i row + c_i`, the value at the pixel centre
-/// `(256 col + 128, 256 row + 128)` (1/256 pixel units). A pixel passes edge `i` when
-/// `E_i >= t_i`, with `t_i = 0` on an inclusive (left or bottom) edge and 1 otherwise.
-///
-/// ```
-/// use barylab::raster::clip::ClipVertex;
-/// use barylab::raster::lanes::EdgePlanes;
-/// use barylab::raster::project::{project_vertex, Viewport};
-/// use barylab::raster::setup::{sample_point, setup_triangle};
-/// use barylab::raster::varying::Varyings;
-/// use glam::DVec4;
-/// let vp = Viewport { width: 8, height: 8 };
-/// let at = |x: f64, y: f64| project_vertex(&ClipVertex::new(
-///     DVec4::new(x / 4.0 - 1.0, 1.0 - y / 4.0, 0.0, 1.0), Varyings::default()), vp);
-/// let s = setup_triangle([at(0.0, 0.0), at(8.0, 0.0), at(0.0, 8.0)], vp).unwrap();
-/// let planes = EdgePlanes::new(&s);
-/// // The planes give the setup's own edge values at every pixel centre.
-/// assert_eq!(planes.at(2, 3), s.edge_values(sample_point(3, 2)));
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct EdgePlanes {
-    pub a: [i64; 3],
-    pub b: [i64; 3],
-    pub c: [i64; 3],
-    pub t: [i64; 3],
-}
-
-impl EdgePlanes {
-    /// From `E(P) = dir_x (P_y - S_y) - dir_y (P_x - S_x)` with `P = (256 col + 128, 256 row + 128)`.
-    pub fn new(setup: &TriangleSetup) -> Self {
-        let half = SUBPIXEL / 2;
-        let mut out = Self {
-            a: [0; 3],
-            b: [0; 3],
-            c: [0; 3],
-            t: [0; 3],
-        };
-        for (i, e) in setup.edges.iter().enumerate() {
-            out.a[i] = -e.dir.y * SUBPIXEL;
-            out.b[i] = e.dir.x * SUBPIXEL;
-            out.c[i] = e.dir.x * (half - e.start.y) - e.dir.y * (half - e.start.x);
-            out.t[i] = e.min_value();
-        }
-        out
-    }
-
-    /// The three edge values at pixel (col, row).
-    pub fn at(&self, row: i64, col: i64) -> [i64; 3] {
-        [0, 1, 2].map(|i| self.a[i] * col + self.b[i] * row + self.c[i])
-    }
-
-    /// Whether every edge value over the columns `x0..=x1 + LANES` and rows `y0..=y1` is
-    /// exact in `f64` (an edge function is linear, so its extremes are at the corners).
-    fn exact_over(&self, b: &PixelBounds) -> bool {
-        let (x0, x1) = (i64::from(b.x0), i64::from(b.x1) + LANES as i64);
-        let (y0, y1) = (i64::from(b.y0), i64::from(b.y1));
-        [(y0, x0), (y0, x1), (y1, x0), (y1, x1)]
-            .iter()
-            .all(|&(r, c)| self.at(r, c).iter().all(|v| v.abs() < EXACT_EDGE_LIMIT))
-    }
-}
-
-/// How a block relates to the triangle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Block {
-    /// Outside one edge at all four corners: no pixel is covered.
-    Outside,
-    /// Inside every edge at all four corners: every pixel is covered.
-    Inside,
-    /// Pixels need testing one by one.
-    Partial,
-}
-
-fn classify(planes: &EdgePlanes, cols: (i64, i64), rows: (i64, i64)) -> Block {
-    let corners = [
-        planes.at(rows.0, cols.0),
-        planes.at(rows.0, cols.1),
-        planes.at(rows.1, cols.0),
-        planes.at(rows.1, cols.1),
-    ];
-    let mut inside = true;
-    for i in 0..3 {
-        let lo = corners.iter().map(|e| e[i]).min().unwrap_or(0);
-        let hi = corners.iter().map(|e| e[i]).max().unwrap_or(0);
-        if hi < planes.t[i] {
-            return Block::Outside;
-        }
-        inside &= lo >= planes.t[i];
-    }
-    if inside {
-        Block::Inside
-    } else {
-        Block::Partial
-    }
 }
 
 /// Per-triangle constants of the interpolation, as [`interpolate::fragment`] uses them.
@@ -445,115 +354,6 @@ fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
     out
 }
 
-/// The texture module's `texel_floor` as an `i32` (it clamps to +-1e9, which fits).
-#[inline(always)]
-fn texel_floor(x: f32) -> i32 {
-    texture::texel_floor(x) as i32
-}
-
-/// A wrap mode applied to lanes of texel coordinates along one axis of `size` texels.
-#[derive(Clone, Copy)]
-enum LaneWrap {
-    /// Repeat on a power-of-two size: a mask (two's complement makes it `rem_euclid`).
-    Mask(i32),
-    /// Clamp to edge: `clamp(0, size - 1)`.
-    Clamp(i32),
-    /// Anything else: the texture module's `wrap_coord` outside the texture.
-    General(u32, Wrap),
-}
-
-impl LaneWrap {
-    fn new(size: u32, wrap: Wrap) -> Self {
-        match wrap {
-            Wrap::Repeat if size.is_power_of_two() => LaneWrap::Mask(size as i32 - 1),
-            Wrap::ClampToEdge => LaneWrap::Clamp(size as i32 - 1),
-            _ => LaneWrap::General(size, wrap),
-        }
-    }
-
-    #[inline(always)]
-    fn apply(self, i: i32) -> usize {
-        match self {
-            LaneWrap::Mask(m) => (i & m) as usize,
-            LaneWrap::Clamp(hi) => i.clamp(0, hi) as usize,
-            LaneWrap::General(size, wrap) => {
-                if (0..size as i32).contains(&i) {
-                    i as usize
-                } else {
-                    wrap_coord(i64::from(i), size, wrap) as usize
-                }
-            }
-        }
-    }
-}
-
-/// The base level of a texture, ready for lane lookups.
-struct Sampler<'a> {
-    texels: &'a [[u8; 4]],
-    width: usize,
-    size: (f32, f32),
-    wrap: (LaneWrap, LaneWrap),
-    filter: Filter,
-}
-
-impl<'a> Sampler<'a> {
-    fn new(texture: &'a Texture, filter: Filter, wrap: Wrap) -> Self {
-        let (w, h) = (texture.width(), texture.height());
-        Self {
-            texels: texture.base_texels(),
-            width: w as usize,
-            size: (w as f32, h as f32),
-            wrap: (LaneWrap::new(w, wrap), LaneWrap::new(h, wrap)),
-            filter,
-        }
-    }
-
-    #[inline(always)]
-    fn texel(&self, i: usize, j: usize) -> [u8; 4] {
-        self.texels[j * self.width + i]
-    }
-
-    /// The colours at eight uv, as [`Texture::sample_rgba8`] computes them.
-    #[inline(always)]
-    fn sample(&self, u: &F32s, v: &F32s, out: &mut [[u8; 4]; LANES]) {
-        match self.filter {
-            // One texel of weight 1: `round(0 + 1 * c)` is exactly `c`, so the texel is the
-            // colour.
-            Filter::Nearest => {
-                for k in 0..LANES {
-                    let i = self.wrap.0.apply(texel_floor(u[k] * self.size.0));
-                    let j = self.wrap.1.apply(texel_floor(v[k] * self.size.1));
-                    out[k] = self.texel(i, j);
-                }
-            }
-            _ => {
-                for k in 0..LANES {
-                    let x = u[k] * self.size.0 - 0.5;
-                    let y = v[k] * self.size.1 - 0.5;
-                    let (i0, j0) = (texel_floor(x), texel_floor(y));
-                    let (a, b) = (bilinear_fraction(x), bilinear_fraction(y));
-                    let (ia, ib) = (self.wrap.0.apply(i0), self.wrap.0.apply(i0 + 1));
-                    let (ja, jb) = (self.wrap.1.apply(j0), self.wrap.1.apply(j0 + 1));
-                    let weights = bilinear_weights(a, b);
-                    let texels = [
-                        self.texel(ia, ja),
-                        self.texel(ib, ja),
-                        self.texel(ia, jb),
-                        self.texel(ib, jb),
-                    ];
-                    let mut sum = [0.0f32; 4];
-                    for (wt, t) in weights.iter().zip(&texels) {
-                        for ch in 0..4 {
-                            sum[ch] += wt * f32::from(t[ch]);
-                        }
-                    }
-                    out[k] = sum.map(byte_from_sum);
-                }
-            }
-        }
-    }
-}
-
 /// Depth-tests and writes the valid lanes of one row chunk starting at column `x`.
 #[inline(always)]
 fn write(target: &mut Target<'_>, x: u32, y: u32, s: &Samples, colors: &[[u8; 4]; LANES]) {
@@ -708,161 +508,6 @@ fn edge_triangle_impl(
             bx += LANES as u32;
         }
         by = by_end + 1;
-    }
-}
-
-/// The scanline rasterizer's lane path for rows `rows` (within the target band).
-pub fn scanline_triangle(
-    setup: &TriangleSetup,
-    rows: (u32, u32),
-    texture: &Texture,
-    shading: LaneShading,
-    target: &mut Target<'_>,
-) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if vector_path() {
-            if let Some(sampler) = avx2::VecSampler::new(texture, &shading) {
-                // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                unsafe {
-                    avx2::scanline_triangle(
-                        setup,
-                        rows,
-                        &sampler,
-                        wide_path(),
-                        shading.mode,
-                        target,
-                    )
-                };
-                return;
-            }
-            // SAFETY: as above.
-            unsafe { scanline_triangle_avx2(setup, rows, texture, shading, target) };
-            return;
-        }
-    }
-    scanline_triangle_impl(setup, rows, texture, shading, target);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn scanline_triangle_avx2(
-    setup: &TriangleSetup,
-    rows: (u32, u32),
-    texture: &Texture,
-    shading: LaneShading,
-    target: &mut Target<'_>,
-) {
-    scanline_triangle_impl(setup, rows, texture, shading, target);
-}
-
-/// What the scanline lanes step: `u`, `v` (divided by w when perspective-correct), `1/w`
-/// and depth, each linear along a row.
-#[derive(Clone, Copy, Default)]
-struct Stepped {
-    u: f64,
-    v: f64,
-    inv_w: f64,
-    depth: f64,
-}
-
-impl Stepped {
-    /// The stepped quantities for screen weights `l` (a point's weights, or their per-pixel
-    /// increments: the map is linear).
-    fn from_weights(l: [f64; 3], c: &Constants, mode: Interpolation) -> Self {
-        let mut s = Self::default();
-        for k in 0..3 {
-            let scale = match mode {
-                Interpolation::Perspective => l[k] * c.inv_w[k],
-                Interpolation::Affine => l[k],
-            };
-            s.u += scale * c.u[k];
-            s.v += scale * c.v[k];
-            s.inv_w += l[k] * c.inv_w[k];
-            s.depth += l[k] * c.depth[k];
-        }
-        s
-    }
-
-    /// The increments per pixel along a row: the map applied to the screen weights'
-    /// increments [`WeightPlanes::step_x`] (as the per-pixel scanline rasterizer steps them).
-    fn row_step(c: &Constants, mode: Interpolation) -> Self {
-        Self::from_weights(c.weights.step_x(), c, mode)
-    }
-
-    /// The values at the first pixel `x0` of a span of row `y`.
-    fn span_start(c: &Constants, mode: Interpolation, x0: u32, y: u32) -> Self {
-        Self::from_weights(c.weights.at_pixel(x0, y), c, mode)
-    }
-
-    /// The values of a row's first eight pixels: lane k is `start` after k single steps.
-    fn lanes(start: Self, step: &Self) -> [Self; LANES] {
-        let mut lanes = [start; LANES];
-        for k in 1..LANES {
-            let p = lanes[k - 1];
-            lanes[k] = Self {
-                u: p.u + step.u,
-                v: p.v + step.v,
-                inv_w: p.inv_w + step.inv_w,
-                depth: p.depth + step.depth,
-            };
-        }
-        lanes
-    }
-}
-
-#[inline(always)]
-fn scanline_triangle_impl(
-    setup: &TriangleSetup,
-    (y_start, y_end): (u32, u32),
-    texture: &Texture,
-    shading: LaneShading,
-    target: &mut Target<'_>,
-) {
-    // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
-    // scanline code).
-    let mode = shading.mode;
-    let consts = Constants::new(setup, mode, false, LaneColor::Texture);
-    let sampler = Sampler::new(texture, shading.filter, shading.wrap);
-    let step = Stepped::row_step(&consts, mode);
-    let mut colors = [[0u8; 4]; LANES];
-    for y in y_start..=y_end {
-        let Some((x0, x1)) = row_span(setup, y) else {
-            continue;
-        };
-        let start = Stepped::span_start(&consts, mode, x0, y);
-        // Lane k holds pixel x0 + k; each chunk advances every lane by eight increments.
-        let mut lanes = Stepped::lanes(start, &step);
-        let n = LANES as f64;
-        let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
-        let mut x = x0;
-        while x <= x1 {
-            let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
-            let mut s = Samples::new();
-            for k in 0..LANES {
-                let l = &lanes[k];
-                s.ok[k] = k < lanes_in && l.inv_w > 0.0 && l.inv_w < f64::INFINITY;
-                let (u, v) = match mode {
-                    Interpolation::Perspective => {
-                        let w = 1.0 / l.inv_w;
-                        (l.u * w, l.v * w)
-                    }
-                    Interpolation::Affine => (l.u, l.v),
-                };
-                s.u[k] = u as f32;
-                s.v[k] = v as f32;
-                s.depth[k] = l.depth as f32;
-            }
-            sampler.sample(&s.u, &s.v, &mut colors);
-            write(target, x, y, &s, &colors);
-            for l in lanes.iter_mut() {
-                l.u += su;
-                l.v += sv;
-                l.inv_w += sw;
-                l.depth += sd;
-            }
-            x += LANES as u32;
-        }
     }
 }
 
