@@ -241,6 +241,7 @@ pub fn tie_lattice() -> (ClipMesh, RenderSettings) {
             (k % 5) as f32 / 4.0,
             (k % 7) as f32 / 6.0,
         ),
+        normal: Vec3::ZERO,
     };
     let mut mesh = ClipMesh::default();
     let (nx, ny, step, origin) = (7usize, 5usize, 6.0, (4.5, 5.5));

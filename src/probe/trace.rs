@@ -470,4 +470,26 @@ pub struct ShadeTrace {
     pub wire_width_px: Option<f64>,
     /// The colour the fragment shades to.
     pub color: [u8; 4],
+    /// The normal behind a normal or Lambert shade (those shadings only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub normal: Option<NormalTrace>,
+}
+
+/// The normal of a [`Shading::Normal`] or [`Shading::Lambert`] fragment, in view space (x
+/// right, y up, z towards the viewer).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct NormalTrace {
+    /// The vertex normals interpolated in the trace's mode (shorter than 1 between vertices).
+    pub interpolated: [f32; 3],
+    /// Its length `|n|`.
+    pub length: f32,
+    /// `n̂ = n / |n|` ([`shade::unit_normal`](crate::raster::shade::unit_normal)).
+    pub unit: [f32; 3],
+    /// The Lambert brightness `AMBIENT + (1 - AMBIENT) max(0, n̂ · l)`, `l = (0, 0, 1)`
+    /// ([`shade::lambert_factor`](crate::raster::shade::lambert_factor)).
+    pub lambert: f32,
+    /// [`shade::AMBIENT`](crate::raster::shade::AMBIENT).
+    pub ambient: f32,
+    /// The interpolated vertex colour, the Lambert shade's albedo.
+    pub albedo: [f32; 3],
 }

@@ -4,11 +4,18 @@
 use glam::{DVec4, Vec2, Vec3};
 
 /// One vertex of a mesh, already in clip space.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct MeshVertex {
+    /// Position in clip space (OpenGL: visible where -w <= x, y, z <= w).
     pub clip: DVec4,
+    /// Texture coordinate (u right, v up; texel row 0 at v = 0).
     pub uv: Vec2,
+    /// RGB vertex colour, each channel in [0, 1].
     pub color: Vec3,
+    /// Unit normal in view space (x right, y up, z towards the viewer), for normal and
+    /// Lambert shading; zero when the scene has none (clip-space scenes), read as facing
+    /// the viewer.
+    pub normal: Vec3,
 }
 
 /// Triangles over clip-space vertices: what the rasterizer draws.
@@ -29,7 +36,7 @@ impl ClipMesh {
     /// ```
     /// use barylab::raster::render::{ClipMesh, MeshVertex};
     /// use glam::{DVec4, Vec2, Vec3};
-    /// let v = |x: f64, y: f64| MeshVertex { clip: DVec4::new(x, y, 0.0, 1.0), uv: Vec2::ZERO, color: Vec3::ONE };
+    /// let v = |x: f64, y: f64| MeshVertex { clip: DVec4::new(x, y, 0.0, 1.0), uv: Vec2::ZERO, color: Vec3::ONE, ..Default::default() };
     /// let m = ClipMesh { vertices: vec![v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0)], triangles: vec![[0, 1, 2]] };
     /// let s = m.subdivided(3);
     /// assert_eq!(s.triangles.len(), 9);
@@ -71,10 +78,12 @@ impl ClipMesh {
                     let clip = mix3(&|m| m.clip);
                     let uv = mix3(&|m| m.uv.as_dvec2().extend(0.0).extend(0.0));
                     let color = mix3(&|m| m.color.as_dvec3().extend(0.0));
+                    let normal = mix3(&|m| m.normal.as_dvec3().extend(0.0));
                     out.vertices.push(MeshVertex {
                         clip,
                         uv: uv.truncate().truncate().as_vec2(),
                         color: color.truncate().as_vec3(),
+                        normal: normal.truncate().as_vec3(),
                     });
                 }
             }

@@ -167,7 +167,10 @@ pub fn source_vertices(mesh: &ClipMesh, index: u32) -> Option<[ClipVertex; 3]> {
         let v = mesh.vertices.get(vi as usize)?;
         let mut bary = [0.0; 3];
         bary[k] = 1.0;
-        *o = ClipVertex::new(v.clip, Varyings::new(bary, v.uv, v.color));
+        *o = ClipVertex::new(
+            v.clip,
+            Varyings::new(bary, v.uv, v.color).with_normal(v.normal),
+        );
     }
     Some(out)
 }
@@ -458,6 +461,8 @@ fn rasterize(
             params.depth_range.0,
             params.depth_range.1,
         )),
+        // Per pixel: the normal is renormalized at every fragment.
+        Shading::Normal | Shading::Lambert => None,
     };
     let lane_shading = lane_color.map(|color| LaneShading {
         mode: params.mode,

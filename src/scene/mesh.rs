@@ -117,17 +117,23 @@ impl Scene {
             Scene::World(s) => {
                 let aspect = f64::from(s.width) / f64::from(s.height);
                 let clip_from_object = s.camera.clip_from_world(aspect) * self.world_from_object();
+                let view_from_object = s.camera.view_from_world() * self.world_from_object();
+                let triangles = vec![[0, 1, 2], [0, 2, 3]];
+                let positions = s.quad.map(|c| c.position);
+                let normals = vertex_normals(&positions, &triangles);
                 ClipMesh {
                     vertices: s
                         .quad
                         .iter()
-                        .map(|c| MeshVertex {
+                        .zip(&normals)
+                        .map(|(c, n)| MeshVertex {
                             clip: clip_from_object * c.position.extend(1.0),
                             uv: c.uv,
                             color: c.color,
+                            normal: view_normal(&view_from_object, *n),
                         })
                         .collect(),
-                    triangles: vec![[0, 1, 2], [0, 2, 3]],
+                    triangles,
                 }
             }
             Scene::Clip(s) => {
@@ -139,6 +145,8 @@ impl Scene {
                             clip: v.clip,
                             uv: v.uv,
                             color: v.color,
+                            // No view space: read as facing the viewer.
+                            normal: Vec3::ZERO,
                         })
                         .collect(),
                     triangles: s.triangles.clone(),
@@ -151,6 +159,7 @@ impl Scene {
             Scene::Model(s) => {
                 let aspect = f64::from(s.width) / f64::from(s.height);
                 let clip_from_world = s.camera().clip_from_world(aspect);
+                let view_from_world = s.camera().view_from_world();
                 let m = &s.mesh;
                 ClipMesh {
                     vertices: (0..m.positions.len())
@@ -158,6 +167,7 @@ impl Scene {
                             clip: clip_from_world * m.positions[i].extend(1.0),
                             uv: m.uvs[i],
                             color: m.colors[i],
+                            normal: view_normal(&view_from_world, m.normals[i]),
                         })
                         .collect(),
                     triangles: m.triangles.clone(),
@@ -165,4 +175,24 @@ impl Scene {
             }
         }
     }
+}
+
+/// An object-space normal in view space: `N n` normalized, with the normal matrix
+/// `N = (M^-1)^T` of the upper-left 3x3 of `view_from_object` (normals stay perpendicular to
+/// the surface under non-uniform scaling). Zero for a zero normal or a singular matrix.
+///
+/// ```
+/// use barylab::scene::view_normal;
+/// use glam::{DMat4, DVec3, Vec3};
+/// // Scaling x by 2 turns the 45-degree normal (1, 1, 0) towards y: (1/2, 1, 0) normalized.
+/// let n = view_normal(&DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0)), DVec3::new(1.0, 1.0, 0.0));
+/// let expected = DVec3::new(0.5, 1.0, 0.0).normalize().as_vec3();
+/// assert!((n - expected).length() < 1e-6);
+/// ```
+pub fn view_normal(view_from_object: &DMat4, n: DVec3) -> Vec3 {
+    let m = DMat3::from_mat4(*view_from_object);
+    if m.determinant().abs() < f64::MIN_POSITIVE {
+        return Vec3::ZERO;
+    }
+    (m.inverse().transpose() * n).normalize_or_zero().as_vec3()
 }

@@ -10,12 +10,12 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use glam::{DMat4, DVec3, DVec4, Vec2, Vec3};
+use glam::{DMat3, DMat4, DVec3, DVec4, Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
 use crate::budget::{self, MemoryError};
 use crate::files::{self, FileKind, ReadError, shown};
-use crate::model::{ModelError, ModelMesh};
+use crate::model::{ModelError, ModelMesh, vertex_normals};
 use crate::raster::camera::{Camera, CameraError, Projection};
 use crate::raster::project::MAX_IMAGE_SIZE;
 use crate::raster::render::{ClipMesh, DEFAULT_BACKGROUND, MeshVertex, RenderSettings};
@@ -30,6 +30,7 @@ mod mesh;
 
 use forms::default_texture;
 pub use forms::{ClipScene, ClipSceneVertex, Corner, ModelScene, Tilt, WorldScene};
+pub use mesh::view_normal;
 
 /// Errors while reading or checking a scene.
 #[derive(Debug, thiserror::Error)]
@@ -366,7 +367,8 @@ impl Scene {
                         "; the texture shows as one colour (every vertex has uv (0, 0))"
                     }
                     Shading::VertexColor => "; shading by vertex colour",
-                    Shading::Barycentric | Shading::Depth => "",
+                    Shading::Lambert => "; lit by a headlight (Lambert shading) to show its shape",
+                    Shading::Barycentric | Shading::Depth | Shading::Normal => "",
                 };
                 format!("{n}{meaning}")
             })
@@ -412,10 +414,11 @@ impl Scene {
                 s.background,
             ),
             Scene::Model(s) => {
+                // Without uvs a texture would be one colour: light the shape instead.
                 let shading = s.shading.unwrap_or(if s.mesh.has_uv {
                     Shading::Texture
                 } else {
-                    Shading::VertexColor
+                    Shading::Lambert
                 });
                 (s.mode, s.filter, s.wrap, shading, s.wireframe, s.background)
             }
