@@ -41,11 +41,17 @@
 //! assert_eq!(trace.color, image.frame.color[(y * w + x) as usize]);
 //! ```
 
+#![warn(missing_docs)]
+
 pub mod aov;
+// documented separately; the allow goes when they are
+#[allow(missing_docs)]
 pub mod app;
 pub mod bench;
 pub mod budget;
 pub mod compare;
+// documented separately; the allow goes when they are
+#[allow(missing_docs)]
 pub mod figure;
 pub mod files;
 #[cfg(feature = "gpu")]

@@ -52,12 +52,18 @@ pub enum ProbeError {
         .width.saturating_sub(1),
         .height.saturating_sub(1)
     )]
+    /// The pixel is not in the image.
     PixelOutside {
+        /// Column asked for, from the left.
         x: u32,
+        /// Row asked for, from the top.
         y: u32,
+        /// Image width in pixels.
         width: u32,
+        /// Image height in pixels.
         height: u32,
     },
+    /// The scene cannot be rendered (bad image size).
     #[error(transparent)]
     Render(#[from] RenderError),
 }
