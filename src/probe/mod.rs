@@ -63,7 +63,7 @@ pub enum ProbeError {
         /// Image height in pixels.
         height: u32,
     },
-    /// The scene cannot be rendered (bad image size).
+    /// The scene cannot be rendered: a bad image size, or not enough memory.
     #[error(transparent)]
     Render(#[from] RenderError),
 }
