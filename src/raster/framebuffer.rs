@@ -42,7 +42,9 @@ pub enum Buffers {
 /// are empty.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Framebuffer {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels; every buffer holds `width * height` values, row by row from the top.
     pub height: u32,
     /// RGBA8, row 0 at the top.
     pub color: Vec<[u8; 4]>,

@@ -6,15 +6,21 @@ use glam::{DVec4, Vec2, Vec3};
 /// One vertex of a mesh, already in clip space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MeshVertex {
+    /// Clip-space position `(x, y, z, w)`.
     pub clip: DVec4,
+    /// Texture coordinate (v = 0 is the texture's bottom row).
     pub uv: Vec2,
+    /// Vertex colour, RGB in [0, 1].
     pub color: Vec3,
 }
 
 /// Triangles over clip-space vertices: what the rasterizer draws.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct ClipMesh {
+    /// The vertices, shared by the triangles that index them.
     pub vertices: Vec<MeshVertex>,
+    /// The source triangles: index triples into `vertices`, drawn in this order (with the
+    /// less-than depth test, the earlier of two equal depths stays).
     pub triangles: Vec<[u32; 3]>,
 }
 
