@@ -36,15 +36,17 @@ pub enum Buffers {
     ColorDepthUv,
 }
 
-/// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold 0 in every
-/// float buffer (never NaN) and `NO_TRIANGLE` as their triangle. With
+/// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold the
+/// background colour, depth 1, 0 in the other float buffers (never NaN) and [`NO_TRIANGLE`]
+/// as their triangle. With
 /// [`Buffers::ColorDepth`] only `color` and `depth` have a value per pixel; the other buffers
 /// are empty.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Framebuffer {
     /// Width in pixels.
     pub width: u32,
-    /// Height in pixels; every buffer holds `width * height` values, row by row from the top.
+    /// Height in pixels; each filled buffer holds `width * height` values, row by row from the
+    /// top.
     pub height: u32,
     /// RGBA8, row 0 at the top.
     pub color: Vec<[u8; 4]>,
