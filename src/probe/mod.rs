@@ -68,7 +68,8 @@ pub enum ProbeError {
     Render(#[from] RenderError),
 }
 
-/// World-scene data the mesh does not keep: the object-space positions and the camera chain.
+/// World- and model-scene data the mesh does not keep: the object-space positions and the
+/// camera chain.
 #[derive(Clone, Debug)]
 struct WorldSpaces {
     object: Vec<DVec3>,
