@@ -50,7 +50,7 @@ pub struct Framebuffer {
     pub height: u32,
     /// RGBA8, row 0 at the top.
     pub color: Vec<[u8; 4]>,
-    /// Window depth z/w in [0, 1]; cleared to 1 (the far plane), less-than test.
+    /// Window depth `(z/w + 1)/2` in [0, 1]; cleared to 1 (the far plane), less-than test.
     pub depth: Vec<f32>,
     /// Index of the source triangle that wrote the pixel, or `NO_TRIANGLE`.
     pub triangle: Vec<u32>,

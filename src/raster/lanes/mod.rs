@@ -125,7 +125,7 @@ pub struct Target<'a> {
     pub width: u32,
     /// RGBA8 of the band's rows, row by row from `y0`.
     pub color: &'a mut [[u8; 4]],
-    /// Window depth z/w of the band's rows, tested less-than.
+    /// Window depth `(z/w + 1)/2` of the band's rows, tested less-than.
     pub depth: &'a mut [f32],
     /// The triangle and uv buffers, when the render keeps them.
     pub uv: Option<UvTarget<'a>>,
