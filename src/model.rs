@@ -18,21 +18,40 @@ pub const NO_UV: &str = "has no texture coordinates (vt) on every face";
 /// Errors while loading a model. Each names the file.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelError {
+    /// The file could not be read.
     #[error(transparent)]
     File(#[from] ReadError),
+    /// Loading it would need more memory than the budget allows.
     #[error(transparent)]
     Memory(#[from] MemoryError),
+    /// The file has 0 bytes.
     #[error("model {path} is empty (0 bytes)")]
-    EmptyFile { path: String },
+    EmptyFile {
+        /// The file, as shown in messages.
+        path: String,
+    },
+    /// The OBJ text is malformed (or not text), or a face index is out of range.
     #[error("cannot load model {path}: {reason}")]
-    Parse { path: String, reason: String },
+    Parse {
+        /// The file, as shown in messages.
+        path: String,
+        /// What is wrong, for someone looking at the file.
+        reason: String,
+    },
+    /// The file has no faces.
     #[error("model {path} contains no triangles")]
-    NoTriangles { path: String },
+    NoTriangles {
+        /// The file, as shown in messages.
+        path: String,
+    },
+    /// A vertex position is NaN, infinite, or beyond [`MAX_MODEL_COORD`].
     #[error("model {path}: vertex {index} has a coordinate that is {what}")]
     BadCoordinate {
+        /// The file, as shown in messages.
         path: String,
         /// 1-based, as OBJ counts.
         index: usize,
+        /// "not a finite number" or "larger than 1e6 in magnitude".
         what: String,
     },
 }
@@ -102,14 +121,18 @@ pub fn vertex_normals(positions: &[DVec3], triangles: &[[u32; 3]]) -> Vec<DVec3>
 /// A triangle mesh in object space, ready to be transformed by a camera.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct ModelMesh {
+    /// Vertex positions in object space (the file's units).
     pub positions: Vec<DVec3>,
     /// Unit vertex normals in object space: the file's `vn` where every face has them,
     /// else [`vertex_normals`] of the positions.
     pub normals: Vec<DVec3>,
+    /// Texture coordinate per vertex; `[0, 0]` for a part of the file without `vt`.
     pub uvs: Vec<Vec2>,
+    /// Colour per vertex: its material's diffuse colour (`Kd`), RGB in [0, 1]; white without one.
     pub colors: Vec<Vec3>,
+    /// Index triples into `positions` (polygons triangulated), in file order.
     pub triangles: Vec<[u32; 3]>,
-    /// Whether the file had texture coordinates (`vt`).
+    /// Whether every vertex has a texture coordinate (`vt`).
     pub has_uv: bool,
     /// The first material's diffuse texture, resolved against the OBJ's folder.
     pub diffuse_texture: Option<PathBuf>,

@@ -14,24 +14,41 @@ use crate::files::number;
 /// Errors for cameras that cannot form a valid projection.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CameraError {
+    /// `eye == target`: no viewing direction.
     #[error("the camera's eye and target are the same point")]
     EyeIsTarget,
+    /// `up` is zero or parallel to `target - eye`: the roll is undetermined.
     #[error("the camera's up vector is zero or parallel to the viewing direction")]
     BadUp,
+    /// The vertical field of view, in degrees, is not in (0, 180).
     #[error("field of view {} degrees is outside (0, 180)", number(*.0))]
     BadFov(f64),
+    /// The clip planes do not satisfy `0 < near < far`.
     #[error("near plane {} and far plane {} must satisfy 0 < near < far", number(*near), number(*far))]
-    BadPlanes { near: f64, far: f64 },
+    BadPlanes {
+        /// Distance of the near plane in front of the eye, view units.
+        near: f64,
+        /// Distance of the far plane in front of the eye, view units.
+        far: f64,
+    },
+    /// The orthographic view volume's height is not positive.
     #[error("orthographic height {} must be positive", number(*.0))]
     BadHeight(f64),
+    /// Some camera value is NaN or infinite.
     #[error("camera value is not a finite number")]
     NotFinite,
+    /// A value exceeds [`MAX_CAMERA_VALUE`] in magnitude.
     #[error(
         "camera {what} is {}, larger than {} in magnitude",
         number(*value),
         number(MAX_CAMERA_VALUE)
     )]
-    TooLarge { what: &'static str, value: f64 },
+    TooLarge {
+        /// Which value ("eye", "far plane", "orthographic height", ...).
+        what: &'static str,
+        /// The value given.
+        value: f64,
+    },
 }
 
 /// Largest accepted magnitude of a camera coordinate, near or far plane, or orthographic
@@ -106,14 +123,18 @@ pub enum Projection {
     Perspective {
         /// Vertical field of view in degrees.
         fov_y_deg: f64,
+        /// Distance of the near plane in front of the eye (> 0), view units.
         near: f64,
+        /// Distance of the far plane in front of the eye (> near), view units.
         far: f64,
     },
     /// Orthographic projection: clip w = 1 everywhere, so affine and perspective-correct agree.
     Orthographic {
         /// Height of the view volume in world units.
         height: f64,
+        /// Distance of the near plane in front of the eye (> 0), view units.
         near: f64,
+        /// Distance of the far plane in front of the eye (> near), view units.
         far: f64,
     },
 }
@@ -122,10 +143,14 @@ pub enum Projection {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Camera {
+    /// The eye position, world space.
     pub eye: DVec3,
+    /// The point looked at, world space: the view direction is `target - eye`.
     pub target: DVec3,
+    /// The world direction that is up on screen; `[0, 1, 0]` when omitted.
     #[serde(default = "default_up")]
     pub up: DVec3,
+    /// View -> clip.
     pub projection: Projection,
 }
 
@@ -327,8 +352,11 @@ impl Camera {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CameraChain {
+    /// Object -> world: the world quad's tilt, the identity for models.
     pub world_from_object: DMat4,
+    /// World -> view: the look-at matrix.
     pub view_from_world: DMat4,
+    /// View -> clip: the OpenGL projection for the image's aspect.
     pub clip_from_view: DMat4,
     /// `clip_from_view^-1`.
     pub view_from_clip: DMat4,

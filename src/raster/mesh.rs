@@ -6,11 +6,11 @@ use glam::{DVec4, Vec2, Vec3};
 /// One vertex of a mesh, already in clip space.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct MeshVertex {
-    /// Position in clip space (OpenGL: visible where -w <= x, y, z <= w).
+    /// Clip-space position `(x, y, z, w)`.
     pub clip: DVec4,
-    /// Texture coordinate (u right, v up; texel row 0 at v = 0).
+    /// Texture coordinate (v = 0 is the texture's bottom row).
     pub uv: Vec2,
-    /// RGB vertex colour, each channel in [0, 1].
+    /// Vertex colour, RGB in [0, 1].
     pub color: Vec3,
     /// Unit normal in view space (x right, y up, z towards the viewer), for normal and
     /// Lambert shading; zero when the scene has none (clip-space scenes), read as facing
@@ -21,7 +21,10 @@ pub struct MeshVertex {
 /// Triangles over clip-space vertices: what the rasterizer draws.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct ClipMesh {
+    /// The vertices, shared by the triangles that index them.
     pub vertices: Vec<MeshVertex>,
+    /// The source triangles: index triples into `vertices`, drawn in this order (with the
+    /// less-than depth test, the earlier of two equal depths stays).
     pub triangles: Vec<[u32; 3]>,
 }
 

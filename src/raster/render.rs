@@ -36,14 +36,23 @@ pub enum Rasterizer {
 /// How to draw.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings {
+    /// Image width in pixels (1 to [`MAX_IMAGE_SIZE`]).
     pub width: u32,
+    /// Image height in pixels (1 to [`MAX_IMAGE_SIZE`]).
     pub height: u32,
+    /// Affine (`noperspective`) or perspective-correct (`smooth`) interpolation.
     pub mode: Interpolation,
+    /// Texture filter: nearest, bilinear or trilinear.
     pub filter: Filter,
+    /// Texture wrap mode outside [0, 1].
     pub wrap: Wrap,
+    /// What a fragment's colour is made from.
     pub shading: Shading,
+    /// Overlay the source triangles' edges.
     pub wireframe: bool,
+    /// RGBA of pixels no triangle covers.
     pub background: [u8; 4],
+    /// Which pixel-coverage algorithm draws: edge functions or the scanline.
     pub rasterizer: Rasterizer,
     /// Which triangle owns a pixel centre exactly on a shared edge.
     pub tie_rule: TieRule,
@@ -70,6 +79,7 @@ impl Default for RenderSettings {
 }
 
 impl RenderSettings {
+    /// The viewport (0, 0, width, height).
     pub fn viewport(&self) -> Viewport {
         Viewport {
             width: self.width,
@@ -81,8 +91,15 @@ impl RenderSettings {
 /// Errors that stop a render as a whole.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RenderError {
+    /// Width or height is 0 or above [`MAX_IMAGE_SIZE`].
     #[error("image size {width}x{height} is outside 1..={max} pixels per side", max = MAX_IMAGE_SIZE)]
-    BadSize { width: u32, height: u32 },
+    BadSize {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+    /// The buffers would need more memory than the budget allows.
     #[error(transparent)]
     Memory(#[from] crate::budget::MemoryError),
 }
@@ -121,6 +138,7 @@ impl TriangleStatus {
 pub struct PreparedTriangle {
     /// Index into [`ClipMesh::triangles`].
     pub source: u32,
+    /// Whether it was drawn, or why it drew nothing.
     pub status: TriangleStatus,
     /// The clipped polygon, kept only where the clipper changed the triangle (`None` for an
     /// unclipped or unusable one): most triangles are not clipped, and a polygon is about 1 KB
@@ -255,7 +273,9 @@ pub fn prepare_triangles(
 /// The result of a render: the framebuffer and what happened to each source triangle.
 #[derive(Clone, Debug)]
 pub struct Render {
+    /// The image and the per-pixel buffers.
     pub frame: Framebuffer,
+    /// Every source triangle as prepared, in mesh order.
     pub triangles: Vec<PreparedTriangle>,
 }
 

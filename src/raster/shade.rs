@@ -159,9 +159,13 @@ pub fn depth_grey(depth: f64, (black, white): (f64, f64)) -> u8 {
 /// Everything shading needs besides the fragment.
 #[derive(Clone, Copy, Debug)]
 pub struct ShadeParams {
+    /// What the colour is made from.
     pub shading: Shading,
+    /// Which of the fragment's interpolated values are used: affine or perspective-correct.
     pub mode: Interpolation,
+    /// Texture filter.
     pub filter: Filter,
+    /// Texture wrap mode.
     pub wrap: Wrap,
     /// Draw the source triangles' edges (see [`WIRE_WIDTH_PX`]).
     pub wireframe: bool,

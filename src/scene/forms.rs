@@ -8,6 +8,7 @@ use super::*;
 pub struct Corner {
     /// Position in object space (world space when the tilt is zero).
     pub position: DVec3,
+    /// Texture coordinate (v = 0 is the texture's bottom row).
     pub uv: Vec2,
     /// RGB in [0, 1]; white when omitted.
     #[serde(default = "white")]
@@ -22,7 +23,9 @@ fn white() -> Vec3 {
 #[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct Tilt {
+    /// Rotation about the x axis through the quad's centre, in degrees (applied first).
     pub pitch_deg: f64,
+    /// Then rotation about the y axis through the centre, in degrees.
     pub yaw_deg: f64,
 }
 
@@ -38,28 +41,39 @@ fn default_background() -> [u8; 4] {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct WorldScene {
+    /// Image width in pixels (1..=16384).
     pub width: u32,
+    /// Image height in pixels (1..=16384).
     pub height: u32,
+    /// The camera (look-at and projection); default: at the origin looking down -z, 60°
+    /// perspective.
     #[serde(default)]
     pub camera: Camera,
     /// Corners A, B, C, D.
     pub quad: [Corner; 4],
+    /// Rotation of the quad about its centre (`world_from_object`).
     #[serde(default)]
     pub tilt: Tilt,
-    /// A built-in texture name (`uv-grid`, `checker`, `rgbw-2x2`) or an image path relative to
-    /// the scene file.
+    /// A built-in texture name (`uv-grid`, `checker`, `rgbw-2x2`, `noise`) or an image path
+    /// relative to the scene file.
     #[serde(default = "default_texture")]
     pub texture: String,
+    /// Texture filter (default bilinear).
     #[serde(default)]
     pub filter: Filter,
+    /// Texture wrap mode outside [0, 1] (default repeat).
     #[serde(default)]
     pub wrap: Wrap,
+    /// Interpolation: perspective-correct (default) or affine.
     #[serde(default)]
     pub mode: Interpolation,
+    /// What the colour shows (default the texture).
     #[serde(default)]
     pub shading: Shading,
+    /// Overlay the triangles' edges.
     #[serde(default)]
     pub wireframe: bool,
+    /// Colour of uncovered pixels, RGBA 0..=255.
     #[serde(default = "default_background")]
     pub background: [u8; 4],
     /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
@@ -71,9 +85,13 @@ pub struct WorldScene {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ClipSceneVertex {
+    /// Position in clip space `(x, y, z, w)`; window `x = (x/w + 1) width/2`, `y = (1 - y/w)
+    /// height/2`, depth `(z/w + 1)/2`.
     pub clip: DVec4,
+    /// Texture coordinate; `[0, 0]` when omitted.
     #[serde(default)]
     pub uv: Vec2,
+    /// RGB in [0, 1]; white when omitted.
     #[serde(default = "white")]
     pub color: Vec3,
 }
@@ -86,27 +104,38 @@ pub struct ClipSceneVertex {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ClipScene {
+    /// Image width in pixels (1..=16384).
     pub width: u32,
+    /// Image height in pixels (1..=16384).
     pub height: u32,
+    /// The vertices, any number.
     pub vertices: Vec<ClipSceneVertex>,
+    /// Index triples into `vertices`, drawn in order.
     pub triangles: Vec<[u32; 3]>,
     /// Split every triangle into `n x n` smaller ones on its barycentric grid
     /// ([`ClipMesh::subdivided`]): the same surface, the same image, more triangles (the
     /// dense-mesh benchmarks). 1 or absent: as given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub subdivide: Option<u32>,
+    /// A built-in texture name or an image path relative to the scene file.
     #[serde(default = "default_texture")]
     pub texture: String,
+    /// Texture filter (default bilinear).
     #[serde(default)]
     pub filter: Filter,
+    /// Texture wrap mode outside [0, 1] (default repeat).
     #[serde(default)]
     pub wrap: Wrap,
+    /// Interpolation: perspective-correct (default) or affine.
     #[serde(default)]
     pub mode: Interpolation,
+    /// What the colour shows (default the texture).
     #[serde(default)]
     pub shading: Shading,
+    /// Overlay the triangles' edges.
     #[serde(default)]
     pub wireframe: bool,
+    /// Colour of uncovered pixels, RGBA 0..=255.
     #[serde(default = "default_background")]
     pub background: [u8; 4],
     /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
@@ -118,7 +147,9 @@ pub struct ClipScene {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ModelScene {
+    /// Image width in pixels (1..=16384).
     pub width: u32,
+    /// Image height in pixels (1..=16384).
     pub height: u32,
     /// When omitted, a camera that frames the model ([`Camera::framing`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -129,17 +160,22 @@ pub struct ModelScene {
     /// `uv-grid`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub texture: Option<String>,
+    /// Texture filter (default bilinear).
     #[serde(default)]
     pub filter: Filter,
+    /// Texture wrap mode outside [0, 1] (default repeat).
     #[serde(default)]
     pub wrap: Wrap,
+    /// Interpolation: perspective-correct (default) or affine.
     #[serde(default)]
     pub mode: Interpolation,
     /// When omitted: the texture if the model has uvs, else the vertex (material) colour.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shading: Option<Shading>,
+    /// Overlay the triangles' edges.
     #[serde(default)]
     pub wireframe: bool,
+    /// Colour of uncovered pixels, RGBA 0..=255.
     #[serde(default = "default_background")]
     pub background: [u8; 4],
     /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).

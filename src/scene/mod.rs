@@ -1,9 +1,12 @@
-//! Scene files (JSON), in two forms; see `docs/scene-format.md`.
+//! Scene files (JSON), in three forms; see `docs/scene-format.md`.
 //!
 //! 1. World form: a camera and a quad's four corners A, B, C, D in world space (drawn as the
 //!    triangles A B C and A C D, diagonal A-C).
 //! 2. Raw clip-space form: vertices given directly in clip space and any triangles over them,
 //!    with viewport (0, 0, width, height), NDC y = +1 at image row 0, depth range [0, 1].
+//! 3. Model form: an OBJ model seen by a camera (by default one that frames it).
+//!
+//! An OBJ model or an image can also stand in for a scene file ([`open_input`]).
 //!
 //! Unknown fields are errors. Errors name the file, the line and column, and the field.
 
@@ -35,37 +38,56 @@ pub use mesh::view_normal;
 /// Errors while reading or checking a scene.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
+    /// The file could not be read (missing, not a regular file, too large).
     #[error(transparent)]
     File(#[from] ReadError),
+    /// The scene would need more memory than the budget allows.
     #[error(transparent)]
     Memory(#[from] MemoryError),
+    /// The JSON does not parse, or a field has the wrong type or an unknown name.
     #[error("{path}:{line}:{column}: {field}{message}")]
     Parse {
+        /// The scene file, as shown in messages.
         path: String,
+        /// Line of the error, from 1.
         line: usize,
+        /// Column of the error, from 1.
         column: usize,
         /// The JSON path of the offending field followed by ": ", or empty at the top level.
         field: String,
+        /// What is wrong.
         message: String,
     },
+    /// The scene parses but a value is out of range (image size, camera, indices, ...).
     #[error("{path}: {message}")]
-    Invalid { path: String, message: String },
+    Invalid {
+        /// The scene file, as shown in messages.
+        path: String,
+        /// What is wrong, naming the field.
+        message: String,
+    },
+    /// The texture could not be loaded.
     #[error(transparent)]
     Texture(#[from] TextureError),
+    /// The OBJ model could not be loaded.
     #[error(transparent)]
     Model(#[from] ModelError),
+    /// The file's extension is none of `.json`, `.obj` or an image's.
     #[error(
         "{path}: unknown kind of file (expected a .json scene, an .obj model, or an image: {})",
         IMAGE_EXTENSIONS.join(", ")
     )]
-    UnknownKind { path: String },
+    UnknownKind {
+        /// The file, as shown in messages.
+        path: String,
+    },
 }
 
-/// Image file extensions accepted in place of a scene (lower case).
 /// Most triangles a clip scene's `subdivide` may make: well beyond the dense-mesh
 /// benchmarks (460,800), and a bound on the memory a small scene file can ask for.
 pub const MAX_SUBDIVIDED_TRIANGLES: u64 = 4_000_000;
 
+/// Image file extensions accepted in place of a scene (lower case).
 pub const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
 
 /// The name of mesh vertex `index`, the same in the derivation, the figures and the app: A, B,
@@ -146,8 +168,11 @@ pub fn open_input(path: &Path) -> Result<(Scene, PathBuf), SceneError> {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Scene {
+    /// A camera and a quad in world space.
     World(WorldScene),
+    /// Vertices given in clip space, and triangles over them.
     Clip(ClipScene),
+    /// A camera and an OBJ model.
     Model(ModelScene),
 }
 

@@ -5,7 +5,8 @@ use super::*;
 /// The edge functions of a triangle as planes over pixel indices:
 /// `E_i(col, row) = a_i col + b_i row + c_i`, the value at the pixel centre
 /// `(256 col + 128, 256 row + 128)` (1/256 pixel units). A pixel passes edge `i` when
-/// `E_i >= t_i`, with `t_i = 0` on an inclusive (left or bottom) edge and 1 otherwise.
+/// `E_i >= t_i`, with `t_i = 0` on an inclusive edge (left or bottom under the default rule)
+/// and 1 otherwise.
 ///
 /// ```
 /// use barylab::raster::clip::ClipVertex;
@@ -24,9 +25,14 @@ use super::*;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct EdgePlanes {
+    /// Step of `E_i` per column, `-dir_y · 256`, in 1/65536 px².
     pub a: [i64; 3],
+    /// Step of `E_i` per row, `dir_x · 256`, in 1/65536 px².
     pub b: [i64; 3],
+    /// `E_i` at pixel (0, 0)'s centre, in 1/65536 px².
     pub c: [i64; 3],
+    /// The smallest passing value of `E_i`
+    /// ([`Edge::min_value`](crate::raster::setup::Edge::min_value)): 0 or 1.
     pub t: [i64; 3],
 }
 

@@ -119,10 +119,15 @@ const OFFSETS: F64s = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
 ///
 /// [`Buffers::ColorDepthUv`]: super::framebuffer::Buffers::ColorDepthUv
 pub struct Target<'a> {
+    /// The band's first image row (row 0 at the top).
     pub y0: u32,
+    /// Image width in pixels: the length of a row in the slices.
     pub width: u32,
+    /// RGBA8 of the band's rows, row by row from `y0`.
     pub color: &'a mut [[u8; 4]],
+    /// Window depth `(z/w + 1)/2` of the band's rows, tested less-than.
     pub depth: &'a mut [f32],
+    /// The triangle and uv buffers, when the render keeps them.
     pub uv: Option<UvTarget<'a>>,
 }
 
@@ -132,8 +137,11 @@ pub struct Target<'a> {
 pub struct UvTarget<'a> {
     /// The source triangle being drawn.
     pub source: u32,
+    /// The source triangle of the front-most fragment per pixel, as `color`.
     pub triangle: &'a mut [u32],
+    /// uv interpolated with the screen weights (`noperspective`), as `color`.
     pub uv_affine: &'a mut [[f32; 2]],
+    /// uv interpolated perspective-correctly (`smooth`), as `color`.
     pub uv_perspective: &'a mut [[f32; 2]],
 }
 
@@ -141,11 +149,13 @@ pub struct UvTarget<'a> {
 /// depth ([`LaneColor`]), with the wireframe overlay on the edge-function path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LaneShading {
+    /// Affine or perspective-correct interpolation.
     pub mode: Interpolation,
     /// What the colour shows.
     pub color: LaneColor,
     /// The texture filter and wrap (used by [`LaneColor::Texture`]).
     pub filter: Filter,
+    /// The texture wrap mode (used by [`LaneColor::Texture`]).
     pub wrap: Wrap,
     /// Draw the source triangles' edges (see [`on_wire_edge`]).
     pub wireframe: bool,
@@ -155,8 +165,11 @@ pub struct LaneShading {
 /// nearest or bilinear filtering only).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LaneColor {
+    /// The texture at the interpolated uv ([`Shading::Texture`](super::shade::Shading::Texture)).
     Texture,
+    /// The interpolated vertex colour.
     VertexColor,
+    /// The source triangle's three weights as red, green and blue.
     Barycentric,
     /// Grey from the window depth, black at `.0` and white at `.1`.
     Depth(f64, f64),
