@@ -14,6 +14,7 @@ use super::setup::{Facing, TieRule, TriangleSetup, sample_point, setup_triangle_
 use super::shade::{ShadeParams, Shading, shade};
 use super::texture::{Filter, Texture, Wrap};
 use super::varying::Varyings;
+use smallvec::SmallVec;
 
 use super::bands::{RowBand, bin_by_band};
 pub use super::mesh::{ClipMesh, MeshVertex, subdivided_triangle};
@@ -144,8 +145,9 @@ pub struct PreparedTriangle {
     /// unclipped or unusable one): most triangles are not clipped, and a polygon is about 1 KB
     /// (see [`PreparedTriangle::polygon`] for every triangle's).
     pub clipped: Option<Box<ClipPolygon>>,
-    /// The fan triangles of the clipped polygon that can cover pixels.
-    pub setups: Vec<TriangleSetup>,
+    /// The fan triangles of the clipped polygon that can cover pixels: one for an unclipped
+    /// triangle (most of a mesh), kept inline so preparing a mesh allocates nothing per triangle.
+    pub setups: SmallVec<[TriangleSetup; 1]>,
 }
 
 impl PreparedTriangle {
@@ -209,7 +211,7 @@ pub fn prepare_triangle_with(
         source: index,
         status: TriangleStatus::BadIndex,
         clipped: None,
-        setups: Vec::new(),
+        setups: SmallVec::new(),
     };
     let Some(verts) = source_vertices(mesh, index) else {
         return out;
@@ -481,8 +483,8 @@ fn rasterize(
             params.depth_range.0,
             params.depth_range.1,
         )),
-        // Per pixel: the normal is renormalized at every fragment.
-        Shading::Normal | Shading::Lambert => None,
+        Shading::Normal => Some(lanes::LaneColor::Normal),
+        Shading::Lambert => Some(lanes::LaneColor::Lambert),
     };
     let lane_shading = lane_color.map(|color| LaneShading {
         mode: params.mode,

@@ -6,14 +6,16 @@
 
 use std::arch::x86_64::*;
 
+use glam::Vec3;
+
 use super::{
-    BLOCK_ROWS, Block, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap, Stepped,
-    Target, classify,
+    BLOCK_ROWS, Block, CHANNELS, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap,
+    Stepped, Target, classify,
 };
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span;
 use crate::raster::setup::{TriangleSetup, WeightPlanes};
-use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
+use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX, lambert_rgba8, normal_rgba8};
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
 mod texture;
@@ -235,9 +237,11 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
             }
         }
     }
-    let mut channels = [_mm256_setzero_pd(); 3];
-    if matches!(color, LaneColor::VertexColor | LaneColor::Barycentric) {
-        channels = [0, 1, 2].map(|ch| dot3(&w, c.channels[ch]));
+    let mut channels = [_mm256_setzero_pd(); CHANNELS];
+    if !matches!(color, LaneColor::Texture | LaneColor::Depth(..)) {
+        for ch in 0..c.used_channels {
+            channels[ch] = dot3(&w, c.channels[ch]);
+        }
     }
     Four {
         u: dot3(&w, c.u),
@@ -258,8 +262,8 @@ struct Four {
     /// Validity and wireframe bits, lane k in bit k.
     ok: i32,
     wire: i32,
-    /// Vertex colour or barycentric channels (zero for the other shadings).
-    channels: [__m256d; 3],
+    /// The interpolated channels of [`Constants`] (zero for texture and depth shading).
+    channels: [__m256d; CHANNELS],
     /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
     both_uv: Option<[__m256d; 4]>,
 }
@@ -309,6 +313,34 @@ fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
                 _mm256_setzero_si256()
             };
             pack_opaque(grey, grey, grey)
+        }
+        LaneColor::Normal | LaneColor::Lambert => {
+            // Per lane with the scalar `shade` functions (a square root and a division each),
+            // on the same f32 channels the portable lanes hold.
+            let mut ch = [[0f32; LANES]; CHANNELS];
+            for (c, out) in ch
+                .iter_mut()
+                .enumerate()
+                .take(if color == LaneColor::Lambert {
+                    CHANNELS
+                } else {
+                    3
+                })
+            {
+                // SAFETY: `out` is eight f32s; the unaligned store writes exactly those.
+                unsafe {
+                    _mm256_storeu_ps(out.as_mut_ptr(), to_f32(lo.channels[c], hi.channels[c]))
+                };
+            }
+            let v = |first: usize, k: usize| {
+                Vec3::new(ch[first][k], ch[first + 1][k], ch[first + 2][k])
+            };
+            let rgba: [[u8; 4]; LANES] = std::array::from_fn(|k| match color {
+                LaneColor::Normal => normal_rgba8(v(0, k)),
+                _ => lambert_rgba8(v(0, k), v(3, k)),
+            });
+            // SAFETY: eight RGBA8 pixels are 32 bytes, read unaligned.
+            unsafe { _mm256_loadu_si256(rgba.as_ptr().cast()) }
         }
         _ => {
             let ch = |c: usize| unorm8(to_f32(lo.channels[c], hi.channels[c]));

@@ -2,7 +2,7 @@
 //!
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
-//! nearest or bilinear filtering, vertex colour, barycentric and depth shading, and the
+//! nearest or bilinear filtering, vertex colour, barycentric, depth, normal and Lambert shading, and the
 //! wireframe overlay; the scanline lanes draw texture shading without the wireframe. Other
 //! cases (trilinear filtering, the scanline rasterizer's other shadings) go through
 //! [`render`](mod@super::render)'s per-pixel code (after the block rejection of the
@@ -36,12 +36,14 @@
 
 use std::sync::atomic::{AtomicU8, Ordering};
 
+use glam::Vec3;
+
 use super::framebuffer::depth_passes;
 use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
 use super::setup::{PixelBounds, TriangleSetup, WeightPlanes};
-use super::shade::{WIRE_COLOR, depth_grey, on_wire_edge, unorm8};
+use super::shade::{WIRE_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge, unorm8};
 use super::texture::{
     self, Filter, Texture, Wrap, bilinear_fraction, bilinear_weights, byte_from_sum, wrap_coord,
 };
@@ -173,7 +175,15 @@ pub enum LaneColor {
     Barycentric,
     /// Grey from the window depth, black at `.0` and white at `.1`.
     Depth(f64, f64),
+    /// The interpolated view-space normal as colour ([`normal_rgba8`]).
+    Normal,
+    /// The vertex colour lit by a headlight ([`lambert_rgba8`]).
+    Lambert,
 }
+
+/// Interpolated channels the lanes carry: a colour (or weights, or a normal) in 0..3, and the
+/// normal in 3..6 for [`LaneColor::Lambert`].
+const CHANNELS: usize = 6;
 
 /// Per-triangle constants of the interpolation, as [`interpolate::fragment`] uses them.
 ///
@@ -188,8 +198,11 @@ struct Constants {
     /// uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]` per vertex, when
     /// the target wants them.
     both_uv: Option<[[f64; 3]; 4]>,
-    /// `channels[c][k]`: channel `c` of vertex `k` for vertex-colour or barycentric shading.
-    channels: [[f64; 3]; 3],
+    /// `channels[c][k]`: channel `c` of vertex `k`: the vertex colour, the source weights or
+    /// the normal in 0..3, and the normal in 3..6 for Lambert shading.
+    channels: [[f64; 3]; CHANNELS],
+    /// How many of `channels` the shading reads (3, or 6 for Lambert).
+    used_channels: usize,
     wire: Option<Wire>,
 }
 
@@ -218,10 +231,21 @@ impl Constants {
             let at = [f(0), f(1), f(2)];
             [0, 1, 2].map(|c| [0, 1, 2].map(|k| f64::from(at[k][c])))
         };
-        let channels = match color {
-            LaneColor::VertexColor => per_vertex(&|k| vary(k).color().to_array()),
+        let normal = || per_vertex(&|k| vary(k).normal().to_array());
+        let color3 = || per_vertex(&|k| vary(k).color().to_array());
+        let mut channels = [[0.0; 3]; CHANNELS];
+        let first = match color {
+            LaneColor::VertexColor | LaneColor::Lambert => color3(),
             LaneColor::Barycentric => per_vertex(&|k| vary(k).bary()),
+            LaneColor::Normal => normal(),
             LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
+        };
+        channels[..3].copy_from_slice(&first);
+        let used_channels = if color == LaneColor::Lambert {
+            channels[3..].copy_from_slice(&normal());
+            CHANNELS
+        } else {
+            3
         };
         let wire = wireframe.then(|| {
             let b = setup.v.map(|v| v.varyings.bary());
@@ -238,6 +262,7 @@ impl Constants {
             v: uv.map(|t| f64::from(t.y)),
             both_uv: None,
             channels,
+            used_channels,
             wire,
         }
     }
@@ -251,7 +276,7 @@ struct Samples {
     depth: F32s,
     ok: Mask,
     wire: Mask,
-    channels: [F32s; 3],
+    channels: [F32s; CHANNELS],
     depth64: F64s,
     /// `[u_affine, v_affine, u_smooth, v_smooth]` (when [`Constants::both_uv`] is set).
     both_uv: [F32s; 4],
@@ -265,7 +290,7 @@ impl Samples {
             depth: [0.0; LANES],
             ok: [false; LANES],
             wire: [false; LANES],
-            channels: [[0.0; LANES]; 3],
+            channels: [[0.0; LANES]; CHANNELS],
             depth64: [0.0; LANES],
             both_uv: [[0.0; LANES]; 4],
         }
@@ -281,6 +306,8 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
                 let g = depth_grey(s.depth64[k], (lo, hi));
                 [g, g, g, 255]
             }
+            LaneColor::Normal => normal_rgba8(channel3(s, 0, k)),
+            LaneColor::Lambert => lambert_rgba8(channel3(s, 0, k), channel3(s, 3, k)),
             _ => [
                 unorm8(s.channels[0][k]),
                 unorm8(s.channels[1][k]),
@@ -289,6 +316,16 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
             ],
         };
     }
+}
+
+/// Channels `first..first + 3` of lane `k` as a vector.
+#[inline(always)]
+fn channel3(s: &Samples, first: usize, k: usize) -> Vec3 {
+    Vec3::new(
+        s.channels[first][k],
+        s.channels[first + 1][k],
+        s.channels[first + 2][k],
+    )
 }
 
 /// The vertices' uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]`
@@ -352,7 +389,7 @@ fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
         out.v[k] = (w[0] * c.v[0] + w[1] * c.v[1] + w[2] * c.v[2]) as f32;
         out.depth64[k] = l[0] * c.depth[0] + l[1] * c.depth[1] + l[2] * c.depth[2];
         out.depth[k] = out.depth64[k] as f32;
-        for ch in 0..3 {
+        for ch in 0..c.used_channels {
             let x = &c.channels[ch];
             out.channels[ch][k] = (w[0] * x[0] + w[1] * x[1] + w[2] * x[2]) as f32;
         }
