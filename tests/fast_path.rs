@@ -149,14 +149,7 @@ fn edge_fast_path_is_bit_identical_on_every_sample_scene() {
         let mesh = scene.to_mesh();
         for mode in [Interpolation::Affine, Interpolation::Perspective] {
             for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
-                for shading in [
-                    Shading::Texture,
-                    Shading::VertexColor,
-                    Shading::Barycentric,
-                    Shading::Depth,
-                    Shading::Normal,
-                    Shading::Lambert,
-                ] {
+                for shading in Shading::ALL {
                     for wireframe in [false, true] {
                         let s = RenderSettings {
                             mode,
@@ -222,14 +215,7 @@ proptest! {
             filter: if bilinear { Filter::Bilinear } else { Filter::Nearest },
             wrap: [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat][wrap],
             wireframe,
-            shading: [
-                Shading::Texture,
-                Shading::VertexColor,
-                Shading::Barycentric,
-                Shading::Depth,
-                Shading::Normal,
-                Shading::Lambert,
-            ][shading],
+            shading: Shading::ALL[shading],
             ..RenderSettings::default()
         };
         assert_edge_identical(&mesh, &tex, &s, name);

@@ -28,6 +28,18 @@ pub enum Shading {
     Lambert,
 }
 
+impl Shading {
+    /// Every shading, in menu order.
+    pub const ALL: [Shading; 6] = [
+        Shading::Texture,
+        Shading::VertexColor,
+        Shading::Barycentric,
+        Shading::Depth,
+        Shading::Normal,
+        Shading::Lambert,
+    ];
+}
+
 /// The light a [`Shading::Lambert`] surface gets however it faces (so back-facing and grazing
 /// parts stay visible as a dark silhouette instead of black).
 pub const AMBIENT: f32 = 0.15;
