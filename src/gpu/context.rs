@@ -84,13 +84,35 @@ impl Gpu {
                     .map_or(std::ptr::null(), |f| f as *const _)
             })
         };
-        // SAFETY: a current context.
-        let [vendor, renderer, version] = [glow::VENDOR, glow::RENDERER, glow::VERSION]
-            .map(|p| unsafe { gl.get_parameter_string(p) });
-        Ok(Self {
+        let owned = EglContext {
             egl,
             display,
             context,
+        };
+        Self::with_context(Arc::new(gl), Some(owned))
+    }
+
+    /// Draws on an OpenGL context someone else made current on this thread, such as the app
+    /// window's (eframe's glow context): the GPU view beside barylab's canvas. Fails with a
+    /// one-line reason when the context is older than OpenGL 3.3 or is OpenGL ES. Every call
+    /// must come from the thread the context is current on; [`Gpu::draw`] and the reads leave
+    /// the default framebuffer bound and the depth test off.
+    pub fn on_context(gl: Arc<glow::Context>) -> Result<Self, String> {
+        Self::with_context(gl, None)
+    }
+
+    fn with_context(gl: Arc<glow::Context>, egl: Option<EglContext>) -> Result<Self, String> {
+        // SAFETY: a current context.
+        let [vendor, renderer, version] = [glow::VENDOR, glow::RENDERER, glow::VERSION]
+            .map(|p| unsafe { gl.get_parameter_string(p) });
+        let v = gl.version();
+        if v.is_embedded || (v.major, v.minor) < (3, 3) {
+            return Err(format!(
+                "the OpenGL context is {version}; the GPU view needs OpenGL 3.3 (not OpenGL ES)"
+            ));
+        }
+        Ok(Self {
+            egl,
             gl,
             vendor,
             renderer,

@@ -14,6 +14,7 @@ pub use compare::*;
 pub use context::force_llvmpipe_env;
 pub use scene::{GlScene, mesh_at_f32};
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use crate::raster::{Filter, Interpolation, Wrap};
@@ -35,16 +36,23 @@ pub enum Output {
     Values,
 }
 
-/// A live headless OpenGL context (llvmpipe or a GPU) with one scene loaded.
+/// An OpenGL 3.3 context (llvmpipe or a GPU) with one scene loaded: a headless one through
+/// EGL ([`Gpu::open`]), or a context someone else owns, such as the app's ([`Gpu::on_context`]).
 pub struct Gpu {
-    egl: egl::DynamicInstance<egl::EGL1_4>,
-    display: egl::Display,
-    context: egl::Context,
-    gl: glow::Context,
+    /// The EGL display and context when this owns them (headless).
+    egl: Option<EglContext>,
+    gl: Arc<glow::Context>,
     vendor: String,
     renderer: String,
     version: String,
     objects: Option<Objects>,
+}
+
+/// A headless EGL display and the context made current on it.
+struct EglContext {
+    egl: egl::DynamicInstance<egl::EGL1_4>,
+    display: egl::Display,
+    context: egl::Context,
 }
 
 struct Objects {
@@ -368,7 +376,21 @@ impl Gpu {
         };
         // SAFETY: plain GL calls on the current context with the loaded objects.
         unsafe {
+            // All the state a draw needs, set each time: a shared context (the app's) has
+            // been used by someone else since.
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+            gl.viewport(0, 0, o.width as i32, o.height as i32);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(glow::LESS);
+            gl.depth_mask(true);
+            gl.color_mask(true, true, true, true);
+            gl.disable(glow::CULL_FACE);
+            gl.disable(glow::BLEND);
+            gl.disable(glow::DITHER);
+            gl.disable(glow::SCISSOR_TEST);
+            gl.bind_vertex_array(Some(o.vao));
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_texture(glow::TEXTURE_2D, Some(o.texture));
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, f);
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, f);
             gl.use_program(Some(o.programs[program_index(output, mode)]));
@@ -420,6 +442,7 @@ impl Gpu {
         let mut bytes = vec![0u8; w * h * 4];
         // SAFETY: the buffer holds exactly width * height RGBA8 pixels.
         unsafe {
+            self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(o.fbo));
             self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
             self.gl.read_pixels(
                 0,
@@ -446,6 +469,7 @@ impl Gpu {
         let mut bytes = vec![0u8; w * h * 16];
         // SAFETY: the buffer holds exactly width * height RGBA32F pixels.
         unsafe {
+            self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(o.values_fbo));
             self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
             self.gl.read_pixels(
                 0,
@@ -457,6 +481,7 @@ impl Gpu {
                 glow::PixelPackData::Slice(Some(&mut bytes)),
             );
         }
+        self.release_state();
         let float = |b: &[u8]| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
         let pixels = bytes
             .chunks_exact(16)
@@ -473,16 +498,33 @@ impl Gpu {
     ) -> Result<Vec<[u8; 4]>, String> {
         self.draw(output, filter, mode)?;
         self.finish();
-        self.read()
+        let pixels = self.read();
+        self.release_state();
+        pixels
+    }
+
+    /// Leaves the context as a window's painter expects it: the default framebuffer bound,
+    /// no depth test, no vertex array, program or texture of ours bound.
+    fn release_state(&self) {
+        // SAFETY: plain GL calls on the current context.
+        unsafe {
+            self.gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            self.gl.disable(glow::DEPTH_TEST);
+            self.gl.bind_vertex_array(None);
+            self.gl.use_program(None);
+            self.gl.bind_texture(glow::TEXTURE_2D, None);
+        }
     }
 }
 
 impl Drop for Gpu {
     fn drop(&mut self) {
         self.unload();
-        let _ = self.egl.make_current(self.display, None, None, None);
-        let _ = self.egl.destroy_context(self.display, self.context);
-        let _ = self.egl.terminate(self.display);
+        if let Some(e) = &self.egl {
+            let _ = e.egl.make_current(e.display, None, None, None);
+            let _ = e.egl.destroy_context(e.display, e.context);
+            let _ = e.egl.terminate(e.display);
+        }
     }
 }
 
