@@ -60,6 +60,13 @@ struct Cli {
     /// Start with this pixel of the image pinned (e.g. for a --screenshot).
     #[arg(long, value_parser = parse_pixel, value_name = "X,Y")]
     pin: Option<(u32, u32)>,
+    /// Language of the app: en, zh (zh-CN), or auto (the system locale: LC_ALL, LC_MESSAGES,
+    /// LANG). Default: the language chosen last time, else the system locale's.
+    #[arg(long, value_parser = parse_lang, value_name = "LANG")]
+    lang: Option<barylab::i18n::Lang>,
+    /// Text size of the app (its zoom), 0.75 to 2.5, e.g. 1.5 for a projector.
+    #[arg(long, value_parser = parse_text_size, value_name = "SIZE")]
+    text_size: Option<f32>,
     /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
     /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
@@ -556,6 +563,15 @@ pub fn main() -> ExitCode {
     }
 }
 
+/// Parses the app's text size (its zoom factor).
+fn parse_text_size(s: &str) -> Result<f32, String> {
+    let (lo, hi) = barylab::app::state::UI_SCALE_RANGE;
+    match s.trim().parse::<f32>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(format!("text size `{s}`: a number from {lo} to {hi}")),
+    }
+}
+
 /// Parses a window size "WIDTHxHEIGHT" in points.
 fn parse_window_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = parse_size(s)?;
@@ -572,9 +588,11 @@ fn app(cli: &Cli) -> Result<()> {
     if let Some(shot) = &cli.screenshot {
         output::check_output(shot, &["png"])?;
     }
+    let system_lang = barylab::i18n::Lang::detect();
     let opened = match &cli.scene {
         Some(path) => {
-            let opened = barylab::app::files::open(path, &Scene::default_scene())
+            let lang = cli.lang.unwrap_or(system_lang);
+            let opened = barylab::app::files::open(path, &Scene::default_scene(), lang)
                 .map_err(anyhow::Error::msg)?;
             for n in &opened.notes {
                 note!("note: {n}");
@@ -592,6 +610,10 @@ fn app(cli: &Cli) -> Result<()> {
         window_size: cli.window_size.map(|(w, h)| [w as f32, h as f32]),
         present: cli.present,
         pin: cli.pin.map(|(x, y)| [x, y]),
+        lang: cli.lang,
+        system_lang,
+        no_cjk_font: false,
+        text_size: cli.text_size,
     };
     barylab::app::run(options)?;
     Ok(())

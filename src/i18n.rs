@@ -122,6 +122,29 @@ pub fn tr(lang: Lang, key: &str) -> String {
     crate::_rust_i18n_translate(lang.code(), key).into_owned()
 }
 
+impl Lang {
+    /// The catalogue entry `key` in this language ([`tr`] as a method).
+    pub fn tr(self, key: &str) -> String {
+        tr(self, key)
+    }
+
+    /// The catalogue entry `key` in this language with its `%{name}` placeholders replaced
+    /// by `args`' values (a placeholder without a value stays as it is).
+    ///
+    /// ```
+    /// use barylab::i18n::Lang;
+    /// let s = Lang::Zh.tr_with("probe.title", &[("w", &800), ("h", &600), ("x", &1), ("y", &2)]);
+    /// assert!(s.contains("800x600") && s.contains("(1, 2)"), "{s}");
+    /// ```
+    pub fn tr_with(self, key: &str, args: &[(&str, &dyn fmt::Display)]) -> String {
+        let mut out = tr(self, key);
+        for (name, value) in args {
+            out = out.replace(&format!("%{{{name}}}"), &value.to_string());
+        }
+        out
+    }
+}
+
 mod font;
 
 pub use font::{CJK_FAMILIES, CjkFont, cjk_font};

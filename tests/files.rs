@@ -289,9 +289,12 @@ fn recent_files_are_saved_and_restored() {
 }
 
 fn model_harness() -> Harness<'static, BaryApp> {
-    let opened =
-        barylab::app::files::open(&asset("assets/models/torus.obj"), &Scene::default_scene())
-            .expect("torus");
+    let opened = barylab::app::files::open(
+        &asset("assets/models/torus.obj"),
+        &Scene::default_scene(),
+        barylab::i18n::Lang::En,
+    )
+    .expect("torus");
     let app = BaryApp::new(
         None,
         AppOptions {

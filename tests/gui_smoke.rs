@@ -75,8 +75,14 @@ fn start_xvfb(xvfb: &Path) -> Xvfb {
 
 /// Runs the app with `args` on the display; returns (success, stderr).
 fn run_app(display: &str, args: &[&str]) -> (bool, String) {
+    run_app_with(display, args, &[])
+}
+
+/// [`run_app`] with these environment variables set.
+fn run_app_with(display: &str, args: &[&str], env: &[(&str, &str)]) -> (bool, String) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_barylab"))
         .args(args)
+        .envs(env.iter().copied())
         .env("DISPLAY", display)
         .env_remove("WAYLAND_DISPLAY")
         .env("LIBGL_ALWAYS_SOFTWARE", "1")
@@ -273,5 +279,60 @@ fn bad_models_and_images_are_reported_in_one_line_without_opening_a_window() {
             err.starts_with("error: ") && err.contains(file) && err.contains(needle),
             "{err}"
         );
+    }
+}
+
+/// `--lang zh` (and a Chinese locale without it) starts the app in Chinese: the top bar differs
+/// from the English one and is the same both ways; `--lang` and `--text-size` reject bad values.
+#[test]
+fn the_app_starts_in_chinese_from_the_flag_or_the_locale() {
+    let Some(xvfb) = xvfb_or_skip() else {
+        return;
+    };
+    if barylab::i18n::cjk_font().is_none() {
+        assert!(
+            std::env::var("CI").as_deref() != Ok("true"),
+            "no CJK font found: CI needs fonts-noto-cjk"
+        );
+        println!("SKIPPED: no CJK font installed");
+        return;
+    }
+    let x = start_xvfb(&xvfb);
+    let dir = tempfile::tempdir().expect("temp dir");
+    let shot = |name: &str, args: &[&str], env: &[(&str, &str)]| {
+        let path = dir.path().join(name);
+        let mut all = vec![
+            "--screenshot",
+            path.to_str().expect("utf-8 path"),
+            "--window",
+            "1024x768",
+            "--text-size",
+            "1.5",
+        ];
+        all.extend(args);
+        let (ok, err) = run_app_with(&x.display, &all, env);
+        assert!(ok, "barylab failed: {err}");
+        let img = image::open(&path).expect("screenshot PNG").to_rgba8();
+        assert_eq!((img.width(), img.height()), (1024, 768));
+        // The top bar (the status line shows timings, which differ from run to run).
+        image::imageops::crop_imm(&img, 0, 0, 1024, 40).to_image()
+    };
+    let c = [("LC_ALL", "C"), ("LC_MESSAGES", "C"), ("LANG", "C")];
+    let en = shot("en.png", &["--lang", "en"], &c);
+    let zh = shot("zh.png", &["--lang", "zh"], &c);
+    let locale = shot(
+        "locale.png",
+        &[],
+        &[("LC_ALL", ""), ("LC_MESSAGES", ""), ("LANG", "zh_CN.UTF-8")],
+    );
+    assert_ne!(en, zh, "the Chinese top bar looks like the English one");
+    assert_eq!(zh, locale, "LANG=zh_CN.UTF-8 is not the same as --lang zh");
+    for bad in [["--lang", "fr"], ["--text-size", "9"]] {
+        let out = Command::new(env!("CARGO_BIN_EXE_barylab"))
+            .args(bad)
+            .env_remove("DISPLAY")
+            .output()
+            .expect("run barylab");
+        assert!(!out.status.success(), "{bad:?} was accepted");
     }
 }

@@ -5,15 +5,7 @@ use std::time::{Duration, Instant};
 use egui::{Color32, RichText, Ui};
 
 use super::files::{FileCommand, Opened, OpenedFile};
-
-/// User-facing strings of the banner.
-pub mod text {
-    pub const OPENED: &str = "opened";
-    pub const TEXTURE_SET: &str = "is now the texture";
-    pub const NOT_OPENED: &str = "not opened; the scene is unchanged";
-    pub const NOTE: &str = "note";
-    pub const DISMISS: &str = "Dismiss";
-}
+use crate::i18n::Lang;
 
 /// The message shown under the top bar after opening a file.
 #[derive(Clone, Debug, PartialEq)]
@@ -25,6 +17,8 @@ pub struct Banner {
     pub error: bool,
     /// When it appeared (a plain success hides itself after [`BANNER_HIDE_AFTER`]).
     pub shown: Instant,
+    /// The language it was written in (its notes' label follows it).
+    pub lang: Lang,
 }
 
 /// A success without notes leaves the canvas area after this; errors and notes stay until
@@ -33,33 +27,48 @@ pub const BANNER_HIDE_AFTER: Duration = Duration::from_secs(6);
 
 impl Banner {
     /// The banner for a file that opened.
-    pub fn opened(file: &OpenedFile) -> Self {
-        let text = match file.what {
-            Opened::Scene { .. } => format!("{} {}", text::OPENED, file.path.display()),
-            Opened::Texture { .. } => format!("{} {}", file.path.display(), text::TEXTURE_SET),
+    pub fn opened(file: &OpenedFile, lang: Lang) -> Self {
+        let key = match file.what {
+            Opened::Scene { .. } => "app.banner.opened",
+            Opened::Texture { .. } => "app.banner.texture_set",
         };
         Self {
-            text,
+            text: lang.tr_with(key, &[("path", &file.path.display())]),
             notes: file.notes.clone(),
             error: false,
             shown: Instant::now(),
+            lang,
         }
     }
 
     /// The banner for a file that did not open (`error` names the file and the problem).
-    pub fn failed(error: String) -> Self {
+    pub fn failed(error: String, lang: Lang) -> Self {
         Self {
-            text: format!("{error} — {}", text::NOT_OPENED),
+            text: lang.tr_with("app.banner.not_opened", &[("error", &error)]),
             notes: Vec::new(),
             error: true,
             shown: Instant::now(),
+            lang,
+        }
+    }
+
+    /// A notice that is not about a file (such as the missing Chinese font): stays until
+    /// dismissed.
+    pub fn notice(text: String, lang: Lang) -> Self {
+        Self {
+            text,
+            notes: Vec::new(),
+            error: true,
+            shown: Instant::now(),
+            lang,
         }
     }
 
     /// Everything the banner says, one line each (for tests and the status line).
     pub fn lines(&self) -> Vec<String> {
+        let note = self.lang.tr("app.banner.note");
         std::iter::once(self.text.clone())
-            .chain(self.notes.iter().map(|n| format!("{}: {n}", text::NOTE)))
+            .chain(self.notes.iter().map(|n| format!("{note}: {n}")))
             .collect()
     }
 }
@@ -81,6 +90,7 @@ pub fn expire_banner(ctx: &egui::Context, banner: &mut Option<Banner>) {
 
 /// The banner under the top bar.
 pub fn banner_ui(ui: &mut Ui, b: &Banner) -> Vec<FileCommand> {
+    let lang = super::locale::lang(ui.ctx());
     let (fill, stroke) = if b.error {
         (
             Color32::from_rgb(90, 25, 25),
@@ -100,7 +110,7 @@ pub fn banner_ui(ui: &mut Ui, b: &Banner) -> Vec<FileCommand> {
         .corner_radius(4.0)
         .show(ui, |ui| {
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
-                if ui.button(text::DISMISS).clicked() {
+                if ui.button(lang.tr("app.banner.dismiss")).clicked() {
                     out.push(FileCommand::DismissBanner);
                 }
                 ui.vertical(|ui| {
@@ -111,7 +121,7 @@ pub fn banner_ui(ui: &mut Ui, b: &Banner) -> Vec<FileCommand> {
                     for n in &b.notes {
                         ui.add(
                             egui::Label::new(
-                                RichText::new(format!("{}: {n}", text::NOTE))
+                                RichText::new(format!("{}: {n}", &lang.tr("app.banner.note")))
                                     .color(Color32::from_rgb(255, 215, 120)),
                             )
                             .wrap(),

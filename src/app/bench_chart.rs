@@ -4,31 +4,7 @@
 use egui::{Color32, RichText, Ui};
 
 use crate::bench::{self, BenchRecord};
-
-/// User-facing strings of the results.
-pub mod text {
-    pub const FILTER: &str = "filter";
-    pub const MODE: &str = "mode";
-    pub const THREADS: &str = "threads";
-    pub const EDGE: &str = "edge functions";
-    pub const SCANLINE: &str = "scanline";
-    pub const RATIO: &str = "edge / scanline";
-    pub const LLVMPIPE_REF: &str = "llvmpipe (reference)";
-    pub const MS: &str = "ms";
-    pub const MPIX: &str = "Mpix/s";
-    pub const CHART_Y: &str = "ms per frame";
-    pub const PUBLISHED_CLAIM: &str = "A rasterizer tutorial measured per-pixel barycentric evaluation about 2x \
-        slower than the scanline with increments: 1.40 ms vs 0.73 ms (= 1.9x).";
-    pub const MEASURED_RATIO: &str = "Measured here: edge functions take";
-    pub const MEASURED_RATIO_END: &str = "the scanline's time (median over the cells above).";
-    pub const REFERENCE_HEADING: &str = "llvmpipe reference figures";
-    pub const REFERENCE_NOTE: &str = "Mesa's llvmpipe (OpenGL on the CPU) drawing the reference \
-        scene, perspective-correct, draw only; measured on this project's 2-core machine, \
-        quoted from the performance issue (not measured by this window). \
-        `cargo bench --bench llvmpipe` measures them again.";
-    pub const THREAD_1: &str = "1 thread";
-    pub const THREADS_N: &str = "threads";
-}
+use crate::i18n::Lang;
 
 /// llvmpipe's reference median for one cell (perspective only), if quoted.
 fn llvmpipe_reference(filter: &str, mode: &str, threads: usize) -> Option<f64> {
@@ -55,40 +31,64 @@ fn cells(records: &[BenchRecord]) -> Vec<(String, String, usize)> {
 
 /// The table: one row per filter x mode x threads cell, both rasterizers' medians.
 pub fn table_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
+    let lang = super::locale::lang(ui.ctx());
     let ms =
         |r: Option<&BenchRecord>| r.map_or("…".to_string(), |r| format!("{:.1}", r.median_ms));
     egui::Grid::new("bench_table")
         .striped(true)
         .spacing([18.0, 4.0])
         .show(ui, |ui| {
-            for h in [text::FILTER, text::MODE, text::THREADS] {
+            for h in [
+                &lang.tr("app.bench_chart.filter"),
+                &lang.tr("app.bench_chart.mode"),
+                &lang.tr("app.bench_chart.threads"),
+            ] {
                 ui.label(RichText::new(h).strong());
             }
             ui.label(
-                RichText::new(format!("{} {}", text::EDGE, text::MS))
-                    .strong()
-                    .color(EDGE_COLOR),
+                RichText::new(format!(
+                    "{} {}",
+                    &lang.tr("app.bench_chart.edge"),
+                    &lang.tr("app.bench_chart.ms")
+                ))
+                .strong()
+                .color(EDGE_COLOR),
             );
             ui.label(
-                RichText::new(format!("{} {}", text::SCANLINE, text::MS))
-                    .strong()
-                    .color(SCANLINE_COLOR),
+                RichText::new(format!(
+                    "{} {}",
+                    &lang.tr("app.bench_chart.scanline"),
+                    &lang.tr("app.bench_chart.ms")
+                ))
+                .strong()
+                .color(SCANLINE_COLOR),
             );
-            ui.label(RichText::new(text::RATIO).strong());
-            ui.label(RichText::new(format!("{} {}", text::EDGE, text::MPIX)).strong());
+            ui.label(RichText::new(lang.tr("app.bench_chart.ratio")).strong());
+            ui.label(
+                RichText::new(format!(
+                    "{} {}",
+                    &lang.tr("app.bench_chart.edge"),
+                    &lang.tr("app.bench_chart.mpix")
+                ))
+                .strong(),
+            );
             if reference {
                 ui.label(
-                    RichText::new(format!("{} {}", text::LLVMPIPE_REF, text::MS))
-                        .strong()
-                        .color(LLVMPIPE_COLOR),
+                    RichText::new(format!(
+                        "{} {}",
+                        &lang.tr("app.bench_chart.llvmpipe_ref"),
+                        &lang.tr("app.bench_chart.ms")
+                    ))
+                    .strong()
+                    .color(LLVMPIPE_COLOR),
                 );
             }
             ui.end_row();
             for (filter, mode, threads) in cells(records) {
                 let edge = bench::find(records, "edge", &filter, &mode, threads);
                 let scan = bench::find(records, "scanline", &filter, &mode, threads);
-                ui.label(&filter);
-                ui.label(&mode);
+                ui.label(shown(lang, &filter));
+                ui.label(shown(lang, &mode));
                 ui.label(threads.to_string());
                 ui.monospace(ms(edge));
                 ui.monospace(ms(scan));
@@ -108,6 +108,19 @@ pub fn table_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
         });
 }
 
+/// A filter or mode name of the records (`nearest`, `affine`, ...) in `lang`.
+fn shown(lang: Lang, value: &str) -> String {
+    let key = match value {
+        "nearest" => "app.bench_chart.value.nearest",
+        "bilinear" => "app.bench_chart.value.bilinear",
+        "trilinear" => "app.bench_chart.value.trilinear",
+        "affine" => "app.bench_chart.value.affine",
+        "perspective" => "app.bench_chart.value.perspective",
+        other => return other.to_string(),
+    };
+    lang.tr(key)
+}
+
 /// The median over the measured cells of edge / scanline.
 fn median_ratio(records: &[BenchRecord]) -> Option<f64> {
     let ratios: Vec<f64> = cells(records)
@@ -119,13 +132,13 @@ fn median_ratio(records: &[BenchRecord]) -> Option<f64> {
 
 /// The published claim and the measured edge / scanline ratio.
 pub fn ratio_ui(ui: &mut Ui, records: &[BenchRecord]) {
-    ui.label(text::PUBLISHED_CLAIM);
+    let lang = super::locale::lang(ui.ctx());
+    ui.label(lang.tr("app.bench_chart.published_claim"));
     if let Some(r) = median_ratio(records) {
         ui.label(
-            RichText::new(format!(
-                "{} {r:.2}x {}",
-                text::MEASURED_RATIO,
-                text::MEASURED_RATIO_END
+            RichText::new(lang.tr_with(
+                "app.bench_chart.measured_ratio",
+                &[("ratio", &format!("{r:.2}"))],
             ))
             .strong(),
         );
@@ -144,6 +157,7 @@ const BAR_WIDTH: f64 = 0.26;
 
 /// The bar chart of the medians (with llvmpipe's figures for the reference scene).
 pub fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
+    let lang = super::locale::lang(ui.ctx());
     use egui_plot::{AxisHints, Bar, BarChart, Corner, GridMark, Legend, Plot};
     let cells = cells(records);
     let series = |name: &str,
@@ -166,22 +180,35 @@ pub fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
     let ms_of = |name: &'static str| {
         move |f: &str, m: &str, t: usize| bench::find(records, name, f, m, t).map(|r| r.median_ms)
     };
-    let edge = series(text::EDGE, -BAR_WIDTH, EDGE_COLOR, &ms_of("edge"));
-    let scan = series(text::SCANLINE, 0.0, SCANLINE_COLOR, &ms_of("scanline"));
+    let edge = series(
+        &lang.tr("app.bench_chart.edge"),
+        -BAR_WIDTH,
+        EDGE_COLOR,
+        &ms_of("edge"),
+    );
+    let scan = series(
+        &lang.tr("app.bench_chart.scanline"),
+        0.0,
+        SCANLINE_COLOR,
+        &ms_of("scanline"),
+    );
     let llvm = reference.then(|| {
-        series(text::LLVMPIPE_REF, BAR_WIDTH, LLVMPIPE_COLOR, &|f, m, t| {
-            llvmpipe_reference(f, m, t)
-        })
+        series(
+            &lang.tr("app.bench_chart.llvmpipe_ref"),
+            BAR_WIDTH,
+            LLVMPIPE_COLOR,
+            &|f, m, t| llvmpipe_reference(f, m, t),
+        )
     });
     let labels: Vec<String> = cells
         .iter()
         .map(|(f, m, t)| {
             let threads = if *t == 1 {
-                text::THREAD_1.to_string()
+                lang.tr("app.bench_chart.thread_1")
             } else {
-                format!("{t} {}", text::THREADS_N)
+                lang.tr_with("app.bench_chart.threads_n", &[("n", t)])
             };
-            format!("{f}\n{m}\n{threads}")
+            format!("{}\n{}\n{threads}", shown(lang, f), shown(lang, m))
         })
         .collect();
     let n = cells.len();
@@ -189,7 +216,7 @@ pub fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
     Plot::new("bench_chart")
         .height(280.0)
         .legend(Legend::default().position(Corner::LeftTop))
-        .y_axis_label(text::CHART_Y)
+        .y_axis_label(lang.tr("app.bench_chart.chart_y"))
         .include_y(0.0)
         .include_y(tallest * LEGEND_HEADROOM)
         .include_x(-0.6)
@@ -231,35 +258,36 @@ pub fn chart_ui(ui: &mut Ui, records: &[BenchRecord], reference: bool) {
 
 /// llvmpipe's reference figures for the 1080p scene.
 pub fn reference_ui(ui: &mut Ui) {
-    ui.label(RichText::new(text::REFERENCE_HEADING).strong());
+    let lang = super::locale::lang(ui.ctx());
+    ui.label(RichText::new(lang.tr("app.bench_chart.reference_heading")).strong());
     egui::Grid::new("llvmpipe_reference")
         .spacing([18.0, 2.0])
         .show(ui, |ui| {
             ui.label("");
-            ui.label(RichText::new("nearest").strong());
-            ui.label(RichText::new("bilinear").strong());
+            ui.label(RichText::new(shown(lang, "nearest")).strong());
+            ui.label(RichText::new(shown(lang, "bilinear")).strong());
             ui.end_row();
             for threads in [1usize, 2] {
                 ui.label(if threads == 1 {
-                    text::THREAD_1.to_string()
+                    lang.tr("app.bench_chart.thread_1")
                 } else {
-                    format!("{threads} {}", text::THREADS_N)
+                    lang.tr_with("app.bench_chart.threads_n", &[("n", &threads)])
                 });
                 for filter in ["nearest", "bilinear"] {
                     let ms = llvmpipe_reference(filter, "perspective", threads);
                     ui.monospace(ms.map_or("-".into(), |ms| {
                         format!(
                             "{ms:.1} {} ({:.0} {})",
-                            text::MS,
+                            &lang.tr("app.bench_chart.ms"),
                             bench::mpix_per_s(1920, 1080, ms),
-                            text::MPIX
+                            &lang.tr("app.bench_chart.mpix")
                         )
                     }));
                 }
                 ui.end_row();
             }
         });
-    ui.label(RichText::new(text::REFERENCE_NOTE).small());
+    ui.label(RichText::new(lang.tr("app.bench_chart.reference_note")).small());
 }
 
 #[cfg(test)]

@@ -17,34 +17,6 @@ use crate::bench::{self, BenchRecord};
 use crate::raster::{ClipMesh, RenderSettings, Texture};
 use crate::scene::Scene;
 
-/// User-facing strings of the benchmark window.
-pub mod text {
-    pub const TITLE: &str = "Benchmark";
-    pub const OPEN: &str = "Benchmark";
-    pub const OPEN_TIP: &str = "Time the two rasterizers (edge functions, scanline) on this \
-        scene: every filter x mode x thread count, median ms per frame. Compare with a published \
-        measurement and with Mesa's llvmpipe.";
-    pub const RUN: &str = "Run";
-    pub const RUN_TIP: &str = "Render every configuration the given number of times in the \
-        background and keep the median. The app stays usable; timings are noisier while you \
-        interact.";
-    pub const STOP: &str = "Stop";
-    pub const FRAMES: &str = "Frames per configuration";
-    pub const FRAMES_TIP: &str = "Each configuration is rendered this many times; the median \
-        time is shown.";
-    pub const SOURCE_CANVAS: &str = "Current scene at canvas size";
-    pub const SOURCE_REFERENCE: &str = "Reference scene (1920 x 1080)";
-    pub const SOURCE_REFERENCE_TIP: &str = "assets/scenes/bench-1080p.json: a full-screen quad, \
-        w from 1 to 4, 1024 x 1024 noise texture. llvmpipe's reference figures are for this \
-        scene.";
-    pub const NOTHING_TO_MEASURE: &str = "Nothing rendered yet to measure.";
-    pub const RUNNING: &str = "measuring";
-    pub const STOPPED: &str = "stopped";
-    pub const NO_RESULTS: &str = "Press Run to measure.";
-    pub const MEASURED: &str = "Measured";
-    pub const CHART_CAPTION: &str = "Median ms per frame, lower is faster.";
-}
-
 /// Which scene the benchmark draws.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BenchSource {
@@ -267,6 +239,7 @@ impl BenchPanel {
         command: BenchCommand,
         current: Option<(&Scene, &Arc<Texture>)>,
     ) {
+        let lang = super::locale::lang(ctx);
         match command {
             BenchCommand::SetOpen(open) => self.open = open,
             BenchCommand::SetSource(source) => self.source = source,
@@ -281,10 +254,13 @@ impl BenchPanel {
                             BenchJob::from_scene(
                                 scene,
                                 texture.clone(),
-                                format!("current scene, {w} x {h}"),
+                                lang.tr_with(
+                                    "app.bench_panel.current_scene",
+                                    &[("w", &w), ("h", &h)],
+                                ),
                             )
                         })
-                        .ok_or_else(|| text::NOTHING_TO_MEASURE.to_string()),
+                        .ok_or_else(|| lang.tr("app.bench_panel.nothing_to_measure")),
                     BenchSource::Reference => BenchJob::reference(),
                 };
                 match job {
@@ -294,7 +270,7 @@ impl BenchPanel {
             }
             BenchCommand::Stop => {
                 self.stop();
-                self.error = Some(text::STOPPED.into());
+                self.error = Some(lang.tr("app.bench_panel.stopped"));
             }
         }
     }
@@ -311,9 +287,11 @@ impl BenchPanel {
 
 /// The benchmark window (when open).
 pub fn bench_ui(ctx: &egui::Context, panel: &BenchPanel) -> Vec<BenchCommand> {
+    let lang = super::locale::lang(ctx);
     let mut out = Vec::new();
     let mut open = panel.open;
-    egui::Window::new(text::TITLE)
+    egui::Window::new(lang.tr("app.bench_panel.title"))
+        .id(egui::Id::unique("bench-window"))
         .open(&mut open)
         .default_pos([360.0, 50.0])
         .default_size([900.0, 860.0])
@@ -326,24 +304,39 @@ pub fn bench_ui(ctx: &egui::Context, panel: &BenchPanel) -> Vec<BenchCommand> {
 }
 
 fn window_contents(ui: &mut Ui, panel: &BenchPanel, out: &mut Vec<BenchCommand>) {
+    let lang = super::locale::lang(ui.ctx());
     let mut source = panel.source;
     ui.horizontal(|ui| {
-        ui.radio_value(&mut source, BenchSource::Canvas, text::SOURCE_CANVAS);
-        ui.radio_value(&mut source, BenchSource::Reference, text::SOURCE_REFERENCE)
-            .on_hover_text(text::SOURCE_REFERENCE_TIP);
+        ui.radio_value(
+            &mut source,
+            BenchSource::Canvas,
+            lang.tr("app.bench_panel.source_canvas"),
+        );
+        ui.radio_value(
+            &mut source,
+            BenchSource::Reference,
+            lang.tr("app.bench_panel.source_reference"),
+        )
+        .on_hover_text(lang.tr("app.bench_panel.source_reference_tip"));
     });
     if source != panel.source {
         out.push(BenchCommand::SetSource(source));
     }
     ui.horizontal(|ui| {
         if panel.is_running() {
-            if ui.button(text::STOP).clicked() {
+            if ui.button(lang.tr("app.bench_panel.stop")).clicked() {
                 out.push(BenchCommand::Stop);
             }
-        } else if ui.button(text::RUN).on_hover_text(text::RUN_TIP).clicked() {
+        } else if ui
+            .button(lang.tr("app.bench_panel.run"))
+            .on_hover_text(lang.tr("app.bench_panel.run_tip"))
+            .clicked()
+        {
             out.push(BenchCommand::Run);
         }
-        let label = ui.label(text::FRAMES).on_hover_text(text::FRAMES_TIP);
+        let label = ui
+            .label(lang.tr("app.bench_panel.frames"))
+            .on_hover_text(lang.tr("app.bench_panel.frames_tip"));
         let mut frames = panel.frames;
         ui.add(egui::DragValue::new(&mut frames).range(FRAMES_RANGE.0..=FRAMES_RANGE.1))
             .labelled_by(label.id);
@@ -354,9 +347,9 @@ fn window_contents(ui: &mut Ui, panel: &BenchPanel, out: &mut Vec<BenchCommand>)
     if panel.total > 0 && (panel.is_running() || panel.records.len() < panel.total) {
         let done = panel.records.len();
         let label = if panel.is_running() {
-            text::RUNNING
+            &lang.tr("app.bench_panel.running")
         } else {
-            text::STOPPED
+            &lang.tr("app.bench_panel.stopped")
         };
         ui.add(
             egui::ProgressBar::new(done as f32 / panel.total as f32)
@@ -368,17 +361,19 @@ fn window_contents(ui: &mut Ui, panel: &BenchPanel, out: &mut Vec<BenchCommand>)
     }
     ui.separator();
     if panel.records.is_empty() {
-        ui.label(text::NO_RESULTS);
+        ui.label(lang.tr("app.bench_panel.no_results"));
     } else {
         if let Some(m) = &panel.measured {
-            ui.label(RichText::new(format!("{}: {m}", text::MEASURED)).strong());
+            ui.label(
+                RichText::new(format!("{}: {m}", &lang.tr("app.bench_panel.measured"))).strong(),
+            );
         }
         let reference = panel.measured_reference;
         bench_chart::table_ui(ui, &panel.records, reference);
         ui.add_space(6.0);
         bench_chart::ratio_ui(ui, &panel.records);
         ui.add_space(6.0);
-        ui.label(RichText::new(text::CHART_CAPTION).small());
+        ui.label(RichText::new(lang.tr("app.bench_panel.chart_caption")).small());
         bench_chart::chart_ui(ui, &panel.records, reference);
     }
     ui.separator();

@@ -16,14 +16,6 @@ use crate::raster::project::Viewport;
 use crate::raster::{Interpolation, Texture};
 use crate::scene::Scene;
 
-/// User-facing strings of the canvas.
-mod text {
-    pub const HANDLE_TIP: &str = "Drag: move this corner parallel to the screen (it keeps its w).\n\
-        Scroll or Shift+drag: push it away / pull it closer along its view ray \
-        (same place on screen, different w).";
-    pub const WIPE_LINE: &str = "Drag to move the wipe line.";
-}
-
 /// Points between the two views of the side-by-side comparison.
 const SIDE_BY_SIDE_GAP: f32 = crate::figure::SIDE_BY_SIDE_GAP as f32;
 /// Screen pixels per rendered pixel from which a fixed-size image is magnified by a whole
@@ -289,6 +281,7 @@ pub struct CanvasInput<'a> {
 /// The canvas panel. It renders and uploads what changed, and keeps its own widget state
 /// (views, hovered pixel, drag) in `canvas`; every change to the app is a returned command.
 pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) -> Vec<Command> {
+    let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     let state = input.state;
     let view_settings = &state.view;
@@ -328,7 +321,10 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
     canvas.upload(ui.ctx(), view_settings.compare, view_settings.wipe);
     let Some(output) = &canvas.output else {
         if let Some(e) = &canvas.error {
-            ui.colored_label(Color32::LIGHT_RED, e);
+            ui.colored_label(
+                Color32::LIGHT_RED,
+                lang.tr_with("app.canvas.render_failed", &[("error", e)]),
+            );
         }
         return out;
     };
@@ -398,7 +394,7 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
                     (p.x - view.rect.left()) / view.rect.width(),
                 ));
             }
-            r.on_hover_text(text::WIPE_LINE);
+            r.on_hover_text(lang.tr("app.canvas.wipe_line"));
         }
 
         // Handles.
@@ -470,7 +466,7 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
                         });
                     }
                 }
-                r.on_hover_text(text::HANDLE_TIP);
+                r.on_hover_text(lang.tr("app.canvas.handle_tip"));
             }
         }
     }
@@ -528,7 +524,7 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
             &painter,
             clip,
             view.transform,
-            &overlay::build(&input_overlay),
+            &overlay::build_in(&input_overlay, lang),
         );
     }
     out

@@ -22,6 +22,8 @@ pub enum AppCommand {
     SetHelpOpen(bool),
     /// Enter or leave presentation mode.
     SetPresenting(bool),
+    /// Show the app in this language (the top bar's switch).
+    SetLang(crate::i18n::Lang),
     /// Undo the last scene edit.
     Undo,
     /// Redo the last undone scene edit.

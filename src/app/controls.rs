@@ -9,120 +9,19 @@ use super::presets::Preset;
 use super::state::{AppState, Command, PIXEL_SIZE_RANGE, UI_SCALE_RANGE};
 use crate::figure::Compare;
 use crate::figure::overlay::{vertex_color, vertex_name};
+use crate::i18n::Lang;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
-/// User-facing strings of the controls panel.
-pub mod text {
-    pub const INTERPOLATION: &str = "Interpolation";
-    pub const AFFINE: &str = "Affine";
-    pub const PERSPECTIVE: &str = "Perspective-correct";
-    pub const COMPARE: &str = "Compare";
-    pub const SINGLE: &str = "Single";
-    pub const SIDE_BY_SIDE: &str = "Side by side";
-    pub const WIPE: &str = "Wipe";
-    pub const DIFFERENCE: &str = "Difference";
-    pub const SHADING: &str = "Shading";
-    pub const TEXTURE: &str = "Texture";
-    pub const VERTEX_COLOR: &str = "Vertex colour";
-    pub const BARYCENTRIC: &str = "Barycentric";
-    pub const DEPTH: &str = "Depth";
-    pub const FILTER: &str = "Filter";
-    pub const NEAREST: &str = "Nearest";
-    pub const BILINEAR: &str = "Bilinear";
-    pub const TRILINEAR: &str = "Trilinear";
-    pub const WIREFRAME: &str = "Wireframe (edges + diagonal)";
-    pub const RASTERIZER: &str = "Rasterizer";
-    pub const EDGE_FUNCTIONS: &str = "Edge functions";
-    pub const SCANLINE: &str = "Scanline";
-    pub const PIXELS: &str = "Pixels";
-    pub const PIXEL_SIZE: &str = "Pixel size";
-    pub const GRID: &str = "Pixel grid and sample points";
-    pub const HANDLES: &str = "Corner handles";
-    pub const SUB_AREAS: &str = "Sub-triangle areas";
-    pub const PRESETS: &str = "Presets";
-    pub const CAMERA: &str = "Tilt and camera";
-    pub const PITCH: &str = "Pitch";
-    pub const YAW: &str = "Yaw";
-    pub const FOV: &str = "Field of view";
-    pub const VERTICES: &str = "Corners";
-    pub const POSITION: &str = "position";
-    pub const CLIP: &str = "clip";
-    pub const UV: &str = "uv";
-    pub const RESET_SCENE: &str = "Reset scene";
-    pub const RESET_ALL: &str = "Reset everything";
-    pub const TEXT_SIZE: &str = "Text size";
-    pub const NO_TILT_CLIP: &str = "Clip-space and model scenes have no tilt.";
-    pub const MODEL: &str = "Model";
-    pub const MODEL_VERTICES: &str = "vertices";
-    pub const MODEL_TRIANGLES: &str = "triangles";
-    pub const MODEL_CAMERA_HINT: &str =
-        "Drag: orbit · Shift+drag or right drag: pan · scroll: zoom";
-    pub const RESET_VIEW: &str = "Reset view";
-
-    pub fn preset(p: super::Preset) -> &'static str {
-        use super::Preset::*;
-        match p {
-            FrontFacing => "Front-facing",
-            Floor => "Floor (default)",
-            GrazingWall => "Wall at a grazing angle",
-            FarCorner => "One corner far away",
-            CornerBehind => "A corner behind the camera",
-        }
-    }
-}
-
-/// Tooltips of the controls (and of canvas items).
-pub mod tips {
-    pub const AFFINE: &str = "Interpolate with screen-space weights, as if the triangle were flat \
-        on the screen (GLSL `noperspective`). Key: P";
-    pub const PERSPECTIVE: &str = "Divide by w before interpolating and multiply back \
-        (GLSL `smooth`, what GPUs do by default). Key: P";
-    pub const SINGLE: &str = "One view in the chosen interpolation mode. Key: 1";
-    pub const SIDE_BY_SIDE: &str =
-        "Affine on the left, perspective-correct on the right, same view. Key: 2";
-    pub const WIPE: &str = "One view split by a line you can drag: affine on the left, \
-        perspective-correct on the right. Key: 3";
-    pub const DIFFERENCE: &str = "How far apart the two modes' texture coordinates are, in texels, \
-        as a heatmap with a colour bar. Key: 4";
-    pub const TEXTURE: &str = "Sample the texture at the interpolated uv.";
-    pub const VERTEX_COLOR: &str = "Interpolate the corners' colours.";
-    pub const BARYCENTRIC: &str =
-        "Show the three weights of the pixel's triangle as red, green, blue.";
-    pub const DEPTH: &str =
-        "Window depth z/w as grey (near black, far white): it is linear on screen.";
-    pub const NEAREST: &str = "GL_NEAREST: the texel containing the sample.";
-    pub const BILINEAR: &str = "GL_LINEAR: the four texels around the sample, weighted.";
-    pub const TRILINEAR: &str = "GL_LINEAR_MIPMAP_LINEAR: bilinear in the two mipmap levels \
-        around the level of detail (from the uv change across the 2x2 pixel quad), blended. \
-        Compare with bilinear on a far-away checkerboard: the moiré goes away.";
-    pub const EDGE_FUNCTIONS: &str = "Every pixel of the triangle's bounding box (in 8x8 blocks, \
-        whole blocks rejected or accepted at once) is tested against the three edge functions \
-        and interpolated from its own weights. The inspector shows exactly these numbers.";
-    pub const SCANLINE: &str = "Per row, the covered span is found from the edges, and u/w, v/w, \
-        1/w are stepped by one addition per pixel (the classic incremental scanline). Same pixels covered; \
-        values equal up to rounding. The inspector still shows the edge-function derivation.";
-    pub const WIREFRAME: &str = "Draw the triangles' edges (and so the quad's diagonal A-C) by \
-        thresholding the smallest weight. Key: W";
-    pub const PIXEL_SIZE: &str = "With \"Fit window\": render at a lower resolution and \
-        magnify, so each rendered pixel is this many screen pixels wide. Keys: [ and ]";
-    pub const GRID: &str = "At large pixel sizes, draw the pixel grid and the pixel centres \
-        where the samples are taken. Key: G";
-    pub const HANDLES: &str = "Show the draggable corner handles with their w. Key: H";
-    pub const SUB_AREAS: &str = "Shade the three sub-triangles of the hovered pixel: each one's \
-        signed area over the whole is the weight of the opposite corner.";
-    pub const PRESET: &str = "Load this situation (keeps mode, shading and texture).";
-    pub const PITCH: &str = "Rotate the quad about its centre around the horizontal axis.";
-    pub const YAW: &str = "Rotate the quad about its centre around the vertical axis.";
-    pub const FOV: &str = "The camera's vertical field of view. Wider means stronger perspective.";
-    pub const POSITION: &str = "Object-space position (before the tilt). Drag to change, \
-        double-click to type.";
-    pub const CLIP: &str = "Clip-space position (x, y, z, w).";
-    pub const UV: &str = "Texture coordinate of this corner.";
-    pub const RESET_SCENE: &str = "Back to the built-in floor scene; view settings stay.";
-    pub const RESET_ALL: &str = "Back to the default scene and all default settings.";
-    pub const TEXT_SIZE: &str = "Zoom the whole interface, for a projector. Keys: Ctrl + / Ctrl -";
-    pub const RESET_VIEW: &str = "Back to the camera that frames the whole model. Key: Home";
+/// The name of a preset, for its button (and the lessons).
+pub fn preset_name(p: Preset, lang: Lang) -> String {
+    lang.tr(match p {
+        Preset::FrontFacing => "app.controls.preset.front_facing",
+        Preset::Floor => "app.controls.preset.floor",
+        Preset::GrazingWall => "app.controls.preset.grazing_wall",
+        Preset::FarCorner => "app.controls.preset.far_corner",
+        Preset::CornerBehind => "app.controls.preset.corner_behind",
+    })
 }
 
 /// Width of numeric fields, in points.
@@ -130,23 +29,34 @@ const FIELD_WIDTH: f32 = 64.0;
 
 /// The controls panel.
 pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
+    let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     let options = state.options();
     let view = &state.view;
+    fit_sliders(
+        ui,
+        &[
+            "app.controls.pixel_size",
+            "app.controls.pitch",
+            "app.controls.yaw",
+            "app.controls.fov",
+        ]
+        .map(|k| lang.tr(k)),
+    );
 
-    section(ui, text::INTERPOLATION);
+    section(ui, &lang.tr("app.controls.interpolation"));
     ui.horizontal_wrapped(|ui| {
         for (mode, label, tip, c) in [
             (
                 Interpolation::Affine,
-                text::AFFINE,
-                tips::AFFINE,
+                &lang.tr("app.controls.affine"),
+                &lang.tr("app.controls.tip.affine"),
                 Color32::from_rgb(230, 140, 60),
             ),
             (
                 Interpolation::Perspective,
-                text::PERSPECTIVE,
-                tips::PERSPECTIVE,
+                &lang.tr("app.controls.perspective"),
+                &lang.tr("app.controls.tip.perspective"),
                 Color32::from_rgb(80, 170, 255),
             ),
         ] {
@@ -168,13 +78,29 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         }
     });
 
-    section(ui, text::COMPARE);
+    section(ui, &lang.tr("app.controls.compare"));
     ui.horizontal_wrapped(|ui| {
         for (c, label, tip) in [
-            (Compare::Single, text::SINGLE, tips::SINGLE),
-            (Compare::SideBySide, text::SIDE_BY_SIDE, tips::SIDE_BY_SIDE),
-            (Compare::Wipe, text::WIPE, tips::WIPE),
-            (Compare::Difference, text::DIFFERENCE, tips::DIFFERENCE),
+            (
+                Compare::Single,
+                &lang.tr("app.controls.single"),
+                &lang.tr("app.controls.tip.single"),
+            ),
+            (
+                Compare::SideBySide,
+                &lang.tr("app.controls.side_by_side"),
+                &lang.tr("app.controls.tip.side_by_side"),
+            ),
+            (
+                Compare::Wipe,
+                &lang.tr("app.controls.wipe"),
+                &lang.tr("app.controls.tip.wipe"),
+            ),
+            (
+                Compare::Difference,
+                &lang.tr("app.controls.difference"),
+                &lang.tr("app.controls.tip.difference"),
+            ),
         ] {
             if ui
                 .selectable_label(view.compare == c, label)
@@ -186,13 +112,29 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         }
     });
 
-    section(ui, text::SHADING);
+    section(ui, &lang.tr("app.controls.shading"));
     ui.horizontal_wrapped(|ui| {
         for (s, label, tip) in [
-            (Shading::Texture, text::TEXTURE, tips::TEXTURE),
-            (Shading::VertexColor, text::VERTEX_COLOR, tips::VERTEX_COLOR),
-            (Shading::Barycentric, text::BARYCENTRIC, tips::BARYCENTRIC),
-            (Shading::Depth, text::DEPTH, tips::DEPTH),
+            (
+                Shading::Texture,
+                &lang.tr("app.controls.texture"),
+                &lang.tr("app.controls.tip.texture"),
+            ),
+            (
+                Shading::VertexColor,
+                &lang.tr("app.controls.vertex_color"),
+                &lang.tr("app.controls.tip.vertex_color"),
+            ),
+            (
+                Shading::Barycentric,
+                &lang.tr("app.controls.barycentric"),
+                &lang.tr("app.controls.tip.barycentric"),
+            ),
+            (
+                Shading::Depth,
+                &lang.tr("app.controls.depth"),
+                &lang.tr("app.controls.tip.depth"),
+            ),
         ] {
             if ui
                 .selectable_label(options.shading == s, label)
@@ -204,11 +146,23 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         }
     });
     ui.horizontal_wrapped(|ui| {
-        ui.label(text::FILTER);
+        ui.label(lang.tr("app.controls.filter"));
         for (f, label, tip) in [
-            (Filter::Nearest, text::NEAREST, tips::NEAREST),
-            (Filter::Bilinear, text::BILINEAR, tips::BILINEAR),
-            (Filter::Trilinear, text::TRILINEAR, tips::TRILINEAR),
+            (
+                Filter::Nearest,
+                &lang.tr("app.controls.nearest"),
+                &lang.tr("app.controls.tip.nearest"),
+            ),
+            (
+                Filter::Bilinear,
+                &lang.tr("app.controls.bilinear"),
+                &lang.tr("app.controls.tip.bilinear"),
+            ),
+            (
+                Filter::Trilinear,
+                &lang.tr("app.controls.trilinear"),
+                &lang.tr("app.controls.tip.trilinear"),
+            ),
         ] {
             if ui
                 .selectable_label(options.filter == f, label)
@@ -221,22 +175,26 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     });
     let mut wire = options.wireframe;
     if ui
-        .checkbox(&mut wire, text::WIREFRAME)
-        .on_hover_text(tips::WIREFRAME)
+        .checkbox(&mut wire, lang.tr("app.controls.wireframe"))
+        .on_hover_text(lang.tr("app.controls.tip.wireframe"))
         .changed()
     {
         out.push(Command::SetWireframe(wire));
     }
     ui.horizontal_wrapped(|ui| {
         use crate::raster::render::Rasterizer;
-        ui.label(text::RASTERIZER);
+        ui.label(lang.tr("app.controls.rasterizer"));
         for (r, label, tip) in [
             (
                 Rasterizer::EdgeFunction,
-                text::EDGE_FUNCTIONS,
-                tips::EDGE_FUNCTIONS,
+                &lang.tr("app.controls.edge_functions"),
+                &lang.tr("app.controls.tip.edge_functions"),
             ),
-            (Rasterizer::Scanline, text::SCANLINE, tips::SCANLINE),
+            (
+                Rasterizer::Scanline,
+                &lang.tr("app.controls.scanline"),
+                &lang.tr("app.controls.tip.scanline"),
+            ),
         ] {
             if ui
                 .selectable_label(view.rasterizer == r, label)
@@ -248,7 +206,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         }
     });
 
-    section(ui, text::PIXELS);
+    section(ui, &lang.tr("app.controls.pixels"));
     out.extend(super::image_size::image_size_ui(ui, state));
     let mut px = view.pixel_size;
     if ui
@@ -257,9 +215,9 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
             Slider::new(&mut px, PIXEL_SIZE_RANGE.0..=PIXEL_SIZE_RANGE.1)
                 .logarithmic(true)
                 .suffix("×")
-                .text(text::PIXEL_SIZE),
+                .text(lang.tr("app.controls.pixel_size")),
         )
-        .on_hover_text(tips::PIXEL_SIZE)
+        .on_hover_text(lang.tr("app.controls.tip.pixel_size"))
         .changed()
     {
         out.push(Command::SetPixelSize(px));
@@ -267,34 +225,34 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
     checkbox(
         ui,
         view.show_grid,
-        text::GRID,
-        tips::GRID,
+        &lang.tr("app.controls.grid"),
+        &lang.tr("app.controls.tip.grid"),
         &mut out,
         Command::SetShowGrid,
     );
     checkbox(
         ui,
         view.show_handles,
-        text::HANDLES,
-        tips::HANDLES,
+        &lang.tr("app.controls.handles"),
+        &lang.tr("app.controls.tip.handles"),
         &mut out,
         Command::SetShowHandles,
     );
     checkbox(
         ui,
         view.show_sub_areas,
-        text::SUB_AREAS,
-        tips::SUB_AREAS,
+        &lang.tr("app.controls.sub_areas"),
+        &lang.tr("app.controls.tip.sub_areas"),
         &mut out,
         Command::SetShowSubAreas,
     );
 
-    section(ui, text::PRESETS);
+    section(ui, &lang.tr("app.controls.presets"));
     ui.horizontal_wrapped(|ui| {
         for p in Preset::ALL {
             if ui
-                .button(text::preset(p))
-                .on_hover_text(tips::PRESET)
+                .button(preset_name(p, lang))
+                .on_hover_text(lang.tr("app.controls.tip.preset"))
                 .clicked()
             {
                 out.push(Command::Preset(p));
@@ -302,11 +260,11 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         }
     });
 
-    section(ui, text::CAMERA);
+    section(ui, &lang.tr("app.controls.camera"));
     camera_ui(ui, &state.scene, &mut out);
 
     ui.add_space(6.0);
-    egui::CollapsingHeader::new(RichText::new(text::VERTICES).strong())
+    egui::CollapsingHeader::new(RichText::new(lang.tr("app.controls.vertices")).strong())
         .default_open(true)
         .show(ui, |ui| vertices_ui(ui, &state.scene, &mut out));
     out
@@ -314,17 +272,18 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
 
 /// The reset buttons and the text size, for the top bar.
 pub fn reset_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
+    let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     if ui
-        .button(text::RESET_SCENE)
-        .on_hover_text(tips::RESET_SCENE)
+        .button(lang.tr("app.controls.reset_scene"))
+        .on_hover_text(lang.tr("app.controls.tip.reset_scene"))
         .clicked()
     {
         out.push(Command::ResetScene);
     }
     if ui
-        .button(text::RESET_ALL)
-        .on_hover_text(tips::RESET_ALL)
+        .button(lang.tr("app.controls.reset_all"))
+        .on_hover_text(lang.tr("app.controls.tip.reset_all"))
         .clicked()
     {
         out.push(Command::ResetAll);
@@ -335,14 +294,35 @@ pub fn reset_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         .add(
             Slider::new(&mut scale, UI_SCALE_RANGE.0..=UI_SCALE_RANGE.1)
                 .step_by(0.05)
-                .text(text::TEXT_SIZE),
+                .text(lang.tr("app.controls.text_size")),
         )
-        .on_hover_text(tips::TEXT_SIZE)
+        .on_hover_text(lang.tr("app.controls.tip.text_size"))
         .changed()
     {
         out.push(Command::SetUiScale(scale));
     }
     out
+}
+
+/// Room for a slider's value field (with its unit), in points.
+const SLIDER_VALUE: f32 = 64.0;
+
+/// Narrows this panel's sliders so that the longest of their `labels` fits beside them in
+/// either language, at any text size (a slider's label is drawn to its right and would be cut
+/// at the panel's edge).
+fn fit_sliders(ui: &mut Ui, labels: &[String]) {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let widest = labels
+        .iter()
+        .map(|l| {
+            ui.painter()
+                .layout_no_wrap(l.clone(), font.clone(), Color32::WHITE)
+                .size()
+                .x
+        })
+        .fold(0.0, f32::max);
+    let room = ui.available_width() - widest - SLIDER_VALUE - 2.0 * ui.spacing().item_spacing.x;
+    ui.spacing_mut().slider_width = room.clamp(60.0, 180.0);
 }
 
 fn section(ui: &mut Ui, title: &str) {
@@ -369,12 +349,13 @@ fn checkbox(
 }
 
 fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
+    let lang = super::locale::lang(ui.ctx());
     if let Scene::Model(_) = scene {
         model_camera_ui(ui, scene, out);
         return;
     }
     let Scene::World(s) = scene else {
-        ui.label(text::NO_TILT_CLIP);
+        ui.label(lang.tr("app.controls.no_tilt_clip"));
         return;
     };
     let mut tilt = s.tilt;
@@ -383,17 +364,17 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
         .add(
             Slider::new(&mut tilt.pitch_deg, -90.0..=90.0)
                 .suffix("°")
-                .text(text::PITCH),
+                .text(lang.tr("app.controls.pitch")),
         )
-        .on_hover_text(tips::PITCH)
+        .on_hover_text(lang.tr("app.controls.tip.pitch"))
         .changed();
     changed |= ui
         .add(
             Slider::new(&mut tilt.yaw_deg, -90.0..=90.0)
                 .suffix("°")
-                .text(text::YAW),
+                .text(lang.tr("app.controls.yaw")),
         )
-        .on_hover_text(tips::YAW)
+        .on_hover_text(lang.tr("app.controls.tip.yaw"))
         .changed();
     if changed {
         out.push(Command::SetTilt(Tilt {
@@ -406,9 +387,9 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
             .add(
                 Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
                     .suffix("°")
-                    .text(text::FOV),
+                    .text(lang.tr("app.controls.fov")),
             )
-            .on_hover_text(tips::FOV)
+            .on_hover_text(lang.tr("app.controls.tip.fov"))
             .changed()
     {
         out.push(Command::SetFov(fov));
@@ -417,22 +398,23 @@ fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
 
 /// Model scenes: how to move the camera, the field of view, reset.
 fn model_camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
-    ui.label(RichText::new(text::MODEL_CAMERA_HINT).weak());
+    let lang = super::locale::lang(ui.ctx());
+    ui.label(RichText::new(lang.tr("app.controls.model_camera_hint")).weak());
     if let Some(mut fov) = edit::fov_deg(scene)
         && ui
             .add(
                 Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
                     .suffix("°")
-                    .text(text::FOV),
+                    .text(lang.tr("app.controls.fov")),
             )
-            .on_hover_text(tips::FOV)
+            .on_hover_text(lang.tr("app.controls.tip.fov"))
             .changed()
     {
         out.push(Command::SetFov(fov));
     }
     if ui
-        .button(text::RESET_VIEW)
-        .on_hover_text(tips::RESET_VIEW)
+        .button(lang.tr("app.controls.reset_view"))
+        .on_hover_text(lang.tr("app.controls.tip.reset_view"))
         .clicked()
     {
         out.push(Command::ResetCamera);
@@ -458,17 +440,19 @@ fn field(ui: &mut Ui, v: &mut f64, speed: f64, tip: &str) -> bool {
 
 /// A grid row with a vertex's uv as two numeric fields; sets `changed` when edited.
 fn uv_row(ui: &mut Ui, uv: Vec2, changed: &mut bool) -> Vec2 {
+    let lang = super::locale::lang(ui.ctx());
     let mut uv = uv.as_dvec2();
-    ui.label(RichText::new(text::UV).weak());
+    ui.label(RichText::new(lang.tr("app.controls.uv")).weak());
     ui.horizontal(|ui| {
-        *changed |= field(ui, &mut uv.x, 0.01, tips::UV);
-        *changed |= field(ui, &mut uv.y, 0.01, tips::UV);
+        *changed |= field(ui, &mut uv.x, 0.01, &lang.tr("app.controls.tip.uv"));
+        *changed |= field(ui, &mut uv.y, 0.01, &lang.tr("app.controls.tip.uv"));
     });
     ui.end_row();
     uv.as_vec2()
 }
 
 fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
+    let lang = super::locale::lang(ui.ctx());
     match scene {
         Scene::World(s) => {
             egui::Grid::new("corners")
@@ -480,9 +464,12 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                         let mut p = c.position;
                         let mut changed = false;
                         ui.horizontal(|ui| {
-                            changed |= field(ui, &mut p.x, 0.01, tips::POSITION);
-                            changed |= field(ui, &mut p.y, 0.01, tips::POSITION);
-                            changed |= field(ui, &mut p.z, 0.01, tips::POSITION);
+                            changed |=
+                                field(ui, &mut p.x, 0.01, &lang.tr("app.controls.tip.position"));
+                            changed |=
+                                field(ui, &mut p.y, 0.01, &lang.tr("app.controls.tip.position"));
+                            changed |=
+                                field(ui, &mut p.z, 0.01, &lang.tr("app.controls.tip.position"));
                         });
                         ui.end_row();
                         let uv = uv_row(ui, c.uv, &mut changed);
@@ -496,7 +483,9 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                         }
                     }
                 });
-            ui.label(RichText::new(format!("{}: x, y, z", text::POSITION)).weak());
+            ui.label(
+                RichText::new(format!("{}: x, y, z", &lang.tr("app.controls.position"))).weak(),
+            );
         }
         Scene::Clip(s) => {
             egui::Grid::new("clip-vertices")
@@ -508,10 +497,10 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                         let mut c = v.clip;
                         let mut changed = false;
                         ui.horizontal(|ui| {
-                            changed |= field(ui, &mut c.x, 0.01, tips::CLIP);
-                            changed |= field(ui, &mut c.y, 0.01, tips::CLIP);
-                            changed |= field(ui, &mut c.z, 0.01, tips::CLIP);
-                            changed |= field(ui, &mut c.w, 0.01, tips::CLIP);
+                            changed |= field(ui, &mut c.x, 0.01, &lang.tr("app.controls.tip.clip"));
+                            changed |= field(ui, &mut c.y, 0.01, &lang.tr("app.controls.tip.clip"));
+                            changed |= field(ui, &mut c.z, 0.01, &lang.tr("app.controls.tip.clip"));
+                            changed |= field(ui, &mut c.w, 0.01, &lang.tr("app.controls.tip.clip"));
                         });
                         ui.end_row();
                         let uv = uv_row(ui, v.uv, &mut changed);
@@ -524,17 +513,19 @@ fn vertices_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
                         }
                     }
                 });
-            ui.label(RichText::new(format!("{}: x, y, z, w", text::CLIP)).weak());
+            ui.label(
+                RichText::new(format!("{}: x, y, z, w", &lang.tr("app.controls.clip"))).weak(),
+            );
         }
         Scene::Model(m) => {
             ui.label(format!(
                 "{} {} ({} {}, {} {})",
-                text::MODEL,
+                &lang.tr("app.controls.model"),
                 m.model,
                 m.mesh.positions.len(),
-                text::MODEL_VERTICES,
+                &lang.tr("app.controls.model_vertices"),
                 m.mesh.triangles.len(),
-                text::MODEL_TRIANGLES
+                &lang.tr("app.controls.model_triangles")
             ));
         }
     }

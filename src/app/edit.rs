@@ -3,6 +3,7 @@
 
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
+use crate::i18n::Lang;
 use crate::raster::camera::{Camera, CameraChain, Projection};
 use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
@@ -27,6 +28,18 @@ pub enum EditError {
     NotFinite,
     #[error("a model (OBJ) scene's vertices cannot be moved here; edit the OBJ file")]
     Model,
+}
+
+impl EditError {
+    /// The message in `lang`, for the status line.
+    pub fn message(&self, lang: Lang) -> String {
+        match self {
+            EditError::NoVertex(k) => lang.tr_with("app.edit.no_vertex", &[("n", k)]),
+            EditError::BehindCamera(k) => lang.tr_with("app.edit.behind_camera", &[("n", k)]),
+            EditError::NotFinite => lang.tr("app.edit.not_finite"),
+            EditError::Model => lang.tr("app.edit.model"),
+        }
+    }
 }
 
 pub use crate::raster::project::ndc_from_window;

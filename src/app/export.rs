@@ -14,48 +14,9 @@ use super::screenshot::{self, ShotSlot};
 use super::state::AppState;
 use crate::figure::export::{self, ExportError, ExportRequest, ExportSelection};
 use crate::figure::{Background, Figure, FigureError, FigureOptions, SCALES, png};
+use crate::i18n::Lang;
 use crate::raster::Texture;
 use crate::scene::Scene;
-
-/// User-facing strings of the Export panel.
-pub mod text {
-    pub const WINDOW: &str = "Export figure";
-    pub const BUTTON: &str = "Export…";
-    pub const BUTTON_TIP: &str = "Figures for slides and notes: PNG, SVG, the pixel's \
-        derivation and the scene file. Key: Ctrl+S";
-    pub const FOLDER: &str = "Folder";
-    pub const FOLDER_HINT: &str = "folder to write the files into";
-    pub const BROWSE: &str = "Browse…";
-    pub const SCALE: &str = "Scale";
-    pub const SCALE_TIP: &str = "PNG pixels per screen pixel: the scene is rendered again at \
-        that resolution (at pixel size 1), labels and lines are drawn sharper, not larger.";
-    pub const BACKGROUND: &str = "Background";
-    pub const TRANSPARENT: &str = "Transparent";
-    pub const WHITE: &str = "White";
-    pub const PNG: &str = "PNG (annotated)";
-    pub const SVG: &str = "SVG (vector overlays, real text)";
-    pub const DERIVATION: &str = "Derivation (.md, .tex)";
-    pub const DERIVATION_TIP: &str = "The pinned pixel's worked example (or the hovered one's); \
-        skipped when no pixel is marked.";
-    pub const SCENE: &str = "Scene file (.json)";
-    pub const SCENE_TIP: &str = "Reproduces the figure: barylab figure FILE.json …";
-    pub const EXPORT: &str = "Export";
-    pub const COPY: &str = "Copy figure";
-    pub const COPY_TIP: &str = "Copy the annotated figure (PNG) to the clipboard.";
-    pub const SCREENSHOT: &str = "Screenshot window";
-    pub const SCREENSHOT_TIP: &str = "Save the whole window as a PNG into the folder.";
-    pub const NO_FOLDER: &str = "choose a folder first";
-    pub const NOTHING_SELECTED: &str = "nothing to export: tick at least one kind of file";
-    pub const NO_CANVAS: &str = "nothing rendered yet";
-    pub const WROTE: &str = "wrote";
-    pub const MORE_FILES: &str = "more files";
-    pub const AGAIN: &str = "the same figure from the command line:";
-    pub const COPIED: &str = "figure copied to the clipboard";
-    pub const CLIPBOARD_FAILED: &str = "cannot copy to the clipboard";
-    pub const SCREENSHOT_FAILED: &str = "screenshot failed";
-    pub const FOLDER_DIALOG: &str = "Folder for figures";
-    pub const FOLDER_DIALOG_FAILED: &str = "no folder dialog available: type the folder";
-}
 
 /// Export settings saved between runs.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -145,6 +106,8 @@ pub struct ExportPanel {
     /// A window screenshot to take next frame, when the panel is not drawn.
     screenshot_due: Option<PathBuf>,
     clipboard: Option<arboard::Clipboard>,
+    /// The language of the outcome messages (the app's, as of this frame).
+    lang: Lang,
 }
 
 /// Everything an export needs from the app.
@@ -178,6 +141,7 @@ impl ExportPanel {
     /// Once per frame: what the folder dialog and a window screenshot came back with; takes a
     /// due screenshot. Returns the folder picked, as a command.
     pub fn frame(&mut self, ctx: &egui::Context) -> Vec<ExportCommand> {
+        self.lang = super::locale::lang(ctx);
         let picked = self.poll_dialog();
         self.poll_screenshot();
         self.take_due_screenshot(ctx);
@@ -186,6 +150,8 @@ impl ExportPanel {
 
     /// Applies a command; runs the actions.
     pub fn apply(&mut self, ctx: &egui::Context, command: ExportCommand, app: &ExportContext<'_>) {
+        self.lang = super::locale::lang(ctx);
+        let lang = self.lang;
         match command {
             ExportCommand::Open => self.open = true,
             ExportCommand::Close => self.open = false,
@@ -202,25 +168,22 @@ impl ExportPanel {
                 self.outcome = Some(match self.export(app) {
                     Ok(files) => {
                         let summary = match files.first() {
-                            Some(f) if files.len() > 1 => format!(
-                                "{} {} (+{} {})",
-                                text::WROTE,
-                                f.display(),
-                                files.len() - 1,
-                                text::MORE_FILES
+                            Some(f) if files.len() > 1 => lang.tr_with(
+                                "app.export.wrote_more",
+                                &[("path", &f.display()), ("n", &(files.len() - 1))],
                             ),
-                            Some(f) => format!("{} {}", text::WROTE, f.display()),
+                            Some(f) => lang.tr_with("app.export.wrote", &[("path", &f.display())]),
                             None => String::new(),
                         };
                         let mut lines: Vec<String> = files
                             .iter()
-                            .map(|f| format!("{} {}", text::WROTE, f.display()))
+                            .map(|f| lang.tr_with("app.export.wrote", &[("path", &f.display())]))
                             .collect();
                         if let Some(json) = files
                             .iter()
                             .find(|f| f.extension().is_some_and(|e| e == "json"))
                         {
-                            lines.push(text::AGAIN.to_string());
+                            lines.push(lang.tr("app.export.again"));
                             lines.push(self.command(app, json));
                         }
                         Outcome {
@@ -234,7 +197,7 @@ impl ExportPanel {
             }
             ExportCommand::Copy => {
                 self.outcome = Some(match self.copy(app) {
-                    Ok(()) => Outcome::done(text::COPIED),
+                    Ok(()) => Outcome::done(lang.tr("app.export.copied")),
                     Err(e) => Outcome::failed(e),
                 });
             }
@@ -243,18 +206,20 @@ impl ExportPanel {
     }
 
     fn folder(&self) -> Result<PathBuf, String> {
+        let lang = self.lang;
         self.settings
             .folder
             .clone()
-            .ok_or_else(|| text::NO_FOLDER.to_string())
+            .ok_or_else(|| lang.tr("app.export.no_folder"))
     }
 
     /// The figure of the canvas as it is now.
     fn figure(&self, app: &ExportContext<'_>) -> Result<(Scene, Figure), String> {
-        let size = app.size.ok_or_else(|| text::NO_CANVAS.to_string())?;
+        let lang = self.lang;
+        let size = app.size.ok_or_else(|| lang.tr("app.export.no_canvas"))?;
         let scene = figure_scene(app.state, size);
         let options = figure_options(app, &self.settings);
-        let figure = Figure::compose(&scene, app.texture, &options)
+        let figure = Figure::compose_in(&scene, app.texture, &options, self.lang)
             .map_err(|e: FigureError| e.to_string())?;
         Ok((scene, figure))
     }
@@ -281,10 +246,11 @@ impl ExportPanel {
 
     /// Writes the selected files; returns them.
     pub fn export(&self, app: &ExportContext<'_>) -> Result<Vec<PathBuf>, String> {
+        let lang = self.lang;
         let folder = self.folder()?;
         let sel = self.settings.selection;
         if !(sel.png || sel.svg || sel.derivation || sel.scene) {
-            return Err(text::NOTHING_SELECTED.to_string());
+            return Err(lang.tr("app.export.nothing_selected"));
         }
         let (scene, figure) = self.figure(app)?;
         export::export(&ExportRequest {
@@ -299,10 +265,11 @@ impl ExportPanel {
     }
 
     fn copy(&mut self, app: &ExportContext<'_>) -> Result<(), String> {
+        let lang = self.lang;
         let (_, figure) = self.figure(app)?;
         let image = png::rasterize(&figure).map_err(|e| e.to_string())?;
         let (width, height) = image.dimensions();
-        let fail = |e: arboard::Error| format!("{}: {e}", text::CLIPBOARD_FAILED);
+        let fail = |e: arboard::Error| format!("{}: {e}", &lang.tr("app.export.clipboard_failed"));
         // Kept open: on X11 without a clipboard manager the image is served by this process
         // and would be gone the moment the clipboard was dropped.
         let clipboard = match &mut self.clipboard {
@@ -355,38 +322,45 @@ impl ExportPanel {
     }
 
     fn poll_screenshot(&mut self) {
+        let lang = self.lang;
         let Some((path, slot, started)) = &self.screenshot else {
             return;
         };
         if let Some(r) = screenshot::outcome(slot, *started, SCREENSHOT_TIMEOUT) {
             self.outcome = Some(match r {
-                Ok(()) => Outcome::done(format!("{} {}", text::WROTE, path.display())),
-                Err(e) => Outcome::failed(format!("{}: {e}", text::SCREENSHOT_FAILED)),
+                Ok(()) => {
+                    Outcome::done(lang.tr_with("app.export.wrote", &[("path", &path.display())]))
+                }
+                Err(e) => {
+                    Outcome::failed(format!("{}: {e}", &lang.tr("app.export.screenshot_failed")))
+                }
             });
             self.screenshot = None;
         }
     }
 
     fn open_folder_dialog(&mut self, ctx: &egui::Context) {
+        let lang = super::locale::lang(ctx);
         let start = self.settings.folder.clone();
         let opened = self.dialog.open(ctx, "folder dialog", move || {
-            let mut d = rfd::FileDialog::new().set_title(text::FOLDER_DIALOG);
+            let mut d = rfd::FileDialog::new().set_title(lang.tr("app.export.folder_dialog"));
             if let Some(f) = start {
                 d = d.set_directory(f);
             }
             d.pick_folder()
         });
         if opened.is_err() {
-            self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED));
+            self.outcome = Some(Outcome::failed(lang.tr("app.export.folder_dialog_failed")));
         }
     }
 
     /// The folder picked in the dialog, once it closed with one.
     fn poll_dialog(&mut self) -> Option<ExportCommand> {
+        let lang = self.lang;
         match self.dialog.poll()? {
             DialogOutcome::Picked(folder) => Some(ExportCommand::SetFolder(folder)),
             DialogOutcome::Failed => {
-                self.outcome = Some(Outcome::failed(text::FOLDER_DIALOG_FAILED));
+                self.outcome = Some(Outcome::failed(lang.tr("app.export.folder_dialog_failed")));
                 None
             }
             DialogOutcome::Cancelled => None,
@@ -453,9 +427,11 @@ pub fn export_ui(
     panel: &ExportView<'_>,
     folder_text: &mut String,
 ) -> Vec<ExportCommand> {
+    let lang = super::locale::lang(ctx);
     let mut open = true;
     let mut out = Vec::new();
-    egui::Window::new(text::WINDOW)
+    egui::Window::new(lang.tr("app.export.window"))
+        .id(egui::Id::unique("export-window"))
         .open(&mut open)
         .collapsible(false)
         .resizable(false)
@@ -476,16 +452,17 @@ fn window_contents(
     folder_text: &mut String,
     out: &mut Vec<ExportCommand>,
 ) {
+    let lang = super::locale::lang(ui.ctx());
     let s = panel.settings.clone();
     egui::Grid::new("export-grid")
         .num_columns(2)
         .spacing([12.0, 8.0])
         .show(ui, |ui| {
-            ui.label(text::FOLDER);
+            ui.label(lang.tr("app.export.folder"));
             ui.horizontal(|ui| {
                 let field = ui.add(
                     egui::TextEdit::singleline(folder_text)
-                        .hint_text(text::FOLDER_HINT)
+                        .hint_text(lang.tr("app.export.folder_hint"))
                         .desired_width(340.0),
                 );
                 if field.changed() {
@@ -494,18 +471,19 @@ fn window_contents(
                         out.push(ExportCommand::SetFolder(PathBuf::from(t)));
                     }
                 }
-                if ui.button(text::BROWSE).clicked() {
+                if ui.button(lang.tr("app.export.browse")).clicked() {
                     out.push(ExportCommand::BrowseFolder);
                 }
             });
             ui.end_row();
 
-            ui.label(text::SCALE).on_hover_text(text::SCALE_TIP);
+            ui.label(lang.tr("app.export.scale"))
+                .on_hover_text(lang.tr("app.export.scale_tip"));
             ui.horizontal(|ui| {
                 for k in SCALES {
                     if ui
                         .selectable_label(s.scale == k, format!("{k}x"))
-                        .on_hover_text(text::SCALE_TIP)
+                        .on_hover_text(lang.tr("app.export.scale_tip"))
                         .clicked()
                     {
                         out.push(ExportCommand::SetScale(k));
@@ -514,11 +492,11 @@ fn window_contents(
             });
             ui.end_row();
 
-            ui.label(text::BACKGROUND);
+            ui.label(lang.tr("app.export.background"));
             ui.horizontal(|ui| {
                 for (b, label) in [
-                    (Background::White, text::WHITE),
-                    (Background::Transparent, text::TRANSPARENT),
+                    (Background::White, &lang.tr("app.export.white")),
+                    (Background::Transparent, &lang.tr("app.export.transparent")),
                 ] {
                     if ui.selectable_label(s.background == b, label).clicked() {
                         out.push(ExportCommand::SetBackground(b));
@@ -529,34 +507,34 @@ fn window_contents(
         });
     ui.add_space(4.0);
     let mut sel = s.selection;
-    ui.checkbox(&mut sel.png, text::PNG);
-    ui.checkbox(&mut sel.svg, text::SVG);
-    ui.checkbox(&mut sel.derivation, text::DERIVATION)
-        .on_hover_text(text::DERIVATION_TIP);
-    ui.checkbox(&mut sel.scene, text::SCENE)
-        .on_hover_text(text::SCENE_TIP);
+    ui.checkbox(&mut sel.png, lang.tr("app.export.png"));
+    ui.checkbox(&mut sel.svg, lang.tr("app.export.svg"));
+    ui.checkbox(&mut sel.derivation, lang.tr("app.export.derivation"))
+        .on_hover_text(lang.tr("app.export.derivation_tip"));
+    ui.checkbox(&mut sel.scene, lang.tr("app.export.scene"))
+        .on_hover_text(lang.tr("app.export.scene_tip"));
     if sel != s.selection {
         out.push(ExportCommand::SetSelection(sel));
     }
     ui.add_space(4.0);
     ui.horizontal(|ui| {
         if ui
-            .button(RichText::new(text::EXPORT).strong())
-            .on_hover_text(text::BUTTON_TIP)
+            .button(RichText::new(lang.tr("app.export.export")).strong())
+            .on_hover_text(lang.tr("app.export.button_tip"))
             .clicked()
         {
             out.push(ExportCommand::Export);
         }
         if ui
-            .button(text::COPY)
-            .on_hover_text(text::COPY_TIP)
+            .button(lang.tr("app.export.copy"))
+            .on_hover_text(lang.tr("app.export.copy_tip"))
             .clicked()
         {
             out.push(ExportCommand::Copy);
         }
         if ui
-            .button(text::SCREENSHOT)
-            .on_hover_text(text::SCREENSHOT_TIP)
+            .button(lang.tr("app.export.screenshot"))
+            .on_hover_text(lang.tr("app.export.screenshot_tip"))
             .clicked()
         {
             out.push(ExportCommand::Screenshot);

@@ -8,35 +8,6 @@ use super::files::{FileCommand, RecentFiles};
 use super::path_window::PathWindow;
 use crate::scene::IMAGE_EXTENSIONS;
 
-/// User-facing strings of the File menu and the typed-path window.
-pub mod text {
-    pub const FILE: &str = "File";
-    pub const OPEN: &str = "Open…";
-    pub const OPEN_TIP: &str = "Open a scene (.json), a model (.obj) or an image \
-        (PNG, JPEG, BMP, TGA, WebP: it becomes the texture). You can also drop files on the \
-        window. Key: Ctrl+O";
-    pub const SAVE: &str = "Save scene";
-    pub const SAVE_TIP: &str = "Save the scene (corners, camera, texture, image size) as a \
-        JSON file that barylab render, probe and figure read: to the file it came from, else \
-        ask where.";
-    pub const SAVE_AS: &str = "Save scene as…";
-    pub const SAVE_AS_TIP: &str = "Save the scene to a new JSON file. Key: Ctrl+Shift+S";
-    pub const SAVE_DIALOG_TITLE: &str = "Save the scene";
-    pub const SAVE_NAME: &str = "scene.json";
-    pub const TYPE_PATH: &str = "Type a path…";
-    pub const TYPE_PATH_TIP: &str = "Open a file by typing its path.";
-    pub const RECENT: &str = "Recent files";
-    pub const NO_RECENT: &str = "(none yet)";
-    pub const MISSING: &str = "missing";
-    pub const CLEAR_RECENT: &str = "Clear the list";
-    pub const DIALOG_TITLE: &str = "Open a scene, model or image";
-    pub const FILTER_ALL: &str = "Scenes, models and images";
-    pub const FILTER_SCENE: &str = "Scene (JSON)";
-    pub const FILTER_MODEL: &str = "Model (OBJ)";
-    pub const FILTER_IMAGE: &str = "Image";
-    pub const DIALOG_WAITING: &str = "waiting for the file dialog…";
-}
-
 /// The native Open dialog and the typed-path window.
 #[derive(Default)]
 pub struct FilePicker {
@@ -64,15 +35,16 @@ impl FilePicker {
 
     /// Opens the native dialog (once at a time).
     fn open_dialog(&mut self, ctx: &egui::Context) {
+        let lang = super::locale::lang(ctx);
         let mut all: Vec<&str> = vec!["json", "obj"];
         all.extend(IMAGE_EXTENSIONS);
         let opened = self.dialog.open(ctx, "file dialog", move || {
             rfd::FileDialog::new()
-                .set_title(text::DIALOG_TITLE)
-                .add_filter(text::FILTER_ALL, &all)
-                .add_filter(text::FILTER_SCENE, &["json"])
-                .add_filter(text::FILTER_MODEL, &["obj"])
-                .add_filter(text::FILTER_IMAGE, &IMAGE_EXTENSIONS)
+                .set_title(lang.tr("app.file_menu.dialog_title"))
+                .add_filter(lang.tr("app.file_menu.filter_all"), &all)
+                .add_filter(lang.tr("app.file_menu.filter_scene"), &["json"])
+                .add_filter(lang.tr("app.file_menu.filter_model"), &["obj"])
+                .add_filter(lang.tr("app.file_menu.filter_image"), &IMAGE_EXTENSIONS)
                 .pick_file()
         });
         if opened.is_err() {
@@ -82,11 +54,12 @@ impl FilePicker {
 
     /// Opens the native Save dialog; the typed-path window (saving) when it cannot.
     fn save_dialog(&mut self, ctx: &egui::Context) {
+        let lang = super::locale::lang(ctx);
         let opened = self.save_dialog.open(ctx, "save dialog", move || {
             rfd::FileDialog::new()
-                .set_title(text::SAVE_DIALOG_TITLE)
-                .set_file_name(text::SAVE_NAME)
-                .add_filter(text::FILTER_SCENE, &["json"])
+                .set_title(lang.tr("app.file_menu.save_dialog_title"))
+                .set_file_name(lang.tr("app.file_menu.save_name"))
+                .add_filter(lang.tr("app.file_menu.filter_scene"), &["json"])
                 .save_file()
         });
         if opened.is_err() {
@@ -120,19 +93,20 @@ impl FilePicker {
 /// The File menu: open (dialog), type a path, recent files. `waiting`: the native dialog is
 /// open.
 pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<FileCommand> {
+    let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
-    ui.menu_button(text::FILE, |ui| {
+    ui.menu_button(lang.tr("app.file_menu.file"), |ui| {
         if ui
-            .button(text::OPEN)
-            .on_hover_text(text::OPEN_TIP)
+            .button(lang.tr("app.file_menu.open"))
+            .on_hover_text(lang.tr("app.file_menu.open_tip"))
             .clicked()
         {
             out.push(FileCommand::OpenDialog);
             ui.close();
         }
         if ui
-            .button(text::TYPE_PATH)
-            .on_hover_text(text::TYPE_PATH_TIP)
+            .button(lang.tr("app.file_menu.type_path"))
+            .on_hover_text(lang.tr("app.file_menu.type_path_tip"))
             .clicked()
         {
             out.push(FileCommand::ShowPathWindow {
@@ -142,8 +116,16 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
         }
         ui.separator();
         for (label, tip, command) in [
-            (text::SAVE, text::SAVE_TIP, FileCommand::Save),
-            (text::SAVE_AS, text::SAVE_AS_TIP, FileCommand::SaveAsDialog),
+            (
+                &lang.tr("app.file_menu.save"),
+                &lang.tr("app.file_menu.save_tip"),
+                FileCommand::Save,
+            ),
+            (
+                &lang.tr("app.file_menu.save_as"),
+                &lang.tr("app.file_menu.save_as_tip"),
+                FileCommand::SaveAsDialog,
+            ),
         ] {
             if ui.button(label).on_hover_text(tip).clicked() {
                 out.push(command);
@@ -151,9 +133,9 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
             }
         }
         ui.separator();
-        ui.label(RichText::new(text::RECENT).weak());
+        ui.label(RichText::new(lang.tr("app.file_menu.recent")).weak());
         if recent.0.is_empty() {
-            ui.label(RichText::new(text::NO_RECENT).weak());
+            ui.label(RichText::new(lang.tr("app.file_menu.no_recent")).weak());
         }
         for p in &recent.0 {
             let name = p
@@ -163,7 +145,7 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
             let label = if exists {
                 name
             } else {
-                format!("{name} ({})", text::MISSING)
+                format!("{name} ({})", &lang.tr("app.file_menu.missing"))
             };
             let r = ui
                 .add_enabled(exists, egui::Button::new(label))
@@ -174,12 +156,12 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
                 ui.close();
             }
         }
-        if !recent.0.is_empty() && ui.button(text::CLEAR_RECENT).clicked() {
+        if !recent.0.is_empty() && ui.button(lang.tr("app.file_menu.clear_recent")).clicked() {
             out.push(FileCommand::ClearRecent);
         }
     });
     if waiting {
-        ui.label(RichText::new(text::DIALOG_WAITING).weak());
+        ui.label(RichText::new(lang.tr("app.file_menu.dialog_waiting")).weak());
     }
     out
 }

@@ -12,15 +12,9 @@ use std::sync::Arc;
 use serde::{Deserialize, Serialize};
 
 use super::state::Command;
+use crate::i18n::Lang;
 use crate::raster::Texture;
 use crate::scene::{InputKind, Scene, open_input};
-
-/// User-facing strings of opening a file.
-pub mod text {
-    pub const SAVED: &str = "saved the scene to";
-    pub const NO_UV_TEXTURE: &str = "the model has no texture coordinates, so the image shows \
-        as one colour; it is shaded by vertex colour";
-}
 
 /// Recent files shown in the menu.
 pub const MAX_RECENT: usize = 10;
@@ -82,7 +76,7 @@ impl OpenedFile {
 /// Loads and checks a file named by the user (by dialog, drop, typed path, recent list or the
 /// command line): a scene, a model with its texture, or an image. Nothing is changed; the
 /// error names the file and the problem.
-pub fn open(path: &Path, current: &Scene) -> Result<OpenedFile, String> {
+pub fn open(path: &Path, current: &Scene, lang: Lang) -> Result<OpenedFile, String> {
     // Absolute, so the scene saved between runs still finds its model and texture.
     let path = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
     let shown = path.display().to_string();
@@ -101,7 +95,7 @@ pub fn open(path: &Path, current: &Scene) -> Result<OpenedFile, String> {
             if let Scene::Model(m) = current
                 && !m.mesh.has_uv
             {
-                notes.push(text::NO_UV_TEXTURE.to_string());
+                notes.push(lang.tr("app.files.no_uv_texture"));
             }
             Ok(OpenedFile {
                 what: Opened::Texture { path: shown },
@@ -155,8 +149,13 @@ pub fn load_scene(path: &Path) -> Result<(Scene, PathBuf), String> {
 /// Writes `scene` as the JSON that `barylab render`, `probe` and `figure` read, its texture and
 /// model paths made absolute against `scene_dir` (so it loads from anywhere), atomically: the
 /// file is whole or as it was.
-pub fn save(path: &Path, scene: &Scene, scene_dir: Option<&Path>) -> Result<String, String> {
+pub fn save(
+    path: &Path,
+    scene: &Scene,
+    scene_dir: Option<&Path>,
+    lang: Lang,
+) -> Result<String, String> {
     let json = crate::figure::export::scene_json(scene, scene_dir);
     crate::files::write_bytes(path, json.as_bytes()).map_err(|e| e.to_string())?;
-    Ok(format!("{} {}", text::SAVED, path.display()))
+    Ok(lang.tr_with("app.files.saved", &[("path", &path.display())]))
 }

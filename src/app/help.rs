@@ -2,97 +2,96 @@
 
 use egui::{RichText, Ui};
 
-/// User-facing strings of the help window.
-pub mod text {
-    pub const TITLE: &str = "Help";
-    pub const INTRO: &str = "barylab draws a textured quad (two triangles, A B C and A C D) with its own \
-        CPU rasterizer, exactly as a GPU does: samples at pixel centres, one owner for every pixel on a \
-        shared edge (the fill rule), clipping in clip space, perspective-correct \
-        interpolation with 1/w.";
-    pub const MOUSE: &str = "Mouse";
-    pub const KEYS: &str = "Keys";
-    pub const MOUSE_ROWS: &[(&str, &str)] = &[
-        (
-            "Drag a corner",
-            "move it parallel to the screen (its w stays)",
-        ),
-        (
-            "Scroll on a corner",
-            "push it away / pull it closer (same place on screen, new w)",
-        ),
-        ("Shift + drag a corner", "the same, with the mouse"),
-        (
-            "Hover a pixel",
-            "its derivation in the inspector, its triangle and sub-areas on the canvas",
-        ),
-        ("Click a pixel", "pin it (click again to unpin)"),
-        (
-            "Drag the wipe line",
-            "move the split between affine and perspective-correct",
-        ),
-        (
-            "Drop a file",
-            "a .json scene or an .obj model opens; an image becomes the texture",
-        ),
-        ("Drag on a model", "orbit the camera around it"),
-        ("Shift + drag or right drag on a model", "pan the camera"),
-        ("Scroll on a model", "zoom in / out"),
-    ];
-    pub const KEY_ROWS: &[(&str, &str)] = &[
-        ("P", "switch affine / perspective-correct"),
-        ("1 2 3 4", "single view, side by side, wipe, difference"),
-        (
-            "[  ]",
-            "smaller / larger image (with Fit window: smaller / larger pixels)",
-        ),
-        ("W", "wireframe (edges and the diagonal)"),
-        ("G", "pixel grid and sample points"),
-        ("H", "corner handles"),
-        ("Arrow keys", "move the pinned pixel by one"),
-        (
-            "Esc",
-            "close a menu, else this help, else leave presentation mode, else unpin",
-        ),
-        (
-            "F5",
-            "presentation mode: the canvas and the pixel's numbers in large print",
-        ),
-        ("Page Down / Page Up", "next / previous preset"),
-        ("Ctrl + Z", "undo the last scene edit (a whole drag is one)"),
-        ("Ctrl + Shift + Z or Ctrl + Y", "redo"),
-        ("Ctrl + Shift + S", "save the scene as a JSON file"),
-        ("Ctrl + R", "reset the scene"),
-        ("Ctrl + O", "open a scene, model or image"),
-        (
-            "Ctrl + S",
-            "export the figure (opens the Export panel; again: writes the files)",
-        ),
-        ("Home", "reset the view of a model"),
-        ("Ctrl + / Ctrl -", "larger / smaller interface"),
-        ("F1", "this help"),
-    ];
-}
+/// The mouse rows: catalogue keys of what to do and what it does.
+const MOUSE_ROWS: &[(&str, &str)] = &[
+    (
+        "app.help.mouse_rows.m01.key",
+        "app.help.mouse_rows.m01.what",
+    ),
+    (
+        "app.help.mouse_rows.m02.key",
+        "app.help.mouse_rows.m02.what",
+    ),
+    (
+        "app.help.mouse_rows.m03.key",
+        "app.help.mouse_rows.m03.what",
+    ),
+    (
+        "app.help.mouse_rows.m04.key",
+        "app.help.mouse_rows.m04.what",
+    ),
+    (
+        "app.help.mouse_rows.m05.key",
+        "app.help.mouse_rows.m05.what",
+    ),
+    (
+        "app.help.mouse_rows.m06.key",
+        "app.help.mouse_rows.m06.what",
+    ),
+    (
+        "app.help.mouse_rows.m07.key",
+        "app.help.mouse_rows.m07.what",
+    ),
+    (
+        "app.help.mouse_rows.m08.key",
+        "app.help.mouse_rows.m08.what",
+    ),
+    (
+        "app.help.mouse_rows.m09.key",
+        "app.help.mouse_rows.m09.what",
+    ),
+    (
+        "app.help.mouse_rows.m10.key",
+        "app.help.mouse_rows.m10.what",
+    ),
+];
 
-/// The help window's contents.
+/// The keyboard rows: catalogue keys of what to do and what it does.
+const KEY_ROWS: &[(&str, &str)] = &[
+    ("app.help.key_rows.k01.key", "app.help.key_rows.k01.what"),
+    ("app.help.key_rows.k02.key", "app.help.key_rows.k02.what"),
+    ("app.help.key_rows.k03.key", "app.help.key_rows.k03.what"),
+    ("app.help.key_rows.k04.key", "app.help.key_rows.k04.what"),
+    ("app.help.key_rows.k05.key", "app.help.key_rows.k05.what"),
+    ("app.help.key_rows.k06.key", "app.help.key_rows.k06.what"),
+    ("app.help.key_rows.k07.key", "app.help.key_rows.k07.what"),
+    ("app.help.key_rows.k08.key", "app.help.key_rows.k08.what"),
+    ("app.help.key_rows.k09.key", "app.help.key_rows.k09.what"),
+    ("app.help.key_rows.k10.key", "app.help.key_rows.k10.what"),
+    ("app.help.key_rows.k11.key", "app.help.key_rows.k11.what"),
+    ("app.help.key_rows.k12.key", "app.help.key_rows.k12.what"),
+    ("app.help.key_rows.k13.key", "app.help.key_rows.k13.what"),
+    ("app.help.key_rows.k14.key", "app.help.key_rows.k14.what"),
+    ("app.help.key_rows.k15.key", "app.help.key_rows.k15.what"),
+    ("app.help.key_rows.k16.key", "app.help.key_rows.k16.what"),
+    ("app.help.key_rows.k17.key", "app.help.key_rows.k17.what"),
+    ("app.help.key_rows.k18.key", "app.help.key_rows.k18.what"),
+    ("app.help.key_rows.k19.key", "app.help.key_rows.k19.what"),
+];
+
+/// The help window's contents (they scroll when the window is shorter than they are).
 pub fn help_ui(ui: &mut Ui) {
-    ui.label(text::INTRO);
-    ui.add_space(8.0);
-    for (title, rows) in [
-        (text::MOUSE, text::MOUSE_ROWS),
-        (text::KEYS, text::KEY_ROWS),
-    ] {
-        ui.label(RichText::new(title).strong());
-        egui::Grid::new(title)
-            .num_columns(2)
-            .striped(true)
-            .spacing([16.0, 4.0])
-            .show(ui, |ui| {
-                for (k, what) in rows {
-                    ui.label(RichText::new(*k).monospace().strong());
-                    ui.label(*what);
-                    ui.end_row();
-                }
-            });
+    let lang = super::locale::lang(ui.ctx());
+    egui::ScrollArea::vertical().show(ui, |ui| {
+        ui.label(lang.tr("app.help.intro"));
         ui.add_space(8.0);
-    }
+        for (id, title, rows) in [
+            ("help-mouse", "app.help.mouse", MOUSE_ROWS),
+            ("help-keys", "app.help.keys", KEY_ROWS),
+        ] {
+            ui.label(RichText::new(lang.tr(title)).strong());
+            egui::Grid::new(id)
+                .num_columns(2)
+                .striped(true)
+                .spacing([16.0, 4.0])
+                .show(ui, |ui| {
+                    for (k, what) in rows {
+                        ui.label(RichText::new(lang.tr(k)).monospace().strong());
+                        ui.label(lang.tr(what));
+                        ui.end_row();
+                    }
+                });
+            ui.add_space(8.0);
+        }
+    });
 }

@@ -7,53 +7,11 @@ use egui::{Color32, RichText, Ui};
 use super::paint::color;
 use super::pixel::PixelReport;
 use crate::figure::overlay::{CLIP_POINT, NEGATIVE, vertex_color};
+use crate::i18n::Lang;
 use crate::probe::format::fmt_number;
 use crate::probe::{Position, TriangleCoverage};
 use crate::raster::Interpolation;
 use crate::raster::render::TriangleStatus;
-
-/// User-facing strings of the inspector.
-pub mod text {
-    pub const TITLE: &str = "Pixel";
-    pub const HOVER_HINT: &str = "Hover the canvas to inspect a pixel; click to pin it.";
-    pub const HOVERED: &str = "hovered";
-    pub const PINNED: &str = "pinned";
-    pub const PIXEL: &str = "Pixel";
-    pub const COVERED_BY: &str = "covered by triangle";
-    pub const NOT_COVERED: &str = "not covered";
-    pub const NEAREST: &str = "weights of the nearest triangle";
-    pub const OUTSIDE_EDGE: &str = "outside edge";
-    pub const ON_EDGE_NOT_OWNED: &str = "on an edge another triangle owns (fill rule)";
-    pub const HIDDEN: &str = "behind another fragment (depth test)";
-    pub const CLIPPED_AWAY: &str = "clipped away";
-    pub const EMPTY: &str = "no area on screen";
-    pub const NOTHING_DRAWN: &str = "nothing is drawn";
-    pub const VERTEX: &str = "vertex";
-    pub const SCREEN: &str = "r s t";
-    pub const INV_W: &str = "1/W";
-    pub const CORRECTED: &str = "a b c";
-    pub const SCREEN_TIP: &str = "Screen-space weights: signed sub-area over area of the triangle on screen. \
-        Negative means the pixel is on the far side of the opposite edge.";
-    pub const INV_W_TIP: &str =
-        "1/W of each vertex: W is the clip w, the distance in front of the camera.";
-    pub const CORRECTED_TIP: &str =
-        "Perspective-correct weights: a = r·W_P/W_A, b = s·W_P/W_B, c = t·W_P/W_C.";
-    pub const INV_W_P: &str = "1/W_P";
-    pub const W_P: &str = "W_P";
-    pub const UV_AFFINE: &str = "uv affine";
-    pub const UV_PERSPECTIVE: &str = "uv perspective";
-    pub const TEXEL_GAP: &str = "apart by";
-    pub const TEXELS: &str = "texels";
-    pub const DEPTH: &str = "depth z/w";
-    pub const COLOR: &str = "colour";
-    pub const MODE_AFFINE: &str = "shown: affine";
-    pub const MODE_PERSPECTIVE: &str = "shown: perspective-correct";
-    pub const COMPARE: &str = "Pinned vs hovered";
-    pub const DERIVATION: &str = "Derivation";
-    pub const DERIVATION_OF: &str = "of pixel";
-    pub const CLIPPED_VERTEX_TIP: &str =
-        "A point the clipper made on the near plane (or another clip plane).";
-}
 
 /// Sections of the probe's worked example opened at first (by position, 0-based): the
 /// coverage, the screen weights, the 1/w correction and the texture coordinate.
@@ -76,11 +34,11 @@ fn pair32(v: [f32; 2]) -> String {
 }
 
 /// Why a triangle does not cover the sample, in a few words.
-fn miss_reason(c: &TriangleCoverage) -> String {
+fn miss_reason(c: &TriangleCoverage, lang: Lang) -> String {
     match c.status {
-        TriangleStatus::ClippedAway => return text::CLIPPED_AWAY.to_string(),
+        TriangleStatus::ClippedAway => return lang.tr("app.inspector.clipped_away"),
         TriangleStatus::Empty | TriangleStatus::BadIndex | TriangleStatus::NotFinite => {
-            return text::EMPTY.to_string();
+            return lang.tr("app.inspector.empty");
         }
         TriangleStatus::Drawn => {}
     }
@@ -92,16 +50,20 @@ fn miss_reason(c: &TriangleCoverage) -> String {
                 .filter(|e| e.value < 0)
                 .map(|e| e.name.as_str())
                 .collect();
-            format!("{} {}", text::OUTSIDE_EDGE, edges.join(", "))
+            lang.tr_with(
+                "app.inspector.outside_edge",
+                &[("edges", &edges.join(", "))],
+            )
         }
-        Some(t) if !t.covered => text::ON_EDGE_NOT_OWNED.to_string(),
-        Some(_) => text::HIDDEN.to_string(),
-        None => text::EMPTY.to_string(),
+        Some(t) if !t.covered => lang.tr("app.inspector.on_edge_not_owned"),
+        Some(_) => lang.tr("app.inspector.hidden"),
+        None => lang.tr("app.inspector.empty"),
     }
 }
 
 /// The pixel's header: position, coverage, colour.
 fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
+    let lang = super::locale::lang(ui.ctx());
     let t = &r.trace;
     ui.horizontal(|ui| {
         let c = t.color;
@@ -118,9 +80,14 @@ fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
             egui::StrokeKind::Outside,
         );
         ui.label(
-            RichText::new(format!("{} ({}, {})", text::PIXEL, r.pixel[0], r.pixel[1]))
-                .strong()
-                .size(22.0),
+            RichText::new(format!(
+                "{} ({}, {})",
+                &lang.tr("app.inspector.pixel"),
+                r.pixel[0],
+                r.pixel[1]
+            ))
+            .strong()
+            .size(22.0),
         );
         ui.label(RichText::new(role).weak());
     });
@@ -132,21 +99,25 @@ fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
                 .find(|c| c.source == tri)
                 .map(|c| c.vertices.join(""))
                 .unwrap_or_default();
-            ui.label(format!("{} {names}", text::COVERED_BY));
+            ui.label(lang.tr_with("app.inspector.covered_by", &[("names", &names)]));
         }
         None => {
             ui.label(
-                RichText::new(text::NOT_COVERED)
+                RichText::new(lang.tr("app.inspector.not_covered"))
                     .color(color(NEGATIVE))
                     .strong(),
             );
             for c in &t.triangles {
-                ui.label(format!("  {}: {}", c.vertices.join(""), miss_reason(c)));
+                ui.label(format!(
+                    "  {}: {}",
+                    c.vertices.join(""),
+                    miss_reason(c, lang)
+                ));
             }
             if t.detail.is_some() {
-                ui.label(RichText::new(text::NEAREST).weak());
+                ui.label(RichText::new(lang.tr("app.inspector.nearest")).weak());
             } else {
-                ui.label(text::NOTHING_DRAWN);
+                ui.label(lang.tr("app.inspector.nothing_drawn"));
             }
         }
     }
@@ -154,6 +125,7 @@ fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
 
 /// The key numbers: per vertex r s t, 1/W, a b c; then W_P, uv both ways, depth.
 fn summary_ui(ui: &mut Ui, r: &PixelReport) {
+    let lang = super::locale::lang(ui.ctx());
     let Some(d) = &r.trace.detail else {
         return;
     };
@@ -167,13 +139,13 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
                 .spacing([8.0, 4.0])
                 .striped(true)
                 .show(ui, |ui| {
-                    ui.label(RichText::new(text::VERTEX).weak());
-                    ui.label(RichText::new(text::SCREEN).weak())
-                        .on_hover_text(text::SCREEN_TIP);
-                    ui.label(RichText::new(text::INV_W).weak())
-                        .on_hover_text(text::INV_W_TIP);
-                    ui.label(RichText::new(text::CORRECTED).weak())
-                        .on_hover_text(text::CORRECTED_TIP);
+                    ui.label(RichText::new(lang.tr("app.inspector.vertex")).weak());
+                    ui.label(RichText::new(lang.tr("app.inspector.screen")).weak())
+                        .on_hover_text(lang.tr("app.inspector.screen_tip"));
+                    ui.label(RichText::new(lang.tr("app.inspector.inv_w")).weak())
+                        .on_hover_text(lang.tr("app.inspector.inv_w_tip"));
+                    ui.label(RichText::new(lang.tr("app.inspector.corrected")).weak())
+                        .on_hover_text(lang.tr("app.inspector.corrected_tip"));
                     ui.end_row();
                     for (k, vk) in v.iter().enumerate() {
                         let mesh = vk
@@ -183,7 +155,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
                         let c = mesh.map_or(CLIP_POINT, vertex_color);
                         let name = ui.label(RichText::new(&vk.name).strong().color(color(c)));
                         if mesh.is_none() {
-                            name.on_hover_text(text::CLIPPED_VERTEX_TIP);
+                            name.on_hover_text(lang.tr("app.inspector.clipped_vertex_tip"));
                         }
                         ui.add_sized(
                             [NUMBER_WIDTH, 20.0],
@@ -203,7 +175,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
         ui.label(
             RichText::new(format!(
                 "{} = r/W_{} + s/W_{} + t/W_{} = {}",
-                text::INV_W_P,
+                &lang.tr("app.inspector.inv_w_p"),
                 n[0],
                 n[1],
                 n[2],
@@ -211,7 +183,14 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
             ))
             .monospace(),
         );
-        ui.label(RichText::new(format!("{} = {}", text::W_P, fmt_number(s.w_p))).monospace());
+        ui.label(
+            RichText::new(format!(
+                "{} = {}",
+                &lang.tr("app.inspector.w_p"),
+                fmt_number(s.w_p)
+            ))
+            .monospace(),
+        );
     }
     if let Some(a) = &d.attribute {
         let (affine, persp) = match r.mode {
@@ -222,22 +201,32 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
             let t = RichText::new(format!("{label} = {}", pair32(uv))).monospace();
             ui.label(if shown { t.strong() } else { t });
         };
-        line(ui, text::UV_AFFINE, a.uv_affine, affine);
-        line(ui, text::UV_PERSPECTIVE, a.uv_perspective, persp);
-        ui.label(format!(
-            "{} {} {}",
-            text::TEXEL_GAP,
-            fmt_number(a.texel_distance),
-            text::TEXELS
+        line(ui, &lang.tr("app.inspector.uv_affine"), a.uv_affine, affine);
+        line(
+            ui,
+            &lang.tr("app.inspector.uv_perspective"),
+            a.uv_perspective,
+            persp,
+        );
+        ui.label(lang.tr_with(
+            "app.inspector.texel_gap",
+            &[("n", &fmt_number(a.texel_distance))],
         ));
     }
     if let Some(dep) = &d.depth {
-        ui.label(RichText::new(format!("{} = {}", text::DEPTH, fmt_number(dep.depth))).monospace());
+        ui.label(
+            RichText::new(format!(
+                "{} = {}",
+                &lang.tr("app.inspector.depth"),
+                fmt_number(dep.depth)
+            ))
+            .monospace(),
+        );
     }
     ui.label(
         RichText::new(match r.mode {
-            Interpolation::Affine => text::MODE_AFFINE,
-            Interpolation::Perspective => text::MODE_PERSPECTIVE,
+            Interpolation::Affine => lang.tr("app.inspector.mode_affine"),
+            Interpolation::Perspective => lang.tr("app.inspector.mode_perspective"),
         })
         .weak(),
     );
@@ -245,7 +234,8 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
 
 /// Pinned and hovered side by side: the numbers that differ from pixel to pixel.
 fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
-    ui.label(RichText::new(text::COMPARE).strong());
+    let lang = super::locale::lang(ui.ctx());
+    ui.label(RichText::new(lang.tr("app.inspector.compare")).strong());
     let rows = |r: &PixelReport| -> Vec<String> {
         let d = r.trace.detail.as_ref();
         let w3 = |w: [f64; 3]| {
@@ -268,12 +258,12 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
         ]
     };
     let names = [
-        text::PIXEL,
-        text::SCREEN,
-        text::CORRECTED,
-        text::W_P,
-        text::UV_AFFINE,
-        text::UV_PERSPECTIVE,
+        &lang.tr("app.inspector.pixel"),
+        &lang.tr("app.inspector.screen"),
+        &lang.tr("app.inspector.corrected"),
+        &lang.tr("app.inspector.w_p"),
+        &lang.tr("app.inspector.uv_affine"),
+        &lang.tr("app.inspector.uv_perspective"),
     ];
     let (a, b) = (rows(pinned), rows(hovered));
     egui::ScrollArea::horizontal()
@@ -285,8 +275,8 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
                 .striped(true)
                 .show(ui, |ui| {
                     ui.label("");
-                    ui.label(RichText::new(text::PINNED).weak());
-                    ui.label(RichText::new(text::HOVERED).weak());
+                    ui.label(RichText::new(lang.tr("app.inspector.pinned")).weak());
+                    ui.label(RichText::new(lang.tr("app.inspector.hovered")).weak());
                     ui.end_row();
                     for ((n, x), y) in names.iter().zip(&a).zip(&b) {
                         ui.add(egui::Label::new(RichText::new(*n).weak()).extend());
@@ -300,13 +290,11 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
 
 /// The probe's worked example, one collapsible section each.
 fn derivation_ui(ui: &mut Ui, r: &PixelReport) {
+    let lang = super::locale::lang(ui.ctx());
     ui.label(
-        RichText::new(format!(
-            "{} {} ({}, {})",
-            text::DERIVATION,
-            text::DERIVATION_OF,
-            r.pixel[0],
-            r.pixel[1]
+        RichText::new(lang.tr_with(
+            "app.inspector.derivation",
+            &[("x", &r.pixel[0]), ("y", &r.pixel[1])],
         ))
         .strong()
         .size(20.0),
@@ -349,16 +337,17 @@ fn section_ui(ui: &mut Ui, index: usize, text: &str) {
 
 /// The inspector panel.
 pub fn inspector_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&PixelReport>) {
-    ui.heading(text::TITLE);
+    let lang = super::locale::lang(ui.ctx());
+    ui.heading(lang.tr("app.inspector.title"));
     let focus = hovered.or(pinned);
     let Some(focus) = focus else {
-        ui.label(text::HOVER_HINT);
+        ui.label(lang.tr("app.inspector.hover_hint"));
         return;
     };
     let role = if hovered.is_some() {
-        text::HOVERED
+        &lang.tr("app.inspector.hovered")
     } else {
-        text::PINNED
+        &lang.tr("app.inspector.pinned")
     };
     header_ui(ui, focus, role);
     ui.add_space(4.0);

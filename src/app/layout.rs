@@ -8,14 +8,8 @@ use super::canvas::{self, CanvasInput};
 use super::command::{self, AppCommand};
 use super::side_panels::{self, Fit};
 use super::textures::texture_key;
-use super::{BaryApp, controls, inspector, present, state, top_bar};
+use super::{BaryApp, controls, inspector, present, state};
 use crate::raster::Texture;
-
-/// User-facing strings of the layout.
-mod text {
-    pub const STRIP_TIP: &str = "the window has no room for it beside the canvas. Click to open \
-        it (the other panel folds away); a larger window or a smaller text size shows both.";
-}
 
 /// Presentation mode: windows wider than this many heights get the card beside the canvas
 /// (taking this share of the width), others below it.
@@ -25,6 +19,7 @@ const PRESENT_SIDE_CARD_SHARE: f32 = 0.38;
 impl BaryApp {
     /// The side panels, in what the canvas can spare; their commands go to `out`.
     pub(super) fn side_panels_ui(&mut self, ui: &mut egui::Ui, out: &mut Vec<AppCommand>) {
+        let lang = super::locale::lang(ui.ctx());
         let ctx = ui.ctx().clone();
         // The side panels take what the canvas can spare (at least half of the window's
         // area stays the canvas's); one that does not fit is a strip that opens it.
@@ -42,7 +37,12 @@ impl BaryApp {
             Fit::Hidden => {}
             Fit::Strip => {
                 controls_width = side_panels::STRIP;
-                out.extend(strip(ui, "controls-strip", true, top_bar::text::CONTROLS));
+                out.extend(strip(
+                    ui,
+                    "controls-strip",
+                    true,
+                    &lang.tr("app.top_bar.controls"),
+                ));
             }
             Fit::Open { max } => {
                 let r = egui::Panel::left("controls")
@@ -69,7 +69,7 @@ impl BaryApp {
                     ui,
                     "inspector-strip",
                     false,
-                    top_bar::text::INSPECTOR,
+                    &lang.tr("app.top_bar.inspector"),
                 ));
             }
             Fit::Open { max } => {
@@ -153,6 +153,7 @@ impl BaryApp {
 /// A collapsed side panel: a strip with one button that opens it (and lets it have the room
 /// first).
 fn strip(ui: &mut egui::Ui, id: &'static str, left: bool, name: &str) -> Vec<AppCommand> {
+    let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     let panel = if left {
         egui::Panel::left(id)
@@ -166,7 +167,7 @@ fn strip(ui: &mut egui::Ui, id: &'static str, left: bool, name: &str) -> Vec<App
             let icon = if left { "»" } else { "«" };
             if ui
                 .button(icon)
-                .on_hover_text(format!("{name}: {}", text::STRIP_TIP))
+                .on_hover_text(format!("{name}: {}", &lang.tr("app.layout.strip_tip")))
                 .clicked()
             {
                 out.push(

@@ -17,7 +17,8 @@
 //!   canvas's renders and their cache), [`textures`] (the scene's texture), [`pixel`] and
 //!   [`reports`] (the inspector's probe of a pixel, one prober per render), [`paint`] (overlays
 //!   with egui), [`dialog`] (native file dialogs), [`screenshot`] (window screenshots),
-//!   [`style`] (text sizes, zoom).
+//!   [`style`] (text sizes, zoom), [`locale`] (the language the panels show, from the
+//!   catalogues' `app:` section, and the Chinese font).
 //!
 //! The overlays and the difference heatmap are described in [`crate::figure`], which the
 //! exported figures share.
@@ -39,6 +40,7 @@ pub mod history;
 pub mod image_size;
 pub mod inspector;
 pub mod layout;
+pub mod locale;
 pub mod paint;
 pub mod path_window;
 pub mod persist;
@@ -55,10 +57,13 @@ pub mod status;
 pub mod style;
 pub mod textures;
 pub mod top_bar;
+mod window;
+
+pub use window::run;
 
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 use std::time::Instant;
 
 use self::banner::Banner;
@@ -70,20 +75,17 @@ use self::file_menu::FilePicker;
 use self::files::{FileCommand, OpenedFile, RecentFiles};
 use self::persist::{STORAGE_KEY, SavedState};
 use self::reports::PixelReports;
-use self::screenshot::{ShotSlot, StartupShot};
+use self::screenshot::StartupShot;
 use self::side_panels::Side;
 use self::state::AppState;
 use self::status::{Cause, FrameTiming, Message};
 use self::textures::{TextureCache, texture_key};
+use crate::i18n::Lang;
 use crate::raster::Texture;
 use crate::scene::Scene;
 
-/// User-facing strings of the app frame (window title, messages).
-mod text {
-    pub const TITLE: &str = "barylab — how a GPU interpolates across a triangle";
-    pub const RESTORE_FAILED: &str = "could not restore the saved scene, using the default";
-    pub const SAVE_STATE_FAILED: &str = "could not save the app's state";
-}
+/// For the terminal, in English like every command-line message.
+const SAVE_STATE_FAILED: &str = "could not save the app's state";
 
 /// How the app is started.
 #[derive(Clone, Debug, Default)]
@@ -104,6 +106,14 @@ pub struct AppOptions {
     pub present: bool,
     /// Start with this pixel pinned.
     pub pin: Option<[u32; 2]>,
+    /// The language asked for on the command line (`--lang`): it wins over the saved one.
+    pub lang: Option<Lang>,
+    /// The system locale's language ([`Lang::detect`]), for a first start with nothing saved.
+    pub system_lang: Lang,
+    /// Behave as if no font with Chinese glyphs were installed (for tests).
+    pub no_cjk_font: bool,
+    /// Start at this text size (the interface zoom, as the text size slider sets it).
+    pub text_size: Option<f32>,
 }
 
 /// Errors that stop the app.
@@ -114,9 +124,6 @@ pub enum AppError {
     #[error("screenshot {path}: {message}")]
     Screenshot { path: String, message: String },
 }
-
-/// Default window size in points.
-const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];
 
 /// The app.
 pub struct BaryApp {
@@ -149,6 +156,10 @@ pub struct BaryApp {
     history: history::History,
     /// The scene file the scene came from or was saved to last (File > Save writes it).
     scene_file: Option<PathBuf>,
+    /// The language chosen (English when Chinese was asked for but no CJK font is installed).
+    lang: Lang,
+    /// Whether egui has a font with Chinese glyphs.
+    fonts: locale::Fonts,
 }
 
 impl BaryApp {
@@ -166,6 +177,7 @@ impl BaryApp {
         state_file: Option<PathBuf>,
     ) -> Self {
         let mut message = None;
+        let mut lang = options.system_lang;
         let mut state = AppState::default();
         let mut recent = RecentFiles::default();
         let mut export_settings = export::ExportSettings::default();
@@ -177,12 +189,17 @@ impl BaryApp {
         {
             let restored = saved.restore();
             (state, recent, export_settings) = (restored.state, restored.recent, restored.export);
+            lang = restored.lang.unwrap_or(lang);
             if let Some(e) = restored.error {
                 message = Some(Message::error(
-                    format!("{}: {e}", text::RESTORE_FAILED),
+                    lang.tr_with("app.restore_failed", &[("error", &e)]),
                     None,
                 ));
             }
+        }
+        let lang = options.lang.unwrap_or(lang);
+        if let Some(size) = options.text_size {
+            state.view.ui_scale = size;
         }
         if let Some((scene, dir)) = options.scene {
             state.scene = scene;
@@ -213,6 +230,8 @@ impl BaryApp {
             panel_first: Side::default(),
             history: history::History::default(),
             scene_file: None,
+            lang,
+            fonts: locale::Fonts::new(options.no_cjk_font),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
@@ -230,7 +249,7 @@ impl BaryApp {
         if let Some(out) = &self.canvas.output {
             scene.set_size(out.size[0], out.size[1]);
         }
-        match files::save(path, &scene, self.state.scene_dir.as_deref()) {
+        match files::save(path, &scene, self.state.scene_dir.as_deref(), self.lang) {
             Ok(done) => {
                 self.message = Some(Message::note(done));
                 self.scene_file = Some(path.to_path_buf());
@@ -253,7 +272,7 @@ impl BaryApp {
         self.commands.push(opened.command().into());
         self.textures.pending = Some(opened.texture.clone());
         self.recent.push(&opened.path);
-        self.banner = Some(Banner::opened(&opened));
+        self.banner = Some(Banner::opened(&opened, self.lang));
         self.message = None;
     }
 
@@ -261,9 +280,9 @@ impl BaryApp {
     /// menu and drag-and-drop do. Everything is loaded and checked first: on failure the
     /// current scene stays exactly as it was and the banner names the file and the problem.
     pub fn open_file(&mut self, path: &Path) {
-        match files::open(path, &self.state.scene) {
+        match files::open(path, &self.state.scene, self.lang) {
             Ok(opened) => self.opened(opened),
-            Err(e) => self.banner = Some(Banner::failed(e)),
+            Err(e) => self.banner = Some(Banner::failed(e, self.lang)),
         }
     }
 
@@ -284,6 +303,7 @@ impl BaryApp {
             style::apply_style(&ctx);
             self.styled = true;
         }
+        self.sync_lang(&ctx);
         style::sync_zoom(&ctx, &mut self.applied_zoom, &mut self.state.view.ui_scale);
         self.commands.extend(shortcuts::shortcuts(
             &ctx,
@@ -308,9 +328,11 @@ impl BaryApp {
             .extend(dropped.into_iter().map(|p| FileCommand::Open(p).into()));
         self.commands.extend(self.picker.poll().map(Into::into));
 
-        let (texture, texture_error) = self
-            .textures
-            .get(&self.state.scene, self.state.scene_dir.as_deref());
+        let (texture, texture_error) = self.textures.get(
+            &self.state.scene,
+            self.state.scene_dir.as_deref(),
+            self.lang,
+        );
         let key = texture_key(&self.state.scene, self.state.scene_dir.as_deref());
         match texture_error {
             Some(e) => self.message = Some(Message::error(e, Some(Cause::Texture(key)))),
@@ -327,8 +349,8 @@ impl BaryApp {
             self.canvas.output.as_ref(),
             &texture,
             self.state.options().mode,
-            self.canvas.hover,
-            self.state.view.pinned,
+            [self.canvas.hover, self.state.view.pinned],
+            self.lang,
         );
         match error {
             Some(e) => self.message = Some(Message::error(e, Some(Cause::Probe))),
@@ -356,6 +378,7 @@ impl BaryApp {
 
     /// Lays out the panels and windows; collects their commands.
     fn panels(&mut self, ui: &mut egui::Ui, texture: &Arc<Texture>) {
+        let lang = self.lang;
         let ctx = ui.ctx().clone();
         let mut out: Vec<AppCommand> = Vec::new();
         if self.presenting {
@@ -374,6 +397,7 @@ impl BaryApp {
                     help_open: self.help_open,
                     bench_open: self.bench.open,
                     presenting: self.presenting,
+                    cjk_font: self.fonts.cjk,
                 },
             ));
         });
@@ -402,7 +426,8 @@ impl BaryApp {
         self.side_panels_ui(ui, &mut out);
         self.canvas_panel(ui, texture, &mut out);
         let mut help_open = self.help_open;
-        egui::Window::new(help::text::TITLE)
+        egui::Window::new(lang.tr("app.help.title"))
+            .id(egui::Id::unique("help-window"))
             .open(&mut help_open)
             .default_width(620.0)
             .show(&ctx, help::help_ui);
@@ -456,7 +481,10 @@ impl BaryApp {
                         | state::Command::OpenScene(..)
                 );
                 match self.state.apply(c) {
-                    Err(e) => self.message = Some(Message::error(e.to_string(), Some(Cause::Edit))),
+                    Err(e) => {
+                        self.message =
+                            Some(Message::error(e.message(self.lang), Some(Cause::Edit)));
+                    }
                     Ok(()) if fresh => {
                         if self.message.as_ref().is_some_and(|m| m.error) {
                             self.message = None;
@@ -493,6 +521,7 @@ impl BaryApp {
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
             AppCommand::SetPresenting(on) => self.presenting = on,
+            AppCommand::SetLang(lang) => self.set_lang(lang),
             AppCommand::Undo => {
                 self.history.undo(&mut self.state);
             }
@@ -527,11 +556,12 @@ impl eframe::App for BaryApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if self.persist {
-            let saved = SavedState::capture(&self.state, &self.recent, &self.export.settings);
+            let saved =
+                SavedState::capture(&self.state, &self.recent, &self.export.settings, self.lang);
             if let Some(path) = &self.state_file
                 && let Err(e) = persist::write_state_file(path, &saved)
             {
-                eprintln!("barylab: {}: {e}", text::SAVE_STATE_FAILED);
+                eprintln!("barylab: {SAVE_STATE_FAILED}: {e}");
             }
             eframe::set_value(storage, STORAGE_KEY, &saved);
         }
@@ -540,44 +570,4 @@ impl eframe::App for BaryApp {
     fn persist_egui_memory(&self) -> bool {
         self.persist
     }
-}
-
-/// Opens the window and runs the app until it is closed.
-pub fn run(options: AppOptions) -> Result<(), AppError> {
-    let size = options.window_size.unwrap_or(WINDOW_SIZE);
-    let native = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default()
-            .with_title(text::TITLE)
-            .with_app_id("barylab")
-            .with_inner_size(size)
-            .with_min_inner_size([800.0, 500.0]),
-        persist_window: options.persist,
-        // Dithering would add noise to the canvas; its pixels must show exactly.
-        dithering: false,
-        ..Default::default()
-    };
-    let screenshot = options.screenshot.clone();
-    // Where the app's `--screenshot` reports, read once the window has closed.
-    let result_slot: Arc<Mutex<Option<ShotSlot>>> = Arc::new(Mutex::new(None));
-    let slot = result_slot.clone();
-    eframe::run_native(
-        "barylab",
-        native,
-        Box::new(move |cc| {
-            let app = BaryApp::new_with_state_file(cc.storage, options, persist::state_file());
-            if let (Some(shot), Ok(mut s)) = (&app.screenshot, slot.lock()) {
-                *s = Some(shot.slot());
-            }
-            Ok(Box::new(app))
-        }),
-    )
-    .map_err(|e| AppError::Window(e.to_string()))?;
-    if let Some(path) = screenshot {
-        let shot = result_slot.lock().ok().and_then(|s| s.clone());
-        screenshot::result_of(shot.as_ref()).map_err(|message| AppError::Screenshot {
-            path: path.display().to_string(),
-            message,
-        })?;
-    }
-    Ok(())
 }

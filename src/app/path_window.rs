@@ -7,19 +7,6 @@ use egui::{Color32, RichText};
 
 use super::files::FileCommand;
 
-/// User-facing strings of the typed-path window.
-pub mod text {
-    pub const PATH_WINDOW: &str = "Open a file";
-    pub const PATH_HINT: &str = "/path/to/photo.jpg, model.obj or scene.json";
-    pub const OPEN_BUTTON: &str = "Open";
-    pub const SAVE_WINDOW: &str = "Save the scene";
-    pub const SAVE_HINT: &str = "/path/to/scene.json";
-    pub const SAVE_BUTTON: &str = "Save";
-    pub const BROWSE: &str = "Browse…";
-    pub const DIALOG_FAILED: &str = "The file dialog did not open (no desktop portal and no \
-        zenity found). Type the path of the file instead:";
-}
-
 /// The typed-path window's state: whether it is shown, why, and its field.
 #[derive(Default)]
 pub struct PathWindow {
@@ -54,6 +41,7 @@ impl PathWindow {
 
 /// The typed-path window (when open). It edits only its own field.
 pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileCommand> {
+    let lang = super::locale::lang(ctx);
     let mut out = Vec::new();
     if !window.open {
         return out;
@@ -61,18 +49,30 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
     let mut window_open = true;
     let mut submit = false;
     let (title, hint, button) = if window.saving {
-        (text::SAVE_WINDOW, text::SAVE_HINT, text::SAVE_BUTTON)
+        (
+            &lang.tr("app.path_window.save_window"),
+            &lang.tr("app.path_window.save_hint"),
+            &lang.tr("app.path_window.save_button"),
+        )
     } else {
-        (text::PATH_WINDOW, text::PATH_HINT, text::OPEN_BUTTON)
+        (
+            &lang.tr("app.path_window.path_window"),
+            &lang.tr("app.path_window.path_hint"),
+            &lang.tr("app.path_window.open_button"),
+        )
     };
     egui::Window::new(title)
+        .id(egui::Id::unique("path-window"))
         .open(&mut window_open)
         .collapsible(false)
         .default_width(560.0)
         .anchor(egui::Align2::CENTER_TOP, [0.0, 100.0])
         .show(ctx, |ui| {
             if window.dialog_failed {
-                ui.label(RichText::new(text::DIALOG_FAILED).color(Color32::from_rgb(255, 200, 90)));
+                ui.label(
+                    RichText::new(lang.tr("app.path_window.dialog_failed"))
+                        .color(Color32::from_rgb(255, 200, 90)),
+                );
             }
             let field = ui.add(
                 egui::TextEdit::singleline(&mut window.typed)
@@ -89,7 +89,7 @@ pub fn path_window_ui(ctx: &egui::Context, window: &mut PathWindow) -> Vec<FileC
                 if ui.button(button).clicked() {
                     submit = true;
                 }
-                if !window.dialog_failed && ui.button(text::BROWSE).clicked() {
+                if !window.dialog_failed && ui.button(lang.tr("app.path_window.browse")).clicked() {
                     out.push(if window.saving {
                         FileCommand::SaveAsDialog
                     } else {

@@ -1,5 +1,6 @@
 //! What the app saves between runs, in eframe's storage under [`STORAGE_KEY`], and how it comes
-//! back: the scene, the view settings, the recent files and the Export panel's settings.
+//! back: the scene, the view settings, the recent files, the Export panel's settings and the
+//! language.
 
 use std::path::PathBuf;
 
@@ -8,6 +9,7 @@ use serde::{Deserialize, Serialize};
 use super::export::ExportSettings;
 use super::files::RecentFiles;
 use super::state::{AppState, PIXEL_SIZE_RANGE, UI_SCALE_RANGE, ViewSettings};
+use crate::i18n::Lang;
 use crate::scene::Scene;
 
 /// Key under which eframe stores [`SavedState`].
@@ -27,6 +29,8 @@ pub struct SavedState {
     pub recent: RecentFiles,
     /// The Export panel's folder, scale, background and file choice.
     pub export: ExportSettings,
+    /// The language chosen (none saved yet: the system locale's).
+    pub lang: Option<Lang>,
 }
 
 /// A saved state, restored.
@@ -35,19 +39,27 @@ pub struct Restored {
     pub state: AppState,
     pub recent: RecentFiles,
     pub export: ExportSettings,
+    /// The language saved, if any.
+    pub lang: Option<Lang>,
     /// Why the saved scene could not be used (the default scene is used instead).
     pub error: Option<String>,
 }
 
 impl SavedState {
     /// What is saved of the app now.
-    pub fn capture(state: &AppState, recent: &RecentFiles, export: &ExportSettings) -> Self {
+    pub fn capture(
+        state: &AppState,
+        recent: &RecentFiles,
+        export: &ExportSettings,
+        lang: Lang,
+    ) -> Self {
         Self {
             scene_json: state.scene.to_json(),
             scene_dir: state.scene_dir.clone(),
             view: state.view.clone(),
             recent: recent.clone(),
             export: export.clone(),
+            lang: Some(lang),
         }
     }
 
@@ -84,6 +96,7 @@ impl SavedState {
             state,
             recent: self.recent,
             export: self.export,
+            lang: self.lang,
             error,
         }
     }
@@ -134,13 +147,14 @@ mod tests {
             scale: 4,
             ..ExportSettings::default()
         };
-        let saved = SavedState::capture(&s, &recent, &export);
+        let saved = SavedState::capture(&s, &recent, &export, Lang::Zh);
         let json = serde_json::to_string(&saved).expect("json");
         let back: SavedState = serde_json::from_str(&json).expect("parse");
         let restored = back.restore();
         assert_eq!(restored.error, None);
         assert_eq!(restored.state, s);
         assert_eq!((restored.recent, restored.export), (recent, export));
+        assert_eq!(restored.lang, Some(Lang::Zh));
 
         let broken = SavedState {
             scene_json: "{\"quad\": 3}".into(),

@@ -8,29 +8,6 @@ use super::pixel::PixelReport;
 use crate::probe::format::fmt_digits;
 use crate::raster::Interpolation;
 
-/// User-facing strings of the presentation card.
-pub mod text {
-    pub const BUTTON: &str = "Present";
-    pub const BUTTON_TIP: &str = "Presentation mode: the canvas as large as the window allows \
-        and the pixel's key numbers in large print. Keys: F5 (Esc leaves), Page Down / Page Up \
-        step through the presets.";
-    pub const NO_PIXEL: &str = "Hover or click a pixel on the quad";
-    pub const NOT_COVERED: &str = "the quad does not cover this pixel";
-    pub const PIXEL: &str = "Pixel";
-    pub const PINNED: &str = "pinned";
-    pub const HOVERED: &str = "hovered";
-    pub const AFFINE: &str = "affine";
-    pub const PERSPECTIVE: &str = "perspective-correct";
-    pub const SCREEN: &str = "r s t";
-    pub const INV_W: &str = "1/W";
-    pub const CORRECTED: &str = "a b c";
-    pub const INV_W_P: &str = "1/W_P";
-    pub const W_P: &str = "W_P";
-    pub const UV_AFFINE: &str = "uv affine";
-    pub const UV_PERSPECTIVE: &str = "uv perspective";
-    pub const LEAVE: &str = "F5 / Esc: leave · Page Down / Up: presets";
-}
-
 /// Text size of the card's numbers in points (times the text size setting), for a window
 /// `height` points high: 26 at 768, larger on a larger screen.
 pub fn card_text(height: f32) -> f32 {
@@ -96,22 +73,23 @@ pub fn card_ui(
     pinned: Option<&PixelReport>,
     size: f32,
 ) {
+    let lang = super::locale::lang(ui.ctx());
     let big = |s: String| big(s, size);
     let label = |s: &str| label(s, size);
     let focus = pinned
-        .map(|r| (r, text::PINNED))
-        .or(hovered.map(|r| (r, text::HOVERED)));
+        .map(|r| (r, lang.tr("app.present.pinned")))
+        .or(hovered.map(|r| (r, lang.tr("app.present.hovered"))));
     ui.horizontal_wrapped(|ui| {
-        match focus {
+        match &focus {
             Some((r, how)) => {
                 let mode = match r.mode {
-                    Interpolation::Affine => text::AFFINE,
-                    Interpolation::Perspective => text::PERSPECTIVE,
+                    Interpolation::Affine => lang.tr("app.present.affine"),
+                    Interpolation::Perspective => lang.tr("app.present.perspective"),
                 };
                 ui.label(
                     big(format!(
                         "{} {}, {} ({how}) · {mode}",
-                        text::PIXEL,
+                        &lang.tr("app.present.pixel"),
                         r.pixel[0],
                         r.pixel[1]
                     ))
@@ -120,16 +98,20 @@ pub fn card_ui(
                 );
             }
             None => {
-                ui.label(big(text::NO_PIXEL.into()).color(ACCENT));
+                ui.label(big(lang.tr("app.present.no_pixel")).color(ACCENT));
             }
         }
-        ui.label(RichText::new(text::LEAVE).size(size * 0.55).color(DIM));
+        ui.label(
+            RichText::new(lang.tr("app.present.leave"))
+                .size(size * 0.55)
+                .color(DIM),
+        );
     });
     let Some((r, _)) = focus else {
         return;
     };
     let Some(d) = &r.trace.detail else {
-        ui.label(big(text::NOT_COVERED.into()));
+        ui.label(big(lang.tr("app.present.not_covered")));
         return;
     };
     let correction = d.perspective.map(|p| p.correction);
@@ -144,7 +126,11 @@ pub fn card_ui(
         };
         ui.horizontal(|ui| {
             cell(ui, label(""), 1.5);
-            for h in [text::SCREEN, text::INV_W, text::CORRECTED] {
+            for h in [
+                &lang.tr("app.present.screen"),
+                &lang.tr("app.present.inv_w"),
+                &lang.tr("app.present.corrected"),
+            ] {
                 cell(ui, label(h), NUMBER_EMS);
             }
         });
@@ -160,19 +146,31 @@ pub fn card_ui(
     };
     let lines = |ui: &mut Ui| {
         if let Some(c) = correction {
-            ui.label(big(format!("{} = {}", text::INV_W_P, num(c.inv_w_p))));
-            ui.label(big(format!("{} = {}", text::W_P, num(c.w_p))));
+            ui.label(big(format!(
+                "{} = {}",
+                &lang.tr("app.present.inv_w_p"),
+                num(c.inv_w_p)
+            )));
+            ui.label(big(format!(
+                "{} = {}",
+                &lang.tr("app.present.w_p"),
+                num(c.w_p)
+            )));
         }
         if let Some(a) = &d.attribute {
             let strong = |t: RichText, on: bool| if on { t.color(ACCENT) } else { t };
             ui.label(strong(
-                big(format!("{} {}", text::UV_AFFINE, pair(a.uv_affine))),
+                big(format!(
+                    "{} {}",
+                    &lang.tr("app.present.uv_affine"),
+                    pair(a.uv_affine)
+                )),
                 r.mode == Interpolation::Affine,
             ));
             ui.label(strong(
                 big(format!(
                     "{} {}",
-                    text::UV_PERSPECTIVE,
+                    &lang.tr("app.present.uv_perspective"),
                     pair(a.uv_perspective)
                 )),
                 r.mode == Interpolation::Perspective,

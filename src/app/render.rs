@@ -15,11 +15,6 @@ use crate::raster::render::{Rasterizer, Render};
 use crate::raster::{Buffers, Framebuffer, Interpolation, RenderSettings, Texture};
 use crate::scene::Scene;
 
-/// User-facing strings of rendering.
-mod text {
-    pub const RENDER_FAILED: &str = "render failed";
-}
-
 /// A texture's name and the folder it is resolved against.
 pub type TextureKey = (String, Option<std::path::PathBuf>);
 
@@ -149,7 +144,7 @@ impl RenderCache {
                 .unwrap_or_else(|| Framebuffer::new(0, 0, base.background));
             let triangles =
                 crate::raster::render_into(&mut frame, &mesh, texture, &settings, buffers)
-                    .map_err(|e| format!("{}: {e}", text::RENDER_FAILED))?;
+                    .map_err(|e| e.to_string())?;
             let r = Arc::new(Render { frame, triangles });
             self.cache.push((one, r.clone()));
             renders.push((mode, r));

@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 use super::pixel::PixelReport;
 use super::render::CanvasOutput;
+use crate::i18n::Lang;
 use crate::probe::Prober;
 use crate::raster::{Interpolation, Texture};
 
@@ -20,25 +21,27 @@ pub struct PixelReports {
     pub probers_built: u64,
 }
 
-/// Which pixels, renders and modes the reports are for (to see that they changed).
-pub type ReportsKey = [Option<([u32; 2], Interpolation, u64)>; 2];
+/// Which pixels, renders, modes and languages the reports are for (to see that they changed).
+pub type ReportsKey = [Option<([u32; 2], Interpolation, u64, Lang)>; 2];
 
 impl PixelReports {
     /// Which pixels, renders and modes the reports are for.
     pub fn key(&self) -> ReportsKey {
-        let key = |r: &Option<PixelReport>| r.as_ref().map(|r| (r.pixel, r.mode, r.generation));
+        let key =
+            |r: &Option<PixelReport>| r.as_ref().map(|r| (r.pixel, r.mode, r.generation, r.lang));
         [key(&self.hover), key(&self.pin)]
     }
 
     /// Probes the `hover`ed and the `pinned` pixel of `output` in `mode` (again only if the
-    /// pixel or the render changed). Returns the error of a probe that failed.
+    /// pixel, the render or the language changed), their derivations in `lang`. Returns the
+    /// error of a probe that failed.
     pub fn update(
         &mut self,
         output: Option<&CanvasOutput>,
         texture: &Arc<Texture>,
         mode: Interpolation,
-        hover: Option<[u32; 2]>,
-        pinned: Option<[u32; 2]>,
+        [hover, pinned]: [Option<[u32; 2]>; 2],
+        lang: Lang,
     ) -> Option<String> {
         let Some(out) = output else {
             self.hover = None;
@@ -54,7 +57,7 @@ impl PixelReports {
                 *slot = None;
                 return;
             };
-            if slot.as_ref().is_some_and(|r| r.is_for(out, mode, p)) {
+            if slot.as_ref().is_some_and(|r| r.is_for(out, mode, p, lang)) {
                 return;
             }
             // One prober per render and mode: it clips and sets up every triangle once.
@@ -76,7 +79,7 @@ impl PixelReports {
             let Some((_, pr)) = prober.as_ref() else {
                 return;
             };
-            *slot = match PixelReport::with_prober(out, pr, p) {
+            *slot = match PixelReport::with_prober(out, pr, p, lang) {
                 Ok(r) => Some(r),
                 Err(e) => {
                     error = Some(e.to_string());

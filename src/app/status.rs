@@ -7,27 +7,6 @@ use super::state::AppState;
 use crate::figure::Compare;
 use crate::raster::Interpolation;
 
-/// User-facing strings of the status line.
-mod text {
-    pub const CANVAS: &str = "canvas";
-    pub const AT: &str = "at";
-    pub const RENDER: &str = "render";
-    pub const EDGE: &str = "edge functions";
-    pub const SCANLINE: &str = "scanline";
-    pub const UPLOAD: &str = "upload";
-    pub const UI: &str = "ui";
-    pub const FRAME: &str = "frame";
-    pub const AFFINE: &str = "AFFINE";
-    pub const PERSPECTIVE: &str = "PERSPECTIVE-CORRECT";
-    pub const SIDE_BY_SIDE: &str = "side by side";
-    pub const WIPE: &str = "wipe";
-    pub const DIFFERENCE: &str = "difference";
-    pub const HELP: &str = "F1: help";
-    pub const FRAME_TIP: &str = "Frame: CPU time of the whole last frame (render + upload + UI + paint), \
-        as eframe measures it. Render: the CPU rasterizer. Upload: building the canvas images. \
-        UI: this frame's UI code including render and upload.";
-}
-
 /// Timings the app measures itself.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct FrameTiming {
@@ -93,6 +72,7 @@ pub fn status_ui(
     timing: FrameTiming,
     message: Option<&Message>,
 ) {
+    let lang = super::locale::lang(ui.ctx());
     // One line, always: the timings change every frame, and a status line that wrapped would
     // change the canvas's height, move the canvas and re-render it (a feedback loop).
     ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Truncate);
@@ -100,12 +80,18 @@ pub fn status_ui(
         let mode = state.options().mode;
         let (mode_text, mode_color) = match state.view.compare {
             Compare::Single => match mode {
-                Interpolation::Affine => (text::AFFINE, Color32::from_rgb(230, 140, 60)),
-                Interpolation::Perspective => (text::PERSPECTIVE, Color32::from_rgb(80, 170, 255)),
+                Interpolation::Affine => (
+                    &lang.tr("app.status.affine"),
+                    Color32::from_rgb(230, 140, 60),
+                ),
+                Interpolation::Perspective => (
+                    &lang.tr("app.status.perspective"),
+                    Color32::from_rgb(80, 170, 255),
+                ),
             },
-            Compare::SideBySide => (text::SIDE_BY_SIDE, Color32::LIGHT_GRAY),
-            Compare::Wipe => (text::WIPE, Color32::LIGHT_GRAY),
-            Compare::Difference => (text::DIFFERENCE, Color32::LIGHT_GRAY),
+            Compare::SideBySide => (&lang.tr("app.status.side_by_side"), Color32::LIGHT_GRAY),
+            Compare::Wipe => (&lang.tr("app.status.wipe"), Color32::LIGHT_GRAY),
+            Compare::Difference => (&lang.tr("app.status.difference"), Color32::LIGHT_GRAY),
         };
         ui.label(RichText::new(mode_text).strong().color(mode_color));
         ui.separator();
@@ -120,12 +106,9 @@ pub fn status_ui(
             } else {
                 format!("{px:.2}")
             };
-            ui.label(format!(
-                "{} {}×{} {} {px}×",
-                text::CANVAS,
-                out.size[0],
-                out.size[1],
-                text::AT,
+            ui.label(lang.tr_with(
+                "app.status.canvas",
+                &[("w", &out.size[0]), ("h", &out.size[1]), ("px", &px)],
             ));
             ui.separator();
         }
@@ -134,22 +117,22 @@ pub fn status_ui(
             .frame_ms
             .map_or_else(|| "–".to_string(), |f| format!("{f:.1} ms"));
         let rasterizer = match state.view.rasterizer {
-            crate::raster::render::Rasterizer::EdgeFunction => text::EDGE,
-            crate::raster::render::Rasterizer::Scanline => text::SCANLINE,
+            crate::raster::render::Rasterizer::EdgeFunction => lang.tr("app.status.edge"),
+            crate::raster::render::Rasterizer::Scanline => lang.tr("app.status.scanline"),
         };
         ui.label(format!(
             "{} ({}) {:.1} ms · {} {:.1} ms · {} {:.1} ms · {} {}",
-            text::RENDER,
+            &lang.tr("app.status.render"),
             rasterizer,
             t.render_ms,
-            text::UPLOAD,
+            &lang.tr("app.status.upload"),
             t.upload_ms,
-            text::UI,
+            &lang.tr("app.status.ui"),
             timing.ui_ms,
-            text::FRAME,
+            &lang.tr("app.status.frame"),
             frame
         ))
-        .on_hover_text(text::FRAME_TIP);
+        .on_hover_text(lang.tr("app.status.frame_tip"));
         if let Some(m) = message {
             ui.separator();
             let c = if m.error {
@@ -160,7 +143,7 @@ pub fn status_ui(
             ui.label(RichText::new(&m.text).color(c));
         }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            ui.label(RichText::new(text::HELP).weak());
+            ui.label(RichText::new(lang.tr("app.status.help")).weak());
         });
     });
 }

@@ -5,13 +5,9 @@ use std::path::Path;
 use std::sync::Arc;
 
 use super::render::TextureKey;
+use crate::i18n::Lang;
 use crate::raster::{BuiltinTexture, Texture};
 use crate::scene::Scene;
-
-/// User-facing strings of texture loading.
-mod text {
-    pub const TEXTURE_FALLBACK: &str = "texture not loaded, showing the uv-grid instead";
-}
 
 /// The texture of the current scene, loaded once.
 #[derive(Default)]
@@ -29,7 +25,12 @@ pub fn texture_key(scene: &Scene, dir: Option<&Path>) -> TextureKey {
 
 impl TextureCache {
     /// The scene's texture; on failure the uv-grid and the error.
-    pub fn get(&mut self, scene: &Scene, dir: Option<&Path>) -> (Arc<Texture>, Option<String>) {
+    pub fn get(
+        &mut self,
+        scene: &Scene,
+        dir: Option<&Path>,
+        lang: Lang,
+    ) -> (Arc<Texture>, Option<String>) {
         let key = texture_key(scene, dir);
         if self.key.as_ref() == Some(&key)
             && let Some(t) = &self.texture
@@ -45,7 +46,7 @@ impl TextureCache {
             Ok(t) => (t, None),
             Err(e) => (
                 Texture::builtin(BuiltinTexture::UvGrid),
-                Some(format!("{e}; {}", text::TEXTURE_FALLBACK)),
+                Some(lang.tr_with("app.textures.texture_fallback", &[("error", &e)])),
             ),
         };
         let texture = Arc::new(texture);

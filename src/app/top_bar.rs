@@ -8,24 +8,20 @@ use egui::Ui;
 use super::command::{self, AppCommand};
 use super::export::ExportCommand;
 use super::state::{AppState, Command};
-use super::{bench_panel, controls, export, file_menu, files, present};
+use super::{bench_panel, controls, file_menu, files};
+use crate::i18n::Lang;
 
-/// User-facing strings of the top bar.
-pub mod text {
-    pub const NAME: &str = "barylab";
-    pub const HELP: &str = "Help";
-    pub const CONTROLS: &str = "Controls";
-    pub const INSPECTOR: &str = "Inspector";
-    pub const VIEW: &str = "View";
-    pub const CONTROLS_TIP: &str = "Show or hide the controls panel.";
-    pub const INSPECTOR_TIP: &str = "Show or hide the pixel inspector.";
-    pub const HELP_TIP: &str = "Mouse and keyboard shortcuts. Key: F1";
-    pub const VIEW_TIP: &str = "Panels, windows, resets and the text size (the window is too \
-        narrow to show them in the bar).";
+/// The text size slider's width in the bar, in points.
+const BAR_SLIDER: f32 = 140.0;
+
+/// Points the whole bar takes in one row, with the language switch at its end (the Chinese
+/// words are shorter); below that the View menu holds most of it.
+fn full_bar(lang: Lang) -> f32 {
+    match lang {
+        Lang::En => 1450.0,
+        Lang::Zh => 1300.0,
+    }
 }
-
-/// Points the whole bar takes in one row; below that the View menu holds most of it.
-const FULL_BAR: f32 = 1340.0;
 
 /// What the top bar shows besides the state.
 pub struct TopBarInput<'a> {
@@ -37,14 +33,17 @@ pub struct TopBarInput<'a> {
     pub help_open: bool,
     pub bench_open: bool,
     pub presenting: bool,
+    /// A font with Chinese glyphs is installed (else the switch cannot offer Chinese).
+    pub cjk_font: bool,
 }
 
 /// The top bar.
 pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
+    let lang = super::locale::lang(ui.ctx());
     let mut out: Vec<AppCommand> = Vec::new();
-    let compact = ui.available_width() < FULL_BAR;
+    let compact = ui.available_width() < full_bar(lang);
     ui.horizontal(|ui| {
-        ui.label(egui::RichText::new(text::NAME).strong());
+        ui.label(egui::RichText::new("barylab").strong());
         ui.separator();
         out.extend(command::all(file_menu::file_menu_ui(
             ui,
@@ -53,49 +52,84 @@ pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
         )));
         ui.separator();
         if ui
-            .selectable_label(input.presenting, present::text::BUTTON)
-            .on_hover_text(present::text::BUTTON_TIP)
+            .selectable_label(input.presenting, lang.tr("app.present.button"))
+            .on_hover_text(lang.tr("app.present.button_tip"))
             .clicked()
         {
             out.push(AppCommand::SetPresenting(!input.presenting));
         }
         if compact {
-            ui.menu_button(text::VIEW, |ui| {
+            ui.menu_button(lang.tr("app.top_bar.view"), |ui| {
                 toggles(ui, input, &mut out);
                 ui.separator();
                 out.extend(command::all(controls::reset_ui(ui, input.state)));
             })
             .response
-            .on_hover_text(text::VIEW_TIP);
+            .on_hover_text(lang.tr("app.top_bar.view_tip"));
         } else {
             toggles(ui, input, &mut out);
             ui.separator();
-            out.extend(command::all(controls::reset_ui(ui, input.state)));
+            // A shorter text size slider than the panels' leaves room for the language switch.
+            ui.scope(|ui| {
+                ui.spacing_mut().slider_width = BAR_SLIDER;
+                out.extend(command::all(controls::reset_ui(ui, input.state)));
+            });
         }
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            out.extend(language_ui(ui, lang, input.cjk_font));
+        });
     });
     out
 }
 
+/// The language switch, English / 中文, at the bar's right end (outside the View menu, so it
+/// is always one click away). Without a Chinese font, Chinese is offered in English words and
+/// choosing it says why it cannot be shown.
+fn language_ui(ui: &mut Ui, lang: Lang, cjk_font: bool) -> Option<AppCommand> {
+    let mut picked = None;
+    // Right to left: the last language first.
+    for l in Lang::ALL.into_iter().rev() {
+        let name = match l {
+            Lang::Zh if !cjk_font => "Chinese",
+            l => l.native_name(),
+        };
+        let tip = match l {
+            Lang::Zh if !cjk_font => Lang::En.tr(super::locale::NO_CJK_FONT),
+            l => l.tr("app.top_bar.lang_tip"),
+        };
+        if ui
+            .selectable_label(lang == l, name)
+            .on_hover_text(tip)
+            .clicked()
+            && lang != l
+        {
+            picked = Some(AppCommand::SetLang(l));
+        }
+    }
+    picked
+}
+
 /// The panel and window toggles.
 fn toggles(ui: &mut Ui, input: &TopBarInput<'_>, out: &mut Vec<AppCommand>) {
+    let lang = super::locale::lang(ui.ctx());
     let view = &input.state.view;
     if ui
-        .selectable_label(view.show_controls, text::CONTROLS)
-        .on_hover_text(text::CONTROLS_TIP)
+        .selectable_label(view.show_controls, lang.tr("app.top_bar.controls"))
+        .on_hover_text(lang.tr("app.top_bar.controls_tip"))
         .clicked()
     {
         out.push(Command::SetShowControls(!view.show_controls).into());
     }
     if ui
-        .selectable_label(view.show_inspector, text::INSPECTOR)
-        .on_hover_text(text::INSPECTOR_TIP)
+        .selectable_label(view.show_inspector, lang.tr("app.top_bar.inspector"))
+        .on_hover_text(lang.tr("app.top_bar.inspector_tip"))
         .clicked()
     {
         out.push(Command::SetShowInspector(!view.show_inspector).into());
     }
     if ui
-        .selectable_label(input.export_open, export::text::BUTTON)
-        .on_hover_text(export::text::BUTTON_TIP)
+        .selectable_label(input.export_open, lang.tr("app.export.button"))
+        .on_hover_text(lang.tr("app.export.button_tip"))
         .clicked()
     {
         out.push(
@@ -108,15 +142,15 @@ fn toggles(ui: &mut Ui, input: &TopBarInput<'_>, out: &mut Vec<AppCommand>) {
         );
     }
     if ui
-        .selectable_label(input.help_open, text::HELP)
-        .on_hover_text(text::HELP_TIP)
+        .selectable_label(input.help_open, lang.tr("app.top_bar.help"))
+        .on_hover_text(lang.tr("app.top_bar.help_tip"))
         .clicked()
     {
         out.push(AppCommand::SetHelpOpen(!input.help_open));
     }
     if ui
-        .selectable_label(input.bench_open, bench_panel::text::OPEN)
-        .on_hover_text(bench_panel::text::OPEN_TIP)
+        .selectable_label(input.bench_open, lang.tr("app.bench_panel.open"))
+        .on_hover_text(lang.tr("app.bench_panel.open_tip"))
         .clicked()
     {
         out.push(bench_panel::BenchCommand::SetOpen(!input.bench_open).into());
