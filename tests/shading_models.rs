@@ -171,3 +171,34 @@ fn models_are_framed_from_the_courses_view_and_the_named_views() {
         assert!(e.cross(u).length() > 0.5, "{v:?}: up parallel to the view");
     }
 }
+
+#[test]
+fn the_apps_view_buttons_frame_the_model_from_each_side_and_home_goes_back() {
+    use barylab::app::state::{AppState, Command};
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/models");
+    let model = ModelScene::for_model(&dir.join("torus.obj"), 160, 120).expect("torus");
+    let (centre, _) = model.mesh.bounding_sphere();
+    let mut state = AppState {
+        scene: Scene::Model(model),
+        ..AppState::default()
+    };
+    let eye = |s: &AppState| match &s.scene {
+        Scene::Model(m) => (m.camera().eye - centre).normalize(),
+        _ => panic!("a model scene"),
+    };
+    let course = eye(&state);
+    for view in ModelView::ALL {
+        state.apply(Command::ModelView(view)).expect("view");
+        let (expected, _) = view.eye_direction();
+        assert!((eye(&state) - expected).length() < 1e-9, "{view:?}");
+        // The model stays framed: it draws, touching no border.
+        let f = draw(&state.scene);
+        assert!(f.triangle.iter().any(|&t| t != NO_TRIANGLE), "{view:?}");
+        assert!(
+            (0..f.width).all(|x| !f.covered(x, 0) && !f.covered(x, f.height - 1)),
+            "{view:?}"
+        );
+    }
+    state.apply(Command::ResetCamera).expect("home");
+    assert!((eye(&state) - course).length() < 1e-12);
+}

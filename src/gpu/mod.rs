@@ -469,7 +469,8 @@ impl Gpu {
         let mut bytes = vec![0u8; w * h * 16];
         // SAFETY: the buffer holds exactly width * height RGBA32F pixels.
         unsafe {
-            self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(o.values_fbo));
+            self.gl
+                .bind_framebuffer(glow::FRAMEBUFFER, Some(o.values_fbo));
             self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
             self.gl.read_pixels(
                 0,
