@@ -71,6 +71,7 @@ fn small_triangles() -> ClipMesh {
                 clip: DVec4::new(ndc.0 * w, ndc.1 * w, 0.0, w),
                 uv: Vec2::new(u, v),
                 color: Vec3::ONE,
+                normal: Vec3::ZERO,
             });
         }
     }

@@ -12,8 +12,15 @@ use crate::raster::interpolate::Interpolation;
 /// Errors while writing AOV files.
 #[derive(Debug, thiserror::Error)]
 pub enum AovError {
+    /// The folder cannot be created or written to, or is not a folder.
     #[error("cannot use AOV folder {path}: {problem}")]
-    Folder { path: String, problem: String },
+    Folder {
+        /// The folder, as shown in messages.
+        path: String,
+        /// What is wrong with it.
+        problem: String,
+    },
+    /// Writing one of the files failed.
     #[error(transparent)]
     Write(#[from] WriteError),
 }

@@ -38,9 +38,13 @@ pub fn view_name(v: View) -> &'static str {
 /// One cell of the matrix: what to draw with and on how many worker threads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BenchConfig {
+    /// Edge functions or the scanline.
     pub rasterizer: Rasterizer,
+    /// Texture filter.
     pub filter: Filter,
+    /// Affine or perspective-correct interpolation.
     pub mode: Interpolation,
+    /// Worker threads of the pool the frames are drawn on.
     pub threads: usize,
 }
 
@@ -57,8 +61,11 @@ pub struct BenchRecord {
     /// `single`, `side`, `wipe` or `difference` ([`View`]).
     #[serde(default = "single_view")]
     pub view: String,
+    /// Worker threads the frames were drawn on.
     pub threads: usize,
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
     /// Median wall-clock time of one frame.
     pub median_ms: f64,
@@ -69,10 +76,18 @@ pub struct BenchRecord {
 /// Why a configuration could not be measured.
 #[derive(Debug, thiserror::Error)]
 pub enum BenchError {
+    /// The thread pool could not be built.
     #[error("cannot start {threads} worker threads: {reason}")]
-    Threads { threads: usize, reason: String },
+    Threads {
+        /// The threads asked for.
+        threads: usize,
+        /// The thread pool's error.
+        reason: String,
+    },
+    /// The render failed (bad image size, not enough memory).
     #[error(transparent)]
     Render(#[from] RenderError),
+    /// Zero frames were asked for.
     #[error("frames must be at least 1")]
     NoFrames,
 }

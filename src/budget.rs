@@ -43,26 +43,45 @@ static OVERRIDE: AtomicU64 = AtomicU64::new(0);
 /// A request that does not fit, or a limit that cannot be understood.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum MemoryError {
+    /// The estimated need is above the limit.
     #[error(
         "{what} needs about {need} of memory, more than the limit of {limit} ({origin}); \
          see --memory-limit"
     )]
     TooLarge {
+        /// What needs the memory ("a 800x600 render of 2 triangles", "model torus.obj (1.2 MiB)",
+        /// ...).
         what: String,
+        /// The estimate, for people ([`bytes`]).
         need: String,
+        /// The limit, for people.
         limit: String,
+        /// Where the limit came from ([`Limit::source`]).
         origin: String,
     },
+    /// [`LIMIT_ENV`] is set to something [`parse_size`] does not read.
     #[error("{LIMIT_ENV}={value} is not a memory size like 2G, 512M or 1000000")]
-    BadEnv { value: String },
+    BadEnv {
+        /// The variable's value, as shown in messages.
+        value: String,
+    },
+    /// The allocator refused the memory although the estimate was within the limit.
     #[error("cannot allocate memory for {what} ({need})")]
-    Allocation { what: String, need: String },
+    Allocation {
+        /// What the memory was for.
+        what: String,
+        /// How much was asked for, for people.
+        need: String,
+    },
 }
 
 /// The memory limit and where it came from (for messages).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Limit {
+    /// The limit in bytes.
     pub bytes: u64,
+    /// Where it came from: `--memory-limit`, [`LIMIT_ENV`], or a share of the available
+    /// memory (or the fallback).
     pub source: String,
 }
 

@@ -455,6 +455,10 @@ enum ShadingArg {
     VertexColor,
     Barycentric,
     Depth,
+    /// The interpolated view-space normal as colour, (n̂ + 1) / 2.
+    Normal,
+    /// A headlight Lambert shade of the vertex colour.
+    Lambert,
 }
 
 impl From<ModeArg> for Interpolation {
@@ -483,6 +487,8 @@ impl From<ShadingArg> for Shading {
             ShadingArg::VertexColor => Shading::VertexColor,
             ShadingArg::Barycentric => Shading::Barycentric,
             ShadingArg::Depth => Shading::Depth,
+            ShadingArg::Normal => Shading::Normal,
+            ShadingArg::Lambert => Shading::Lambert,
         }
     }
 }

@@ -28,9 +28,13 @@ pub const MAX_SHOWN_CHARS: usize = 160;
 /// What a file is read as: names it in messages and sets its size cap.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FileKind {
+    /// A JSON scene file ([`MAX_SCENE_BYTES`]).
     Scene,
+    /// An OBJ model ([`MAX_MODEL_BYTES`]).
     Model,
+    /// An MTL material library ([`MAX_MATERIAL_BYTES`]).
     Material,
+    /// An image used as a texture ([`MAX_TEXTURE_BYTES`]).
     Texture,
     /// An image compared with barylab's render (`barylab compare`).
     Image,
@@ -62,23 +66,36 @@ impl FileKind {
 /// Why a file could not be read. Each names the file.
 #[derive(Debug, thiserror::Error)]
 pub enum ReadError {
+    /// Opening or reading failed (missing file, no permission, ...).
     #[error("cannot read {kind} {path}: {cause}")]
     Io {
+        /// What the file was read as ([`FileKind::name`]).
         kind: &'static str,
+        /// The file, as shown in messages ([`shown`]).
         path: String,
+        /// The operating system's error.
         cause: io::Error,
     },
+    /// The path is a folder, FIFO, device or socket.
     #[error("cannot read {kind} {path}: it is {what}, not a regular file")]
     NotRegular {
+        /// What the file was read as ([`FileKind::name`]).
         kind: &'static str,
+        /// The file, as shown in messages ([`shown`]).
         path: String,
+        /// What the entry is instead ([`describe`]: "a folder", "a FIFO", ...).
         what: &'static str,
     },
+    /// The file is larger than its kind's cap ([`FileKind::cap`]).
     #[error("cannot read {kind} {path}: it is {size}, more than the {cap} allowed")]
     TooLarge {
+        /// What the file was read as ([`FileKind::name`]).
         kind: &'static str,
+        /// The file, as shown in messages ([`shown`]).
         path: String,
+        /// Its size for people ([`bytes`]), or "more than ..." when it grew while read.
         size: String,
+        /// The cap for people ([`bytes`]).
         cap: String,
     },
 }
@@ -86,10 +103,23 @@ pub enum ReadError {
 /// Why an output could not be written (or would not be safe to write).
 #[derive(Debug, thiserror::Error)]
 pub enum WriteError {
+    /// Creating, writing or renaming the file failed.
     #[error("cannot write {path}: {cause}")]
-    Io { path: String, cause: io::Error },
+    Io {
+        /// The output, as shown in messages ([`shown`]).
+        path: String,
+        /// The operating system's error.
+        cause: io::Error,
+    },
+    /// The output path is not usable: a wrong extension, a folder, device or FIFO, or a
+    /// folder that is missing or not writable.
     #[error("cannot write {path}: {problem}")]
-    Refused { path: String, problem: String },
+    Refused {
+        /// The output, as shown in messages ([`shown`]).
+        path: String,
+        /// What is wrong with it.
+        problem: String,
+    },
 }
 
 /// What a file system entry is, for messages ("a FIFO", "a folder", ...).

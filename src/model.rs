@@ -18,21 +18,40 @@ pub const NO_UV: &str = "has no texture coordinates (vt) on every face";
 /// Errors while loading a model. Each names the file.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelError {
+    /// The file could not be read.
     #[error(transparent)]
     File(#[from] ReadError),
+    /// Loading it would need more memory than the budget allows.
     #[error(transparent)]
     Memory(#[from] MemoryError),
+    /// The file has 0 bytes.
     #[error("model {path} is empty (0 bytes)")]
-    EmptyFile { path: String },
+    EmptyFile {
+        /// The file, as shown in messages.
+        path: String,
+    },
+    /// The OBJ text is malformed (or not text), or a face index is out of range.
     #[error("cannot load model {path}: {reason}")]
-    Parse { path: String, reason: String },
+    Parse {
+        /// The file, as shown in messages.
+        path: String,
+        /// What is wrong, for someone looking at the file.
+        reason: String,
+    },
+    /// The file has no faces.
     #[error("model {path} contains no triangles")]
-    NoTriangles { path: String },
+    NoTriangles {
+        /// The file, as shown in messages.
+        path: String,
+    },
+    /// A vertex position is NaN, infinite, or beyond [`MAX_MODEL_COORD`].
     #[error("model {path}: vertex {index} has a coordinate that is {what}")]
     BadCoordinate {
+        /// The file, as shown in messages.
         path: String,
         /// 1-based, as OBJ counts.
         index: usize,
+        /// "not a finite number" or "larger than 1e6 in magnitude".
         what: String,
     },
 }
@@ -56,14 +75,64 @@ fn explain(e: &tobj::LoadError) -> String {
     }
 }
 
+/// Unit vertex normals computed from the faces: at each position, the sum of the normals
+/// `(b - a) × (c - a)` of the triangles around it (each as long as twice its area, so large
+/// faces count more), scaled to unit length. Vertices at one position (an OBJ vertex split
+/// at a uv seam) share the normal, so seams do not show. Zero where every face around a
+/// position is degenerate; counter-clockwise faces (OBJ's convention) give outward normals.
+///
+/// ```
+/// use barylab::model::vertex_normals;
+/// use glam::DVec3;
+/// // A square in the z = 0 plane, counter-clockwise seen from +z: every normal is +z.
+/// let p = [DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+/// let n = vertex_normals(&p, &[[0, 1, 2], [0, 2, 3]]);
+/// assert!(n.iter().all(|v| *v == DVec3::Z));
+/// ```
+pub fn vertex_normals(positions: &[DVec3], triangles: &[[u32; 3]]) -> Vec<DVec3> {
+    use std::collections::HashMap;
+    // One slot per distinct position (bit pattern), so split copies share their normal.
+    let mut slot_of: HashMap<[u64; 3], usize> = HashMap::with_capacity(positions.len());
+    let slots: Vec<usize> = positions
+        .iter()
+        .map(|p| {
+            let key = p.to_array().map(f64::to_bits);
+            let next = slot_of.len();
+            *slot_of.entry(key).or_insert(next)
+        })
+        .collect();
+    let mut sums = vec![DVec3::ZERO; slot_of.len()];
+    for t in triangles {
+        let [a, b, c] = t.map(|i| positions.get(i as usize).copied());
+        let (Some(a), Some(b), Some(c)) = (a, b, c) else {
+            continue;
+        };
+        let face = (b - a).cross(c - a);
+        if !face.is_finite() {
+            continue;
+        }
+        for &i in t {
+            sums[slots[i as usize]] += face;
+        }
+    }
+    slots.iter().map(|&s| sums[s].normalize_or_zero()).collect()
+}
+
 /// A triangle mesh in object space, ready to be transformed by a camera.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct ModelMesh {
+    /// Vertex positions in object space (the file's units).
     pub positions: Vec<DVec3>,
+    /// Unit vertex normals in object space: the file's `vn` where every face has them,
+    /// else [`vertex_normals`] of the positions.
+    pub normals: Vec<DVec3>,
+    /// Texture coordinate per vertex; `[0, 0]` for a part of the file without `vt`.
     pub uvs: Vec<Vec2>,
+    /// Colour per vertex: its material's diffuse colour (`Kd`), RGB in [0, 1]; white without one.
     pub colors: Vec<Vec3>,
+    /// Index triples into `positions` (polygons triangulated), in file order.
     pub triangles: Vec<[u32; 3]>,
-    /// Whether the file had texture coordinates (`vt`).
+    /// Whether every vertex has a texture coordinate (`vt`).
     pub has_uv: bool,
     /// The first material's diffuse texture, resolved against the OBJ's folder.
     pub diffuse_texture: Option<PathBuf>,
@@ -128,12 +197,15 @@ impl ModelMesh {
             }
         };
         let mut all_have_uv = true;
+        let mut all_have_normals = true;
         for m in &models {
             let mesh = &m.mesh;
             let base = out.positions.len() as u32;
             let n = mesh.positions.len() / 3;
             let has_uv = mesh.texcoords.len() / 2 == n && n > 0;
             all_have_uv &= has_uv;
+            let has_normals = mesh.normals.len() / 3 == n && n > 0;
+            all_have_normals &= has_normals;
             let material = mesh.material_id.and_then(|id| materials.get(id));
             let color = material
                 .and_then(|mat| mat.diffuse)
@@ -166,6 +238,16 @@ impl ModelMesh {
                     });
                 }
                 out.positions.push(p);
+                out.normals.push(if has_normals {
+                    DVec3::new(
+                        f64::from(mesh.normals[3 * k]),
+                        f64::from(mesh.normals[3 * k + 1]),
+                        f64::from(mesh.normals[3 * k + 2]),
+                    )
+                    .normalize_or_zero()
+                } else {
+                    DVec3::ZERO
+                });
                 out.uvs.push(if has_uv {
                     Vec2::new(mesh.texcoords[2 * k], mesh.texcoords[2 * k + 1])
                 } else {
@@ -187,6 +269,9 @@ impl ModelMesh {
             return Err(ModelError::NoTriangles { path: shown });
         }
         out.has_uv = all_have_uv;
+        if !all_have_normals {
+            out.normals = vertex_normals(&out.positions, &out.triangles);
+        }
         if !all_have_uv {
             // What this means depends on the shading chosen later: see `Scene::notes_for`.
             out.notes.push(format!("{shown} {NO_UV}"));

@@ -90,6 +90,7 @@ fn check(q: [DVec4; 3], uv: [Vec2; 3]) -> Result<usize, TestCaseError> {
                 clip: q[i],
                 uv: uv[i],
                 color: Vec3::ONE,
+                normal: Vec3::ZERO,
             })
             .collect(),
         triangles: vec![[0, 1, 2]],

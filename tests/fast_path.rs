@@ -149,12 +149,7 @@ fn edge_fast_path_is_bit_identical_on_every_sample_scene() {
         let mesh = scene.to_mesh();
         for mode in [Interpolation::Affine, Interpolation::Perspective] {
             for filter in [Filter::Nearest, Filter::Bilinear, Filter::Trilinear] {
-                for shading in [
-                    Shading::Texture,
-                    Shading::VertexColor,
-                    Shading::Barycentric,
-                    Shading::Depth,
-                ] {
+                for shading in Shading::ALL {
                     for wireframe in [false, true] {
                         let s = RenderSettings {
                             mode,
@@ -194,7 +189,7 @@ proptest! {
         wrap in 0usize..3,
         which in 0usize..3,
         wireframe in any::<bool>(),
-        shading in 0usize..4,
+        shading in 0usize..6,
     ) {
         let (w, h) = (83, 61);
         let mut mesh = ClipMesh {
@@ -205,6 +200,12 @@ proptest! {
             v.uv = v.uv * uv_scale - 0.3;
             // Colours beyond [0, 1] too, so the clamp to 8 bits is exercised.
             v.color = glam::Vec3::new(k as f32 * 0.3 - 0.2, 1.0 - k as f32 * 0.25, 0.5);
+            // Unit normals in several directions, one facing away and one zero (no normal).
+            let a = k as f32 * 1.3;
+            v.normal = match k {
+                4 => glam::Vec3::ZERO,
+                _ => glam::Vec3::new(a.cos() * 0.8, a.sin() * 0.6, 0.5 - k as f32 * 0.2).normalize(),
+            };
         }
         let (name, tex) = textures().swap_remove(which);
         let s = RenderSettings {
@@ -214,8 +215,7 @@ proptest! {
             filter: if bilinear { Filter::Bilinear } else { Filter::Nearest },
             wrap: [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat][wrap],
             wireframe,
-            shading: [Shading::Texture, Shading::VertexColor, Shading::Barycentric, Shading::Depth]
-                [shading],
+            shading: Shading::ALL[shading],
             ..RenderSettings::default()
         };
         assert_edge_identical(&mesh, &tex, &s, name);

@@ -15,6 +15,7 @@ fn lod_of_a_screen_aligned_quad_is_log2_of_texels_per_pixel() {
         clip: DVec4::new(x, y, 0.0, 1.0),
         uv: Vec2::new(u, t),
         color: Vec3::ONE,
+        normal: Vec3::ZERO,
     };
     let mesh = ClipMesh {
         vertices: vec![

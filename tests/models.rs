@@ -138,7 +138,7 @@ fn recoverable_problems_become_notes() {
         m.notes
     );
     let s = Scene::Model(ModelScene::for_model(&data("no_uv.obj"), 32, 32).expect("scene"));
-    assert_eq!(s.settings().shading, Shading::VertexColor);
+    assert_eq!(s.settings().shading, Shading::Lambert);
 
     let m = ModelMesh::load(&data("missing_mtl.obj")).expect("missing mtl still loads");
     assert!(

@@ -96,6 +96,7 @@ proptest! {
             clip: clip_from_view * v.extend(1.0),
             uv: Vec2::ZERO,
             color: Vec3::ONE,
+            normal: Vec3::ZERO,
         }));
         let r = draw(&mesh, W, H);
         let n = (views[1] - views[0]).cross(views[2] - views[0]);
@@ -260,6 +261,7 @@ proptest! {
                 clip: DVec4::new(coords[4 * k], coords[4 * k + 1], coords[4 * k + 2], coords[4 * k + 3]),
                 uv: Vec2::new(k as f32, 1.0),
                 color: Vec3::ONE,
+                normal: Vec3::ZERO,
             }).collect(),
             triangles: vec![[0, 1, 2], [0, 2, 3], [1, 1, 2]],
         };
@@ -304,6 +306,7 @@ fn vertex_behind_camera_draws_the_visible_part_only() {
         clip: m * p.extend(1.0),
         uv: Vec2::ZERO,
         color: Vec3::ONE,
+        normal: Vec3::ZERO,
     }));
     let r = draw(&mesh, W, W);
     // Independent check: a pixel is covered iff its eye ray hits the triangle in front of the

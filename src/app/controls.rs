@@ -10,6 +10,7 @@ use super::state::{AppState, Command, PIXEL_SIZE_RANGE, UI_SCALE_RANGE};
 use crate::figure::Compare;
 use crate::figure::overlay::{vertex_color, vertex_name};
 use crate::i18n::Lang;
+use crate::raster::camera::ModelView;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
 
@@ -134,6 +135,16 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
                 Shading::Depth,
                 &lang.tr("app.controls.depth"),
                 &lang.tr("app.controls.tip.depth"),
+            ),
+            (
+                Shading::Normal,
+                &lang.tr("app.controls.normal"),
+                &lang.tr("app.controls.tip.normal"),
+            ),
+            (
+                Shading::Lambert,
+                &lang.tr("app.controls.lambert"),
+                &lang.tr("app.controls.tip.lambert"),
             ),
         ] {
             if ui
@@ -412,6 +423,18 @@ fn model_camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     {
         out.push(Command::SetFov(fov));
     }
+    ui.horizontal_wrapped(|ui| {
+        ui.label(lang.tr("app.controls.view"));
+        for v in ModelView::ALL {
+            if ui
+                .button(model_view_name(v, lang))
+                .on_hover_text(lang.tr("app.controls.tip.view"))
+                .clicked()
+            {
+                out.push(Command::ModelView(v));
+            }
+        }
+    });
     if ui
         .button(lang.tr("app.controls.reset_view"))
         .on_hover_text(lang.tr("app.controls.tip.reset_view"))
@@ -419,6 +442,18 @@ fn model_camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<Command>) {
     {
         out.push(Command::ResetCamera);
     }
+}
+
+/// The name of a model view, for its button.
+fn model_view_name(v: ModelView, lang: Lang) -> String {
+    lang.tr(match v {
+        ModelView::Course => "app.controls.views.course",
+        ModelView::Front => "app.controls.views.front",
+        ModelView::Back => "app.controls.views.back",
+        ModelView::Left => "app.controls.views.left",
+        ModelView::Right => "app.controls.views.right",
+        ModelView::Top => "app.controls.views.top",
+    })
 }
 
 fn vertex_label(ui: &mut Ui, k: usize) {

@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use super::edit::{self, EditError, SceneOptions};
 use super::presets::Preset;
+use crate::raster::camera::{Camera, ModelView};
 use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::{Scene, Tilt};
@@ -112,6 +113,9 @@ pub enum Command {
     ZoomCamera(f64),
     /// Model scenes: back to the camera that frames the model.
     ResetCamera,
+    /// Frame a model from one side ([`ModelView`]); Home ([`Command::ResetCamera`]) goes back
+    /// to the course's view.
+    ModelView(ModelView),
     /// Load a preset's geometry and camera, keeping the render options and texture.
     Preset(Preset),
     /// Back to the built-in default scene (view settings kept).
@@ -194,6 +198,12 @@ impl AppState {
             Command::ResetCamera => {
                 if let Scene::Model(s) = &mut self.scene {
                     s.camera = None;
+                }
+            }
+            Command::ModelView(view) => {
+                if let Scene::Model(s) = &mut self.scene {
+                    let (centre, radius) = s.mesh.bounding_sphere();
+                    s.camera = Some(Camera::framing_from(centre, radius, view));
                 }
             }
             Command::Preset(p) => {

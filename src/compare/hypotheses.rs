@@ -33,6 +33,7 @@ pub enum Kind {
 /// A tried explanation and how many pixels still differ under it.
 #[derive(Clone, Debug, Serialize)]
 pub struct Tried {
+    /// Which explanation.
     pub kind: Kind,
     /// What barylab's image was turned into, e.g. "barylab's image flipped upside down".
     pub description: String,

@@ -36,8 +36,11 @@ pub enum CoverageBy {
 /// An image to compare: RGBA8, row 0 at the top.
 #[derive(Clone, Debug)]
 pub struct Image {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// RGBA8, `width * height`, row by row from the top.
     pub pixels: Vec<[u8; 4]>,
 }
 
@@ -50,9 +53,13 @@ impl Image {
 
 /// What is compared: the scene and barylab's settings for it.
 pub struct Reference<'a> {
+    /// The scene (the probe traces its pixels).
     pub scene: &'a Scene,
+    /// The scene's clip-space mesh ([`Scene::to_mesh`]).
     pub mesh: &'a ClipMesh,
+    /// The scene's texture.
     pub texture: &'a Texture,
+    /// barylab's settings; their size must be the other image's.
     pub settings: RenderSettings,
 }
 
@@ -71,7 +78,9 @@ pub enum Difference {
 /// One differing pixel with its reason.
 #[derive(Clone, Debug, Serialize)]
 pub struct PixelDifference {
+    /// `[x, y]`, row 0 at the top.
     pub pixel: [u32; 2],
+    /// Coverage on one side only, or colour.
     pub difference: Difference,
     /// The other image's RGBA.
     pub theirs: [u8; 4],
@@ -86,20 +95,30 @@ pub struct PixelDifference {
 /// The result of a comparison.
 #[derive(Clone, Debug, Serialize)]
 pub struct Comparison {
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
+    /// barylab's interpolation mode.
     pub mode: Interpolation,
+    /// How the other image's coverage was read.
     pub coverage_by: CoverageBy,
+    /// 8-bit levels a channel may differ by and still agree.
     pub tolerance: u8,
+    /// Pixels compared, `width * height`.
     pub pixels: usize,
     /// Pixels barylab covers.
     pub covered: usize,
+    /// Pixels the other image covers and barylab does not.
     pub only_theirs: usize,
+    /// Pixels barylab covers and the other image does not.
     pub only_ours: usize,
     /// Pixels both cover whose colours differ by more than the tolerance.
     pub color_differing: usize,
     /// Over the pixels both cover: the largest difference of one channel (RGB).
     pub max_color_difference: u8,
+    /// `[x, y]` of the first pixel (in row order) with `max_color_difference`; `None` when
+    /// it is 0.
     pub max_color_at: Option<[u32; 2]>,
     /// The whole-image explanations tried, best first, with what each leaves differing.
     pub hypotheses: Vec<hypotheses::Tried>,
@@ -137,7 +156,9 @@ pub fn covered_by(p: [u8; 4], by: CoverageBy, tolerance: u8) -> bool {
 /// A rendered image in the terms of the comparison: colour and coverage per pixel.
 #[derive(Clone, Debug)]
 pub struct Rendered {
+    /// RGBA8 per pixel, row 0 at the top.
     pub color: Vec<[u8; 4]>,
+    /// Whether a triangle covers the pixel.
     pub covered: Vec<bool>,
 }
 

@@ -19,6 +19,9 @@ pub struct Context<'a> {
 }
 
 impl<'a> Context<'a> {
+    /// Prepares a prober of `reference`'s scene and renders it in the other interpolation
+    /// mode; `render` is barylab's render of it, `tolerance` the comparison's (the coverage
+    /// rule is not used). Fails with the probe's or the renderer's message.
     pub fn new(
         reference: &'a Reference<'a>,
         render: &'a Render,

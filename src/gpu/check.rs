@@ -20,21 +20,30 @@ pub const LISTED: usize = 10;
 /// What `gpu-check` changes of a scene's own settings.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct CheckOptions {
+    /// The interpolation mode instead of the scene's.
     pub mode: Option<Interpolation>,
+    /// The texture filter instead of the scene's.
     pub filter: Option<Filter>,
+    /// The image size `(width, height)` in pixels instead of the scene's.
     pub size: Option<(u32, u32)>,
 }
 
 /// One scene drawn by both, compared.
 #[derive(Clone, Debug, Serialize)]
 pub struct SceneCheck {
+    /// The scene's path or name, as shown in messages.
     pub scene: String,
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
+    /// `affine` or `perspective`.
     pub mode: &'static str,
+    /// The filter compared: `nearest` or `bilinear` (trilinear is compared as bilinear).
     pub filter: &'static str,
     /// What the colours show: `texture` or `vertex_color`.
     pub output: &'static str,
+    /// Pixels compared, `width * height`.
     pub pixels: usize,
     /// Pixels barylab covers.
     pub covered: usize,
@@ -44,9 +53,12 @@ pub struct SceneCheck {
     pub coverage_mismatch_pixels: Vec<[u32; 2]>,
     /// Pixels both cover, with different source triangles.
     pub triangle_mismatches: usize,
+    /// The first of them (at most [`LISTED`]), (x, y) in image rows.
     pub triangle_mismatch_pixels: Vec<[u32; 2]>,
     /// Over the pixels both cover: the largest difference of one 8-bit channel.
     pub max_color_difference: u8,
+    /// `[x, y]` of the first pixel (in row order) with `max_color_difference`; `None` when
+    /// it is 0.
     pub max_color_at: Option<[u32; 2]>,
     /// 99.9% of the pixels both cover differ by at most this much.
     pub p999_color_difference: u8,
@@ -54,6 +66,8 @@ pub struct SceneCheck {
     pub color_differing: usize,
     /// Over the pixels both cover: the largest |u - u_gpu| or |v - v_gpu| (floats read back).
     pub max_uv_difference: f64,
+    /// `[x, y]` of the first pixel (in row order) with `max_uv_difference`; `None` when it
+    /// is 0.
     pub max_uv_at: Option<[u32; 2]>,
     /// What was changed to draw it on the GPU (shading, filter, wireframe).
     pub notes: Vec<String>,
@@ -241,6 +255,7 @@ pub fn tie_lattice() -> (ClipMesh, RenderSettings) {
             (k % 5) as f32 / 4.0,
             (k % 7) as f32 / 6.0,
         ),
+        normal: Vec3::ZERO,
     };
     let mut mesh = ClipMesh::default();
     let (nx, ny, step, origin) = (7usize, 5usize, 6.0, (4.5, 5.5));

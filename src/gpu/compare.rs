@@ -9,6 +9,7 @@ use crate::scene::Scene;
 /// How barylab's image of a scene compares with llvmpipe's.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Comparison {
+    /// Pixels compared, `width * height`.
     pub pixels: usize,
     /// Pixels covered in one image and not in the other.
     pub coverage_mismatch: Vec<(u32, u32)>,
@@ -106,12 +107,19 @@ pub fn load(path: &Path, size: Option<(u32, u32)>) -> Result<(GlScene, Scene, Te
     ))
 }
 
+/// One image of a scene drawn by both ([`compare_mesh`]): what was drawn, and how it compares.
 pub struct SceneComparison {
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
+    /// What the colours show: the texture or the vertex colour.
     pub output: Output,
+    /// The texture filter (nearest for vertex colours).
     pub filter: Filter,
+    /// Affine or perspective-correct interpolation.
     pub mode: Interpolation,
+    /// The pixel-by-pixel comparison.
     pub result: Comparison,
 }
 
@@ -195,6 +203,7 @@ pub type UvAt = ((u32, u32), [f32; 2], [f32; 2]);
 /// How far barylab's interpolated values are from llvmpipe's, over the pixels both cover.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ValueComparison {
+    /// The interpolation mode of both renders.
     pub mode: Interpolation,
     /// Pixels compared.
     pub pixels: usize,

@@ -7,31 +7,19 @@
 
 pub mod check;
 mod compare;
+mod context;
 mod scene;
 
 pub use compare::*;
+pub use context::force_llvmpipe_env;
 pub use scene::{GlScene, mesh_at_f32};
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use crate::raster::{Filter, Interpolation, Wrap};
 use glow::HasContext;
 use khronos_egl as egl;
-
-/// `EGL_PLATFORM_SURFACELESS_MESA` (EGL_MESA_platform_surfaceless).
-const PLATFORM_SURFACELESS_MESA: egl::Enum = 0x31DD;
-
-/// The environment that makes Mesa pick its software rasterizer, headless. Set before EGL is
-/// loaded (Mesa reads it at start-up, as it reads `LP_NUM_THREADS`).
-pub fn force_llvmpipe_env() {
-    // SAFETY: called at the start of the process (or of a test), before any thread that
-    // reads the environment is started by us.
-    unsafe {
-        std::env::set_var("LIBGL_ALWAYS_SOFTWARE", "1");
-        std::env::set_var("GALLIUM_DRIVER", "llvmpipe");
-        std::env::set_var("EGL_PLATFORM", "surfaceless");
-    }
-}
 
 /// What the fragment shader outputs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,16 +36,23 @@ pub enum Output {
     Values,
 }
 
-/// A live headless OpenGL context (llvmpipe or a GPU) with one scene loaded.
+/// An OpenGL 3.3 context (llvmpipe or a GPU) with one scene loaded: a headless one through
+/// EGL ([`Gpu::open`]), or a context someone else owns, such as the app's ([`Gpu::on_context`]).
 pub struct Gpu {
-    egl: egl::DynamicInstance<egl::EGL1_4>,
-    display: egl::Display,
-    context: egl::Context,
-    gl: glow::Context,
+    /// The EGL display and context when this owns them (headless).
+    egl: Option<EglContext>,
+    gl: Arc<glow::Context>,
     vendor: String,
     renderer: String,
     version: String,
     objects: Option<Objects>,
+}
+
+/// A headless EGL display and the context made current on it.
+struct EglContext {
+    egl: egl::DynamicInstance<egl::EGL1_4>,
+    display: egl::Display,
+    context: egl::Context,
 }
 
 struct Objects {
@@ -125,119 +120,6 @@ void main() {
 ";
 
 impl Gpu {
-    /// Mesa's llvmpipe: loads libEGL, opens the surfaceless display and makes a GL 3.3 core
-    /// context current on this thread. Fails with a one-line reason when EGL, the platform or
-    /// llvmpipe is missing. Call [`force_llvmpipe_env`] first.
-    pub fn new() -> Result<Self, String> {
-        let gpu = Self::open()?;
-        if !gpu.renderer.contains("llvmpipe") {
-            return Err(format!(
-                "the OpenGL renderer is `{}`, not llvmpipe",
-                gpu.renderer
-            ));
-        }
-        Ok(gpu)
-    }
-
-    /// Whatever OpenGL 3.3 core the headless EGL display gives: this computer's GPU, or
-    /// llvmpipe after [`force_llvmpipe_env`]. Fails with a one-line reason when EGL, the
-    /// platform or OpenGL 3.3 is missing.
-    pub fn open() -> Result<Self, String> {
-        // SAFETY: libEGL is the system's EGL library, which implements the EGL 1.4 API.
-        let egl = unsafe { egl::DynamicInstance::<egl::EGL1_4>::load_required() }
-            .map_err(|e| format!("cannot load libEGL.so.1 (install libegl1 libegl-mesa0): {e}"))?;
-        let display = Self::display(&egl)?;
-        egl.initialize(display)
-            .map_err(|e| format!("eglInitialize failed: {e}"))?;
-        egl.bind_api(egl::OPENGL_API)
-            .map_err(|e| format!("eglBindAPI(OpenGL) failed: {e}"))?;
-        let config = egl
-            .choose_first_config(
-                display,
-                // The default surface type is a window, which a surfaceless display lacks.
-                &[
-                    egl::SURFACE_TYPE,
-                    egl::PBUFFER_BIT,
-                    egl::RENDERABLE_TYPE,
-                    egl::OPENGL_BIT,
-                    egl::NONE,
-                ],
-            )
-            .map_err(|e| format!("eglChooseConfig failed: {e}"))?
-            .ok_or("no EGL config renders OpenGL (install libgl1-mesa-dri)")?;
-        let context = egl
-            .create_context(
-                display,
-                config,
-                None,
-                &[
-                    egl::CONTEXT_MAJOR_VERSION,
-                    3,
-                    egl::CONTEXT_MINOR_VERSION,
-                    3,
-                    egl::CONTEXT_OPENGL_PROFILE_MASK,
-                    egl::CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                    egl::NONE,
-                ],
-            )
-            .map_err(|e| format!("cannot create an OpenGL 3.3 core context: {e}"))?;
-        egl.make_current(display, None, None, Some(context))
-            .map_err(|e| format!("eglMakeCurrent (surfaceless) failed: {e}"))?;
-        // SAFETY: the context is current on this thread; the loader returns its entry points.
-        let gl = unsafe {
-            glow::Context::from_loader_function(|name| {
-                egl.get_proc_address(name)
-                    .map_or(std::ptr::null(), |f| f as *const _)
-            })
-        };
-        // SAFETY: a current context.
-        let [vendor, renderer, version] = [glow::VENDOR, glow::RENDERER, glow::VERSION]
-            .map(|p| unsafe { gl.get_parameter_string(p) });
-        Ok(Self {
-            egl,
-            display,
-            context,
-            gl,
-            vendor,
-            renderer,
-            version,
-            objects: None,
-        })
-    }
-
-    fn display(egl: &egl::DynamicInstance<egl::EGL1_4>) -> Result<egl::Display, String> {
-        if let Some(egl15) = egl.upcast::<egl::EGL1_5>() {
-            // SAFETY: the surfaceless platform takes no native display.
-            if let Ok(d) = unsafe {
-                egl15.get_platform_display(
-                    PLATFORM_SURFACELESS_MESA,
-                    egl::DEFAULT_DISPLAY,
-                    &[egl::ATTRIB_NONE],
-                )
-            } {
-                return Ok(d);
-            }
-        }
-        // SAFETY: EGL_PLATFORM=surfaceless makes the default display the surfaceless one.
-        unsafe { egl.get_display(egl::DEFAULT_DISPLAY) }
-            .ok_or_else(|| "no EGL display (surfaceless platform unavailable)".to_string())
-    }
-
-    /// The GL_RENDERER string, e.g. `llvmpipe (LLVM 15.0.6, 256 bits)`.
-    pub fn renderer(&self) -> &str {
-        &self.renderer
-    }
-
-    /// The GL_VENDOR string, e.g. `Mesa`.
-    pub fn vendor(&self) -> &str {
-        &self.vendor
-    }
-
-    /// The GL_VERSION string, e.g. `4.5 (Core Profile) Mesa 22.3.6`.
-    pub fn version(&self) -> &str {
-        &self.version
-    }
-
     fn compile(&self, output: Output, mode: Interpolation) -> Result<glow::Program, String> {
         let qualifier = match mode {
             Interpolation::Affine => "noperspective",
@@ -494,7 +376,21 @@ impl Gpu {
         };
         // SAFETY: plain GL calls on the current context with the loaded objects.
         unsafe {
+            // All the state a draw needs, set each time: a shared context (the app's) has
+            // been used by someone else since.
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+            gl.viewport(0, 0, o.width as i32, o.height as i32);
+            gl.enable(glow::DEPTH_TEST);
+            gl.depth_func(glow::LESS);
+            gl.depth_mask(true);
+            gl.color_mask(true, true, true, true);
+            gl.disable(glow::CULL_FACE);
+            gl.disable(glow::BLEND);
+            gl.disable(glow::DITHER);
+            gl.disable(glow::SCISSOR_TEST);
+            gl.bind_vertex_array(Some(o.vao));
+            gl.active_texture(glow::TEXTURE0);
+            gl.bind_texture(glow::TEXTURE_2D, Some(o.texture));
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, f);
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, f);
             gl.use_program(Some(o.programs[program_index(output, mode)]));
@@ -546,6 +442,7 @@ impl Gpu {
         let mut bytes = vec![0u8; w * h * 4];
         // SAFETY: the buffer holds exactly width * height RGBA8 pixels.
         unsafe {
+            self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(o.fbo));
             self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
             self.gl.read_pixels(
                 0,
@@ -572,6 +469,8 @@ impl Gpu {
         let mut bytes = vec![0u8; w * h * 16];
         // SAFETY: the buffer holds exactly width * height RGBA32F pixels.
         unsafe {
+            self.gl
+                .bind_framebuffer(glow::FRAMEBUFFER, Some(o.values_fbo));
             self.gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
             self.gl.read_pixels(
                 0,
@@ -583,6 +482,7 @@ impl Gpu {
                 glow::PixelPackData::Slice(Some(&mut bytes)),
             );
         }
+        self.release_state();
         let float = |b: &[u8]| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
         let pixels = bytes
             .chunks_exact(16)
@@ -599,16 +499,33 @@ impl Gpu {
     ) -> Result<Vec<[u8; 4]>, String> {
         self.draw(output, filter, mode)?;
         self.finish();
-        self.read()
+        let pixels = self.read();
+        self.release_state();
+        pixels
+    }
+
+    /// Leaves the context as a window's painter expects it: the default framebuffer bound,
+    /// no depth test, no vertex array, program or texture of ours bound.
+    fn release_state(&self) {
+        // SAFETY: plain GL calls on the current context.
+        unsafe {
+            self.gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            self.gl.disable(glow::DEPTH_TEST);
+            self.gl.bind_vertex_array(None);
+            self.gl.use_program(None);
+            self.gl.bind_texture(glow::TEXTURE_2D, None);
+        }
     }
 }
 
 impl Drop for Gpu {
     fn drop(&mut self) {
         self.unload();
-        let _ = self.egl.make_current(self.display, None, None, None);
-        let _ = self.egl.destroy_context(self.display, self.context);
-        let _ = self.egl.terminate(self.display);
+        if let Some(e) = &self.egl {
+            let _ = e.egl.make_current(e.display, None, None, None);
+            let _ = e.egl.destroy_context(e.display, e.context);
+            let _ = e.egl.terminate(e.display);
+        }
     }
 }
 

@@ -4,16 +4,23 @@ use crate::raster::{ClipMesh, Texture, Wrap};
 
 /// What to draw: clip-space positions and uv/colour per vertex, the triangles, the texture.
 pub struct GlScene {
+    /// Image width in pixels (the viewport).
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
     /// Per vertex: clip x, y, z, w, u, v, r, g, b (f32, as the GPU gets them).
     pub vertices: Vec<[f32; 9]>,
+    /// Three vertex indices per triangle, in the mesh's order.
     pub indices: Vec<u32>,
+    /// Texture width in texels.
     pub texture_width: u32,
+    /// Texture height in texels.
     pub texture_height: u32,
     /// RGBA8, row 0 first (t = 0, barylab's texel row 0).
     pub texels: Vec<u8>,
+    /// Texture wrap mode.
     pub wrap: Wrap,
+    /// Clear colour, RGBA8.
     pub background: [u8; 4],
 }
 

@@ -12,7 +12,7 @@ use crate::raster::interpolate::{Fragment, Interpolation};
 use crate::raster::project::{self, SUBPIXEL};
 use crate::raster::render;
 use crate::raster::setup::TriangleSetup;
-use crate::raster::shade;
+use crate::raster::shade::{self, Shading};
 use crate::raster::texture::{self, Filter};
 
 impl Prober<'_> {
@@ -220,6 +220,20 @@ impl Prober<'_> {
             wire: on && (0..3).any(|i| shade::on_wire_edge(f.edge_weights[i], wire[i].length())),
             color: shade::shade(f, &self.texture, &self.params, &wire),
             wire_width_px: on.then_some(shade::WIRE_WIDTH_PX),
+            normal: matches!(self.settings.shading, Shading::Normal | Shading::Lambert).then(
+                || {
+                    let v = f.varyings(self.settings.mode);
+                    let n = v.normal();
+                    NormalTrace {
+                        interpolated: n.to_array(),
+                        length: n.length(),
+                        unit: shade::unit_normal(n).to_array(),
+                        lambert: shade::lambert_factor(n),
+                        ambient: shade::AMBIENT,
+                        albedo: v.color().to_array(),
+                    }
+                },
+            ),
         }
     }
 

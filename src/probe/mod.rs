@@ -52,17 +52,24 @@ pub enum ProbeError {
         .width.saturating_sub(1),
         .height.saturating_sub(1)
     )]
+    /// The pixel is not in the image.
     PixelOutside {
+        /// Column asked for, from the left.
         x: u32,
+        /// Row asked for, from the top.
         y: u32,
+        /// Image width in pixels.
         width: u32,
+        /// Image height in pixels.
         height: u32,
     },
+    /// The scene cannot be rendered: a bad image size, or not enough memory.
     #[error(transparent)]
     Render(#[from] RenderError),
 }
 
-/// World-scene data the mesh does not keep: the object-space positions and the camera chain.
+/// World- and model-scene data the mesh does not keep: the object-space positions and the
+/// camera chain.
 #[derive(Clone, Debug)]
 struct WorldSpaces {
     object: Vec<DVec3>,

@@ -20,10 +20,13 @@ pub struct PixelTrace {
     pub pixel: [u32; 2],
     /// `[width, height]` of the image.
     pub image_size: [u32; 2],
+    /// The render settings the trace was made with.
     pub settings: TraceSettings,
+    /// Which form the scene file had: world, clip or model.
     pub scene_form: SceneForm,
-    /// The world scene's matrices; `None` for a clip-space scene.
+    /// The matrices of a world or model scene; `None` for a clip-space scene.
     pub matrices: Option<Matrices>,
+    /// The pixel centre in window, fixed-point and NDC coordinates.
     pub sample: Sample,
     /// The source triangles in drawing order, with coverage and depth test at the sample:
     /// all of them in a mesh of at most [`LIST_ALL_TRIANGLES`](super::LIST_ALL_TRIANGLES) triangles, else those whose
@@ -43,11 +46,17 @@ pub struct PixelTrace {
 /// The render settings the trace was made with.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct TraceSettings {
+    /// Interpolation mode: affine (`noperspective`) or perspective-correct (`smooth`).
     pub mode: Interpolation,
+    /// What the fragment's colour is made from.
     pub shading: Shading,
+    /// Texture filter: nearest, bilinear or trilinear.
     pub filter: Filter,
+    /// Texture wrap mode.
     pub wrap: Wrap,
+    /// Whether the source triangles' edges are drawn as lines.
     pub wireframe: bool,
+    /// Background RGBA, the colour of pixels no triangle covers.
     pub background: [u8; 4],
 }
 
@@ -63,11 +72,14 @@ pub enum SceneForm {
     Model,
 }
 
-/// The matrices of a world scene, each row by row.
+/// The matrices of a world or model scene, each row by row.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct Matrices {
+    /// Object -> world: the quad's tilt about its centre (world scenes); the identity for a model.
     pub world_from_object: [[f64; 4]; 4],
+    /// The camera's look-at matrix: world -> view.
     pub view_from_world: [[f64; 4]; 4],
+    /// The camera's projection: view -> clip.
     pub clip_from_view: [[f64; 4]; 4],
     /// Whether the camera projection is a perspective one (else orthographic).
     pub perspective: bool,
@@ -96,6 +108,7 @@ pub struct TriangleCoverage {
     pub source: u32,
     /// Names of its three vertices.
     pub vertices: [String; 3],
+    /// Whether it was drawn, or why it drew nothing.
     pub status: TriangleStatus,
     /// Whether the clipper cut it.
     pub clipped: bool,
@@ -115,6 +128,7 @@ pub struct CoverageTest {
     pub vertices: [String; 3],
     /// Edge `i` is opposite vertex `i`.
     pub edges: [EdgeTest; 3],
+    /// Inside, on an edge, or outside, from the signs of the edge values.
     pub position: Position,
     /// Whether the fill rule covers the sample.
     pub covered: bool,
@@ -139,6 +153,7 @@ pub enum Position {
 pub struct EdgeTest {
     /// The edge's two vertex names, e.g. "BC".
     pub name: String,
+    /// Left, right, top or bottom, for the tie rule.
     pub kind: EdgeKind,
     /// `E(P)`, twice the signed area of (edge, P) in 1/65536 pixel^2; positive inside.
     pub value: i64,
@@ -160,6 +175,7 @@ pub struct DepthTest {
 /// The derivation for one triangle at the sample.
 #[derive(Clone, Debug, Serialize)]
 pub struct TriangleTrace {
+    /// Index of the source triangle.
     pub source: u32,
     /// Whether this triangle's fragment is what the pixel shows (false: the nearest triangle
     /// of an uncovered pixel, with weights extended outside it).
@@ -173,6 +189,7 @@ pub struct TriangleTrace {
     /// The triangle the rasterizer set up: the source triangle itself, or one triangle of the
     /// clipped polygon's fan.
     pub raster: RasterTriangle,
+    /// The coverage test of the rasterized triangle.
     pub coverage: CoverageTest,
     /// Screen-space weights of the rasterized triangle's vertices, several ways.
     pub screen: ScreenWeights,
@@ -184,22 +201,29 @@ pub struct TriangleTrace {
     pub source_weights: Option<SourceWeights>,
     /// The 3D point the pixel sees on the triangle's plane.
     pub seen_point: Option<SeenPoint>,
+    /// The texture coordinate, texels and vertex colour, both ways; `None` where the fragment
+    /// cannot be interpolated.
     pub attribute: Option<AttributeTrace>,
+    /// Window depth and view depth, interpolated both ways; `None` where the fragment cannot be
+    /// interpolated.
     pub depth: Option<DepthTrace>,
+    /// How the shading mode turned the fragment into a colour; `None` where the fragment cannot be
+    /// interpolated.
     pub shade: Option<ShadeTrace>,
 }
 
 /// One source vertex in every space.
 #[derive(Clone, Debug, Serialize)]
 pub struct VertexTrace {
+    /// The vertex's name, from its mesh index: A, B, C, ... (`V26`, `V27`, ... after Z).
     pub name: String,
     /// Index into the mesh's vertices.
     pub index: u32,
-    /// Object space (world scenes).
+    /// Object space (world and model scenes).
     pub object: Option<[f64; 3]>,
-    /// World space (world scenes).
+    /// World space (world and model scenes).
     pub world: Option<[f64; 3]>,
-    /// View (camera) space (world scenes).
+    /// View (camera) space (world and model scenes).
     pub view: Option<[f64; 3]>,
     /// Clip space `(x, y, z, w)`.
     pub clip: [f64; 4],
@@ -211,9 +235,11 @@ pub struct VertexTrace {
     pub window_snapped: Option<[f64; 2]>,
     /// The snapped position in 1/256-pixel units, `window_snapped · 256`; `None` if `w <= 0`.
     pub window_fixed: Option<[i64; 2]>,
-    /// `1/w`; `None` if `w <= 0`.
+    /// `1/w`, w the clip-space w (the view depth for a perspective camera); `None` if `w <= 0`.
     pub inv_w: Option<f64>,
+    /// Texture coordinate.
     pub uv: [f32; 2],
+    /// Vertex colour, RGB in [0, 1].
     pub color: [f32; 3],
 }
 
@@ -231,9 +257,11 @@ pub struct ClipTrace {
 /// A vertex of the clipped polygon.
 #[derive(Clone, Debug, Serialize)]
 pub struct PolygonVertex {
+    /// The vertex's name: a source vertex's letter, or K1, K2, ... for a point the clipper made.
     pub name: String,
     /// Which source vertex it is (0, 1, 2), or `None` for a point the clipper made.
     pub source_vertex: Option<usize>,
+    /// Clip-space position `(x, y, z, w)`.
     pub clip: [f64; 4],
     /// Its weights with respect to the source triangle, carried as a varying.
     pub source_weights: [f32; 3],
@@ -242,9 +270,13 @@ pub struct PolygonVertex {
 /// A vertex of the rasterized triangle, as the rasterizer holds it.
 #[derive(Clone, Debug, Serialize)]
 pub struct RasterVertex {
+    /// The vertex's name, as in the clipped polygon (a source letter, or K1, K2, ...).
     pub name: String,
+    /// Which source vertex it is (0, 1, 2), or `None` for a point the clipper made.
     pub source_vertex: Option<usize>,
+    /// Clip-space position `(x, y, z, w)`.
     pub clip: [f64; 4],
+    /// NDC `(x/w, y/w, z/w)`.
     pub ndc: [f64; 3],
     /// Window position in pixels before snapping: the interpolation weights come from it.
     pub window: [f64; 2],
@@ -254,7 +286,7 @@ pub struct RasterVertex {
     pub fixed: [i64; 2],
     /// Window depth `(z_ndc + 1) / 2`.
     pub depth: f64,
-    /// `1 / w`.
+    /// `1/w`, w the clip-space w (the view depth for a perspective camera).
     pub inv_w: f64,
     /// Weights of the source triangle's vertices (one-hot at a source vertex), the `smooth`
     /// attribute: at a vertex the clipper made, interpolated in clip space.
@@ -262,25 +294,30 @@ pub struct RasterVertex {
     /// The same as a `noperspective` attribute: at a vertex the clipper made, the source
     /// triangle's screen-linear weights there (OpenGL 4.6, section 13.7.1).
     pub source_weights_affine: [f32; 3],
+    /// Texture coordinate (the `smooth` varying).
     pub uv: [f32; 2],
+    /// Vertex colour, RGB in [0, 1] (the `smooth` varying).
     pub color: [f32; 3],
-    /// View-space position (world scenes), from the clip position.
+    /// View-space position (world and model scenes), from the clip position.
     pub view: Option<[f64; 3]>,
 }
 
 /// The set-up triangle.
 #[derive(Clone, Debug, Serialize)]
 pub struct RasterTriangle {
+    /// The three vertices, in the order the edge functions use.
     pub vertices: [RasterVertex; 3],
     /// Twice the area, in 1/65536 pixel^2.
     pub area2: i64,
+    /// Front or back, from the sign of the area on screen.
     pub facing: Facing,
 }
 
 /// Screen-space weights `[r, s, t]` of the rasterized triangle's vertices.
 #[derive(Clone, Debug, Serialize)]
 pub struct ScreenWeights {
-    /// The rasterizer's: `E_i / (2 area)` from exact fixed-point edge values.
+    /// The rasterizer's ([`WeightPlanes`](crate::raster::setup::WeightPlanes)): the signed-area
+    /// ratios in f64 from the unsnapped window positions (not the snapped edge values).
     pub rasterizer: [f64; 3],
     /// The explicit formula on the unsnapped window positions.
     pub explicit: Option<ExplicitFormula>,
@@ -300,6 +337,8 @@ pub struct ScreenWeights {
 pub struct PerspectiveTrace {
     /// `[W_A, W_B, W_C]`: clip w of the rasterized vertices.
     pub w: [f64; 3],
+    /// The correction in the r, s, t / W_P notation: `1/W_P = r/W_A + s/W_B + t/W_C`, `a = r W_P /
+    /// W_A`, ...
     pub correction: WpCorrection,
     /// GAMES101's `w_reciprocal = 1 / (alpha/w_A + beta/w_B + gamma/w_C)` (it is W_P).
     pub games101_w_reciprocal: f64,
@@ -326,18 +365,22 @@ pub struct SystemTrace {
 /// barycentric varyings, f32), as written to the weight buffers.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct SourceWeights {
+    /// Interpolated with the screen weights r, s, t (`noperspective`).
     pub screen: [f32; 3],
+    /// Interpolated with the perspective-correct weights a, b, c (`smooth`).
     pub perspective: [f32; 3],
 }
 
 /// The point on the source triangle's plane that the pixel centre sees.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct SeenPoint {
-    /// World scenes: the ray through the pixel centre in view space.
+    /// World and model scenes: the ray through the pixel centre in view space.
     pub ray: Option<ViewRay>,
-    /// World scenes: the ray's hit on the plane, in view space, with its weights.
+    /// World and model scenes: the ray's hit on the plane, in view space, with its weights.
     pub hit: Option<RayHit>,
+    /// The point in view space (world and model scenes).
     pub view: Option<[f64; 3]>,
+    /// The point in world space (world and model scenes).
     pub world: Option<[f64; 3]>,
     /// The point in clip space.
     pub clip: [f64; 4],
@@ -346,7 +389,7 @@ pub struct SeenPoint {
     /// Its window depth `(z/w + 1) / 2`.
     pub depth: f64,
     /// Its barycentric weights with respect to the source triangle (from the ray hit in a
-    /// world scene, from the 4x4 system's solution in a clip-space scene).
+    /// world or model scene, from the 4x4 system's solution in a clip-space scene).
     pub weights: [f64; 3],
     /// The largest difference between `weights` and the rasterizer's: the perspective-correct
     /// weights for an unclipped triangle, the interpolated source weights (f32) for a clipped
@@ -357,7 +400,11 @@ pub struct SeenPoint {
 /// A ray in view space.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct ViewRay {
+    /// Where the ray starts, in view space: the eye (the origin) for a perspective camera, the
+    /// point on the near plane for an orthographic one.
     pub origin: [f64; 3],
+    /// The ray's direction in view space (not normalized): to the pixel centre's point on the near
+    /// plane (perspective), from near to far plane along -z (orthographic).
     pub direction: [f64; 3],
 }
 
@@ -382,21 +429,28 @@ pub struct AttributeTrace {
     pub last_texel: [u32; 2],
     /// `uv * size` for each way.
     pub texel_affine: [f64; 2],
+    /// `uv_perspective * size`, in texels.
     pub texel_perspective: [f64; 2],
     /// `texel_affine - texel_perspective`, and its length.
     pub texel_difference: [f64; 2],
+    /// Length of `texel_difference`, in texels.
     pub texel_distance: f64,
     /// Trilinear filtering only: the levels of detail each way.
     pub trilinear: Option<Trilinear>,
     /// The texels the filter reads, each way.
     pub taps_affine: Vec<TapTrace>,
+    /// The texels the filter reads with the perspective-correct uv.
     pub taps_perspective: Vec<TapTrace>,
     /// The filtered texture colour each way, as 8-bit RGBA.
     pub color_affine: [u8; 4],
+    /// The filtered texture colour with the perspective-correct uv, 8-bit RGBA.
     pub color_perspective: [u8; 4],
     /// Vertex colours of the rasterized vertices, and the colour interpolated each way.
     pub vertex_colors: [[f32; 3]; 3],
+    /// Vertex colour interpolated with the screen weights r, s, t (the renderer's, f32).
     pub vertex_color_affine: [f32; 3],
+    /// Vertex colour interpolated with the perspective-correct weights a, b, c (the renderer's,
+    /// f32).
     pub vertex_color_perspective: [f32; 3],
 }
 
@@ -408,6 +462,7 @@ pub struct Trilinear {
     /// The level of detail from the uv differences across the pixel's 2x2 quad
     /// ([`interpolate::quad_lod`](crate::raster::interpolate::quad_lod)), with affine and with perspective-correct uv.
     pub lod_affine: f32,
+    /// The level of detail with the perspective-correct uv.
     pub lod_perspective: f32,
 }
 
@@ -422,7 +477,9 @@ pub struct TapTrace {
     pub j: u32,
     /// Nearest filtering: the texel `(floor(u W), floor(v H))` before the wrap mode applied.
     pub unwrapped: Option<[i64; 2]>,
+    /// The filter's weight for this texel (the weights of one way sum to 1).
     pub weight: f32,
+    /// The texel's RGBA.
     pub texel: [u8; 4],
 }
 
@@ -430,7 +487,7 @@ pub struct TapTrace {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DistanceKind {
-    /// `-z_view`, the distance in front of the camera (world scenes).
+    /// `-z_view`, the distance in front of the camera (world and model scenes).
     ViewDepth,
     /// Clip w (clip-space scenes: for a perspective projection, the view depth).
     ClipW,
@@ -443,6 +500,7 @@ pub struct DepthTrace {
     pub window_depths: [f64; 3],
     /// `r d_A + s d_B + t d_C`, the value the depth test compares (the renderer's).
     pub depth: f64,
+    /// What `distances` measure: view depth (world and model scenes) or clip w (clip-space scenes).
     pub distance_kind: DistanceKind,
     /// The distance at the rasterized vertices.
     pub distances: [f64; 3],
@@ -459,15 +517,39 @@ pub struct DepthTrace {
 /// How the colour came about.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct ShadeTrace {
+    /// The shading mode.
     pub shading: Shading,
+    /// The interpolation mode.
     pub mode: Interpolation,
     /// Distance to the nearest source edge in pixels (with the wireframe on).
     pub edge_distance_px: Option<f64>,
     /// Whether the wireframe overlay coloured the pixel.
     pub wire: bool,
-    /// The wireframe's half width in pixels, [`WIRE_WIDTH_PX`](crate::raster::shade::WIRE_WIDTH_PX)
-    /// (wireframe on).
+    /// The distance from an edge below which a pixel is on a line, in pixels,
+    /// [`WIRE_WIDTH_PX`](crate::raster::shade::WIRE_WIDTH_PX) (wireframe on).
     pub wire_width_px: Option<f64>,
     /// The colour the fragment shades to.
     pub color: [u8; 4],
+    /// The normal behind a normal or Lambert shade (those shadings only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub normal: Option<NormalTrace>,
+}
+
+/// The normal of a [`Shading::Normal`] or [`Shading::Lambert`] fragment, in view space (x
+/// right, y up, z towards the viewer).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct NormalTrace {
+    /// The vertex normals interpolated in the trace's mode (shorter than 1 between vertices).
+    pub interpolated: [f32; 3],
+    /// Its length `|n|`.
+    pub length: f32,
+    /// `n̂ = n / |n|` ([`shade::unit_normal`](crate::raster::shade::unit_normal)).
+    pub unit: [f32; 3],
+    /// The Lambert brightness `AMBIENT + (1 - AMBIENT) max(0, n̂ · l)`, `l = (0, 0, 1)`
+    /// ([`shade::lambert_factor`](crate::raster::shade::lambert_factor)).
+    pub lambert: f32,
+    /// [`shade::AMBIENT`](crate::raster::shade::AMBIENT).
+    pub ambient: f32,
+    /// The interpolated vertex colour, the Lambert shade's albedo.
+    pub albedo: [f32; 3],
 }

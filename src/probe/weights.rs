@@ -1,9 +1,10 @@
 //! The weight formulas the probe shows side by side, each in the form a textbook or course writes it.
 //!
 //! All work in `f64` on positions given in pixels (window coordinates, y down) or in clip or
-//! view space. The rasterizer itself uses exact fixed-point edge functions
-//! ([`crate::raster::setup`]); these independent forms are what a student would write, and
-//! the probe shows that they agree with it.
+//! view space. The rasterizer ([`crate::raster::setup`]) decides coverage with exact
+//! fixed-point edge functions and takes its weights from f64 weight planes on the unsnapped
+//! positions; these independent forms are what a student would write, and the probe shows
+//! that they agree with it.
 
 use glam::{DMat4, DVec2, DVec3, DVec4};
 use serde::Serialize;
@@ -24,9 +25,13 @@ pub fn cross2(u: DVec2, v: DVec2) -> f64 {
 /// The explicit formula (GAMES101), with its numerators and denominators.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct ExplicitFormula {
+    /// `N_beta = (y_P - y_A)(x_C - x_A) - (x_P - x_A)(y_C - y_A)`, in px².
     pub beta_numerator: f64,
+    /// `D_beta = (y_B - y_A)(x_C - x_A) - (x_B - x_A)(y_C - y_A)`, in px².
     pub beta_denominator: f64,
+    /// `N_gamma = (y_P - y_A)(x_B - x_A) - (x_P - x_A)(y_B - y_A)`, in px².
     pub gamma_numerator: f64,
+    /// `D_gamma = (y_C - y_A)(x_B - x_A) - (x_C - x_A)(y_B - y_A)`, in px².
     pub gamma_denominator: f64,
     /// `[alpha, beta, gamma]`.
     pub weights: [f64; 3],
@@ -42,7 +47,7 @@ pub struct ExplicitFormula {
 }
 
 /// Barycentric weights of `p` in the triangle `v = [A, B, C]` by the explicit formula of
-/// the explicit formula:
+/// GAMES101:
 ///
 /// `beta = ((y - y_A)(x_C - x_A) - (x - x_A)(y_C - y_A)) / ((y_B - y_A)(x_C - x_A) - (x_B - x_A)(y_C - y_A))`,
 /// `gamma = ((y - y_A)(x_B - x_A) - (x - x_A)(y_B - y_A)) / ((y_C - y_A)(x_B - x_A) - (x_C - x_A)(y_B - y_A))`,

@@ -14,30 +14,106 @@ use crate::files::number;
 /// Errors for cameras that cannot form a valid projection.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CameraError {
+    /// `eye == target`: no viewing direction.
     #[error("the camera's eye and target are the same point")]
     EyeIsTarget,
+    /// `up` is zero or parallel to `target - eye`: the roll is undetermined.
     #[error("the camera's up vector is zero or parallel to the viewing direction")]
     BadUp,
+    /// The vertical field of view, in degrees, is not in (0, 180).
     #[error("field of view {} degrees is outside (0, 180)", number(*.0))]
     BadFov(f64),
+    /// The clip planes do not satisfy `0 < near < far`.
     #[error("near plane {} and far plane {} must satisfy 0 < near < far", number(*near), number(*far))]
-    BadPlanes { near: f64, far: f64 },
+    BadPlanes {
+        /// Distance of the near plane in front of the eye, view units.
+        near: f64,
+        /// Distance of the far plane in front of the eye, view units.
+        far: f64,
+    },
+    /// The orthographic view volume's height is not positive.
     #[error("orthographic height {} must be positive", number(*.0))]
     BadHeight(f64),
+    /// Some camera value is NaN or infinite.
     #[error("camera value is not a finite number")]
     NotFinite,
+    /// A value exceeds [`MAX_CAMERA_VALUE`] in magnitude.
     #[error(
         "camera {what} is {}, larger than {} in magnitude",
         number(*value),
         number(MAX_CAMERA_VALUE)
     )]
-    TooLarge { what: &'static str, value: f64 },
+    TooLarge {
+        /// Which value ("eye", "far plane", "orthographic height", ...).
+        what: &'static str,
+        /// The value given.
+        value: f64,
+    },
 }
 
 /// Largest accepted magnitude of a camera coordinate, near or far plane, or orthographic
 /// height. Far beyond any classroom scene; past it the view and projection matrices square
 /// or multiply values that overflow f64 or leave f32 depth without precision.
 pub const MAX_CAMERA_VALUE: f64 = 1e12;
+
+/// Where a camera framing a model looks from (the model's object axes: x right, y up, z
+/// towards the front, as OBJ files are usually written).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ModelView {
+    /// The view of GAMES101's assignment 3 (the model turned 140 degrees about y, seen from
+    /// +z), from a little above: its models (spot, the bunny) face the viewer.
+    #[default]
+    Course,
+    /// From +z.
+    Front,
+    /// From -z.
+    Back,
+    /// From -x.
+    Left,
+    /// From +x.
+    Right,
+    /// From +y, looking down (-z at the top of the image).
+    Top,
+}
+
+impl ModelView {
+    /// Every view, in menu order.
+    pub const ALL: [ModelView; 6] = [
+        ModelView::Course,
+        ModelView::Front,
+        ModelView::Back,
+        ModelView::Left,
+        ModelView::Right,
+        ModelView::Top,
+    ];
+
+    /// The unit direction from the model's centre to the eye, and the camera's up vector.
+    ///
+    /// [`ModelView::Course`]: GAMES101 turns the model by `R_y(140 deg)` and looks from +z,
+    /// which is looking from `R_y(-140 deg) (0, 0, 1) = (sin(-140 deg), 0, cos(-140 deg))` in
+    /// the model's own axes; raised by [`COURSE_VIEW_ELEVATION`] so the top shows.
+    pub fn eye_direction(self) -> (DVec3, DVec3) {
+        let course = || {
+            let a = (-140f64).to_radians();
+            let h = DVec3::new(a.sin(), 0.0, a.cos());
+            let e = COURSE_VIEW_ELEVATION.to_radians();
+            h * e.cos() + DVec3::Y * e.sin()
+        };
+        match self {
+            ModelView::Course => (course(), DVec3::Y),
+            ModelView::Front => (DVec3::Z, DVec3::Y),
+            ModelView::Back => (DVec3::NEG_Z, DVec3::Y),
+            ModelView::Left => (DVec3::NEG_X, DVec3::Y),
+            ModelView::Right => (DVec3::X, DVec3::Y),
+            ModelView::Top => (DVec3::Y, DVec3::NEG_Z),
+        }
+    }
+}
+
+/// How far above the horizon [`ModelView::Course`] looks from, in degrees: enough to see a
+/// model's top and depth, little enough to keep GAMES101's framing.
+pub const COURSE_VIEW_ELEVATION: f64 = 20.0;
 
 /// How view space is projected to clip space.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -47,14 +123,18 @@ pub enum Projection {
     Perspective {
         /// Vertical field of view in degrees.
         fov_y_deg: f64,
+        /// Distance of the near plane in front of the eye (> 0), view units.
         near: f64,
+        /// Distance of the far plane in front of the eye (> near), view units.
         far: f64,
     },
     /// Orthographic projection: clip w = 1 everywhere, so affine and perspective-correct agree.
     Orthographic {
         /// Height of the view volume in world units.
         height: f64,
+        /// Distance of the near plane in front of the eye (> 0), view units.
         near: f64,
+        /// Distance of the far plane in front of the eye (> near), view units.
         far: f64,
     },
 }
@@ -63,10 +143,14 @@ pub enum Projection {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Camera {
+    /// The eye position, world space.
     pub eye: DVec3,
+    /// The point looked at, world space: the view direction is `target - eye`.
     pub target: DVec3,
+    /// The world direction that is up on screen; `[0, 1, 0]` when omitted.
     #[serde(default = "default_up")]
     pub up: DVec3,
+    /// View -> clip.
     pub projection: Projection,
 }
 
@@ -158,10 +242,10 @@ impl Camera {
         Ok(())
     }
 
-    /// A perspective camera that frames a sphere (centre, radius `r`): looking at the centre
-    /// from the direction (0.6, 0.5, 1) (front, right, above), at the distance where the
-    /// sphere fits a 45 degree field of view with a 15% margin:
-    /// `d = 1.15 r / sin(22.5 deg)`; near = `max(d - 2r, d / 1000)`, far = `d + 2r`.
+    /// A perspective camera that frames a sphere (centre, radius `r`) from the course's view
+    /// ([`ModelView::Course`]), at the distance where the sphere fits a 45 degree field of view
+    /// with a 15% margin: `d = 1.15 r / sin(22.5 deg)`; near = `max(d - 2r, d / 1000)`,
+    /// far = `d + 2r`.
     ///
     /// ```
     /// use barylab::raster::camera::{Camera, Projection};
@@ -173,16 +257,29 @@ impl Camera {
     /// assert!(cam.validate().is_ok());
     /// ```
     pub fn framing(centre: DVec3, radius: f64) -> Self {
+        Self::framing_from(centre, radius, ModelView::Course)
+    }
+
+    /// [`Camera::framing`] looking from `view`'s direction.
+    ///
+    /// ```
+    /// use barylab::raster::camera::{Camera, ModelView};
+    /// use glam::DVec3;
+    /// // From the front the eye is on the +z axis, looking down -z.
+    /// let cam = Camera::framing_from(DVec3::ZERO, 1.0, ModelView::Front);
+    /// assert!(cam.eye.x.abs() < 1e-12 && cam.eye.y.abs() < 1e-12 && cam.eye.z > 0.0);
+    /// ```
+    pub fn framing_from(centre: DVec3, radius: f64, view: ModelView) -> Self {
         const FOV_DEG: f64 = 45.0;
         /// Radius used for a model of zero size (a single point), so the camera stays valid.
         const MIN_RADIUS: f64 = 1e-3;
         let r = radius.max(MIN_RADIUS);
         let d = 1.15 * r / (FOV_DEG / 2.0).to_radians().sin();
-        let dir = DVec3::new(0.6, 0.5, 1.0).normalize();
+        let (dir, up) = view.eye_direction();
         Self {
             eye: centre + dir * d,
             target: centre,
-            up: DVec3::Y,
+            up,
             projection: Projection::Perspective {
                 fov_y_deg: FOV_DEG,
                 near: (d - 2.0 * r).max(d / 1000.0),
@@ -255,8 +352,11 @@ impl Camera {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CameraChain {
+    /// Object -> world: the world quad's tilt, the identity for models.
     pub world_from_object: DMat4,
+    /// World -> view: the look-at matrix.
     pub view_from_world: DMat4,
+    /// View -> clip: the OpenGL projection for the image's aspect.
     pub clip_from_view: DMat4,
     /// `clip_from_view^-1`.
     pub view_from_clip: DMat4,

@@ -54,8 +54,11 @@ impl ClipVertex {
 /// A clipping plane: the kept half-space is `dot(normal, clip) + offset >= 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClipPlane {
+    /// Which plane it is.
     pub name: PlaneName,
+    /// The plane's coefficients on clip-space `(x, y, z, w)`.
     pub normal: DVec4,
+    /// The constant term (`-`[`MIN_CLIP_W`] for the positive-w plane, else 0).
     pub offset: f64,
 }
 
@@ -63,12 +66,19 @@ pub struct ClipPlane {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PlaneName {
+    /// `z + w >= 0`: NDC z >= -1.
     Near,
+    /// `w - z >= 0`: NDC z <= 1.
     Far,
+    /// `w >= `[`MIN_CLIP_W`]: keeps 1/w finite at the one point (w = 0) near and far allow.
     PositiveW,
+    /// `x + g w >= 0`: the guard band's left side, NDC x >= -g.
     GuardLeft,
+    /// `g w - x >= 0`: the guard band's right side, NDC x <= g.
     GuardRight,
+    /// `y + g w >= 0`: the guard band's bottom side, NDC y >= -g (y up in NDC).
     GuardBottom,
+    /// `g w - y >= 0`: the guard band's top side, NDC y <= g.
     GuardTop,
 }
 

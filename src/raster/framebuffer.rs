@@ -36,17 +36,21 @@ pub enum Buffers {
     ColorDepthUv,
 }
 
-/// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold 0 in every
-/// float buffer (never NaN) and `NO_TRIANGLE` as their triangle. With
+/// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold the
+/// background colour, depth 1, 0 in the other float buffers (never NaN) and [`NO_TRIANGLE`]
+/// as their triangle. With
 /// [`Buffers::ColorDepth`] only `color` and `depth` have a value per pixel; the other buffers
 /// are empty.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Framebuffer {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels; each filled buffer holds `width * height` values, row by row from the
+    /// top.
     pub height: u32,
     /// RGBA8, row 0 at the top.
     pub color: Vec<[u8; 4]>,
-    /// Window depth z/w in [0, 1]; cleared to 1 (the far plane), less-than test.
+    /// Window depth `(z/w + 1)/2` in [0, 1]; cleared to 1 (the far plane), less-than test.
     pub depth: Vec<f32>,
     /// Index of the source triangle that wrote the pixel, or `NO_TRIANGLE`.
     pub triangle: Vec<u32>,

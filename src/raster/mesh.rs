@@ -4,17 +4,27 @@
 use glam::{DVec4, Vec2, Vec3};
 
 /// One vertex of a mesh, already in clip space.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct MeshVertex {
+    /// Clip-space position `(x, y, z, w)`.
     pub clip: DVec4,
+    /// Texture coordinate (v = 0 is the texture's bottom row).
     pub uv: Vec2,
+    /// Vertex colour, RGB in [0, 1].
     pub color: Vec3,
+    /// Unit normal in view space (x right, y up, z towards the viewer), for normal and
+    /// Lambert shading; zero when the scene has none (clip-space scenes), read as facing
+    /// the viewer.
+    pub normal: Vec3,
 }
 
 /// Triangles over clip-space vertices: what the rasterizer draws.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct ClipMesh {
+    /// The vertices, shared by the triangles that index them.
     pub vertices: Vec<MeshVertex>,
+    /// The source triangles: index triples into `vertices`, drawn in this order (with the
+    /// less-than depth test, the earlier of two equal depths stays).
     pub triangles: Vec<[u32; 3]>,
 }
 
@@ -29,7 +39,7 @@ impl ClipMesh {
     /// ```
     /// use barylab::raster::render::{ClipMesh, MeshVertex};
     /// use glam::{DVec4, Vec2, Vec3};
-    /// let v = |x: f64, y: f64| MeshVertex { clip: DVec4::new(x, y, 0.0, 1.0), uv: Vec2::ZERO, color: Vec3::ONE };
+    /// let v = |x: f64, y: f64| MeshVertex { clip: DVec4::new(x, y, 0.0, 1.0), uv: Vec2::ZERO, color: Vec3::ONE, ..Default::default() };
     /// let m = ClipMesh { vertices: vec![v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0)], triangles: vec![[0, 1, 2]] };
     /// let s = m.subdivided(3);
     /// assert_eq!(s.triangles.len(), 9);
@@ -71,10 +81,12 @@ impl ClipMesh {
                     let clip = mix3(&|m| m.clip);
                     let uv = mix3(&|m| m.uv.as_dvec2().extend(0.0).extend(0.0));
                     let color = mix3(&|m| m.color.as_dvec3().extend(0.0));
+                    let normal = mix3(&|m| m.normal.as_dvec3().extend(0.0));
                     out.vertices.push(MeshVertex {
                         clip,
                         uv: uv.truncate().truncate().as_vec2(),
                         color: color.truncate().as_vec3(),
+                        normal: normal.truncate().as_vec3(),
                     });
                 }
             }

@@ -26,7 +26,9 @@ pub const GUARD_BAND_PIXELS: f64 = (1u64 << 20) as f64;
 /// The viewport (0, 0, width, height) with depth range [0, 1].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Viewport {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
 }
 

@@ -14,6 +14,7 @@ use super::setup::{Facing, TieRule, TriangleSetup, sample_point, setup_triangle_
 use super::shade::{ShadeParams, Shading, shade};
 use super::texture::{Filter, Texture, Wrap};
 use super::varying::Varyings;
+use smallvec::SmallVec;
 
 use super::bands::{RowBand, bin_by_band};
 pub use super::mesh::{ClipMesh, MeshVertex, subdivided_triangle};
@@ -36,14 +37,23 @@ pub enum Rasterizer {
 /// How to draw.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings {
+    /// Image width in pixels (1 to [`MAX_IMAGE_SIZE`]).
     pub width: u32,
+    /// Image height in pixels (1 to [`MAX_IMAGE_SIZE`]).
     pub height: u32,
+    /// Affine (`noperspective`) or perspective-correct (`smooth`) interpolation.
     pub mode: Interpolation,
+    /// Texture filter: nearest, bilinear or trilinear.
     pub filter: Filter,
+    /// Texture wrap mode outside [0, 1].
     pub wrap: Wrap,
+    /// What a fragment's colour is made from.
     pub shading: Shading,
+    /// Overlay the source triangles' edges.
     pub wireframe: bool,
+    /// RGBA of pixels no triangle covers.
     pub background: [u8; 4],
+    /// Which pixel-coverage algorithm draws: edge functions or the scanline.
     pub rasterizer: Rasterizer,
     /// Which triangle owns a pixel centre exactly on a shared edge.
     pub tie_rule: TieRule,
@@ -70,6 +80,7 @@ impl Default for RenderSettings {
 }
 
 impl RenderSettings {
+    /// The viewport (0, 0, width, height).
     pub fn viewport(&self) -> Viewport {
         Viewport {
             width: self.width,
@@ -81,8 +92,15 @@ impl RenderSettings {
 /// Errors that stop a render as a whole.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RenderError {
+    /// Width or height is 0 or above [`MAX_IMAGE_SIZE`].
     #[error("image size {width}x{height} is outside 1..={max} pixels per side", max = MAX_IMAGE_SIZE)]
-    BadSize { width: u32, height: u32 },
+    BadSize {
+        /// The width asked for.
+        width: u32,
+        /// The height asked for.
+        height: u32,
+    },
+    /// The buffers would need more memory than the budget allows.
     #[error(transparent)]
     Memory(#[from] crate::budget::MemoryError),
 }
@@ -121,13 +139,15 @@ impl TriangleStatus {
 pub struct PreparedTriangle {
     /// Index into [`ClipMesh::triangles`].
     pub source: u32,
+    /// Whether it was drawn, or why it drew nothing.
     pub status: TriangleStatus,
     /// The clipped polygon, kept only where the clipper changed the triangle (`None` for an
     /// unclipped or unusable one): most triangles are not clipped, and a polygon is about 1 KB
     /// (see [`PreparedTriangle::polygon`] for every triangle's).
     pub clipped: Option<Box<ClipPolygon>>,
-    /// The fan triangles of the clipped polygon that can cover pixels.
-    pub setups: Vec<TriangleSetup>,
+    /// The fan triangles of the clipped polygon that can cover pixels: one for an unclipped
+    /// triangle (most of a mesh), kept inline so preparing a mesh allocates nothing per triangle.
+    pub setups: SmallVec<[TriangleSetup; 1]>,
 }
 
 impl PreparedTriangle {
@@ -167,7 +187,10 @@ pub fn source_vertices(mesh: &ClipMesh, index: u32) -> Option<[ClipVertex; 3]> {
         let v = mesh.vertices.get(vi as usize)?;
         let mut bary = [0.0; 3];
         bary[k] = 1.0;
-        *o = ClipVertex::new(v.clip, Varyings::new(bary, v.uv, v.color));
+        *o = ClipVertex::new(
+            v.clip,
+            Varyings::new(bary, v.uv, v.color).with_normal(v.normal),
+        );
     }
     Some(out)
 }
@@ -188,7 +211,7 @@ pub fn prepare_triangle_with(
         source: index,
         status: TriangleStatus::BadIndex,
         clipped: None,
-        setups: Vec::new(),
+        setups: SmallVec::new(),
     };
     let Some(verts) = source_vertices(mesh, index) else {
         return out;
@@ -252,7 +275,9 @@ pub fn prepare_triangles(
 /// The result of a render: the framebuffer and what happened to each source triangle.
 #[derive(Clone, Debug)]
 pub struct Render {
+    /// The image and the per-pixel buffers.
     pub frame: Framebuffer,
+    /// Every source triangle as prepared, in mesh order.
     pub triangles: Vec<PreparedTriangle>,
 }
 
@@ -458,6 +483,8 @@ fn rasterize(
             params.depth_range.0,
             params.depth_range.1,
         )),
+        Shading::Normal => Some(lanes::LaneColor::Normal),
+        Shading::Lambert => Some(lanes::LaneColor::Lambert),
     };
     let lane_shading = lane_color.map(|color| LaneShading {
         mode: params.mode,

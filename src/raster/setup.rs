@@ -29,7 +29,9 @@ use super::project::{SUBPIXEL, Viewport, WindowVertex};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Facing {
+    /// Counter-clockwise as displayed (negative [`signed_area2`] in image coordinates).
     Front,
+    /// Clockwise as displayed (positive [`signed_area2`]).
     Back,
 }
 
@@ -37,9 +39,13 @@ pub enum Facing {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum EdgeKind {
+    /// The interior is to its right on screen (oriented direction going up, `dir.y < 0`).
     Left,
+    /// The interior is to its left on screen (`dir.y > 0`).
     Right,
+    /// Horizontal, the interior below it on screen (y down).
     Top,
+    /// Horizontal, the interior above it on screen.
     Bottom,
 }
 
@@ -106,9 +112,11 @@ impl TieRule {
 /// One oriented edge: `value(P) = dir x (P - start) >= 0` inside the triangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Edge {
+    /// The edge's start vertex, snapped window position in 1/256 pixel.
     pub start: I64Vec2,
     /// Edge direction, oriented so that the interior is on the non-negative side.
     pub dir: I64Vec2,
+    /// Left, right, top or bottom, from `dir` (y down).
     pub kind: EdgeKind,
     /// Whether samples exactly on the edge are covered (the tie rule for `kind`).
     pub inclusive: bool,
@@ -276,6 +284,7 @@ pub struct TriangleSetup {
     /// than the snapped one (a triangle the grid made, whose weights the float positions
     /// cannot give).
     pub weights: WeightPlanes,
+    /// Front (counter-clockwise on screen) or back.
     pub facing: Facing,
     /// Inclusive pixel bounds `[x0, x1] x [y0, y1]` of candidate samples, within the viewport.
     pub bounds: PixelBounds,
@@ -284,9 +293,13 @@ pub struct TriangleSetup {
 /// Inclusive pixel rectangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PixelBounds {
+    /// First column, from the left.
     pub x0: u32,
+    /// First row, from the top.
     pub y0: u32,
+    /// Last column (included).
     pub x1: u32,
+    /// Last row (included).
     pub y1: u32,
 }
 

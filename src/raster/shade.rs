@@ -1,5 +1,6 @@
 //! Shading: turns an interpolated fragment into a colour.
 
+use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
 use super::interpolate::{Fragment, Interpolation};
@@ -18,6 +19,88 @@ pub enum Shading {
     Barycentric,
     /// Window depth z/w as grey: black at the nearest, white at the farthest drawn vertex.
     Depth,
+    /// The interpolated view-space normal as colour, `(n̂ + 1) / 2` per channel (x red, y
+    /// green, z blue): the first shader of GAMES101's assignment 3.
+    Normal,
+    /// A headlight Lambert shade: the vertex colour times
+    /// `AMBIENT + (1 - AMBIENT) max(0, n̂ · l)`, with the light `l = (0, 0, 1)` in view space
+    /// (at the eye, shining where the camera looks). See [`lambert_factor`].
+    Lambert,
+}
+
+impl Shading {
+    /// Every shading, in menu order.
+    pub const ALL: [Shading; 6] = [
+        Shading::Texture,
+        Shading::VertexColor,
+        Shading::Barycentric,
+        Shading::Depth,
+        Shading::Normal,
+        Shading::Lambert,
+    ];
+}
+
+/// The light a [`Shading::Lambert`] surface gets however it faces (so back-facing and grazing
+/// parts stay visible as a dark silhouette instead of black).
+pub const AMBIENT: f32 = 0.15;
+
+/// An interpolated normal shorter than this is not a direction: the vertex normals cancel (a
+/// fold) or the scene has none (clip-space scenes carry zero normals). It is read as facing
+/// the viewer. Interpolated unit normals are at least `cos(θ/2)` long for an angle `θ`
+/// between them, so only near-opposite normals come this close to zero.
+pub const MIN_NORMAL_LENGTH: f32 = 1e-6;
+
+/// The interpolated normal scaled to unit length, `n / |n|`; `(0, 0, 1)` (facing the viewer)
+/// when it is shorter than [`MIN_NORMAL_LENGTH`] or not finite.
+///
+/// ```
+/// use barylab::raster::shade::unit_normal;
+/// use glam::Vec3;
+/// assert_eq!(unit_normal(Vec3::new(0.0, 3.0, 4.0)), Vec3::new(0.0, 0.6, 0.8));
+/// assert_eq!(unit_normal(Vec3::ZERO), Vec3::Z);
+/// ```
+pub fn unit_normal(n: Vec3) -> Vec3 {
+    let len = n.length();
+    if len.is_finite() && len >= MIN_NORMAL_LENGTH {
+        n / len
+    } else {
+        Vec3::Z
+    }
+}
+
+/// The colour of [`Shading::Normal`]: `unorm8((n̂ + 1) / 2)` per channel, opaque.
+///
+/// ```
+/// use barylab::raster::shade::normal_rgba8;
+/// use glam::Vec3;
+/// // Facing the viewer: (0, 0, 1) -> (0.5, 0.5, 1), the familiar lilac-blue.
+/// assert_eq!(normal_rgba8(Vec3::Z), [128, 128, 255, 255]);
+/// ```
+pub fn normal_rgba8(n: Vec3) -> [u8; 4] {
+    let c = (unit_normal(n) + Vec3::ONE) * 0.5;
+    [unorm8(c.x), unorm8(c.y), unorm8(c.z), 255]
+}
+
+/// The brightness of [`Shading::Lambert`]: `AMBIENT + (1 - AMBIENT) max(0, n̂ · l)` with the
+/// headlight `l = (0, 0, 1)`, so `n̂ · l = n̂.z`.
+///
+/// ```
+/// use barylab::raster::shade::{AMBIENT, lambert_factor};
+/// use glam::Vec3;
+/// assert_eq!(lambert_factor(Vec3::Z), 1.0);
+/// assert_eq!(lambert_factor(Vec3::NEG_Z), AMBIENT);
+/// // Tilted 60 degrees away from the light: cos 60 = 0.5.
+/// let f = lambert_factor(Vec3::new(60f32.to_radians().sin(), 0.0, 0.5));
+/// assert!((f - (AMBIENT + (1.0 - AMBIENT) * 0.5)).abs() < 1e-6);
+/// ```
+pub fn lambert_factor(n: Vec3) -> f32 {
+    AMBIENT + (1.0 - AMBIENT) * unit_normal(n).z.max(0.0)
+}
+
+/// The colour of [`Shading::Lambert`]: `unorm8(albedo * lambert_factor(n))`, opaque.
+pub fn lambert_rgba8(albedo: Vec3, n: Vec3) -> [u8; 4] {
+    let c = albedo * lambert_factor(n);
+    [unorm8(c.x), unorm8(c.y), unorm8(c.z), 255]
 }
 
 /// Line colour of the wireframe overlay.
@@ -88,9 +171,13 @@ pub fn depth_grey(depth: f64, (black, white): (f64, f64)) -> u8 {
 /// Everything shading needs besides the fragment.
 #[derive(Clone, Copy, Debug)]
 pub struct ShadeParams {
+    /// What the colour is made from.
     pub shading: Shading,
+    /// Which of the fragment's interpolated values are used: affine or perspective-correct.
     pub mode: Interpolation,
+    /// Texture filter.
     pub filter: Filter,
+    /// Texture wrap mode.
     pub wrap: Wrap,
     /// Draw the source triangles' edges (see [`WIRE_WIDTH_PX`]).
     pub wireframe: bool,
@@ -139,5 +226,7 @@ pub fn shade(
             let g = depth_grey(frag.depth, p.depth_range);
             [g, g, g, 255]
         }
+        Shading::Normal => normal_rgba8(v.normal()),
+        Shading::Lambert => lambert_rgba8(v.color(), v.normal()),
     }
 }

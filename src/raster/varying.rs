@@ -8,13 +8,16 @@
 use glam::{Vec2, Vec3};
 
 /// Number of `f32` attribute slots carried by every vertex.
-pub const NUM_VARYINGS: usize = 8;
+pub const NUM_VARYINGS: usize = 11;
 /// First slot of the barycentric coordinates with respect to the source triangle (3 slots).
 pub const SLOT_BARY: usize = 0;
 /// First slot of the texture coordinate (u, v).
 pub const SLOT_UV: usize = 3;
 /// First slot of the RGB vertex colour, each channel in [0, 1].
 pub const SLOT_COLOR: usize = 5;
+/// First slot of the view-space vertex normal (x right, y up, z towards the viewer; unit
+/// length at the vertices, zero when the scene has none).
+pub const SLOT_NORMAL: usize = 8;
 
 /// The attribute slots of one vertex or one fragment.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -29,6 +32,29 @@ impl Varyings {
         s[SLOT_UV + 1] = uv.y;
         s[SLOT_COLOR..SLOT_COLOR + 3].copy_from_slice(&color.to_array());
         Self(s)
+    }
+
+    /// The same attributes with the view-space `normal` in its slots.
+    ///
+    /// ```
+    /// use barylab::raster::varying::Varyings;
+    /// use glam::{Vec2, Vec3};
+    /// let v = Varyings::new([1.0, 0.0, 0.0], Vec2::ZERO, Vec3::ONE).with_normal(Vec3::Z);
+    /// assert_eq!(v.normal(), Vec3::Z);
+    /// assert_eq!(v.color(), Vec3::ONE);
+    /// ```
+    pub fn with_normal(mut self, normal: Vec3) -> Self {
+        self.0[SLOT_NORMAL..SLOT_NORMAL + 3].copy_from_slice(&normal.to_array());
+        self
+    }
+
+    /// The interpolated view-space normal (not renormalized: interpolation shortens it).
+    pub fn normal(&self) -> Vec3 {
+        Vec3::new(
+            self.0[SLOT_NORMAL],
+            self.0[SLOT_NORMAL + 1],
+            self.0[SLOT_NORMAL + 2],
+        )
     }
 
     /// Barycentric coordinates with respect to the source triangle.

@@ -17,6 +17,7 @@ pub fn at_window(x: f64, y: f64, w: f64, width: u32, height: u32) -> MeshVertex 
             (y / f64::from(height)) as f32,
         ),
         color: Vec3::ONE,
+        normal: Vec3::ZERO,
     }
 }
 

@@ -18,9 +18,11 @@ pub enum M {
     /// A symbol: `base` or `base_sub`; greek names (`alpha`, `beta`, `gamma`, `Delta`) and
     /// `half` are written as such.
     Sym(String),
+    /// An operator or separator.
     Op(Op),
     /// Words inside a formula.
     Text(String),
+    /// A fraction, numerator over denominator.
     Frac(Vec<M>, Vec<M>),
     /// A parenthesised group.
     Group(Vec<M>),
@@ -35,16 +37,28 @@ pub enum M {
 /// Operators and separators.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Op {
+    /// `+`.
     Plus,
+    /// `-`.
     Minus,
+    /// Multiplication, `·`.
     Mul,
+    /// Cross product, `×`.
     Cross,
+    /// `=`.
     Eq,
+    /// `≈`.
     Approx,
+    /// `<`.
     Lt,
+    /// `≤`.
     Le,
+    /// `>`.
     Gt,
+    /// `≥`.
     Ge,
+    /// An arrow, `→`: a step in a chain (object → world → view), or what a value becomes
+    /// (snapped, wrapped, the taps' colour).
     To,
     /// Separates two formulas on one line.
     Sep,
@@ -53,7 +67,9 @@ pub enum Op {
 /// Inline content of a paragraph.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Inline {
+    /// Words.
     T(String),
+    /// Inline math.
     M(Vec<M>),
 }
 
@@ -66,9 +82,13 @@ pub enum Item {
     Eq(Vec<M>, Option<String>),
     /// A displayed matrix `lhs M` or a system `M x = rhs`.
     Matrix {
+        /// The matrix's name, written before ` = ` (e.g. `M_view`); empty for a system.
         lhs: Vec<M>,
+        /// The matrix, row by row.
         rows: Vec<Vec<f64>>,
+        /// The unknowns column of a system `M x = rhs`; empty for a plain matrix.
         unknowns: Vec<M>,
+        /// The right-hand side of a system; empty for a plain matrix.
         rhs: Vec<f64>,
     },
 }
@@ -76,14 +96,18 @@ pub enum Item {
 /// A titled section.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Section {
+    /// The section's heading with its number, e.g. `3. Which triangle covers it`.
     pub title: String,
+    /// Its prose and formulas, in order.
     pub items: Vec<Item>,
 }
 
 /// A worked example.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Document {
+    /// The heading of the whole derivation (for the probe: the pixel and the image size).
     pub title: String,
+    /// The steps, in order.
     pub sections: Vec<Section>,
 }
 

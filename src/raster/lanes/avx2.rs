@@ -1,215 +1,27 @@
 //! The lane paths written with AVX2 intrinsics: the same operations in the same order as
 //! the portable lane code in the parent module (and so as the per-pixel renderer), eight
 //! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
-//! is a mask or a clamp on both axes; tests check the two agree bit for bit. (Over 600 lines:
-//! one intrinsic per operation of the portable code, kept in one file to compare side by side.)
+//! is a mask or a clamp on both axes; tests check the two agree bit for bit.
+//! The texture lookups are in `avx2/texture.rs`.
 
 use std::arch::x86_64::*;
 
+use glam::Vec3;
+
 use super::{
-    BLOCK_ROWS, Block, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap, Stepped,
-    Target, classify,
+    BLOCK_ROWS, Block, CHANNELS, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap,
+    Stepped, Target, classify,
 };
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span;
 use crate::raster::setup::{TriangleSetup, WeightPlanes};
-use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX};
+use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX, lambert_rgba8, normal_rgba8};
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
-/// A wrap mode the vector path can apply: `Mask(size - 1)` or `Clamp(size - 1)`.
-#[derive(Clone, Copy)]
-pub(super) enum VecWrap {
-    Mask(i32),
-    Clamp(i32),
-}
+mod texture;
 
-impl VecWrap {
-    fn new(w: LaneWrap) -> Option<Self> {
-        match w {
-            LaneWrap::Mask(m) => Some(VecWrap::Mask(m)),
-            LaneWrap::Clamp(hi) => Some(VecWrap::Clamp(hi)),
-            LaneWrap::General(..) => None,
-        }
-    }
-}
-
-/// The texture's base level for vector lookups.
-pub(super) struct VecSampler<'a> {
-    pub(super) texels: &'a [[u8; 4]],
-    pub(super) width: i32,
-    /// `log2(width)` when the width is a power of two (row offsets by a shift).
-    pub(super) width_shift: Option<i32>,
-    pub(super) size: (f32, f32),
-    pub(super) wrap: (VecWrap, VecWrap),
-    pub(super) filter: Filter,
-}
-
-impl<'a> VecSampler<'a> {
-    /// `None` when a wrap mode needs the general (per-lane) path.
-    pub(super) fn new(texture: &'a Texture, shading: &LaneShading) -> Option<Self> {
-        let (w, h) = (texture.width(), texture.height());
-        Some(Self {
-            texels: texture.base_texels(),
-            width: w as i32,
-            width_shift: w.is_power_of_two().then_some(w.trailing_zeros() as i32),
-            size: (w as f32, h as f32),
-            wrap: (
-                VecWrap::new(LaneWrap::new(w, shading.wrap))?,
-                VecWrap::new(LaneWrap::new(h, shading.wrap))?,
-            ),
-            filter: shading.filter,
-        })
-    }
-}
-
-/// `(floor(clamp(x)) as i32, floor(clamp(x)))` with NaN giving index 0, as `texel_floor`.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn floor_coord(x: __m256) -> (__m256i, __m256) {
-    let ordered = _mm256_cmp_ps::<_CMP_ORD_Q>(x, x);
-    let xc = _mm256_min_ps(
-        _mm256_max_ps(x, _mm256_set1_ps(-MAX_TEXEL_COORD)),
-        _mm256_set1_ps(MAX_TEXEL_COORD),
-    );
-    let f = _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(xc);
-    let i = _mm256_and_si256(_mm256_cvttps_epi32(f), _mm256_castps_si256(ordered));
-    (i, f)
-}
-
-/// `texture::bilinear_fraction`, mirrored: `clamp(x - floor, 0, 1)` where x is finite, else 0.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn fraction(x: __m256, floor: __m256) -> __m256 {
-    let finite = _mm256_cmp_ps::<_CMP_EQ_OQ>(_mm256_sub_ps(x, x), _mm256_setzero_ps());
-    let t = _mm256_min_ps(
-        _mm256_max_ps(_mm256_sub_ps(x, floor), _mm256_setzero_ps()),
-        _mm256_set1_ps(1.0),
-    );
-    _mm256_and_ps(t, finite)
-}
-
-#[inline]
-#[target_feature(enable = "avx2")]
-fn wrap(i: __m256i, w: VecWrap) -> __m256i {
-    match w {
-        VecWrap::Mask(m) => _mm256_and_si256(i, _mm256_set1_epi32(m)),
-        VecWrap::Clamp(hi) => _mm256_min_epi32(
-            _mm256_max_epi32(i, _mm256_setzero_si256()),
-            _mm256_set1_epi32(hi),
-        ),
-    }
-}
-
-/// Eight texels at wrapped indices (each within the texture, so every read is in bounds).
-#[inline]
-#[target_feature(enable = "avx2")]
-fn gather(s: &VecSampler<'_>, i: __m256i, j: __m256i) -> __m256i {
-    let row = match s.width_shift {
-        Some(k) => _mm256_sll_epi32(j, _mm_cvtsi32_si128(k)),
-        None => _mm256_mullo_epi32(j, _mm256_set1_epi32(s.width)),
-    };
-    let index = _mm256_add_epi32(row, i);
-    debug_assert!(s.texels.len() <= i32::MAX as usize);
-    // SAFETY: `wrap` put i in 0..width and j in 0..height, so every index is below
-    // width * height = texels.len(); a texel is 4 bytes, read as one i32.
-    unsafe { _mm256_i32gather_epi32::<4>(s.texels.as_ptr().cast::<i32>(), index) }
-}
-
-/// Channel `C` (0 = red) of eight packed texels, as f32 in 0..255: one byte shuffle moves
-/// byte `C` of every texel to the bottom of its lane and zeroes the rest.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn channel<const C: i32>(t: __m256i) -> __m256 {
-    let pick = |n: i32| (4 * n + C) | 0x8080_8000_u32 as i32;
-    let mask = _mm256_setr_epi32(
-        pick(0),
-        pick(1),
-        pick(2),
-        pick(3),
-        pick(0),
-        pick(1),
-        pick(2),
-        pick(3),
-    );
-    _mm256_cvtepi32_ps(_mm256_shuffle_epi8(t, mask))
-}
-
-/// `byte_from_sum(x)` for a bilinear sum: `round(x)`, half away from zero. The clamp of the
-/// scalar code changes nothing here: every weight is in [0, 1] and they add up to 1 (within
-/// a few ulps), so the sum is in [0, 255.001] and never NaN.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn byte_from_sum(y: __m256) -> __m256i {
-    let t = _mm256_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
-    let up = _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_sub_ps(y, t), _mm256_set1_ps(0.5));
-    _mm256_cvttps_epi32(_mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0))))
-}
-
-/// `sum_k weight_k * channel_k`, left to right.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn weighted<const C: i32>(weights: &[__m256; 4], texels: &[__m256i; 4]) -> __m256i {
-    let mut sum = _mm256_mul_ps(weights[0], channel::<C>(texels[0]));
-    for k in 1..4 {
-        sum = _mm256_add_ps(sum, _mm256_mul_ps(weights[k], channel::<C>(texels[k])));
-    }
-    byte_from_sum(sum)
-}
-
-/// The packed RGBA8 colours at eight uv, as `Texture::sample_rgba8`.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn sample(s: &VecSampler<'_>, u: __m256, v: __m256) -> __m256i {
-    let (w, h) = (_mm256_set1_ps(s.size.0), _mm256_set1_ps(s.size.1));
-    match s.filter {
-        Filter::Nearest => {
-            // One texel of weight 1: the colour is the texel (see the parent module).
-            let i = wrap(floor_coord(_mm256_mul_ps(u, w)).0, s.wrap.0);
-            let j = wrap(floor_coord(_mm256_mul_ps(v, h)).0, s.wrap.1);
-            gather(s, i, j)
-        }
-        _ => {
-            let half = _mm256_set1_ps(0.5);
-            let x = _mm256_sub_ps(_mm256_mul_ps(u, w), half);
-            let y = _mm256_sub_ps(_mm256_mul_ps(v, h), half);
-            let (i0, fx) = floor_coord(x);
-            let (j0, fy) = floor_coord(y);
-            let (a, b) = (fraction(x, fx), fraction(y, fy));
-            let one = _mm256_set1_epi32(1);
-            let (ia, ib) = (
-                wrap(i0, s.wrap.0),
-                wrap(_mm256_add_epi32(i0, one), s.wrap.0),
-            );
-            let (ja, jb) = (
-                wrap(j0, s.wrap.1),
-                wrap(_mm256_add_epi32(j0, one), s.wrap.1),
-            );
-            let texels = [
-                gather(s, ia, ja),
-                gather(s, ib, ja),
-                gather(s, ia, jb),
-                gather(s, ib, jb),
-            ];
-            // `texture::bilinear_weights`, mirrored.
-            let ones = _mm256_set1_ps(1.0);
-            let (oa, ob) = (_mm256_sub_ps(ones, a), _mm256_sub_ps(ones, b));
-            let weights = [
-                _mm256_mul_ps(oa, ob),
-                _mm256_mul_ps(a, ob),
-                _mm256_mul_ps(oa, b),
-                _mm256_mul_ps(a, b),
-            ];
-            let r = weighted::<0>(&weights, &texels);
-            let g = weighted::<1>(&weights, &texels);
-            let b = weighted::<2>(&weights, &texels);
-            let a = weighted::<3>(&weights, &texels);
-            _mm256_or_si256(
-                _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
-                _mm256_or_si256(_mm256_slli_epi32::<16>(b), _mm256_slli_epi32::<24>(a)),
-            )
-        }
-    }
-}
+use texture::sample;
+pub(super) use texture::{VecSampler, VecWrap};
 
 /// A chunk of eight pixels whose colours are still to be looked up.
 struct Pending {
@@ -425,9 +237,11 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
             }
         }
     }
-    let mut channels = [_mm256_setzero_pd(); 3];
-    if matches!(color, LaneColor::VertexColor | LaneColor::Barycentric) {
-        channels = [0, 1, 2].map(|ch| dot3(&w, c.channels[ch]));
+    let mut channels = [_mm256_setzero_pd(); CHANNELS];
+    if !matches!(color, LaneColor::Texture | LaneColor::Depth(..)) {
+        for ch in 0..c.used_channels {
+            channels[ch] = dot3(&w, c.channels[ch]);
+        }
     }
     Four {
         u: dot3(&w, c.u),
@@ -448,8 +262,8 @@ struct Four {
     /// Validity and wireframe bits, lane k in bit k.
     ok: i32,
     wire: i32,
-    /// Vertex colour or barycentric channels (zero for the other shadings).
-    channels: [__m256d; 3],
+    /// The interpolated channels of [`Constants`] (zero for texture and depth shading).
+    channels: [__m256d; CHANNELS],
     /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
     both_uv: Option<[__m256d; 4]>,
 }
@@ -499,6 +313,34 @@ fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
                 _mm256_setzero_si256()
             };
             pack_opaque(grey, grey, grey)
+        }
+        LaneColor::Normal | LaneColor::Lambert => {
+            // Per lane with the scalar `shade` functions (a square root and a division each),
+            // on the same f32 channels the portable lanes hold.
+            let mut ch = [[0f32; LANES]; CHANNELS];
+            for (c, out) in ch
+                .iter_mut()
+                .enumerate()
+                .take(if color == LaneColor::Lambert {
+                    CHANNELS
+                } else {
+                    3
+                })
+            {
+                // SAFETY: `out` is eight f32s; the unaligned store writes exactly those.
+                unsafe {
+                    _mm256_storeu_ps(out.as_mut_ptr(), to_f32(lo.channels[c], hi.channels[c]))
+                };
+            }
+            let v = |first: usize, k: usize| {
+                Vec3::new(ch[first][k], ch[first + 1][k], ch[first + 2][k])
+            };
+            let rgba: [[u8; 4]; LANES] = std::array::from_fn(|k| match color {
+                LaneColor::Normal => normal_rgba8(v(0, k)),
+                _ => lambert_rgba8(v(0, k), v(3, k)),
+            });
+            // SAFETY: eight RGBA8 pixels are 32 bytes, read unaligned.
+            unsafe { _mm256_loadu_si256(rgba.as_ptr().cast()) }
         }
         _ => {
             let ch = |c: usize| unorm8(to_f32(lo.channels[c], hi.channels[c]));

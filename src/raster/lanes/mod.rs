@@ -1,12 +1,8 @@
 //! The fast path: eight pixels of a row at a time, colour and depth only.
 //!
-//! (Longer than the project's ~600 lines: the portable lane code and the types the AVX2 and
-//! AVX-512 files mirror are kept together, so a reader sees every step of the arithmetic that
-//! must stay bit-identical in one place.)
-//!
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
-//! nearest or bilinear filtering, vertex colour, barycentric and depth shading, and the
+//! nearest or bilinear filtering, vertex colour, barycentric, depth, normal and Lambert shading, and the
 //! wireframe overlay; the scanline lanes draw texture shading without the wireframe. Other
 //! cases (trilinear filtering, the scanline rasterizer's other shadings) go through
 //! [`render`](mod@super::render)'s per-pixel code (after the block rejection of the
@@ -40,15 +36,27 @@
 
 use std::sync::atomic::{AtomicU8, Ordering};
 
+use glam::Vec3;
+
 use super::framebuffer::depth_passes;
 use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
 use super::setup::{PixelBounds, TriangleSetup, WeightPlanes};
-use super::shade::{WIRE_COLOR, depth_grey, on_wire_edge, unorm8};
+use super::shade::{WIRE_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge, unorm8};
 use super::texture::{
     self, Filter, Texture, Wrap, bilinear_fraction, bilinear_weights, byte_from_sum, wrap_coord,
 };
+
+mod blocks;
+mod sampler;
+mod scanline;
+
+pub use blocks::EdgePlanes;
+use blocks::{Block, classify};
+use sampler::{LaneWrap, Sampler};
+use scanline::Stepped;
+pub use scanline::scanline_triangle;
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
@@ -113,10 +121,15 @@ const OFFSETS: F64s = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
 ///
 /// [`Buffers::ColorDepthUv`]: super::framebuffer::Buffers::ColorDepthUv
 pub struct Target<'a> {
+    /// The band's first image row (row 0 at the top).
     pub y0: u32,
+    /// Image width in pixels: the length of a row in the slices.
     pub width: u32,
+    /// RGBA8 of the band's rows, row by row from `y0`.
     pub color: &'a mut [[u8; 4]],
+    /// Window depth `(z/w + 1)/2` of the band's rows, tested less-than.
     pub depth: &'a mut [f32],
+    /// The triangle and uv buffers, when the render keeps them.
     pub uv: Option<UvTarget<'a>>,
 }
 
@@ -126,8 +139,11 @@ pub struct Target<'a> {
 pub struct UvTarget<'a> {
     /// The source triangle being drawn.
     pub source: u32,
+    /// The source triangle of the front-most fragment per pixel, as `color`.
     pub triangle: &'a mut [u32],
+    /// uv interpolated with the screen weights (`noperspective`), as `color`.
     pub uv_affine: &'a mut [[f32; 2]],
+    /// uv interpolated perspective-correctly (`smooth`), as `color`.
     pub uv_perspective: &'a mut [[f32; 2]],
 }
 
@@ -135,11 +151,13 @@ pub struct UvTarget<'a> {
 /// depth ([`LaneColor`]), with the wireframe overlay on the edge-function path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LaneShading {
+    /// Affine or perspective-correct interpolation.
     pub mode: Interpolation,
     /// What the colour shows.
     pub color: LaneColor,
     /// The texture filter and wrap (used by [`LaneColor::Texture`]).
     pub filter: Filter,
+    /// The texture wrap mode (used by [`LaneColor::Texture`]).
     pub wrap: Wrap,
     /// Draw the source triangles' edges (see [`on_wire_edge`]).
     pub wireframe: bool,
@@ -149,109 +167,23 @@ pub struct LaneShading {
 /// nearest or bilinear filtering only).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LaneColor {
+    /// The texture at the interpolated uv ([`Shading::Texture`](super::shade::Shading::Texture)).
     Texture,
+    /// The interpolated vertex colour.
     VertexColor,
+    /// The source triangle's three weights as red, green and blue.
     Barycentric,
     /// Grey from the window depth, black at `.0` and white at `.1`.
     Depth(f64, f64),
+    /// The interpolated view-space normal as colour ([`normal_rgba8`]).
+    Normal,
+    /// The vertex colour lit by a headlight ([`lambert_rgba8`]).
+    Lambert,
 }
 
-/// The edge functions of a triangle as planes over pixel indices:
-/// `E_i(col, row) = a_i col + b_i row + c_i`, the value at the pixel centre
-/// `(256 col + 128, 256 row + 128)` (1/256 pixel units). A pixel passes edge `i` when
-/// `E_i >= t_i`, with `t_i = 0` on an inclusive (left or bottom) edge and 1 otherwise.
-///
-/// ```
-/// use barylab::raster::clip::ClipVertex;
-/// use barylab::raster::lanes::EdgePlanes;
-/// use barylab::raster::project::{project_vertex, Viewport};
-/// use barylab::raster::setup::{sample_point, setup_triangle};
-/// use barylab::raster::varying::Varyings;
-/// use glam::DVec4;
-/// let vp = Viewport { width: 8, height: 8 };
-/// let at = |x: f64, y: f64| project_vertex(&ClipVertex::new(
-///     DVec4::new(x / 4.0 - 1.0, 1.0 - y / 4.0, 0.0, 1.0), Varyings::default()), vp);
-/// let s = setup_triangle([at(0.0, 0.0), at(8.0, 0.0), at(0.0, 8.0)], vp).unwrap();
-/// let planes = EdgePlanes::new(&s);
-/// // The planes give the setup's own edge values at every pixel centre.
-/// assert_eq!(planes.at(2, 3), s.edge_values(sample_point(3, 2)));
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct EdgePlanes {
-    pub a: [i64; 3],
-    pub b: [i64; 3],
-    pub c: [i64; 3],
-    pub t: [i64; 3],
-}
-
-impl EdgePlanes {
-    /// From `E(P) = dir_x (P_y - S_y) - dir_y (P_x - S_x)` with `P = (256 col + 128, 256 row + 128)`.
-    pub fn new(setup: &TriangleSetup) -> Self {
-        let half = SUBPIXEL / 2;
-        let mut out = Self {
-            a: [0; 3],
-            b: [0; 3],
-            c: [0; 3],
-            t: [0; 3],
-        };
-        for (i, e) in setup.edges.iter().enumerate() {
-            out.a[i] = -e.dir.y * SUBPIXEL;
-            out.b[i] = e.dir.x * SUBPIXEL;
-            out.c[i] = e.dir.x * (half - e.start.y) - e.dir.y * (half - e.start.x);
-            out.t[i] = e.min_value();
-        }
-        out
-    }
-
-    /// The three edge values at pixel (col, row).
-    pub fn at(&self, row: i64, col: i64) -> [i64; 3] {
-        [0, 1, 2].map(|i| self.a[i] * col + self.b[i] * row + self.c[i])
-    }
-
-    /// Whether every edge value over the columns `x0..=x1 + LANES` and rows `y0..=y1` is
-    /// exact in `f64` (an edge function is linear, so its extremes are at the corners).
-    fn exact_over(&self, b: &PixelBounds) -> bool {
-        let (x0, x1) = (i64::from(b.x0), i64::from(b.x1) + LANES as i64);
-        let (y0, y1) = (i64::from(b.y0), i64::from(b.y1));
-        [(y0, x0), (y0, x1), (y1, x0), (y1, x1)]
-            .iter()
-            .all(|&(r, c)| self.at(r, c).iter().all(|v| v.abs() < EXACT_EDGE_LIMIT))
-    }
-}
-
-/// How a block relates to the triangle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Block {
-    /// Outside one edge at all four corners: no pixel is covered.
-    Outside,
-    /// Inside every edge at all four corners: every pixel is covered.
-    Inside,
-    /// Pixels need testing one by one.
-    Partial,
-}
-
-fn classify(planes: &EdgePlanes, cols: (i64, i64), rows: (i64, i64)) -> Block {
-    let corners = [
-        planes.at(rows.0, cols.0),
-        planes.at(rows.0, cols.1),
-        planes.at(rows.1, cols.0),
-        planes.at(rows.1, cols.1),
-    ];
-    let mut inside = true;
-    for i in 0..3 {
-        let lo = corners.iter().map(|e| e[i]).min().unwrap_or(0);
-        let hi = corners.iter().map(|e| e[i]).max().unwrap_or(0);
-        if hi < planes.t[i] {
-            return Block::Outside;
-        }
-        inside &= lo >= planes.t[i];
-    }
-    if inside {
-        Block::Inside
-    } else {
-        Block::Partial
-    }
-}
+/// Interpolated channels the lanes carry: a colour (or weights, or a normal) in 0..3, and the
+/// normal in 3..6 for [`LaneColor::Lambert`].
+const CHANNELS: usize = 6;
 
 /// Per-triangle constants of the interpolation, as [`interpolate::fragment`] uses them.
 ///
@@ -266,8 +198,11 @@ struct Constants {
     /// uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]` per vertex, when
     /// the target wants them.
     both_uv: Option<[[f64; 3]; 4]>,
-    /// `channels[c][k]`: channel `c` of vertex `k` for vertex-colour or barycentric shading.
-    channels: [[f64; 3]; 3],
+    /// `channels[c][k]`: channel `c` of vertex `k`: the vertex colour, the source weights or
+    /// the normal in 0..3, and the normal in 3..6 for Lambert shading.
+    channels: [[f64; 3]; CHANNELS],
+    /// How many of `channels` the shading reads (3, or 6 for Lambert).
+    used_channels: usize,
     wire: Option<Wire>,
 }
 
@@ -296,10 +231,21 @@ impl Constants {
             let at = [f(0), f(1), f(2)];
             [0, 1, 2].map(|c| [0, 1, 2].map(|k| f64::from(at[k][c])))
         };
-        let channels = match color {
-            LaneColor::VertexColor => per_vertex(&|k| vary(k).color().to_array()),
+        let normal = || per_vertex(&|k| vary(k).normal().to_array());
+        let color3 = || per_vertex(&|k| vary(k).color().to_array());
+        let mut channels = [[0.0; 3]; CHANNELS];
+        let first = match color {
+            LaneColor::VertexColor | LaneColor::Lambert => color3(),
             LaneColor::Barycentric => per_vertex(&|k| vary(k).bary()),
+            LaneColor::Normal => normal(),
             LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
+        };
+        channels[..3].copy_from_slice(&first);
+        let used_channels = if color == LaneColor::Lambert {
+            channels[3..].copy_from_slice(&normal());
+            CHANNELS
+        } else {
+            3
         };
         let wire = wireframe.then(|| {
             let b = setup.v.map(|v| v.varyings.bary());
@@ -316,6 +262,7 @@ impl Constants {
             v: uv.map(|t| f64::from(t.y)),
             both_uv: None,
             channels,
+            used_channels,
             wire,
         }
     }
@@ -329,7 +276,7 @@ struct Samples {
     depth: F32s,
     ok: Mask,
     wire: Mask,
-    channels: [F32s; 3],
+    channels: [F32s; CHANNELS],
     depth64: F64s,
     /// `[u_affine, v_affine, u_smooth, v_smooth]` (when [`Constants::both_uv`] is set).
     both_uv: [F32s; 4],
@@ -343,7 +290,7 @@ impl Samples {
             depth: [0.0; LANES],
             ok: [false; LANES],
             wire: [false; LANES],
-            channels: [[0.0; LANES]; 3],
+            channels: [[0.0; LANES]; CHANNELS],
             depth64: [0.0; LANES],
             both_uv: [[0.0; LANES]; 4],
         }
@@ -359,6 +306,8 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
                 let g = depth_grey(s.depth64[k], (lo, hi));
                 [g, g, g, 255]
             }
+            LaneColor::Normal => normal_rgba8(channel3(s, 0, k)),
+            LaneColor::Lambert => lambert_rgba8(channel3(s, 0, k), channel3(s, 3, k)),
             _ => [
                 unorm8(s.channels[0][k]),
                 unorm8(s.channels[1][k]),
@@ -367,6 +316,16 @@ fn channel_colors(s: &Samples, color: LaneColor, out: &mut [[u8; 4]; LANES]) {
             ],
         };
     }
+}
+
+/// Channels `first..first + 3` of lane `k` as a vector.
+#[inline(always)]
+fn channel3(s: &Samples, first: usize, k: usize) -> Vec3 {
+    Vec3::new(
+        s.channels[first][k],
+        s.channels[first + 1][k],
+        s.channels[first + 2][k],
+    )
 }
 
 /// The vertices' uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]`
@@ -430,7 +389,7 @@ fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
         out.v[k] = (w[0] * c.v[0] + w[1] * c.v[1] + w[2] * c.v[2]) as f32;
         out.depth64[k] = l[0] * c.depth[0] + l[1] * c.depth[1] + l[2] * c.depth[2];
         out.depth[k] = out.depth64[k] as f32;
-        for ch in 0..3 {
+        for ch in 0..c.used_channels {
             let x = &c.channels[ch];
             out.channels[ch][k] = (w[0] * x[0] + w[1] * x[1] + w[2] * x[2]) as f32;
         }
@@ -443,115 +402,6 @@ fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
         }
     }
     out
-}
-
-/// The texture module's `texel_floor` as an `i32` (it clamps to +-1e9, which fits).
-#[inline(always)]
-fn texel_floor(x: f32) -> i32 {
-    texture::texel_floor(x) as i32
-}
-
-/// A wrap mode applied to lanes of texel coordinates along one axis of `size` texels.
-#[derive(Clone, Copy)]
-enum LaneWrap {
-    /// Repeat on a power-of-two size: a mask (two's complement makes it `rem_euclid`).
-    Mask(i32),
-    /// Clamp to edge: `clamp(0, size - 1)`.
-    Clamp(i32),
-    /// Anything else: the texture module's `wrap_coord` outside the texture.
-    General(u32, Wrap),
-}
-
-impl LaneWrap {
-    fn new(size: u32, wrap: Wrap) -> Self {
-        match wrap {
-            Wrap::Repeat if size.is_power_of_two() => LaneWrap::Mask(size as i32 - 1),
-            Wrap::ClampToEdge => LaneWrap::Clamp(size as i32 - 1),
-            _ => LaneWrap::General(size, wrap),
-        }
-    }
-
-    #[inline(always)]
-    fn apply(self, i: i32) -> usize {
-        match self {
-            LaneWrap::Mask(m) => (i & m) as usize,
-            LaneWrap::Clamp(hi) => i.clamp(0, hi) as usize,
-            LaneWrap::General(size, wrap) => {
-                if (0..size as i32).contains(&i) {
-                    i as usize
-                } else {
-                    wrap_coord(i64::from(i), size, wrap) as usize
-                }
-            }
-        }
-    }
-}
-
-/// The base level of a texture, ready for lane lookups.
-struct Sampler<'a> {
-    texels: &'a [[u8; 4]],
-    width: usize,
-    size: (f32, f32),
-    wrap: (LaneWrap, LaneWrap),
-    filter: Filter,
-}
-
-impl<'a> Sampler<'a> {
-    fn new(texture: &'a Texture, filter: Filter, wrap: Wrap) -> Self {
-        let (w, h) = (texture.width(), texture.height());
-        Self {
-            texels: texture.base_texels(),
-            width: w as usize,
-            size: (w as f32, h as f32),
-            wrap: (LaneWrap::new(w, wrap), LaneWrap::new(h, wrap)),
-            filter,
-        }
-    }
-
-    #[inline(always)]
-    fn texel(&self, i: usize, j: usize) -> [u8; 4] {
-        self.texels[j * self.width + i]
-    }
-
-    /// The colours at eight uv, as [`Texture::sample_rgba8`] computes them.
-    #[inline(always)]
-    fn sample(&self, u: &F32s, v: &F32s, out: &mut [[u8; 4]; LANES]) {
-        match self.filter {
-            // One texel of weight 1: `round(0 + 1 * c)` is exactly `c`, so the texel is the
-            // colour.
-            Filter::Nearest => {
-                for k in 0..LANES {
-                    let i = self.wrap.0.apply(texel_floor(u[k] * self.size.0));
-                    let j = self.wrap.1.apply(texel_floor(v[k] * self.size.1));
-                    out[k] = self.texel(i, j);
-                }
-            }
-            _ => {
-                for k in 0..LANES {
-                    let x = u[k] * self.size.0 - 0.5;
-                    let y = v[k] * self.size.1 - 0.5;
-                    let (i0, j0) = (texel_floor(x), texel_floor(y));
-                    let (a, b) = (bilinear_fraction(x), bilinear_fraction(y));
-                    let (ia, ib) = (self.wrap.0.apply(i0), self.wrap.0.apply(i0 + 1));
-                    let (ja, jb) = (self.wrap.1.apply(j0), self.wrap.1.apply(j0 + 1));
-                    let weights = bilinear_weights(a, b);
-                    let texels = [
-                        self.texel(ia, ja),
-                        self.texel(ib, ja),
-                        self.texel(ia, jb),
-                        self.texel(ib, jb),
-                    ];
-                    let mut sum = [0.0f32; 4];
-                    for (wt, t) in weights.iter().zip(&texels) {
-                        for ch in 0..4 {
-                            sum[ch] += wt * f32::from(t[ch]);
-                        }
-                    }
-                    out[k] = sum.map(byte_from_sum);
-                }
-            }
-        }
-    }
 }
 
 /// Depth-tests and writes the valid lanes of one row chunk starting at column `x`.
@@ -708,161 +558,6 @@ fn edge_triangle_impl(
             bx += LANES as u32;
         }
         by = by_end + 1;
-    }
-}
-
-/// The scanline rasterizer's lane path for rows `rows` (within the target band).
-pub fn scanline_triangle(
-    setup: &TriangleSetup,
-    rows: (u32, u32),
-    texture: &Texture,
-    shading: LaneShading,
-    target: &mut Target<'_>,
-) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if vector_path() {
-            if let Some(sampler) = avx2::VecSampler::new(texture, &shading) {
-                // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                unsafe {
-                    avx2::scanline_triangle(
-                        setup,
-                        rows,
-                        &sampler,
-                        wide_path(),
-                        shading.mode,
-                        target,
-                    )
-                };
-                return;
-            }
-            // SAFETY: as above.
-            unsafe { scanline_triangle_avx2(setup, rows, texture, shading, target) };
-            return;
-        }
-    }
-    scanline_triangle_impl(setup, rows, texture, shading, target);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn scanline_triangle_avx2(
-    setup: &TriangleSetup,
-    rows: (u32, u32),
-    texture: &Texture,
-    shading: LaneShading,
-    target: &mut Target<'_>,
-) {
-    scanline_triangle_impl(setup, rows, texture, shading, target);
-}
-
-/// What the scanline lanes step: `u`, `v` (divided by w when perspective-correct), `1/w`
-/// and depth, each linear along a row.
-#[derive(Clone, Copy, Default)]
-struct Stepped {
-    u: f64,
-    v: f64,
-    inv_w: f64,
-    depth: f64,
-}
-
-impl Stepped {
-    /// The stepped quantities for screen weights `l` (a point's weights, or their per-pixel
-    /// increments: the map is linear).
-    fn from_weights(l: [f64; 3], c: &Constants, mode: Interpolation) -> Self {
-        let mut s = Self::default();
-        for k in 0..3 {
-            let scale = match mode {
-                Interpolation::Perspective => l[k] * c.inv_w[k],
-                Interpolation::Affine => l[k],
-            };
-            s.u += scale * c.u[k];
-            s.v += scale * c.v[k];
-            s.inv_w += l[k] * c.inv_w[k];
-            s.depth += l[k] * c.depth[k];
-        }
-        s
-    }
-
-    /// The increments per pixel along a row: the map applied to the screen weights'
-    /// increments [`WeightPlanes::step_x`] (as the per-pixel scanline rasterizer steps them).
-    fn row_step(c: &Constants, mode: Interpolation) -> Self {
-        Self::from_weights(c.weights.step_x(), c, mode)
-    }
-
-    /// The values at the first pixel `x0` of a span of row `y`.
-    fn span_start(c: &Constants, mode: Interpolation, x0: u32, y: u32) -> Self {
-        Self::from_weights(c.weights.at_pixel(x0, y), c, mode)
-    }
-
-    /// The values of a row's first eight pixels: lane k is `start` after k single steps.
-    fn lanes(start: Self, step: &Self) -> [Self; LANES] {
-        let mut lanes = [start; LANES];
-        for k in 1..LANES {
-            let p = lanes[k - 1];
-            lanes[k] = Self {
-                u: p.u + step.u,
-                v: p.v + step.v,
-                inv_w: p.inv_w + step.inv_w,
-                depth: p.depth + step.depth,
-            };
-        }
-        lanes
-    }
-}
-
-#[inline(always)]
-fn scanline_triangle_impl(
-    setup: &TriangleSetup,
-    (y_start, y_end): (u32, u32),
-    texture: &Texture,
-    shading: LaneShading,
-    target: &mut Target<'_>,
-) {
-    // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
-    // scanline code).
-    let mode = shading.mode;
-    let consts = Constants::new(setup, mode, false, LaneColor::Texture);
-    let sampler = Sampler::new(texture, shading.filter, shading.wrap);
-    let step = Stepped::row_step(&consts, mode);
-    let mut colors = [[0u8; 4]; LANES];
-    for y in y_start..=y_end {
-        let Some((x0, x1)) = row_span(setup, y) else {
-            continue;
-        };
-        let start = Stepped::span_start(&consts, mode, x0, y);
-        // Lane k holds pixel x0 + k; each chunk advances every lane by eight increments.
-        let mut lanes = Stepped::lanes(start, &step);
-        let n = LANES as f64;
-        let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
-        let mut x = x0;
-        while x <= x1 {
-            let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
-            let mut s = Samples::new();
-            for k in 0..LANES {
-                let l = &lanes[k];
-                s.ok[k] = k < lanes_in && l.inv_w > 0.0 && l.inv_w < f64::INFINITY;
-                let (u, v) = match mode {
-                    Interpolation::Perspective => {
-                        let w = 1.0 / l.inv_w;
-                        (l.u * w, l.v * w)
-                    }
-                    Interpolation::Affine => (l.u, l.v),
-                };
-                s.u[k] = u as f32;
-                s.v[k] = v as f32;
-                s.depth[k] = l.depth as f32;
-            }
-            sampler.sample(&s.u, &s.v, &mut colors);
-            write(target, x, y, &s, &colors);
-            for l in lanes.iter_mut() {
-                l.u += su;
-                l.v += sv;
-                l.inv_w += sw;
-                l.depth += sd;
-            }
-            x += LANES as u32;
-        }
     }
 }
 

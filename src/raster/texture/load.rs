@@ -8,16 +8,23 @@ use super::{MAX_TEXTURE_SIZE, Texture};
 /// Errors while loading a texture from a file.
 #[derive(Debug, thiserror::Error)]
 pub enum TextureError {
+    /// The file could not be read.
     #[error(transparent)]
     File(#[from] crate::files::ReadError),
+    /// The bytes are not an image the decoder reads (or are truncated).
     #[error("cannot decode texture {path}: {message}")]
     Decode {
+        /// The file, as shown in messages.
         path: String,
         /// The decoder's message, on one line.
         message: String,
     },
+    /// The file has 0 bytes, or the image has no pixels.
     #[error("texture {path} is empty (no pixels or 0 bytes)")]
-    Empty { path: String },
+    Empty {
+        /// The file, as shown in messages.
+        path: String,
+    },
 }
 
 /// A decoder's message on one line, without trailing blank lines.

@@ -146,10 +146,12 @@ pub struct Tap {
     pub i: u32,
     /// Texel row after wrapping (0 = bottom).
     pub j: u32,
+    /// The texel's share of the filtered colour (a lookup's weights sum to 1).
     pub weight: f32,
 }
 
-/// The texels one filter lookup reads: 1 (nearest) or 4 (bilinear), without allocation.
+/// The texels one filter lookup reads: 1 (nearest), 4 (bilinear, or trilinear within one
+/// level) or 8 (trilinear between two levels), without allocation.
 /// Derefs to a slice of [`Tap`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Taps {
@@ -333,10 +335,12 @@ impl Texture {
         })
     }
 
+    /// Width of the base level, in texels.
     pub fn width(&self) -> u32 {
         self.width
     }
 
+    /// Height of the base level, in texels.
     pub fn height(&self) -> u32 {
         self.height
     }

@@ -1,6 +1,7 @@
 //! The colour written: the shading mode, the wireframe test, the framebuffer's RGBA.
 
 use super::*;
+use crate::probe::NormalTrace;
 
 pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
     b.section(tr!(b, "probe.color.title"));
@@ -66,6 +67,8 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
                 }
             ),
             Shading::Depth => tr!(b, "probe.color.depth"),
+            Shading::Normal => tr!(b, "probe.color.normal", how = interpolated_how(b, st.mode)),
+            Shading::Lambert => tr!(b, "probe.color.lambert", how = interpolated_how(b, st.mode)),
         };
         if d.writes_pixel {
             b.text(tr!(b, "probe.color.shading", how = how));
@@ -77,6 +80,9 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
                 rgba = rgba(sh.color)
             ));
         }
+    }
+    if let Some(n) = d.shade.as_ref().and_then(|sh| sh.normal.as_ref()) {
+        normal_lines(b, st.shading, n);
     }
     b.eq_note(
         vec![txt(tr!(
@@ -92,4 +98,80 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
             tr!(b, "probe.color.uncovered")
         },
     );
+}
+
+/// "affinely" or "perspective-correctly".
+fn interpolated_how(b: &Builder, mode: Interpolation) -> String {
+    if mode == Interpolation::Affine {
+        tr!(b, "probe.color.affinely")
+    } else {
+        tr!(b, "probe.color.perspective_correctly")
+    }
+}
+
+/// The normal's arithmetic: `n`, `|n|`, `n̂`, and the normal colour or the Lambert brightness.
+fn normal_lines(b: &mut Builder, shading: Shading, n: &NormalTrace) {
+    b.eq(vec![
+        sym("n"),
+        EQ,
+        tup32(&n.interpolated),
+        SEP,
+        M::Abs(vec![sym("n")]),
+        EQ,
+        num(f64::from(n.length)),
+        SEP,
+        sym("n̂"),
+        EQ,
+        frac(sym("n"), M::Abs(vec![sym("n")])),
+        EQ,
+        tup32(&n.unit),
+    ]);
+    match shading {
+        Shading::Normal => {
+            let c = n.unit.map(|x| (x + 1.0) * 0.5);
+            b.eq_note(
+                vec![
+                    frac(grp(vec![sym("n̂"), PLUS, M::Int(1)]), M::Int(2)),
+                    EQ,
+                    tup32(&c),
+                ],
+                tr!(b, "probe.color.normal_note"),
+            );
+        }
+        _ => {
+            let dot = n.unit[2];
+            b.eq_note(
+                vec![
+                    sym("n̂ · l"),
+                    EQ,
+                    sym("n̂_z"),
+                    EQ,
+                    num(f64::from(dot)),
+                    SEP,
+                    sym("k"),
+                    EQ,
+                    num(f64::from(n.ambient)),
+                    PLUS,
+                    num(f64::from(1.0 - n.ambient)),
+                    MUL,
+                    sym("max"),
+                    M::Tuple(vec![vec![M::Int(0)], vec![sym("n̂ · l")]]),
+                    EQ,
+                    num(f64::from(n.lambert)),
+                ],
+                tr!(b, "probe.color.lambert_note"),
+            );
+            b.eq(vec![
+                sym("albedo"),
+                MUL,
+                sym("k"),
+                EQ,
+                tup32(&n.albedo),
+                MUL,
+                num(f64::from(n.lambert)),
+                EQ,
+                tup32(&n.albedo.map(|a| a * n.lambert)),
+            ]);
+        }
+    }
 }

@@ -125,6 +125,8 @@ pub fn shading_name(lang: Lang, s: Shading) -> String {
             Shading::VertexColor => "probe.shading.vertex_color",
             Shading::Barycentric => "probe.shading.barycentric",
             Shading::Depth => "probe.shading.depth",
+            Shading::Normal => "probe.shading.normal",
+            Shading::Lambert => "probe.shading.lambert",
         },
     )
 }

@@ -1,21 +1,24 @@
-//! Scene files (JSON), in two forms; see `docs/scene-format.md`.
+//! Scene files (JSON), in three forms; see `docs/scene-format.md`.
 //!
 //! 1. World form: a camera and a quad's four corners A, B, C, D in world space (drawn as the
 //!    triangles A B C and A C D, diagonal A-C).
 //! 2. Raw clip-space form: vertices given directly in clip space and any triangles over them,
 //!    with viewport (0, 0, width, height), NDC y = +1 at image row 0, depth range [0, 1].
+//! 3. Model form: an OBJ model seen by a camera (by default one that frames it).
+//!
+//! An OBJ model or an image can also stand in for a scene file ([`open_input`]).
 //!
 //! Unknown fields are errors. Errors name the file, the line and column, and the field.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use glam::{DMat4, DVec3, DVec4, Vec2, Vec3};
+use glam::{DMat3, DMat4, DVec3, DVec4, Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
 use crate::budget::{self, MemoryError};
 use crate::files::{self, FileKind, ReadError, shown};
-use crate::model::{ModelError, ModelMesh};
+use crate::model::{ModelError, ModelMesh, vertex_normals};
 use crate::raster::camera::{Camera, CameraError, Projection};
 use crate::raster::project::MAX_IMAGE_SIZE;
 use crate::raster::render::{ClipMesh, DEFAULT_BACKGROUND, MeshVertex, RenderSettings};
@@ -24,42 +27,67 @@ use crate::raster::texture::{BuiltinTexture, Filter, Texture, TextureError, Wrap
 use crate::raster::{Interpolation, Shading};
 use json::{parse_error, strict};
 
+mod forms;
 mod json;
+mod mesh;
+
+use forms::default_texture;
+pub use forms::{ClipScene, ClipSceneVertex, Corner, ModelScene, Tilt, WorldScene};
+pub use mesh::view_normal;
 
 /// Errors while reading or checking a scene.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
+    /// The file could not be read (missing, not a regular file, too large).
     #[error(transparent)]
     File(#[from] ReadError),
+    /// The scene would need more memory than the budget allows.
     #[error(transparent)]
     Memory(#[from] MemoryError),
+    /// The JSON does not parse, or a field has the wrong type or an unknown name.
     #[error("{path}:{line}:{column}: {field}{message}")]
     Parse {
+        /// The scene file, as shown in messages.
         path: String,
+        /// Line of the error, from 1.
         line: usize,
+        /// Column of the error, from 1.
         column: usize,
         /// The JSON path of the offending field followed by ": ", or empty at the top level.
         field: String,
+        /// What is wrong.
         message: String,
     },
+    /// The scene parses but a value is out of range (image size, camera, indices, ...).
     #[error("{path}: {message}")]
-    Invalid { path: String, message: String },
+    Invalid {
+        /// The scene file, as shown in messages.
+        path: String,
+        /// What is wrong, naming the field.
+        message: String,
+    },
+    /// The texture could not be loaded.
     #[error(transparent)]
     Texture(#[from] TextureError),
+    /// The OBJ model could not be loaded.
     #[error(transparent)]
     Model(#[from] ModelError),
+    /// The file's extension is none of `.json`, `.obj` or an image's.
     #[error(
         "{path}: unknown kind of file (expected a .json scene, an .obj model, or an image: {})",
         IMAGE_EXTENSIONS.join(", ")
     )]
-    UnknownKind { path: String },
+    UnknownKind {
+        /// The file, as shown in messages.
+        path: String,
+    },
 }
 
-/// Image file extensions accepted in place of a scene (lower case).
 /// Most triangles a clip scene's `subdivide` may make: well beyond the dense-mesh
 /// benchmarks (460,800), and a bound on the memory a small scene file can ask for.
 pub const MAX_SUBDIVIDED_TRIANGLES: u64 = 4_000_000;
 
+/// Image file extensions accepted in place of a scene (lower case).
 pub const IMAGE_EXTENSIONS: [&str; 6] = ["png", "jpg", "jpeg", "bmp", "tga", "webp"];
 
 /// The name of mesh vertex `index`, the same in the derivation, the figures and the app: A, B,
@@ -134,191 +162,17 @@ pub fn open_input(path: &Path) -> Result<(Scene, PathBuf), SceneError> {
     }
 }
 
-/// Corner of the quad in the world form.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Corner {
-    /// Position in object space (world space when the tilt is zero).
-    pub position: DVec3,
-    pub uv: Vec2,
-    /// RGB in [0, 1]; white when omitted.
-    #[serde(default = "white")]
-    pub color: Vec3,
-}
-
-fn white() -> Vec3 {
-    Vec3::ONE
-}
-
-/// A rotation of the whole quad about its centre: pitch about the x axis, then yaw about y.
-#[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Tilt {
-    pub pitch_deg: f64,
-    pub yaw_deg: f64,
-}
-
-fn default_texture() -> String {
-    BuiltinTexture::UvGrid.name().to_string()
-}
-
-fn default_background() -> [u8; 4] {
-    DEFAULT_BACKGROUND
-}
-
-/// The world form.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct WorldScene {
-    pub width: u32,
-    pub height: u32,
-    #[serde(default)]
-    pub camera: Camera,
-    /// Corners A, B, C, D.
-    pub quad: [Corner; 4],
-    #[serde(default)]
-    pub tilt: Tilt,
-    /// A built-in texture name (`uv-grid`, `checker`, `rgbw-2x2`) or an image path relative to
-    /// the scene file.
-    #[serde(default = "default_texture")]
-    pub texture: String,
-    #[serde(default)]
-    pub filter: Filter,
-    #[serde(default)]
-    pub wrap: Wrap,
-    #[serde(default)]
-    pub mode: Interpolation,
-    #[serde(default)]
-    pub shading: Shading,
-    #[serde(default)]
-    pub wireframe: bool,
-    #[serde(default = "default_background")]
-    pub background: [u8; 4],
-    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
-    #[serde(default, skip_serializing_if = "TieRule::is_default")]
-    pub tie_rule: TieRule,
-}
-
-/// A vertex of the raw clip-space form.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ClipSceneVertex {
-    pub clip: DVec4,
-    #[serde(default)]
-    pub uv: Vec2,
-    #[serde(default = "white")]
-    pub color: Vec3,
-}
-
-/// The raw clip-space form.
-///
-/// The look fields (`texture` ... `background`) repeat those of [`WorldScene`] on purpose:
-/// serde's `flatten` cannot be combined with `deny_unknown_fields`, and rejecting unknown
-/// fields matters more (a typo must not pass silently).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ClipScene {
-    pub width: u32,
-    pub height: u32,
-    pub vertices: Vec<ClipSceneVertex>,
-    pub triangles: Vec<[u32; 3]>,
-    /// Split every triangle into `n x n` smaller ones on its barycentric grid
-    /// ([`ClipMesh::subdivided`]): the same surface, the same image, more triangles (the
-    /// dense-mesh benchmarks). 1 or absent: as given.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub subdivide: Option<u32>,
-    #[serde(default = "default_texture")]
-    pub texture: String,
-    #[serde(default)]
-    pub filter: Filter,
-    #[serde(default)]
-    pub wrap: Wrap,
-    #[serde(default)]
-    pub mode: Interpolation,
-    #[serde(default)]
-    pub shading: Shading,
-    #[serde(default)]
-    pub wireframe: bool,
-    #[serde(default = "default_background")]
-    pub background: [u8; 4],
-    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
-    #[serde(default, skip_serializing_if = "TieRule::is_default")]
-    pub tie_rule: TieRule,
-}
-
-/// The model form: an OBJ file seen by a camera.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ModelScene {
-    pub width: u32,
-    pub height: u32,
-    /// When omitted, a camera that frames the model ([`Camera::framing`]).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub camera: Option<Camera>,
-    /// The OBJ file, relative to the scene file.
-    pub model: String,
-    /// A built-in texture or image path; when omitted, the model's MTL diffuse texture, else
-    /// `uv-grid`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub texture: Option<String>,
-    #[serde(default)]
-    pub filter: Filter,
-    #[serde(default)]
-    pub wrap: Wrap,
-    #[serde(default)]
-    pub mode: Interpolation,
-    /// When omitted: the texture if the model has uvs, else the vertex (material) colour.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub shading: Option<Shading>,
-    #[serde(default)]
-    pub wireframe: bool,
-    #[serde(default = "default_background")]
-    pub background: [u8; 4],
-    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
-    #[serde(default, skip_serializing_if = "TieRule::is_default")]
-    pub tie_rule: TieRule,
-    /// The loaded model (filled when the scene is loaded).
-    #[serde(skip)]
-    pub mesh: Arc<ModelMesh>,
-}
-
-impl ModelScene {
-    /// A scene showing an OBJ file with the default framing camera.
-    pub fn for_model(model_path: &Path, width: u32, height: u32) -> Result<Self, SceneError> {
-        Ok(Self {
-            width,
-            height,
-            camera: None,
-            model: model_path.display().to_string(),
-            texture: None,
-            filter: Filter::default(),
-            wrap: Wrap::default(),
-            mode: Interpolation::default(),
-            shading: None,
-            wireframe: false,
-            background: DEFAULT_BACKGROUND,
-            tie_rule: TieRule::default(),
-            mesh: Arc::new(ModelMesh::load(model_path)?),
-        })
-    }
-
-    /// The camera: the given one, or one framing the model.
-    pub fn camera(&self) -> Camera {
-        self.camera.unwrap_or_else(|| {
-            let (centre, radius) = self.mesh.bounding_sphere();
-            Camera::framing(centre, radius)
-        })
-    }
-}
-
 /// A scene in any of its forms.
 // One scene exists at a time; boxing the larger variant would buy nothing.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Scene {
+    /// A camera and a quad in world space.
     World(WorldScene),
+    /// Vertices given in clip space, and triangles over them.
     Clip(ClipScene),
+    /// A camera and an OBJ model.
     Model(ModelScene),
 }
 
@@ -538,7 +392,8 @@ impl Scene {
                         "; the texture shows as one colour (every vertex has uv (0, 0))"
                     }
                     Shading::VertexColor => "; shading by vertex colour",
-                    Shading::Barycentric | Shading::Depth => "",
+                    Shading::Lambert => "; lit by a headlight (Lambert shading) to show its shape",
+                    Shading::Barycentric | Shading::Depth | Shading::Normal => "",
                 };
                 format!("{n}{meaning}")
             })
@@ -584,10 +439,11 @@ impl Scene {
                 s.background,
             ),
             Scene::Model(s) => {
+                // Without uvs a texture would be one colour: light the shape instead.
                 let shading = s.shading.unwrap_or(if s.mesh.has_uv {
                     Shading::Texture
                 } else {
-                    Shading::VertexColor
+                    Shading::Lambert
                 });
                 (s.mode, s.filter, s.wrap, shading, s.wireframe, s.background)
             }
@@ -628,169 +484,6 @@ impl Scene {
             None => {
                 let (tex, note) = Texture::load_noted(&resolve(base_dir, name))?;
                 Ok((tex, note.into_iter().collect()))
-            }
-        }
-    }
-
-    /// Checks everything a parse cannot: sizes, indices, the camera, finite numbers.
-    pub fn validate(&self, path: &str) -> Result<(), SceneError> {
-        let (w, h) = self.size();
-        if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
-            return Err(invalid(
-                path,
-                &format!("image size {w}x{h} is outside 1..={MAX_IMAGE_SIZE} pixels per side"),
-            ));
-        }
-        match self {
-            Scene::World(s) => {
-                s.camera
-                    .validate()
-                    .map_err(|e: CameraError| invalid(path, &format!("field `camera`: {e}")))?;
-                for (k, c) in s.quad.iter().enumerate() {
-                    if !c.position.is_finite() || !c.uv.is_finite() || !c.color.is_finite() {
-                        return Err(invalid(
-                            path,
-                            &format!("field `quad[{k}]` has a number that is not finite"),
-                        ));
-                    }
-                }
-                if !(s.tilt.pitch_deg.is_finite() && s.tilt.yaw_deg.is_finite()) {
-                    return Err(invalid(path, "field `tilt` is not finite"));
-                }
-            }
-            Scene::Model(s) => {
-                if let Some(cam) = &s.camera {
-                    cam.validate()
-                        .map_err(|e| invalid(path, &format!("field `camera`: {e}")))?;
-                }
-            }
-            Scene::Clip(s) => {
-                if let Some(k) = s.subdivide {
-                    let total = s.triangles.len() as u64 * u64::from(k) * u64::from(k);
-                    if k == 0 || total > MAX_SUBDIVIDED_TRIANGLES {
-                        return Err(invalid(
-                            path,
-                            &format!(
-                                "field `subdivide` is {k}: it must be at least 1 and give at most \
-                                 {MAX_SUBDIVIDED_TRIANGLES} triangles ({} triangles x {k}^2 = {total})",
-                                s.triangles.len()
-                            ),
-                        ));
-                    }
-                }
-                let n = s.vertices.len();
-                for (t, tri) in s.triangles.iter().enumerate() {
-                    if let Some(&bad) = tri.iter().find(|&&i| i as usize >= n) {
-                        return Err(invalid(
-                            path,
-                            &format!(
-                                "field `triangles[{t}]` uses vertex {bad}, but there are only {n} vertices"
-                            ),
-                        ));
-                    }
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// The matrix object -> world: rotation about the quad's centre (pitch about x, then yaw
-    /// about y). Identity for the clip form.
-    pub fn world_from_object(&self) -> DMat4 {
-        match self {
-            Scene::World(s) => {
-                let centre = s.quad.iter().map(|c| c.position).sum::<DVec3>() / 4.0;
-                DMat4::from_translation(centre)
-                    * DMat4::from_rotation_y(s.tilt.yaw_deg.to_radians())
-                    * DMat4::from_rotation_x(s.tilt.pitch_deg.to_radians())
-                    * DMat4::from_translation(-centre)
-            }
-            Scene::Clip(_) | Scene::Model(_) => DMat4::IDENTITY,
-        }
-    }
-
-    /// The mesh vertex indices of source triangle `i` (as in [`Scene::to_mesh`]), without
-    /// building the mesh.
-    pub fn triangle(&self, i: usize) -> Option<[u32; 3]> {
-        match self {
-            Scene::World(_) => [[0, 1, 2], [0, 2, 3]].get(i).copied(),
-            Scene::Clip(s) => match s.subdivide {
-                Some(n) if n > 1 => {
-                    let per_source = n as usize * n as usize;
-                    s.triangles.get(i / per_source)?;
-                    let base = (i / per_source) * ((n as usize + 1) * (n as usize + 2) / 2);
-                    Some(crate::raster::render::subdivided_triangle(
-                        n,
-                        base as u32,
-                        (i % per_source) as u32,
-                    ))
-                }
-                _ => s.triangles.get(i).copied(),
-            },
-            Scene::Model(s) => s.mesh.triangles.get(i).copied(),
-        }
-    }
-
-    /// The number of vertices and triangles of [`Scene::to_mesh`], without building it.
-    pub fn mesh_size(&self) -> (usize, usize) {
-        match self {
-            Scene::World(_) => (4, 2),
-            Scene::Clip(s) => (s.vertices.len(), s.triangles.len()),
-            Scene::Model(s) => (s.mesh.positions.len(), s.mesh.triangles.len()),
-        }
-    }
-
-    /// The mesh the rasterizer draws: vertices in clip space.
-    pub fn to_mesh(&self) -> ClipMesh {
-        match self {
-            Scene::World(s) => {
-                let aspect = f64::from(s.width) / f64::from(s.height);
-                let clip_from_object = s.camera.clip_from_world(aspect) * self.world_from_object();
-                ClipMesh {
-                    vertices: s
-                        .quad
-                        .iter()
-                        .map(|c| MeshVertex {
-                            clip: clip_from_object * c.position.extend(1.0),
-                            uv: c.uv,
-                            color: c.color,
-                        })
-                        .collect(),
-                    triangles: vec![[0, 1, 2], [0, 2, 3]],
-                }
-            }
-            Scene::Clip(s) => {
-                let mesh = ClipMesh {
-                    vertices: s
-                        .vertices
-                        .iter()
-                        .map(|v| MeshVertex {
-                            clip: v.clip,
-                            uv: v.uv,
-                            color: v.color,
-                        })
-                        .collect(),
-                    triangles: s.triangles.clone(),
-                };
-                match s.subdivide {
-                    Some(n) if n > 1 => mesh.subdivided(n),
-                    _ => mesh,
-                }
-            }
-            Scene::Model(s) => {
-                let aspect = f64::from(s.width) / f64::from(s.height);
-                let clip_from_world = s.camera().clip_from_world(aspect);
-                let m = &s.mesh;
-                ClipMesh {
-                    vertices: (0..m.positions.len())
-                        .map(|i| MeshVertex {
-                            clip: clip_from_world * m.positions[i].extend(1.0),
-                            uv: m.uvs[i],
-                            color: m.colors[i],
-                        })
-                        .collect(),
-                    triangles: m.triangles.clone(),
-                }
             }
         }
     }

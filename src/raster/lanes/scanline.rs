@@ -1,0 +1,158 @@
+//! The scanline rasterizer's lanes: spans per row, values stepped by their per-pixel increments.
+
+use super::*;
+
+/// The scanline rasterizer's lane path for rows `rows` (within the target band).
+pub fn scanline_triangle(
+    setup: &TriangleSetup,
+    rows: (u32, u32),
+    texture: &Texture,
+    shading: LaneShading,
+    target: &mut Target<'_>,
+) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if vector_path() {
+            if let Some(sampler) = avx2::VecSampler::new(texture, &shading) {
+                // SAFETY: the CPU supports AVX2, checked by `vector_path`.
+                unsafe {
+                    avx2::scanline_triangle(
+                        setup,
+                        rows,
+                        &sampler,
+                        wide_path(),
+                        shading.mode,
+                        target,
+                    )
+                };
+                return;
+            }
+            // SAFETY: as above.
+            unsafe { scanline_triangle_avx2(setup, rows, texture, shading, target) };
+            return;
+        }
+    }
+    scanline_triangle_impl(setup, rows, texture, shading, target);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+pub(super) fn scanline_triangle_avx2(
+    setup: &TriangleSetup,
+    rows: (u32, u32),
+    texture: &Texture,
+    shading: LaneShading,
+    target: &mut Target<'_>,
+) {
+    scanline_triangle_impl(setup, rows, texture, shading, target);
+}
+
+/// What the scanline lanes step: `u`, `v` (divided by w when perspective-correct), `1/w`
+/// and depth, each linear along a row.
+#[derive(Clone, Copy, Default)]
+pub(super) struct Stepped {
+    pub(super) u: f64,
+    pub(super) v: f64,
+    pub(super) inv_w: f64,
+    pub(super) depth: f64,
+}
+
+impl Stepped {
+    /// The stepped quantities for screen weights `l` (a point's weights, or their per-pixel
+    /// increments: the map is linear).
+    pub(super) fn from_weights(l: [f64; 3], c: &Constants, mode: Interpolation) -> Self {
+        let mut s = Self::default();
+        for k in 0..3 {
+            let scale = match mode {
+                Interpolation::Perspective => l[k] * c.inv_w[k],
+                Interpolation::Affine => l[k],
+            };
+            s.u += scale * c.u[k];
+            s.v += scale * c.v[k];
+            s.inv_w += l[k] * c.inv_w[k];
+            s.depth += l[k] * c.depth[k];
+        }
+        s
+    }
+
+    /// The increments per pixel along a row: the map applied to the screen weights'
+    /// increments [`WeightPlanes::step_x`] (as the per-pixel scanline rasterizer steps them).
+    pub(super) fn row_step(c: &Constants, mode: Interpolation) -> Self {
+        Self::from_weights(c.weights.step_x(), c, mode)
+    }
+
+    /// The values at the first pixel `x0` of a span of row `y`.
+    pub(super) fn span_start(c: &Constants, mode: Interpolation, x0: u32, y: u32) -> Self {
+        Self::from_weights(c.weights.at_pixel(x0, y), c, mode)
+    }
+
+    /// The values of a row's first eight pixels: lane k is `start` after k single steps.
+    pub(super) fn lanes(start: Self, step: &Self) -> [Self; LANES] {
+        let mut lanes = [start; LANES];
+        for k in 1..LANES {
+            let p = lanes[k - 1];
+            lanes[k] = Self {
+                u: p.u + step.u,
+                v: p.v + step.v,
+                inv_w: p.inv_w + step.inv_w,
+                depth: p.depth + step.depth,
+            };
+        }
+        lanes
+    }
+}
+
+#[inline(always)]
+pub(super) fn scanline_triangle_impl(
+    setup: &TriangleSetup,
+    (y_start, y_end): (u32, u32),
+    texture: &Texture,
+    shading: LaneShading,
+    target: &mut Target<'_>,
+) {
+    // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
+    // scanline code).
+    let mode = shading.mode;
+    let consts = Constants::new(setup, mode, false, LaneColor::Texture);
+    let sampler = Sampler::new(texture, shading.filter, shading.wrap);
+    let step = Stepped::row_step(&consts, mode);
+    let mut colors = [[0u8; 4]; LANES];
+    for y in y_start..=y_end {
+        let Some((x0, x1)) = row_span(setup, y) else {
+            continue;
+        };
+        let start = Stepped::span_start(&consts, mode, x0, y);
+        // Lane k holds pixel x0 + k; each chunk advances every lane by eight increments.
+        let mut lanes = Stepped::lanes(start, &step);
+        let n = LANES as f64;
+        let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
+        let mut x = x0;
+        while x <= x1 {
+            let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
+            let mut s = Samples::new();
+            for k in 0..LANES {
+                let l = &lanes[k];
+                s.ok[k] = k < lanes_in && l.inv_w > 0.0 && l.inv_w < f64::INFINITY;
+                let (u, v) = match mode {
+                    Interpolation::Perspective => {
+                        let w = 1.0 / l.inv_w;
+                        (l.u * w, l.v * w)
+                    }
+                    Interpolation::Affine => (l.u, l.v),
+                };
+                s.u[k] = u as f32;
+                s.v[k] = v as f32;
+                s.depth[k] = l.depth as f32;
+            }
+            sampler.sample(&s.u, &s.v, &mut colors);
+            write(target, x, y, &s, &colors);
+            for l in lanes.iter_mut() {
+                l.u += su;
+                l.v += sv;
+                l.inv_w += sw;
+                l.depth += sd;
+            }
+            x += LANES as u32;
+        }
+    }
+}

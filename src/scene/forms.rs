@@ -1,0 +1,216 @@
+//! The three forms of a scene file: a world quad, raw clip-space vertices, an OBJ model.
+
+use super::*;
+
+/// Corner of the quad in the world form.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Corner {
+    /// Position in object space (world space when the tilt is zero).
+    pub position: DVec3,
+    /// Texture coordinate (v = 0 is the texture's bottom row).
+    pub uv: Vec2,
+    /// RGB in [0, 1]; white when omitted.
+    #[serde(default = "white")]
+    pub color: Vec3,
+}
+
+fn white() -> Vec3 {
+    Vec3::ONE
+}
+
+/// A rotation of the whole quad about its centre: pitch about the x axis, then yaw about y.
+#[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Tilt {
+    /// Rotation about the x axis through the quad's centre, in degrees (applied first).
+    pub pitch_deg: f64,
+    /// Then rotation about the y axis through the centre, in degrees.
+    pub yaw_deg: f64,
+}
+
+pub(super) fn default_texture() -> String {
+    BuiltinTexture::UvGrid.name().to_string()
+}
+
+fn default_background() -> [u8; 4] {
+    DEFAULT_BACKGROUND
+}
+
+/// The world form.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WorldScene {
+    /// Image width in pixels (1..=16384).
+    pub width: u32,
+    /// Image height in pixels (1..=16384).
+    pub height: u32,
+    /// The camera (look-at and projection); default: at the origin looking down -z, 60°
+    /// perspective.
+    #[serde(default)]
+    pub camera: Camera,
+    /// Corners A, B, C, D.
+    pub quad: [Corner; 4],
+    /// Rotation of the quad about its centre (`world_from_object`).
+    #[serde(default)]
+    pub tilt: Tilt,
+    /// A built-in texture name (`uv-grid`, `checker`, `rgbw-2x2`, `noise`) or an image path
+    /// relative to the scene file.
+    #[serde(default = "default_texture")]
+    pub texture: String,
+    /// Texture filter (default bilinear).
+    #[serde(default)]
+    pub filter: Filter,
+    /// Texture wrap mode outside [0, 1] (default repeat).
+    #[serde(default)]
+    pub wrap: Wrap,
+    /// Interpolation: perspective-correct (default) or affine.
+    #[serde(default)]
+    pub mode: Interpolation,
+    /// What the colour shows (default the texture).
+    #[serde(default)]
+    pub shading: Shading,
+    /// Overlay the triangles' edges.
+    #[serde(default)]
+    pub wireframe: bool,
+    /// Colour of uncovered pixels, RGBA 0..=255.
+    #[serde(default = "default_background")]
+    pub background: [u8; 4],
+    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
+    #[serde(default, skip_serializing_if = "TieRule::is_default")]
+    pub tie_rule: TieRule,
+}
+
+/// A vertex of the raw clip-space form.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClipSceneVertex {
+    /// Position in clip space `(x, y, z, w)`; window `x = (x/w + 1) width/2`, `y = (1 - y/w)
+    /// height/2`, depth `(z/w + 1)/2`.
+    pub clip: DVec4,
+    /// Texture coordinate; `[0, 0]` when omitted.
+    #[serde(default)]
+    pub uv: Vec2,
+    /// RGB in [0, 1]; white when omitted.
+    #[serde(default = "white")]
+    pub color: Vec3,
+}
+
+/// The raw clip-space form.
+///
+/// The look fields (`texture` ... `background`) repeat those of [`WorldScene`] on purpose:
+/// serde's `flatten` cannot be combined with `deny_unknown_fields`, and rejecting unknown
+/// fields matters more (a typo must not pass silently).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClipScene {
+    /// Image width in pixels (1..=16384).
+    pub width: u32,
+    /// Image height in pixels (1..=16384).
+    pub height: u32,
+    /// The vertices, any number.
+    pub vertices: Vec<ClipSceneVertex>,
+    /// Index triples into `vertices`, drawn in order.
+    pub triangles: Vec<[u32; 3]>,
+    /// Split every triangle into `n x n` smaller ones on its barycentric grid
+    /// ([`ClipMesh::subdivided`]): the same surface, the same image, more triangles (the
+    /// dense-mesh benchmarks). 1 or absent: as given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub subdivide: Option<u32>,
+    /// A built-in texture name or an image path relative to the scene file.
+    #[serde(default = "default_texture")]
+    pub texture: String,
+    /// Texture filter (default bilinear).
+    #[serde(default)]
+    pub filter: Filter,
+    /// Texture wrap mode outside [0, 1] (default repeat).
+    #[serde(default)]
+    pub wrap: Wrap,
+    /// Interpolation: perspective-correct (default) or affine.
+    #[serde(default)]
+    pub mode: Interpolation,
+    /// What the colour shows (default the texture).
+    #[serde(default)]
+    pub shading: Shading,
+    /// Overlay the triangles' edges.
+    #[serde(default)]
+    pub wireframe: bool,
+    /// Colour of uncovered pixels, RGBA 0..=255.
+    #[serde(default = "default_background")]
+    pub background: [u8; 4],
+    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
+    #[serde(default, skip_serializing_if = "TieRule::is_default")]
+    pub tie_rule: TieRule,
+}
+
+/// The model form: an OBJ file seen by a camera.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelScene {
+    /// Image width in pixels (1..=16384).
+    pub width: u32,
+    /// Image height in pixels (1..=16384).
+    pub height: u32,
+    /// When omitted, a camera that frames the model ([`Camera::framing`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub camera: Option<Camera>,
+    /// The OBJ file, relative to the scene file.
+    pub model: String,
+    /// A built-in texture or image path; when omitted, the model's MTL diffuse texture, else
+    /// `uv-grid`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub texture: Option<String>,
+    /// Texture filter (default bilinear).
+    #[serde(default)]
+    pub filter: Filter,
+    /// Texture wrap mode outside [0, 1] (default repeat).
+    #[serde(default)]
+    pub wrap: Wrap,
+    /// Interpolation: perspective-correct (default) or affine.
+    #[serde(default)]
+    pub mode: Interpolation,
+    /// When omitted: the texture if the model has uvs, else the vertex (material) colour.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shading: Option<Shading>,
+    /// Overlay the triangles' edges.
+    #[serde(default)]
+    pub wireframe: bool,
+    /// Colour of uncovered pixels, RGBA 0..=255.
+    #[serde(default = "default_background")]
+    pub background: [u8; 4],
+    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
+    #[serde(default, skip_serializing_if = "TieRule::is_default")]
+    pub tie_rule: TieRule,
+    /// The loaded model (filled when the scene is loaded).
+    #[serde(skip)]
+    pub mesh: Arc<ModelMesh>,
+}
+
+impl ModelScene {
+    /// A scene showing an OBJ file with the default framing camera.
+    pub fn for_model(model_path: &Path, width: u32, height: u32) -> Result<Self, SceneError> {
+        Ok(Self {
+            width,
+            height,
+            camera: None,
+            model: model_path.display().to_string(),
+            texture: None,
+            filter: Filter::default(),
+            wrap: Wrap::default(),
+            mode: Interpolation::default(),
+            shading: None,
+            wireframe: false,
+            background: DEFAULT_BACKGROUND,
+            tie_rule: TieRule::default(),
+            mesh: Arc::new(ModelMesh::load(model_path)?),
+        })
+    }
+
+    /// The camera: the given one, or one framing the model.
+    pub fn camera(&self) -> Camera {
+        self.camera.unwrap_or_else(|| {
+            let (centre, radius) = self.mesh.bounding_sphere();
+            Camera::framing(centre, radius)
+        })
+    }
+}
