@@ -148,7 +148,7 @@ fn notes_are_shown_and_the_file_opens() {
     assert!(matches!(h.state().state().scene, Scene::Model(_)));
     assert_eq!(
         h.state().state().options().shading,
-        barylab::raster::Shading::VertexColor
+        barylab::raster::Shading::Lambert
     );
 
     drop_file(&mut h, &data("missing_mtl.obj"));
@@ -178,7 +178,7 @@ fn notes_are_shown_and_the_file_opens() {
     );
     assert_eq!(
         h.state().state().options().shading,
-        barylab::raster::Shading::VertexColor
+        barylab::raster::Shading::Lambert
     );
 }
 

@@ -166,7 +166,7 @@ fn a_model_without_uvs_gets_a_note_that_matches_its_shading() {
     let out = dir.path().join("out.png");
     let notes = succeeds(&["render", &data("no_uv.obj"), "-o", s(&out)]);
     assert!(
-        notes.contains("no texture coordinates") && notes.contains("shading by vertex colour"),
+        notes.contains("no texture coordinates") && notes.contains("lit by a headlight"),
         "{notes}"
     );
     let notes = succeeds(&[
