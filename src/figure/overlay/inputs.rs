@@ -1,0 +1,57 @@
+//! What an overlay is built from: the handles, the marked pixels with their triangles, and
+//! the view's settings ([`OverlayInput`]).
+
+use glam::DVec2;
+
+use crate::raster::Interpolation;
+
+/// A vertex handle as the overlay shows it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HandleMark {
+    pub index: usize,
+    /// Window position, or `None` when the vertex is behind the camera.
+    pub window: Option<DVec2>,
+    pub w: f64,
+    pub active: bool,
+}
+
+/// The three vertices (unsnapped window positions, in triangle order) and mesh indices of the
+/// triangle a marked pixel's weights refer to, with the weights. A vertex the clipper made has
+/// no mesh index.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriangleMark {
+    pub vertices: [DVec2; 3],
+    pub mesh_indices: [Option<usize>; 3],
+    /// Screen-space weights of the three vertices at the pixel centre.
+    pub weights: [f64; 3],
+}
+
+/// A marked (hovered or pinned) pixel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelMark {
+    pub pixel: [u32; 2],
+    pub triangle: Option<TriangleMark>,
+}
+
+/// What the overlay of one view shows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OverlayInput {
+    /// Rendered image size in pixels.
+    pub size: [u32; 2],
+    /// Display pixels per rendered pixel.
+    pub pixel_size: u32,
+    /// Display pixels per point (sizes in points are this many display pixels).
+    pub pixels_per_point: f32,
+    /// The mode this view shows (`None` for the difference view).
+    pub mode: Option<Interpolation>,
+    pub show_grid: bool,
+    pub handles: Vec<HandleMark>,
+    pub hover: Option<PixelMark>,
+    pub pin: Option<PixelMark>,
+    /// Draw the hovered pixel's sub-triangles.
+    pub sub_areas: bool,
+    /// Wipe line x in canvas pixels, with the modes left and right of it.
+    pub wipe: Option<(f64, Interpolation, Interpolation)>,
+    /// Colour bar top value in texels (difference view).
+    pub color_bar: Option<f32>,
+}
