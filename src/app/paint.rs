@@ -135,8 +135,17 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
             } => {
                 // Placed as the figure export places it (flipped to the other side of its
                 // point if it sticks out, then pushed inside), measured with egui's galley.
-                let galley =
-                    painter.layout_no_wrap(text.clone(), FontId::proportional(*size), color(*c));
+                let lay = |s: f32| {
+                    painter.layout_no_wrap(text.clone(), FontId::proportional(s), color(*c))
+                };
+                // A label wider than its view shrinks to fit it.
+                let pad = if background.is_some() {
+                    LABEL_PAD[0]
+                } else {
+                    0.0
+                };
+                let width = lay(*size).size().x;
+                let galley = lay(size * figure_text::fit(width, 2.0 * pad, to_box(clip)));
                 let outer = figure_text::padded(
                     [galley.size().x, galley.size().y],
                     background.is_some(),
@@ -151,6 +160,36 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                     to_box(clip),
                 );
                 draw_label(&painter, to_rect(b), galley, *c, *background);
+            }
+            Shape::LabelPair {
+                at,
+                offset_y,
+                gap,
+                texts,
+                size,
+                color: c,
+                background,
+            } => {
+                // Placed as the figure export places them, measured with egui's galleys.
+                let lay = |s: f32| {
+                    texts.each_ref().map(|x| {
+                        painter.layout_no_wrap(x.clone(), FontId::proportional(s), color(*c))
+                    })
+                };
+                let has_box = background.is_some();
+                let pad = if has_box { LABEL_PAD[0] } else { 0.0 };
+                let widths = lay(*size).map(|g| g.size().x);
+                let fit = figure_text::pair_fit(widths, pad, *gap, to_box(clip));
+                let galleys = lay(size * fit);
+                let outer = galleys
+                    .each_ref()
+                    .map(|g| figure_text::padded([g.size().x, g.size().y], has_box, 1.0));
+                let base = t.to_screen(*at);
+                let (boxes, _) =
+                    figure_text::place_pair([base.x, base.y + offset_y], *gap, outer, to_box(clip));
+                for (b, g) in boxes.into_iter().zip(galleys) {
+                    draw_label(&painter, to_rect(b), g, *c, *background);
+                }
             }
             Shape::PixelGrid {
                 width,

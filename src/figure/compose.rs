@@ -3,6 +3,7 @@
 
 use crate::i18n::Lang;
 
+use super::caption::{self, Caption};
 use super::options::WHITE;
 use super::overlay::{self, HandleMark, Overlay, OverlayInput};
 use super::{
@@ -87,6 +88,8 @@ pub struct Figure {
     pub canvas_size: [u32; 2],
     pub background: Background,
     pub views: Vec<FigureView>,
+    /// The caption below the views ([`FigureOptions::caption`]), when a pixel is marked.
+    pub caption: Option<Caption>,
     /// The pinned pixel's trace (its derivation), made in the scene's mode.
     pub pinned: Option<PixelTrace>,
     /// The hovered pixel's trace.
@@ -176,6 +179,32 @@ impl Figure {
         let trace = |p: Option<[u32; 2]>| p.map(|[x, y]| prober.pixel(x, y)).transpose();
         let pinned = trace(o.pinned)?;
         let hovered = trace(o.hovered)?;
+
+        // The caption below the views (and their bottom margin), as wide as the views.
+        let caption = o
+            .caption
+            .then(|| pinned.as_ref().or(hovered.as_ref()))
+            .flatten()
+            .map(|t| {
+                caption::layout(
+                    t,
+                    [w, h],
+                    lang,
+                    [m as f32, total_h as f32],
+                    (total_w - 2 * m) as f32,
+                    k,
+                )
+            });
+        let total_h = match &caption {
+            Some(c) => total_h + c.height().ceil() as u64 + m,
+            None => total_h,
+        };
+        if total_h * u64::from(o.scale) > u64::from(MAX_FIGURE_SIZE) {
+            return Err(FigureError::TooLarge {
+                width: px_w,
+                height: total_h * u64::from(o.scale),
+            });
+        }
 
         // On a white figure (for print) the image's background is white too: no dark block
         // around the quad on paper.
@@ -273,10 +302,20 @@ impl Figure {
                 },
             };
             let origin = [(m + i as u64 * (view_w + gap)) as u32, (m + strip) as u32];
+            // The margin around the view, but between two views only half the gap each: one
+            // view's labels never reach over the other's.
+            let (left, right) = (
+                if i == 0 { m as f32 } else { gap as f32 / 2.0 },
+                if i + 1 == n as usize {
+                    m as f32
+                } else {
+                    gap as f32 / 2.0
+                },
+            );
             let clip = [
-                (u64::from(origin[0]) - m) as f32,
+                origin[0] as f32 - left,
                 (u64::from(origin[1]) - strip - m) as f32,
-                (u64::from(origin[0]) + view_w + m) as f32,
+                (u64::from(origin[0]) + view_w) as f32 + right,
                 (u64::from(origin[1]) + view_h + m) as f32,
             ];
             views.push(FigureView {
@@ -295,6 +334,7 @@ impl Figure {
             canvas_size: [w, h],
             background: o.background,
             views,
+            caption,
             pinned,
             hovered,
             lang,

@@ -10,6 +10,7 @@
 //!   app paints it with egui, [`svg`] writes it as SVG).
 //! - [`text`]: the overlay font, text measurement and label placement (shared with the app).
 //! - [`svg`], [`png`]: the figure as an SVG document, and that document rasterized by resvg.
+//! - [`caption`]: the optional caption with the marked pixel's key numbers.
 //! - [`heatmap`]: the difference view's colours.
 //! - [`export`]: writing a figure's files (PNG, SVG, derivation, scene) under fresh names.
 //!
@@ -21,6 +22,7 @@
 //! `s * pixel_size` square PNG pixels each.
 
 pub mod bounds;
+pub mod caption;
 mod compare;
 mod compose;
 pub mod export;

@@ -44,6 +44,9 @@ pub struct FigureOptions {
     /// times the display's scale). Labels, lines, handles, the title strip and the margins
     /// are this much larger, so the figure looks as the canvas did on screen.
     pub overlay_scale: f32,
+    /// A caption below the views with the pinned (else hovered) pixel's key numbers
+    /// ([`super::caption`]); none when no pixel is marked.
+    pub caption: bool,
 }
 
 impl Default for FigureOptions {
@@ -60,6 +63,7 @@ impl Default for FigureOptions {
             scale: 1,
             background: Background::Transparent,
             overlay_scale: 1.0,
+            caption: false,
         }
     }
 }
@@ -116,6 +120,9 @@ impl FigureOptions {
         }
         if self.background == Background::White {
             push("--background", "white".to_string());
+        }
+        if self.caption {
+            a.push("--caption".to_string());
         }
         for (shown, flag) in [
             (self.show_grid, "--no-grid"),

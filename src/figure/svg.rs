@@ -12,7 +12,7 @@ use base64::Engine;
 use glam::DVec2;
 
 use super::overlay::{Anchor, LABEL_BG, LABEL_TEXT, Overlay, Rgba, Shape, Stroke};
-use super::text::{self, Box2, FONT_FAMILY, FONT_WEIGHT, LABEL_PAD, LABEL_ROUNDING};
+use super::text::{self, Box2, FONT_FAMILY, LABEL_PAD, LABEL_ROUNDING};
 use super::{Background, Figure, FigureError, FigureView};
 
 /// Dash and gap lengths of dashed lines, in points (as on screen).
@@ -105,7 +105,8 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
             v.origin[0], v.origin[1]
         );
     }
-    s.push_str("</defs>\n");
+    let mut head = std::mem::take(&mut s);
+    let mut glyphs = Glyphs::default();
     if layers.images && figure.background == Background::White {
         let _ = writeln!(s, r##"<rect width="{w}" height="{h}" fill="#ffffff"/>"##);
     }
@@ -114,17 +115,14 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
             image_element(&mut s, figure, v)?;
         }
         if layers.overlays {
-            let _ = writeln!(
-                s,
-                r#"<g clip-path="url(#view{i})" font-family="{}" font-weight="{FONT_WEIGHT}">"#,
-                font_families(figure.lang)
-            );
+            let _ = writeln!(s, r#"<g clip-path="url(#view{i})">"#);
             let t = Transform {
                 origin: [f64::from(v.origin[0]), f64::from(v.origin[1])],
                 scale: f64::from(figure.pixel_size),
             };
             overlay(
                 &mut s,
+                &mut glyphs,
                 &super::bounds::bounded(&v.overlay, figure.canvas_size),
                 t,
                 v.clip,
@@ -134,8 +132,27 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
             s.push_str("</g>\n");
         }
     }
+    if layers.overlays
+        && let Some(c) = &figure.caption
+    {
+        for (i, line) in c.lines.iter().enumerate() {
+            label(
+                &mut s,
+                &mut glyphs,
+                c.line_box(i),
+                line,
+                c.size,
+                super::caption::CAPTION_INK,
+                None,
+                figure.overlay_scale,
+            );
+        }
+    }
     s.push_str("</svg>\n");
-    Ok(s)
+    glyphs.defs(&mut head);
+    head.push_str("</defs>\n");
+    head.push_str(&s);
+    Ok(head)
 }
 
 fn image_element(s: &mut String, figure: &Figure, v: &FigureView) -> Result<(), FigureError> {
@@ -263,9 +280,15 @@ fn rect(s: &mut String, b: Box2, rounding: f32, attrs: &str) {
     );
 }
 
-/// A label: its background box (if any) and its text, in the box `b`.
+/// A label: its background box (if any) and its text, in the box `b`. The text is drawn as
+/// the overlay font's glyph outlines ([`text::outline`]), so it looks the same, and fits the
+/// box measured with the same font ([`text::measure`]), in every viewer (browsers, Inkscape,
+/// librsvg, resvg) whatever fonts it has. The group carries the text as its `aria-label`
+/// and `<title>` (for search and screen readers) and its box as `data-box` (x y width
+/// height).
 fn label(
     s: &mut String,
+    glyphs: &mut Glyphs,
     b: Box2,
     text: &str,
     size: f32,
@@ -278,28 +301,122 @@ fn label(
     } else {
         [0.0, 0.0]
     };
+    let t = escape(text);
+    let _ = writeln!(
+        s,
+        r#"<g class="label" aria-label="{t}" data-box="{} {} {} {}"><title>{t}</title>"#,
+        n(b[0]),
+        n(b[1]),
+        n(b[2] - b[0]),
+        n(b[3] - b[1]),
+    );
     if let Some(bg) = background {
         rect(s, b, LABEL_ROUNDING * k, &fill(bg));
     }
-    let ([width, _], ascent) = text::measure(text, size);
-    // textLength: a viewer without the Ubuntu font stretches or squeezes its fallback font
-    // to the measured width, so the text still fits its box.
-    let _ = writeln!(
-        s,
-        r#"<text x="{}" y="{}" font-size="{}" textLength="{}" lengthAdjust="spacingAndGlyphs" {} xml:space="preserve">{}</text>"#,
-        n(b[0] + pad[0]),
-        n(b[1] + pad[1] + ascent),
-        n(size),
-        n(width),
-        fill(color),
-        escape(text)
-    );
+    let (_, ascent) = text::measure(text, size);
+    let origin = [b[0] + pad[0], b[1] + pad[1] + ascent];
+    let placed = text::glyphs(text, size);
+    if !placed.is_empty() {
+        let _ = writeln!(s, "<g {}>", fill(color));
+        for g in placed {
+            if let Some(id) = glyphs.id(g.font, g.id) {
+                let _ = writeln!(
+                    s,
+                    r##"<use xlink:href="#{id}" transform="matrix({} 0 0 -{} {} {})"/>"##,
+                    fine(g.per_unit),
+                    fine(g.per_unit),
+                    n(origin[0] + g.x),
+                    n(origin[1])
+                );
+            }
+        }
+        s.push_str("</g>\n");
+    }
+    s.push_str("</g>\n");
+}
+
+/// The glyph outlines a document uses, each defined once (in font units, y up) and drawn
+/// with `<use>` wherever a label has it.
+#[derive(Default)]
+struct Glyphs {
+    /// Glyph and its outline's path data (`None`: no outline, nothing to draw).
+    used: std::collections::BTreeMap<(text::GlyphFont, u16), Option<String>>,
+}
+
+impl Glyphs {
+    /// The element id of a glyph's outline, or `None` for a glyph without one (a space).
+    fn id(&mut self, font: text::GlyphFont, glyph: u16) -> Option<String> {
+        let d = self.used.entry((font, glyph)).or_insert_with(|| {
+            Some(glyph_path(&text::glyph_outline(font, glyph))).filter(|d| !d.is_empty())
+        });
+        d.as_ref().map(|_| glyph_id(font, glyph))
+    }
+
+    /// The `<path>` definitions of the glyphs used, for the document's `<defs>`.
+    fn defs(&self, s: &mut String) {
+        for ((font, glyph), d) in &self.used {
+            if let Some(d) = d {
+                let _ = writeln!(s, r#"<path id="{}" d="{d}"/>"#, glyph_id(*font, *glyph));
+            }
+        }
+    }
+}
+
+/// The element id of a glyph's outline: `g0-N` for glyph N of the overlay font, `g1-N` of
+/// the CJK font.
+fn glyph_id(font: text::GlyphFont, glyph: u16) -> String {
+    let f = match font {
+        text::GlyphFont::Overlay => 0,
+        text::GlyphFont::Cjk => 1,
+    };
+    format!("g{f}-{glyph}")
+}
+
+/// A scale factor for SVG: six decimals, no trailing zeros (a glyph's points per font unit
+/// is about 0.02; three decimals would lose a few percent of its size).
+fn fine(v: f32) -> String {
+    let s = format!("{v:.6}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// SVG path data of a glyph outline: a new subpath wherever a curve does not start where the
+/// previous one ended.
+fn glyph_path(curves: &[text::Curve]) -> String {
+    let p = |q: [f32; 2]| format!("{} {}", n(q[0]), n(q[1]));
+    let mut d = String::new();
+    let mut at: Option<[f32; 2]> = None;
+    for c in curves {
+        if at != Some(c.start()) {
+            if at.is_some() {
+                d.push('Z');
+            }
+            let _ = write!(d, "M{}", p(c.start()));
+        }
+        let _ = match c {
+            text::Curve::Line([_, b]) => write!(d, "L{}", p(*b)),
+            text::Curve::Quad([_, b, c]) => write!(d, "Q{} {}", p(*b), p(*c)),
+            text::Curve::Cubic([_, b, c, e]) => write!(d, "C{} {} {}", p(*b), p(*c), p(*e)),
+        };
+        at = Some(c.end());
+    }
+    if at.is_some() {
+        d.push('Z');
+    }
+    d
 }
 
 /// The overlay's shapes as SVG elements.
 /// The overlay's shapes (sizes already scaled) as SVG elements; `k` scales the fixed sizes
 /// of the drawing itself (label padding, dashes, the colour bar's frame and text).
-fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_clip: &str, k: f32) {
+fn overlay(
+    s: &mut String,
+    glyphs: &mut Glyphs,
+    overlay: &Overlay,
+    t: Transform,
+    clip: Box2,
+    image_clip: &str,
+    k: f32,
+) {
     // Lines and areas stay on the image (a clipped triangle's outline can reach far off it);
     // handles and labels may use the margin around it. Consecutive shapes on the image share
     // one clipped group, so the painting order is kept.
@@ -396,10 +513,40 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                 color,
                 background,
             } => {
+                // A label wider than its view shrinks to fit it.
+                let pad = if background.is_some() {
+                    LABEL_PAD[0] * k
+                } else {
+                    0.0
+                };
+                let width = text::measure(txt, *size).0[0];
+                let size = &(size * text::fit(width, 2.0 * pad, clip));
                 let (text_size, _) = text::measure(txt, *size);
                 let outer = text::padded(text_size, background.is_some(), k);
                 let b = text::place_label(t.point(*at), *offset, *anchor, outer, clip);
-                label(s, b, txt, *size, *color, *background, k);
+                label(s, glyphs, b, txt, *size, *color, *background, k);
+            }
+            Shape::LabelPair {
+                at,
+                offset_y,
+                gap,
+                texts,
+                size,
+                color,
+                background,
+            } => {
+                let p = t.point(*at);
+                let has_box = background.is_some();
+                let widths = texts.each_ref().map(|x| text::measure(x, *size).0[0]);
+                let pad = if has_box { LABEL_PAD[0] * k } else { 0.0 };
+                let size = size * text::pair_fit(widths, pad, *gap, clip);
+                let outer = texts
+                    .each_ref()
+                    .map(|x| text::padded(text::measure(x, size).0, has_box, k));
+                let (boxes, _) = text::place_pair([p[0], p[1] + offset_y], *gap, outer, clip);
+                for (b, txt) in boxes.iter().zip(texts) {
+                    label(s, glyphs, *b, txt, size, *color, *background, k);
+                }
             }
             Shape::PixelGrid {
                 width,
@@ -419,6 +566,7 @@ fn overlay(s: &mut String, overlay: &Overlay, t: Transform, clip: Box2, image_cl
                 let min = [p[0] + offset[0], p[1] + offset[1]];
                 color_bar(
                     s,
+                    glyphs,
                     [min[0], min[1], min[0] + size[0], min[1] + size[1]],
                     colors,
                     labels,
@@ -484,6 +632,7 @@ fn grid(
 /// colour at the bottom to the last at the top, a white frame, ticks with labels, a title.
 fn color_bar(
     s: &mut String,
+    glyphs: &mut Glyphs,
     r: Box2,
     colors: &[Rgba],
     labels: &[(f32, String)],
@@ -538,14 +687,14 @@ fn color_bar(
         );
         let (extent, _) = text::measure(l, size);
         let b = Anchor::LeftCenter.box_at([r[2] + COLOR_BAR_LABEL_GAP * k, y], extent);
-        label(s, b, l, size, LABEL_TEXT, None, k);
+        label(s, glyphs, b, l, size, LABEL_TEXT, None, k);
     }
     let (extent, _) = text::measure(title, size);
     let b = Anchor::CenterBottom.box_at(
         [(r[0] + r[2]) / 2.0, r[1] - COLOR_BAR_LABEL_GAP * k],
         extent,
     );
-    label(s, b, title, size, LABEL_TEXT, None, k);
+    label(s, glyphs, b, title, size, LABEL_TEXT, None, k);
 }
 
 #[cfg(test)]

@@ -112,20 +112,15 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
             fill: [255, 255, 255, 255],
             stroke: Some(Stroke::new(2.0, SHADOW)),
         });
-        for (mode, anchor, dx) in [
-            (left, Anchor::RightBottom, -10.0),
-            (right, Anchor::LeftBottom, 10.0),
-        ] {
-            shapes.push(Shape::Text {
-                at: DVec2::new(x, 0.0),
-                offset: [dx, -TITLE_GAP],
-                anchor,
-                text: mode_label_in(mode, lang),
-                size: TEXT_BADGE,
-                color: LABEL_TEXT,
-                background: Some(LABEL_BG),
-            });
-        }
+        shapes.push(Shape::LabelPair {
+            at: DVec2::new(x, 0.0),
+            offset_y: -TITLE_GAP,
+            gap: WIPE_LABEL_GAP,
+            texts: [mode_label_in(left, lang), mode_label_in(right, lang)],
+            size: TEXT_BADGE,
+            color: LABEL_TEXT,
+            background: Some(LABEL_BG),
+        });
     } else if let Some(mode) = input.mode {
         shapes.push(Shape::Text {
             at: DVec2::ZERO,

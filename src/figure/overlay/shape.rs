@@ -73,6 +73,27 @@ pub enum Shape {
         color: Rgba,
         background: Option<Rgba>,
     },
+    /// Two labels side by side (the wipe line's modes): `texts[0]` left of canvas x `at.x`,
+    /// `texts[1]` right of it, `gap` points apart, their bottoms `offset_y` points below
+    /// `at.y`. Placed with [`place_pair`](crate::figure::text::place_pair): they never overlap,
+    /// move together to stay inside the view's clip, and shrink together when they do not
+    /// fit side by side at `size`.
+    LabelPair {
+        /// Canvas position of the point between the labels.
+        at: DVec2,
+        /// Points from `at.y` to the labels' bottom edge (negative: above).
+        offset_y: f32,
+        /// Points between the two boxes.
+        gap: f32,
+        /// The left and the right label.
+        texts: [String; 2],
+        /// Text size in points.
+        size: f32,
+        /// Text colour.
+        color: Rgba,
+        /// Box colour.
+        background: Option<Rgba>,
+    },
     /// The pixel grid of a `width` x `height` image, and optionally a dot at every pixel centre.
     PixelGrid {
         width: u32,
@@ -163,6 +184,23 @@ impl Overlay {
                     offset: offset.map(|v| v * k),
                     anchor,
                     text,
+                    size: size * k,
+                    color,
+                    background,
+                },
+                Shape::LabelPair {
+                    at,
+                    offset_y,
+                    gap,
+                    texts,
+                    size,
+                    color,
+                    background,
+                } => Shape::LabelPair {
+                    at,
+                    offset_y: offset_y * k,
+                    gap: gap * k,
+                    texts,
                     size: size * k,
                     color,
                     background,

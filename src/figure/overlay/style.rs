@@ -47,6 +47,9 @@ pub const TEXT_SMALL: f32 = 16.0;
 pub const TITLE_GAP: f32 = 6.0;
 pub const TITLE_STRIP: f32 = 44.0;
 
+/// Points between the wipe line's two mode labels.
+pub const WIPE_LABEL_GAP: f32 = 20.0;
+
 /// Pixel sizes (display pixels per rendered pixel) from which the grid and sample dots show.
 pub const GRID_FROM_PIXEL_SIZE: u32 = 6;
 pub const DOTS_FROM_PIXEL_SIZE: u32 = 10;
