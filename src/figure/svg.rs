@@ -284,8 +284,8 @@ fn rect(s: &mut String, b: Box2, rounding: f32, attrs: &str) {
 /// the overlay font's glyph outlines ([`text::outline`]), so it looks the same, and fits the
 /// box measured with the same font ([`text::measure`]), in every viewer (browsers, Inkscape,
 /// librsvg, resvg) whatever fonts it has. The group carries the text as its `aria-label`
-/// and `<title>` (for search and screen readers) and its box as `data-box` (x y width
-/// height).
+/// and `<title>` (for search and screen readers), its size as `font-size` and its box as
+/// `data-box` (x y width height).
 fn label(
     s: &mut String,
     glyphs: &mut Glyphs,
@@ -304,7 +304,8 @@ fn label(
     let t = escape(text);
     let _ = writeln!(
         s,
-        r#"<g class="label" aria-label="{t}" data-box="{} {} {} {}"><title>{t}</title>"#,
+        r#"<g class="label" aria-label="{t}" font-size="{}" data-box="{} {} {} {}"><title>{t}</title>"#,
+        fine(size),
         n(b[0]),
         n(b[1]),
         n(b[2] - b[0]),

@@ -374,8 +374,10 @@ pub fn fit(text_width: f32, fixed: f32, clip: Box2) -> f32 {
     }
 }
 
-/// The smallest factor [`pair_fit`] shrinks a label pair by.
-pub const PAIR_MIN_FIT: f32 = 0.25;
+/// The smallest factor [`fit`] shrinks a label by: small enough that labels on the smallest
+/// views still fit (never overlapping, never leaving their view); text that small is only
+/// there to be readable when zoomed in.
+pub const PAIR_MIN_FIT: f32 = 0.02;
 
 /// `b` moved as little as needed to lie [`LABEL_INSET`] inside `bounds`, if it fits.
 pub fn push_inside(b: Box2, bounds: Box2) -> Box2 {
