@@ -53,6 +53,28 @@ fn to_box(r: Rect) -> figure_text::Box2 {
 /// Paints the overlay, clipped to `clip`.
 pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &Overlay) {
     let painter = painter.with_clip_rect(clip);
+    // The label boxes placed so far: a label goes where it covers none of them if it can.
+    // The handles are there from the start.
+    let mut placed: Vec<figure_text::Box2> = overlay
+        .shapes
+        .iter()
+        .filter_map(|shape| match shape {
+            Shape::Circle { centre, radius, .. }
+                if *radius >= crate::figure::svg::MIN_OBSTACLE_RADIUS =>
+            {
+                let c = t.to_screen(*centre);
+                Some(figure_text::handle_obstacle([c.x, c.y], *radius))
+            }
+            Shape::ColorBar {
+                at, offset, size, ..
+            } => {
+                let min = t.to_screen(*at) + egui::vec2(offset[0], offset[1]);
+                let r = [min.x, min.y, min.x + size[0], min.y + size[1]];
+                Some(crate::figure::svg::color_bar_back(r, 1.0))
+            }
+            _ => None,
+        })
+        .collect();
     for shape in &overlay.shapes {
         match shape {
             Shape::Polygon {
@@ -152,13 +174,17 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                     1.0,
                 );
                 let base = t.to_screen(*at);
-                let b = figure_text::place_label(
-                    [base.x, base.y],
-                    *offset,
-                    *anchor,
-                    outer,
-                    to_box(clip),
-                );
+                // A label with a box keeps clear of the others; a bare letter (a handle's
+                // name) stays where it is.
+                let (p, bounds) = ([base.x, base.y], to_box(clip));
+                let b = if background.is_some() {
+                    figure_text::place_label_avoiding(p, *offset, *anchor, outer, bounds, &placed)
+                } else {
+                    figure_text::place_label(p, *offset, *anchor, outer, bounds)
+                };
+                if background.is_some() {
+                    placed.push(b);
+                }
                 draw_label(&painter, to_rect(b), galley, *c, *background);
             }
             Shape::LabelPair {
@@ -187,6 +213,7 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 let base = t.to_screen(*at);
                 let (boxes, _) =
                     figure_text::place_pair([base.x, base.y + offset_y], *gap, outer, to_box(clip));
+                placed.extend(boxes);
                 for (b, g) in boxes.into_iter().zip(galleys) {
                     draw_label(&painter, to_rect(b), g, *c, *background);
                 }
@@ -296,10 +323,7 @@ fn paint_color_bar(
     title: &str,
 ) {
     // Room for the title above and the labels to the right.
-    let back = Rect::from_min_max(
-        rect.min - egui::vec2(12.0, 40.0),
-        rect.max + egui::vec2(56.0, 12.0),
-    );
+    let back = to_rect(crate::figure::svg::color_bar_back(to_box(rect), 1.0));
     painter.rect_filled(back, 6.0, color(crate::figure::overlay::LABEL_BG));
     let n = colors.len().saturating_sub(1).max(1);
     let mut mesh = Mesh::default();

@@ -17,6 +17,9 @@ use super::{Background, Figure, FigureError, FigureView};
 
 /// Dash and gap lengths of dashed lines, in points (as on screen).
 pub const DASH: (f32, f32) = (6.0, 4.0);
+/// Points (times the overlay scale): circles at least this large are handles, which labels
+/// keep clear of.
+pub const MIN_OBSTACLE_RADIUS: f32 = 8.0;
 /// Points: corner radius of the colour bar's background.
 const COLOR_BAR_ROUNDING: f32 = 6.0;
 /// Points: the colour bar's background reaches this far left/above and right/below the bar
@@ -422,6 +425,28 @@ fn overlay(
     // handles and labels may use the margin around it. Consecutive shapes on the image share
     // one clipped group, so the painting order is kept.
     let mut in_image_group = false;
+    // The label boxes placed so far: a label goes where it covers none of them if it can.
+    // The handles are there from the start.
+    let mut placed: Vec<Box2> = overlay
+        .shapes
+        .iter()
+        .filter_map(|shape| match shape {
+            Shape::Circle { centre, radius, .. } if *radius >= MIN_OBSTACLE_RADIUS * k => {
+                Some(text::handle_obstacle(t.point(*centre), *radius))
+            }
+            Shape::ColorBar {
+                at, offset, size, ..
+            } => {
+                let p = t.point(*at);
+                let min = [p[0] + offset[0], p[1] + offset[1]];
+                Some(color_bar_back(
+                    [min[0], min[1], min[0] + size[0], min[1] + size[1]],
+                    k,
+                ))
+            }
+            _ => None,
+        })
+        .collect();
     for shape in &overlay.shapes {
         let on_image = matches!(
             shape,
@@ -524,7 +549,16 @@ fn overlay(
                 let size = &(size * text::fit(width, 2.0 * pad, clip));
                 let (text_size, _) = text::measure(txt, *size);
                 let outer = text::padded(text_size, background.is_some(), k);
-                let b = text::place_label(t.point(*at), *offset, *anchor, outer, clip);
+                // A label with a box keeps clear of the others; a bare letter (a handle's
+                // name) stays where it is.
+                let b = if background.is_some() {
+                    text::place_label_avoiding(t.point(*at), *offset, *anchor, outer, clip, &placed)
+                } else {
+                    text::place_label(t.point(*at), *offset, *anchor, outer, clip)
+                };
+                if background.is_some() {
+                    placed.push(b);
+                }
                 label(s, glyphs, b, txt, *size, *color, *background, k);
             }
             Shape::LabelPair {
@@ -548,6 +582,7 @@ fn overlay(
                 for (b, txt) in boxes.iter().zip(texts) {
                     label(s, glyphs, *b, txt, size, *color, *background, k);
                 }
+                placed.extend(boxes);
             }
             Shape::PixelGrid {
                 width,
@@ -629,6 +664,16 @@ fn grid(
     }
 }
 
+/// The colour bar's background box for the bar `r` (its title above, its labels right).
+pub fn color_bar_back(r: Box2, k: f32) -> Box2 {
+    [
+        r[0] - COLOR_BAR_BACK_MIN[0] * k,
+        r[1] - COLOR_BAR_BACK_MIN[1] * k,
+        r[2] + COLOR_BAR_BACK_MAX[0] * k,
+        r[3] + COLOR_BAR_BACK_MAX[1] * k,
+    ]
+}
+
 /// The colour bar as the screen draws it: a rounded background, the gradient from the first
 /// colour at the bottom to the last at the top, a white frame, ticks with labels, a title.
 fn color_bar(
@@ -640,12 +685,7 @@ fn color_bar(
     title: &str,
     k: f32,
 ) {
-    let back = [
-        r[0] - COLOR_BAR_BACK_MIN[0] * k,
-        r[1] - COLOR_BAR_BACK_MIN[1] * k,
-        r[2] + COLOR_BAR_BACK_MAX[0] * k,
-        r[3] + COLOR_BAR_BACK_MAX[1] * k,
-    ];
+    let back = color_bar_back(r, k);
     rect(s, back, COLOR_BAR_ROUNDING * k, &fill(LABEL_BG));
     // One gradient through all the colours, evenly spaced from bottom to top (the screen
     // draws the same as one band per pair of neighbouring colours).

@@ -379,6 +379,107 @@ pub fn fit(text_width: f32, fixed: f32, clip: Box2) -> f32 {
 /// there to be readable when zoomed in.
 pub const PAIR_MIN_FIT: f32 = 0.02;
 
+/// [`place_label`], but clear of the labels (and handles) already placed: of the box at its
+/// own side of `base` (pushed inside `clip`, else as [`place_label`] places it) and the boxes
+/// mirrored left-right, up-down and both, the first that overlaps none of `placed`; when all four do, the nearest free place found by moving them (up to
+/// [`AVOID_STEPS`] half-heights or half-widths); else the place overlapping them least.
+/// Neighbouring corners' labels on a small image go to different sides instead of on top of
+/// each other.
+///
+/// ```
+/// use barylab::figure::overlay::Anchor;
+/// use barylab::figure::text::{place_label, place_label_avoiding};
+/// let clip = [0.0, 0.0, 100.0, 100.0];
+/// let first = place_label([50.0, 50.0], [2.0, 2.0], Anchor::LeftTop, [20.0, 10.0], clip);
+/// let second = place_label_avoiding([52.0, 52.0], [2.0, 2.0], Anchor::LeftTop, [20.0, 10.0],
+///                                   clip, &[first]);
+/// assert_eq!(second, [30.0, 54.0, 50.0, 64.0]); // mirrored to the left of its point
+/// ```
+pub fn place_label_avoiding(
+    base: [f32; 2],
+    offset: [f32; 2],
+    anchor: Anchor,
+    size: [f32; 2],
+    clip: Box2,
+    placed: &[Box2],
+) -> Box2 {
+    let overlap = |b: Box2| -> f32 {
+        placed
+            .iter()
+            .map(|p| {
+                let w = (b[2].min(p[2]) - b[0].max(p[0])).max(0.0);
+                let h = (b[3].min(p[3]) - b[1].max(p[1])).max(0.0);
+                w * h
+            })
+            .sum()
+    };
+    let candidates = [
+        (anchor, offset),
+        (anchor.flipped_x(), [-offset[0], offset[1]]),
+        (anchor.flipped_y(), [offset[0], -offset[1]]),
+        (anchor.flipped_x().flipped_y(), [-offset[0], -offset[1]]),
+    ];
+    // Each side's box pushed inside the clip as it is, then as `place_label` puts it (mirrored
+    // when it sticks out): a label near the edge keeps its side when there is room.
+    let boxes: Vec<Box2> = candidates
+        .iter()
+        .flat_map(|&(a, o)| {
+            [
+                push_inside(a.box_at([base[0] + o[0], base[1] + o[1]], size), clip),
+                place_label(base, o, a, size, clip),
+            ]
+        })
+        .collect();
+    let mut best: Option<(f32, Box2)> = None;
+    let mut consider = |b: Box2| {
+        let cost = overlap(b);
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, b));
+        }
+        cost == 0.0
+    };
+    for &b in &boxes {
+        if consider(b) {
+            return b;
+        }
+    }
+    // All four sides taken: the nearest free place, moving a side's box up or down (then
+    // left or right) in steps of half its height (width), kept inside the clip.
+    let step = [size[0] / 2.0, size[1] / 2.0];
+    for k in 1..=AVOID_STEPS {
+        for axis in [1, 0] {
+            for sign in [-1.0, 1.0] {
+                for &b in &boxes {
+                    let d = sign * k as f32 * step[axis];
+                    let mut moved = b;
+                    moved[axis] += d;
+                    moved[axis + 2] += d;
+                    let moved = push_inside(moved, clip);
+                    if consider(moved) {
+                        return moved;
+                    }
+                }
+            }
+        }
+    }
+    best.map_or(boxes[1], |(_, b)| b)
+}
+
+/// The part of a handle of radius `radius` at `centre` that labels keep clear of: the square
+/// inside its circle (a label placed diagonally next to its own handle touches only the
+/// circle's rim, outside this square).
+pub fn handle_obstacle(centre: [f32; 2], radius: f32) -> Box2 {
+    let h = HANDLE_OBSTACLE * radius;
+    [centre[0] - h, centre[1] - h, centre[0] + h, centre[1] + h]
+}
+
+/// Half the side of [`handle_obstacle`]'s square, in radii (a little less than 1/sqrt(2)).
+pub const HANDLE_OBSTACLE: f32 = 0.7;
+
+/// How far [`place_label_avoiding`] moves a label looking for a free place: this many half
+/// heights up or down, or half widths left or right.
+pub const AVOID_STEPS: usize = 8;
+
 /// `b` moved as little as needed to lie [`LABEL_INSET`] inside `bounds`, if it fits.
 pub fn push_inside(b: Box2, bounds: Box2) -> Box2 {
     let inner = [
