@@ -21,6 +21,7 @@ pub enum Compare {
 }
 
 impl Compare {
+    /// Every comparison, in the order the app offers them.
     pub const ALL: [Compare; 4] = [
         Compare::Single,
         Compare::SideBySide,
@@ -32,8 +33,11 @@ impl Compare {
 /// What one view of the canvas shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ViewContent {
+    /// The render in one interpolation mode.
     Mode(Interpolation),
+    /// The wipe: affine left of the line, perspective-correct right of it.
     Wipe,
+    /// The difference heatmap in texels.
     Difference,
 }
 

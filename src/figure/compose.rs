@@ -20,23 +20,36 @@ use crate::scene::Scene;
 /// Why a figure cannot be made.
 #[derive(Debug, thiserror::Error)]
 pub enum FigureError {
+    /// A scale other than 1, 2 or 4.
     #[error("scale {0} is not one of 1, 2, 4")]
     Scale(u32),
+    /// A pixel size outside 1..=32.
     #[error("pixel size {0} is outside 1..=32")]
     PixelSize(u32),
+    /// An overlay scale outside [`OVERLAY_SCALE_RANGE`].
     #[error("overlay scale {0} is outside 0.5..=5")]
     OverlayScale(f32),
+    /// The figure would be larger than [`MAX_FIGURE_SIZE`] PNG pixels on a side.
     #[error(
         "the figure would be {width}x{height} PNG pixels (at most {MAX_FIGURE_SIZE} per side): \
          use a smaller scale, pixel size or image size"
     )]
-    TooLarge { width: u64, height: u64 },
+    TooLarge {
+        /// PNG pixels across.
+        width: u64,
+        /// PNG pixels down.
+        height: u64,
+    },
+    /// The marked pixel could not be probed.
     #[error(transparent)]
     Probe(#[from] ProbeError),
+    /// The scene could not be rendered.
     #[error(transparent)]
     Render(#[from] RenderError),
+    /// The figure would not fit the memory budget.
     #[error(transparent)]
     Memory(#[from] crate::budget::MemoryError),
+    /// Drawing or encoding failed.
     #[error("cannot draw the figure: {0}")]
     Draw(String),
 }
@@ -62,6 +75,7 @@ fn figure_fits(
 /// One view of a figure.
 #[derive(Clone, Debug)]
 pub struct FigureView {
+    /// What the view shows.
     pub content: ViewContent,
     /// Figure points of the image's top-left corner.
     pub origin: [u32; 2],
@@ -86,7 +100,9 @@ pub struct Figure {
     pub pixel_size: u32,
     /// The rendered image size `W x H` the overlays refer to.
     pub canvas_size: [u32; 2],
+    /// The background outside the image (and of the image on white).
     pub background: Background,
+    /// The views, left to right.
     pub views: Vec<FigureView>,
     /// The caption below the views ([`FigureOptions::caption`]), when a pixel is marked.
     pub caption: Option<Caption>,

@@ -15,7 +15,9 @@ pub(super) const WHITE: [u8; 4] = [255, 255, 255, 255];
 #[serde(rename_all = "snake_case")]
 pub enum Background {
     #[default]
+    /// Nothing around the image (and the image keeps the scene's background).
     Transparent,
+    /// White around the image and behind it, for print.
     White,
 }
 
@@ -25,13 +27,17 @@ pub const SCALES: [u32; 3] = [1, 2, 4];
 /// What a figure shows, as the canvas does: the view settings and the marked pixels.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FigureOptions {
+    /// One view, side by side, wipe or difference.
     pub compare: Compare,
     /// Figure points per rendered pixel (the canvas's pixel size).
     pub pixel_size: u32,
     /// Wipe line position as a fraction of the image width.
     pub wipe: f32,
+    /// Draw the pixel grid (from pixel size [`overlay::GRID_FROM_PIXEL_SIZE`]).
     pub show_grid: bool,
+    /// Draw the vertex handles with their w.
     pub show_handles: bool,
+    /// Draw the marked pixel's sub-triangles.
     pub show_sub_areas: bool,
     /// The pinned pixel (marker, triangle and sub-triangles; its derivation is exported).
     pub pinned: Option<[u32; 2]>,
@@ -39,6 +45,7 @@ pub struct FigureOptions {
     pub hovered: Option<[u32; 2]>,
     /// PNG pixels per figure point: 1, 2 or 4.
     pub scale: u32,
+    /// The background around (and on a white figure behind) the image.
     pub background: Background,
     /// Figure points per overlay point: the screen's pixels per point (the app's text size
     /// times the display's scale). Labels, lines, handles, the title strip and the margins

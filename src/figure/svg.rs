@@ -42,10 +42,12 @@ pub struct Layers {
 }
 
 impl Layers {
+    /// The whole figure.
     pub const ALL: Layers = Layers {
         images: true,
         overlays: true,
     };
+    /// The overlays only (the PNG draws them over its own rasters).
     pub const OVERLAYS: Layers = Layers {
         images: false,
         overlays: true,
@@ -57,9 +59,9 @@ pub fn to_svg(figure: &Figure) -> Result<String, FigureError> {
     document(figure, Layers::ALL)
 }
 
-/// The figure's SVG document with the chosen layers.
-/// The `font-family` list of the overlays: the overlay font, then (for Chinese labels) the
-/// CJK families a viewer may have ([`crate::i18n::CJK_FAMILIES`]), then `sans-serif`.
+/// A `font-family` list for SVG text in `lang`: the overlay font, then (for Chinese) the CJK
+/// families a viewer may have ([`crate::i18n::CJK_FAMILIES`]), then `sans-serif`. (The
+/// figures themselves draw their labels as glyph outlines and need no font.)
 pub fn font_families(lang: crate::i18n::Lang) -> String {
     let mut families = vec![FONT_FAMILY.to_string()];
     if lang != crate::i18n::Lang::En {
@@ -77,6 +79,7 @@ pub fn font_families(lang: crate::i18n::Lang) -> String {
     families.join(", ")
 }
 
+/// The figure's SVG document with the chosen layers.
 pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> {
     let [w, h] = figure.size;
     let [pw, ph] = figure.pixel_dimensions();
@@ -143,10 +146,7 @@ pub fn document(figure: &Figure, layers: Layers) -> Result<String, FigureError> 
                 &mut s,
                 &mut glyphs,
                 c.line_box(i),
-                line,
-                c.size,
-                super::caption::CAPTION_INK,
-                None,
+                Label::new(line, c.size, super::caption::CAPTION_INK, None),
                 figure.overlay_scale,
             );
         }
@@ -283,22 +283,39 @@ fn rect(s: &mut String, b: Box2, rounding: f32, attrs: &str) {
     );
 }
 
+/// What a label shows: its text at a size in a colour, on a box of a colour or none.
+#[derive(Clone, Copy)]
+struct Label<'a> {
+    text: &'a str,
+    size: f32,
+    color: Rgba,
+    background: Option<Rgba>,
+}
+
+impl<'a> Label<'a> {
+    fn new(text: &'a str, size: f32, color: Rgba, background: Option<Rgba>) -> Self {
+        Self {
+            text,
+            size,
+            color,
+            background,
+        }
+    }
+}
+
 /// A label: its background box (if any) and its text, in the box `b`. The text is drawn as
-/// the overlay font's glyph outlines ([`text::outline`]), so it looks the same, and fits the
+/// the overlay font's glyph outlines ([`text::glyph_outline`]), so it looks the same, and fits the
 /// box measured with the same font ([`text::measure`]), in every viewer (browsers, Inkscape,
 /// librsvg, resvg) whatever fonts it has. The group carries the text as its `aria-label`
 /// and `<title>` (for search and screen readers), its size as `font-size` and its box as
 /// `data-box` (x y width height).
-fn label(
-    s: &mut String,
-    glyphs: &mut Glyphs,
-    b: Box2,
-    text: &str,
-    size: f32,
-    color: Rgba,
-    background: Option<Rgba>,
-    k: f32,
-) {
+fn label(s: &mut String, glyphs: &mut Glyphs, b: Box2, l: Label<'_>, k: f32) {
+    let Label {
+        text,
+        size,
+        color,
+        background,
+    } = l;
     let pad = if background.is_some() {
         LABEL_PAD.map(|v| v * k)
     } else {
@@ -559,7 +576,7 @@ fn overlay(
                 if background.is_some() {
                     placed.push(b);
                 }
-                label(s, glyphs, b, txt, *size, *color, *background, k);
+                label(s, glyphs, b, Label::new(txt, *size, *color, *background), k);
             }
             Shape::LabelPair {
                 at,
@@ -580,7 +597,7 @@ fn overlay(
                     .map(|x| text::padded(text::measure(x, size).0, has_box, k));
                 let (boxes, _) = text::place_pair([p[0], p[1] + offset_y], *gap, outer, clip);
                 for (b, txt) in boxes.iter().zip(texts) {
-                    label(s, glyphs, *b, txt, size, *color, *background, k);
+                    label(s, glyphs, *b, Label::new(txt, size, *color, *background), k);
                 }
                 placed.extend(boxes);
             }
@@ -728,14 +745,14 @@ fn color_bar(
         );
         let (extent, _) = text::measure(l, size);
         let b = Anchor::LeftCenter.box_at([r[2] + COLOR_BAR_LABEL_GAP * k, y], extent);
-        label(s, glyphs, b, l, size, LABEL_TEXT, None, k);
+        label(s, glyphs, b, Label::new(l, size, LABEL_TEXT, None), k);
     }
     let (extent, _) = text::measure(title, size);
     let b = Anchor::CenterBottom.box_at(
         [(r[0] + r[2]) / 2.0, r[1] - COLOR_BAR_LABEL_GAP * k],
         extent,
     );
-    label(s, glyphs, b, title, size, LABEL_TEXT, None, k);
+    label(s, glyphs, b, Label::new(title, size, LABEL_TEXT, None), k);
 }
 
 #[cfg(test)]

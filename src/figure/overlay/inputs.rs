@@ -8,10 +8,13 @@ use crate::raster::Interpolation;
 /// A vertex handle as the overlay shows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HandleMark {
+    /// The mesh vertex's index (its name and colour).
     pub index: usize,
     /// Window position, or `None` when the vertex is behind the camera.
     pub window: Option<DVec2>,
+    /// The vertex's clip w, shown in its label.
     pub w: f64,
+    /// Hovered or dragged: drawn larger.
     pub active: bool,
 }
 
@@ -20,7 +23,9 @@ pub struct HandleMark {
 /// no mesh index.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriangleMark {
+    /// Unsnapped window positions of the three corners, in triangle order.
     pub vertices: [DVec2; 3],
+    /// Each corner's mesh vertex (`None` for a point the clipper made).
     pub mesh_indices: [Option<usize>; 3],
     /// Screen-space weights of the three vertices at the pixel centre.
     pub weights: [f64; 3],
@@ -29,7 +34,9 @@ pub struct TriangleMark {
 /// A marked (hovered or pinned) pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelMark {
+    /// The pixel (column, row).
     pub pixel: [u32; 2],
+    /// The triangle its weights refer to, if any.
     pub triangle: Option<TriangleMark>,
 }
 
@@ -44,9 +51,13 @@ pub struct OverlayInput {
     pub pixels_per_point: f32,
     /// The mode this view shows (`None` for the difference view).
     pub mode: Option<Interpolation>,
+    /// Draw the pixel grid (from [`GRID_FROM_PIXEL_SIZE`](super::GRID_FROM_PIXEL_SIZE)).
     pub show_grid: bool,
+    /// The vertex handles.
     pub handles: Vec<HandleMark>,
+    /// The hovered pixel (marker with crosshair).
     pub hover: Option<PixelMark>,
+    /// The pinned pixel (marker, triangle, sub-triangles).
     pub pin: Option<PixelMark>,
     /// Draw the hovered pixel's sub-triangles.
     pub sub_areas: bool,

@@ -10,10 +10,12 @@ use super::Rgba;
 pub struct Stroke {
     /// Points.
     pub width: f32,
+    /// Colour.
     pub color: Rgba,
 }
 
 impl Stroke {
+    /// A stroke `width` points wide in `color`.
     pub const fn new(width: f32, color: Rgba) -> Self {
         Self { width, color }
     }
@@ -22,14 +24,23 @@ impl Stroke {
 /// Which point of a text box sits at its position.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Anchor {
+    /// The top-left corner.
     LeftTop,
+    /// The bottom-left corner.
     LeftBottom,
+    /// The bottom-right corner.
     RightBottom,
+    /// The middle of the left side.
     LeftCenter,
+    /// The middle of the top.
     CenterTop,
+    /// The middle of the bottom.
     CenterBottom,
+    /// The centre.
     Center,
+    /// The top-right corner.
     RightTop,
+    /// The middle of the right side.
     RightCenter,
 }
 
@@ -38,39 +49,61 @@ pub enum Anchor {
 pub enum Shape {
     /// A closed polygon.
     Polygon {
+        /// Corners in canvas coordinates.
         points: Vec<DVec2>,
+        /// Fill colour (alpha 0: none).
         fill: Rgba,
+        /// Outline, if any.
         stroke: Option<Stroke>,
+        /// Dashed outline ([`DASH`](crate::figure::svg::DASH)).
         dashed: bool,
     },
     /// An open polyline.
     Line {
+        /// Points in canvas coordinates.
         points: Vec<DVec2>,
+        /// Line style.
         stroke: Stroke,
+        /// Dashed ([`DASH`](crate::figure::svg::DASH)).
         dashed: bool,
     },
     /// An axis-aligned rectangle in canvas coordinates.
     Rect {
+        /// Top-left corner.
         min: DVec2,
+        /// Bottom-right corner.
         max: DVec2,
+        /// Fill colour (alpha 0: none).
         fill: Rgba,
+        /// Outline, drawn outside the rectangle, if any.
         stroke: Option<Stroke>,
     },
     /// A circle of a fixed on-screen radius.
     Circle {
+        /// Centre in canvas coordinates.
         centre: DVec2,
+        /// Radius in points.
         radius: f32,
+        /// Fill colour.
         fill: Rgba,
+        /// Outline, if any.
         stroke: Option<Stroke>,
     },
     /// Text at a canvas position, moved by `offset` points.
     Text {
+        /// The point the label belongs to, in canvas coordinates.
         at: DVec2,
+        /// Points from `at` to the anchor point.
         offset: [f32; 2],
+        /// Which point of the label's box sits there.
         anchor: Anchor,
+        /// The text.
         text: String,
+        /// Text size in points.
         size: f32,
+        /// Text colour.
         color: Rgba,
+        /// Box colour; a label with a box keeps clear of the others.
         background: Option<Rgba>,
     },
     /// Two labels side by side (the wipe line's modes): `texts[0]` left of canvas x `at.x`,
@@ -96,19 +129,29 @@ pub enum Shape {
     },
     /// The pixel grid of a `width` x `height` image, and optionally a dot at every pixel centre.
     PixelGrid {
+        /// Image width in pixels.
         width: u32,
+        /// Image height in pixels.
         height: u32,
+        /// Grid line style.
         line: Stroke,
+        /// Radius in points and colour of the pixel-centre dots, if shown.
         dots: Option<(f32, Rgba)>,
     },
     /// A vertical colour bar at canvas position `at` moved by `offset` points, `size` points
     /// large, from `colors[0]` at the bottom to the last colour at the top, with labels.
     ColorBar {
+        /// Canvas position the bar is placed from.
         at: DVec2,
+        /// Points from `at` to the bar's top-left corner.
         offset: [f32; 2],
+        /// Width and height in points.
         size: [f32; 2],
+        /// Colours from the bottom to the top.
         colors: Vec<Rgba>,
+        /// Labels at fractions of the height (0 at the bottom).
         labels: Vec<(f32, String)>,
+        /// The title above the bar.
         title: String,
     },
 }
@@ -116,6 +159,7 @@ pub enum Shape {
 /// Everything drawn over one view of the canvas.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Overlay {
+    /// The shapes, in painting order.
     pub shapes: Vec<Shape>,
 }
 

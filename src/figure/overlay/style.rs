@@ -37,21 +37,25 @@ pub const LABEL_TEXT: Rgba = [240, 240, 240, 255];
 pub(super) const SUB_AREA_ALPHA: u8 = 90;
 /// Points: radius of a vertex handle.
 pub const HANDLE_RADIUS: f32 = 11.0;
-/// Points: text sizes.
+/// Points: the text size of labels (a handle's w, the note on vertices behind the camera).
 pub const TEXT_LABEL: f32 = 20.0;
+/// Points: the mode titles' text size.
 pub const TEXT_BADGE: f32 = 24.0;
+/// Points: the handles' letters and the colour bar's text size.
 pub const TEXT_SMALL: f32 = 16.0;
 
 /// Points: titles (the mode, the heatmap's meaning) sit this far above the image, in the
 /// strip of [`TITLE_STRIP`] points the canvas keeps free there.
 pub const TITLE_GAP: f32 = 6.0;
+/// Points: the strip above the image kept for titles.
 pub const TITLE_STRIP: f32 = 44.0;
 
 /// Points between the wipe line's two mode labels.
 pub const WIPE_LABEL_GAP: f32 = 20.0;
 
-/// Pixel sizes (display pixels per rendered pixel) from which the grid and sample dots show.
+/// Pixel size (display pixels per rendered pixel) from which the grid shows.
 pub const GRID_FROM_PIXEL_SIZE: u32 = 6;
+/// Pixel size (display pixels per rendered pixel) from which the sample dots show.
 pub const DOTS_FROM_PIXEL_SIZE: u32 = 10;
 
 /// The colour of mesh vertex `index`.
