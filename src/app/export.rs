@@ -534,6 +534,15 @@ fn window_contents(
             });
             ui.end_row();
         });
+    // A figure option, under the scale and background; the catalogue's words (English
+    // until the app has a language setting).
+    let lang = crate::i18n::Lang::En;
+    let mut caption = s.caption;
+    ui.checkbox(&mut caption, crate::i18n::tr(lang, "figure.caption.option"))
+        .on_hover_text(crate::i18n::tr(lang, "figure.caption.option_tip"));
+    if caption != s.caption {
+        out.push(ExportCommand::SetCaption(caption));
+    }
     ui.add_space(4.0);
     let mut sel = s.selection;
     ui.checkbox(&mut sel.png, text::PNG);
@@ -544,14 +553,6 @@ fn window_contents(
         .on_hover_text(text::SCENE_TIP);
     if sel != s.selection {
         out.push(ExportCommand::SetSelection(sel));
-    }
-    // The catalogue's words (English until the app has a language setting).
-    let lang = crate::i18n::Lang::En;
-    let mut caption = s.caption;
-    ui.checkbox(&mut caption, crate::i18n::tr(lang, "figure.caption.option"))
-        .on_hover_text(crate::i18n::tr(lang, "figure.caption.option_tip"));
-    if caption != s.caption {
-        out.push(ExportCommand::SetCaption(caption));
     }
     ui.add_space(4.0);
     ui.horizontal(|ui| {

@@ -117,8 +117,9 @@ pub fn groups(trace: &PixelTrace, size: [u32; 2], lang: Lang) -> Vec<Vec<String>
 
 /// `groups` set in lines at most `width` points wide at text size `size`: each group starts a
 /// line and its parts follow joined by [`SEPARATOR`]; a part that does not fit on the line
-/// starts the next one, and a part wider than `width` on its own is wrapped at spaces. When
-/// one word is wider than `width` the size shrinks until it fits (not below `min_size`).
+/// starts the next one, and a part wider than `width` on its own is wrapped between its
+/// [`words`] (at every space when an equation does not fit even at `min_size`). When one word
+/// is wider than `width` the size shrinks until it fits (not below `min_size`).
 /// Returns the lines and the size used.
 ///
 /// ```
@@ -130,17 +131,37 @@ pub fn groups(trace: &PixelTrace, size: [u32; 2], lang: Lang) -> Vec<Vec<String>
 /// assert_eq!(narrow, ["a", "b", "c", "d"]);
 /// ```
 pub fn wrap(groups: &[Vec<String>], width: f32, size: f32, min_size: f32) -> (Vec<String>, f32) {
-    let widest = groups
-        .iter()
-        .flatten()
-        .flat_map(|p| words(p))
-        .map(|w| text::measure(&w, size).0[0])
-        .fold(0.0f32, f32::max);
-    let size = if widest > width && widest > 0.0 {
-        (size * width / widest).max(min_size)
-    } else {
-        size
+    // Equations kept whole when they fit (at a smaller size if need be, not below
+    // `min_size`), else split at every space.
+    let split = |glued: bool| {
+        move |p: &String| -> Vec<String> {
+            if glued {
+                words(p)
+            } else {
+                p.split(' ').map(str::to_string).collect()
+            }
+        }
     };
+    let size_for = |glued: bool| {
+        let widest = groups
+            .iter()
+            .flatten()
+            .flat_map(split(glued))
+            .map(|w| text::measure(&w, size).0[0])
+            .fold(0.0f32, f32::max);
+        if widest > width && widest > 0.0 {
+            size * width / widest
+        } else {
+            size
+        }
+    };
+    let glued = size_for(true) >= min_size;
+    let size = if glued {
+        size_for(true)
+    } else {
+        size_for(false).max(min_size)
+    };
+    let words = split(glued);
     let fits = |s: &str| text::measure(s, size).0[0] <= width;
     let mut lines = Vec::new();
     for g in groups {
@@ -174,23 +195,26 @@ pub fn wrap(groups: &[Vec<String>], width: f32, size: f32, min_size: f32) -> (Ve
     (lines, size)
 }
 
-/// The words a caption part may wrap between: split at spaces, except after a comma, so a
-/// list such as `0.4961, 0.3491, 0.1548` or `a, b, c` stays on one line.
+/// The words a caption part may wrap between: split at spaces, except after a comma and
+/// around `=`, so an equation such as `r, s, t = 0.4961, 0.3491, 0.1548` stays on one line.
 ///
 /// ```
 /// use barylab::figure::caption::words;
-/// assert_eq!(words("r, s, t = 0.1, 0.2, 0.7"), ["r, s, t", "=", "0.1, 0.2, 0.7"]);
+/// assert_eq!(words("screen weights r, s, t = 0.1, 0.2, 0.7"),
+///            ["screen", "weights", "r, s, t = 0.1, 0.2, 0.7"]);
 /// ```
 pub fn words(part: &str) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
+    let mut glue = false;
     for w in part.split(' ') {
         match out.last_mut() {
-            Some(last) if last.ends_with(',') => {
+            Some(last) if glue || last.ends_with(',') || w == "=" => {
                 last.push(' ');
                 last.push_str(w);
             }
             _ => out.push(w.to_string()),
         }
+        glue = w == "=";
     }
     out
 }
