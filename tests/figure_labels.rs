@@ -102,6 +102,12 @@ fn advance(text: &str, size: f32) -> f32 {
 /// Figures with every kind of label: handles, mode titles, the wipe pair, the difference
 /// view's title and colour bar, the caption; at overlay scales 1 and 1.5.
 fn figures() -> Vec<Figure> {
+    figures_in(barylab::i18n::Lang::En)
+}
+
+/// [`figures`] with the labels in `lang` (English when Chinese was asked for and no CJK
+/// font is installed).
+fn figures_in(lang: barylab::i18n::Lang) -> Vec<Figure> {
     let mut out = Vec::new();
     for (size, compare, k) in [
         ([400, 300], Compare::Single, 1.0),
@@ -118,7 +124,7 @@ fn figures() -> Vec<Figure> {
             background: Background::White,
             ..FigureOptions::default()
         };
-        out.push(Figure::compose(&scene, &texture, &options).expect("figure"));
+        out.push(Figure::compose_in(&scene, &texture, &options, lang).expect("figure"));
     }
     out
 }
@@ -151,7 +157,10 @@ fn every_label_box_is_as_wide_as_its_text_in_the_font() {
 
 #[test]
 fn resvg_draws_every_labels_glyphs_inside_its_box() {
-    for fig in figures() {
+    // Chinese labels take their glyphs from the system's CJK font, when there is one.
+    let mut all = figures();
+    all.extend(figures_in(barylab::i18n::Lang::Zh));
+    for fig in all {
         let doc = svg::to_svg(&fig).expect("svg");
         let header = &doc[..doc.find('\n').expect("first line") + 1];
         let defs = &doc[doc.find("<defs>").expect("defs")..doc.find("</defs>").expect("defs")];
