@@ -270,6 +270,11 @@ struct FigureArgs {
     /// Leave out the sub-triangles of the marked pixel.
     #[arg(long)]
     no_sub_areas: bool,
+    /// Add a caption below the figure with the pinned (else hovered) pixel's key numbers:
+    /// the screen weights r s t, the corrected weights a b c, W_P, and uv affine and
+    /// perspective-correct, as its derivation gives them.
+    #[arg(long)]
+    caption: bool,
     /// Output file: .png or .svg.
     #[arg(short, long)]
     output: PathBuf,

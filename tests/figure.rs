@@ -113,7 +113,7 @@ fn a_magnified_figure_keeps_the_scenes_pixels() {
 }
 
 #[test]
-fn the_svg_parses_and_holds_the_labels_as_text() {
+fn the_svg_parses_and_holds_the_labels_as_outlines_named_by_their_text() {
     let (scene, texture) = small_default();
     let options = FigureOptions {
         compare: Compare::SideBySide,
@@ -126,19 +126,23 @@ fn the_svg_parses_and_holds_the_labels_as_text() {
     let [w, h] = fig.pixel_dimensions();
     assert_eq!(tree.size().width(), w as f32);
     assert_eq!(tree.size().height(), h as f32);
-    fn texts(g: &resvg::usvg::Group, out: &mut Vec<String>) {
-        for node in g.children() {
-            match node {
-                resvg::usvg::Node::Group(g) => texts(g, out),
-                resvg::usvg::Node::Text(t) => {
-                    out.push(t.chunks().iter().map(|c| c.text()).collect())
-                }
-                _ => {}
-            }
-        }
+    // Every label is drawn as glyph outlines (no <text> a viewer could set in another
+    // font), its text kept in the group's aria-label.
+    fn has_text(g: &resvg::usvg::Group) -> bool {
+        g.children().iter().any(|node| match node {
+            resvg::usvg::Node::Group(g) => has_text(g),
+            resvg::usvg::Node::Text(_) => true,
+            _ => false,
+        })
     }
-    let mut found = Vec::new();
-    texts(tree.root(), &mut found);
+    assert!(!has_text(tree.root()));
+    assert!(!doc.contains("<text"));
+    let found: Vec<String> = doc
+        .split(r#"<g class="label" aria-label=""#)
+        .skip(1)
+        .filter_map(|rest| rest.split('"').next())
+        .map(str::to_string)
+        .collect();
     // The vertex labels with their w, computed independently from the scene's clip w.
     let mesh = scene.to_mesh();
     let w_a = barylab::figure::overlay::format_w(mesh.vertices[0].clip.w);
@@ -349,15 +353,18 @@ fn cli_figure_equals_the_library_export_and_reports_bad_output_in_one_line() {
 
 #[test]
 fn the_overlay_scale_enlarges_labels_and_margins_not_the_image() {
-    let (scene, texture) = small_default();
-    let one = Figure::compose(&scene, &texture, &pinned([100, 100], 1)).expect("figure");
+    // Wide enough for the mode title at twice the size (a label wider than its view would
+    // shrink to fit it).
+    let (mut scene, texture) = small_default();
+    scene.set_size(600, 450);
+    let one = Figure::compose(&scene, &texture, &pinned([300, 300], 1)).expect("figure");
     let options = FigureOptions {
         overlay_scale: 2.0,
-        ..pinned([100, 100], 1)
+        ..pinned([300, 300], 1)
     };
     let two = Figure::compose(&scene, &texture, &options).expect("figure");
     let [m, _, strip] = barylab::figure::layout_points(2.0);
-    assert_eq!(two.size, [200 + 2 * m, 150 + 2 * m + strip]);
+    assert_eq!(two.size, [600 + 2 * m, 450 + 2 * m + strip]);
     assert!(one.views[0].raster == two.views[0].raster);
     let font_sizes = |f: &Figure| -> Vec<f32> {
         let doc = svg::to_svg(f).expect("svg");

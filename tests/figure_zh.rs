@@ -99,7 +99,8 @@ fn a_chinese_figure_differs_from_the_english_one_only_in_its_labels() {
     }
     let svg = barylab::figure::svg::to_svg(&zh).expect("svg");
     assert!(svg.contains("透视校正插值") && svg.contains("仿射插值"));
-    assert!(svg.contains("'Noto Sans CJK SC'") && svg.contains("'Microsoft YaHei'"));
+    // Drawn as outlines: the CJK font's glyphs are in the file, no viewer needs the font.
+    assert!(svg.contains(r#"<path id="g1-"#), "no CJK glyph outlines");
 }
 
 #[test]

@@ -28,6 +28,8 @@ pub struct ExportSettings {
     pub scale: u32,
     pub background: Background,
     pub selection: ExportSelection,
+    /// A caption with the marked pixel's key numbers below the figure.
+    pub caption: bool,
 }
 
 impl Default for ExportSettings {
@@ -37,6 +39,7 @@ impl Default for ExportSettings {
             scale: 2,
             background: Background::White,
             selection: ExportSelection::default(),
+            caption: false,
         }
     }
 }
@@ -52,6 +55,8 @@ pub enum ExportCommand {
     SetScale(u32),
     SetBackground(Background),
     SetSelection(ExportSelection),
+    /// Add (or leave out) the figure's caption.
+    SetCaption(bool),
     /// Write the selected files into the folder.
     Export,
     /// Put the figure's PNG on the clipboard.
@@ -163,6 +168,7 @@ impl ExportPanel {
             ExportCommand::SetScale(s) if SCALES.contains(&s) => self.settings.scale = s,
             ExportCommand::SetScale(_) => {}
             ExportCommand::SetBackground(b) => self.settings.background = b,
+            ExportCommand::SetCaption(c) => self.settings.caption = c,
             ExportCommand::SetSelection(s) => self.settings.selection = s,
             ExportCommand::Export => {
                 self.outcome = Some(match self.export(app) {
@@ -391,6 +397,7 @@ pub fn figure_options(app: &ExportContext<'_>, settings: &ExportSettings) -> Fig
         scale: settings.scale,
         background: settings.background,
         overlay_scale: pixels_per_point,
+        caption: settings.caption,
     }
 }
 
@@ -505,6 +512,15 @@ fn window_contents(
             });
             ui.end_row();
         });
+    // A figure option, under the scale and background; the catalogue's words (English
+    // until the app has a language setting).
+    let lang = crate::i18n::Lang::En;
+    let mut caption = s.caption;
+    ui.checkbox(&mut caption, crate::i18n::tr(lang, "figure.caption.option"))
+        .on_hover_text(crate::i18n::tr(lang, "figure.caption.option_tip"));
+    if caption != s.caption {
+        out.push(ExportCommand::SetCaption(caption));
+    }
     ui.add_space(4.0);
     let mut sel = s.selection;
     ui.checkbox(&mut sel.png, lang.tr("app.export.png"));

@@ -53,6 +53,28 @@ fn to_box(r: Rect) -> figure_text::Box2 {
 /// Paints the overlay, clipped to `clip`.
 pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &Overlay) {
     let painter = painter.with_clip_rect(clip);
+    // The label boxes placed so far: a label goes where it covers none of them if it can.
+    // The handles are there from the start.
+    let mut placed: Vec<figure_text::Box2> = overlay
+        .shapes
+        .iter()
+        .filter_map(|shape| match shape {
+            Shape::Circle { centre, radius, .. }
+                if *radius >= crate::figure::svg::MIN_OBSTACLE_RADIUS =>
+            {
+                let c = t.to_screen(*centre);
+                Some(figure_text::handle_obstacle([c.x, c.y], *radius))
+            }
+            Shape::ColorBar {
+                at, offset, size, ..
+            } => {
+                let min = t.to_screen(*at) + egui::vec2(offset[0], offset[1]);
+                let r = [min.x, min.y, min.x + size[0], min.y + size[1]];
+                Some(crate::figure::svg::color_bar_back(r, 1.0))
+            }
+            _ => None,
+        })
+        .collect();
     for shape in &overlay.shapes {
         match shape {
             Shape::Polygon {
@@ -135,22 +157,66 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
             } => {
                 // Placed as the figure export places it (flipped to the other side of its
                 // point if it sticks out, then pushed inside), measured with egui's galley.
-                let galley =
-                    painter.layout_no_wrap(text.clone(), FontId::proportional(*size), color(*c));
+                let lay = |s: f32| {
+                    painter.layout_no_wrap(text.clone(), FontId::proportional(s), color(*c))
+                };
+                // A label wider than its view shrinks to fit it.
+                let pad = if background.is_some() {
+                    LABEL_PAD[0]
+                } else {
+                    0.0
+                };
+                let width = lay(*size).size().x;
+                let galley = lay(size * figure_text::fit(width, 2.0 * pad, to_box(clip)));
                 let outer = figure_text::padded(
                     [galley.size().x, galley.size().y],
                     background.is_some(),
                     1.0,
                 );
                 let base = t.to_screen(*at);
-                let b = figure_text::place_label(
-                    [base.x, base.y],
-                    *offset,
-                    *anchor,
-                    outer,
-                    to_box(clip),
-                );
+                // A label with a box keeps clear of the others; a bare letter (a handle's
+                // name) stays where it is.
+                let (p, bounds) = ([base.x, base.y], to_box(clip));
+                let b = if background.is_some() {
+                    figure_text::place_label_avoiding(p, *offset, *anchor, outer, bounds, &placed)
+                } else {
+                    figure_text::place_label(p, *offset, *anchor, outer, bounds)
+                };
+                if background.is_some() {
+                    placed.push(b);
+                }
                 draw_label(&painter, to_rect(b), galley, *c, *background);
+            }
+            Shape::LabelPair {
+                at,
+                offset_y,
+                gap,
+                texts,
+                size,
+                color: c,
+                background,
+            } => {
+                // Placed as the figure export places them, measured with egui's galleys.
+                let lay = |s: f32| {
+                    texts.each_ref().map(|x| {
+                        painter.layout_no_wrap(x.clone(), FontId::proportional(s), color(*c))
+                    })
+                };
+                let has_box = background.is_some();
+                let pad = if has_box { LABEL_PAD[0] } else { 0.0 };
+                let widths = lay(*size).map(|g| g.size().x);
+                let fit = figure_text::pair_fit(widths, pad, *gap, to_box(clip));
+                let galleys = lay(size * fit);
+                let outer = galleys
+                    .each_ref()
+                    .map(|g| figure_text::padded([g.size().x, g.size().y], has_box, 1.0));
+                let base = t.to_screen(*at);
+                let (boxes, _) =
+                    figure_text::place_pair([base.x, base.y + offset_y], *gap, outer, to_box(clip));
+                placed.extend(boxes);
+                for (b, g) in boxes.into_iter().zip(galleys) {
+                    draw_label(&painter, to_rect(b), g, *c, *background);
+                }
             }
             Shape::PixelGrid {
                 width,
@@ -257,10 +323,7 @@ fn paint_color_bar(
     title: &str,
 ) {
     // Room for the title above and the labels to the right.
-    let back = Rect::from_min_max(
-        rect.min - egui::vec2(12.0, 40.0),
-        rect.max + egui::vec2(56.0, 12.0),
-    );
+    let back = to_rect(crate::figure::svg::color_bar_back(to_box(rect), 1.0));
     painter.rect_filled(back, 6.0, color(crate::figure::overlay::LABEL_BG));
     let n = colors.len().saturating_sub(1).max(1);
     let mut mesh = Mesh::default();

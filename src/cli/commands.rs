@@ -244,6 +244,7 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
             BackgroundArg::White => Background::White,
         },
         overlay_scale: args.overlay_scale,
+        caption: args.caption,
     };
     let mut lang = args.lang;
     if lang != barylab::i18n::Lang::En && barylab::i18n::cjk_font().is_none() {

@@ -12,7 +12,9 @@ use crate::scene::Scene;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(default)]
 pub struct ExportSelection {
+    /// The annotated figure as PNG (`.png`).
     pub png: bool,
+    /// The figure as SVG (`.svg`).
     pub svg: bool,
     /// The pinned (else the hovered) pixel's derivation, as `.md` and `.tex`.
     pub derivation: bool,
@@ -35,11 +37,25 @@ impl Default for ExportSelection {
 #[derive(Debug, thiserror::Error)]
 pub enum ExportError {
     #[error("cannot use folder {path}: {cause}")]
-    Folder { path: String, cause: std::io::Error },
+    /// The folder cannot be made or used.
+    Folder {
+        /// The folder, as shown to the user.
+        path: String,
+        /// Why.
+        cause: std::io::Error,
+    },
+    /// A file could not be written.
     #[error(transparent)]
     Write(#[from] crate::files::WriteError),
     #[error("no free file name {stem}-001 ... {stem}-{last} in {folder}", last = MAX_NUMBER)]
-    NoFreeName { stem: String, folder: String },
+    /// Every name from 001 to [`MAX_NUMBER`] is taken.
+    NoFreeName {
+        /// The names' stem (`figure`).
+        stem: String,
+        /// The folder, as shown to the user.
+        folder: String,
+    },
+    /// The figure could not be made.
     #[error(transparent)]
     Figure(#[from] FigureError),
 }
@@ -89,14 +105,17 @@ pub fn scene_json(scene: &Scene, scene_dir: Option<&Path>) -> String {
 
 /// Everything one export writes.
 pub struct ExportRequest<'a> {
+    /// The folder to write into (made if needed).
     pub folder: &'a Path,
     /// File names start with this (`figure` gives `figure-001.png`, ...).
     pub stem: &'a str,
+    /// The figure to write.
     pub figure: &'a Figure,
     /// The scene the figure shows (sized as rendered).
     pub scene: &'a Scene,
     /// The folder the scene's relative paths are relative to.
     pub scene_dir: Option<&'a Path>,
+    /// Which files to write.
     pub selection: ExportSelection,
 }
 

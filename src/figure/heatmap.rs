@@ -21,7 +21,9 @@ pub fn texel_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: (u3
 /// A rendered heatmap and its scale.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Heatmap {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
     /// RGBA8, row 0 at the top; uncovered pixels keep the framebuffer's colour dimmed.
     pub pixels: Vec<[u8; 4]>,

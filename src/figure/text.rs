@@ -5,7 +5,7 @@
 
 use std::sync::OnceLock;
 
-use ab_glyph::{Font, FontRef, ScaleFont};
+use ab_glyph::{Font, FontRef, GlyphId, OutlineCurve, ScaleFont};
 
 use super::overlay::Anchor;
 
@@ -40,21 +40,142 @@ fn cjk() -> Option<&'static FontRef<'static>> {
     .as_ref()
 }
 
-/// The advance of `c` at font size `size` in the CJK font, when the overlay font has no glyph
-/// for it and a CJK font is installed.
-fn cjk_advance(c: char, size: f32) -> Option<f32> {
-    let font = cjk()?;
-    let id = font.glyph_id(c);
-    if id.0 == 0 {
-        return None;
+/// Which font a glyph comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum GlyphFont {
+    /// The overlay font ([`FONT_BYTES`]).
+    Overlay,
+    /// The system's CJK font ([`crate::i18n::cjk_font`]), for what the overlay font lacks.
+    Cjk,
+}
+
+impl GlyphFont {
+    fn font(self) -> Option<&'static FontRef<'static>> {
+        match self {
+            GlyphFont::Overlay => font(),
+            GlyphFont::Cjk => cjk(),
+        }
     }
-    // ab_glyph scales by the line height: this scale makes one em `size` points, as for the
-    // overlay font.
-    let units = font.units_per_em().unwrap_or(1000.0);
-    Some(
-        font.as_scaled(size * font.height_unscaled() / units)
-            .h_advance(id),
-    )
+}
+
+/// One glyph of a laid-out line: its font and glyph id, where the pen is (points from the
+/// line's start) and the points per font unit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GlyphAt {
+    /// The font the glyph comes from.
+    pub font: GlyphFont,
+    /// The glyph's id in that font.
+    pub id: u16,
+    /// Points from the line's start to the glyph's origin.
+    pub x: f32,
+    /// Points per font unit (the text size over the font's units per em).
+    pub per_unit: f32,
+}
+
+/// `text` laid out on one line at font size `size` (points, the em size): each character's
+/// glyph from the overlay font (with kerning), or from the CJK font when the overlay font lacks
+/// it; and the line's advance width.
+fn layout(text: &str, size: f32) -> Option<(Vec<GlyphAt>, f32)> {
+    let font = font()?;
+    // ab_glyph scales by the line height: this scale makes one em `size` points.
+    let scaled_of = |f: &'static FontRef<'static>| {
+        let units = f.units_per_em().unwrap_or(1000.0);
+        (
+            f.as_scaled(size * f.height_unscaled() / units),
+            size / units,
+        )
+    };
+    let (scaled, per_unit) = scaled_of(font);
+    let mut glyphs = Vec::with_capacity(text.len());
+    let mut x = 0.0;
+    let mut previous = None;
+    for c in text.chars() {
+        let id = scaled.glyph_id(c);
+        if id.0 == 0
+            && let Some(cjk) = cjk()
+            && cjk.glyph_id(c).0 != 0
+        {
+            let (s, per) = scaled_of(cjk);
+            let cid = cjk.glyph_id(c);
+            glyphs.push(GlyphAt {
+                font: GlyphFont::Cjk,
+                id: cid.0,
+                x,
+                per_unit: per,
+            });
+            x += s.h_advance(cid);
+            previous = None;
+            continue;
+        }
+        if let Some(p) = previous {
+            x += scaled.kern(p, id);
+        }
+        glyphs.push(GlyphAt {
+            font: GlyphFont::Overlay,
+            id: id.0,
+            x,
+            per_unit,
+        });
+        x += scaled.h_advance(id);
+        previous = Some(id);
+    }
+    Some((glyphs, x))
+}
+
+/// The glyphs of `text` at font size `size`, placed as [`measure`] measures it. The figures
+/// draw labels with their outlines ([`glyph_outline`]), so a label looks the same in every
+/// SVG viewer whatever fonts it has, and its box, sized by [`measure`], holds it.
+pub fn glyphs(text: &str, size: f32) -> Vec<GlyphAt> {
+    layout(text, size).map(|(g, _)| g).unwrap_or_default()
+}
+
+/// A piece of a glyph outline: a line, a quadratic or a cubic Bézier curve through its
+/// points (the first is where it starts).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Curve {
+    /// A straight line from the first point to the second.
+    Line([[f32; 2]; 2]),
+    /// A quadratic curve: start, control, end.
+    Quad([[f32; 2]; 3]),
+    /// A cubic curve: start, two controls, end.
+    Cubic([[f32; 2]; 4]),
+}
+
+impl Curve {
+    /// The first point.
+    pub fn start(&self) -> [f32; 2] {
+        match self {
+            Curve::Line(p) => p[0],
+            Curve::Quad(p) => p[0],
+            Curve::Cubic(p) => p[0],
+        }
+    }
+
+    /// The last point.
+    pub fn end(&self) -> [f32; 2] {
+        match self {
+            Curve::Line(p) => p[1],
+            Curve::Quad(p) => p[2],
+            Curve::Cubic(p) => p[3],
+        }
+    }
+}
+
+/// The outline of glyph `id` of `font` in font units, y up, from the glyph's origin (empty
+/// for a glyph without one, such as the space).
+pub fn glyph_outline(font: GlyphFont, id: u16) -> Vec<Curve> {
+    let Some(o) = font.font().and_then(|f| f.outline(GlyphId(id))) else {
+        return Vec::new();
+    };
+    let p = |q: ab_glyph::Point| [q.x, q.y];
+    o.curves
+        .into_iter()
+        .map(|c| match c {
+            OutlineCurve::Line(a, b) => Curve::Line([p(a), p(b)]),
+            OutlineCurve::Quad(a, b, c) => Curve::Quad([p(a), p(b), p(c)]),
+            OutlineCurve::Cubic(a, b, c, d) => Curve::Cubic([p(a), p(b), p(c), p(d)]),
+        })
+        .collect()
 }
 
 /// Size of one line of text at font size `size` (points, the em size as in egui and SVG):
@@ -69,29 +190,12 @@ fn cjk_advance(c: char, size: f32) -> Option<f32> {
 /// assert!(asc > 10.0 && asc < aa[1]);
 /// ```
 pub fn measure(text: &str, size: f32) -> ([f32; 2], f32) {
-    let Some(font) = font() else {
+    let (Some(font), Some((_, width))) = (font(), layout(text, size)) else {
         // The bundled font always parses; a rough estimate keeps boxes sensible otherwise.
         return ([0.5 * size * text.chars().count() as f32, 1.2 * size], size);
     };
     let units = font.units_per_em().unwrap_or(1000.0);
     let scaled = font.as_scaled(size * font.height_unscaled() / units);
-    let mut width = 0.0;
-    let mut previous = None;
-    for c in text.chars() {
-        let id = scaled.glyph_id(c);
-        if id.0 == 0
-            && let Some(advance) = cjk_advance(c, size)
-        {
-            width += advance;
-            previous = None;
-            continue;
-        }
-        if let Some(p) = previous {
-            width += scaled.kern(p, id);
-        }
-        width += scaled.h_advance(id);
-        previous = Some(id);
-    }
     let height = scaled.ascent() - scaled.descent() + scaled.line_gap();
     ([width, height], scaled.ascent())
 }
@@ -191,6 +295,190 @@ pub fn place_label(
     }
     push_inside(anchor.box_at(pos, size), clip)
 }
+
+/// Where two labels of outer sizes `sizes` go side by side about `base` (the point between
+/// them, their bottom edges at `base.y`), `gap` apart: the left one ends `gap / 2` left of
+/// `base.x`, the right one starts `gap / 2` right of it, then both move together, as little
+/// as needed, to lie [`LABEL_INSET`] inside `clip`. They never overlap. Returns the boxes and
+/// whether they fit side by side (when not, the caller shrinks the text by [`pair_fit`] and
+/// places them again; until then they start at the clip's left edge).
+///
+/// ```
+/// use barylab::figure::text::place_pair;
+/// let clip = [0.0, 0.0, 200.0, 100.0];
+/// // In the middle: straddling the point.
+/// let ([l, r], fits) = place_pair([100.0, 50.0], 10.0, [[40.0, 20.0], [60.0, 20.0]], clip);
+/// assert!(fits);
+/// assert_eq!((l, r), ([55.0, 30.0, 95.0, 50.0], [105.0, 30.0, 165.0, 50.0]));
+/// // At the right edge: both move left, the left one stays left of the right one.
+/// let ([l, r], _) = place_pair([200.0, 50.0], 10.0, [[40.0, 20.0], [60.0, 20.0]], clip);
+/// assert_eq!((l[0], r[2]), (88.0, 198.0));
+/// assert!(l[2] < r[0]);
+/// ```
+pub fn place_pair(base: [f32; 2], gap: f32, sizes: [[f32; 2]; 2], clip: Box2) -> ([Box2; 2], bool) {
+    let [ls, rs] = sizes;
+    let (lo, hi) = (clip[0] + LABEL_INSET, clip[2] - LABEL_INSET);
+    // The shift of the pair that puts its left end at `lo`, and its right end at `hi`.
+    let min_shift = lo - (base[0] - gap / 2.0 - ls[0]);
+    let max_shift = hi - (base[0] + gap / 2.0 + rs[0]);
+    let fits = min_shift <= max_shift;
+    let shift = if fits {
+        0.0f32.clamp(min_shift, max_shift)
+    } else {
+        min_shift
+    };
+    let x = base[0] + shift;
+    let left = Anchor::RightBottom.box_at([x - gap / 2.0, base[1]], ls);
+    let right = Anchor::LeftBottom.box_at([x + gap / 2.0, base[1]], rs);
+    let push_y = |b: Box2| {
+        let moved = push_inside(
+            b,
+            [b[0] - LABEL_INSET, clip[1], b[2] + LABEL_INSET, clip[3]],
+        );
+        [b[0], moved[1], b[2], moved[3]]
+    };
+    ([push_y(left), push_y(right)], fits)
+}
+
+/// The factor (at most 1) by which two labels of text widths `text_widths` (without their
+/// padding) must shrink to fit side by side in `clip` with `gap` between their boxes and
+/// `padding` points of box around each text on both sides; 1 when they fit. The text size is
+/// multiplied by it (advances scale with the size); a little is kept spare for rounding.
+///
+/// ```
+/// use barylab::figure::text::pair_fit;
+/// assert_eq!(pair_fit([50.0, 50.0], 0.0, 10.0, [0.0, 0.0, 500.0, 10.0]), 1.0);
+/// // 100 points of room for 200 points of text: about half the size.
+/// let f = pair_fit([100.0, 100.0], 6.0, 20.0, [0.0, 0.0, 148.0, 10.0]);
+/// assert!(f < 0.5 && f > 0.45);
+/// ```
+pub fn pair_fit(text_widths: [f32; 2], padding: f32, gap: f32, clip: Box2) -> f32 {
+    fit(text_widths[0] + text_widths[1], gap + 4.0 * padding, clip)
+}
+
+/// The factor (at most 1, at least [`PAIR_MIN_FIT`]) by which text `text_width` points wide
+/// must shrink so that it and `fixed` points more (padding, gaps) fit across `clip` (less
+/// [`LABEL_INSET`] on each side); 1 when it fits.
+///
+/// ```
+/// use barylab::figure::text::fit;
+/// assert_eq!(fit(50.0, 12.0, [0.0, 0.0, 100.0, 10.0]), 1.0);
+/// assert!((fit(200.0, 12.0, [0.0, 0.0, 116.0, 10.0]) - 0.49).abs() < 1e-6);
+/// ```
+pub fn fit(text_width: f32, fixed: f32, clip: Box2) -> f32 {
+    let room = clip[2] - clip[0] - 2.0 * LABEL_INSET - fixed;
+    if text_width <= 0.0 || room >= text_width {
+        1.0
+    } else {
+        (0.98 * room.max(0.0) / text_width).max(PAIR_MIN_FIT)
+    }
+}
+
+/// The smallest factor [`fit`] shrinks a label by: small enough that labels on the smallest
+/// views still fit (never overlapping, never leaving their view); text that small is only
+/// there to be readable when zoomed in.
+pub const PAIR_MIN_FIT: f32 = 0.02;
+
+/// [`place_label`], but clear of the labels (and handles) already placed: of the box at its
+/// own side of `base` (pushed inside `clip`, else as [`place_label`] places it) and the boxes
+/// mirrored left-right, up-down and both, the first that overlaps none of `placed`; when all four do, the nearest free place found by moving them (up to
+/// [`AVOID_STEPS`] half-heights or half-widths); else the place overlapping them least.
+/// Neighbouring corners' labels on a small image go to different sides instead of on top of
+/// each other.
+///
+/// ```
+/// use barylab::figure::overlay::Anchor;
+/// use barylab::figure::text::{place_label, place_label_avoiding};
+/// let clip = [0.0, 0.0, 100.0, 100.0];
+/// let first = place_label([50.0, 50.0], [2.0, 2.0], Anchor::LeftTop, [20.0, 10.0], clip);
+/// let second = place_label_avoiding([52.0, 52.0], [2.0, 2.0], Anchor::LeftTop, [20.0, 10.0],
+///                                   clip, &[first]);
+/// assert_eq!(second, [30.0, 54.0, 50.0, 64.0]); // mirrored to the left of its point
+/// ```
+pub fn place_label_avoiding(
+    base: [f32; 2],
+    offset: [f32; 2],
+    anchor: Anchor,
+    size: [f32; 2],
+    clip: Box2,
+    placed: &[Box2],
+) -> Box2 {
+    let overlap = |b: Box2| -> f32 {
+        placed
+            .iter()
+            .map(|p| {
+                let w = (b[2].min(p[2]) - b[0].max(p[0])).max(0.0);
+                let h = (b[3].min(p[3]) - b[1].max(p[1])).max(0.0);
+                w * h
+            })
+            .sum()
+    };
+    let candidates = [
+        (anchor, offset),
+        (anchor.flipped_x(), [-offset[0], offset[1]]),
+        (anchor.flipped_y(), [offset[0], -offset[1]]),
+        (anchor.flipped_x().flipped_y(), [-offset[0], -offset[1]]),
+    ];
+    // Each side's box pushed inside the clip as it is, then as `place_label` puts it (mirrored
+    // when it sticks out): a label near the edge keeps its side when there is room.
+    let boxes: Vec<Box2> = candidates
+        .iter()
+        .flat_map(|&(a, o)| {
+            [
+                push_inside(a.box_at([base[0] + o[0], base[1] + o[1]], size), clip),
+                place_label(base, o, a, size, clip),
+            ]
+        })
+        .collect();
+    let mut best: Option<(f32, Box2)> = None;
+    let mut consider = |b: Box2| {
+        let cost = overlap(b);
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, b));
+        }
+        cost == 0.0
+    };
+    for &b in &boxes {
+        if consider(b) {
+            return b;
+        }
+    }
+    // All four sides taken: the nearest free place, moving a side's box up or down (then
+    // left or right) in steps of half its height (width), kept inside the clip.
+    let step = [size[0] / 2.0, size[1] / 2.0];
+    for k in 1..=AVOID_STEPS {
+        for axis in [1, 0] {
+            for sign in [-1.0, 1.0] {
+                for &b in &boxes {
+                    let d = sign * k as f32 * step[axis];
+                    let mut moved = b;
+                    moved[axis] += d;
+                    moved[axis + 2] += d;
+                    let moved = push_inside(moved, clip);
+                    if consider(moved) {
+                        return moved;
+                    }
+                }
+            }
+        }
+    }
+    best.map_or(boxes[1], |(_, b)| b)
+}
+
+/// The part of a handle of radius `radius` at `centre` that labels keep clear of: the square
+/// inside its circle (a label placed diagonally next to its own handle touches only the
+/// circle's rim, outside this square).
+pub fn handle_obstacle(centre: [f32; 2], radius: f32) -> Box2 {
+    let h = HANDLE_OBSTACLE * radius;
+    [centre[0] - h, centre[1] - h, centre[0] + h, centre[1] + h]
+}
+
+/// Half the side of [`handle_obstacle`]'s square, in radii (a little less than 1/sqrt(2)).
+pub const HANDLE_OBSTACLE: f32 = 0.7;
+
+/// How far [`place_label_avoiding`] moves a label looking for a free place: this many half
+/// heights up or down, or half widths left or right.
+pub const AVOID_STEPS: usize = 8;
 
 /// `b` moved as little as needed to lie [`LABEL_INSET`] inside `bounds`, if it fits.
 pub fn push_inside(b: Box2, bounds: Box2) -> Box2 {

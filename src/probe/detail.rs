@@ -209,17 +209,20 @@ impl Prober<'_> {
     }
 
     /// How the fragment shades: [`shade::shade`], and the wireframe test
-    /// ([`shade::on_wire_edge`]) when the wireframe is on.
+    /// ([`shade::WirePaint::of`]: the line or its halo) when the wireframe is on.
     fn shade_trace(&self, s: &TriangleSetup, f: &Fragment) -> ShadeTrace {
         let wire = self.wire_gradients(s);
         let on = self.params.wireframe;
+        let paint = shade::WirePaint::of(f.edge_weights, wire.map(|g| g.length()));
         ShadeTrace {
             shading: self.settings.shading,
             mode: self.settings.mode,
             edge_distance_px: on.then(|| shade::edge_distance_px(f.edge_weights, &wire)),
-            wire: on && (0..3).any(|i| shade::on_wire_edge(f.edge_weights[i], wire[i].length())),
+            wire: on && paint == shade::WirePaint::Line,
+            halo: on && paint == shade::WirePaint::Halo,
             color: shade::shade(f, &self.texture, &self.params, &wire),
             wire_width_px: on.then_some(shade::WIRE_WIDTH_PX),
+            wire_halo_px: on.then_some(shade::WIRE_WIDTH_PX + shade::WIRE_HALO_PX),
             normal: matches!(self.settings.shading, Shading::Normal | Shading::Lambert).then(
                 || {
                     let v = f.varyings(self.settings.mode);

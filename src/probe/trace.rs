@@ -523,11 +523,17 @@ pub struct ShadeTrace {
     pub mode: Interpolation,
     /// Distance to the nearest source edge in pixels (with the wireframe on).
     pub edge_distance_px: Option<f64>,
-    /// Whether the wireframe overlay coloured the pixel.
+    /// Whether the pixel is on a wireframe line (painted [`WIRE_COLOR`](crate::raster::shade::WIRE_COLOR)).
     pub wire: bool,
+    /// Whether the pixel is in a line's dark halo (painted
+    /// [`WIRE_HALO_COLOR`](crate::raster::shade::WIRE_HALO_COLOR)).
+    pub halo: bool,
     /// The distance from an edge below which a pixel is on a line, in pixels,
     /// [`WIRE_WIDTH_PX`](crate::raster::shade::WIRE_WIDTH_PX) (wireframe on).
     pub wire_width_px: Option<f64>,
+    /// The distance in pixels below which a pixel not on a line is in its halo,
+    /// `WIRE_WIDTH_PX + WIRE_HALO_PX` (wireframe on).
+    pub wire_halo_px: Option<f64>,
     /// The colour the fragment shades to.
     pub color: [u8; 4],
     /// The normal behind a normal or Lambert shade (those shadings only).

@@ -103,13 +103,21 @@ pub fn lambert_rgba8(albedo: Vec3, n: Vec3) -> [u8; 4] {
     [unorm8(c.x), unorm8(c.y), unorm8(c.z), 255]
 }
 
-/// Line colour of the wireframe overlay.
-pub const WIRE_COLOR: [u8; 4] = [16, 16, 24, 255];
+/// Line colour of the wireframe overlay: light, so it shows on dark textures and backgrounds.
+pub const WIRE_COLOR: [u8; 4] = [250, 250, 250, 255];
+/// Colour of the wireframe's halo, the dark border along the inner side of each line, so the
+/// line also shows on light textures.
+pub const WIRE_HALO_COLOR: [u8; 4] = [16, 16, 24, 255];
 
 /// Wireframe line width inside each triangle, in pixels. The overlay thresholds the smallest
 /// weight; the threshold for weight i is this width times the weight's screen
 /// gradient, so lines keep one width on screen however close the triangle is.
 pub const WIRE_WIDTH_PX: f64 = 1.0;
+
+/// Width of the halo in pixels, beyond the line: samples from [`WIRE_WIDTH_PX`] up to
+/// `WIRE_WIDTH_PX + WIRE_HALO_PX` from an edge take [`WIRE_HALO_COLOR`]. Only the colour of
+/// covered pixels changes: coverage, depth and every interpolated value stay as they are.
+pub const WIRE_HALO_PX: f64 = 1.0;
 
 /// Distance in pixels from the sample to the nearest edge of the source triangle:
 /// `min_i l_i / |grad l_i|`, with `l` the screen-linear source weights.
@@ -147,6 +155,64 @@ pub fn edge_distance_px(weights: [f32; 3], gradients: &[glam::DVec2; 3]) -> f64 
 #[inline(always)]
 pub fn on_wire_edge(weight: f32, len: f64) -> bool {
     len > 0.0 && f64::from(weight) / len < WIRE_WIDTH_PX
+}
+
+/// The halo test, as [`on_wire_edge`] with the line widened by [`WIRE_HALO_PX`]: the sample
+/// is on the line or its halo. (The AVX2 lanes repeat it; `tests/fast_path.rs` compares them
+/// bit for bit.)
+///
+/// ```
+/// use barylab::raster::shade::on_wire_halo;
+/// assert!(on_wire_halo(0.15, 0.1)); // 1.5 pixels from the edge: in the halo
+/// assert!(!on_wire_halo(0.25, 0.1)); // 2.5 pixels away
+/// ```
+#[inline(always)]
+pub fn on_wire_halo(weight: f32, len: f64) -> bool {
+    len > 0.0 && f64::from(weight) / len < WIRE_WIDTH_PX + WIRE_HALO_PX
+}
+
+/// What the wireframe paints at a sample.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WirePaint {
+    /// Nothing: the shading's own colour.
+    None,
+    /// The line ([`WIRE_COLOR`]).
+    Line,
+    /// The halo along the line ([`WIRE_HALO_COLOR`]).
+    Halo,
+}
+
+impl WirePaint {
+    /// The paint for a sample with source weights `weights` (the `f32`s the varyings hold)
+    /// whose screen gradients have lengths `lens`: the line when [`on_wire_edge`] holds for
+    /// one weight, else the halo when [`on_wire_halo`] does.
+    ///
+    /// ```
+    /// use barylab::raster::shade::WirePaint;
+    /// let lens = [0.1, 0.1, 0.1];
+    /// assert_eq!(WirePaint::of([0.05, 0.5, 0.45], lens), WirePaint::Line);
+    /// assert_eq!(WirePaint::of([0.15, 0.5, 0.35], lens), WirePaint::Halo);
+    /// assert_eq!(WirePaint::of([0.3, 0.4, 0.3], lens), WirePaint::None);
+    /// ```
+    pub fn of(weights: [f32; 3], lens: [f64; 3]) -> Self {
+        if (0..3).any(|i| on_wire_edge(weights[i], lens[i])) {
+            WirePaint::Line
+        } else if (0..3).any(|i| on_wire_halo(weights[i], lens[i])) {
+            WirePaint::Halo
+        } else {
+            WirePaint::None
+        }
+    }
+
+    /// The colour painted over the shading, if any.
+    pub fn color(self) -> Option<[u8; 4]> {
+        match self {
+            WirePaint::None => None,
+            WirePaint::Line => Some(WIRE_COLOR),
+            WirePaint::Halo => Some(WIRE_HALO_COLOR),
+        }
+    }
 }
 
 /// The grey of [`Shading::Depth`]: window depth `d` mapped from `range = (black, white)` to
@@ -209,9 +275,11 @@ pub fn shade(
     p: &ShadeParams,
     wire_gradients: &[glam::DVec2; 3],
 ) -> [u8; 4] {
-    if p.wireframe && (0..3).any(|i| on_wire_edge(frag.edge_weights[i], wire_gradients[i].length()))
+    if p.wireframe
+        && let Some(c) =
+            WirePaint::of(frag.edge_weights, wire_gradients.map(|g| g.length())).color()
     {
-        return WIRE_COLOR;
+        return c;
     }
     let v = frag.varyings(p.mode);
     let bary = v.bary();

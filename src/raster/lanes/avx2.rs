@@ -15,7 +15,9 @@ use super::{
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span;
 use crate::raster::setup::{TriangleSetup, WeightPlanes};
-use crate::raster::shade::{WIRE_COLOR, WIRE_WIDTH_PX, lambert_rgba8, normal_rgba8};
+use crate::raster::shade::{
+    WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX, lambert_rgba8, normal_rgba8,
+};
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
 mod texture;
@@ -32,6 +34,8 @@ struct Pending {
     valid: __m256i,
     /// Lanes on a wireframe line.
     wire: i32,
+    /// Lanes in the wireframe's halo (the line wins where both are set).
+    halo: i32,
     /// Buffer index of lane 0.
     index: usize,
     /// `[u_affine, v_affine, u_smooth, v_smooth]` for a target with uv buffers.
@@ -90,6 +94,13 @@ impl<'s, 'a> Lookups<'s, 'a> {
 #[inline]
 #[target_feature(enable = "avx2")]
 fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
+    if chunk.halo != 0 {
+        rgba = _mm256_blendv_epi8(
+            rgba,
+            _mm256_set1_epi32(i32::from_le_bytes(WIRE_HALO_COLOR)),
+            mask_from_bits(chunk.halo),
+        );
+    }
     if chunk.wire != 0 {
         rgba = _mm256_blendv_epi8(
             rgba,
@@ -222,7 +233,7 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
             dot3(&p, b[3]),
         ]
     });
-    let mut wire = 0;
+    let (mut wire, mut halo) = (0, 0);
     if let Some(wire_consts) = &c.wire {
         for i in 0..3 {
             if wire_consts.len[i] > 0.0 {
@@ -233,6 +244,11 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
                 wire |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
                     d,
                     _mm256_set1_pd(WIRE_WIDTH_PX),
+                ));
+                // `shade::on_wire_halo`, mirrored the same way.
+                halo |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
+                    d,
+                    _mm256_set1_pd(WIRE_WIDTH_PX + WIRE_HALO_PX),
                 ));
             }
         }
@@ -249,6 +265,7 @@ fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: Lan
         depth: dot3(&l, c.depth),
         ok: _mm256_movemask_pd(ok),
         wire,
+        halo,
         channels,
         both_uv,
     }
@@ -262,6 +279,8 @@ struct Four {
     /// Validity and wireframe bits, lane k in bit k.
     ok: i32,
     wire: i32,
+    /// Wireframe halo bits, lane k in bit k.
+    halo: i32,
     /// The interpolated channels of [`Constants`] (zero for texture and depth shading).
     channels: [__m256d; CHANNELS],
     /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
@@ -430,6 +449,7 @@ pub(super) fn edge_triangle(
                         depth: to_f32(lo.depth, hi.depth),
                         valid: mask_from_bits(ok),
                         wire: lo.wire | (hi.wire << 4),
+                        halo: lo.halo | (hi.halo << 4),
                         index: (y - target.y0) as usize * target.width as usize + bx as usize,
                         both_uv: lo
                             .both_uv
@@ -521,6 +541,7 @@ pub(super) fn scanline_triangle(
                     depth: to_f32(vals[0][3], vals[1][3]),
                     valid: mask_from_bits(ok),
                     wire: 0,
+                    halo: 0,
                     index: row + x as usize,
                     both_uv: None,
                 };

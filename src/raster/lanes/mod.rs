@@ -43,7 +43,10 @@ use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
 use super::setup::{PixelBounds, TriangleSetup, WeightPlanes};
-use super::shade::{WIRE_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge, unorm8};
+use super::shade::{
+    WIRE_COLOR, WIRE_HALO_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge,
+    on_wire_halo, unorm8,
+};
 use super::texture::{
     self, Filter, Texture, Wrap, bilinear_fraction, bilinear_weights, byte_from_sum, wrap_coord,
 };
@@ -276,6 +279,8 @@ struct Samples {
     depth: F32s,
     ok: Mask,
     wire: Mask,
+    /// Lanes in the wireframe's halo (the line wins where both are set).
+    halo: Mask,
     channels: [F32s; CHANNELS],
     depth64: F64s,
     /// `[u_affine, v_affine, u_smooth, v_smooth]` (when [`Constants::both_uv`] is set).
@@ -290,6 +295,7 @@ impl Samples {
             depth: [0.0; LANES],
             ok: [false; LANES],
             wire: [false; LANES],
+            halo: [false; LANES],
             channels: [[0.0; LANES]; CHANNELS],
             depth64: [0.0; LANES],
             both_uv: [[0.0; LANES]; 4],
@@ -398,6 +404,7 @@ fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
                 let b = &wire.bary[i];
                 let weight = (l[0] * b[0] + l[1] * b[1] + l[2] * b[2]) as f32;
                 out.wire[k] |= on_wire_edge(weight, wire.len[i]);
+                out.halo[k] |= on_wire_halo(weight, wire.len[i]);
             }
         }
     }
@@ -540,6 +547,8 @@ fn edge_triangle_impl(
                             for k in 0..LANES {
                                 if s.wire[k] {
                                     colors[k] = WIRE_COLOR;
+                                } else if s.halo[k] {
+                                    colors[k] = WIRE_HALO_COLOR;
                                 }
                             }
                             write(target, bx, y, &s, &colors);

@@ -21,7 +21,9 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
         return;
     };
     if let Some(sh) = &d.shade {
-        if let (Some(dist), Some(width)) = (sh.edge_distance_px, sh.wire_width_px) {
+        if let (Some(dist), Some(width), Some(halo)) =
+            (sh.edge_distance_px, sh.wire_width_px, sh.wire_halo_px)
+        {
             b.para(vec![
                 t(tr!(b, "probe.color.wireframe_before")),
                 m1(num(dist)),
@@ -29,8 +31,11 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
                     b,
                     "probe.color.wireframe_after",
                     width = fmt_number(width),
+                    halo = fmt_number(halo),
                     line = if sh.wire {
                         tr!(b, "probe.color.line_pixel")
+                    } else if sh.halo {
+                        tr!(b, "probe.color.halo_pixel")
                     } else {
                         String::new()
                     }

@@ -1,0 +1,68 @@
+//! What an overlay is built from: the handles, the marked pixels with their triangles, and
+//! the view's settings ([`OverlayInput`]).
+
+use glam::DVec2;
+
+use crate::raster::Interpolation;
+
+/// A vertex handle as the overlay shows it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HandleMark {
+    /// The mesh vertex's index (its name and colour).
+    pub index: usize,
+    /// Window position, or `None` when the vertex is behind the camera.
+    pub window: Option<DVec2>,
+    /// The vertex's clip w, shown in its label.
+    pub w: f64,
+    /// Hovered or dragged: drawn larger.
+    pub active: bool,
+}
+
+/// The three vertices (unsnapped window positions, in triangle order) and mesh indices of the
+/// triangle a marked pixel's weights refer to, with the weights. A vertex the clipper made has
+/// no mesh index.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriangleMark {
+    /// Unsnapped window positions of the three corners, in triangle order.
+    pub vertices: [DVec2; 3],
+    /// Each corner's mesh vertex (`None` for a point the clipper made).
+    pub mesh_indices: [Option<usize>; 3],
+    /// Screen-space weights of the three vertices at the pixel centre.
+    pub weights: [f64; 3],
+}
+
+/// A marked (hovered or pinned) pixel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelMark {
+    /// The pixel (column, row).
+    pub pixel: [u32; 2],
+    /// The triangle its weights refer to, if any.
+    pub triangle: Option<TriangleMark>,
+}
+
+/// What the overlay of one view shows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OverlayInput {
+    /// Rendered image size in pixels.
+    pub size: [u32; 2],
+    /// Display pixels per rendered pixel.
+    pub pixel_size: u32,
+    /// Display pixels per point (sizes in points are this many display pixels).
+    pub pixels_per_point: f32,
+    /// The mode this view shows (`None` for the difference view).
+    pub mode: Option<Interpolation>,
+    /// Draw the pixel grid (from [`GRID_FROM_PIXEL_SIZE`](super::GRID_FROM_PIXEL_SIZE)).
+    pub show_grid: bool,
+    /// The vertex handles.
+    pub handles: Vec<HandleMark>,
+    /// The hovered pixel (marker with crosshair).
+    pub hover: Option<PixelMark>,
+    /// The pinned pixel (marker, triangle, sub-triangles).
+    pub pin: Option<PixelMark>,
+    /// Draw the hovered pixel's sub-triangles.
+    pub sub_areas: bool,
+    /// Wipe line x in canvas pixels, with the modes left and right of it.
+    pub wipe: Option<(f64, Interpolation, Interpolation)>,
+    /// Colour bar top value in texels (difference view).
+    pub color_bar: Option<f32>,
+}
