@@ -512,12 +512,10 @@ fn window_contents(
             });
             ui.end_row();
         });
-    // A figure option, under the scale and background; the catalogue's words (English
-    // until the app has a language setting).
-    let lang = crate::i18n::Lang::En;
+    // A figure option, under the scale and background.
     let mut caption = s.caption;
-    ui.checkbox(&mut caption, crate::i18n::tr(lang, "figure.caption.option"))
-        .on_hover_text(crate::i18n::tr(lang, "figure.caption.option_tip"));
+    ui.checkbox(&mut caption, lang.tr("figure.caption.option"))
+        .on_hover_text(lang.tr("figure.caption.option_tip"));
     if caption != s.caption {
         out.push(ExportCommand::SetCaption(caption));
     }

@@ -135,8 +135,11 @@ pub fn export(request: &ExportRequest<'_>) -> Result<Vec<PathBuf>, ExportError> 
     if sel.derivation
         && let Some(trace) = r.figure.pinned.as_ref().or(r.figure.hovered.as_ref())
     {
-        files.push(("md", format::write(trace, Format::Markdown).into_bytes()));
-        files.push(("tex", format::write(trace, Format::Latex).into_bytes()));
+        // The derivation in the figure's language (LaTeX stays English: see docs/probe.md).
+        let lang = r.figure.lang;
+        let md = format::write_in(trace, Format::Markdown, lang);
+        files.push(("md", md.into_bytes()));
+        files.push(("tex", format::write_in(trace, Format::Latex, lang).into_bytes()));
     }
     if sel.scene {
         files.push(("json", scene_json(r.scene, r.scene_dir).into_bytes()));
