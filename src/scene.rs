@@ -24,7 +24,7 @@ use crate::raster::texture::{BuiltinTexture, Filter, Texture, TextureError, Wrap
 use crate::raster::{Interpolation, Shading};
 use json::{parse_error, strict};
 
-mod json;
+pub(crate) mod json;
 
 /// Errors while reading or checking a scene.
 #[derive(Debug, thiserror::Error)]

@@ -104,6 +104,8 @@ pub struct AppOptions {
     pub present: bool,
     /// Start with this pixel pinned.
     pub pin: Option<[u32; 2]>,
+    /// Start in a lesson, at this step (0-based).
+    pub lesson: Option<(crate::lesson::Lesson, usize)>,
 }
 
 /// Errors that stop the app.
