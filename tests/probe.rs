@@ -108,6 +108,7 @@ scene_tests! {
     corner_behind: "corner-behind.json",
     default: "default.json",
     far_checker: "far-checker.json",
+    receding_wall: "receding-wall.json",
     front: "front.json",
     games101_a2: "games101-a2.json",
     games101_a3_spot: "games101-a3-spot.json",

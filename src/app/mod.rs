@@ -10,7 +10,9 @@
 //! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
 //!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
 //!   [`image_size`], [`canvas`], [`inspector`], [`present`], [`status`], [`help`], [`export`],
-//!   [`bench_panel`] (with [`bench_chart`]), and the keyboard [`shortcuts`].
+//!   [`bench_panel`] (with [`bench_chart`]), [`lessons`] (the Lessons panel, its
+//!   presentation strip and menu), [`plots`] (the pinned row's plot), and the keyboard
+//!   [`shortcuts`].
 //! - Around them: [`layout`] (side panels, canvas, presentation card; [`side_panels`] is the
 //!   arithmetic), [`history`] (undo and redo), [`access`] (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
@@ -39,10 +41,12 @@ pub mod history;
 pub mod image_size;
 pub mod inspector;
 pub mod layout;
+pub mod lessons;
 pub mod paint;
 pub mod path_window;
 pub mod persist;
 pub mod pixel;
+pub mod plots;
 pub mod present;
 pub mod presets;
 pub mod render;
@@ -151,6 +155,8 @@ pub struct BaryApp {
     history: history::History,
     /// The scene file the scene came from or was saved to last (File > Save writes it).
     scene_file: Option<PathBuf>,
+    /// The open lesson (with the user's own state set aside) and the lesson file dialog.
+    lessons: lessons::Lessons,
 }
 
 impl BaryApp {
@@ -215,9 +221,13 @@ impl BaryApp {
             panel_first: Side::default(),
             history: history::History::default(),
             scene_file: None,
+            lessons: lessons::Lessons::default(),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
+        }
+        if let Some((lesson, step)) = options.lesson {
+            app.enter_lesson(lesson, step);
         }
         if let Some(p) = options.pin {
             app.push(state::Command::Pin(Some(p)));
@@ -296,6 +306,7 @@ impl BaryApp {
                 export_open: self.export.open,
                 presenting: self.presenting,
                 last_preset: self.last_preset,
+                lesson_open: self.lessons.session.is_some(),
             },
         ));
         // Files dropped on the window, or picked in the Open dialog.
@@ -309,6 +320,7 @@ impl BaryApp {
         self.commands
             .extend(dropped.into_iter().map(|p| FileCommand::Open(p).into()));
         self.commands.extend(self.picker.poll().map(Into::into));
+        self.commands.extend(self.lessons.poll().map(Into::into));
 
         let (texture, texture_error) = self
             .textures
@@ -361,6 +373,7 @@ impl BaryApp {
         let ctx = ui.ctx().clone();
         let mut out: Vec<AppCommand> = Vec::new();
         if self.presenting {
+            self.lesson_strip(ui, &mut out);
             self.presentation(ui, texture, &mut out);
             self.commands.extend(out);
             return;
@@ -376,6 +389,8 @@ impl BaryApp {
                     help_open: self.help_open,
                     bench_open: self.bench.open,
                     presenting: self.presenting,
+                    lesson_open: self.lessons.session.is_some(),
+                    lang: self.lang(),
                 },
             ));
         });
@@ -401,8 +416,10 @@ impl BaryApp {
                 self.message.as_ref(),
             );
         });
+        self.lesson_panel(ui, texture, &mut out);
         self.side_panels_ui(ui, &mut out);
         self.canvas_panel(ui, texture, &mut out);
+        self.plot_window(&ctx, texture, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(help::text::TITLE)
             .open(&mut help_open)
@@ -501,6 +518,7 @@ impl BaryApp {
             AppCommand::Redo => {
                 self.history.redo(&mut self.state);
             }
+            AppCommand::Lesson(c) => self.apply_lesson(ctx, c),
         }
     }
 }
@@ -529,7 +547,9 @@ impl eframe::App for BaryApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if self.persist {
-            let saved = SavedState::capture(&self.state, &self.recent, &self.export.settings);
+            // In a lesson, the user's own state is what is kept.
+            let state = self.lessons.user_state().unwrap_or(&self.state);
+            let saved = SavedState::capture(state, &self.recent, &self.export.settings);
             if let Some(path) = &self.state_file
                 && let Err(e) = persist::write_state_file(path, &saved)
             {

@@ -8,7 +8,7 @@ use egui::Ui;
 use super::command::{self, AppCommand};
 use super::export::ExportCommand;
 use super::state::{AppState, Command};
-use super::{bench_panel, controls, export, file_menu, files, present};
+use super::{bench_panel, controls, export, file_menu, files, lessons, present};
 
 /// User-facing strings of the top bar.
 pub mod text {
@@ -37,6 +37,10 @@ pub struct TopBarInput<'a> {
     pub help_open: bool,
     pub bench_open: bool,
     pub presenting: bool,
+    /// A lesson is open.
+    pub lesson_open: bool,
+    /// The language of the Lessons menu.
+    pub lang: crate::i18n::Lang,
 }
 
 /// The top bar.
@@ -59,6 +63,11 @@ pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
         {
             out.push(AppCommand::SetPresenting(!input.presenting));
         }
+        out.extend(command::all(lessons::lessons_menu_ui(
+            ui,
+            input.lesson_open,
+            input.lang,
+        )));
         if compact {
             ui.menu_button(text::VIEW, |ui| {
                 toggles(ui, input, &mut out);

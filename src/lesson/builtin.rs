@@ -11,7 +11,7 @@ pub const SCENE_PREFIX: &str = "builtin:";
 pub const LESSON: &str = include_str!("../../assets/lessons/interpolation.json");
 
 /// The scenes of `assets/scenes/` that need no other file (built-in textures only), by name.
-pub const SCENES: [(&str, &str); 10] = [
+pub const SCENES: [(&str, &str); 11] = [
     ("default", include_str!("../../assets/scenes/default.json")),
     ("front", include_str!("../../assets/scenes/front.json")),
     (
@@ -41,6 +41,10 @@ pub const SCENES: [(&str, &str); 10] = [
     (
         "rgb-triangle",
         include_str!("../../assets/scenes/rgb-triangle.json"),
+    ),
+    (
+        "receding-wall",
+        include_str!("../../assets/scenes/receding-wall.json"),
     ),
     (
         "games101-pitfall",
