@@ -410,3 +410,120 @@ fn the_handout_has_every_step_its_figures_and_never_overwrites() {
         );
     }
 }
+
+mod app {
+    use barylab::app::lessons::LessonCommand;
+    use barylab::app::presets::Preset;
+    use barylab::app::state::Command;
+    use barylab::app::{AppOptions, BaryApp};
+    use barylab::figure::Compare;
+    use barylab::lesson::Lesson;
+    use egui_kittest::Harness;
+    use egui_kittest::kittest::Queryable;
+
+    fn harness() -> Harness<'static, BaryApp> {
+        let app = BaryApp::new(None, AppOptions::default());
+        let mut h = Harness::builder()
+            .with_size(egui::vec2(1280.0, 800.0))
+            .with_max_steps(30)
+            .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+        h.run();
+        h
+    }
+
+    /// The step's scene, view and pin are what the lesson says.
+    fn assert_at_step(h: &Harness<'_, BaryApp>, lesson: &Lesson, n: usize) {
+        let want = lesson.state(n).expect("step");
+        let app = h.state();
+        assert_eq!(app.lesson_step(), Some(n));
+        let s = app.state();
+        assert_eq!(s.scene, want.scene, "step {}'s scene", n + 1);
+        assert_eq!(s.view.pinned, want.pin);
+        assert_eq!(s.view.compare, want.compare);
+        assert_eq!(s.view.plot, want.plot);
+        assert_eq!(s.view.rasterizer, want.rasterizer);
+    }
+
+    #[test]
+    fn a_lesson_steps_with_next_and_page_down_and_leaving_restores_the_users_scene() {
+        let lesson = Lesson::builtin().expect("built-in lesson");
+        let mut h = harness();
+        // The user's own work: a preset (one undo step), the side-by-side view and a pin.
+        h.state_mut().push(Command::Preset(Preset::GrazingWall));
+        h.run();
+        h.state_mut().push(Command::SetCompare(Compare::SideBySide));
+        h.state_mut().push(Command::Pin(Some([5, 6])));
+        h.run();
+        let mine = h.state().state().clone();
+        let undo_steps = h.state().history().undo_steps();
+        assert_eq!(undo_steps, 1);
+
+        h.state_mut().push(LessonCommand::OpenBuiltin);
+        h.run();
+        assert_at_step(&h, &lesson, 0);
+        // The panel shows the step's text and its "try this".
+        let title = format!("1. {}", lesson.steps[0].title.en);
+        assert!(h.query_all_by_label(&title).count() >= 2, "the list and the heading");
+        // Next (the button) goes to step 2 and sets its state; Page Down to step 3.
+        h.get_by_label("Next »").click();
+        h.run();
+        assert_at_step(&h, &lesson, 1);
+        h.key_press(egui::Key::PageDown);
+        h.run();
+        assert_at_step(&h, &lesson, 2);
+        h.key_press(egui::Key::PageUp);
+        h.run();
+        assert_at_step(&h, &lesson, 1);
+        // Step changes are not edits: nothing to undo.
+        assert!(!h.state().history().can_undo());
+        // The user changes the step; "reset this step" puts it back.
+        h.state_mut().push(Command::SetMode(barylab::raster::Interpolation::Affine));
+        h.state_mut().push(Command::Pin(Some([1, 1])));
+        h.run();
+        h.get_by_label("Reset this step").click();
+        h.run();
+        assert_at_step(&h, &lesson, 1);
+        // A step far on, then leave: the user's scene, view, pin and undo history are back.
+        h.state_mut().push(LessonCommand::Go(15));
+        h.run();
+        assert_at_step(&h, &lesson, 15);
+        h.get_by_label("Leave the lesson").click();
+        h.run();
+        assert_eq!(h.state().lesson_step(), None);
+        assert_eq!(h.state().state(), &mine);
+        assert_eq!(h.state().history().undo_steps(), undo_steps);
+    }
+
+    #[test]
+    fn the_arrow_keys_step_only_while_no_pixel_is_pinned() {
+        let lesson = Lesson::builtin().expect("built-in lesson");
+        let mut h = harness();
+        h.state_mut().push(LessonCommand::OpenBuiltin);
+        h.run();
+        // Step 1 pins a pixel: the arrows move the pin.
+        h.key_press(egui::Key::ArrowRight);
+        h.run();
+        assert_eq!(h.state().lesson_step(), Some(0));
+        assert_eq!(h.state().state().view.pinned, Some([161, 140]));
+        // Unpinned (Esc), the arrows step through the lesson.
+        h.key_press(egui::Key::Escape);
+        h.run();
+        h.key_press(egui::Key::ArrowRight);
+        h.run();
+        assert_at_step(&h, &lesson, 1);
+        // Step 2 pins its own pixel: unpin again to step back.
+        h.key_press(egui::Key::Escape);
+        h.run();
+        h.key_press(egui::Key::ArrowLeft);
+        h.run();
+        assert_at_step(&h, &lesson, 0);
+        // A bad lesson file leaves everything as it was and says why.
+        let before = h.state().state().clone();
+        h.state_mut()
+            .push(LessonCommand::OpenFile("/nonexistent/lesson.json".into()));
+        h.run();
+        assert_eq!(h.state().state(), &before);
+        let banner = h.state().banner().expect("a banner").join(" ");
+        assert!(banner.contains("lesson.json"), "{banner}");
+    }
+}

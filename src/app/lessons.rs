@@ -492,3 +492,10 @@ const PANEL_SHARE: f32 = 0.3;
 const PANEL_MAX_SHARE: f32 = 0.5;
 /// The Lessons panel's smallest height in points.
 const PANEL_MIN: f32 = 120.0;
+
+impl BaryApp {
+    /// The open lesson's current step (0-based), if a lesson is open.
+    pub fn lesson_step(&self) -> Option<usize> {
+        self.lessons.session.as_ref().map(|s| s.step)
+    }
+}
