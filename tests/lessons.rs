@@ -463,7 +463,10 @@ mod app {
         assert_at_step(&h, &lesson, 0);
         // The panel shows the step's text and its "try this".
         let title = format!("1. {}", lesson.steps[0].title.en);
-        assert!(h.query_all_by_label(&title).count() >= 2, "the list and the heading");
+        assert!(
+            h.query_all_by_label(&title).count() >= 2,
+            "the list and the heading"
+        );
         // Next (the button) goes to step 2 and sets its state; Page Down to step 3.
         h.get_by_label("Next »").click();
         h.run();
@@ -477,7 +480,8 @@ mod app {
         // Step changes are not edits: nothing to undo.
         assert!(!h.state().history().can_undo());
         // The user changes the step; "reset this step" puts it back.
-        h.state_mut().push(Command::SetMode(barylab::raster::Interpolation::Affine));
+        h.state_mut()
+            .push(Command::SetMode(barylab::raster::Interpolation::Affine));
         h.state_mut().push(Command::Pin(Some([1, 1])));
         h.run();
         h.get_by_label("Reset this step").click();

@@ -88,11 +88,15 @@ impl BaryApp {
                             .auto_shrink([false, false])
                             .show(ui, |ui| {
                                 ui.set_max_width(width);
-                                inspector::inspector_ui(
+                                let shown = inspector::inspector_ui(
                                     ui,
                                     self.reports.hover.as_ref(),
                                     self.reports.pin.as_ref(),
+                                    self.lessons.open_sections.as_deref(),
                                 );
+                                if shown {
+                                    self.lessons.open_sections = None;
+                                }
                             });
                     });
             }

@@ -328,8 +328,13 @@ pub fn lesson_panel_ui(
                             if r.clicked() && i != session.step {
                                 out.push(LessonCommand::Go(i));
                             }
-                            if i == session.step && r.gained_focus() {
-                                r.scroll_to_me(None);
+                            // Scroll the current step into view once when it changes (the
+                            // list's own scratch memory), so the user can still scroll it.
+                            let id = ui.make_persistent_id("lesson-steps-scrolled");
+                            if i == session.step && ui.data(|d| d.get_temp::<usize>(id)) != Some(i)
+                            {
+                                r.scroll_to_me(Some(egui::Align::Center));
+                                ui.data_mut(|d| d.insert_temp(id, i));
                             }
                         }
                     });
@@ -409,14 +414,31 @@ pub fn lesson_strip_ui(
         let first: String = spans.into_iter().map(|s| s.text).collect();
         ui.add(
             egui::Label::new(
-                RichText::new(first)
-                    .size(size * 0.62)
+                RichText::new(first_sentence(&first))
+                    .size(size * 0.72)
                     .color(egui::Color32::LIGHT_GRAY),
             )
             .wrap(),
         );
     }
     out
+}
+
+/// The first sentence of a paragraph (up to ". " or "。"), for the presentation strip.
+///
+/// ```
+/// use barylab::app::lessons::first_sentence;
+/// assert_eq!(first_sentence("One w. Two."), "One w.");
+/// assert_eq!(first_sentence("一句。两句。"), "一句。");
+/// ```
+pub fn first_sentence(p: &str) -> &str {
+    let en = p.find(". ").map(|i| i + 1);
+    let zh = p.find('。').map(|i| i + '。'.len_utf8());
+    match (en, zh) {
+        (Some(a), Some(b)) => &p[..a.min(b)],
+        (Some(a), None) | (None, Some(a)) => &p[..a],
+        (None, None) => p,
+    }
 }
 
 /// The top bar's Lessons menu: the built-in lesson, a lesson file, leaving the open one.
