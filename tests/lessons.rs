@@ -53,6 +53,13 @@ fn the_builtin_lesson_has_at_least_12_steps_in_both_languages() {
             i + 1
         );
         assert_ne!(step.text.en, step.text.zh);
+        // A one-line summary for presentation mode's strip.
+        let summary = step.summary.as_ref().expect("a summary");
+        assert!(
+            summary.en.len() < 100 && !summary.en.contains('\n'),
+            "step {}",
+            i + 1
+        );
     }
     // The file in assets/ is the one compiled in.
     let from_file = barylab::lesson::load(

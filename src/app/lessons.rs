@@ -20,7 +20,7 @@ use super::history::History;
 use super::plots::{PlotLines, plot_ui};
 use super::state::AppState;
 use crate::i18n::{Lang, tr};
-use crate::lesson::text::{Block, blocks};
+use crate::lesson::text::{self, Block, blocks};
 use crate::lesson::{InspectorSection, Lesson, LessonPlot, StepState};
 
 /// What the Lessons panel, the strip, the menu and the keys ask for.
@@ -217,7 +217,7 @@ const TEXT_SIZE: f32 = 17.0;
 
 /// A step's text as egui labels: paragraphs with bold spans, formula blocks in monospace.
 fn text_ui(ui: &mut Ui, text: &str, size: f32) {
-    for block in blocks(text) {
+    for (k, block) in blocks(text).into_iter().enumerate() {
         match block {
             Block::Paragraph(spans) => {
                 let mut job = egui::text::LayoutJob::default();
@@ -237,10 +237,17 @@ fn text_ui(ui: &mut Ui, text: &str, size: f32) {
                 ui.add(egui::Label::new(job).wrap());
             }
             Block::Formula(lines) => {
-                ui.add(
-                    egui::Label::new(RichText::new(lines.join("\n")).monospace().size(size - 2.0))
-                        .wrap(),
-                );
+                // A matrix keeps its lines: wider than the panel, it scrolls sideways.
+                egui::ScrollArea::horizontal()
+                    .id_salt(("formula", k))
+                    .show(ui, |ui| {
+                        ui.add(
+                            egui::Label::new(
+                                RichText::new(lines.join("\n")).monospace().size(size - 2.0),
+                            )
+                            .extend(),
+                        );
+                    });
             }
         }
         ui.add_space(size * 0.4);
@@ -410,12 +417,21 @@ pub fn lesson_strip_ui(
                 .color(egui::Color32::WHITE),
         );
     });
-    if let Some(Block::Paragraph(spans)) = blocks(step.text.get(lang)).into_iter().next() {
-        let first: String = spans.into_iter().map(|s| s.text).collect();
+    let short = match &step.summary {
+        Some(s) => Some(text::plain(s.get(lang))),
+        None => match blocks(step.text.get(lang)).into_iter().next() {
+            Some(Block::Paragraph(spans)) => {
+                let p: String = spans.into_iter().map(|s| s.text).collect();
+                Some(first_sentence(&p).to_string())
+            }
+            _ => None,
+        },
+    };
+    if let Some(first) = short {
         ui.add(
             egui::Label::new(
-                RichText::new(first_sentence(&first))
-                    .size(size * 0.72)
+                RichText::new(first)
+                    .size(size * 0.85)
                     .color(egui::Color32::LIGHT_GRAY),
             )
             .wrap(),

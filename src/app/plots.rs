@@ -11,7 +11,7 @@
 
 use std::sync::Arc;
 
-use egui_plot::{Legend, Line, Plot, VLine};
+use egui_plot::{Corner, Legend, Line, Plot, VLine};
 
 use super::BaryApp;
 use super::command::AppCommand;
@@ -130,7 +130,7 @@ pub fn plot_ui(
         return out;
     };
     Plot::new(("row-plot", plot as u8))
-        .legend(Legend::default())
+        .legend(Legend::default().position(Corner::LeftTop))
         .x_axis_label(tr(lang, "lesson.plot_column"))
         .height((ui.available_height() - 8.0).max(120.0))
         .show(ui, |p| {

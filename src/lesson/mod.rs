@@ -189,6 +189,9 @@ pub struct StepScene {
 pub struct Step {
     /// The step's title.
     pub title: Text,
+    /// One line for presentation mode's strip (a key formula or claim); `None`: the text's
+    /// first sentence.
+    pub summary: Option<Text>,
     /// The explanation: paragraphs separated by blank lines, `**bold**`, formulas in plain
     /// Unicode ([`text::blocks`]; a block indented by four spaces is a formula block).
     pub text: Text,

@@ -63,6 +63,8 @@ struct RawLesson {
 )]
 struct RawStep {
     title: Text,
+    #[serde(default)]
+    summary: Option<Text>,
     text: Text,
     #[serde(rename = "try")]
     try_this: Text,
@@ -123,6 +125,7 @@ impl<'de> Deserialize<'de> for Step {
         }
         Ok(Step {
             title: r.title,
+            summary: r.summary,
             text: r.text,
             try_this: r.try_this,
             scene: r.scene,
