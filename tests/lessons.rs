@@ -400,6 +400,17 @@ fn the_handout_has_every_step_its_figures_and_never_overwrites() {
         };
         assert!(md.matches(derivation).count() >= 12, "derivations");
         assert!(md.contains("$"), "math for pandoc");
+        // pandoc, where installed, reads it (math, figures, code blocks) without a complaint.
+        if let Ok(out) = Command::new("pandoc")
+            .current_dir(&out_dir)
+            .args(["handout.md", "-s", "--mathml", "-o", "handout.html"])
+            .output()
+        {
+            assert!(out.status.success() && out.stderr.is_empty(), "{}", stderr(&out));
+            let html = std::fs::read_to_string(out_dir.join("handout.html")).expect("html");
+            assert_eq!(html.matches("<img").count(), lesson.steps.len());
+            std::fs::remove_file(out_dir.join("handout.html")).expect("remove");
+        }
         // Never over an existing file: a second run fails and leaves the files as they were.
         let before = std::fs::read(out_dir.join("handout.md")).expect("md");
         let again = barylab(&[
