@@ -406,7 +406,11 @@ fn the_handout_has_every_step_its_figures_and_never_overwrites() {
             .args(["handout.md", "-s", "--mathml", "-o", "handout.html"])
             .output()
         {
-            assert!(out.status.success() && out.stderr.is_empty(), "{}", stderr(&out));
+            assert!(
+                out.status.success() && out.stderr.is_empty(),
+                "{}",
+                stderr(&out)
+            );
             let html = std::fs::read_to_string(out_dir.join("handout.html")).expect("html");
             assert_eq!(html.matches("<img").count(), lesson.steps.len());
             std::fs::remove_file(out_dir.join("handout.html")).expect("remove");

@@ -27,7 +27,7 @@ pub enum AppCommand {
     Undo,
     /// Redo the last undone scene edit.
     Redo,
-    /// The Lessons panel, menu and keys ([`super::BaryApp::apply_lesson`]).
+    /// The Lessons panel, menu and keys (applied by `BaryApp::apply_lesson`).
     Lesson(LessonCommand),
 }
 

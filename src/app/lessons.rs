@@ -1,7 +1,7 @@
 //! The Lessons panel: the steps of a lesson ([`crate::lesson`]), the step's text and "try
 //! this", Previous / Next, "reset this step" and leaving; the presentation strip; the top
 //! bar's Lessons menu. Panels take what they show and return [`LessonCommand`]s; the app
-//! applies them ([`BaryApp::apply_lesson`]).
+//! applies them (`BaryApp::apply_lesson`).
 //!
 //! Opening a lesson sets the user's own scene, settings, undo history and scene file aside;
 //! leaving brings them back exactly. Step changes are not edits: they never enter the undo
@@ -222,10 +222,16 @@ fn text_ui(ui: &mut Ui, text: &str, size: f32) {
             Block::Paragraph(spans) => {
                 let mut job = egui::text::LayoutJob::default();
                 let color = ui.visuals().strong_text_color();
+                // Bold terms stand out by colour too (egui's strong text is only brighter).
+                let term = if ui.visuals().dark_mode {
+                    egui::Color32::from_rgb(250, 204, 92)
+                } else {
+                    egui::Color32::from_rgb(150, 80, 0)
+                };
                 for s in spans {
                     let mut t = RichText::new(s.text).size(size).color(color);
                     if s.bold {
-                        t = t.strong();
+                        t = t.strong().color(term);
                     }
                     t.append_to(
                         &mut job,
