@@ -552,4 +552,20 @@ mod app {
         let banner = h.state().banner().expect("a banner").join(" ");
         assert!(banner.contains("lesson.json"), "{banner}");
     }
+
+    #[test]
+    fn the_row_plot_opens_from_the_menu_outside_a_lesson() {
+        let mut h = harness();
+        h.state_mut().push(Command::Pin(Some([400, 420])));
+        h.run();
+        h.get_by_label("Lessons").click();
+        h.run();
+        h.get_by_label("Plot along the pinned row").click();
+        h.run();
+        assert_eq!(
+            h.state().state().view.plot,
+            Some(barylab::lesson::LessonPlot::UvRow)
+        );
+        let _ = h.get_by_label("Along the pinned pixel's row");
+    }
 }

@@ -18,7 +18,7 @@ use super::command::AppCommand;
 use super::dialog::{DialogOutcome, NativeDialog};
 use super::history::History;
 use super::plots::{PlotLines, plot_ui};
-use super::state::AppState;
+use super::state::{AppState, Command};
 use crate::i18n::{Lang, tr};
 use crate::lesson::text::{self, Block, blocks};
 use crate::lesson::{InspectorSection, Lesson, LessonPlot, StepState};
@@ -463,9 +463,16 @@ pub fn first_sentence(p: &str) -> &str {
     }
 }
 
-/// The top bar's Lessons menu: the built-in lesson, a lesson file, leaving the open one.
-pub fn lessons_menu_ui(ui: &mut Ui, open: bool, lang: Lang) -> Vec<LessonCommand> {
-    let mut out = Vec::new();
+/// The top bar's Lessons menu: the built-in lesson, a lesson file, leaving the open one, and
+/// showing or hiding the plot of the pinned pixel's row (`plot`: the one shown).
+pub fn lessons_menu_ui(
+    ui: &mut Ui,
+    open: bool,
+    plot: Option<LessonPlot>,
+    lang: Lang,
+) -> Vec<AppCommand> {
+    let mut out: Vec<LessonCommand> = Vec::new();
+    let mut plot_out: Vec<AppCommand> = Vec::new();
     ui.menu_button(tr(lang, "lesson.menu"), |ui| {
         if ui.button(tr(lang, "lesson.open_builtin")).clicked() {
             out.push(LessonCommand::OpenBuiltin);
@@ -479,8 +486,24 @@ pub fn lessons_menu_ui(ui: &mut Ui, open: bool, lang: Lang) -> Vec<LessonCommand
             out.push(LessonCommand::Leave);
             ui.close();
         }
+        ui.separator();
+        let label = if plot.is_some() {
+            "lesson.plot_hide"
+        } else {
+            "lesson.plot_show"
+        };
+        if ui.button(tr(lang, label)).clicked() {
+            let next = match plot {
+                Some(_) => None,
+                None => Some(LessonPlot::UvRow),
+            };
+            plot_out.push(Command::SetPlot(next).into());
+            ui.close();
+        }
     });
-    out
+    let mut all: Vec<AppCommand> = out.into_iter().map(Into::into).collect();
+    all.extend(plot_out);
+    all
 }
 
 impl BaryApp {

@@ -111,20 +111,25 @@ pub fn plot_ui(
     lang: Lang,
 ) -> Vec<Command> {
     let mut out = Vec::new();
-    egui::ComboBox::from_id_salt("row-plot-kind")
-        .selected_text(tr(lang, title_key(plot)))
-        .width(ui.available_width().min(360.0))
-        .show_ui(ui, |ui| {
-            for p in [LessonPlot::UvRow, LessonPlot::WRow, LessonPlot::DepthRow] {
-                if ui
-                    .selectable_label(p == plot, tr(lang, title_key(p)))
-                    .clicked()
-                    && p != plot
-                {
-                    out.push(Command::SetPlot(Some(p)));
+    ui.horizontal(|ui| {
+        let label = ui.label(tr(lang, "lesson.plot_kind"));
+        egui::ComboBox::from_id_salt("row-plot-kind")
+            .selected_text(tr(lang, title_key(plot)))
+            .width(ui.available_width().min(360.0))
+            .show_ui(ui, |ui| {
+                for p in [LessonPlot::UvRow, LessonPlot::WRow, LessonPlot::DepthRow] {
+                    if ui
+                        .selectable_label(p == plot, tr(lang, title_key(p)))
+                        .clicked()
+                        && p != plot
+                    {
+                        out.push(Command::SetPlot(Some(p)));
+                    }
                 }
-            }
-        });
+            })
+            .response
+            .labelled_by(label.id);
+    });
     let Some((pin_x, lines)) = lines else {
         ui.label(tr(lang, "lesson.plot_none"));
         return out;

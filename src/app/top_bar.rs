@@ -63,11 +63,12 @@ pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
         {
             out.push(AppCommand::SetPresenting(!input.presenting));
         }
-        out.extend(command::all(lessons::lessons_menu_ui(
+        out.extend(lessons::lessons_menu_ui(
             ui,
             input.lesson_open,
+            input.state.view.plot,
             input.lang,
-        )));
+        ));
         if compact {
             ui.menu_button(text::VIEW, |ui| {
                 toggles(ui, input, &mut out);
