@@ -173,6 +173,12 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
             "## {number}. {}\n\n",
             text::markdown(title).trim()
         ));
+        if let Some(summary) = &step.summary {
+            md.push_str(&format!(
+                "> {}\n\n",
+                text::markdown(summary.get(lang)).trim()
+            ));
+        }
         md.push_str(&text::markdown(step.text.get(lang)));
         md.push_str(&format!(
             "\n![{}]({name})\n\n",
