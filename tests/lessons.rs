@@ -569,3 +569,35 @@ mod app {
         let _ = h.get_by_label("Along the pinned pixel's row");
     }
 }
+
+/// Whatever the bytes, reading a lesson returns a lesson or an error naming the file; it never
+/// panics. A built-in lesson cut short anywhere is an error with its line.
+mod robust {
+    use barylab::lesson::{LessonError, parse_str};
+    use proptest::prelude::*;
+    use std::path::Path;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+        #[test]
+        fn arbitrary_text_never_panics(text in "\\PC{0,400}") {
+            if let Err(e) = parse_str(&text, "x.json", Path::new(".")) {
+                prop_assert!(e.to_string().starts_with("x.json"), "{}", e);
+            }
+        }
+
+        #[test]
+        fn a_cut_lesson_is_an_error_with_a_line(cut in 1usize..20_000) {
+            let full = barylab::lesson::builtin::LESSON;
+            let mut end = cut.min(full.len() - 2);
+            while !full.is_char_boundary(end) {
+                end -= 1;
+            }
+            let err = parse_str(&full[..end], "cut.json", Path::new("."))
+                .expect_err("a cut lesson does not parse");
+            let is_parse = matches!(err, LessonError::Parse { line, .. } if line >= 1);
+            prop_assert!(is_parse, "{}", err);
+        }
+    }
+}
