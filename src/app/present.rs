@@ -89,12 +89,14 @@ fn pair(uv: [f32; 2]) -> String {
     )
 }
 
-/// The card, for the pinned pixel's report if any, else the hovered one's.
+/// The card, for the pinned pixel's report if any, else the hovered one's. `keys_hint`
+/// replaces the line of keys (a lesson's Page Down / Page Up step through it).
 pub fn card_ui(
     ui: &mut Ui,
     hovered: Option<&PixelReport>,
     pinned: Option<&PixelReport>,
     size: f32,
+    keys_hint: Option<&str>,
 ) {
     let big = |s: String| big(s, size);
     let label = |s: &str| label(s, size);
@@ -123,7 +125,8 @@ pub fn card_ui(
                 ui.label(big(text::NO_PIXEL.into()).color(ACCENT));
             }
         }
-        ui.label(RichText::new(text::LEAVE).size(size * 0.55).color(DIM));
+        let hint = keys_hint.unwrap_or(text::LEAVE);
+        ui.label(RichText::new(hint).size(size * 0.55).color(DIM));
     });
     let Some((r, _)) = focus else {
         return;
