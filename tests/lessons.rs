@@ -554,6 +554,24 @@ mod app {
     }
 
     #[test]
+    fn hovering_the_steps_plot_marks_that_column_of_the_pinned_row() {
+        let mut h = harness();
+        h.state_mut().push(LessonCommand::OpenBuiltin);
+        h.run();
+        h.state_mut().push(LessonCommand::Go(10));
+        h.run();
+        let pin = h.state().state().view.pinned.expect("step 11 pins a pixel");
+        assert!(h.state().state().view.plot.is_some());
+        // The legend sits in the plot's top-left corner: below it is the plot.
+        let legend = h.get_by_label("w (scaled to 0…1)").rect();
+        h.hover_at(egui::pos2(legend.center().x, legend.bottom() + 30.0));
+        h.run();
+        let hovered = h.state().canvas().hover.expect("a hovered pixel from the plot");
+        assert_eq!(hovered[1], pin[1], "on the pinned row");
+        assert_eq!(h.state().hover_report().map(|r| r.pixel), Some(hovered));
+    }
+
+    #[test]
     fn the_row_plot_opens_from_the_menu_outside_a_lesson() {
         let mut h = harness();
         h.state_mut().push(Command::Pin(Some([400, 420])));

@@ -79,6 +79,8 @@ pub struct Lessons {
     pub open_sections: Option<Vec<InspectorSection>>,
     /// The plot's render with every buffer ([`super::plots`]).
     pub row_render: super::plots::RowRender,
+    /// The plot column hovered this frame.
+    pub plot_hover: Option<u32>,
 }
 
 impl Lessons {
@@ -302,6 +304,7 @@ pub fn lesson_panel_ui(
     session: &Session,
     lang: Lang,
     plot: PanelPlot,
+    hovered_column: &mut Option<u32>,
 ) -> Vec<AppCommand> {
     let mut out: Vec<LessonCommand> = Vec::new();
     let mut plot_out: Vec<AppCommand> = Vec::new();
@@ -394,7 +397,11 @@ pub fn lesson_panel_ui(
             ui.separator();
             ui.vertical(|ui| {
                 ui.label(RichText::new(tr(lang, "lesson.plot_title")).strong());
-                plot_out.extend(plot_ui(ui, p, lines, lang).into_iter().map(Into::into));
+                plot_out.extend(
+                    plot_ui(ui, p, lines, lang, hovered_column)
+                        .into_iter()
+                        .map(Into::into),
+                );
             });
         }
     });
@@ -523,13 +530,15 @@ impl BaryApp {
             return;
         };
         let height = ui.ctx().content_rect().height();
+        let mut hovered = None;
         egui::Panel::bottom("lesson")
             .resizable(true)
             .default_size(height * PANEL_SHARE)
             .size_range(PANEL_MIN..=height * PANEL_MAX_SHARE)
             .show(ui, |ui| {
-                out.extend(lesson_panel_ui(ui, session, lang, plot));
+                out.extend(lesson_panel_ui(ui, session, lang, plot, &mut hovered));
             });
+        self.lessons.plot_hover = hovered;
     }
 
     /// Presentation mode's lesson strip under the canvas, when a lesson is open.

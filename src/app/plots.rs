@@ -109,6 +109,7 @@ pub fn plot_ui(
     plot: LessonPlot,
     lines: Option<(u32, PlotLines)>,
     lang: Lang,
+    hovered_column: &mut Option<u32>,
 ) -> Vec<Command> {
     let mut out = Vec::new();
     ui.horizontal(|ui| {
@@ -134,7 +135,7 @@ pub fn plot_ui(
         ui.label(tr(lang, "lesson.plot_none"));
         return out;
     };
-    Plot::new(("row-plot", plot as u8))
+    let shown = Plot::new(("row-plot", plot as u8))
         .legend(Legend::default().position(Corner::LeftTop))
         .x_axis_label(tr(lang, "lesson.plot_column"))
         .height((ui.available_height() - 8.0).max(120.0))
@@ -143,7 +144,15 @@ pub fn plot_ui(
                 p.line(Line::new(tr(lang, key), points));
             }
             p.vline(VLine::new("", f64::from(pin_x)));
+            p.pointer_coordinate()
         });
+    // Hovering the plot marks that column of the pinned row on the canvas.
+    if shown.response.hovered()
+        && let Some(at) = shown.inner
+        && at.x >= 0.0
+    {
+        *hovered_column = Some(at.x.round() as u32);
+    }
     out
 }
 
@@ -184,6 +193,7 @@ impl BaryApp {
         texture: &Texture,
         out: &mut Vec<AppCommand>,
     ) {
+        self.plot_hover_to_canvas();
         let Some(plot) = self.state.view.plot else {
             return;
         };
@@ -199,10 +209,33 @@ impl BaryApp {
             .default_size([size.x * 0.4, size.y * 0.35])
             .default_pos([size.x * 0.55, size.y * 0.1])
             .show(ctx, |ui| {
-                out.extend(plot_ui(ui, plot, lines, lang).into_iter().map(Into::into));
+                let mut column = None;
+                out.extend(
+                    plot_ui(ui, plot, lines, lang, &mut column)
+                        .into_iter()
+                        .map(Into::into),
+                );
+                self.lessons.plot_hover = column;
             });
         if !open {
             out.push(Command::SetPlot(None).into());
+        }
+        self.plot_hover_to_canvas();
+    }
+
+    /// The column hovered in the plot (this frame's, from the Lessons panel or the window)
+    /// becomes the canvas's hovered pixel on the pinned row while the pointer is off the
+    /// canvas, so the inspector and the overlay show it.
+    fn plot_hover_to_canvas(&mut self) {
+        let Some(x) = self.lessons.plot_hover.take() else {
+            return;
+        };
+        let size = self.canvas.output.as_ref().map(|o| o.size);
+        if let (None, Some([_, y]), Some([w, _])) =
+            (self.canvas.hover, self.state.view.pinned, size)
+            && x < w
+        {
+            self.canvas.hover = Some([x, y]);
         }
     }
 }
