@@ -566,7 +566,11 @@ mod app {
         let legend = h.get_by_label("w (scaled to 0…1)").rect();
         h.hover_at(egui::pos2(legend.center().x, legend.bottom() + 30.0));
         h.run();
-        let hovered = h.state().canvas().hover.expect("a hovered pixel from the plot");
+        let hovered = h
+            .state()
+            .canvas()
+            .hover
+            .expect("a hovered pixel from the plot");
         assert_eq!(hovered[1], pin[1], "on the pinned row");
         assert_eq!(h.state().hover_report().map(|r| r.pixel), Some(hovered));
     }
