@@ -109,16 +109,16 @@ enum Command {
         after_help = "Examples:\n  barylab compare assets/scenes/games101-a2.json output.png --background black\n  barylab compare assets/scenes/default.json shot.png -o diff.png --json"
     )]
     Compare(CompareArgs),
-    /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
-    /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
-    /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
-    /// coverage differs.
     /// A lesson (a file, or `builtin`): list its steps, print one, write a step's figure, or
     /// write the whole lesson as a Markdown handout with its figures.
     #[command(
         after_help = "Examples:\n  barylab lesson builtin --list\n  barylab lesson builtin --step 9\n  barylab lesson builtin --step 9 --figure step9.svg\n  barylab lesson my-lesson.json --handout handout/ --lang zh\n  pandoc handout/handout.md -o handout.html"
     )]
     Lesson(LessonArgs),
+    /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
+    /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
+    /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
+    /// coverage differs.
     #[cfg(feature = "gpu")]
     #[command(
         name = "gpu-check",
