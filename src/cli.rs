@@ -15,6 +15,7 @@ mod commands;
 mod compare;
 #[cfg(feature = "gpu")]
 mod gpu_check;
+mod lesson;
 
 const EXAMPLES: &str = "\
 Examples:
@@ -34,7 +35,11 @@ Examples:
   barylab figure assets/scenes/default.json --pixel 400,420 -o fig.svg
   barylab figure assets/scenes/default.json --size 400x300 --compare side --scale 2 -o fig.png
   barylab compare assets/scenes/games101-a2.json output.png --background black -o diff.png
-  barylab gpu-check assets/scenes/*.json";
+  barylab gpu-check assets/scenes/*.json
+  barylab lesson builtin --list             the built-in lesson's steps
+  barylab lesson builtin --step 9 --figure step9.png
+  barylab lesson builtin --handout handout/ --lang zh
+  barylab --lesson builtin --step 9         open the app on a lesson step";
 
 /// barylab: see how a GPU interpolates across a triangle, pixel by pixel.
 #[derive(Parser, Debug)]
@@ -67,6 +72,12 @@ struct Cli {
     /// Text size of the app (its zoom), 0.75 to 2.5, e.g. 1.5 for a projector.
     #[arg(long, value_parser = parse_text_size, value_name = "SIZE")]
     text_size: Option<f32>,
+    /// Open the app on a lesson: a lesson file (JSON, see docs/lessons.md) or `builtin`.
+    #[arg(long, value_name = "FILE")]
+    lesson: Option<PathBuf>,
+    /// With --lesson: start at this step (from 1).
+    #[arg(long, value_name = "N", requires = "lesson")]
+    step: Option<usize>,
     /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
     /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
@@ -105,6 +116,12 @@ enum Command {
         after_help = "Examples:\n  barylab compare assets/scenes/games101-a2.json output.png --background black\n  barylab compare assets/scenes/default.json shot.png -o diff.png --json"
     )]
     Compare(CompareArgs),
+    /// A lesson (a file, or `builtin`): list its steps, print one, write a step's figure, or
+    /// write the whole lesson as a Markdown handout with its figures.
+    #[command(
+        after_help = "Examples:\n  barylab lesson builtin --list\n  barylab lesson builtin --step 9\n  barylab lesson builtin --step 9 --figure step9.svg\n  barylab lesson my-lesson.json --handout handout/ --lang zh\n  pandoc handout/handout.md -o handout.html"
+    )]
+    Lesson(LessonArgs),
     /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
     /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
     /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
@@ -115,6 +132,32 @@ enum Command {
         after_help = "Examples:\n  barylab gpu-check assets/scenes/*.json\n  barylab gpu-check assets/scenes/default.json --mode affine --filter nearest --json"
     )]
     GpuCheck(GpuCheckArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct LessonArgs {
+    /// The lesson file (JSON; see docs/lessons.md), or `builtin` for the built-in lesson.
+    lesson: PathBuf,
+    /// One line per step (the default when nothing else is asked).
+    #[arg(long)]
+    list: bool,
+    /// The step (from 1): printed as text, or drawn with --figure.
+    #[arg(long, value_name = "N")]
+    step: Option<usize>,
+    /// Write the step's figure here (.png or .svg), as `barylab figure` and the app's Export
+    /// draw it.
+    #[arg(long, value_name = "OUT", requires = "step")]
+    figure: Option<PathBuf>,
+    /// PNG pixels per figure point for --figure: 1, 2 or 4.
+    #[arg(long, default_value_t = 1, value_parser = parse_scale)]
+    scale: u32,
+    /// Write the lesson as a Markdown handout (handout.md, one PNG figure per step) into this
+    /// folder; never overwrites a file.
+    #[arg(long, value_name = "DIR", conflicts_with_all = ["figure", "list"])]
+    handout: Option<PathBuf>,
+    /// Language of the texts, figure labels and derivations: en, zh (zh-CN), or auto.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
 }
 
 #[derive(clap::Args, Debug)]
@@ -559,6 +602,7 @@ pub fn main() -> ExitCode {
         Some(Command::Bench(args)) => commands::bench(&args),
         Some(Command::Figure(args)) => commands::figure(&args),
         Some(Command::Compare(args)) => compare::run(&args),
+        Some(Command::Lesson(args)) => lesson::run(&args),
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };
@@ -619,6 +663,21 @@ fn app(cli: &Cli) -> Result<()> {
         system_lang,
         no_cjk_font: false,
         text_size: cli.text_size,
+        lesson: match &cli.lesson {
+            Some(path) => {
+                let lesson = barylab::lesson::Lesson::open(path)?;
+                let count = lesson.steps.len();
+                let step = cli.step.unwrap_or(1);
+                if step == 0 || step > count {
+                    anyhow::bail!(
+                        "{}: --step {step}: the lesson has steps 1 to {count}",
+                        lesson.shown_path()
+                    );
+                }
+                Some((lesson, step - 1))
+            }
+            None => None,
+        },
     };
     barylab::app::run(options)?;
     Ok(())

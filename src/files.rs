@@ -21,6 +21,8 @@ pub const MAX_MODEL_BYTES: u64 = 1 << 30;
 pub const MAX_MATERIAL_BYTES: u64 = 16 << 20;
 /// Largest image file read as a texture (compressed; the decoder limits the pixels).
 pub const MAX_TEXTURE_BYTES: u64 = 256 << 20;
+/// Largest lesson file read: a lesson of twenty steps in two languages is about 50 KB.
+pub const MAX_LESSON_BYTES: u64 = 4 << 20;
 
 /// Characters of a path kept in messages; longer paths keep their start and end around "…".
 pub const MAX_SHOWN_CHARS: usize = 160;
@@ -38,6 +40,8 @@ pub enum FileKind {
     Texture,
     /// An image compared with barylab's render (`barylab compare`).
     Image,
+    /// A lesson file (`barylab lesson`, the app's Lessons panel).
+    Lesson,
 }
 
 impl FileKind {
@@ -49,6 +53,7 @@ impl FileKind {
             FileKind::Material => "material library",
             FileKind::Texture => "texture",
             FileKind::Image => "image",
+            FileKind::Lesson => "lesson",
         }
     }
 
@@ -59,6 +64,7 @@ impl FileKind {
             FileKind::Model => MAX_MODEL_BYTES,
             FileKind::Material => MAX_MATERIAL_BYTES,
             FileKind::Texture | FileKind::Image => MAX_TEXTURE_BYTES,
+            FileKind::Lesson => MAX_LESSON_BYTES,
         }
     }
 }

@@ -9,6 +9,8 @@
 //!   pixel by pixel, with a reason for each difference.
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 //! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
+//! - [`lesson`]: lessons, a guided walk through the maths in steps that set the scene and the
+//!   view, with figures and a printable handout.
 //! - [`files`]: reading only regular files with size caps, atomic writes, paths in messages.
 //! - [`budget`]: the memory budget checked before large allocations.
 //! - `gpu` (feature `gpu`, on by default): the same scene drawn by OpenGL through headless EGL,
@@ -58,6 +60,7 @@ pub mod files;
 #[cfg(feature = "gpu")]
 pub mod gpu;
 pub mod i18n;
+pub mod lesson;
 pub mod model;
 pub mod probe;
 pub mod raster;

@@ -108,11 +108,14 @@ scene_tests! {
     corner_behind: "corner-behind.json",
     default: "default.json",
     far_checker: "far-checker.json",
+    receding_wall: "receding-wall.json",
     front: "front.json",
     games101_a2: "games101-a2.json",
     games101_a3_spot: "games101-a3-spot.json",
+    games101_pitfall: "games101-pitfall.json",
     orthographic: "orthographic.json",
     seed001_2x2: "rgbw-2x2.json",
+    rgb_triangle: "rgb-triangle.json",
     vertex_colors: "vertex-colors.json",
 }
 

@@ -5,6 +5,7 @@
 use super::bench_panel::BenchCommand;
 use super::export::ExportCommand;
 use super::files::FileCommand;
+use super::lessons::LessonCommand;
 use super::state::Command;
 
 /// A change or an action asked for by a panel, a shortcut, a dialog or a dropped file.
@@ -28,6 +29,8 @@ pub enum AppCommand {
     Undo,
     /// Redo the last undone scene edit.
     Redo,
+    /// The Lessons panel, menu and keys (applied by `BaryApp::apply_lesson`).
+    Lesson(LessonCommand),
 }
 
 impl From<Command> for AppCommand {

@@ -93,6 +93,13 @@ impl History {
     }
 
     /// How many steps can be undone.
+    /// This frame's change is not an edit (a lesson step was set, or the user's state came
+    /// back): it becomes no undo step.
+    pub fn skip_frame(&mut self) {
+        self.restored = true;
+        self.pending = None;
+    }
+
     pub fn undo_steps(&self) -> usize {
         self.undo.len()
     }

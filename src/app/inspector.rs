@@ -8,6 +8,7 @@ use super::paint::color;
 use super::pixel::PixelReport;
 use crate::figure::overlay::{CLIP_POINT, NEGATIVE, vertex_color};
 use crate::i18n::Lang;
+use crate::lesson::InspectorSection;
 use crate::probe::format::fmt_number;
 use crate::probe::{Position, TriangleCoverage};
 use crate::raster::Interpolation;
@@ -288,8 +289,16 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
         });
 }
 
-/// The probe's worked example, one collapsible section each.
-fn derivation_ui(ui: &mut Ui, r: &PixelReport) {
+/// The probe's worked example, one collapsible section each; `open`: the sections a lesson
+/// step opens (the others close), once.
+fn derivation_ui(ui: &mut Ui, r: &PixelReport, open: Option<&[InspectorSection]>) {
+    let detail = r.trace.detail.as_ref();
+    let clipped = detail.is_some_and(|d| d.clipping.is_some());
+    let wanted: Option<Vec<usize>> = open.map(|o| {
+        o.iter()
+            .filter_map(|s| s.index(detail.is_some(), clipped))
+            .collect()
+    });
     let lang = super::locale::lang(ui.ctx());
     ui.label(
         RichText::new(lang.tr_with(
@@ -303,6 +312,7 @@ fn derivation_ui(ui: &mut Ui, r: &PixelReport) {
         egui::CollapsingHeader::new(RichText::new(&section.title).strong())
             .id_salt(("derivation", i))
             .default_open(OPEN_SECTIONS.contains(&i))
+            .open(wanted.as_ref().map(|w| w.contains(&i)))
             .show(ui, |ui| section_ui(ui, i, &section.to_text()));
     }
 }
@@ -335,14 +345,20 @@ fn section_ui(ui: &mut Ui, index: usize, text: &str) {
     flush(ui, &mut formulas, &mut block);
 }
 
-/// The inspector panel.
-pub fn inspector_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&PixelReport>) {
+/// The inspector panel. `open`: the derivation sections a lesson step opens; returns whether
+/// they were applied (a pixel was shown).
+pub fn inspector_ui(
+    ui: &mut Ui,
+    hovered: Option<&PixelReport>,
+    pinned: Option<&PixelReport>,
+    open: Option<&[InspectorSection]>,
+) -> bool {
     let lang = super::locale::lang(ui.ctx());
     ui.heading(lang.tr("app.inspector.title"));
     let focus = hovered.or(pinned);
     let Some(focus) = focus else {
         ui.label(lang.tr("app.inspector.hover_hint"));
-        return;
+        return false;
     };
     let role = if hovered.is_some() {
         &lang.tr("app.inspector.hovered")
@@ -359,5 +375,6 @@ pub fn inspector_ui(ui: &mut Ui, hovered: Option<&PixelReport>, pinned: Option<&
         compare_ui(ui, p, h);
     }
     ui.separator();
-    derivation_ui(ui, focus);
+    derivation_ui(ui, focus, open.filter(|o| !o.is_empty()));
+    true
 }

@@ -88,11 +88,15 @@ impl BaryApp {
                             .auto_shrink([false, false])
                             .show(ui, |ui| {
                                 ui.set_max_width(width);
-                                inspector::inspector_ui(
+                                let shown = inspector::inspector_ui(
                                     ui,
                                     self.reports.hover.as_ref(),
                                     self.reports.pin.as_ref(),
+                                    self.lessons.open_sections.as_deref(),
                                 );
+                                if shown {
+                                    self.lessons.open_sections = None;
+                                }
                             });
                     });
             }
@@ -132,19 +136,25 @@ impl BaryApp {
             .inner_margin(egui::Margin::same(12));
         let (hover, pin) = (self.reports.hover.as_ref(), self.reports.pin.as_ref());
         let size = present::card_text(rect.height());
+        let hint = self
+            .lessons
+            .session
+            .is_some()
+            .then(|| crate::i18n::tr(self.lang(), "lesson.present_hint"));
+        let hint = hint.as_deref();
         if rect.width() < PRESENT_SIDE_CARD_ASPECT * rect.height() {
             let spacing = ui.spacing().item_spacing.y;
             egui::Panel::bottom("present-card")
                 .frame(frame)
                 .resizable(false)
                 .exact_size(present::card_height(rect.width() - 24.0, spacing, size) + 24.0)
-                .show(ui, |ui| present::card_ui(ui, hover, pin, size));
+                .show(ui, |ui| present::card_ui(ui, hover, pin, size, hint));
         } else {
             egui::Panel::right("present-card")
                 .frame(frame)
                 .resizable(false)
                 .exact_size(rect.width() * PRESENT_SIDE_CARD_SHARE)
-                .show(ui, |ui| present::card_ui(ui, hover, pin, size));
+                .show(ui, |ui| present::card_ui(ui, hover, pin, size, hint));
         }
         self.canvas_panel(ui, texture, out);
     }

@@ -10,7 +10,9 @@
 //! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
 //!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
 //!   [`image_size`], [`canvas`], [`inspector`], [`present`], [`status`], [`help`], [`export`],
-//!   [`bench_panel`] (with [`bench_chart`]), and the keyboard [`shortcuts`].
+//!   [`bench_panel`] (with [`bench_chart`]), [`lessons`] (the Lessons panel, its
+//!   presentation strip and menu), [`plots`] (the pinned row's plot), and the keyboard
+//!   [`shortcuts`].
 //! - Around them: [`layout`] (side panels, canvas, presentation card; [`side_panels`] is the
 //!   arithmetic), [`history`] (undo and redo), [`access`] (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
@@ -40,11 +42,13 @@ pub mod history;
 pub mod image_size;
 pub mod inspector;
 pub mod layout;
+pub mod lessons;
 pub mod locale;
 pub mod paint;
 pub mod path_window;
 pub mod persist;
 pub mod pixel;
+pub mod plots;
 pub mod present;
 pub mod presets;
 pub mod render;
@@ -114,6 +118,8 @@ pub struct AppOptions {
     pub no_cjk_font: bool,
     /// Start at this text size (the interface zoom, as the text size slider sets it).
     pub text_size: Option<f32>,
+    /// Start in a lesson, at this step (0-based).
+    pub lesson: Option<(crate::lesson::Lesson, usize)>,
 }
 
 /// Errors that stop the app.
@@ -160,6 +166,8 @@ pub struct BaryApp {
     lang: Lang,
     /// Whether egui has a font with Chinese glyphs.
     fonts: locale::Fonts,
+    /// The open lesson (with the user's own state set aside) and the lesson file dialog.
+    lessons: lessons::Lessons,
 }
 
 impl BaryApp {
@@ -232,9 +240,13 @@ impl BaryApp {
             scene_file: None,
             lang,
             fonts: locale::Fonts::new(options.no_cjk_font),
+            lessons: lessons::Lessons::default(),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
+        }
+        if let Some((lesson, step)) = options.lesson {
+            app.enter_lesson(lesson, step);
         }
         if let Some(p) = options.pin {
             app.push(state::Command::Pin(Some(p)));
@@ -314,6 +326,7 @@ impl BaryApp {
                 export_open: self.export.open,
                 presenting: self.presenting,
                 last_preset: self.last_preset,
+                lesson_open: self.lessons.session.is_some(),
             },
         ));
         // Files dropped on the window, or picked in the Open dialog.
@@ -327,6 +340,7 @@ impl BaryApp {
         self.commands
             .extend(dropped.into_iter().map(|p| FileCommand::Open(p).into()));
         self.commands.extend(self.picker.poll().map(Into::into));
+        self.commands.extend(self.lessons.poll().map(Into::into));
 
         let (texture, texture_error) = self.textures.get(
             &self.state.scene,
@@ -382,6 +396,7 @@ impl BaryApp {
         let ctx = ui.ctx().clone();
         let mut out: Vec<AppCommand> = Vec::new();
         if self.presenting {
+            self.lesson_strip(ui, &mut out);
             self.presentation(ui, texture, &mut out);
             self.commands.extend(out);
             return;
@@ -398,6 +413,8 @@ impl BaryApp {
                     bench_open: self.bench.open,
                     presenting: self.presenting,
                     cjk_font: self.fonts.cjk,
+                    lesson_open: self.lessons.session.is_some(),
+                    lang: self.lang,
                 },
             ));
         });
@@ -423,8 +440,10 @@ impl BaryApp {
                 self.message.as_ref(),
             );
         });
+        self.lesson_panel(ui, texture, &mut out);
         self.side_panels_ui(ui, &mut out);
         self.canvas_panel(ui, texture, &mut out);
+        self.plot_window(&ctx, texture, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(lang.tr("app.help.title"))
             .id(egui::Id::unique("help-window"))
@@ -528,6 +547,7 @@ impl BaryApp {
             AppCommand::Redo => {
                 self.history.redo(&mut self.state);
             }
+            AppCommand::Lesson(c) => self.apply_lesson(ctx, c),
         }
     }
 }
@@ -556,8 +576,9 @@ impl eframe::App for BaryApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if self.persist {
-            let saved =
-                SavedState::capture(&self.state, &self.recent, &self.export.settings, self.lang);
+            // In a lesson, the user's own state is what is kept.
+            let state = self.lessons.user_state().unwrap_or(&self.state);
+            let saved = SavedState::capture(state, &self.recent, &self.export.settings, self.lang);
             if let Some(path) = &self.state_file
                 && let Err(e) = persist::write_state_file(path, &saved)
             {

@@ -66,12 +66,14 @@ fn pair(uv: [f32; 2]) -> String {
     )
 }
 
-/// The card, for the pinned pixel's report if any, else the hovered one's.
+/// The card, for the pinned pixel's report if any, else the hovered one's. `keys_hint`
+/// replaces the line of keys (a lesson's Page Down / Page Up step through it).
 pub fn card_ui(
     ui: &mut Ui,
     hovered: Option<&PixelReport>,
     pinned: Option<&PixelReport>,
     size: f32,
+    keys_hint: Option<&str>,
 ) {
     let lang = super::locale::lang(ui.ctx());
     let big = |s: String| big(s, size);
@@ -101,11 +103,8 @@ pub fn card_ui(
                 ui.label(big(lang.tr("app.present.no_pixel")).color(ACCENT));
             }
         }
-        ui.label(
-            RichText::new(lang.tr("app.present.leave"))
-                .size(size * 0.55)
-                .color(DIM),
-        );
+        let hint = keys_hint.map_or_else(|| lang.tr("app.present.leave"), str::to_string);
+        ui.label(RichText::new(hint).size(size * 0.55).color(DIM));
     });
     let Some((r, _)) = focus else {
         return;

@@ -6,6 +6,7 @@ use egui::{Key, Modifiers};
 use super::command::AppCommand;
 use super::export::ExportCommand;
 use super::files::FileCommand;
+use super::lessons::LessonCommand;
 use super::presets::Preset;
 use super::state::{AppState, Command, PIXEL_SIZE_RANGE};
 use crate::figure::Compare;
@@ -20,6 +21,9 @@ pub struct ShortcutInput<'a> {
     pub presenting: bool,
     /// The preset loaded last (Page Down / Page Up step on from it).
     pub last_preset: Option<Preset>,
+    /// A lesson is open: Page Down / Page Up (and the arrow keys while no pixel is pinned)
+    /// step through its steps.
+    pub lesson_open: bool,
 }
 
 /// The commands of the keys pressed this frame (none while a text field has the keyboard).
@@ -91,7 +95,23 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         }
         for (k, forward) in [(Key::PageDown, true), (Key::PageUp, false)] {
             if key(k) {
-                state(Command::Preset(step_preset(input.last_preset, forward)));
+                if input.lesson_open {
+                    extra.push(lesson_step(forward));
+                } else {
+                    state(Command::Preset(step_preset(input.last_preset, forward)));
+                }
+            }
+        }
+        if input.lesson_open && view.pinned.is_none() {
+            for (k, forward) in [
+                (Key::ArrowRight, true),
+                (Key::ArrowDown, true),
+                (Key::ArrowLeft, false),
+                (Key::ArrowUp, false),
+            ] {
+                if key(k) {
+                    extra.push(lesson_step(forward));
+                }
             }
         }
         if key(Key::Home) {
@@ -150,6 +170,16 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         cmds.push(AppCommand::SetHelpOpen(!input.help_open));
     }
     cmds
+}
+
+/// The next or previous lesson step.
+fn lesson_step(forward: bool) -> AppCommand {
+    if forward {
+        LessonCommand::Next
+    } else {
+        LessonCommand::Previous
+    }
+    .into()
 }
 
 fn smaller_pixel(p: u32) -> u32 {

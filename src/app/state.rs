@@ -44,6 +44,8 @@ pub struct ViewSettings {
     /// instead of keeping the scene's own size. Off by default: a fixed size keeps every
     /// pixel, and so a pin, where it is through any layout change.
     pub fit_window: bool,
+    /// The plot of the pinned pixel's row shown (a lesson step's, or the user's choice).
+    pub plot: Option<crate::lesson::LessonPlot>,
 }
 
 impl Default for ViewSettings {
@@ -61,6 +63,7 @@ impl Default for ViewSettings {
             ui_scale: 1.0,
             rasterizer: Default::default(),
             fit_window: false,
+            plot: None,
         }
     }
 }
@@ -169,6 +172,8 @@ pub enum Command {
     SetFov(f64),
     /// Pin a pixel (or unpin).
     Pin(Option<[u32; 2]>),
+    /// Show a plot of the pinned pixel's row, or none.
+    SetPlot(Option<crate::lesson::LessonPlot>),
     /// Move the pin by whole pixels, staying inside the image.
     MovePin {
         dx: i32,
@@ -337,6 +342,7 @@ impl AppState {
             }
             Command::SetFov(f) => edit::set_fov_deg(&mut self.scene, f),
             Command::Pin(p) => self.view.pinned = p,
+            Command::SetPlot(p) => self.view.plot = p,
             Command::MovePin { dx, dy, size } => {
                 if let Some([x, y]) = self.view.pinned {
                     let nx = (i64::from(x) + i64::from(dx)).clamp(0, i64::from(size[0]) - 1);

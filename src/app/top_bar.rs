@@ -8,7 +8,7 @@ use egui::Ui;
 use super::command::{self, AppCommand};
 use super::export::ExportCommand;
 use super::state::{AppState, Command};
-use super::{bench_panel, controls, file_menu, files};
+use super::{bench_panel, controls, file_menu, files, lessons};
 use crate::i18n::Lang;
 
 /// The text size slider's width in the bar, in points.
@@ -35,6 +35,10 @@ pub struct TopBarInput<'a> {
     pub presenting: bool,
     /// A font with Chinese glyphs is installed (else the switch cannot offer Chinese).
     pub cjk_font: bool,
+    /// A lesson is open.
+    pub lesson_open: bool,
+    /// The language of the Lessons menu.
+    pub lang: crate::i18n::Lang,
 }
 
 /// The top bar.
@@ -58,6 +62,12 @@ pub fn top_bar_ui(ui: &mut Ui, input: &TopBarInput<'_>) -> Vec<AppCommand> {
         {
             out.push(AppCommand::SetPresenting(!input.presenting));
         }
+        out.extend(lessons::lessons_menu_ui(
+            ui,
+            input.lesson_open,
+            input.state.view.plot,
+            input.lang,
+        ));
         if compact {
             ui.menu_button(lang.tr("app.top_bar.view"), |ui| {
                 toggles(ui, input, &mut out);

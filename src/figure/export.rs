@@ -139,7 +139,10 @@ pub fn export(request: &ExportRequest<'_>) -> Result<Vec<PathBuf>, ExportError> 
         let lang = r.figure.lang;
         let md = format::write_in(trace, Format::Markdown, lang);
         files.push(("md", md.into_bytes()));
-        files.push(("tex", format::write_in(trace, Format::Latex, lang).into_bytes()));
+        files.push((
+            "tex",
+            format::write_in(trace, Format::Latex, lang).into_bytes(),
+        ));
     }
     if sel.scene {
         files.push(("json", scene_json(r.scene, r.scene_dir).into_bytes()));

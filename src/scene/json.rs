@@ -1,5 +1,5 @@
 //! JSON parse errors in words: the position, the field, and serde's message made readable
-//! (no Rust type names, an array that is too long said as such).
+//! (no Rust type names, an array that is too long said as such). Scenes and lessons use it.
 
 use super::SceneError;
 
@@ -43,7 +43,7 @@ fn too_long(field: &str) -> String {
     format!("too many values: {expected}")
 }
 
-pub(super) fn parse_error(path: &str, e: serde_json::Error, field: String) -> SceneError {
+pub(crate) fn parse_error(path: &str, e: serde_json::Error, field: String) -> SceneError {
     let mut message = bare_message(&e);
     if message == "trailing characters" && !field.is_empty() && field != "." {
         message = too_long(&field);
@@ -61,7 +61,7 @@ pub(super) fn parse_error(path: &str, e: serde_json::Error, field: String) -> Sc
     }
 }
 
-pub(super) fn strict<T: serde::de::DeserializeOwned>(
+pub(crate) fn strict<T: serde::de::DeserializeOwned>(
     text: &str,
     path: &str,
 ) -> Result<T, SceneError> {

@@ -28,7 +28,7 @@ use crate::raster::{Interpolation, Shading};
 use json::{parse_error, strict};
 
 mod forms;
-mod json;
+pub(crate) mod json;
 mod mesh;
 
 use forms::default_texture;

@@ -1,0 +1,218 @@
+//! A lesson as a printable handout: one Markdown file (ready for pandoc) with each step's
+//! title, text and "try this", its figure, and the pinned pixel's derivation from the probe,
+//! the figures as PNG files beside it. Nothing is written here: [`handout`] returns the files
+//! and the command line writes them (all or nothing, never over an existing file).
+
+use std::path::Path;
+
+use super::{Lesson, StepState, text};
+use crate::figure::{Figure, FigureError, png};
+use crate::i18n::{Lang, tr};
+use crate::probe::format::{Document, document_in};
+use crate::probe::{self, PixelTrace};
+use crate::raster::Texture;
+use crate::scene::SceneError;
+
+/// Why a handout or a step's figure could not be made.
+#[derive(Debug, thiserror::Error)]
+pub enum HandoutError {
+    /// A step's scene's texture could not be read.
+    #[error("step {step}: {source}")]
+    Scene {
+        /// The step, from 1.
+        step: usize,
+        /// What went wrong.
+        source: SceneError,
+    },
+    /// A step's figure could not be drawn.
+    #[error("step {step}: {source}")]
+    Figure {
+        /// The step, from 1.
+        step: usize,
+        /// What went wrong.
+        source: FigureError,
+    },
+    /// The pinned pixel could not be probed.
+    #[error("step {step}: {source}")]
+    Probe {
+        /// The step, from 1.
+        step: usize,
+        /// What went wrong.
+        source: probe::ProbeError,
+    },
+    /// There is no such step.
+    #[error("there is no step {step}: the lesson has steps 1 to {count}")]
+    NoStep {
+        /// The step asked for, from 1.
+        step: usize,
+        /// How many steps the lesson has.
+        count: usize,
+    },
+}
+
+/// One file of a handout: its name in the handout's folder and its bytes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HandoutFile {
+    /// The file name (no folder).
+    pub name: String,
+    /// What goes in it.
+    pub bytes: Vec<u8>,
+}
+
+/// The name of the handout's Markdown file.
+pub const MARKDOWN_NAME: &str = "handout.md";
+
+/// The figure file of step `number` (from 1): `step-01.png`, ...
+pub fn figure_name(number: usize) -> String {
+    format!("step-{number:02}.png")
+}
+
+/// The texture a step's scene draws with.
+pub fn texture_of(state: &StepState, step: usize) -> Result<Texture, HandoutError> {
+    let dir = state.scene_dir.as_deref().unwrap_or(Path::new(""));
+    state
+        .scene
+        .load_texture(dir)
+        .map_err(|source| HandoutError::Scene { step, source })
+}
+
+/// The state step `number` (from 1) sets, or [`HandoutError::NoStep`].
+pub fn step_state(lesson: &Lesson, number: usize) -> Result<StepState, HandoutError> {
+    let count = lesson.steps.len();
+    number
+        .checked_sub(1)
+        .and_then(|i| lesson.state(i))
+        .ok_or(HandoutError::NoStep {
+            step: number,
+            count,
+        })
+}
+
+/// Step `number`'s figure (from 1), as `barylab figure` draws the same scene and options
+/// ([`StepState::figure_options`] with `options` applied), labels in `lang`.
+pub fn step_figure(
+    lesson: &Lesson,
+    number: usize,
+    lang: Lang,
+    options: impl FnOnce(&mut crate::figure::FigureOptions),
+) -> Result<Figure, HandoutError> {
+    let state = step_state(lesson, number)?;
+    let texture = texture_of(&state, number)?;
+    let mut o = state.figure_options();
+    options(&mut o);
+    Figure::compose_in(&state.scene, &texture, &o, lang).map_err(|source| HandoutError::Figure {
+        step: number,
+        source,
+    })
+}
+
+/// The pinned pixel's derivation, only the sections the step opens in the inspector (all
+/// when it names none), with headings two levels down so they sit under the step's.
+fn derivation(trace: &PixelTrace, state: &StepState, lang: Lang) -> String {
+    let full = document_in(trace, lang);
+    let detail = trace.detail.is_some();
+    let clipped = trace.detail.as_ref().is_some_and(|d| d.clipping.is_some());
+    let wanted: Vec<usize> = state
+        .inspector
+        .iter()
+        .filter_map(|s| s.index(detail, clipped))
+        .collect();
+    let doc = Document {
+        title: String::new(),
+        sections: full
+            .sections
+            .into_iter()
+            .enumerate()
+            .filter(|(i, _)| wanted.is_empty() || wanted.contains(i))
+            .map(|(_, s)| s)
+            .collect(),
+    };
+    doc.to_markdown()
+        .lines()
+        .filter(|l| *l != "# ")
+        .map(|l| {
+            if l.starts_with('#') {
+                format!("##{l}")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+        .trim()
+        .to_string()
+}
+
+/// The handout of `lesson` in `lang`: [`MARKDOWN_NAME`] first, then one figure per step.
+pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutError> {
+    let mut md = format!(
+        "---\ntitle: \"{}\"\nlang: {}\n---\n\n",
+        lesson.title.get(lang).replace('"', "\\\""),
+        match lang {
+            Lang::En => "en",
+            Lang::Zh => "zh-CN",
+        }
+    );
+    let mut files = Vec::new();
+    for number in 1..=lesson.steps.len() {
+        let step = &lesson.steps[number - 1];
+        let state = step_state(lesson, number)?;
+        let texture = texture_of(&state, number)?;
+        let figure = Figure::compose_in(&state.scene, &texture, &state.figure_options(), lang)
+            .map_err(|source| HandoutError::Figure {
+                step: number,
+                source,
+            })?;
+        let bytes = png::to_png(&figure).map_err(|source| HandoutError::Figure {
+            step: number,
+            source,
+        })?;
+        let name = figure_name(number);
+        let title = step.title.get(lang);
+        md.push_str(&format!(
+            "## {number}. {}\n\n",
+            text::markdown(title).trim()
+        ));
+        if let Some(summary) = &step.summary {
+            md.push_str(&format!(
+                "> {}\n\n",
+                text::markdown(summary.get(lang)).trim()
+            ));
+        }
+        md.push_str(&text::markdown(step.text.get(lang)));
+        md.push_str(&format!(
+            "\n![{}]({name})\n\n",
+            text::plain(title).replace(['[', ']'], "")
+        ));
+        md.push_str(&format!(
+            "**{}** {}\n",
+            tr(lang, "lesson.try_this"),
+            text::markdown(step.try_this.get(lang)).trim()
+        ));
+        if let Some([x, y]) = state.pin {
+            let settings = state.scene.settings();
+            let trace =
+                probe::probe(&state.scene, &texture, &settings, (x, y)).map_err(|source| {
+                    HandoutError::Probe {
+                        step: number,
+                        source,
+                    }
+                })?;
+            md.push_str(&format!(
+                "\n### {}\n\n{}\n",
+                rust_i18n::t!("lesson.handout_pixel", locale = lang.code(), x = x, y = y),
+                derivation(&trace, &state, lang)
+            ));
+        }
+        md.push('\n');
+        files.push(HandoutFile { name, bytes });
+    }
+    files.insert(
+        0,
+        HandoutFile {
+            name: MARKDOWN_NAME.to_string(),
+            bytes: md.into_bytes(),
+        },
+    );
+    Ok(files)
+}
