@@ -53,8 +53,6 @@ pub mod app;
 pub mod bench;
 pub mod budget;
 pub mod compare;
-// documented separately; the allow goes when they are
-#[allow(missing_docs)]
 pub mod figure;
 pub mod files;
 #[cfg(feature = "gpu")]

@@ -9,6 +9,7 @@ pub mod framebuffer;
 pub mod interpolate;
 pub mod lanes;
 pub mod mesh;
+mod prepare;
 pub mod project;
 pub mod render;
 pub mod scanline;
