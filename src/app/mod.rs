@@ -35,6 +35,7 @@ pub mod edit;
 pub mod export;
 pub mod file_menu;
 pub mod files;
+pub mod gpu_view;
 pub mod help;
 pub mod history;
 pub mod image_size;
@@ -114,6 +115,8 @@ pub struct AppOptions {
     pub no_cjk_font: bool,
     /// Start at this text size (the interface zoom, as the text size slider sets it).
     pub text_size: Option<f32>,
+    /// Start in this comparison, with the GPU view on (`true`) or off (`--compare`).
+    pub compare: Option<(crate::figure::Compare, bool)>,
 }
 
 /// Errors that stop the app.
@@ -160,6 +163,8 @@ pub struct BaryApp {
     lang: Lang,
     /// Whether egui has a font with Chinese glyphs.
     fonts: locale::Fonts,
+    /// The GPU view's context, GL objects and last comparison.
+    gpu_view: gpu_view::GpuView,
 }
 
 impl BaryApp {
@@ -201,6 +206,9 @@ impl BaryApp {
         if let Some(size) = options.text_size {
             state.view.ui_scale = size;
         }
+        if let Some((compare, gpu)) = options.compare {
+            (state.view.compare, state.view.gpu) = (compare, gpu);
+        }
         if let Some((scene, dir)) = options.scene {
             state.scene = scene;
             state.scene_dir = Some(dir);
@@ -216,7 +224,7 @@ impl BaryApp {
             timing: FrameTiming::default(),
             persist: options.persist,
             state_file,
-            screenshot: options.screenshot.map(StartupShot::new),
+            screenshot: options.screenshot.clone().map(StartupShot::new),
             reports: PixelReports::default(),
             applied_zoom: None,
             styled: false,
@@ -232,6 +240,7 @@ impl BaryApp {
             scene_file: None,
             lang,
             fonts: locale::Fonts::new(options.no_cjk_font),
+            gpu_view: gpu_view::GpuView::new(options.screenshot.is_some()),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
@@ -343,6 +352,13 @@ impl BaryApp {
         }
         let hover_before = self.canvas.hover;
         self.panels(ui, &texture);
+        let (gpu_on, mode) = (self.state.view.gpu, self.state.options().mode);
+        if self
+            .gpu_view
+            .update(gpu_on, self.canvas.output.as_ref(), mode, &texture)
+        {
+            ctx.request_repaint();
+        }
 
         let reports_before = self.reports.key();
         let error = self.reports.update(
@@ -372,7 +388,10 @@ impl BaryApp {
         self.history.track(before, &self.state, held);
         self.timing.ui_ms = start.elapsed().as_secs_f64() * 1e3;
         if let Some(shot) = &mut self.screenshot {
-            shot.step(&ctx, self.canvas.output.is_some());
+            let gpu = self
+                .gpu_view
+                .settled(gpu_on, self.canvas.output.as_ref(), mode);
+            shot.step(&ctx, self.canvas.output.is_some() && gpu);
         }
     }
 
@@ -551,7 +570,13 @@ impl BaryApp {
 impl eframe::App for BaryApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         self.timing.frame_ms = frame.info().cpu_usage.map(|s| s * 1e3);
+        self.gpu_view.set_context(frame.gl());
         self.show(ui);
+    }
+
+    fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
+        // The GL objects go while eframe's context is still current.
+        self.gpu_view.release();
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

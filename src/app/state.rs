@@ -44,6 +44,9 @@ pub struct ViewSettings {
     /// instead of keeping the scene's own size. Off by default: a fixed size keeps every
     /// pixel, and so a pin, where it is through any layout change.
     pub fit_window: bool,
+    /// The GPU view: the comparison shows barylab beside this computer's OpenGL
+    /// ([`super::gpu_view`]) instead of affine beside perspective-correct.
+    pub gpu: bool,
 }
 
 impl Default for ViewSettings {
@@ -61,6 +64,7 @@ impl Default for ViewSettings {
             ui_scale: 1.0,
             rasterizer: Default::default(),
             fit_window: false,
+            gpu: false,
         }
     }
 }
@@ -129,6 +133,10 @@ pub enum Command {
     SetWireframe(bool),
     SetRasterizer(crate::raster::render::Rasterizer),
     SetCompare(Compare),
+    /// The GPU view on or off.
+    SetGpuView(bool),
+    /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
+    SetTieRule(crate::raster::setup::TieRule),
     SetWipe(f32),
     SetPixelSize(u32),
     /// Render at this fixed size (the scene's size, so exports carry it), or `None`: follow
@@ -263,6 +271,8 @@ impl AppState {
                 }
                 self.view.compare = c;
             }
+            Command::SetGpuView(on) => self.view.gpu = on,
+            Command::SetTieRule(rule) => self.scene.set_tie_rule(rule),
             Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),
             Command::SetPixelSize(p) => {
                 let p = p.clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);

@@ -9,6 +9,7 @@ pub mod check;
 mod compare;
 mod context;
 mod scene;
+pub mod view;
 
 pub use compare::*;
 pub use context::force_llvmpipe_env;

@@ -1,0 +1,573 @@
+//! The GPU view: the canvas's scene drawn by OpenGL through the app's own glow context (the
+//! same clip-space vertices, texture bytes, filter, wrap, `smooth` or `noperspective` uv and
+//! depth test), read back and compared with barylab's render of the same settings: barylab
+//! beside the GPU, a wipe between them, or the difference image ([`crate::gpu::view`]).
+//!
+//! GL runs only on the UI thread, inside the frame (where eframe's context is current): the
+//! app hands the frame's context to [`GpuView::set_context`] and calls [`GpuView::update`]
+//! once per frame; a new draw happens only when the canvas rendered anew or the mode changed.
+//! The GL objects are dropped when the view is switched off, when the context changes, and
+//! on exit ([`GpuView::release`]). Without a glow context (egui_kittest, another renderer),
+//! with OpenGL older than 3.3, or without the `gpu` feature, the view says why in one line.
+
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Ui};
+
+use super::render::CanvasOutput;
+use super::state::Command;
+use crate::figure::Compare;
+use crate::figure::overlay::{Overlay, Shape, mode_label_in};
+use crate::i18n::Lang;
+use crate::raster::{Filter, Interpolation, Shading, Texture};
+
+/// Why the GPU view shows no GPU image.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Unavailable {
+    /// No glow context in this frame (egui_kittest, or another renderer).
+    NoContext,
+    /// barylab was built without the `gpu` feature.
+    NotBuilt,
+    /// The context cannot do it (too old, OpenGL ES), or a draw failed: the one-line reason.
+    Gl(String),
+}
+
+/// What the GPU drew differently from the scene's own settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Note {
+    /// A shading the GPU shader lacks, compared as vertex colours.
+    Shading(Shading),
+    /// Trilinear compared as bilinear (no mipmaps on the GPU side).
+    Trilinear,
+    /// The wireframe overlay left out.
+    Wireframe,
+}
+
+/// One comparison: both images at the canvas's size and how they differ.
+pub struct GpuResult {
+    /// barylab's image with the settings the GPU drew (see [`GpuResult::notes`]).
+    pub ours: Vec<[u8; 4]>,
+    /// The GPU's image, row 0 at the top.
+    pub gpu: Vec<[u8; 4]>,
+    /// The comparison and the difference image.
+    pub diff: crate::gpu::view::ImageDiff,
+    /// What was drawn differently from the scene's settings.
+    pub notes: Vec<Note>,
+}
+
+/// OpenGL's strings: GL_VENDOR, GL_RENDERER, GL_VERSION.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GlInfo {
+    pub vendor: String,
+    pub renderer: String,
+    pub version: String,
+}
+
+/// The GPU view's state between frames (not saved).
+#[derive(Default)]
+pub struct GpuView {
+    /// This frame's glow context (`None` under egui_kittest).
+    gl: Option<Arc<eframe::glow::Context>>,
+    #[cfg(feature = "gpu")]
+    gpu: Option<crate::gpu::Gpu>,
+    /// What the last draw was made of: the canvas's render generation and the mode.
+    key: Option<(u64, Interpolation)>,
+    pub info: Option<GlInfo>,
+    pub result: Option<GpuResult>,
+    pub unavailable: Option<Unavailable>,
+    /// Increments with every new result (the canvas uploads the images again).
+    pub generation: u64,
+    /// The scene's mode: what the canvas shows where there is no GPU image.
+    pub fallback_mode: Interpolation,
+    /// Print each new result's summary on standard output (`--screenshot` runs, for tests).
+    pub print_summary: bool,
+}
+
+impl GpuView {
+    /// A view with nothing drawn; `print_summary` prints each result on standard output.
+    pub fn new(print_summary: bool) -> Self {
+        Self {
+            print_summary,
+            ..Self::default()
+        }
+    }
+
+    /// The frame's glow context (eframe's `frame.gl()`); a different context than before
+    /// drops the GL objects made on the old one.
+    pub fn set_context(&mut self, gl: Option<&Arc<eframe::glow::Context>>) {
+        let same = match (&self.gl, gl) {
+            (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+            (None, None) => true,
+            _ => false,
+        };
+        if !same {
+            self.release();
+            self.gl = gl.cloned();
+        }
+    }
+
+    /// Drops every GL object (the context must be current: call it inside a frame or in
+    /// `on_exit`) and forgets the last draw.
+    pub fn release(&mut self) {
+        #[cfg(feature = "gpu")]
+        {
+            self.gpu = None;
+        }
+        self.key = None;
+        self.result = None;
+        self.info = None;
+    }
+
+    /// Whether the view has what the canvas's render needs: a result or a reason for the
+    /// current render (always, when the view is off).
+    pub fn settled(&self, on: bool, output: Option<&CanvasOutput>, mode: Interpolation) -> bool {
+        !on || self.unavailable.is_some()
+            || output.is_some_and(|o| self.key == Some((o.generation, mode)))
+    }
+
+    /// Once per frame, on the UI thread: draws the canvas's scene with OpenGL when it changed.
+    /// Returns whether there is a new result (or a new reason).
+    pub fn update(
+        &mut self,
+        on: bool,
+        output: Option<&CanvasOutput>,
+        mode: Interpolation,
+        texture: &Texture,
+    ) -> bool {
+        self.fallback_mode = mode;
+        if !on {
+            let had = self.key.is_some() || self.unavailable.is_some();
+            self.release();
+            self.unavailable = None;
+            return had;
+        }
+        let Some(out) = output else {
+            return false;
+        };
+        let key = (out.generation, mode);
+        if self.key == Some(key) {
+            return false;
+        }
+        self.key = Some(key);
+        let before = self.unavailable.clone();
+        match self.draw(out, mode, texture) {
+            Ok(result) => {
+                if self.print_summary {
+                    println!("gpu view: {}", result.diff.summary_en());
+                }
+                self.result = Some(result);
+                self.unavailable = None;
+                self.generation += 1;
+                true
+            }
+            Err(why) => {
+                self.result = None;
+                let changed = before.as_ref() != Some(&why);
+                if self.print_summary {
+                    println!("gpu view unavailable: {}", reason(&why, Lang::En));
+                }
+                self.unavailable = Some(why);
+                self.generation += 1;
+                changed
+            }
+        }
+    }
+
+    #[cfg(not(feature = "gpu"))]
+    fn draw(
+        &mut self,
+        _out: &CanvasOutput,
+        _mode: Interpolation,
+        _texture: &Texture,
+    ) -> Result<GpuResult, Unavailable> {
+        Err(Unavailable::NotBuilt)
+    }
+
+    #[cfg(feature = "gpu")]
+    fn draw(
+        &mut self,
+        out: &CanvasOutput,
+        mode: Interpolation,
+        texture: &Texture,
+    ) -> Result<GpuResult, Unavailable> {
+        use crate::gpu::{Gpu, Output, mesh_at_f32};
+        let gl = self.gl.clone().ok_or(Unavailable::NoContext)?;
+        if self.gpu.is_none() {
+            let gpu = Gpu::on_context(gl).map_err(Unavailable::Gl)?;
+            self.info = Some(GlInfo {
+                vendor: gpu.vendor().to_string(),
+                renderer: gpu.renderer().to_string(),
+                version: gpu.version().to_string(),
+            });
+            self.gpu = Some(gpu);
+        }
+        let gpu = self.gpu.as_mut().ok_or(Unavailable::NoContext)?;
+        let (settings, output, notes) = gpu_settings(out.scene.settings(), mode);
+        let mesh = mesh_at_f32(&out.scene.to_mesh());
+        let ours = crate::raster::render(&mesh, texture, &settings)
+            .map_err(|e| Unavailable::Gl(e.to_string()))?;
+        let gl_err = Unavailable::Gl;
+        gpu.load_mesh(&mesh, texture, &settings).map_err(gl_err)?;
+        let ids = gpu
+            .render(Output::TriangleId, settings.filter, mode)
+            .map_err(gl_err)?;
+        let colors = gpu.render(output, settings.filter, mode).map_err(gl_err)?;
+        let f = ours.frame;
+        let diff =
+            crate::gpu::view::image_diff(settings.width, &f.triangle, &f.color, &ids, &colors);
+        Ok(GpuResult {
+            ours: f.color,
+            gpu: colors,
+            diff,
+            notes,
+        })
+    }
+}
+
+/// The settings the GPU draws with, its shader output, and what differs from the scene's
+/// own settings: shadings other than texture and vertex colour become vertex colour,
+/// trilinear becomes bilinear, no wireframe (as `gpu::check` does).
+#[cfg(feature = "gpu")]
+fn gpu_settings(
+    mut s: crate::raster::RenderSettings,
+    mode: Interpolation,
+) -> (crate::raster::RenderSettings, crate::gpu::Output, Vec<Note>) {
+    use crate::gpu::Output;
+    let mut notes = Vec::new();
+    s.mode = mode;
+    let output = match s.shading {
+        Shading::Texture => Output::Texture,
+        Shading::VertexColor => Output::VertexColor,
+        other => {
+            notes.push(Note::Shading(other));
+            s.shading = Shading::VertexColor;
+            Output::VertexColor
+        }
+    };
+    if output == Output::Texture && s.filter == Filter::Trilinear {
+        notes.push(Note::Trilinear);
+        s.filter = Filter::Bilinear;
+    }
+    if output == Output::VertexColor {
+        s.filter = Filter::Nearest;
+    }
+    if s.wireframe {
+        notes.push(Note::Wireframe);
+        s.wireframe = false;
+    }
+    (s, output, notes)
+}
+
+/// What one view of the canvas shows in the GPU view.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GpuContent {
+    Ours,
+    Gpu,
+    Wipe,
+    Difference,
+}
+
+/// The canvas's views in the GPU view, by the comparison chosen: Single shows the GPU's
+/// image, side by side barylab | GPU, the wipe barylab | GPU, the difference image.
+pub fn content(compare: Compare, index: usize) -> GpuContent {
+    match (compare, index) {
+        (Compare::Single, _) => GpuContent::Gpu,
+        (Compare::SideBySide, 0) => GpuContent::Ours,
+        (Compare::SideBySide, _) => GpuContent::Gpu,
+        (Compare::Wipe, _) => GpuContent::Wipe,
+        (Compare::Difference, _) => GpuContent::Difference,
+    }
+}
+
+/// The image of view `index`, or `None` when there is no GPU image (the canvas then shows
+/// barylab's).
+pub fn view_image(
+    view: &GpuView,
+    compare: Compare,
+    index: usize,
+    wipe_col: u32,
+) -> Option<egui::ColorImage> {
+    let r = view.result.as_ref()?;
+    let d = &r.diff;
+    let pixels = match content(compare, index) {
+        GpuContent::Ours => r.ours.clone(),
+        GpuContent::Gpu => r.gpu.clone(),
+        GpuContent::Wipe => crate::gpu::view::wipe(&r.ours, &r.gpu, d.width, wipe_col),
+        GpuContent::Difference => d.image.clone(),
+    };
+    let size = [d.width as usize, d.height as usize];
+    (pixels.len() == size[0] * size[1] && !pixels.is_empty()).then(|| {
+        egui::ColorImage::new(
+            size,
+            pixels
+                .iter()
+                .map(|c| Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
+                .collect(),
+        )
+    })
+}
+
+/// The overlay's title badges for the GPU view: the canvas builds the overlay as for the
+/// mode comparison (affine badge on the left view or wipe side, perspective on the right)
+/// and this names them barylab and the GPU instead.
+pub fn relabel(overlay: &mut Overlay, lang: Lang, compare: Compare, renderer: Option<&str>) {
+    let gpu = match renderer {
+        Some(r) => lang.tr_with("gpu_view.gpu_named", &[("renderer", &short(r))]),
+        None => lang.tr("gpu_view.gpu"),
+    };
+    let right = match compare {
+        Compare::Difference => lang.tr("gpu_view.difference_title"),
+        _ => gpu,
+    };
+    let (affine, perspective) = (
+        mode_label_in(Interpolation::Affine, lang),
+        mode_label_in(Interpolation::Perspective, lang),
+    );
+    for shape in &mut overlay.shapes {
+        if let Shape::Text { text, .. } = shape {
+            if *text == affine {
+                *text = lang.tr("gpu_view.barylab");
+            } else if *text == perspective {
+                *text = right.clone();
+            }
+        }
+    }
+}
+
+/// The mode whose badge [`relabel`] turns into view `index`'s title.
+pub fn badge_mode(compare: Compare, index: usize) -> Interpolation {
+    match content(compare, index) {
+        GpuContent::Ours => Interpolation::Affine,
+        _ => Interpolation::Perspective,
+    }
+}
+
+/// A renderer string up to its first parenthesis ("llvmpipe (LLVM 15, 256 bits)" ->
+/// "llvmpipe"), at most 32 characters.
+fn short(renderer: &str) -> String {
+    let s = renderer.split(" (").next().unwrap_or(renderer).trim();
+    if s.chars().count() > 32 {
+        let cut: String = s.chars().take(31).collect();
+        format!("{cut}…")
+    } else {
+        s.to_string()
+    }
+}
+
+/// The one-line reason, in `lang`.
+pub fn reason(why: &Unavailable, lang: Lang) -> String {
+    let r = match why {
+        Unavailable::NoContext => lang.tr("gpu_view.no_context"),
+        Unavailable::NotBuilt => lang.tr("gpu_view.not_built"),
+        Unavailable::Gl(e) => e.clone(),
+    };
+    lang.tr_with("gpu_view.unavailable", &[("reason", &r)])
+}
+
+/// The summary line: "coverage identical on N of M pixels; largest colour difference K
+/// levels".
+pub fn summary(d: &crate::gpu::view::ImageDiff, lang: Lang) -> String {
+    lang.tr_with(
+        "gpu_view.summary",
+        &[
+            ("same", &d.coverage_same()),
+            ("total", &d.pixels),
+            ("max", &d.max_color_difference),
+        ],
+    )
+}
+
+fn note_text(note: Note, lang: Lang) -> String {
+    match note {
+        Note::Shading(s) => {
+            let key = match s {
+                Shading::Barycentric => "app.controls.barycentric",
+                Shading::Depth => "app.controls.depth",
+                Shading::Normal => "app.controls.normal",
+                Shading::Lambert => "app.controls.lambert",
+                Shading::Texture => "app.controls.texture",
+                Shading::VertexColor => "app.controls.vertex_color",
+            };
+            lang.tr_with("gpu_view.note_shading", &[("shading", &lang.tr(key))])
+        }
+        Note::Trilinear => lang.tr("gpu_view.note_trilinear"),
+        Note::Wireframe => lang.tr("gpu_view.note_wireframe"),
+    }
+}
+
+fn hex(c: [u8; 4]) -> String {
+    format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2])
+}
+
+fn swatch(ui: &mut Ui, c: [u8; 4]) {
+    let h = ui.text_style_height(&egui::TextStyle::Body);
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(h, h), egui::Sense::hover());
+    ui.painter()
+        .rect_filled(rect, 2.0, Color32::from_rgb(c[0], c[1], c[2]));
+    ui.painter().rect_stroke(
+        rect,
+        2.0,
+        egui::Stroke::new(1.0, Color32::GRAY),
+        egui::StrokeKind::Inside,
+    );
+}
+
+/// The strip above the canvas in the GPU view: the OpenGL strings, the summary, the worst
+/// pixel button, the pinned pixel's colour in both, or the reason there is no GPU image.
+pub fn strip_ui(
+    ui: &mut Ui,
+    view: &GpuView,
+    compare: Compare,
+    pinned: Option<[u32; 2]>,
+) -> Vec<Command> {
+    let lang = super::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    if let Some(why) = &view.unavailable {
+        ui.add(egui::Label::new(RichText::new(reason(why, lang)).color(Color32::LIGHT_RED)).wrap());
+        return out;
+    }
+    if let Some(info) = &view.info {
+        ui.add(
+            egui::Label::new(
+                RichText::new(lang.tr_with(
+                    "gpu_view.renderer",
+                    &[
+                        ("renderer", &info.renderer),
+                        ("vendor", &info.vendor),
+                        ("version", &info.version),
+                    ],
+                ))
+                .small(),
+            )
+            .truncate(),
+        );
+    }
+    let Some(r) = &view.result else {
+        ui.label(lang.tr("gpu_view.drawing"));
+        return out;
+    };
+    let d = &r.diff;
+    ui.horizontal_wrapped(|ui| {
+        let color = if d.coverage_identical() {
+            Color32::LIGHT_GREEN
+        } else {
+            Color32::from_rgb(255, 120, 255)
+        };
+        ui.label(RichText::new(summary(d, lang)).strong().color(color));
+        if !d.coverage_identical() {
+            ui.label(lang.tr_with(
+                "gpu_view.mismatches",
+                &[("only_gpu", &d.only_gpu), ("only_barylab", &d.only_barylab)],
+            ));
+        }
+        if d.triangle_mismatches > 0 {
+            ui.label(lang.tr_with("gpu_view.triangles", &[("count", &d.triangle_mismatches)]));
+        }
+        let button = ui
+            .add_enabled(
+                d.worst.is_some(),
+                egui::Button::new(lang.tr("gpu_view.worst")),
+            )
+            .on_hover_text(lang.tr("gpu_view.worst_tip"))
+            .on_disabled_hover_text(lang.tr("gpu_view.identical"));
+        if button.clicked()
+            && let Some(p) = d.worst
+        {
+            out.push(Command::Pin(Some(p)));
+        }
+    });
+    if compare == Compare::Difference {
+        ui.horizontal_wrapped(|ui| {
+            for (c, key) in [
+                (crate::gpu::view::ONLY_GPU, "gpu_view.legend_only_gpu"),
+                (
+                    crate::gpu::view::ONLY_BARYLAB,
+                    "gpu_view.legend_only_barylab",
+                ),
+            ] {
+                swatch(ui, c);
+                ui.label(lang.tr(key));
+            }
+            let top = crate::gpu::view::heat_top(d.max_color_difference);
+            swatch(
+                ui,
+                crate::figure::heatmap::heat_color(f32::from(top), f32::from(top)),
+            );
+            ui.label(lang.tr_with("gpu_view.legend_heat", &[("top", &top)]));
+        });
+    }
+    if let Some([x, y]) = pinned {
+        let k = (y as usize) * (d.width as usize) + x as usize;
+        if let (Some(&ours), Some(&gpu)) = (r.ours.get(k), r.gpu.get(k)) {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(lang.tr_with("gpu_view.pixel", &[("x", &x), ("y", &y)]));
+                swatch(ui, ours);
+                ui.monospace(format!("barylab {}", hex(ours)));
+                swatch(ui, gpu);
+                ui.monospace(format!("GPU {}", hex(gpu)));
+            });
+        }
+    }
+    for n in &r.notes {
+        ui.add(egui::Label::new(RichText::new(note_text(*n, lang)).small().italics()).wrap());
+    }
+    out
+}
+
+/// The GPU toggle beside the comparison buttons.
+pub fn toggle_ui(ui: &mut Ui, on: bool) -> Vec<Command> {
+    let lang = super::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    let rich = RichText::new(lang.tr("gpu_view.toggle"));
+    let rich = if on {
+        rich.strong().color(Color32::BLACK)
+    } else {
+        rich
+    };
+    let mut button = egui::Button::new(rich).selected(on);
+    if on {
+        button = button.fill(Color32::from_rgb(120, 200, 120));
+    }
+    if ui
+        .add(button)
+        .on_hover_text(lang.tr("gpu_view.toggle_tip"))
+        .clicked()
+    {
+        out.push(Command::SetGpuView(!on));
+    }
+    out
+}
+
+/// The tie rule (which triangle owns a pixel centre exactly on a shared edge): llvmpipe's
+/// (OpenGL on Mesa, the default) or top-left (Direct3D, Vulkan). Saved in the scene.
+pub fn tie_rule_ui(ui: &mut Ui, rule: crate::raster::setup::TieRule) -> Vec<Command> {
+    use crate::raster::setup::TieRule;
+    let lang = super::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    ui.horizontal_wrapped(|ui| {
+        ui.label(lang.tr("gpu_view.tie_rule"))
+            .on_hover_text(lang.tr("gpu_view.tie_rule_tip"));
+        for (r, label, tip) in [
+            (
+                TieRule::Llvmpipe,
+                "gpu_view.tie_llvmpipe",
+                "gpu_view.tie_llvmpipe_tip",
+            ),
+            (
+                TieRule::TopLeft,
+                "gpu_view.tie_top_left",
+                "gpu_view.tie_top_left_tip",
+            ),
+        ] {
+            if ui
+                .selectable_label(rule == r, lang.tr(label))
+                .on_hover_text(lang.tr(tip))
+                .clicked()
+                && rule != r
+            {
+                out.push(Command::SetTieRule(r));
+            }
+        }
+    });
+    out
+}
