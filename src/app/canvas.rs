@@ -255,9 +255,8 @@ impl CanvasState {
             .iter()
             .enumerate()
             .map(|(i, v)| match gpu {
-                Some(g) => gpu_view::view_image(g, compare, i, wipe_col).unwrap_or_else(|| {
-                    view_image(out, ViewContent::Mode(g.fallback_mode), wipe_col)
-                }),
+                Some(g) => gpu_view::view_image(g, compare, i, wipe_col)
+                    .unwrap_or_else(|| view_image(out, g.fallback(), wipe_col)),
                 None => view_image(out, v.content, wipe_col),
             })
             .collect();
@@ -311,14 +310,10 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
     let lay = layout(available, view_settings.compare, sizing, ppp);
     let (size, scale) = (lay.size, lay.scale);
     canvas.pixel_size = lay.pixel_size(ppp);
-    // The GPU view renders barylab in the scene's mode only.
-    let render_compare = match input.gpu {
-        Some(_) => Compare::Single,
-        None => view_settings.compare,
-    };
+    let compare = gpu_view::render_compare(input.gpu, view_settings.compare);
     canvas.update(
         state,
-        render_compare,
+        compare,
         size,
         input.texture,
         input.texture_key.clone(),
@@ -342,12 +337,8 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
             },
         })
         .collect();
-    canvas.upload(
-        ui.ctx(),
-        view_settings.compare,
-        view_settings.wipe,
-        input.gpu,
-    );
+    let (compare, wipe) = (view_settings.compare, view_settings.wipe);
+    canvas.upload(ui.ctx(), compare, wipe, input.gpu);
     let Some(output) = &canvas.output else {
         if let Some(e) = &canvas.error {
             ui.colored_label(
@@ -515,14 +506,15 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
             active: active_handle == Some(k),
         })
         .collect();
-    let gpu_on = input.gpu.is_some_and(|g| g.result.is_some());
+    // The GPU view: Some(whether it has a GPU image).
+    let gpu = input.gpu.map(|g| g.result.is_some());
     for (vi, view) in canvas.views.iter().enumerate() {
         let input_overlay = OverlayInput {
             size,
             pixel_size: canvas.pixel_size,
             pixels_per_point: ppp,
             mode: match view.content {
-                _ if gpu_on => Some(gpu_view::badge_mode(view_settings.compare, vi)),
+                _ if gpu.is_some() => Some(gpu_view::badge_mode(gpu, compare, vi, state)),
                 ViewContent::Mode(m) => Some(m),
                 _ => None,
             },
@@ -535,13 +527,15 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
             hover: input.hover_report.map(PixelReport::mark),
             pin: input.pin_report.map(PixelReport::mark),
             sub_areas: view_settings.show_sub_areas,
-            wipe: (view.content == ViewContent::Wipe).then_some((
+            wipe: (view.content == ViewContent::Wipe && gpu != Some(false)).then_some((
                 f64::from(view_settings.wipe) * f64::from(size[0]),
                 Interpolation::Affine,
                 Interpolation::Perspective,
             )),
             color_bar: match view.content {
-                ViewContent::Difference if !gpu_on => output.heatmap.as_ref().map(|h| h.scale_max),
+                ViewContent::Difference if gpu.is_none() => {
+                    output.heatmap.as_ref().map(|h| h.scale_max)
+                }
                 _ => None,
             },
         };
@@ -552,7 +546,7 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
         )
         .intersect(available);
         let mut shapes = overlay::build_in(&input_overlay, lang);
-        if let Some(g) = input.gpu.filter(|_| gpu_on) {
+        if let Some(g) = input.gpu.filter(|_| gpu == Some(true)) {
             let renderer = g.info.as_ref().map(|i| i.renderer.as_str());
             gpu_view::relabel(&mut shapes, lang, view_settings.compare, renderer);
         }

@@ -77,6 +77,8 @@ pub struct GpuView {
     pub unavailable: Option<Unavailable>,
     /// Increments with every new result (the canvas uploads the images again).
     pub generation: u64,
+    /// How long the last comparison took (both renders, read-back, comparison), ms.
+    pub draw_ms: f64,
     /// The scene's mode: what the canvas shows where there is no GPU image.
     pub fallback_mode: Interpolation,
     /// Print each new result's summary on standard output (`--screenshot` runs, for tests).
@@ -84,6 +86,11 @@ pub struct GpuView {
 }
 
 impl GpuView {
+    /// What the canvas shows where there is no GPU image: barylab's in the scene's mode.
+    pub fn fallback(&self) -> crate::figure::ViewContent {
+        crate::figure::ViewContent::Mode(self.fallback_mode)
+    }
+
     /// A view with nothing drawn; `print_summary` prints each result on standard output.
     pub fn new(print_summary: bool) -> Self {
         Self {
@@ -150,7 +157,10 @@ impl GpuView {
         }
         self.key = Some(key);
         let before = self.unavailable.clone();
-        match self.draw(out, mode, texture) {
+        let start = std::time::Instant::now();
+        let drawn = self.draw(out, mode, texture);
+        self.draw_ms = start.elapsed().as_secs_f64() * 1e3;
+        match drawn {
             Ok(result) => {
                 if self.print_summary {
                     println!("gpu view: {}", result.diff.summary_en());
@@ -204,7 +214,10 @@ impl GpuView {
         let gpu = self.gpu.as_mut().ok_or(Unavailable::NoContext)?;
         let (settings, output, notes) = gpu_settings(out.scene.settings(), mode);
         let mesh = mesh_at_f32(&out.scene.to_mesh());
-        let ours = crate::raster::render(&mesh, texture, &settings)
+        // Colour, depth and the owning triangle (the fast path draws them).
+        let mut f = crate::raster::Framebuffer::new(0, 0, settings.background);
+        let buffers = crate::raster::Buffers::ColorDepthUv;
+        crate::raster::render_into(&mut f, &mesh, texture, &settings, buffers)
             .map_err(|e| Unavailable::Gl(e.to_string()))?;
         let gl_err = Unavailable::Gl;
         gpu.load_mesh(&mesh, texture, &settings).map_err(gl_err)?;
@@ -212,7 +225,6 @@ impl GpuView {
             .render(Output::TriangleId, settings.filter, mode)
             .map_err(gl_err)?;
         let colors = gpu.render(output, settings.filter, mode).map_err(gl_err)?;
-        let f = ours.frame;
         let diff =
             crate::gpu::view::image_diff(settings.width, &f.triangle, &f.color, &ids, &colors);
         Ok(GpuResult {
@@ -334,11 +346,28 @@ pub fn relabel(overlay: &mut Overlay, lang: Lang, compare: Compare, renderer: Op
     }
 }
 
-/// The mode whose badge [`relabel`] turns into view `index`'s title.
-pub fn badge_mode(compare: Compare, index: usize) -> Interpolation {
-    match content(compare, index) {
-        GpuContent::Ours => Interpolation::Affine,
-        _ => Interpolation::Perspective,
+/// The mode badge of view `index` in the GPU view (`gpu`: whether there is a GPU image):
+/// the one [`relabel`] turns into the view's title, or the scene's mode when the views show
+/// barylab's image alone.
+pub fn badge_mode(
+    gpu: Option<bool>,
+    compare: Compare,
+    index: usize,
+    state: &super::state::AppState,
+) -> Interpolation {
+    match (gpu, content(compare, index)) {
+        (Some(true), GpuContent::Ours) => Interpolation::Affine,
+        (Some(true), _) => Interpolation::Perspective,
+        _ => state.options().mode,
+    }
+}
+
+/// The comparison the canvas renders for: the GPU view needs barylab in the scene's mode
+/// only.
+pub fn render_compare(gpu: Option<&GpuView>, compare: Compare) -> Compare {
+    match gpu {
+        Some(_) => Compare::Single,
+        None => compare,
     }
 }
 
@@ -435,6 +464,7 @@ pub fn strip_ui(
                         ("renderer", &info.renderer),
                         ("vendor", &info.vendor),
                         ("version", &info.version),
+                        ("ms", &format!("{:.1}", view.draw_ms)),
                     ],
                 ))
                 .small(),
