@@ -441,14 +441,33 @@ fn swatch(ui: &mut Ui, c: [u8; 4]) {
     );
 }
 
+/// barylab's colour and the GPU's at `pixel`, for the inspector (nothing without a GPU
+/// image).
+pub fn pixel_colours_ui(ui: &mut Ui, view: &GpuView, [x, y]: [u32; 2]) {
+    let Some(r) = &view.result else {
+        return;
+    };
+    let k = (y as usize) * (r.diff.width as usize) + x as usize;
+    if let (Some(&ours), Some(&gpu)) = (r.ours.get(k), r.gpu.get(k)) {
+        let lang = super::locale::lang(ui.ctx());
+        ui.horizontal(|ui| {
+            swatch(ui, ours);
+            ui.monospace(format!("{} barylab", hex(ours)));
+        });
+        ui.horizontal_wrapped(|ui| {
+            swatch(ui, gpu);
+            ui.monospace(format!("{} GPU", hex(gpu)));
+            let d = (0..4).map(|i| ours[i].abs_diff(gpu[i])).max().unwrap_or(0);
+            if d > 0 {
+                ui.label(lang.tr_with("gpu_view.pixel_difference", &[("levels", &d)]));
+            }
+        });
+    }
+}
+
 /// The strip above the canvas in the GPU view: the OpenGL strings, the summary, the worst
-/// pixel button, the pinned pixel's colour in both, or the reason there is no GPU image.
-pub fn strip_ui(
-    ui: &mut Ui,
-    view: &GpuView,
-    compare: Compare,
-    pinned: Option<[u32; 2]>,
-) -> Vec<Command> {
+/// pixel button, the difference image's legend, or the reason there is no GPU image.
+pub fn strip_ui(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<Command> {
     let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     if let Some(why) = &view.unavailable {
@@ -469,7 +488,7 @@ pub fn strip_ui(
                 ))
                 .small(),
             )
-            .truncate(),
+            .wrap(),
         );
     }
     let Some(r) = &view.result else {
@@ -525,18 +544,6 @@ pub fn strip_ui(
             );
             ui.label(lang.tr_with("gpu_view.legend_heat", &[("top", &top)]));
         });
-    }
-    if let Some([x, y]) = pinned {
-        let k = (y as usize) * (d.width as usize) + x as usize;
-        if let (Some(&ours), Some(&gpu)) = (r.ours.get(k), r.gpu.get(k)) {
-            ui.horizontal_wrapped(|ui| {
-                ui.label(lang.tr_with("gpu_view.pixel", &[("x", &x), ("y", &y)]));
-                swatch(ui, ours);
-                ui.monospace(format!("barylab {}", hex(ours)));
-                swatch(ui, gpu);
-                ui.monospace(format!("GPU {}", hex(gpu)));
-            });
-        }
     }
     for n in &r.notes {
         ui.add(egui::Label::new(RichText::new(note_text(*n, lang)).small().italics()).wrap());

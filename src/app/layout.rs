@@ -92,6 +92,7 @@ impl BaryApp {
                                     ui,
                                     self.reports.hover.as_ref(),
                                     self.reports.pin.as_ref(),
+                                    self.state.view.gpu.then_some(&self.gpu_view),
                                 );
                             });
                     });
@@ -109,8 +110,8 @@ impl BaryApp {
         egui::CentralPanel::default().show(ui, |ui| {
             let gpu = self.state.view.gpu.then_some(&self.gpu_view);
             if let Some(g) = gpu.filter(|_| !self.presenting) {
-                let (compare, pinned) = (self.state.view.compare, self.state.view.pinned);
-                out.extend(command::all(gpu_view::strip_ui(ui, g, compare, pinned)));
+                let compare = self.state.view.compare;
+                out.extend(command::all(gpu_view::strip_ui(ui, g, compare)));
                 ui.separator();
             }
             let input = CanvasInput {
