@@ -217,7 +217,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
             }
         }
     });
-    out.extend(super::gpu_view::tie_rule_ui(
+    out.extend(super::tie_rule::tie_rule_ui(
         ui,
         state.scene.settings().tie_rule,
     ));

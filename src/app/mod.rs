@@ -10,7 +10,8 @@
 //! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
 //!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
 //!   [`image_size`], [`canvas`], [`inspector`], [`present`], [`status`], [`help`], [`export`],
-//!   [`bench_panel`] (with [`bench_chart`]), and the keyboard [`shortcuts`].
+//!   [`bench_panel`] (with [`bench_chart`]), [`gpu_view`] (barylab beside this computer's
+//!   OpenGL), [`tie_rule`], and the keyboard [`shortcuts`].
 //! - Around them: [`layout`] (side panels, canvas, presentation card; [`side_panels`] is the
 //!   arithmetic), [`history`] (undo and redo), [`access`] (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
@@ -57,6 +58,7 @@ pub mod state;
 pub mod status;
 pub mod style;
 pub mod textures;
+pub mod tie_rule;
 pub mod top_bar;
 mod window;
 
