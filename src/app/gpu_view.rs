@@ -19,7 +19,7 @@ use super::state::Command;
 use crate::figure::Compare;
 use crate::figure::overlay::{Overlay, Shape, mode_label_in};
 use crate::i18n::Lang;
-use crate::raster::{Filter, Interpolation, Shading, Texture};
+use crate::raster::{Interpolation, Shading, Texture};
 
 /// Why the GPU view shows no GPU image.
 #[derive(Clone, Debug, PartialEq)]
@@ -245,6 +245,7 @@ fn gpu_settings(
     mode: Interpolation,
 ) -> (crate::raster::RenderSettings, crate::gpu::Output, Vec<Note>) {
     use crate::gpu::Output;
+    use crate::raster::Filter;
     let mut notes = Vec::new();
     s.mode = mode;
     let output = match s.shading {

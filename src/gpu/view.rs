@@ -73,7 +73,7 @@ pub fn heat_top(max: u8) -> u8 {
 }
 
 /// Compares barylab's render (`ours_triangle`: the owning triangle per pixel, [`NO_TRIANGLE`]
-/// where none; `ours_color`) with the GPU's (`gl_ids`: the [`super::Output::TriangleId`]
+/// where none; `ours_color`) with the GPU's (`gl_ids`: the `Output::TriangleId`
 /// image, `gl_colors`: its colour image), all `width` pixels wide in image row order.
 ///
 /// ```
