@@ -344,3 +344,22 @@ fn under_xvfb_the_gpu_view_shows_llvmpipe_agreeing_on_coverage_on_every_sample_s
         assert_eq!(img.dimensions(), (1280, 800), "{}", scene.display());
     }
 }
+
+#[test]
+fn the_compare_flag_names_its_views_when_given_a_bad_one() {
+    let out = Command::new(env!("CARGO_BIN_EXE_barylab"))
+        .args([
+            "--compare",
+            "gpu-sideways",
+            "--screenshot",
+            "/nonexistent/x.png",
+        ])
+        .output()
+        .expect("run barylab");
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("unknown view 'gpu-sideways'"), "{err}");
+    for view in ["single", "side", "wipe", "difference", "gpu", "gpu-wipe"] {
+        assert!(err.contains(view), "{view}: {err}");
+    }
+}

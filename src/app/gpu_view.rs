@@ -28,6 +28,8 @@ pub enum Unavailable {
     NoContext,
     /// barylab was built without the `gpu` feature.
     NotBuilt,
+    /// The window's context is older than OpenGL 3.3, or OpenGL ES: its GL_VERSION.
+    TooOld(String),
     /// The context cannot do it (too old, OpenGL ES), or a draw failed: the one-line reason.
     Gl(String),
 }
@@ -203,6 +205,13 @@ impl GpuView {
         use crate::gpu::{Gpu, Output, mesh_at_f32};
         let gl = self.gl.clone().ok_or(Unavailable::NoContext)?;
         if self.gpu.is_none() {
+            use eframe::glow::HasContext;
+            let v = gl.version();
+            if v.is_embedded || (v.major, v.minor) < (3, 3) {
+                // SAFETY: a plain query on the frame's context, which is current.
+                let version = unsafe { gl.get_parameter_string(eframe::glow::VERSION) };
+                return Err(Unavailable::TooOld(version));
+            }
             let gpu = Gpu::on_context(gl).map_err(Unavailable::Gl)?;
             self.info = Some(GlInfo {
                 vendor: gpu.vendor().to_string(),
@@ -389,6 +398,7 @@ pub fn reason(why: &Unavailable, lang: Lang) -> String {
     let r = match why {
         Unavailable::NoContext => lang.tr("gpu_view.no_context"),
         Unavailable::NotBuilt => lang.tr("gpu_view.not_built"),
+        Unavailable::TooOld(v) => lang.tr_with("gpu_view.too_old", &[("version", v)]),
         Unavailable::Gl(e) => e.clone(),
     };
     lang.tr_with("gpu_view.unavailable", &[("reason", &r)])
