@@ -440,7 +440,7 @@ fn hex(c: [u8; 4]) -> String {
 }
 
 fn swatch(ui: &mut Ui, c: [u8; 4]) {
-    let h = ui.text_style_height(&egui::TextStyle::Body);
+    let h = ui.text_style_height(&egui::TextStyle::Body) * 0.8;
     let (rect, _) = ui.allocate_exact_size(egui::vec2(h, h), egui::Sense::hover());
     ui.painter()
         .rect_filled(rect, 2.0, Color32::from_rgb(c[0], c[1], c[2]));
@@ -479,12 +479,55 @@ pub fn pixel_colours_ui(ui: &mut Ui, view: &GpuView, [x, y]: [u32; 2]) {
 /// The strip above the canvas in the GPU view: the OpenGL strings, the summary, the worst
 /// pixel button, the difference image's legend, or the reason there is no GPU image.
 pub fn strip_ui(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<Command> {
+    // At most this share of the canvas panel (large text on a projector): the rest scrolls.
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let max = (ui.available_height() * STRIP_SHARE).max(body * 2.5);
+    ui.scope(|ui| {
+        // A solid scroll bar, so that a strip that scrolls shows it does.
+        ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
+        egui::ScrollArea::vertical()
+            .id_salt("gpu-strip")
+            .max_height(max)
+            .auto_shrink([false, true])
+            .show(ui, |ui| strip_contents(ui, view, compare))
+            .inner
+    })
+    .inner
+}
+
+/// The largest share of the canvas panel's height the strip takes.
+const STRIP_SHARE: f32 = 0.22;
+
+fn strip_contents(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<Command> {
     let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     if let Some(why) = &view.unavailable {
         ui.add(egui::Label::new(RichText::new(reason(why, lang)).color(Color32::LIGHT_RED)).wrap());
         return out;
     }
+    let Some(r) = &view.result else {
+        ui.label(lang.tr("gpu_view.drawing"));
+        return out;
+    };
+    let d = &r.diff;
+    ui.horizontal_wrapped(|ui| {
+        let color = if d.coverage_identical() {
+            Color32::LIGHT_GREEN
+        } else {
+            Color32::from_rgb(255, 120, 255)
+        };
+        out.extend(worst_button(ui, d, lang));
+        ui.label(RichText::new(summary(d, lang)).strong().color(color));
+        if !d.coverage_identical() {
+            ui.label(lang.tr_with(
+                "gpu_view.mismatches",
+                &[("only_gpu", &d.only_gpu), ("only_barylab", &d.only_barylab)],
+            ));
+        }
+        if d.triangle_mismatches > 0 {
+            ui.label(lang.tr_with("gpu_view.triangles", &[("count", &d.triangle_mismatches)]));
+        }
+    });
     if let Some(info) = &view.info {
         ui.add(
             egui::Label::new(
@@ -502,40 +545,6 @@ pub fn strip_ui(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<Command> {
             .wrap(),
         );
     }
-    let Some(r) = &view.result else {
-        ui.label(lang.tr("gpu_view.drawing"));
-        return out;
-    };
-    let d = &r.diff;
-    ui.horizontal_wrapped(|ui| {
-        let color = if d.coverage_identical() {
-            Color32::LIGHT_GREEN
-        } else {
-            Color32::from_rgb(255, 120, 255)
-        };
-        ui.label(RichText::new(summary(d, lang)).strong().color(color));
-        if !d.coverage_identical() {
-            ui.label(lang.tr_with(
-                "gpu_view.mismatches",
-                &[("only_gpu", &d.only_gpu), ("only_barylab", &d.only_barylab)],
-            ));
-        }
-        if d.triangle_mismatches > 0 {
-            ui.label(lang.tr_with("gpu_view.triangles", &[("count", &d.triangle_mismatches)]));
-        }
-        let button = ui
-            .add_enabled(
-                d.worst.is_some(),
-                egui::Button::new(lang.tr("gpu_view.worst")),
-            )
-            .on_hover_text(lang.tr("gpu_view.worst_tip"))
-            .on_disabled_hover_text(lang.tr("gpu_view.identical"));
-        if button.clicked()
-            && let Some(p) = d.worst
-        {
-            out.push(Command::Pin(Some(p)));
-        }
-    });
     if compare == Compare::Difference {
         ui.horizontal_wrapped(|ui| {
             for (c, key) in [
@@ -546,20 +555,36 @@ pub fn strip_ui(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<Command> {
                 ),
             ] {
                 swatch(ui, c);
-                ui.label(lang.tr(key));
+                ui.label(RichText::new(lang.tr(key)).small());
             }
             let top = crate::gpu::view::heat_top(d.max_color_difference);
             swatch(
                 ui,
                 crate::figure::heatmap::heat_color(f32::from(top), f32::from(top)),
             );
-            ui.label(lang.tr_with("gpu_view.legend_heat", &[("top", &top)]));
+            ui.label(RichText::new(lang.tr_with("gpu_view.legend_heat", &[("top", &top)])).small());
         });
     }
     for n in &r.notes {
         ui.add(egui::Label::new(RichText::new(note_text(*n, lang)).small().italics()).wrap());
     }
     out
+}
+
+/// "Jump to worst pixel": pins the pixel that differs most.
+fn worst_button(ui: &mut Ui, d: &crate::gpu::view::ImageDiff, lang: Lang) -> Option<Command> {
+    let button = ui
+        .add_enabled(
+            d.worst.is_some(),
+            egui::Button::new(lang.tr("gpu_view.worst")),
+        )
+        .on_hover_text(lang.tr("gpu_view.worst_tip"))
+        .on_disabled_hover_text(lang.tr("gpu_view.identical"));
+    button
+        .clicked()
+        .then_some(d.worst)
+        .flatten()
+        .map(|p| Command::Pin(Some(p)))
 }
 
 /// The GPU toggle beside the comparison buttons.
