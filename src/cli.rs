@@ -27,6 +27,7 @@ Examples:
   barylab render assets/models/torus.obj -o out.png
   barylab --screenshot shot.png             open the app, save a screenshot, exit
   barylab --screenshot s.png --window 1024x768 --present   the same, as on a projector
+  barylab --compare gpu                     open the app with barylab beside this computer's GPU
   barylab render assets/scenes/default.json -o out.png
   barylab render assets/scenes/default.json --mode affine --size 400x300 -o affine.png
   barylab render assets/scenes/clip-two-triangles.json --filter nearest --aov aov/ -o out.png
@@ -78,6 +79,11 @@ struct Cli {
     /// With --lesson: start at this step (from 1).
     #[arg(long, value_name = "N", requires = "lesson")]
     step: Option<usize>,
+    /// Start in this comparison: single, side, wipe, difference (affine beside
+    /// perspective-correct), or gpu (barylab beside this computer's OpenGL), gpu-single,
+    /// gpu-wipe, gpu-difference.
+    #[arg(long, value_parser = parse_compare, value_name = "VIEW")]
+    compare: Option<(barylab::figure::Compare, bool)>,
     /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
     /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
@@ -613,6 +619,28 @@ pub fn main() -> ExitCode {
 }
 
 /// Parses the app's text size (its zoom factor).
+fn parse_compare(s: &str) -> Result<(barylab::figure::Compare, bool), String> {
+    use barylab::figure::Compare;
+    let (gpu, view) = match s.strip_prefix("gpu") {
+        Some("") => (true, "side"),
+        Some(rest) => (true, rest.trim_start_matches('-')),
+        None => (false, s),
+    };
+    let compare = match view {
+        "single" => Compare::Single,
+        "side" => Compare::SideBySide,
+        "wipe" => Compare::Wipe,
+        "difference" | "diff" => Compare::Difference,
+        _ => {
+            return Err(format!(
+                "unknown view '{s}' (single, side, wipe, difference, gpu, gpu-single, \
+                 gpu-wipe, gpu-difference)"
+            ));
+        }
+    };
+    Ok((compare, gpu))
+}
+
 fn parse_text_size(s: &str) -> Result<f32, String> {
     let (lo, hi) = barylab::app::state::UI_SCALE_RANGE;
     match s.trim().parse::<f32>() {
@@ -678,6 +706,7 @@ fn app(cli: &Cli) -> Result<()> {
             }
             None => None,
         },
+        compare: cli.compare,
     };
     barylab::app::run(options)?;
     Ok(())

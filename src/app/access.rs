@@ -86,4 +86,9 @@ impl BaryApp {
     pub fn message(&self) -> Option<&str> {
         self.message.as_ref().map(|m| m.text.as_str())
     }
+
+    /// The GPU view (its last comparison, or why there is none).
+    pub fn gpu_view(&self) -> &super::gpu_view::GpuView {
+        &self.gpu_view
+    }
 }

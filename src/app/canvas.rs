@@ -6,6 +6,7 @@ use std::time::Instant;
 use egui::{Color32, CursorIcon, Id, Pos2, Rect, Sense, TextureHandle, TextureOptions, Ui};
 use glam::DVec2;
 
+use super::gpu_view::{self, GpuView};
 use super::paint::{self, CanvasTransform};
 use super::pixel::PixelReport;
 use super::render::{CanvasOutput, RenderCache, TextureKey, view_image};
@@ -72,7 +73,7 @@ pub struct CanvasState {
     renders: RenderCache,
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
-    uploaded: Option<(u64, Compare, u32)>,
+    uploaded: Option<(u64, Compare, u32, Option<u64>)>,
     drag: Option<DragKind>,
     pub views: Vec<View>,
     /// The pixel under the pointer, if it is over a view.
@@ -210,6 +211,7 @@ impl CanvasState {
     pub fn update(
         &mut self,
         state: &AppState,
+        compare: Compare,
         size: [u32; 2],
         texture: &Texture,
         texture_key: TextureKey,
@@ -217,7 +219,7 @@ impl CanvasState {
         let generation = self.output.as_ref().map_or(0, |o| o.generation + 1);
         match self
             .renders
-            .update(state, size, texture, texture_key, generation)
+            .update(state, compare, size, texture, texture_key, generation)
         {
             Ok(None) => false,
             Ok(Some(r)) => {
@@ -236,13 +238,14 @@ impl CanvasState {
         }
     }
 
-    /// Builds the view images and uploads them, only if the render or the wipe moved.
-    fn upload(&mut self, ctx: &egui::Context, compare: Compare, wipe: f32) {
+    /// Builds the view images and uploads them, only if the render, the GPU view's images or
+    /// the wipe moved.
+    fn upload(&mut self, ctx: &egui::Context, compare: Compare, wipe: f32, gpu: Option<&GpuView>) {
         let Some(out) = &self.output else {
             return;
         };
         let wipe_col = crate::figure::wipe_column(wipe, out.size[0]);
-        let tag = (out.generation, compare, wipe_col);
+        let tag = (out.generation, compare, wipe_col, gpu.map(|g| g.generation));
         if self.uploaded == Some(tag) && self.textures.len() == self.views.len() {
             return;
         }
@@ -250,7 +253,12 @@ impl CanvasState {
         let images: Vec<egui::ColorImage> = self
             .views
             .iter()
-            .map(|v| view_image(out, v.content, wipe_col))
+            .enumerate()
+            .map(|(i, v)| match gpu {
+                Some(g) => gpu_view::view_image(g, compare, i, wipe_col)
+                    .unwrap_or_else(|| view_image(out, g.fallback(), wipe_col)),
+                None => view_image(out, v.content, wipe_col),
+            })
             .collect();
         self.textures.truncate(images.len());
         for (i, image) in images.into_iter().enumerate() {
@@ -276,6 +284,8 @@ pub struct CanvasInput<'a> {
     /// Derivations of the hovered and pinned pixels from the last frame (for the overlay).
     pub hover_report: Option<&'a PixelReport>,
     pub pin_report: Option<&'a PixelReport>,
+    /// The GPU view, when it is on.
+    pub gpu: Option<&'a GpuView>,
 }
 
 /// The canvas panel. It renders and uploads what changed, and keeps its own widget state
@@ -300,7 +310,14 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
     let lay = layout(available, view_settings.compare, sizing, ppp);
     let (size, scale) = (lay.size, lay.scale);
     canvas.pixel_size = lay.pixel_size(ppp);
-    canvas.update(state, size, input.texture, input.texture_key.clone());
+    let compare = gpu_view::render_compare(input.gpu, view_settings.compare);
+    canvas.update(
+        state,
+        compare,
+        size,
+        input.texture,
+        input.texture_key.clone(),
+    );
     canvas.views = lay
         .views
         .iter()
@@ -311,14 +328,17 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
                 scale,
             },
             content: match content {
-                ViewContent::Mode(_) if view_settings.compare == Compare::Single => {
+                ViewContent::Mode(_)
+                    if view_settings.compare == Compare::Single || input.gpu.is_some() =>
+                {
                     ViewContent::Mode(state.options().mode)
                 }
                 c => c,
             },
         })
         .collect();
-    canvas.upload(ui.ctx(), view_settings.compare, view_settings.wipe);
+    let (compare, wipe) = (view_settings.compare, view_settings.wipe);
+    canvas.upload(ui.ctx(), compare, wipe, input.gpu);
     let Some(output) = &canvas.output else {
         if let Some(e) = &canvas.error {
             ui.colored_label(
@@ -486,12 +506,15 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
             active: active_handle == Some(k),
         })
         .collect();
-    for view in &canvas.views {
+    // The GPU view: Some(whether it has a GPU image).
+    let gpu = input.gpu.map(|g| g.result.is_some());
+    for (vi, view) in canvas.views.iter().enumerate() {
         let input_overlay = OverlayInput {
             size,
             pixel_size: canvas.pixel_size,
             pixels_per_point: ppp,
             mode: match view.content {
+                _ if gpu.is_some() => Some(gpu_view::badge_mode(gpu, compare, vi, state)),
                 ViewContent::Mode(m) => Some(m),
                 _ => None,
             },
@@ -504,13 +527,15 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
             hover: input.hover_report.map(PixelReport::mark),
             pin: input.pin_report.map(PixelReport::mark),
             sub_areas: view_settings.show_sub_areas,
-            wipe: (view.content == ViewContent::Wipe).then_some((
+            wipe: (view.content == ViewContent::Wipe && gpu != Some(false)).then_some((
                 f64::from(view_settings.wipe) * f64::from(size[0]),
                 Interpolation::Affine,
                 Interpolation::Perspective,
             )),
             color_bar: match view.content {
-                ViewContent::Difference => output.heatmap.as_ref().map(|h| h.scale_max),
+                ViewContent::Difference if gpu.is_none() => {
+                    output.heatmap.as_ref().map(|h| h.scale_max)
+                }
                 _ => None,
             },
         };
@@ -520,12 +545,12 @@ pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) 
             view.rect.max + egui::vec2(2.0, 2.0),
         )
         .intersect(available);
-        paint::paint(
-            &painter,
-            clip,
-            view.transform,
-            &overlay::build_in(&input_overlay, lang),
-        );
+        let mut shapes = overlay::build_in(&input_overlay, lang);
+        if let Some(g) = input.gpu.filter(|_| gpu == Some(true)) {
+            let renderer = g.info.as_ref().map(|i| i.renderer.as_str());
+            gpu_view::relabel(&mut shapes, lang, view_settings.compare, renderer);
+        }
+        paint::paint(&painter, clip, view.transform, &shapes);
     }
     out
 }

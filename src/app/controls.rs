@@ -111,6 +111,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
                 out.push(Command::SetCompare(c));
             }
         }
+        out.extend(super::gpu_view::toggle_ui(ui, view.gpu));
     });
 
     section(ui, &lang.tr("app.controls.shading"));
@@ -216,6 +217,10 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
             }
         }
     });
+    out.extend(super::tie_rule::tie_rule_ui(
+        ui,
+        state.scene.settings().tie_rule,
+    ));
 
     section(ui, &lang.tr("app.controls.pixels"));
     out.extend(super::image_size::image_size_ui(ui, state));

@@ -347,11 +347,13 @@ fn section_ui(ui: &mut Ui, index: usize, text: &str) {
 
 /// The inspector panel. `open`: the derivation sections a lesson step opens; returns whether
 /// they were applied (a pixel was shown).
+/// `gpu`: the GPU view when it is on (its colour at the pixel is shown beside barylab's).
 pub fn inspector_ui(
     ui: &mut Ui,
     hovered: Option<&PixelReport>,
     pinned: Option<&PixelReport>,
     open: Option<&[InspectorSection]>,
+    gpu: Option<&super::gpu_view::GpuView>,
 ) -> bool {
     let lang = super::locale::lang(ui.ctx());
     ui.heading(lang.tr("app.inspector.title"));
@@ -366,6 +368,9 @@ pub fn inspector_ui(
         &lang.tr("app.inspector.pinned")
     };
     header_ui(ui, focus, role);
+    if let Some(g) = gpu {
+        super::gpu_view::pixel_colours_ui(ui, g, focus.pixel);
+    }
     ui.add_space(4.0);
     summary_ui(ui, focus);
     if let (Some(p), Some(h)) = (pinned, hovered)

@@ -8,7 +8,7 @@ use super::canvas::{self, CanvasInput};
 use super::command::{self, AppCommand};
 use super::side_panels::{self, Fit};
 use super::textures::texture_key;
-use super::{BaryApp, controls, inspector, present, state};
+use super::{BaryApp, controls, gpu_view, inspector, present, state};
 use crate::raster::Texture;
 
 /// Presentation mode: windows wider than this many heights get the card beside the canvas
@@ -93,6 +93,7 @@ impl BaryApp {
                                     self.reports.hover.as_ref(),
                                     self.reports.pin.as_ref(),
                                     self.lessons.open_sections.as_deref(),
+                                    self.state.view.gpu.then_some(&self.gpu_view),
                                 );
                                 if shown {
                                     self.lessons.open_sections = None;
@@ -111,12 +112,19 @@ impl BaryApp {
         out: &mut Vec<AppCommand>,
     ) {
         egui::CentralPanel::default().show(ui, |ui| {
+            let gpu = self.state.view.gpu.then_some(&self.gpu_view);
+            if let Some(g) = gpu.filter(|_| !self.presenting) {
+                let compare = self.state.view.compare;
+                out.extend(command::all(gpu_view::strip_ui(ui, g, compare)));
+                ui.separator();
+            }
             let input = CanvasInput {
                 state: &self.state,
                 texture,
                 texture_key: texture_key(&self.state.scene, self.state.scene_dir.as_deref()),
                 hover_report: self.reports.hover.as_ref(),
                 pin_report: self.reports.pin.as_ref(),
+                gpu,
             };
             out.extend(command::all(canvas::canvas_ui(ui, &mut self.canvas, input)));
         });

@@ -11,8 +11,8 @@
 //!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
 //!   [`image_size`], [`canvas`], [`inspector`], [`present`], [`status`], [`help`], [`export`],
 //!   [`bench_panel`] (with [`bench_chart`]), [`lessons`] (the Lessons panel, its
-//!   presentation strip and menu), [`plots`] (the pinned row's plot), and the keyboard
-//!   [`shortcuts`].
+//!   presentation strip and menu), [`plots`] (the pinned row's plot), [`gpu_view`] (barylab
+//!   beside this computer's OpenGL), [`tie_rule`], and the keyboard [`shortcuts`].
 //! - Around them: [`layout`] (side panels, canvas, presentation card; [`side_panels`] is the
 //!   arithmetic), [`history`] (undo and redo), [`access`] (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
@@ -37,6 +37,7 @@ pub mod edit;
 pub mod export;
 pub mod file_menu;
 pub mod files;
+pub mod gpu_view;
 pub mod help;
 pub mod history;
 pub mod image_size;
@@ -60,6 +61,7 @@ pub mod state;
 pub mod status;
 pub mod style;
 pub mod textures;
+pub mod tie_rule;
 pub mod top_bar;
 mod window;
 
@@ -120,6 +122,8 @@ pub struct AppOptions {
     pub text_size: Option<f32>,
     /// Start in a lesson, at this step (0-based).
     pub lesson: Option<(crate::lesson::Lesson, usize)>,
+    /// Start in this comparison, with the GPU view on (`true`) or off (`--compare`).
+    pub compare: Option<(crate::figure::Compare, bool)>,
 }
 
 /// Errors that stop the app.
@@ -168,6 +172,8 @@ pub struct BaryApp {
     fonts: locale::Fonts,
     /// The open lesson (with the user's own state set aside) and the lesson file dialog.
     lessons: lessons::Lessons,
+    /// The GPU view's context, GL objects and last comparison.
+    gpu_view: gpu_view::GpuView,
 }
 
 impl BaryApp {
@@ -209,6 +215,9 @@ impl BaryApp {
         if let Some(size) = options.text_size {
             state.view.ui_scale = size;
         }
+        if let Some((compare, gpu)) = options.compare {
+            (state.view.compare, state.view.gpu) = (compare, gpu);
+        }
         if let Some((scene, dir)) = options.scene {
             state.scene = scene;
             state.scene_dir = Some(dir);
@@ -224,7 +233,7 @@ impl BaryApp {
             timing: FrameTiming::default(),
             persist: options.persist,
             state_file,
-            screenshot: options.screenshot.map(StartupShot::new),
+            screenshot: options.screenshot.clone().map(StartupShot::new),
             reports: PixelReports::default(),
             applied_zoom: None,
             styled: false,
@@ -241,6 +250,7 @@ impl BaryApp {
             lang,
             fonts: locale::Fonts::new(options.no_cjk_font),
             lessons: lessons::Lessons::default(),
+            gpu_view: gpu_view::GpuView::new(options.screenshot.is_some()),
         };
         if let Some(opened) = options.opened {
             app.opened(opened);
@@ -357,6 +367,13 @@ impl BaryApp {
         }
         let hover_before = self.canvas.hover;
         self.panels(ui, &texture);
+        let (gpu_on, mode) = (self.state.view.gpu, self.state.options().mode);
+        if self
+            .gpu_view
+            .update(gpu_on, self.canvas.output.as_ref(), mode, &texture)
+        {
+            ctx.request_repaint();
+        }
 
         let reports_before = self.reports.key();
         let error = self.reports.update(
@@ -386,7 +403,10 @@ impl BaryApp {
         self.history.track(before, &self.state, held);
         self.timing.ui_ms = start.elapsed().as_secs_f64() * 1e3;
         if let Some(shot) = &mut self.screenshot {
-            shot.step(&ctx, self.canvas.output.is_some());
+            let gpu = self
+                .gpu_view
+                .settled(gpu_on, self.canvas.output.as_ref(), mode);
+            shot.step(&ctx, self.canvas.output.is_some() && gpu);
         }
     }
 
@@ -571,7 +591,13 @@ impl BaryApp {
 impl eframe::App for BaryApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         self.timing.frame_ms = frame.info().cpu_usage.map(|s| s * 1e3);
+        self.gpu_view.set_context(frame.gl());
         self.show(ui);
+    }
+
+    fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
+        // The GL objects go while eframe's context is still current.
+        self.gpu_view.release();
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

@@ -25,6 +25,8 @@ struct RenderKey {
     modes: Vec<Interpolation>,
     rasterizer: Rasterizer,
     texture: TextureKey,
+    /// The difference heatmap is made (the difference comparison).
+    heat: bool,
 }
 
 /// The rendered frames of the current state.
@@ -82,11 +84,12 @@ pub struct Rendered {
 }
 
 impl RenderCache {
-    /// Renders `state` at `size` if anything the image depends on changed: `Ok(None)` when
-    /// nothing did. `generation` numbers the new output.
+    /// Renders `state` at `size` for the comparison `compare` if anything the image depends
+    /// on changed: `Ok(None)` when nothing did. `generation` numbers the new output.
     pub fn update(
         &mut self,
         state: &AppState,
+        compare: Compare,
         size: [u32; 2],
         texture: &Texture,
         texture_key: TextureKey,
@@ -94,7 +97,7 @@ impl RenderCache {
     ) -> Result<Option<Rendered>, String> {
         let mut scene = state.scene.clone();
         scene.set_size(size[0], size[1]);
-        let modes = modes_for(state.view.compare, state.options().mode);
+        let modes = modes_for(compare, state.options().mode);
         // The mode is in `modes`; the scene's own mode field must not make keys differ.
         let mut options = edit::options(&scene);
         options.mode = Interpolation::Perspective;
@@ -104,6 +107,7 @@ impl RenderCache {
             modes,
             rasterizer: state.view.rasterizer,
             texture: texture_key,
+            heat: compare == Compare::Difference,
         };
         if self.key.as_ref() == Some(&key) {
             return Ok(None);
@@ -114,7 +118,7 @@ impl RenderCache {
         // Only the difference heatmap reads the per-pixel uv buffers (which the edge-function
         // lanes also draw); everything else shows colour. Both are bit-identical to the full
         // render.
-        let buffers = if state.view.compare == Compare::Difference {
+        let buffers = if compare == Compare::Difference {
             Buffers::ColorDepthUv
         } else {
             Buffers::ColorDepth
@@ -158,7 +162,7 @@ impl RenderCache {
                 }
             }
         }
-        let heat = (state.view.compare == Compare::Difference)
+        let heat = (compare == Compare::Difference)
             .then(|| {
                 renders
                     .first()

@@ -46,6 +46,9 @@ pub struct ViewSettings {
     pub fit_window: bool,
     /// The plot of the pinned pixel's row shown (a lesson step's, or the user's choice).
     pub plot: Option<crate::lesson::LessonPlot>,
+    /// The GPU view: the comparison shows barylab beside this computer's OpenGL
+    /// ([`super::gpu_view`]) instead of affine beside perspective-correct.
+    pub gpu: bool,
 }
 
 impl Default for ViewSettings {
@@ -64,6 +67,7 @@ impl Default for ViewSettings {
             rasterizer: Default::default(),
             fit_window: false,
             plot: None,
+            gpu: false,
         }
     }
 }
@@ -132,6 +136,10 @@ pub enum Command {
     SetWireframe(bool),
     SetRasterizer(crate::raster::render::Rasterizer),
     SetCompare(Compare),
+    /// The GPU view on or off.
+    SetGpuView(bool),
+    /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
+    SetTieRule(crate::raster::setup::TieRule),
     SetWipe(f32),
     SetPixelSize(u32),
     /// Render at this fixed size (the scene's size, so exports carry it), or `None`: follow
@@ -268,6 +276,8 @@ impl AppState {
                 }
                 self.view.compare = c;
             }
+            Command::SetGpuView(on) => self.view.gpu = on,
+            Command::SetTieRule(rule) => self.scene.set_tie_rule(rule),
             Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),
             Command::SetPixelSize(p) => {
                 let p = p.clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);

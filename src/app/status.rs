@@ -93,6 +93,13 @@ pub fn status_ui(
             Compare::Wipe => (&lang.tr("app.status.wipe"), Color32::LIGHT_GRAY),
             Compare::Difference => (&lang.tr("app.status.difference"), Color32::LIGHT_GRAY),
         };
+        if state.view.gpu {
+            ui.label(
+                RichText::new(lang.tr("gpu_view.status"))
+                    .strong()
+                    .color(Color32::LIGHT_GREEN),
+            );
+        }
         ui.label(RichText::new(mode_text).strong().color(mode_color));
         ui.separator();
         if let Some(out) = &canvas.output {

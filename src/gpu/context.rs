@@ -117,6 +117,7 @@ impl Gpu {
             vendor,
             renderer,
             version,
+            programs: Vec::new(),
             objects: None,
         })
     }

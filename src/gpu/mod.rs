@@ -9,6 +9,7 @@ pub mod check;
 mod compare;
 mod context;
 mod scene;
+pub mod view;
 
 pub use compare::*;
 pub use context::force_llvmpipe_env;
@@ -45,6 +46,9 @@ pub struct Gpu {
     vendor: String,
     renderer: String,
     version: String,
+    /// Programs indexed by [`program_index`], compiled on the first load and kept until the
+    /// `Gpu` is dropped (a scene changing every frame, as in the app, does not recompile).
+    programs: Vec<glow::Program>,
     objects: Option<Objects>,
 }
 
@@ -60,8 +64,6 @@ struct Objects {
     height: u32,
     index_count: i32,
     background: [u8; 4],
-    /// Programs indexed by [`program_index`].
-    programs: Vec<glow::Program>,
     vao: glow::VertexArray,
     buffers: [glow::Buffer; 2],
     texture: glow::Texture,
@@ -185,11 +187,14 @@ impl Gpu {
     /// `width x height` RGBA8 framebuffer with a 32-bit float depth buffer.
     pub fn load(&mut self, scene: &GlScene) -> Result<(), String> {
         self.unload();
-        let mut programs = Vec::new();
-        for output in OUTPUTS {
-            for mode in MODES {
-                programs.push(self.compile(output, mode)?);
+        if self.programs.is_empty() {
+            let mut programs = Vec::new();
+            for output in OUTPUTS {
+                for mode in MODES {
+                    programs.push(self.compile(output, mode)?);
+                }
             }
+            self.programs = programs;
         }
         let gl = &self.gl;
         // SAFETY: plain GL calls on the current context; the slices outlive the calls.
@@ -250,7 +255,7 @@ impl Gpu {
             gl.disable(glow::CULL_FACE);
             gl.disable(glow::BLEND);
             gl.disable(glow::DITHER);
-            for &p in &programs {
+            for &p in &self.programs {
                 gl.use_program(Some(p));
                 if let Some(loc) = gl.get_uniform_location(p, "tex") {
                     gl.uniform_1_i32(Some(&loc), 0);
@@ -261,7 +266,6 @@ impl Gpu {
                 height: scene.height,
                 index_count: scene.indices.len() as i32,
                 background: scene.background,
-                programs,
                 vao,
                 buffers: [vbo, ibo],
                 texture,
@@ -322,9 +326,6 @@ impl Gpu {
         let gl = &self.gl;
         // SAFETY: deleting objects created on this context.
         unsafe {
-            for p in o.programs {
-                gl.delete_program(p);
-            }
             gl.delete_vertex_array(o.vao);
             for b in o.buffers {
                 gl.delete_buffer(b);
@@ -393,7 +394,7 @@ impl Gpu {
             gl.bind_texture(glow::TEXTURE_2D, Some(o.texture));
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, f);
             gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, f);
-            gl.use_program(Some(o.programs[program_index(output, mode)]));
+            gl.use_program(Some(self.programs[program_index(output, mode)]));
             gl.clear_color(bg[0], bg[1], bg[2], bg[3]);
             gl.clear_depth_f64(1.0);
             gl.clear(glow::COLOR_BUFFER_BIT | glow::DEPTH_BUFFER_BIT);
@@ -521,6 +522,12 @@ impl Gpu {
 impl Drop for Gpu {
     fn drop(&mut self) {
         self.unload();
+        // SAFETY: deleting programs created on this context, which is current.
+        unsafe {
+            for p in self.programs.drain(..) {
+                self.gl.delete_program(p);
+            }
+        }
         if let Some(e) = &self.egl {
             let _ = e.egl.make_current(e.display, None, None, None);
             let _ = e.egl.destroy_context(e.display, e.context);

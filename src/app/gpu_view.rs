@@ -1,0 +1,612 @@
+//! The GPU view: the canvas's scene drawn by OpenGL through the app's own glow context (the
+//! same clip-space vertices, texture bytes, filter, wrap, `smooth` or `noperspective` uv and
+//! depth test), read back and compared with barylab's render of the same settings: barylab
+//! beside the GPU, a wipe between them, or the difference image ([`crate::gpu::view`]).
+//!
+//! GL runs only on the UI thread, inside the frame (where eframe's context is current): the
+//! app hands the frame's context to [`GpuView::set_context`] and calls [`GpuView::update`]
+//! once per frame; a new draw happens only when the canvas rendered anew or the mode changed.
+//! The GL objects are dropped when the view is switched off, when the context changes, and
+//! on exit ([`GpuView::release`]). Without a glow context (egui_kittest, another renderer),
+//! with OpenGL older than 3.3, or without the `gpu` feature, the view says why in one line.
+
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Ui};
+
+use super::render::CanvasOutput;
+use super::state::Command;
+use crate::figure::Compare;
+use crate::figure::overlay::{Overlay, Shape, mode_label_in};
+use crate::i18n::Lang;
+use crate::raster::{Interpolation, Shading, Texture};
+
+/// Why the GPU view shows no GPU image.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Unavailable {
+    /// No glow context in this frame (egui_kittest, or another renderer).
+    NoContext,
+    /// barylab was built without the `gpu` feature.
+    NotBuilt,
+    /// The window's context is older than OpenGL 3.3, or OpenGL ES: its GL_VERSION.
+    TooOld(String),
+    /// The context cannot do it (too old, OpenGL ES), or a draw failed: the one-line reason.
+    Gl(String),
+}
+
+/// What the GPU drew differently from the scene's own settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Note {
+    /// A shading the GPU shader lacks, compared as vertex colours.
+    Shading(Shading),
+    /// Trilinear compared as bilinear (no mipmaps on the GPU side).
+    Trilinear,
+    /// The wireframe overlay left out.
+    Wireframe,
+}
+
+/// One comparison: both images at the canvas's size and how they differ.
+pub struct GpuResult {
+    /// barylab's image with the settings the GPU drew (see [`GpuResult::notes`]).
+    pub ours: Vec<[u8; 4]>,
+    /// The GPU's image, row 0 at the top.
+    pub gpu: Vec<[u8; 4]>,
+    /// The comparison and the difference image.
+    pub diff: crate::gpu::view::ImageDiff,
+    /// What was drawn differently from the scene's settings.
+    pub notes: Vec<Note>,
+}
+
+/// OpenGL's strings: GL_VENDOR, GL_RENDERER, GL_VERSION.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GlInfo {
+    pub vendor: String,
+    pub renderer: String,
+    pub version: String,
+}
+
+/// The GPU view's state between frames (not saved).
+#[derive(Default)]
+pub struct GpuView {
+    /// This frame's glow context (`None` under egui_kittest).
+    gl: Option<Arc<eframe::glow::Context>>,
+    #[cfg(feature = "gpu")]
+    gpu: Option<crate::gpu::Gpu>,
+    /// What the last draw was made of: the canvas's render generation and the mode.
+    key: Option<(u64, Interpolation)>,
+    pub info: Option<GlInfo>,
+    pub result: Option<GpuResult>,
+    pub unavailable: Option<Unavailable>,
+    /// Increments with every new result (the canvas uploads the images again).
+    pub generation: u64,
+    /// How long the last comparison took (both renders, read-back, comparison), ms.
+    pub draw_ms: f64,
+    /// The scene's mode: what the canvas shows where there is no GPU image.
+    pub fallback_mode: Interpolation,
+    /// Print each new result's summary on standard output (`--screenshot` runs, for tests).
+    pub print_summary: bool,
+}
+
+impl GpuView {
+    /// What the canvas shows where there is no GPU image: barylab's in the scene's mode.
+    pub fn fallback(&self) -> crate::figure::ViewContent {
+        crate::figure::ViewContent::Mode(self.fallback_mode)
+    }
+
+    /// A view with nothing drawn; `print_summary` prints each result on standard output.
+    pub fn new(print_summary: bool) -> Self {
+        Self {
+            print_summary,
+            ..Self::default()
+        }
+    }
+
+    /// The frame's glow context (eframe's `frame.gl()`); a different context than before
+    /// drops the GL objects made on the old one.
+    pub fn set_context(&mut self, gl: Option<&Arc<eframe::glow::Context>>) {
+        let same = match (&self.gl, gl) {
+            (Some(a), Some(b)) => Arc::ptr_eq(a, b),
+            (None, None) => true,
+            _ => false,
+        };
+        if !same {
+            self.release();
+            self.gl = gl.cloned();
+        }
+    }
+
+    /// Drops every GL object (the context must be current: call it inside a frame or in
+    /// `on_exit`) and forgets the last draw.
+    pub fn release(&mut self) {
+        #[cfg(feature = "gpu")]
+        {
+            self.gpu = None;
+        }
+        self.key = None;
+        self.result = None;
+        self.info = None;
+    }
+
+    /// Whether the view has what the canvas's render needs: a result or a reason for the
+    /// current render (always, when the view is off).
+    pub fn settled(&self, on: bool, output: Option<&CanvasOutput>, mode: Interpolation) -> bool {
+        !on || self.unavailable.is_some()
+            || output.is_some_and(|o| self.key == Some((o.generation, mode)))
+    }
+
+    /// Once per frame, on the UI thread: draws the canvas's scene with OpenGL when it changed.
+    /// Returns whether there is a new result (or a new reason).
+    pub fn update(
+        &mut self,
+        on: bool,
+        output: Option<&CanvasOutput>,
+        mode: Interpolation,
+        texture: &Texture,
+    ) -> bool {
+        self.fallback_mode = mode;
+        if !on {
+            let had = self.key.is_some() || self.unavailable.is_some();
+            self.release();
+            self.unavailable = None;
+            return had;
+        }
+        let Some(out) = output else {
+            return false;
+        };
+        let key = (out.generation, mode);
+        if self.key == Some(key) {
+            return false;
+        }
+        self.key = Some(key);
+        let before = self.unavailable.clone();
+        let start = std::time::Instant::now();
+        let drawn = self.draw(out, mode, texture);
+        self.draw_ms = start.elapsed().as_secs_f64() * 1e3;
+        match drawn {
+            Ok(result) => {
+                if self.print_summary {
+                    println!("gpu view: {}", result.diff.summary_en());
+                }
+                self.result = Some(result);
+                self.unavailable = None;
+                self.generation += 1;
+                true
+            }
+            Err(why) => {
+                self.result = None;
+                let changed = before.as_ref() != Some(&why);
+                if self.print_summary {
+                    println!("gpu view unavailable: {}", reason(&why, Lang::En));
+                }
+                self.unavailable = Some(why);
+                self.generation += 1;
+                changed
+            }
+        }
+    }
+
+    #[cfg(not(feature = "gpu"))]
+    fn draw(
+        &mut self,
+        _out: &CanvasOutput,
+        _mode: Interpolation,
+        _texture: &Texture,
+    ) -> Result<GpuResult, Unavailable> {
+        Err(Unavailable::NotBuilt)
+    }
+
+    #[cfg(feature = "gpu")]
+    fn draw(
+        &mut self,
+        out: &CanvasOutput,
+        mode: Interpolation,
+        texture: &Texture,
+    ) -> Result<GpuResult, Unavailable> {
+        use crate::gpu::{Gpu, Output, mesh_at_f32};
+        let gl = self.gl.clone().ok_or(Unavailable::NoContext)?;
+        if self.gpu.is_none() {
+            use eframe::glow::HasContext;
+            let v = gl.version();
+            if v.is_embedded || (v.major, v.minor) < (3, 3) {
+                // SAFETY: a plain query on the frame's context, which is current.
+                let version = unsafe { gl.get_parameter_string(eframe::glow::VERSION) };
+                return Err(Unavailable::TooOld(version));
+            }
+            let gpu = Gpu::on_context(gl).map_err(Unavailable::Gl)?;
+            self.info = Some(GlInfo {
+                vendor: gpu.vendor().to_string(),
+                renderer: gpu.renderer().to_string(),
+                version: gpu.version().to_string(),
+            });
+            self.gpu = Some(gpu);
+        }
+        let gpu = self.gpu.as_mut().ok_or(Unavailable::NoContext)?;
+        let (settings, output, notes) = gpu_settings(out.scene.settings(), mode);
+        let mesh = mesh_at_f32(&out.scene.to_mesh());
+        // Colour, depth and the owning triangle (the fast path draws them).
+        let mut f = crate::raster::Framebuffer::new(0, 0, settings.background);
+        let buffers = crate::raster::Buffers::ColorDepthUv;
+        crate::raster::render_into(&mut f, &mesh, texture, &settings, buffers)
+            .map_err(|e| Unavailable::Gl(e.to_string()))?;
+        let gl_err = Unavailable::Gl;
+        gpu.load_mesh(&mesh, texture, &settings).map_err(gl_err)?;
+        let ids = gpu
+            .render(Output::TriangleId, settings.filter, mode)
+            .map_err(gl_err)?;
+        let colors = gpu.render(output, settings.filter, mode).map_err(gl_err)?;
+        let diff =
+            crate::gpu::view::image_diff(settings.width, &f.triangle, &f.color, &ids, &colors);
+        Ok(GpuResult {
+            ours: f.color,
+            gpu: colors,
+            diff,
+            notes,
+        })
+    }
+}
+
+/// The settings the GPU draws with, its shader output, and what differs from the scene's
+/// own settings: shadings other than texture and vertex colour become vertex colour,
+/// trilinear becomes bilinear, no wireframe (as `gpu::check` does).
+#[cfg(feature = "gpu")]
+fn gpu_settings(
+    mut s: crate::raster::RenderSettings,
+    mode: Interpolation,
+) -> (crate::raster::RenderSettings, crate::gpu::Output, Vec<Note>) {
+    use crate::gpu::Output;
+    use crate::raster::Filter;
+    let mut notes = Vec::new();
+    s.mode = mode;
+    let output = match s.shading {
+        Shading::Texture => Output::Texture,
+        Shading::VertexColor => Output::VertexColor,
+        other => {
+            notes.push(Note::Shading(other));
+            s.shading = Shading::VertexColor;
+            Output::VertexColor
+        }
+    };
+    if output == Output::Texture && s.filter == Filter::Trilinear {
+        notes.push(Note::Trilinear);
+        s.filter = Filter::Bilinear;
+    }
+    if output == Output::VertexColor {
+        s.filter = Filter::Nearest;
+    }
+    if s.wireframe {
+        notes.push(Note::Wireframe);
+        s.wireframe = false;
+    }
+    (s, output, notes)
+}
+
+/// What one view of the canvas shows in the GPU view.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GpuContent {
+    Ours,
+    Gpu,
+    Wipe,
+    Difference,
+}
+
+/// The canvas's views in the GPU view, by the comparison chosen: Single shows the GPU's
+/// image, side by side barylab | GPU, the wipe barylab | GPU, the difference image.
+pub fn content(compare: Compare, index: usize) -> GpuContent {
+    match (compare, index) {
+        (Compare::Single, _) => GpuContent::Gpu,
+        (Compare::SideBySide, 0) => GpuContent::Ours,
+        (Compare::SideBySide, _) => GpuContent::Gpu,
+        (Compare::Wipe, _) => GpuContent::Wipe,
+        (Compare::Difference, _) => GpuContent::Difference,
+    }
+}
+
+/// The image of view `index`, or `None` when there is no GPU image (the canvas then shows
+/// barylab's).
+pub fn view_image(
+    view: &GpuView,
+    compare: Compare,
+    index: usize,
+    wipe_col: u32,
+) -> Option<egui::ColorImage> {
+    let r = view.result.as_ref()?;
+    let d = &r.diff;
+    let pixels = match content(compare, index) {
+        GpuContent::Ours => r.ours.clone(),
+        GpuContent::Gpu => r.gpu.clone(),
+        GpuContent::Wipe => crate::gpu::view::wipe(&r.ours, &r.gpu, d.width, wipe_col),
+        GpuContent::Difference => d.image.clone(),
+    };
+    let size = [d.width as usize, d.height as usize];
+    (pixels.len() == size[0] * size[1] && !pixels.is_empty()).then(|| {
+        egui::ColorImage::new(
+            size,
+            pixels
+                .iter()
+                .map(|c| Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
+                .collect(),
+        )
+    })
+}
+
+/// The overlay's title badges for the GPU view: the canvas builds the overlay as for the
+/// mode comparison (affine badge on the left view or wipe side, perspective on the right)
+/// and this names them barylab and the GPU instead.
+pub fn relabel(overlay: &mut Overlay, lang: Lang, compare: Compare, renderer: Option<&str>) {
+    let gpu = match renderer {
+        Some(r) => lang.tr_with("gpu_view.gpu_named", &[("renderer", &short(r))]),
+        None => lang.tr("gpu_view.gpu"),
+    };
+    let right = match compare {
+        Compare::Difference => lang.tr("gpu_view.difference_title"),
+        _ => gpu,
+    };
+    let (affine, perspective) = (
+        mode_label_in(Interpolation::Affine, lang),
+        mode_label_in(Interpolation::Perspective, lang),
+    );
+    for shape in &mut overlay.shapes {
+        if let Shape::Text { text, .. } = shape {
+            if *text == affine {
+                *text = lang.tr("gpu_view.barylab");
+            } else if *text == perspective {
+                *text = right.clone();
+            }
+        }
+    }
+}
+
+/// The mode badge of view `index` in the GPU view (`gpu`: whether there is a GPU image):
+/// the one [`relabel`] turns into the view's title, or the scene's mode when the views show
+/// barylab's image alone.
+pub fn badge_mode(
+    gpu: Option<bool>,
+    compare: Compare,
+    index: usize,
+    state: &super::state::AppState,
+) -> Interpolation {
+    match (gpu, content(compare, index)) {
+        (Some(true), GpuContent::Ours) => Interpolation::Affine,
+        (Some(true), _) => Interpolation::Perspective,
+        _ => state.options().mode,
+    }
+}
+
+/// The comparison the canvas renders for: the GPU view needs barylab in the scene's mode
+/// only.
+pub fn render_compare(gpu: Option<&GpuView>, compare: Compare) -> Compare {
+    match gpu {
+        Some(_) => Compare::Single,
+        None => compare,
+    }
+}
+
+/// A renderer string up to its first parenthesis ("llvmpipe (LLVM 15, 256 bits)" ->
+/// "llvmpipe"), at most 32 characters.
+fn short(renderer: &str) -> String {
+    let s = renderer.split(" (").next().unwrap_or(renderer).trim();
+    if s.chars().count() > 32 {
+        let cut: String = s.chars().take(31).collect();
+        format!("{cut}…")
+    } else {
+        s.to_string()
+    }
+}
+
+/// The one-line reason, in `lang`.
+pub fn reason(why: &Unavailable, lang: Lang) -> String {
+    let r = match why {
+        Unavailable::NoContext => lang.tr("gpu_view.no_context"),
+        Unavailable::NotBuilt => lang.tr("gpu_view.not_built"),
+        Unavailable::TooOld(v) => lang.tr_with("gpu_view.too_old", &[("version", v)]),
+        Unavailable::Gl(e) => e.clone(),
+    };
+    lang.tr_with("gpu_view.unavailable", &[("reason", &r)])
+}
+
+/// The summary line: "coverage identical on N of M pixels; largest colour difference K
+/// levels".
+pub fn summary(d: &crate::gpu::view::ImageDiff, lang: Lang) -> String {
+    lang.tr_with(
+        "gpu_view.summary",
+        &[
+            ("same", &d.coverage_same()),
+            ("total", &d.pixels),
+            ("max", &d.max_color_difference),
+        ],
+    )
+}
+
+fn note_text(note: Note, lang: Lang) -> String {
+    match note {
+        Note::Shading(s) => {
+            let key = match s {
+                Shading::Barycentric => "app.controls.barycentric",
+                Shading::Depth => "app.controls.depth",
+                Shading::Normal => "app.controls.normal",
+                Shading::Lambert => "app.controls.lambert",
+                Shading::Texture => "app.controls.texture",
+                Shading::VertexColor => "app.controls.vertex_color",
+            };
+            lang.tr_with("gpu_view.note_shading", &[("shading", &lang.tr(key))])
+        }
+        Note::Trilinear => lang.tr("gpu_view.note_trilinear"),
+        Note::Wireframe => lang.tr("gpu_view.note_wireframe"),
+    }
+}
+
+fn hex(c: [u8; 4]) -> String {
+    format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2])
+}
+
+fn swatch(ui: &mut Ui, c: [u8; 4]) {
+    let h = ui.text_style_height(&egui::TextStyle::Body) * 0.8;
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(h, h), egui::Sense::hover());
+    ui.painter()
+        .rect_filled(rect, 2.0, Color32::from_rgb(c[0], c[1], c[2]));
+    ui.painter().rect_stroke(
+        rect,
+        2.0,
+        egui::Stroke::new(1.0, Color32::GRAY),
+        egui::StrokeKind::Inside,
+    );
+}
+
+/// barylab's colour and the GPU's at `pixel`, for the inspector (nothing without a GPU
+/// image).
+pub fn pixel_colours_ui(ui: &mut Ui, view: &GpuView, [x, y]: [u32; 2]) {
+    let Some(r) = &view.result else {
+        return;
+    };
+    let k = (y as usize) * (r.diff.width as usize) + x as usize;
+    if let (Some(&ours), Some(&gpu)) = (r.ours.get(k), r.gpu.get(k)) {
+        let lang = super::locale::lang(ui.ctx());
+        ui.horizontal(|ui| {
+            swatch(ui, ours);
+            ui.monospace(format!("{} barylab", hex(ours)));
+        });
+        ui.horizontal_wrapped(|ui| {
+            swatch(ui, gpu);
+            ui.monospace(format!("{} GPU", hex(gpu)));
+            let d = (0..4).map(|i| ours[i].abs_diff(gpu[i])).max().unwrap_or(0);
+            if d > 0 {
+                ui.label(lang.tr_with("gpu_view.pixel_difference", &[("levels", &d)]));
+            }
+        });
+    }
+}
+
+/// The strip above the canvas in the GPU view: the OpenGL strings, the summary, the worst
+/// pixel button, the difference image's legend, or the reason there is no GPU image.
+pub fn strip_ui(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<Command> {
+    // At most this share of the canvas panel (large text on a projector): the rest scrolls.
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let max = (ui.available_height() * STRIP_SHARE).max(body * 2.5);
+    ui.scope(|ui| {
+        // A solid scroll bar, so that a strip that scrolls shows it does.
+        ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
+        egui::ScrollArea::vertical()
+            .id_salt("gpu-strip")
+            .max_height(max)
+            .auto_shrink([false, true])
+            .show(ui, |ui| strip_contents(ui, view, compare))
+            .inner
+    })
+    .inner
+}
+
+/// The largest share of the canvas panel's height the strip takes.
+const STRIP_SHARE: f32 = 0.22;
+
+fn strip_contents(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<Command> {
+    let lang = super::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    if let Some(why) = &view.unavailable {
+        ui.add(egui::Label::new(RichText::new(reason(why, lang)).color(Color32::LIGHT_RED)).wrap());
+        return out;
+    }
+    let Some(r) = &view.result else {
+        ui.label(lang.tr("gpu_view.drawing"));
+        return out;
+    };
+    let d = &r.diff;
+    ui.horizontal_wrapped(|ui| {
+        let color = if d.coverage_identical() {
+            Color32::LIGHT_GREEN
+        } else {
+            Color32::from_rgb(255, 120, 255)
+        };
+        out.extend(worst_button(ui, d, lang));
+        ui.label(RichText::new(summary(d, lang)).strong().color(color));
+        if !d.coverage_identical() {
+            ui.label(lang.tr_with(
+                "gpu_view.mismatches",
+                &[("only_gpu", &d.only_gpu), ("only_barylab", &d.only_barylab)],
+            ));
+        }
+        if d.triangle_mismatches > 0 {
+            ui.label(lang.tr_with("gpu_view.triangles", &[("count", &d.triangle_mismatches)]));
+        }
+    });
+    if let Some(info) = &view.info {
+        ui.add(
+            egui::Label::new(
+                RichText::new(lang.tr_with(
+                    "gpu_view.renderer",
+                    &[
+                        ("renderer", &info.renderer),
+                        ("vendor", &info.vendor),
+                        ("version", &info.version),
+                        ("ms", &format!("{:.1}", view.draw_ms)),
+                    ],
+                ))
+                .small(),
+            )
+            .wrap(),
+        );
+    }
+    if compare == Compare::Difference {
+        ui.horizontal_wrapped(|ui| {
+            for (c, key) in [
+                (crate::gpu::view::ONLY_GPU, "gpu_view.legend_only_gpu"),
+                (
+                    crate::gpu::view::ONLY_BARYLAB,
+                    "gpu_view.legend_only_barylab",
+                ),
+            ] {
+                swatch(ui, c);
+                ui.label(RichText::new(lang.tr(key)).small());
+            }
+            let top = crate::gpu::view::heat_top(d.max_color_difference);
+            swatch(
+                ui,
+                crate::figure::heatmap::heat_color(f32::from(top), f32::from(top)),
+            );
+            ui.label(RichText::new(lang.tr_with("gpu_view.legend_heat", &[("top", &top)])).small());
+        });
+    }
+    for n in &r.notes {
+        ui.add(egui::Label::new(RichText::new(note_text(*n, lang)).small().italics()).wrap());
+    }
+    out
+}
+
+/// "Jump to worst pixel": pins the pixel that differs most.
+fn worst_button(ui: &mut Ui, d: &crate::gpu::view::ImageDiff, lang: Lang) -> Option<Command> {
+    let button = ui
+        .add_enabled(
+            d.worst.is_some(),
+            egui::Button::new(lang.tr("gpu_view.worst")),
+        )
+        .on_hover_text(lang.tr("gpu_view.worst_tip"))
+        .on_disabled_hover_text(lang.tr("gpu_view.identical"));
+    button
+        .clicked()
+        .then_some(d.worst)
+        .flatten()
+        .map(|p| Command::Pin(Some(p)))
+}
+
+/// The GPU toggle beside the comparison buttons.
+pub fn toggle_ui(ui: &mut Ui, on: bool) -> Vec<Command> {
+    let lang = super::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    let rich = RichText::new(lang.tr("gpu_view.toggle"));
+    let rich = if on {
+        rich.strong().color(Color32::BLACK)
+    } else {
+        rich
+    };
+    let mut button = egui::Button::new(rich).selected(on);
+    if on {
+        button = button.fill(Color32::from_rgb(120, 200, 120));
+    }
+    if ui
+        .add(button)
+        .on_hover_text(lang.tr("gpu_view.toggle_tip"))
+        .clicked()
+    {
+        out.push(Command::SetGpuView(!on));
+    }
+    out
+}
