@@ -3,8 +3,9 @@
 
 use std::sync::{Arc, Mutex};
 
+use super::persist::{self, STORAGE_KEY, SavedState};
 use super::screenshot::{self, ShotSlot};
-use super::{AppError, AppOptions, BaryApp, persist};
+use super::{AppError, AppOptions, BaryApp, SAVE_STATE_FAILED};
 
 /// Default window size in points.
 const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];
@@ -49,4 +50,35 @@ pub fn run(options: AppOptions) -> Result<(), AppError> {
         })?;
     }
     Ok(())
+}
+
+impl eframe::App for BaryApp {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        self.timing.frame_ms = frame.info().cpu_usage.map(|s| s * 1e3);
+        self.gpu_view.set_context(frame.gl());
+        self.show(ui);
+    }
+
+    fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
+        // The GL objects go while eframe's context is still current.
+        self.gpu_view.release();
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        if self.persist {
+            // In a lesson, the user's own state is what is kept.
+            let state = self.lessons.user_state().unwrap_or(&self.state);
+            let saved = SavedState::capture(state, &self.recent, &self.export.settings, self.lang);
+            if let Some(path) = &self.state_file
+                && let Err(e) = persist::write_state_file(path, &saved)
+            {
+                eprintln!("barylab: {SAVE_STATE_FAILED}: {e}");
+            }
+            eframe::set_value(storage, STORAGE_KEY, &saved);
+        }
+    }
+
+    fn persist_egui_memory(&self) -> bool {
+        self.persist
+    }
 }
