@@ -1,5 +1,5 @@
 //! The canvas panel: the CPU-rendered image (one or two views), the overlays, the vertex
-//! handles, hovering and pinning pixels. The renders themselves: [`super::render`].
+//! handles, hovering and pinning pixels. The renders themselves: `super::render`.
 
 use std::time::Instant;
 

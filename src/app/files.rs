@@ -1,6 +1,6 @@
 //! Opening files in the app: a scene (.json), a model (.obj) or an image (it becomes the
-//! texture), from the File menu ([`super::file_menu`]), drag-and-drop, the recent list or the
-//! command line; the banner ([`super::banner`]) reports what happened.
+//! texture), from the File menu (`super::file_menu`), drag-and-drop, the recent list or the
+//! command line; the banner (`super::banner`) reports what happened.
 //!
 //! Every way of opening goes through [`open`], which loads and checks everything (scene, model,
 //! texture) before anything changes; the app then applies the result with one command. So a bad

@@ -8,61 +8,61 @@
 //!   saved between runs), [`edit`] and [`presets`] (scene edits, no egui).
 //! - Commands: [`command::AppCommand`], one enum for every panel's requests.
 //! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
-//!   commands: [`top_bar`], [`file_menu`], [`path_window`], [`banner`], [`controls`],
-//!   [`image_size`], [`canvas`], [`inspector`], [`present`], [`status`], [`help`], [`export`],
-//!   [`bench_panel`] (with [`bench_chart`]), [`lessons`] (the Lessons panel, its
-//!   presentation strip and menu), [`plots`] (the pinned row's plot), [`gpu_view`] (barylab
-//!   beside this computer's OpenGL), [`tie_rule`], and the keyboard [`shortcuts`].
-//! - Around them: [`layout`] (side panels, canvas, presentation card; [`side_panels`] is the
-//!   arithmetic), [`history`] (undo and redo), [`access`] (what tests read).
-//! - Behind the panels: [`files`] (opening a file, all checked first), [`render`] (the
-//!   canvas's renders and their cache), [`textures`] (the scene's texture), [`pixel`] and
-//!   [`reports`] (the inspector's probe of a pixel, one prober per render), [`paint`] (overlays
-//!   with egui), [`dialog`] (native file dialogs), [`screenshot`] (window screenshots),
-//!   [`style`] (text sizes, zoom), [`locale`] (the language the panels show, from the
+//!   commands: `top_bar`, `file_menu`, `path_window`, `banner`, `controls`,
+//!   `image_size`, [`canvas`], `inspector`, `present`, `status`, `help`, [`export`],
+//!   [`bench_panel`] (with `bench_chart`), [`lessons`] (the Lessons panel, its
+//!   presentation strip and menu), `plots` (the pinned row's plot), [`gpu_view`] (barylab
+//!   beside this computer's OpenGL), `tie_rule`, and the keyboard `shortcuts`.
+//! - Around them: `layout` (side panels, canvas, presentation card; `side_panels` is the
+//!   arithmetic), `history` (undo and redo), `access` (what tests read).
+//! - Behind the panels: [`files`] (opening a file, all checked first), `render` (the
+//!   canvas's renders and their cache), `textures` (the scene's texture), `pixel` and
+//!   `reports` (the inspector's probe of a pixel, one prober per render), `paint` (overlays
+//!   with egui), `dialog` (native file dialogs), `screenshot` (window screenshots),
+//!   `style` (text sizes, zoom), `locale` (the language the panels show, from the
 //!   catalogues' `app:` section, and the Chinese font).
 //!
 //! The overlays and the difference heatmap are described in [`crate::figure`], which the
 //! exported figures share.
 
-pub mod access;
-pub mod banner;
-pub mod bench_chart;
+pub(crate) mod access;
+pub(crate) mod banner;
+pub(crate) mod bench_chart;
 pub mod bench_panel;
 pub mod canvas;
 pub mod command;
-pub mod controls;
-pub mod dialog;
+pub(crate) mod controls;
+pub(crate) mod dialog;
 pub mod edit;
 pub mod export;
-pub mod file_menu;
+pub(crate) mod file_menu;
 pub mod files;
 pub mod gpu_view;
-pub mod help;
-pub mod history;
-pub mod image_size;
-pub mod inspector;
-pub mod layout;
+pub(crate) mod help;
+pub(crate) mod history;
+pub(crate) mod image_size;
+pub(crate) mod inspector;
+pub(crate) mod layout;
 pub mod lessons;
-pub mod locale;
-pub mod paint;
-pub mod path_window;
+pub(crate) mod locale;
+pub(crate) mod paint;
+pub(crate) mod path_window;
 pub mod persist;
-pub mod pixel;
-pub mod plots;
-pub mod present;
+pub(crate) mod pixel;
+pub(crate) mod plots;
+pub(crate) mod present;
 pub mod presets;
-pub mod render;
-pub mod reports;
-pub mod screenshot;
-pub mod shortcuts;
-pub mod side_panels;
+pub(crate) mod render;
+pub(crate) mod reports;
+pub(crate) mod screenshot;
+pub(crate) mod shortcuts;
+pub(crate) mod side_panels;
 pub mod state;
-pub mod status;
-pub mod style;
-pub mod textures;
-pub mod tie_rule;
-pub mod top_bar;
+pub(crate) mod status;
+pub(crate) mod style;
+pub(crate) mod textures;
+pub(crate) mod tie_rule;
+pub(crate) mod top_bar;
 mod window;
 
 pub use window::run;

@@ -16,14 +16,14 @@ pub struct CanvasTransform {
 }
 
 impl CanvasTransform {
-    pub fn to_screen(&self, p: DVec2) -> Pos2 {
+    pub fn to_screen(self, p: DVec2) -> Pos2 {
         Pos2::new(
             self.origin.x + p.x as f32 * self.scale,
             self.origin.y + p.y as f32 * self.scale,
         )
     }
 
-    pub fn to_canvas(&self, p: Pos2) -> DVec2 {
+    pub fn to_canvas(self, p: Pos2) -> DVec2 {
         DVec2::new(
             f64::from((p.x - self.origin.x) / self.scale),
             f64::from((p.y - self.origin.y) / self.scale),
