@@ -7,6 +7,7 @@
 //! cargo bench --bench llvmpipe -- --markdown                    # + barylab bench, one table
 //! cargo bench --bench llvmpipe -- --conformance                 # image comparison table
 //! cargo bench --bench llvmpipe -- SCENE --size 960x540 --frames 30
+//! cargo bench --bench llvmpipe -- assets/bench/bench-mesh-75k.json --depth-test --markdown
 //! ```
 //!
 //! llvmpipe reads `LP_NUM_THREADS` when it starts, so each thread count runs in a child
@@ -47,6 +48,11 @@ struct Args {
     /// Also run `barylab bench --json` and print one Markdown table side by side.
     #[arg(long)]
     markdown: bool,
+    /// Time llvmpipe with the depth test on (less-than, cleared to 1), as barylab always
+    /// draws: for meshes whose triangles may overlap. Off by default, as the reference
+    /// figures for the quad were measured.
+    #[arg(long)]
+    depth_test: bool,
     /// Compare llvmpipe's images with barylab's on several scenes; print a Markdown table.
     #[arg(long)]
     conformance: bool,
@@ -104,7 +110,7 @@ fn child(args: &Args, threads: usize) -> Result<(), String> {
     let mut records = Vec::new();
     for filter in [Filter::Nearest, Filter::Bilinear] {
         for mode in [Interpolation::Affine, Interpolation::Perspective] {
-            let ms = lp.time(filter, mode, args.frames.max(1))?;
+            let ms = lp.time_with(filter, mode, args.frames.max(1), args.depth_test)?;
             records.push(BenchRecord {
                 rasterizer: "llvmpipe".into(),
                 filter: filter_name(filter).into(),

@@ -413,20 +413,50 @@ impl Gpu {
     /// overlap): per frame, clear + glFinish untimed, then draw + glFinish timed. One untimed
     /// frame first (llvmpipe compiles the shader variant on first use).
     pub fn time(&self, filter: Filter, mode: Interpolation, frames: u32) -> Result<f64, String> {
-        // SAFETY: a current context.
-        unsafe { self.gl.disable(glow::DEPTH_TEST) };
-        let result = self.time_frames(filter, mode, frames);
+        self.time_with(filter, mode, frames, false)
+    }
+
+    /// [`Gpu::time`], with the depth test on or off (`depth_test`): on, as barylab always
+    /// draws, for meshes whose triangles may overlap.
+    pub fn time_with(
+        &self,
+        filter: Filter,
+        mode: Interpolation,
+        frames: u32,
+        depth_test: bool,
+    ) -> Result<f64, String> {
+        let result = self.time_frames(filter, mode, frames, depth_test);
         // SAFETY: a current context.
         unsafe { self.gl.enable(glow::DEPTH_TEST) };
         result
     }
 
-    fn time_frames(&self, filter: Filter, mode: Interpolation, frames: u32) -> Result<f64, String> {
-        self.draw(Output::Texture, filter, mode)?;
+    fn time_frames(
+        &self,
+        filter: Filter,
+        mode: Interpolation,
+        frames: u32,
+        depth_test: bool,
+    ) -> Result<f64, String> {
+        // `clear` turns the depth test on; switched off after it when not wanted.
+        let depth = |on: bool| {
+            // SAFETY: a current context.
+            unsafe {
+                if on {
+                    self.gl.enable(glow::DEPTH_TEST)
+                } else {
+                    self.gl.disable(glow::DEPTH_TEST)
+                }
+            }
+        };
+        self.clear(Output::Texture, filter, mode)?;
+        depth(depth_test);
+        self.draw_elements()?;
         self.finish();
         let mut times = Vec::with_capacity(frames as usize);
         for _ in 0..frames {
             self.clear(Output::Texture, filter, mode)?;
+            depth(depth_test);
             self.finish();
             let start = Instant::now();
             self.draw_elements()?;
