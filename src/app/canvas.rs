@@ -48,16 +48,22 @@ const VIEW_TEXTURE: TextureOptions = TextureOptions {
 pub struct View {
     /// Screen rectangle of the image, in points.
     pub rect: Rect,
+    /// Maps rendered-image pixels to screen points for this view.
     pub transform: CanvasTransform,
+    /// What the view shows (a mode, the wipe, the difference heatmap).
     pub content: ViewContent,
 }
 
 /// Timings of the last render, for the status line.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct CanvasTiming {
+    /// Time the last render took, in milliseconds.
     pub render_ms: f64,
+    /// Time the last texture upload to egui took, in milliseconds.
     pub upload_ms: f64,
+    /// Renders made since start.
     pub renders: u64,
+    /// Texture uploads made since start.
     pub uploads: u64,
 }
 
@@ -71,14 +77,18 @@ enum DragKind {
 #[derive(Default)]
 pub struct CanvasState {
     renders: RenderCache,
+    /// The last successful render (`None` until the first; kept when a later one fails).
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
     uploaded: Option<(u64, Compare, u32, Option<u64>)>,
     drag: Option<DragKind>,
+    /// The views drawn last frame, left to right.
     pub views: Vec<View>,
     /// The pixel under the pointer, if it is over a view.
     pub hover: Option<[u32; 2]>,
+    /// Timings of the last render and upload.
     pub timing: CanvasTiming,
+    /// Why the last render failed, for the canvas to show.
     pub error: Option<String>,
     /// Screen pixels per rendered pixel as drawn (whole, 1 to 32): the overlay's grid and
     /// the exported figure's pixel size.
@@ -96,13 +106,20 @@ pub enum Sizing {
     Fixed([u32; 2]),
     /// Follow the window: `pixel_size` screen pixels per rendered pixel, the aspect ratio
     /// (width / height) of the scene.
-    Fit { aspect: f32, pixel_size: u32 },
+    Fit {
+        /// The scene's width / height.
+        aspect: f32,
+        /// Screen pixels per rendered pixel.
+        pixel_size: u32,
+    },
 }
 
 /// The canvas's views, the render size and the points per rendered pixel.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Layout {
+    /// Each view's screen rectangle (points) and what it shows.
     pub views: Vec<(Rect, ViewContent)>,
+    /// The render size: width and height in rendered pixels.
     pub size: [u32; 2],
     /// Points per rendered pixel.
     pub scale: f32,
@@ -278,11 +295,15 @@ impl CanvasState {
 
 /// Inputs the canvas needs besides its own state.
 pub struct CanvasInput<'a> {
+    /// The document the canvas renders and edits.
     pub state: &'a AppState,
+    /// The scene's texture, loaded.
     pub texture: &'a Texture,
+    /// Identifies the texture, so a new one triggers a new render.
     pub texture_key: TextureKey,
     /// Derivations of the hovered and pinned pixels from the last frame (for the overlay).
     pub hover_report: Option<&'a PixelReport>,
+    /// The pinned pixel's derivation from the last frame (for the overlay).
     pub pin_report: Option<&'a PixelReport>,
     /// The GPU view, when it is on.
     pub gpu: Option<&'a GpuView>,

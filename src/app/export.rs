@@ -26,7 +26,9 @@ pub struct ExportSettings {
     pub folder: Option<PathBuf>,
     /// 1, 2 or 4.
     pub scale: u32,
+    /// The figure's background.
     pub background: Background,
+    /// Which files an export writes.
     pub selection: ExportSelection,
     /// A caption with the marked pixel's key numbers below the figure.
     pub caption: bool,
@@ -47,13 +49,19 @@ impl Default for ExportSettings {
 /// A change or an action of the Export panel, applied once per frame.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ExportCommand {
+    /// Show the Export panel.
     Open,
+    /// Hide the Export panel.
     Close,
     /// Show the native folder dialog.
     BrowseFolder,
+    /// Export into this folder.
     SetFolder(PathBuf),
+    /// Export at this scale: PNG pixels per figure point (1, 2 or 4).
     SetScale(u32),
+    /// Use this background in the figures.
     SetBackground(Background),
+    /// Write these files.
     SetSelection(ExportSelection),
     /// Add (or leave out) the figure's caption.
     SetCaption(bool),
@@ -68,7 +76,9 @@ pub enum ExportCommand {
 /// What the last action did, shown in the panel (and on the status line).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Outcome {
+    /// Whether the action failed.
     pub error: bool,
+    /// The lines the panel shows (written files, or the error).
     pub lines: Vec<String>,
     /// One line for the status line.
     pub summary: String,
@@ -101,10 +111,13 @@ const SCREENSHOT_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(1
 /// The Export panel's state.
 #[derive(Default)]
 pub struct ExportPanel {
+    /// The settings, saved between runs.
     pub settings: ExportSettings,
+    /// Whether the panel is shown.
     pub open: bool,
     /// The text of the folder field.
     pub folder_text: String,
+    /// What the last action did (`None` before the first).
     pub outcome: Option<Outcome>,
     dialog: NativeDialog,
     screenshot: Option<(PathBuf, ShotSlot, std::time::Instant)>,
@@ -117,7 +130,9 @@ pub struct ExportPanel {
 
 /// Everything an export needs from the app.
 pub struct ExportContext<'a> {
+    /// The document the figure shows.
     pub state: &'a AppState,
+    /// The scene's texture, loaded.
     pub texture: &'a Texture,
     /// The canvas's rendered size.
     pub size: Option<[u32; 2]>,
@@ -130,6 +145,7 @@ pub struct ExportContext<'a> {
 }
 
 impl ExportPanel {
+    /// A closed panel with these settings; the folder field shows their folder.
     pub fn new(settings: ExportSettings) -> Self {
         let folder_text = settings
             .folder
@@ -409,7 +425,9 @@ fn write_color_image(image: &egui::ColorImage, path: &Path) -> Result<(), String
 
 /// What the Export window shows ([`ExportPanel::view`]).
 pub struct ExportView<'a> {
+    /// The settings the panel shows.
     pub settings: &'a ExportSettings,
+    /// What the last action did, if anything.
     pub outcome: Option<&'a Outcome>,
 }
 
