@@ -89,7 +89,7 @@ impl Drop for BenchPanel {
 }
 
 /// What one run draws.
-pub struct BenchJob {
+pub(crate) struct BenchJob {
     /// The scene's triangles in clip space, as the renderer takes them.
     pub mesh: ClipMesh,
     /// The texture the scene samples.
@@ -147,7 +147,7 @@ impl BenchPanel {
 
     /// Starts measuring `job` in a background thread (stopping any run going on); `ctx` is
     /// asked to repaint after each configuration.
-    pub fn start(&mut self, ctx: &egui::Context, job: BenchJob) {
+    pub(crate) fn start(&mut self, ctx: &egui::Context, job: BenchJob) {
         self.stop();
         let configs = bench::matrix(bench::available_cores());
         self.total = configs.len();

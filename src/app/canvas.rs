@@ -100,7 +100,7 @@ pub struct CanvasState {
 
 /// How the rendered image's size is chosen.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Sizing {
+pub(crate) enum Sizing {
     /// A fixed size (the scene's), drawn as large as the view allows: whole screen pixels per
     /// rendered pixel when magnified, so every pixel is the same square.
     Fixed([u32; 2]),
@@ -116,7 +116,7 @@ pub enum Sizing {
 
 /// The canvas's views, the render size and the points per rendered pixel.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Layout {
+pub(crate) struct Layout {
     /// Each view's screen rectangle (points) and what it shows.
     pub views: Vec<(Rect, ViewContent)>,
     /// The render size: width and height in rendered pixels.
@@ -128,7 +128,7 @@ pub struct Layout {
 impl Layout {
     /// Screen pixels per rendered pixel, as a whole number for the overlay's grid and the
     /// figure's pixel size (at least 1, at most the largest pixel size).
-    pub fn pixel_size(&self, pixels_per_point: f32) -> u32 {
+    pub(crate) fn pixel_size(&self, pixels_per_point: f32) -> u32 {
         let px = (self.scale * pixels_per_point).round();
         (px as u32).clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1)
     }
@@ -136,7 +136,12 @@ impl Layout {
 
 /// Splits the available rectangle into the views of a comparison, each the largest rectangle
 /// of the image's aspect ratio that fits, and fixes the render size and the scale.
-pub fn layout(available: Rect, compare: Compare, sizing: Sizing, pixels_per_point: f32) -> Layout {
+pub(crate) fn layout(
+    available: Rect,
+    compare: Compare,
+    sizing: Sizing,
+    pixels_per_point: f32,
+) -> Layout {
     let aspect = match sizing {
         Sizing::Fixed([w, h]) => w.max(1) as f32 / h.max(1) as f32,
         Sizing::Fit { aspect, .. } => aspect,
@@ -294,7 +299,7 @@ impl CanvasState {
 }
 
 /// Inputs the canvas needs besides its own state.
-pub struct CanvasInput<'a> {
+pub(crate) struct CanvasInput<'a> {
     /// The document the canvas renders and edits.
     pub state: &'a AppState,
     /// The scene's texture, loaded.
@@ -311,7 +316,11 @@ pub struct CanvasInput<'a> {
 
 /// The canvas panel. It renders and uploads what changed, and keeps its own widget state
 /// (views, hovered pixel, drag) in `canvas`; every change to the app is a returned command.
-pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) -> Vec<Command> {
+pub(crate) fn canvas_ui(
+    ui: &mut Ui,
+    canvas: &mut CanvasState,
+    input: CanvasInput<'_>,
+) -> Vec<Command> {
     let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     let state = input.state;

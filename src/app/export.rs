@@ -129,7 +129,7 @@ pub struct ExportPanel {
 }
 
 /// Everything an export needs from the app.
-pub struct ExportContext<'a> {
+pub(crate) struct ExportContext<'a> {
     /// The document the figure shows.
     pub state: &'a AppState,
     /// The scene's texture, loaded.
@@ -170,7 +170,12 @@ impl ExportPanel {
     }
 
     /// Applies a command; runs the actions.
-    pub fn apply(&mut self, ctx: &egui::Context, command: ExportCommand, app: &ExportContext<'_>) {
+    pub(crate) fn apply(
+        &mut self,
+        ctx: &egui::Context,
+        command: ExportCommand,
+        app: &ExportContext<'_>,
+    ) {
         self.lang = super::locale::lang(ctx);
         let lang = self.lang;
         match command {
@@ -248,7 +253,7 @@ impl ExportPanel {
 
     /// The `barylab figure` command that makes the exported PNG again from the exported scene
     /// file `json`.
-    pub fn command(&self, app: &ExportContext<'_>, json: &Path) -> String {
+    pub(crate) fn command(&self, app: &ExportContext<'_>, json: &Path) -> String {
         let options = figure_options(app, &self.settings);
         let quote = |p: &Path| {
             let s = p.display().to_string();
@@ -267,7 +272,7 @@ impl ExportPanel {
     }
 
     /// Writes the selected files; returns them.
-    pub fn export(&self, app: &ExportContext<'_>) -> Result<Vec<PathBuf>, String> {
+    pub(crate) fn export(&self, app: &ExportContext<'_>) -> Result<Vec<PathBuf>, String> {
         let lang = self.lang;
         let folder = self.folder()?;
         let sel = self.settings.selection;
@@ -391,7 +396,7 @@ impl ExportPanel {
 }
 
 /// The scene a figure of the canvas shows: the current scene at the canvas's render size.
-pub fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
+pub(crate) fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
     let mut scene = state.scene.clone();
     scene.set_size(size[0], size[1]);
     scene
@@ -399,7 +404,7 @@ pub fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
 
 /// The figure options of the canvas as shown, with the export's scale and background;
 /// the pixel size and the overlay scale are the screen's.
-pub fn figure_options(app: &ExportContext<'_>, settings: &ExportSettings) -> FigureOptions {
+pub(crate) fn figure_options(app: &ExportContext<'_>, settings: &ExportSettings) -> FigureOptions {
     let (v, hovered, pixels_per_point) = (&app.state.view, app.hovered, app.pixels_per_point);
     FigureOptions {
         compare: v.compare,
@@ -424,7 +429,7 @@ fn write_color_image(image: &egui::ColorImage, path: &Path) -> Result<(), String
 }
 
 /// What the Export window shows ([`ExportPanel::view`]).
-pub struct ExportView<'a> {
+pub(crate) struct ExportView<'a> {
     /// The settings the panel shows.
     pub settings: &'a ExportSettings,
     /// What the last action did, if anything.
@@ -434,7 +439,7 @@ pub struct ExportView<'a> {
 impl ExportPanel {
     /// What the window shows, and the folder field's text (the one thing the window edits
     /// itself); `None` when the window is not shown.
-    pub fn view(&mut self) -> Option<(ExportView<'_>, &mut String)> {
+    pub(crate) fn view(&mut self) -> Option<(ExportView<'_>, &mut String)> {
         if !self.open || self.hidden_for_screenshot() {
             return None;
         }
@@ -447,7 +452,7 @@ impl ExportPanel {
 }
 
 /// The Export window.
-pub fn export_ui(
+pub(crate) fn export_ui(
     ctx: &egui::Context,
     panel: &ExportView<'_>,
     folder_text: &mut String,

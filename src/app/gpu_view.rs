@@ -288,7 +288,7 @@ fn gpu_settings(
 
 /// What one view of the canvas shows in the GPU view.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum GpuContent {
+pub(crate) enum GpuContent {
     /// barylab's image.
     Ours,
     /// The GPU's image.
@@ -301,7 +301,7 @@ pub enum GpuContent {
 
 /// The canvas's views in the GPU view, by the comparison chosen: Single shows the GPU's
 /// image, side by side barylab | GPU, the wipe barylab | GPU, the difference image.
-pub fn content(compare: Compare, index: usize) -> GpuContent {
+pub(crate) fn content(compare: Compare, index: usize) -> GpuContent {
     match (compare, index) {
         (Compare::Single, _) => GpuContent::Gpu,
         (Compare::SideBySide, 0) => GpuContent::Ours,
