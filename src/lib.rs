@@ -47,8 +47,6 @@
 #![warn(missing_docs)]
 
 pub mod aov;
-// documented separately; the allow goes when they are
-#[allow(missing_docs)]
 pub mod app;
 pub mod bench;
 pub mod budget;

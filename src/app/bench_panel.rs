@@ -53,6 +53,7 @@ pub struct BenchPanel {
     pub open: bool,
     /// Frames per configuration.
     pub frames: u32,
+    /// Which scene a run measures.
     pub source: BenchSource,
     records: Vec<BenchRecord>,
     /// Configurations in the current (or last) run.
@@ -88,9 +89,12 @@ impl Drop for BenchPanel {
 }
 
 /// What one run draws.
-pub struct BenchJob {
+pub(crate) struct BenchJob {
+    /// The scene's triangles in clip space, as the renderer takes them.
     pub mesh: ClipMesh,
+    /// The texture the scene samples.
     pub texture: Arc<Texture>,
+    /// The scene's render settings, which each measured configuration varies.
     pub base: RenderSettings,
     /// Shown above the results.
     pub description: String,
@@ -143,7 +147,7 @@ impl BenchPanel {
 
     /// Starts measuring `job` in a background thread (stopping any run going on); `ctx` is
     /// asked to repaint after each configuration.
-    pub fn start(&mut self, ctx: &egui::Context, job: BenchJob) {
+    pub(crate) fn start(&mut self, ctx: &egui::Context, job: BenchJob) {
         self.stop();
         let configs = bench::matrix(bench::available_cores());
         self.total = configs.len();
@@ -221,6 +225,7 @@ impl BenchPanel {
 pub enum BenchCommand {
     /// Show or hide the window.
     SetOpen(bool),
+    /// Measure the canvas's scene or the built-in reference scene.
     SetSource(BenchSource),
     /// Frames per configuration.
     SetFrames(u32),

@@ -48,16 +48,22 @@ const VIEW_TEXTURE: TextureOptions = TextureOptions {
 pub struct View {
     /// Screen rectangle of the image, in points.
     pub rect: Rect,
+    /// Maps rendered-image pixels to screen points for this view.
     pub transform: CanvasTransform,
+    /// What the view shows (a mode, the wipe, the difference heatmap).
     pub content: ViewContent,
 }
 
 /// Timings of the last render, for the status line.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct CanvasTiming {
+    /// Time the last render took, in milliseconds.
     pub render_ms: f64,
+    /// Time the last texture upload to egui took, in milliseconds.
     pub upload_ms: f64,
+    /// Renders made since start.
     pub renders: u64,
+    /// Texture uploads made since start.
     pub uploads: u64,
 }
 
@@ -71,14 +77,18 @@ enum DragKind {
 #[derive(Default)]
 pub struct CanvasState {
     renders: RenderCache,
+    /// The last successful render (`None` until the first; kept when a later one fails).
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
     uploaded: Option<(u64, Compare, u32, Option<u64>)>,
     drag: Option<DragKind>,
+    /// The views drawn last frame, left to right.
     pub views: Vec<View>,
     /// The pixel under the pointer, if it is over a view.
     pub hover: Option<[u32; 2]>,
+    /// Timings of the last render and upload.
     pub timing: CanvasTiming,
+    /// Why the last render failed, for the canvas to show.
     pub error: Option<String>,
     /// Screen pixels per rendered pixel as drawn (whole, 1 to 32): the overlay's grid and
     /// the exported figure's pixel size.
@@ -90,19 +100,26 @@ pub struct CanvasState {
 
 /// How the rendered image's size is chosen.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Sizing {
+pub(crate) enum Sizing {
     /// A fixed size (the scene's), drawn as large as the view allows: whole screen pixels per
     /// rendered pixel when magnified, so every pixel is the same square.
     Fixed([u32; 2]),
     /// Follow the window: `pixel_size` screen pixels per rendered pixel, the aspect ratio
     /// (width / height) of the scene.
-    Fit { aspect: f32, pixel_size: u32 },
+    Fit {
+        /// The scene's width / height.
+        aspect: f32,
+        /// Screen pixels per rendered pixel.
+        pixel_size: u32,
+    },
 }
 
 /// The canvas's views, the render size and the points per rendered pixel.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Layout {
+pub(crate) struct Layout {
+    /// Each view's screen rectangle (points) and what it shows.
     pub views: Vec<(Rect, ViewContent)>,
+    /// The render size: width and height in rendered pixels.
     pub size: [u32; 2],
     /// Points per rendered pixel.
     pub scale: f32,
@@ -111,7 +128,7 @@ pub struct Layout {
 impl Layout {
     /// Screen pixels per rendered pixel, as a whole number for the overlay's grid and the
     /// figure's pixel size (at least 1, at most the largest pixel size).
-    pub fn pixel_size(&self, pixels_per_point: f32) -> u32 {
+    pub(crate) fn pixel_size(&self, pixels_per_point: f32) -> u32 {
         let px = (self.scale * pixels_per_point).round();
         (px as u32).clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1)
     }
@@ -119,7 +136,12 @@ impl Layout {
 
 /// Splits the available rectangle into the views of a comparison, each the largest rectangle
 /// of the image's aspect ratio that fits, and fixes the render size and the scale.
-pub fn layout(available: Rect, compare: Compare, sizing: Sizing, pixels_per_point: f32) -> Layout {
+pub(crate) fn layout(
+    available: Rect,
+    compare: Compare,
+    sizing: Sizing,
+    pixels_per_point: f32,
+) -> Layout {
     let aspect = match sizing {
         Sizing::Fixed([w, h]) => w.max(1) as f32 / h.max(1) as f32,
         Sizing::Fit { aspect, .. } => aspect,
@@ -277,12 +299,16 @@ impl CanvasState {
 }
 
 /// Inputs the canvas needs besides its own state.
-pub struct CanvasInput<'a> {
+pub(crate) struct CanvasInput<'a> {
+    /// The document the canvas renders and edits.
     pub state: &'a AppState,
+    /// The scene's texture, loaded.
     pub texture: &'a Texture,
+    /// Identifies the texture, so a new one triggers a new render.
     pub texture_key: TextureKey,
     /// Derivations of the hovered and pinned pixels from the last frame (for the overlay).
     pub hover_report: Option<&'a PixelReport>,
+    /// The pinned pixel's derivation from the last frame (for the overlay).
     pub pin_report: Option<&'a PixelReport>,
     /// The GPU view, when it is on.
     pub gpu: Option<&'a GpuView>,
@@ -290,7 +316,11 @@ pub struct CanvasInput<'a> {
 
 /// The canvas panel. It renders and uploads what changed, and keeps its own widget state
 /// (views, hovered pixel, drag) in `canvas`; every change to the app is a returned command.
-pub fn canvas_ui(ui: &mut Ui, canvas: &mut CanvasState, input: CanvasInput<'_>) -> Vec<Command> {
+pub(crate) fn canvas_ui(
+    ui: &mut Ui,
+    canvas: &mut CanvasState,
+    input: CanvasInput<'_>,
+) -> Vec<Command> {
     let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     let state = input.state;

@@ -13,7 +13,7 @@ use super::state::Command;
 pub enum AppCommand {
     /// Change the scene or the view ([`super::state::AppState::apply`]).
     State(Command),
-    /// The Export panel ([`super::export::ExportPanel::apply`]).
+    /// The Export panel (applied by `ExportPanel::apply`).
     Export(ExportCommand),
     /// The benchmark window ([`super::bench_panel::BenchPanel::apply`]).
     Bench(BenchCommand),

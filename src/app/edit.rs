@@ -21,12 +21,16 @@ use crate::figure::vertices_on_screen;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum EditError {
     #[error("vertex {0} does not exist")]
+    /// No vertex has this index.
     NoVertex(usize),
     #[error("vertex {0} is behind the camera; edit its numbers instead")]
+    /// The vertex is behind the camera (w at most the handle minimum), so it cannot follow the pointer.
     BehindCamera(usize),
     #[error("the edit would give a position that is not a finite number")]
+    /// The edit would give a position that is not finite.
     NotFinite,
     #[error("a model (OBJ) scene's vertices cannot be moved here; edit the OBJ file")]
+    /// A model (OBJ) scene: its vertices cannot be moved or pushed in the app.
     Model,
 }
 
@@ -168,9 +172,13 @@ fn vertex_clip(scene: &Scene, index: usize, viewport: Viewport) -> Result<DVec4,
 /// The render options a scene stores, as one value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SceneOptions {
+    /// Affine or perspective-correct interpolation.
     pub mode: Interpolation,
+    /// What the pixels show (colour, texture, ...).
     pub shading: Shading,
+    /// How the texture is sampled.
     pub filter: Filter,
+    /// Whether triangle edges are drawn over the image.
     pub wireframe: bool,
 }
 

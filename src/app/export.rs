@@ -26,7 +26,9 @@ pub struct ExportSettings {
     pub folder: Option<PathBuf>,
     /// 1, 2 or 4.
     pub scale: u32,
+    /// The figure's background.
     pub background: Background,
+    /// Which files an export writes.
     pub selection: ExportSelection,
     /// A caption with the marked pixel's key numbers below the figure.
     pub caption: bool,
@@ -47,13 +49,19 @@ impl Default for ExportSettings {
 /// A change or an action of the Export panel, applied once per frame.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ExportCommand {
+    /// Show the Export panel.
     Open,
+    /// Hide the Export panel.
     Close,
     /// Show the native folder dialog.
     BrowseFolder,
+    /// Export into this folder.
     SetFolder(PathBuf),
+    /// Export at this scale: PNG pixels per figure point (1, 2 or 4).
     SetScale(u32),
+    /// Use this background in the figures.
     SetBackground(Background),
+    /// Write these files.
     SetSelection(ExportSelection),
     /// Add (or leave out) the figure's caption.
     SetCaption(bool),
@@ -68,7 +76,9 @@ pub enum ExportCommand {
 /// What the last action did, shown in the panel (and on the status line).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Outcome {
+    /// Whether the action failed.
     pub error: bool,
+    /// The lines the panel shows (written files, or the error).
     pub lines: Vec<String>,
     /// One line for the status line.
     pub summary: String,
@@ -101,10 +111,13 @@ const SCREENSHOT_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(1
 /// The Export panel's state.
 #[derive(Default)]
 pub struct ExportPanel {
+    /// The settings, saved between runs.
     pub settings: ExportSettings,
+    /// Whether the panel is shown.
     pub open: bool,
     /// The text of the folder field.
     pub folder_text: String,
+    /// What the last action did (`None` before the first).
     pub outcome: Option<Outcome>,
     dialog: NativeDialog,
     screenshot: Option<(PathBuf, ShotSlot, std::time::Instant)>,
@@ -116,8 +129,10 @@ pub struct ExportPanel {
 }
 
 /// Everything an export needs from the app.
-pub struct ExportContext<'a> {
+pub(crate) struct ExportContext<'a> {
+    /// The document the figure shows.
     pub state: &'a AppState,
+    /// The scene's texture, loaded.
     pub texture: &'a Texture,
     /// The canvas's rendered size.
     pub size: Option<[u32; 2]>,
@@ -130,6 +145,7 @@ pub struct ExportContext<'a> {
 }
 
 impl ExportPanel {
+    /// A closed panel with these settings; the folder field shows their folder.
     pub fn new(settings: ExportSettings) -> Self {
         let folder_text = settings
             .folder
@@ -154,7 +170,12 @@ impl ExportPanel {
     }
 
     /// Applies a command; runs the actions.
-    pub fn apply(&mut self, ctx: &egui::Context, command: ExportCommand, app: &ExportContext<'_>) {
+    pub(crate) fn apply(
+        &mut self,
+        ctx: &egui::Context,
+        command: ExportCommand,
+        app: &ExportContext<'_>,
+    ) {
         self.lang = super::locale::lang(ctx);
         let lang = self.lang;
         match command {
@@ -232,7 +253,7 @@ impl ExportPanel {
 
     /// The `barylab figure` command that makes the exported PNG again from the exported scene
     /// file `json`.
-    pub fn command(&self, app: &ExportContext<'_>, json: &Path) -> String {
+    pub(crate) fn command(&self, app: &ExportContext<'_>, json: &Path) -> String {
         let options = figure_options(app, &self.settings);
         let quote = |p: &Path| {
             let s = p.display().to_string();
@@ -251,7 +272,7 @@ impl ExportPanel {
     }
 
     /// Writes the selected files; returns them.
-    pub fn export(&self, app: &ExportContext<'_>) -> Result<Vec<PathBuf>, String> {
+    pub(crate) fn export(&self, app: &ExportContext<'_>) -> Result<Vec<PathBuf>, String> {
         let lang = self.lang;
         let folder = self.folder()?;
         let sel = self.settings.selection;
@@ -375,7 +396,7 @@ impl ExportPanel {
 }
 
 /// The scene a figure of the canvas shows: the current scene at the canvas's render size.
-pub fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
+pub(crate) fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
     let mut scene = state.scene.clone();
     scene.set_size(size[0], size[1]);
     scene
@@ -383,7 +404,7 @@ pub fn figure_scene(state: &AppState, size: [u32; 2]) -> Scene {
 
 /// The figure options of the canvas as shown, with the export's scale and background;
 /// the pixel size and the overlay scale are the screen's.
-pub fn figure_options(app: &ExportContext<'_>, settings: &ExportSettings) -> FigureOptions {
+pub(crate) fn figure_options(app: &ExportContext<'_>, settings: &ExportSettings) -> FigureOptions {
     let (v, hovered, pixels_per_point) = (&app.state.view, app.hovered, app.pixels_per_point);
     FigureOptions {
         compare: v.compare,
@@ -408,15 +429,17 @@ fn write_color_image(image: &egui::ColorImage, path: &Path) -> Result<(), String
 }
 
 /// What the Export window shows ([`ExportPanel::view`]).
-pub struct ExportView<'a> {
+pub(crate) struct ExportView<'a> {
+    /// The settings the panel shows.
     pub settings: &'a ExportSettings,
+    /// What the last action did, if anything.
     pub outcome: Option<&'a Outcome>,
 }
 
 impl ExportPanel {
     /// What the window shows, and the folder field's text (the one thing the window edits
     /// itself); `None` when the window is not shown.
-    pub fn view(&mut self) -> Option<(ExportView<'_>, &mut String)> {
+    pub(crate) fn view(&mut self) -> Option<(ExportView<'_>, &mut String)> {
         if !self.open || self.hidden_for_screenshot() {
             return None;
         }
@@ -429,7 +452,7 @@ impl ExportPanel {
 }
 
 /// The Export window.
-pub fn export_ui(
+pub(crate) fn export_ui(
     ctx: &egui::Context,
     panel: &ExportView<'_>,
     folder_text: &mut String,

@@ -25,7 +25,10 @@ pub enum FileCommand {
     /// Show the native Open dialog.
     OpenDialog,
     /// Show the typed-path window; `dialog_failed` says the native dialog could not open.
-    ShowPathWindow { dialog_failed: bool },
+    ShowPathWindow {
+        /// The native dialog could not open (the window says so).
+        dialog_failed: bool,
+    },
     /// Close the typed-path window.
     ClosePathWindow,
     /// Load this file and apply it ([`open`]).
@@ -46,9 +49,17 @@ pub enum FileCommand {
 #[derive(Clone, Debug)]
 pub enum Opened {
     /// A scene file or a model: replaces the scene.
-    Scene { scene: Box<Scene>, dir: PathBuf },
+    Scene {
+        /// The scene loaded.
+        scene: Box<Scene>,
+        /// The folder its relative texture paths are resolved against.
+        dir: PathBuf,
+    },
     /// An image: becomes the current scene's texture (its absolute path).
-    Texture { path: String },
+    Texture {
+        /// The image's absolute path, as the scene names its texture.
+        path: String,
+    },
 }
 
 /// A file that loaded, with everything checked.
@@ -56,6 +67,7 @@ pub enum Opened {
 pub struct OpenedFile {
     /// The path as opened (absolute when it could be made so).
     pub path: PathBuf,
+    /// What the file changes: the scene or the texture.
     pub what: Opened,
     /// The texture the result shows, already loaded (so the app does not decode it twice).
     pub texture: Arc<Texture>,

@@ -60,8 +60,11 @@ pub struct GpuResult {
 /// OpenGL's strings: GL_VENDOR, GL_RENDERER, GL_VERSION.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct GlInfo {
+    /// GL_VENDOR: who made the driver.
     pub vendor: String,
+    /// GL_RENDERER: the GPU (or software renderer) that draws.
     pub renderer: String,
+    /// GL_VERSION: the OpenGL version and driver version.
     pub version: String,
 }
 
@@ -74,8 +77,11 @@ pub struct GpuView {
     gpu: Option<crate::gpu::Gpu>,
     /// What the last draw was made of: the canvas's render generation and the mode.
     key: Option<(u64, Interpolation)>,
+    /// The context's OpenGL strings, once read.
     pub info: Option<GlInfo>,
+    /// The last comparison of barylab's image with the GPU's.
     pub result: Option<GpuResult>,
+    /// Why there is no GPU image, when there is none.
     pub unavailable: Option<Unavailable>,
     /// Increments with every new result (the canvas uploads the images again).
     pub generation: u64,
@@ -282,16 +288,20 @@ fn gpu_settings(
 
 /// What one view of the canvas shows in the GPU view.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum GpuContent {
+pub(crate) enum GpuContent {
+    /// barylab's image.
     Ours,
+    /// The GPU's image.
     Gpu,
+    /// barylab's image left of the wipe line, the GPU's right of it.
     Wipe,
+    /// The difference image of the two.
     Difference,
 }
 
 /// The canvas's views in the GPU view, by the comparison chosen: Single shows the GPU's
 /// image, side by side barylab | GPU, the wipe barylab | GPU, the difference image.
-pub fn content(compare: Compare, index: usize) -> GpuContent {
+pub(crate) fn content(compare: Compare, index: usize) -> GpuContent {
     match (compare, index) {
         (Compare::Single, _) => GpuContent::Gpu,
         (Compare::SideBySide, 0) => GpuContent::Ours,

@@ -129,10 +129,17 @@ pub struct AppOptions {
 /// Errors that stop the app.
 #[derive(Debug, thiserror::Error)]
 pub enum AppError {
+    /// eframe could not open the window: its message.
     #[error("cannot open the window: {0}")]
     Window(String),
+    /// The startup screenshot (`--screenshot`) could not be taken or written.
     #[error("screenshot {path}: {message}")]
-    Screenshot { path: String, message: String },
+    Screenshot {
+        /// The PNG file asked for.
+        path: String,
+        /// What went wrong.
+        message: String,
+    },
 }
 
 /// The app.

@@ -24,6 +24,7 @@ pub struct SavedState {
     pub scene_json: String,
     /// Folder relative texture paths of the scene are resolved against.
     pub scene_dir: Option<PathBuf>,
+    /// The view settings.
     pub view: ViewSettings,
     /// Recently opened files, newest first.
     pub recent: RecentFiles,
@@ -36,8 +37,11 @@ pub struct SavedState {
 /// A saved state, restored.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Restored {
+    /// The document: the scene (or the default one) and the view settings.
     pub state: AppState,
+    /// Recently opened files, newest first.
     pub recent: RecentFiles,
+    /// The Export panel's settings.
     pub export: ExportSettings,
     /// The language saved, if any.
     pub lang: Option<Lang>,

@@ -23,6 +23,7 @@ pub enum Preset {
 }
 
 impl Preset {
+    /// Every preset, in menu order.
     pub const ALL: [Preset; 5] = [
         Preset::FrontFacing,
         Preset::Floor,

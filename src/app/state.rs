@@ -25,15 +25,23 @@ pub const UI_SCALE_RANGE: (f32, f32) = (0.75, 2.5);
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct ViewSettings {
+    /// Screen pixels per rendered pixel when the image follows the window ([`PIXEL_SIZE_RANGE`]).
     pub pixel_size: u32,
+    /// One view, side by side, wipe or difference.
     pub compare: Compare,
     /// Wipe line position as a fraction of the canvas width.
     pub wipe: f32,
+    /// Draw the pixel grid over a magnified image.
     pub show_grid: bool,
+    /// Draw the vertex handles (and let them be dragged).
     pub show_handles: bool,
+    /// Draw the hovered or pinned pixel's sub-triangles (its barycentric areas).
     pub show_sub_areas: bool,
+    /// Show the Controls side panel.
     pub show_controls: bool,
+    /// Show the Inspector side panel.
     pub show_inspector: bool,
+    /// The pinned pixel (image pixels, x right, y down), whose derivation the inspector keeps.
     pub pinned: Option<[u32; 2]>,
     /// UI zoom factor (text and widgets), for projectors.
     pub ui_scale: f32,
@@ -75,8 +83,11 @@ impl Default for ViewSettings {
 /// The live document: the scene and the view.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AppState {
+    /// The scene shown and edited.
     pub scene: Scene,
+    /// The folder the scene's relative texture paths are resolved against.
     pub scene_dir: Option<PathBuf>,
+    /// The view settings.
     pub view: ViewSettings,
 }
 
@@ -91,6 +102,7 @@ impl Default for AppState {
 }
 
 impl AppState {
+    /// The scene's render options (mode, shading, filter, wireframe).
     pub fn options(&self) -> SceneOptions {
         edit::options(&self.scene)
     }
@@ -106,14 +118,19 @@ pub enum Command {
     SetTexture(String),
     /// Model scenes: turn the camera about its target (drag), in degrees.
     OrbitCamera {
+        /// Turn about the vertical axis, in degrees.
         yaw_deg: f64,
+        /// Turn up or down, in degrees.
         pitch_deg: f64,
     },
     /// Model scenes: move camera and target parallel to the screen by this many rendered
     /// pixels (right, down), so the model follows the pointer.
     PanCamera {
+        /// Rendered pixels to the right.
         dx: f64,
+        /// Rendered pixels down.
         dy: f64,
+        /// The rendered image's size the pixels are counted in.
         viewport: Viewport,
     },
     /// Model scenes: multiply the distance to the target (scroll).
@@ -129,54 +146,84 @@ pub enum Command {
     ResetScene,
     /// Back to the default scene and the default view settings.
     ResetAll,
+    /// Interpolate affinely or perspective-correctly.
     SetMode(Interpolation),
+    /// Switch between affine and perspective-correct interpolation.
     ToggleMode,
+    /// Shade by this (colour, texture, ...).
     SetShading(Shading),
+    /// Sample the texture with this filter.
     SetFilter(Filter),
+    /// Draw the triangle edges over the image, or not.
     SetWireframe(bool),
+    /// Draw the canvas with this rasterizer.
     SetRasterizer(crate::raster::render::Rasterizer),
+    /// Show one view, side by side, the wipe or the difference (the pin is kept).
     SetCompare(Compare),
     /// The GPU view on or off.
     SetGpuView(bool),
     /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
     SetTieRule(crate::raster::setup::TieRule),
+    /// Put the wipe line at this fraction of the width (clamped to 0..1).
     SetWipe(f32),
+    /// Screen pixels per rendered pixel when following the window (clamped; unpins if it changes).
     SetPixelSize(u32),
     /// Render at this fixed size (the scene's size, so exports carry it), or `None`: follow
     /// the window.
     SetImageSize(Option<[u32; 2]>),
+    /// Draw the pixel grid, or not.
     SetShowGrid(bool),
+    /// Draw the vertex handles, or not.
     SetShowHandles(bool),
+    /// Draw the sub-triangles of the hovered or pinned pixel, or not.
     SetShowSubAreas(bool),
+    /// Show the Controls panel, or not.
     SetShowControls(bool),
+    /// Show the Inspector panel, or not.
     SetShowInspector(bool),
+    /// Set the UI zoom factor (clamped to [`UI_SCALE_RANGE`]).
     SetUiScale(f32),
     /// Drag: move a vertex so it lands on this window position, at its depth.
     MoveVertex {
+        /// The vertex's index in the scene.
         index: usize,
+        /// Where it goes, in window pixels of the rendered image (y down).
         to: DVec2,
+        /// The rendered image's size.
         viewport: Viewport,
     },
     /// Scroll / Shift+drag: multiply a vertex's w, keeping its place on screen.
     PushVertex {
+        /// The vertex's index in the scene.
         index: usize,
+        /// Multiplies w (clamped to [`edit::PUSH_FACTOR_RANGE`]).
         factor: f64,
+        /// The rendered image's size.
         viewport: Viewport,
     },
     /// Numeric edit of a world-form corner (object-space position, uv).
     SetCorner {
+        /// The corner's index.
         index: usize,
+        /// Object-space position.
         position: glam::DVec3,
+        /// Texture coordinates.
         uv: Vec2,
+        /// Vertex colour, RGB in [0, 1].
         color: Vec3,
     },
     /// Numeric edit of a clip-form vertex.
     SetClipVertex {
+        /// The vertex's index.
         index: usize,
+        /// Clip-space position (x, y, z, w).
         clip: DVec4,
+        /// Texture coordinates.
         uv: Vec2,
     },
+    /// World scenes: tilt the quad about its centre (ignored unless finite).
     SetTilt(Tilt),
+    /// Set the perspective camera's vertical field of view, in degrees (clamped).
     SetFov(f64),
     /// Pin a pixel (or unpin).
     Pin(Option<[u32; 2]>),
@@ -184,8 +231,11 @@ pub enum Command {
     SetPlot(Option<crate::lesson::LessonPlot>),
     /// Move the pin by whole pixels, staying inside the image.
     MovePin {
+        /// Pixels to the right (negative: left).
         dx: i32,
+        /// Pixels down (negative: up).
         dy: i32,
+        /// The image's size, in pixels, that the pin stays inside.
         size: [u32; 2],
     },
 }
