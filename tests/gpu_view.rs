@@ -3,9 +3,12 @@
 //! and named by the inspector; under Xvfb the real window draws every sample scene with
 //! Mesa's llvmpipe and finds the same coverage as barylab.
 
-use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::path::PathBuf;
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
+
+mod common;
+use common::xvfb::{start_xvfb, xvfb_or_skip};
 
 use barylab::app::gpu_view::Unavailable;
 use barylab::app::state::Command as AppCmd;
@@ -185,63 +188,6 @@ fn the_tie_rule_is_chosen_in_the_controls_saved_in_the_scene_and_named_by_the_in
 /// How long the app may take to open, draw and save its screenshot.
 const APP_TIMEOUT: Duration = Duration::from_secs(120);
 
-fn on_path(program: &str) -> Option<PathBuf> {
-    std::env::var_os("PATH").and_then(|paths| {
-        std::env::split_paths(&paths)
-            .map(|d| d.join(program))
-            .find(|p| p.is_file())
-    })
-}
-
-/// Xvfb on a free display, killed when dropped.
-struct Xvfb {
-    child: Child,
-    display: String,
-}
-
-impl Drop for Xvfb {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
-fn start_xvfb(xvfb: &Path) -> Xvfb {
-    let n = (150..250)
-        .find(|n| {
-            !Path::new(&format!("/tmp/.X{n}-lock")).exists()
-                && !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
-        })
-        .expect("a free X display number");
-    let child = Command::new(xvfb)
-        .args([
-            &format!(":{n}"),
-            "-screen",
-            "0",
-            "1920x1080x24",
-            "-nolisten",
-            "tcp",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("start Xvfb");
-    let x = Xvfb {
-        child,
-        display: format!(":{n}"),
-    };
-    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
-    let start = Instant::now();
-    while !socket.exists() {
-        assert!(
-            start.elapsed() < Duration::from_secs(15),
-            "Xvfb did not start"
-        );
-        std::thread::sleep(Duration::from_millis(50));
-    }
-    x
-}
-
 /// Runs the app; returns (success, stdout, stderr).
 fn run_app(display: &str, args: &[&str]) -> (bool, String, String) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_barylab"))
@@ -292,11 +238,7 @@ fn summary(stdout: &str) -> Option<(usize, usize, u32)> {
 
 #[test]
 fn under_xvfb_the_gpu_view_shows_llvmpipe_agreeing_on_coverage_on_every_sample_scene() {
-    let Some(xvfb) = on_path("Xvfb") else {
-        if std::env::var("CI").as_deref() == Ok("true") {
-            panic!("Xvfb is not installed but CI=true: install the xvfb package");
-        }
-        println!("SKIPPED gpu_view: Xvfb is not on PATH (apt-get install xvfb)");
+    let Some(xvfb) = xvfb_or_skip("gpu_view") else {
         return;
     };
     let x = start_xvfb(&xvfb);

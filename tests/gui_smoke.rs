@@ -1,77 +1,14 @@
 //! Smoke test of the real window: start the binary under Xvfb with `--screenshot`, check the
 //! PNG shows the app. Skipped (with a message) when Xvfb is not installed, unless CI=true.
 
-use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
+
+mod common;
+use common::xvfb::{start_xvfb, xvfb_or_skip};
 
 /// How long the app may take to open, render and save its screenshot.
 const APP_TIMEOUT: Duration = Duration::from_secs(120);
-/// How long Xvfb may take to create its socket.
-const XVFB_TIMEOUT: Duration = Duration::from_secs(15);
-
-fn on_path(program: &str) -> Option<PathBuf> {
-    std::env::var_os("PATH").and_then(|paths| {
-        std::env::split_paths(&paths)
-            .map(|d| d.join(program))
-            .find(|p| p.is_file())
-    })
-}
-
-/// A display number nobody is using (no lock file, no socket).
-fn free_display() -> u32 {
-    (90..200)
-        .find(|n| {
-            !Path::new(&format!("/tmp/.X{n}-lock")).exists()
-                && !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
-        })
-        .expect("a free X display number between 90 and 200")
-}
-
-/// Xvfb, killed when dropped.
-struct Xvfb {
-    child: Child,
-    display: String,
-}
-
-impl Drop for Xvfb {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
-/// Held while an Xvfb starts, so tests running in parallel do not pick the same display.
-static STARTING: std::sync::Mutex<()> = std::sync::Mutex::new(());
-
-fn start_xvfb(xvfb: &Path) -> Xvfb {
-    let _starting = STARTING.lock().unwrap_or_else(|e| e.into_inner());
-    let n = free_display();
-    let child = Command::new(xvfb)
-        .args([
-            &format!(":{n}"),
-            "-screen",
-            "0",
-            "1920x1080x24",
-            "-nolisten",
-            "tcp",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("start Xvfb");
-    let x = Xvfb {
-        child,
-        display: format!(":{n}"),
-    };
-    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
-    let start = Instant::now();
-    while !socket.exists() {
-        assert!(start.elapsed() < XVFB_TIMEOUT, "Xvfb :{n} did not start");
-        std::thread::sleep(Duration::from_millis(50));
-    }
-    x
-}
 
 /// Runs the app with `args` on the display; returns (success, stderr).
 fn run_app(display: &str, args: &[&str]) -> (bool, String) {
@@ -109,22 +46,9 @@ fn run_app_with(display: &str, args: &[&str], env: &[(&str, &str)]) -> (bool, St
     (status.success(), err)
 }
 
-fn xvfb_or_skip() -> Option<PathBuf> {
-    match on_path("Xvfb") {
-        Some(p) => Some(p),
-        None if std::env::var("CI").as_deref() == Ok("true") => {
-            panic!("Xvfb is not installed but CI=true: install the xvfb package")
-        }
-        None => {
-            println!("SKIPPED gui_smoke: Xvfb is not on PATH (apt-get install xvfb)");
-            None
-        }
-    }
-}
-
 #[test]
 fn the_window_opens_renders_and_saves_a_screenshot() {
-    let Some(xvfb) = xvfb_or_skip() else {
+    let Some(xvfb) = xvfb_or_skip("gui_smoke") else {
         return;
     };
     let x = start_xvfb(&xvfb);
@@ -200,7 +124,7 @@ fn image_share(img: &image::RgbaImage) -> f64 {
 
 #[test]
 fn projector_windows_keep_a_large_image_with_and_without_presentation_mode() {
-    let Some(xvfb) = xvfb_or_skip() else {
+    let Some(xvfb) = xvfb_or_skip("gui_smoke") else {
         return;
     };
     let x = start_xvfb(&xvfb);
@@ -286,7 +210,7 @@ fn bad_models_and_images_are_reported_in_one_line_without_opening_a_window() {
 /// from the English one and is the same both ways; `--lang` and `--text-size` reject bad values.
 #[test]
 fn the_app_starts_in_chinese_from_the_flag_or_the_locale() {
-    let Some(xvfb) = xvfb_or_skip() else {
+    let Some(xvfb) = xvfb_or_skip("gui_smoke") else {
         return;
     };
     if barylab::i18n::cjk_font().is_none() {

@@ -1,6 +1,8 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod xvfb;
+
 use barylab::raster::render::{ClipMesh, MeshVertex, Render, RenderSettings, render};
 use barylab::raster::{Filter, Interpolation, Shading, Texture, Wrap};
 use glam::{DVec4, Vec2, Vec3};

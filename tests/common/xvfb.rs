@@ -1,0 +1,89 @@
+//! A private X server (Xvfb) for the tests that open the real window.
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// How long Xvfb may take to create its socket.
+const XVFB_TIMEOUT: Duration = Duration::from_secs(15);
+
+/// `program`'s path on PATH, if it is there.
+pub fn on_path(program: &str) -> Option<PathBuf> {
+    std::env::var_os("PATH").and_then(|paths| {
+        std::env::split_paths(&paths)
+            .map(|d| d.join(program))
+            .find(|p| p.is_file())
+    })
+}
+
+/// Xvfb's path; `None` (the test says it skipped) when it is not installed, except under
+/// CI=true, where a missing Xvfb fails the test.
+pub fn xvfb_or_skip(test: &str) -> Option<PathBuf> {
+    match on_path("Xvfb") {
+        Some(p) => Some(p),
+        None if std::env::var("CI").as_deref() == Ok("true") => {
+            panic!("Xvfb is not installed but CI=true: install the xvfb package")
+        }
+        None => {
+            println!("SKIPPED {test}: Xvfb is not on PATH (apt-get install xvfb)");
+            None
+        }
+    }
+}
+
+/// A display number nobody is using (no lock file, no socket).
+fn free_display() -> u32 {
+    (90..250)
+        .find(|n| {
+            !Path::new(&format!("/tmp/.X{n}-lock")).exists()
+                && !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
+        })
+        .expect("a free X display number between 90 and 250")
+}
+
+/// Xvfb on a free display, killed when dropped.
+pub struct Xvfb {
+    child: Child,
+    /// The `DISPLAY` value, e.g. `:91`.
+    pub display: String,
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// Held while an Xvfb starts, so tests running in parallel do not pick the same display.
+static STARTING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// Starts Xvfb (1920x1080, 24 bits) on a free display and waits for its socket.
+pub fn start_xvfb(xvfb: &Path) -> Xvfb {
+    let _starting = STARTING.lock().unwrap_or_else(|e| e.into_inner());
+    let n = free_display();
+    let child = Command::new(xvfb)
+        .args([
+            &format!(":{n}"),
+            "-screen",
+            "0",
+            "1920x1080x24",
+            "-nolisten",
+            "tcp",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("start Xvfb");
+    let x = Xvfb {
+        child,
+        display: format!(":{n}"),
+    };
+    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
+    let start = Instant::now();
+    while !socket.exists() {
+        assert!(start.elapsed() < XVFB_TIMEOUT, "Xvfb :{n} did not start");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    x
+}
