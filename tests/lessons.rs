@@ -400,12 +400,20 @@ fn the_handout_has_every_step_its_figures_and_never_overwrites() {
         };
         assert!(md.matches(derivation).count() >= 12, "derivations");
         assert!(md.contains("$"), "math for pandoc");
-        // pandoc, where installed, reads it (math, figures, code blocks) without a complaint.
-        if let Ok(out) = Command::new("pandoc")
+        // pandoc reads it (math, figures, code blocks) without a complaint. Where pandoc is
+        // missing the check is skipped, except under CI=true (.ci/run installs it).
+        let pandoc = Command::new("pandoc")
             .current_dir(&out_dir)
             .args(["handout.md", "-s", "--mathml", "-o", "handout.html"])
-            .output()
-        {
+            .output();
+        if pandoc.is_err() {
+            assert!(
+                std::env::var("CI").as_deref() != Ok("true"),
+                "pandoc is not installed but CI=true: install the pandoc package"
+            );
+            println!("SKIPPED the pandoc check: pandoc is not installed");
+        }
+        if let Ok(out) = pandoc {
             assert!(
                 out.status.success() && out.stderr.is_empty(),
                 "{}",
