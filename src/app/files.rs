@@ -40,6 +40,12 @@ pub enum FileCommand {
     SaveAsDialog,
     /// Save the scene to this file.
     SaveTo(PathBuf),
+    /// Ask for an image to compare with the render (the native dialog).
+    CompareImageDialog,
+    /// Compare this image with the render ([`super::compare_image`]).
+    CompareImage(PathBuf),
+    /// Stop comparing with an image.
+    CloseCompareImage,
 }
 
 /// What opening a file changes.

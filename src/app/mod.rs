@@ -31,6 +31,7 @@ pub(crate) mod bench_chart;
 pub mod bench_panel;
 pub mod canvas;
 pub mod command;
+pub mod compare_image;
 pub(crate) mod controls;
 pub(crate) mod dialog;
 pub mod edit;
@@ -45,6 +46,7 @@ pub(crate) mod inspector;
 pub(crate) mod layout;
 pub mod lessons;
 pub(crate) mod locale;
+mod other_image;
 pub(crate) mod paint;
 pub(crate) mod path_window;
 pub mod persist;
@@ -124,6 +126,8 @@ pub struct AppOptions {
     pub lesson: Option<(crate::lesson::Lesson, usize)>,
     /// Start in this comparison, with the GPU view on (`true`) or off (`--compare`).
     pub compare: Option<(crate::figure::Compare, bool)>,
+    /// Start comparing this image with the render (`--compare-image`).
+    pub compare_image: Option<PathBuf>,
 }
 
 /// Errors that stop the app.
@@ -174,6 +178,8 @@ pub struct BaryApp {
     lessons: lessons::Lessons,
     /// The GPU view's context, GL objects and last comparison.
     gpu_view: gpu_view::GpuView,
+    /// The image compared with the canvas's render (File > Compare with image…).
+    compare_image: Option<compare_image::ImageCompare>,
 }
 
 impl BaryApp {
@@ -251,7 +257,11 @@ impl BaryApp {
             fonts: locale::Fonts::new(options.no_cjk_font),
             lessons: lessons::Lessons::default(),
             gpu_view: gpu_view::GpuView::new(options.screenshot.is_some()),
+            compare_image: None,
         };
+        if let Some(path) = &options.compare_image {
+            app.push(FileCommand::CompareImage(path.clone()));
+        }
         if let Some(opened) = options.opened {
             app.opened(opened);
         }
@@ -374,6 +384,9 @@ impl BaryApp {
         {
             ctx.request_repaint();
         }
+        if self.compare_image_frame(&texture) {
+            ctx.request_repaint();
+        }
 
         let reports_before = self.reports.key();
         let error = self.reports.update(
@@ -406,7 +419,11 @@ impl BaryApp {
             let gpu = self
                 .gpu_view
                 .settled(gpu_on, self.canvas.output.as_ref(), mode);
-            shot.step(&ctx, self.canvas.output.is_some() && gpu);
+            let image = self
+                .compare_image
+                .as_ref()
+                .is_none_or(|ic| ic.settled(self.canvas.output.as_ref(), mode));
+            shot.step(&ctx, self.canvas.output.is_some() && gpu && image);
         }
     }
 
@@ -509,6 +526,7 @@ impl BaryApp {
                     state::Command::Preset(p) => self.last_preset = Some(p),
                     state::Command::SetShowControls(true) => self.panel_first = Side::Controls,
                     state::Command::SetShowInspector(true) => self.panel_first = Side::Inspector,
+                    state::Command::SetGpuView(true) => self.compare_image = None,
                     _ => {}
                 }
                 // A new scene leaves every error about the old one behind.
@@ -557,6 +575,8 @@ impl BaryApp {
                 None => self.picker.apply(ctx, &FileCommand::SaveAsDialog),
             },
             AppCommand::File(FileCommand::SaveTo(path)) => self.save_scene(&path),
+            AppCommand::File(FileCommand::CompareImage(path)) => self.open_compare_image(&path),
+            AppCommand::File(FileCommand::CloseCompareImage) => self.compare_image = None,
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
             AppCommand::SetPresenting(on) => self.presenting = on,
