@@ -15,6 +15,7 @@ use super::gpu_view::{GpuResult, GpuView};
 use super::render::CanvasOutput;
 use super::state::Command;
 use crate::compare::{self, Comparison, CoverageBy, Image, Reference, Rendered};
+use crate::figure::Compare;
 use crate::files::{FileKind, read_regular, shown};
 use crate::i18n::Lang;
 use crate::raster::{Interpolation, NO_TRIANGLE, Texture};
@@ -266,11 +267,13 @@ pub fn summary(c: &Comparison, lang: Lang) -> String {
 
 /// The strip above the canvas while an image is compared: the file, the summary, the worst
 /// and first mismatch buttons, the pinned pixel's reason, the size message, and Close.
-pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare) -> Vec<AppCommand> {
+pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppCommand> {
     let lang = super::locale::lang(ui.ctx());
     let mut out = Vec::new();
     let body = ui.text_style_height(&egui::TextStyle::Body);
-    let max = (ui.available_height() * 0.25).max(body * 3.0);
+    let max = (ui.available_height() * 0.3).max(body * 4.0);
+    // A solid scroll bar, so that a strip that scrolls shows it does.
+    ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
     egui::ScrollArea::vertical()
         .id_salt("compare-image-strip")
         .max_height(max)
@@ -288,6 +291,8 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare) -> Vec<AppCommand> {
                     lang.tr_with("compare_image.title", &[("file", &shown(&ic.path))]),
                 ))
                 .on_hover_text(ic.path.display().to_string());
+            });
+            ui.horizontal_wrapped(|ui| {
                 if let Some(c) = &ic.comparison {
                     out.extend(buttons(ui, ic, c, lang));
                     let color = if c.agrees() {
@@ -298,6 +303,16 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare) -> Vec<AppCommand> {
                     ui.label(RichText::new(summary(c, lang)).strong().color(color));
                 }
             });
+            if let Some(([x, y], reason)) = &ic.pin_reason {
+                let text = match reason {
+                    Some(r) => lang.tr_with(
+                        "compare_image.pinned_reason",
+                        &[("x", x), ("y", y), ("reason", r)],
+                    ),
+                    None => lang.tr_with("compare_image.pinned_agrees", &[("x", x), ("y", y)]),
+                };
+                ui.add(egui::Label::new(RichText::new(text).strong()).wrap());
+            }
             let red = |s: String| egui::Label::new(RichText::new(s).color(Color32::LIGHT_RED));
             if let Some([w, h]) = ic.size_mismatch {
                 let [iw, ih] = ic.size();
@@ -329,22 +344,29 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare) -> Vec<AppCommand> {
                     ),
                 };
                 ui.label(RichText::new(by).small());
+                if compare == Compare::Difference {
+                    legend(ui, lang);
+                }
                 if let Some(l) = &c.looks_like {
                     ui.add(egui::Label::new(RichText::new(l).italics()).wrap());
                 }
             }
-            if let Some(([x, y], reason)) = &ic.pin_reason {
-                let text = match reason {
-                    Some(r) => lang.tr_with(
-                        "compare_image.pinned_reason",
-                        &[("x", x), ("y", y), ("reason", r)],
-                    ),
-                    None => lang.tr_with("compare_image.pinned_agrees", &[("x", x), ("y", y)]),
-                };
-                ui.add(egui::Label::new(RichText::new(text).strong()).wrap());
-            }
         });
     out
+}
+
+/// The difference image's colours.
+fn legend(ui: &mut Ui, lang: Lang) {
+    ui.horizontal_wrapped(|ui| {
+        for (c, key) in [
+            ([255, 0, 255, 255], "compare_image.legend_only_image"),
+            ([0, 255, 255, 255], "compare_image.legend_only_barylab"),
+            ([255, 255, 0, 255], "compare_image.legend_colour"),
+        ] {
+            super::other_image::swatch(ui, c);
+            ui.label(RichText::new(lang.tr(key)).small());
+        }
+    });
 }
 
 /// "Worst pixel" and "First mismatch": each pins its pixel.

@@ -122,7 +122,7 @@ impl BaryApp {
                 &self.gpu_view,
             );
             if let Some(ic) = self.compare_image.as_ref().filter(|_| !self.presenting) {
-                out.extend(compare_image::strip_ui(ui, ic));
+                out.extend(compare_image::strip_ui(ui, ic, self.state.view.compare));
                 ui.separator();
             } else if let Some(g) = gpu.filter(|_| !self.presenting) {
                 let compare = self.state.view.compare;

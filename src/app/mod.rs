@@ -12,7 +12,9 @@
 //!   `image_size`, [`canvas`], `inspector`, `present`, `status`, `help`, [`export`],
 //!   [`bench_panel`] (with `bench_chart`), [`lessons`] (the Lessons panel, its
 //!   presentation strip and menu), `plots` (the pinned row's plot), [`gpu_view`] (barylab
-//!   beside this computer's OpenGL), `tie_rule`, and the keyboard `shortcuts`.
+//!   beside this computer's OpenGL; `other_image` shows its other image), [`compare_image`]
+//!   (File > Compare with image…: an image file as the other image), `tie_rule`, and the
+//!   keyboard `shortcuts`; `options` is [`AppOptions`].
 //! - Around them: `layout` (side panels, canvas, presentation card; `side_panels` is the
 //!   arithmetic), `history` (undo and redo), `access` (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), `render` (the
@@ -32,6 +34,8 @@ pub mod bench_panel;
 pub mod canvas;
 pub mod command;
 pub mod compare_image;
+mod options;
+pub use options::AppOptions;
 pub(crate) mod controls;
 pub(crate) mod dialog;
 pub mod edit;
@@ -90,45 +94,9 @@ use self::status::{Cause, FrameTiming, Message};
 use self::textures::{TextureCache, texture_key};
 use crate::i18n::Lang;
 use crate::raster::Texture;
-use crate::scene::Scene;
 
 /// For the terminal, in English like every command-line message.
 const SAVE_STATE_FAILED: &str = "could not save the app's state";
-
-/// How the app is started.
-#[derive(Clone, Debug, Default)]
-pub struct AppOptions {
-    /// A scene to open instead of the saved one, with the folder its texture paths are
-    /// relative to.
-    pub scene: Option<(Scene, PathBuf)>,
-    /// Save a screenshot of the first fully rendered frame to this PNG and exit.
-    pub screenshot: Option<PathBuf>,
-    /// A file opened on the command line ([`files::open`]), applied on start as if it had
-    /// been dropped on the window (an image becomes the restored scene's texture).
-    pub opened: Option<files::OpenedFile>,
-    /// Restore state on start and save it on exit.
-    pub persist: bool,
-    /// Initial window size in points.
-    pub window_size: Option<[f32; 2]>,
-    /// Start in presentation mode.
-    pub present: bool,
-    /// Start with this pixel pinned.
-    pub pin: Option<[u32; 2]>,
-    /// The language asked for on the command line (`--lang`): it wins over the saved one.
-    pub lang: Option<Lang>,
-    /// The system locale's language ([`Lang::detect`]), for a first start with nothing saved.
-    pub system_lang: Lang,
-    /// Behave as if no font with Chinese glyphs were installed (for tests).
-    pub no_cjk_font: bool,
-    /// Start at this text size (the interface zoom, as the text size slider sets it).
-    pub text_size: Option<f32>,
-    /// Start in a lesson, at this step (0-based).
-    pub lesson: Option<(crate::lesson::Lesson, usize)>,
-    /// Start in this comparison, with the GPU view on (`true`) or off (`--compare`).
-    pub compare: Option<(crate::figure::Compare, bool)>,
-    /// Start comparing this image with the render (`--compare-image`).
-    pub compare_image: Option<PathBuf>,
-}
 
 /// Errors that stop the app.
 #[derive(Debug, thiserror::Error)]

@@ -75,6 +75,9 @@ pub fn other_title(view: &GpuView, lang: Lang) -> String {
 pub fn relabel(overlay: &mut Overlay, lang: Lang, compare: Compare, view: &GpuView) {
     let gpu = other_title(view, lang);
     let right = match compare {
+        Compare::Difference if view.other_name.is_some() => {
+            lang.tr("compare_image.difference_title")
+        }
         Compare::Difference => lang.tr("gpu_view.difference_title"),
         _ => gpu,
     };
