@@ -92,6 +92,11 @@ struct Cli {
     /// render of the scene, as File > Compare with image… does.
     #[arg(long, value_name = "IMAGE")]
     compare_image: Option<PathBuf>,
+    /// With --compare-image: the image's background colour (black, white, #rrggbb or R,G,B);
+    /// other colours are covered (default: alpha if the image has transparency, else the
+    /// scene's background colour).
+    #[arg(long, value_parser = parse_color, value_name = "COLOR", requires = "compare_image")]
+    compare_background: Option<[u8; 3]>,
     /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
     /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
@@ -560,6 +565,7 @@ fn app(cli: &Cli) -> Result<()> {
         },
         compare: cli.compare,
         compare_image: cli.compare_image.clone(),
+        compare_background: cli.compare_background,
     };
     barylab::app::run(options)?;
     Ok(())

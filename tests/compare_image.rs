@@ -211,3 +211,31 @@ fn a_wrong_size_says_so_and_offers_the_images_size() {
     let m = h.state().message().expect("a message").to_string();
     assert!(m.contains("not a regular file"), "{m}");
 }
+
+#[test]
+fn a_chosen_background_colour_decides_coverage() {
+    let mut h = harness();
+    let dir = tempfile::tempdir().expect("tempdir");
+    // An opaque image on a white background, where barylab's background is dark: against
+    // the scene's background everything is covered; against white, the coverage is read.
+    let ours = canvas_colors(&h);
+    let bg = ours[0];
+    let white: Vec<[u8; 4]> = ours
+        .iter()
+        .map(|&p| if p == bg { [255, 255, 255, 255] } else { p })
+        .collect();
+    let path = dir.path().join("white.png");
+    write_png(&path, IMAGE, &white);
+    compare(&mut h, path);
+    let c = h
+        .state()
+        .compare_image()
+        .and_then(|ic| ic.comparison.clone())
+        .expect("compared");
+    assert!(c.only_theirs > 0, "{}", summary(&h));
+    h.state_mut()
+        .push(FileCommand::SetCompareBackground([255, 255, 255]));
+    h.run();
+    let s = summary(&h);
+    assert!(s.starts_with("No difference"), "{s}");
+}

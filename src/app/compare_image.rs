@@ -69,6 +69,10 @@ pub struct ImageCompare {
     reference: Option<Held>,
     /// The pinned pixel and why it differs (`None`: it agrees).
     pub pin_reason: Option<([u32; 2], Option<String>)>,
+    /// The image's background colour, chosen (`--compare-background`, the strip's colour
+    /// button): covered is any other colour, even where the image has alpha. `None`: alpha
+    /// when the image has transparency, else the scene's background colour.
+    pub background: Option<[u8; 3]>,
 }
 
 /// The scene as compared, kept for the pinned pixel's reason.
@@ -99,6 +103,15 @@ impl ImageCompare {
             key: None,
             reference: None,
             pin_reason: None,
+            background: None,
+        }
+    }
+
+    /// Sets the image's background colour; compares again on the next update.
+    pub fn set_background(&mut self, color: [u8; 3]) {
+        if self.background != Some(color) {
+            self.background = Some(color);
+            self.key = None;
         }
     }
 
@@ -150,7 +163,9 @@ impl ImageCompare {
             return;
         }
         self.size_mismatch = None;
-        let by = if self.image.has_transparency() {
+        let by = if let Some(c) = self.background {
+            CoverageBy::Background(c)
+        } else if self.image.has_transparency() {
             CoverageBy::Alpha
         } else {
             let b = settings.background;
@@ -292,8 +307,8 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
                 ))
                 .on_hover_text(ic.path.display().to_string());
             });
-            ui.horizontal_wrapped(|ui| {
-                if let Some(c) = &ic.comparison {
+            if let Some(c) = &ic.comparison {
+                ui.horizontal_wrapped(|ui| {
                     out.extend(buttons(ui, ic, c, lang));
                     let color = if c.agrees() {
                         Color32::LIGHT_GREEN
@@ -301,8 +316,8 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
                         Color32::from_rgb(255, 120, 255)
                     };
                     ui.label(RichText::new(summary(c, lang)).strong().color(color));
-                }
-            });
+                });
+            }
             if let Some(([x, y], reason)) = &ic.pin_reason {
                 let text = match reason {
                     Some(r) => lang.tr_with(
@@ -343,7 +358,19 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
                         &[("color", &format!("#{r:02x}{g:02x}{b:02x}"))],
                     ),
                 };
-                ui.label(RichText::new(by).small());
+                ui.horizontal_wrapped(|ui| {
+                    ui.label(RichText::new(by).small());
+                    let mut c = match c.coverage_by {
+                        CoverageBy::Background(c) => c,
+                        CoverageBy::Alpha => [0, 0, 0],
+                    };
+                    let r = ui
+                        .color_edit_button_srgb(&mut c)
+                        .on_hover_text(lang.tr("compare_image.background_tip"));
+                    if r.changed() {
+                        out.push(FileCommand::SetCompareBackground(c).into());
+                    }
+                });
                 if compare == Compare::Difference {
                     legend(ui, lang);
                 }

@@ -33,7 +33,8 @@ impl FilePicker {
             | FileCommand::Save
             | FileCommand::SaveTo(_)
             | FileCommand::CompareImage(_)
-            | FileCommand::CloseCompareImage => {}
+            | FileCommand::CloseCompareImage
+            | FileCommand::SetCompareBackground(_) => {}
         }
     }
 

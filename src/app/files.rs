@@ -46,6 +46,8 @@ pub enum FileCommand {
     CompareImage(PathBuf),
     /// Stop comparing with an image.
     CloseCompareImage,
+    /// The compared image's background colour: any other colour is covered.
+    SetCompareBackground([u8; 3]),
 }
 
 /// What opening a file changes.

@@ -229,6 +229,9 @@ impl BaryApp {
         };
         if let Some(path) = &options.compare_image {
             app.push(FileCommand::CompareImage(path.clone()));
+            if let Some(c) = options.compare_background {
+                app.push(FileCommand::SetCompareBackground(c));
+            }
         }
         if let Some(opened) = options.opened {
             app.opened(opened);
@@ -545,6 +548,11 @@ impl BaryApp {
             AppCommand::File(FileCommand::SaveTo(path)) => self.save_scene(&path),
             AppCommand::File(FileCommand::CompareImage(path)) => self.open_compare_image(&path),
             AppCommand::File(FileCommand::CloseCompareImage) => self.compare_image = None,
+            AppCommand::File(FileCommand::SetCompareBackground(c)) => {
+                if let Some(ic) = &mut self.compare_image {
+                    ic.set_background(c);
+                }
+            }
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
             AppCommand::SetPresenting(on) => self.presenting = on,

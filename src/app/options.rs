@@ -39,4 +39,6 @@ pub struct AppOptions {
     pub compare: Option<(crate::figure::Compare, bool)>,
     /// Start comparing this image with the render (`--compare-image`).
     pub compare_image: Option<PathBuf>,
+    /// With `compare_image`: the image's background colour (`--compare-background`).
+    pub compare_background: Option<[u8; 3]>,
 }
