@@ -43,7 +43,8 @@ Examples:
   barylab lesson builtin --list             the built-in lesson's steps
   barylab lesson builtin --step 9 --figure step9.png
   barylab lesson builtin --handout handout/ --lang zh
-  barylab --lesson builtin --step 9         open the app on a lesson step";
+  barylab --lesson builtin --step 9         open the app on a lesson step
+  barylab --compare-image out.png scene.json   open the app comparing out.png with the scene";
 
 /// barylab: see how a GPU interpolates across a triangle, pixel by pixel.
 #[derive(Parser, Debug)]
@@ -87,6 +88,15 @@ struct Cli {
     /// gpu-wipe, gpu-difference.
     #[arg(long, value_parser = parse_compare, value_name = "VIEW")]
     compare: Option<(barylab::figure::Compare, bool)>,
+    /// Start comparing this image (a student's rasterizer output, a screenshot) with barylab's
+    /// render of the scene, as File > Compare with image… does.
+    #[arg(long, value_name = "IMAGE")]
+    compare_image: Option<PathBuf>,
+    /// With --compare-image: the image's background colour (black, white, #rrggbb or R,G,B);
+    /// other colours are covered (default: alpha if the image has transparency, else the
+    /// scene's background colour).
+    #[arg(long, value_parser = parse_color, value_name = "COLOR", requires = "compare_image")]
+    compare_background: Option<[u8; 3]>,
     /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
     /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
@@ -554,6 +564,8 @@ fn app(cli: &Cli) -> Result<()> {
             None => None,
         },
         compare: cli.compare,
+        compare_image: cli.compare_image.clone(),
+        compare_background: cli.compare_background,
     };
     barylab::app::run(options)?;
     Ok(())

@@ -577,8 +577,7 @@ pub(crate) fn canvas_ui(
         .intersect(available);
         let mut shapes = overlay::build_in(&input_overlay, lang);
         if let Some(g) = input.gpu.filter(|_| gpu == Some(true)) {
-            let renderer = g.info.as_ref().map(|i| i.renderer.as_str());
-            gpu_view::relabel(&mut shapes, lang, view_settings.compare, renderer);
+            gpu_view::relabel(&mut shapes, lang, view_settings.compare, g);
         }
         paint::paint(&painter, clip, view.transform, &shapes);
     }

@@ -13,6 +13,7 @@ use crate::scene::IMAGE_EXTENSIONS;
 pub struct FilePicker {
     dialog: NativeDialog,
     save_dialog: NativeDialog,
+    compare_dialog: NativeDialog,
     pub path_window: PathWindow,
 }
 
@@ -24,12 +25,16 @@ impl FilePicker {
             FileCommand::OpenDialog => self.open_dialog(ctx),
             FileCommand::ShowPathWindow { dialog_failed } => self.path_window.show(*dialog_failed),
             FileCommand::SaveAsDialog => self.save_dialog(ctx),
+            FileCommand::CompareImageDialog => self.compare_dialog(ctx),
             FileCommand::ClosePathWindow => self.path_window.open = false,
             FileCommand::Open(_)
             | FileCommand::ClearRecent
             | FileCommand::DismissBanner
             | FileCommand::Save
-            | FileCommand::SaveTo(_) => {}
+            | FileCommand::SaveTo(_)
+            | FileCommand::CompareImage(_)
+            | FileCommand::CloseCompareImage
+            | FileCommand::SetCompareBackground(_) => {}
         }
     }
 
@@ -67,9 +72,23 @@ impl FilePicker {
         }
     }
 
+    /// Opens the native dialog for an image to compare with the render.
+    fn compare_dialog(&mut self, ctx: &egui::Context) {
+        let lang = super::locale::lang(ctx);
+        let opened = self.compare_dialog.open(ctx, "compare dialog", move || {
+            rfd::FileDialog::new()
+                .set_title(lang.tr("compare_image.dialog_title"))
+                .add_filter(lang.tr("app.file_menu.filter_image"), &IMAGE_EXTENSIONS)
+                .pick_file()
+        });
+        if opened.is_err() {
+            self.path_window.show(true);
+        }
+    }
+
     /// Whether a native dialog is open.
     pub fn waiting(&self) -> bool {
-        self.dialog.is_open() || self.save_dialog.is_open()
+        self.dialog.is_open() || self.save_dialog.is_open() || self.compare_dialog.is_open()
     }
 
     /// What the dialog's closing asks for: the picked file to open, or the typed-path window
@@ -79,6 +98,9 @@ impl FilePicker {
             Some(DialogOutcome::Picked(path)) => return Some(FileCommand::SaveTo(path)),
             Some(DialogOutcome::Failed) => self.path_window.show_save(true),
             Some(DialogOutcome::Cancelled) | None => {}
+        }
+        if let Some(DialogOutcome::Picked(path)) = self.compare_dialog.poll() {
+            return Some(FileCommand::CompareImage(path));
         }
         match self.dialog.poll()? {
             DialogOutcome::Picked(path) => Some(FileCommand::Open(path)),
@@ -131,6 +153,14 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
                 out.push(command);
                 ui.close();
             }
+        }
+        if ui
+            .button(lang.tr("compare_image.menu"))
+            .on_hover_text(lang.tr("compare_image.menu_tip"))
+            .clicked()
+        {
+            out.push(FileCommand::CompareImageDialog);
+            ui.close();
         }
         ui.separator();
         ui.label(RichText::new(lang.tr("app.file_menu.recent")).weak());

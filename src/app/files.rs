@@ -43,6 +43,14 @@ pub enum FileCommand {
     SaveAsDialog,
     /// Save the scene to this file.
     SaveTo(PathBuf),
+    /// Ask for an image to compare with the render (the native dialog).
+    CompareImageDialog,
+    /// Compare this image with the render ([`super::compare_image`]).
+    CompareImage(PathBuf),
+    /// Stop comparing with an image.
+    CloseCompareImage,
+    /// The compared image's background colour: any other colour is covered.
+    SetCompareBackground([u8; 3]),
 }
 
 /// What opening a file changes.

@@ -14,10 +14,14 @@ use std::sync::Arc;
 
 use egui::{Color32, RichText, Ui};
 
+use super::other_image::swatch;
+pub use super::other_image::{
+    GpuContent, badge_mode, content, pixel_colours_ui, relabel, render_compare, view_image,
+};
+
 use super::render::CanvasOutput;
 use super::state::Command;
 use crate::figure::Compare;
-use crate::figure::overlay::{Overlay, Shape, mode_label_in};
 use crate::i18n::Lang;
 use crate::raster::{Interpolation, Shading, Texture};
 
@@ -91,6 +95,9 @@ pub struct GpuView {
     pub fallback_mode: Interpolation,
     /// Print each new result's summary on standard output (`--screenshot` runs, for tests).
     pub print_summary: bool,
+    /// The other image's file name when it is an image file, not the GPU's
+    /// ([`super::compare_image`]).
+    pub other_name: Option<String>,
 }
 
 impl GpuView {
@@ -286,123 +293,6 @@ fn gpu_settings(
     (s, output, notes)
 }
 
-/// What one view of the canvas shows in the GPU view.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum GpuContent {
-    /// barylab's image.
-    Ours,
-    /// The GPU's image.
-    Gpu,
-    /// barylab's image left of the wipe line, the GPU's right of it.
-    Wipe,
-    /// The difference image of the two.
-    Difference,
-}
-
-/// The canvas's views in the GPU view, by the comparison chosen: Single shows the GPU's
-/// image, side by side barylab | GPU, the wipe barylab | GPU, the difference image.
-pub(crate) fn content(compare: Compare, index: usize) -> GpuContent {
-    match (compare, index) {
-        (Compare::Single, _) => GpuContent::Gpu,
-        (Compare::SideBySide, 0) => GpuContent::Ours,
-        (Compare::SideBySide, _) => GpuContent::Gpu,
-        (Compare::Wipe, _) => GpuContent::Wipe,
-        (Compare::Difference, _) => GpuContent::Difference,
-    }
-}
-
-/// The image of view `index`, or `None` when there is no GPU image (the canvas then shows
-/// barylab's).
-pub fn view_image(
-    view: &GpuView,
-    compare: Compare,
-    index: usize,
-    wipe_col: u32,
-) -> Option<egui::ColorImage> {
-    let r = view.result.as_ref()?;
-    let d = &r.diff;
-    let pixels = match content(compare, index) {
-        GpuContent::Ours => r.ours.clone(),
-        GpuContent::Gpu => r.gpu.clone(),
-        GpuContent::Wipe => crate::gpu::view::wipe(&r.ours, &r.gpu, d.width, wipe_col),
-        GpuContent::Difference => d.image.clone(),
-    };
-    let size = [d.width as usize, d.height as usize];
-    (pixels.len() == size[0] * size[1] && !pixels.is_empty()).then(|| {
-        egui::ColorImage::new(
-            size,
-            pixels
-                .iter()
-                .map(|c| Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
-                .collect(),
-        )
-    })
-}
-
-/// The overlay's title badges for the GPU view: the canvas builds the overlay as for the
-/// mode comparison (affine badge on the left view or wipe side, perspective on the right)
-/// and this names them barylab and the GPU instead.
-pub fn relabel(overlay: &mut Overlay, lang: Lang, compare: Compare, renderer: Option<&str>) {
-    let gpu = match renderer {
-        Some(r) => lang.tr_with("gpu_view.gpu_named", &[("renderer", &short(r))]),
-        None => lang.tr("gpu_view.gpu"),
-    };
-    let right = match compare {
-        Compare::Difference => lang.tr("gpu_view.difference_title"),
-        _ => gpu,
-    };
-    let (affine, perspective) = (
-        mode_label_in(Interpolation::Affine, lang),
-        mode_label_in(Interpolation::Perspective, lang),
-    );
-    for shape in &mut overlay.shapes {
-        if let Shape::Text { text, .. } = shape {
-            if *text == affine {
-                *text = lang.tr("gpu_view.barylab");
-            } else if *text == perspective {
-                *text = right.clone();
-            }
-        }
-    }
-}
-
-/// The mode badge of view `index` in the GPU view (`gpu`: whether there is a GPU image):
-/// the one [`relabel`] turns into the view's title, or the scene's mode when the views show
-/// barylab's image alone.
-pub fn badge_mode(
-    gpu: Option<bool>,
-    compare: Compare,
-    index: usize,
-    state: &super::state::AppState,
-) -> Interpolation {
-    match (gpu, content(compare, index)) {
-        (Some(true), GpuContent::Ours) => Interpolation::Affine,
-        (Some(true), _) => Interpolation::Perspective,
-        _ => state.options().mode,
-    }
-}
-
-/// The comparison the canvas renders for: the GPU view needs barylab in the scene's mode
-/// only.
-pub fn render_compare(gpu: Option<&GpuView>, compare: Compare) -> Compare {
-    match gpu {
-        Some(_) => Compare::Single,
-        None => compare,
-    }
-}
-
-/// A renderer string up to its first parenthesis ("llvmpipe (LLVM 15, 256 bits)" ->
-/// "llvmpipe"), at most 32 characters.
-fn short(renderer: &str) -> String {
-    let s = renderer.split(" (").next().unwrap_or(renderer).trim();
-    if s.chars().count() > 32 {
-        let cut: String = s.chars().take(31).collect();
-        format!("{cut}…")
-    } else {
-        s.to_string()
-    }
-}
-
 /// The one-line reason, in `lang`.
 pub fn reason(why: &Unavailable, lang: Lang) -> String {
     let r = match why {
@@ -442,47 +332,6 @@ fn note_text(note: Note, lang: Lang) -> String {
         }
         Note::Trilinear => lang.tr("gpu_view.note_trilinear"),
         Note::Wireframe => lang.tr("gpu_view.note_wireframe"),
-    }
-}
-
-fn hex(c: [u8; 4]) -> String {
-    format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2])
-}
-
-fn swatch(ui: &mut Ui, c: [u8; 4]) {
-    let h = ui.text_style_height(&egui::TextStyle::Body) * 0.8;
-    let (rect, _) = ui.allocate_exact_size(egui::vec2(h, h), egui::Sense::hover());
-    ui.painter()
-        .rect_filled(rect, 2.0, Color32::from_rgb(c[0], c[1], c[2]));
-    ui.painter().rect_stroke(
-        rect,
-        2.0,
-        egui::Stroke::new(1.0, Color32::GRAY),
-        egui::StrokeKind::Inside,
-    );
-}
-
-/// barylab's colour and the GPU's at `pixel`, for the inspector (nothing without a GPU
-/// image).
-pub fn pixel_colours_ui(ui: &mut Ui, view: &GpuView, [x, y]: [u32; 2]) {
-    let Some(r) = &view.result else {
-        return;
-    };
-    let k = (y as usize) * (r.diff.width as usize) + x as usize;
-    if let (Some(&ours), Some(&gpu)) = (r.ours.get(k), r.gpu.get(k)) {
-        let lang = super::locale::lang(ui.ctx());
-        ui.horizontal(|ui| {
-            swatch(ui, ours);
-            ui.monospace(format!("{} barylab", hex(ours)));
-        });
-        ui.horizontal_wrapped(|ui| {
-            swatch(ui, gpu);
-            ui.monospace(format!("{} GPU", hex(gpu)));
-            let d = (0..4).map(|i| ours[i].abs_diff(gpu[i])).max().unwrap_or(0);
-            if d > 0 {
-                ui.label(lang.tr_with("gpu_view.pixel_difference", &[("levels", &d)]));
-            }
-        });
     }
 }
 

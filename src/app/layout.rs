@@ -8,7 +8,7 @@ use super::canvas::{self, CanvasInput};
 use super::command::{self, AppCommand};
 use super::side_panels::{self, Fit};
 use super::textures::texture_key;
-use super::{BaryApp, controls, gpu_view, inspector, present, state};
+use super::{BaryApp, compare_image, controls, gpu_view, inspector, present, state};
 use crate::raster::Texture;
 
 /// Presentation mode: windows wider than this many heights get the card beside the canvas
@@ -93,7 +93,11 @@ impl BaryApp {
                                     self.reports.hover.as_ref(),
                                     self.reports.pin.as_ref(),
                                     self.lessons.open_sections.as_deref(),
-                                    self.state.view.gpu.then_some(&self.gpu_view),
+                                    compare_image::other_view(
+                                        self.compare_image.as_ref(),
+                                        self.state.view.gpu,
+                                        &self.gpu_view,
+                                    ),
                                 );
                                 if shown {
                                     self.lessons.open_sections = None;
@@ -112,8 +116,15 @@ impl BaryApp {
         out: &mut Vec<AppCommand>,
     ) {
         egui::CentralPanel::default().show(ui, |ui| {
-            let gpu = self.state.view.gpu.then_some(&self.gpu_view);
-            if let Some(g) = gpu.filter(|_| !self.presenting) {
+            let gpu = compare_image::other_view(
+                self.compare_image.as_ref(),
+                self.state.view.gpu,
+                &self.gpu_view,
+            );
+            if let Some(ic) = self.compare_image.as_ref().filter(|_| !self.presenting) {
+                out.extend(compare_image::strip_ui(ui, ic, self.state.view.compare));
+                ui.separator();
+            } else if let Some(g) = gpu.filter(|_| !self.presenting) {
                 let compare = self.state.view.compare;
                 out.extend(command::all(gpu_view::strip_ui(ui, g, compare)));
                 ui.separator();

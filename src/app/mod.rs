@@ -12,7 +12,9 @@
 //!   `image_size`, [`canvas`], `inspector`, `present`, `status`, `help`, [`export`],
 //!   [`bench_panel`] (with `bench_chart`), [`lessons`] (the Lessons panel, its
 //!   presentation strip and menu), `plots` (the pinned row's plot), [`gpu_view`] (barylab
-//!   beside this computer's OpenGL), `tie_rule`, and the keyboard `shortcuts`.
+//!   beside this computer's OpenGL; `other_image` shows its other image), [`compare_image`]
+//!   (File > Compare with image…: an image file as the other image), `tie_rule`, and the
+//!   keyboard `shortcuts`; `options` is [`AppOptions`].
 //! - Around them: `layout` (side panels, canvas, presentation card; `side_panels` is the
 //!   arithmetic), `history` (undo and redo), `access` (what tests read).
 //! - Behind the panels: [`files`] (opening a file, all checked first), `render` (the
@@ -31,6 +33,9 @@ pub(crate) mod bench_chart;
 pub mod bench_panel;
 pub mod canvas;
 pub mod command;
+pub mod compare_image;
+mod options;
+pub use options::AppOptions;
 pub(crate) mod controls;
 pub(crate) mod dialog;
 pub mod edit;
@@ -45,6 +50,7 @@ pub(crate) mod inspector;
 pub(crate) mod layout;
 pub mod lessons;
 pub(crate) mod locale;
+mod other_image;
 pub(crate) mod paint;
 pub(crate) mod path_window;
 pub mod persist;
@@ -88,43 +94,9 @@ use self::status::{Cause, FrameTiming, Message};
 use self::textures::{TextureCache, texture_key};
 use crate::i18n::Lang;
 use crate::raster::Texture;
-use crate::scene::Scene;
 
 /// For the terminal, in English like every command-line message.
 const SAVE_STATE_FAILED: &str = "could not save the app's state";
-
-/// How the app is started.
-#[derive(Clone, Debug, Default)]
-pub struct AppOptions {
-    /// A scene to open instead of the saved one, with the folder its texture paths are
-    /// relative to.
-    pub scene: Option<(Scene, PathBuf)>,
-    /// Save a screenshot of the first fully rendered frame to this PNG and exit.
-    pub screenshot: Option<PathBuf>,
-    /// A file opened on the command line ([`files::open`]), applied on start as if it had
-    /// been dropped on the window (an image becomes the restored scene's texture).
-    pub opened: Option<files::OpenedFile>,
-    /// Restore state on start and save it on exit.
-    pub persist: bool,
-    /// Initial window size in points.
-    pub window_size: Option<[f32; 2]>,
-    /// Start in presentation mode.
-    pub present: bool,
-    /// Start with this pixel pinned.
-    pub pin: Option<[u32; 2]>,
-    /// The language asked for on the command line (`--lang`): it wins over the saved one.
-    pub lang: Option<Lang>,
-    /// The system locale's language ([`Lang::detect`]), for a first start with nothing saved.
-    pub system_lang: Lang,
-    /// Behave as if no font with Chinese glyphs were installed (for tests).
-    pub no_cjk_font: bool,
-    /// Start at this text size (the interface zoom, as the text size slider sets it).
-    pub text_size: Option<f32>,
-    /// Start in a lesson, at this step (0-based).
-    pub lesson: Option<(crate::lesson::Lesson, usize)>,
-    /// Start in this comparison, with the GPU view on (`true`) or off (`--compare`).
-    pub compare: Option<(crate::figure::Compare, bool)>,
-}
 
 /// Errors that stop the app.
 #[derive(Debug, thiserror::Error)]
@@ -181,6 +153,8 @@ pub struct BaryApp {
     lessons: lessons::Lessons,
     /// The GPU view's context, GL objects and last comparison.
     gpu_view: gpu_view::GpuView,
+    /// The image compared with the canvas's render (File > Compare with image…).
+    compare_image: Option<compare_image::ImageCompare>,
 }
 
 impl BaryApp {
@@ -258,7 +232,14 @@ impl BaryApp {
             fonts: locale::Fonts::new(options.no_cjk_font),
             lessons: lessons::Lessons::default(),
             gpu_view: gpu_view::GpuView::new(options.screenshot.is_some()),
+            compare_image: None,
         };
+        if let Some(path) = &options.compare_image {
+            app.push(FileCommand::CompareImage(path.clone()));
+            if let Some(c) = options.compare_background {
+                app.push(FileCommand::SetCompareBackground(c));
+            }
+        }
         if let Some(opened) = options.opened {
             app.opened(opened);
         }
@@ -381,6 +362,9 @@ impl BaryApp {
         {
             ctx.request_repaint();
         }
+        if self.compare_image_frame(&texture) {
+            ctx.request_repaint();
+        }
 
         let reports_before = self.reports.key();
         let error = self.reports.update(
@@ -413,7 +397,11 @@ impl BaryApp {
             let gpu = self
                 .gpu_view
                 .settled(gpu_on, self.canvas.output.as_ref(), mode);
-            shot.step(&ctx, self.canvas.output.is_some() && gpu);
+            let image = self
+                .compare_image
+                .as_ref()
+                .is_none_or(|ic| ic.settled(self.canvas.output.as_ref(), mode));
+            shot.step(&ctx, self.canvas.output.is_some() && gpu && image);
         }
     }
 
@@ -516,6 +504,7 @@ impl BaryApp {
                     state::Command::Preset(p) => self.last_preset = Some(p),
                     state::Command::SetShowControls(true) => self.panel_first = Side::Controls,
                     state::Command::SetShowInspector(true) => self.panel_first = Side::Inspector,
+                    state::Command::SetGpuView(true) => self.compare_image = None,
                     _ => {}
                 }
                 // A new scene leaves every error about the old one behind.
@@ -564,6 +553,13 @@ impl BaryApp {
                 None => self.picker.apply(ctx, &FileCommand::SaveAsDialog),
             },
             AppCommand::File(FileCommand::SaveTo(path)) => self.save_scene(&path),
+            AppCommand::File(FileCommand::CompareImage(path)) => self.open_compare_image(&path),
+            AppCommand::File(FileCommand::CloseCompareImage) => self.compare_image = None,
+            AppCommand::File(FileCommand::SetCompareBackground(c)) => {
+                if let Some(ic) = &mut self.compare_image {
+                    ic.set_background(c);
+                }
+            }
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
             AppCommand::SetPresenting(on) => self.presenting = on,

@@ -1,0 +1,462 @@
+//! File > Compare with image… (and `barylab --compare-image IMAGE`): an image from a
+//! student's rasterizer, or a screenshot, against barylab's render of the canvas's scene, in
+//! the GPU view's compare modes (`other_image`): coverage by alpha, or by the scene's
+//! background colour when the image is opaque (as `barylab compare`), the summary, the worst
+//! and first mismatched pixels, and for the pinned pixel the reason from [`crate::compare`].
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Ui};
+
+use super::command::AppCommand;
+use super::files::FileCommand;
+use super::gpu_view::{GpuResult, GpuView};
+use super::render::CanvasOutput;
+use super::state::Command;
+use crate::compare::{self, Comparison, CoverageBy, Image, Reference, Rendered};
+use crate::figure::Compare;
+use crate::files::{FileKind, read_regular, shown};
+use crate::i18n::Lang;
+use crate::raster::{Interpolation, NO_TRIANGLE, Texture};
+
+/// Reads an image through the library's checked reader (a regular file, under the image size
+/// cap) and decodes it as RGBA8; the error is one line naming the file and the problem.
+pub fn read_image(path: &Path) -> Result<Image, String> {
+    let bytes = read_regular(path, FileKind::Image).map_err(|e| e.to_string())?;
+    let name = shown(path);
+    let fail = |e: &dyn std::fmt::Display| format!("cannot read image {name}: {e}");
+    let reader = image::ImageReader::new(std::io::Cursor::new(&bytes))
+        .with_guessed_format()
+        .map_err(|e| fail(&e))?;
+    if reader.format().is_none() {
+        return Err(fail(&"it is not a PNG, JPEG, BMP, TGA or WebP image"));
+    }
+    let (w, h) = image::ImageReader::new(std::io::Cursor::new(&bytes))
+        .with_guessed_format()
+        .map_err(|e| fail(&e))?
+        .into_dimensions()
+        .map_err(|e| fail(&e))?;
+    let max = crate::raster::project::MAX_IMAGE_SIZE;
+    if w == 0 || h == 0 || w > max || h > max {
+        return Err(fail(&format!(
+            "it is {w}x{h}; barylab renders 1x1 to {max}x{max}"
+        )));
+    }
+    let decoded = reader.decode().map_err(|e| fail(&e))?.to_rgba8();
+    Ok(Image {
+        width: w,
+        height: h,
+        pixels: decoded.pixels().map(|p| p.0).collect(),
+    })
+}
+
+/// An image being compared with the canvas's render.
+pub struct ImageCompare {
+    /// The file it was read from.
+    pub path: PathBuf,
+    image: Image,
+    /// The display (barylab's image, this image, the difference image), as the GPU view's.
+    pub view: GpuView,
+    /// The last comparison (`None` while the sizes differ).
+    pub comparison: Option<Comparison>,
+    /// The canvas's image size when it is not the image's.
+    pub size_mismatch: Option<[u32; 2]>,
+    /// Why the comparison failed (the renderer's or the probe's message).
+    pub error: Option<String>,
+    key: Option<(u64, Interpolation)>,
+    /// What the pinned pixel's reason needs.
+    reference: Option<Held>,
+    /// The pinned pixel and why it differs (`None`: it agrees).
+    pub pin_reason: Option<([u32; 2], Option<String>)>,
+    /// The image's background colour, chosen (`--compare-background`, the strip's colour
+    /// button): covered is any other colour, even where the image has alpha. `None`: alpha
+    /// when the image has transparency, else the scene's background colour.
+    pub background: Option<[u8; 3]>,
+}
+
+/// The scene as compared, kept for the pinned pixel's reason.
+struct Held {
+    scene: crate::scene::Scene,
+    mesh: crate::raster::ClipMesh,
+    texture: Arc<Texture>,
+    settings: crate::raster::RenderSettings,
+    render: crate::raster::render::Render,
+    by: CoverageBy,
+}
+
+impl ImageCompare {
+    /// A comparison of `image` (read from `path`), made on the next [`ImageCompare::update`].
+    pub fn new(path: PathBuf, image: Image, print_summary: bool) -> Self {
+        let name = path
+            .file_name()
+            .map_or_else(|| shown(&path), |n| n.to_string_lossy().into_owned());
+        let mut view = GpuView::new(print_summary);
+        view.other_name = Some(name);
+        Self {
+            path,
+            image,
+            view,
+            comparison: None,
+            size_mismatch: None,
+            error: None,
+            key: None,
+            reference: None,
+            pin_reason: None,
+            background: None,
+        }
+    }
+
+    /// Sets the image's background colour; compares again on the next update.
+    pub fn set_background(&mut self, color: [u8; 3]) {
+        if self.background != Some(color) {
+            self.background = Some(color);
+            self.key = None;
+        }
+    }
+
+    /// The image's size.
+    pub fn size(&self) -> [u32; 2] {
+        [self.image.width, self.image.height]
+    }
+
+    /// Whether the comparison is made for the canvas's current render.
+    pub fn settled(&self, output: Option<&CanvasOutput>, mode: Interpolation) -> bool {
+        output.is_some_and(|o| self.key == Some((o.generation, mode)))
+    }
+
+    /// Once per frame: compares again when the canvas rendered anew or the mode changed, and
+    /// finds the pinned pixel's reason when the pin moved. Returns whether anything changed.
+    pub fn update(
+        &mut self,
+        output: Option<&CanvasOutput>,
+        mode: Interpolation,
+        texture: &Arc<Texture>,
+        pinned: Option<[u32; 2]>,
+    ) -> bool {
+        let mut changed = false;
+        if let Some(out) = output
+            && self.key != Some((out.generation, mode))
+        {
+            self.key = Some((out.generation, mode));
+            self.compare(out, mode, texture);
+            self.pin_reason = None;
+            changed = true;
+        }
+        if self.pin_reason.as_ref().map(|p| p.0) != pinned {
+            self.pin_reason = pinned.map(|p| (p, self.reason_at(p)));
+            changed = true;
+        }
+        changed
+    }
+
+    fn compare(&mut self, out: &CanvasOutput, mode: Interpolation, texture: &Arc<Texture>) {
+        self.view.result = None;
+        self.comparison = None;
+        self.reference = None;
+        self.error = None;
+        self.view.generation += 1;
+        let mut settings = out.scene.settings();
+        settings.mode = mode;
+        if [settings.width, settings.height] != self.size() {
+            self.size_mismatch = Some([settings.width, settings.height]);
+            return;
+        }
+        self.size_mismatch = None;
+        let by = if let Some(c) = self.background {
+            CoverageBy::Background(c)
+        } else if self.image.has_transparency() {
+            CoverageBy::Alpha
+        } else {
+            let b = settings.background;
+            CoverageBy::Background([b[0], b[1], b[2]])
+        };
+        let mesh = out.scene.to_mesh();
+        let made = (|| {
+            let reference = Reference {
+                scene: &out.scene,
+                mesh: &mesh,
+                texture,
+                settings,
+            };
+            let tol = compare::DEFAULT_TOLERANCE;
+            let c = compare::compare(&self.image, &reference, by, tol)?;
+            let diff = compare::difference_image(&self.image, &reference, by, tol)?;
+            let render =
+                crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
+            Ok::<_, String>((c, diff, render))
+        })();
+        let (c, diff, render) = match made {
+            Ok(m) => m,
+            Err(e) => {
+                self.error = Some(format!("{}: {e}", shown(&self.path)));
+                return;
+            }
+        };
+        let first = c.first.first().map(|p| p.pixel);
+        let worst = c.max_color_at.filter(|_| c.color_differing > 0).or(first);
+        let image_diff = crate::gpu::view::ImageDiff {
+            width: c.width,
+            height: c.height,
+            pixels: c.pixels,
+            covered: c.covered,
+            only_gpu: c.only_theirs,
+            only_barylab: c.only_ours,
+            triangle_mismatches: 0,
+            color_differing: c.color_differing,
+            max_color_difference: c.max_color_difference,
+            worst,
+            image: diff.pixels().map(|p| p.0).collect(),
+        };
+        if self.view.print_summary {
+            println!("image compare: {}", summary(&c, Lang::En));
+        }
+        self.view.result = Some(GpuResult {
+            ours: render.frame.color.clone(),
+            gpu: self.image.pixels.clone(),
+            diff: image_diff,
+            notes: Vec::new(),
+        });
+        self.comparison = Some(c);
+        self.reference = Some(Held {
+            scene: out.scene.clone(),
+            mesh,
+            texture: Arc::clone(texture),
+            settings,
+            render,
+            by,
+        });
+    }
+
+    /// Why pixel `p` differs (`None` when it agrees or the reason cannot be found).
+    fn reason_at(&self, p: [u32; 2]) -> Option<String> {
+        let (c, h) = (self.comparison.as_ref()?, self.reference.as_ref()?);
+        if let Some(listed) = c.first.iter().find(|d| d.pixel == p) {
+            return Some(listed.reason.clone());
+        }
+        let k = (p[1] as usize) * (c.width as usize) + p[0] as usize;
+        let theirs = *self.image.pixels.get(k)?;
+        let frame = &h.render.frame;
+        let rendered = Rendered {
+            color: frame.color.clone(),
+            covered: frame.triangle.iter().map(|&t| t != NO_TRIANGLE).collect(),
+        };
+        let d = compare::classify(theirs, &rendered, k, h.by, c.tolerance)?;
+        let best = c
+            .hypotheses
+            .iter()
+            .filter(|t| t.differing * 2 < c.differing())
+            .min_by_key(|t| t.differing);
+        if let Some(t) = best.filter(|t| !t.differs_at(k)) {
+            return Some(t.pixel_reason(k, frame, &h.texture));
+        }
+        let reference = Reference {
+            scene: &h.scene,
+            mesh: &h.mesh,
+            texture: &h.texture,
+            settings: h.settings,
+        };
+        let context = compare::reasons::Context::new(&reference, &h.render, h.by, c.tolerance);
+        Some(match context.and_then(|cx| cx.reason(p, d, theirs)) {
+            Ok(r) => r,
+            Err(e) => e,
+        })
+    }
+}
+
+/// The summary: "N pixels differ in coverage, M in colour; largest colour difference K
+/// levels", or that the images agree.
+pub fn summary(c: &Comparison, lang: Lang) -> String {
+    if c.agrees() {
+        return lang.tr_with("compare_image.identical", &[("total", &c.pixels)]);
+    }
+    lang.tr_with(
+        "compare_image.summary",
+        &[
+            ("coverage", &(c.only_theirs + c.only_ours)),
+            ("colour", &c.color_differing),
+            ("max", &c.max_color_difference),
+        ],
+    )
+}
+
+/// The strip above the canvas while an image is compared: the file, the summary, the worst
+/// and first mismatch buttons, the pinned pixel's reason, the size message, and Close.
+pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppCommand> {
+    let lang = super::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    let body = ui.text_style_height(&egui::TextStyle::Body);
+    let max = (ui.available_height() * 0.3).max(body * 4.0);
+    // A solid scroll bar, so that a strip that scrolls shows it does.
+    ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
+    egui::ScrollArea::vertical()
+        .id_salt("compare-image-strip")
+        .max_height(max)
+        .auto_shrink([false, true])
+        .show(ui, |ui| {
+            ui.horizontal_wrapped(|ui| {
+                if ui
+                    .button(lang.tr("compare_image.close"))
+                    .on_hover_text(lang.tr("compare_image.close_tip"))
+                    .clicked()
+                {
+                    out.push(FileCommand::CloseCompareImage.into());
+                }
+                ui.label(RichText::new(
+                    lang.tr_with("compare_image.title", &[("file", &shown(&ic.path))]),
+                ))
+                .on_hover_text(ic.path.display().to_string());
+            });
+            if let Some(c) = &ic.comparison {
+                ui.horizontal_wrapped(|ui| {
+                    out.extend(buttons(ui, ic, c, lang));
+                    let color = if c.agrees() {
+                        Color32::LIGHT_GREEN
+                    } else {
+                        Color32::from_rgb(255, 120, 255)
+                    };
+                    ui.label(RichText::new(summary(c, lang)).strong().color(color));
+                });
+            }
+            if let Some(([x, y], reason)) = &ic.pin_reason {
+                let text = match reason {
+                    Some(r) => lang.tr_with(
+                        "compare_image.pinned_reason",
+                        &[("x", x), ("y", y), ("reason", r)],
+                    ),
+                    None => lang.tr_with("compare_image.pinned_agrees", &[("x", x), ("y", y)]),
+                };
+                ui.add(egui::Label::new(RichText::new(text).strong()).wrap());
+            }
+            let red = |s: String| egui::Label::new(RichText::new(s).color(Color32::LIGHT_RED));
+            if let Some([w, h]) = ic.size_mismatch {
+                let [iw, ih] = ic.size();
+                ui.horizontal_wrapped(|ui| {
+                    ui.add(red(lang.tr_with(
+                        "compare_image.wrong_size",
+                        &[
+                            ("file", &shown(&ic.path)),
+                            ("image", &format!("{iw}×{ih}")),
+                            ("canvas", &format!("{w}×{h}")),
+                        ],
+                    )));
+                    let set =
+                        lang.tr_with("compare_image.set_size", &[("size", &format!("{iw}×{ih}"))]);
+                    if ui.button(set).clicked() {
+                        out.push(Command::SetImageSize(Some([iw, ih])).into());
+                    }
+                });
+            }
+            if let Some(e) = &ic.error {
+                ui.add(red(e.clone()).wrap());
+            }
+            if let Some(c) = &ic.comparison {
+                let by = match c.coverage_by {
+                    CoverageBy::Alpha => lang.tr("compare_image.by_alpha"),
+                    CoverageBy::Background([r, g, b]) => lang.tr_with(
+                        "compare_image.by_background",
+                        &[("color", &format!("#{r:02x}{g:02x}{b:02x}"))],
+                    ),
+                };
+                ui.horizontal_wrapped(|ui| {
+                    ui.label(RichText::new(by).small());
+                    let mut c = match c.coverage_by {
+                        CoverageBy::Background(c) => c,
+                        CoverageBy::Alpha => [0, 0, 0],
+                    };
+                    let r = ui
+                        .color_edit_button_srgb(&mut c)
+                        .on_hover_text(lang.tr("compare_image.background_tip"));
+                    if r.changed() {
+                        out.push(FileCommand::SetCompareBackground(c).into());
+                    }
+                });
+                if compare == Compare::Difference {
+                    legend(ui, lang);
+                }
+                if let Some(l) = &c.looks_like {
+                    ui.add(egui::Label::new(RichText::new(l).italics()).wrap());
+                }
+            }
+        });
+    out
+}
+
+/// The difference image's colours.
+fn legend(ui: &mut Ui, lang: Lang) {
+    ui.horizontal_wrapped(|ui| {
+        for (c, key) in [
+            ([255, 0, 255, 255], "compare_image.legend_only_image"),
+            ([0, 255, 255, 255], "compare_image.legend_only_barylab"),
+            ([255, 255, 0, 255], "compare_image.legend_colour"),
+        ] {
+            super::other_image::swatch(ui, c);
+            ui.label(RichText::new(lang.tr(key)).small());
+        }
+    });
+}
+
+/// "Worst pixel" and "First mismatch": each pins its pixel.
+fn buttons(ui: &mut Ui, ic: &ImageCompare, c: &Comparison, lang: Lang) -> Vec<AppCommand> {
+    let worst = ic.view.result.as_ref().and_then(|r| r.diff.worst);
+    let first = c.first.first().map(|d| d.pixel);
+    let mut out = Vec::new();
+    for (p, key, tip) in [
+        (worst, "gpu_view.worst", "gpu_view.worst_tip"),
+        (first, "compare_image.first", "compare_image.first_tip"),
+    ] {
+        let r = ui
+            .add_enabled(p.is_some(), egui::Button::new(lang.tr(key)))
+            .on_hover_text(lang.tr(tip))
+            .on_disabled_hover_text(lang.tr("compare_image.no_mismatch"));
+        if r.clicked() {
+            out.push(Command::Pin(p).into());
+        }
+    }
+    out
+}
+
+/// The other image the canvas shows: the compared image's, else the GPU's when the GPU view
+/// is on (`gpu_on`).
+pub(super) fn other_view<'a>(
+    image: Option<&'a ImageCompare>,
+    gpu_on: bool,
+    gpu: &'a GpuView,
+) -> Option<&'a GpuView> {
+    match image {
+        Some(ic) => Some(&ic.view),
+        None => gpu_on.then_some(gpu),
+    }
+}
+
+impl super::BaryApp {
+    /// Reads `path` and compares it with the canvas's render from the next frame on (the GPU
+    /// view goes off); a bad file leaves a one-line error naming it.
+    pub(super) fn open_compare_image(&mut self, path: &Path) {
+        match read_image(path) {
+            Ok(image) => {
+                let print = self.gpu_view.print_summary;
+                self.compare_image = Some(ImageCompare::new(path.to_path_buf(), image, print));
+                self.state.view.gpu = false;
+                if self.message.as_ref().is_some_and(|m| m.error) {
+                    self.message = None;
+                }
+            }
+            Err(e) => self.message = Some(super::status::Message::error(e, None)),
+        }
+    }
+
+    /// The image comparison, when an image is being compared.
+    pub fn compare_image(&self) -> Option<&ImageCompare> {
+        self.compare_image.as_ref()
+    }
+
+    /// Once per frame: the comparison for the current render. Returns whether it changed.
+    pub(super) fn compare_image_frame(&mut self, texture: &Arc<Texture>) -> bool {
+        let (mode, pinned) = (self.state.options().mode, self.state.view.pinned);
+        let out = self.canvas.output.as_ref();
+        self.compare_image
+            .as_mut()
+            .is_some_and(|ic| ic.update(out, mode, texture, pinned))
+    }
+}

@@ -1,0 +1,241 @@
+//! File > Compare with image… in the app, driven through egui_kittest: barylab's own render
+//! agrees; a few changed pixels and an affine render are found, with reasons; a wrong size
+//! says so and offers the image's size; clicking a mismatched pixel pins it with its reason.
+
+use std::path::{Path, PathBuf};
+
+use barylab::app::files::FileCommand;
+use barylab::app::state::Command as AppCmd;
+use barylab::app::{AppOptions, BaryApp};
+use barylab::raster::Interpolation;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use glam::DVec2;
+
+const SIZE: egui::Vec2 = egui::vec2(1280.0, 800.0);
+const IMAGE: [u32; 2] = [160, 120];
+
+fn harness() -> Harness<'static, BaryApp> {
+    let app = BaryApp::new(None, AppOptions::default());
+    let mut h = Harness::builder()
+        .with_size(SIZE)
+        .with_max_steps(30)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    h.run();
+    h.state_mut().push(AppCmd::SetImageSize(Some(IMAGE)));
+    h.run();
+    h
+}
+
+/// The canvas's current render, as the app shows it.
+fn canvas_colors(h: &Harness<'_, BaryApp>) -> Vec<[u8; 4]> {
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    assert_eq!(out.size, IMAGE);
+    let mode = h.state().state().options().mode;
+    out.render(mode).expect("a render").frame.color.clone()
+}
+
+fn write_png(path: &Path, size: [u32; 2], pixels: &[[u8; 4]]) {
+    let img = image::RgbaImage::from_fn(size[0], size[1], |x, y| {
+        image::Rgba(pixels[(y * size[0] + x) as usize])
+    });
+    img.save(path).expect("png written");
+}
+
+fn compare(h: &mut Harness<'_, BaryApp>, path: PathBuf) {
+    h.state_mut().push(FileCommand::CompareImage(path));
+    h.run();
+}
+
+fn summary(h: &Harness<'_, BaryApp>) -> String {
+    let ic = h.state().compare_image().expect("comparing");
+    let c = ic.comparison.as_ref().expect("compared");
+    barylab::app::compare_image::summary(c, barylab::i18n::Lang::En)
+}
+
+#[test]
+fn barylabs_own_render_agrees_and_a_changed_one_differs() {
+    let mut h = harness();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let ours = canvas_colors(&h);
+    let same = dir.path().join("same.png");
+    write_png(&same, IMAGE, &ours);
+    compare(&mut h, same);
+    assert!(h.state().compare_image().is_some());
+    let s = summary(&h);
+    assert!(s.starts_with("No difference"), "{s}");
+    h.get_by_label(&s);
+    // The canvas shows the comparison in every mode; the strip's Close leaves it.
+    for label in ["Side by side", "Wipe", "Difference", "Single"] {
+        h.get_by_label(label).click();
+        h.run();
+        assert!(h.state().canvas().error.is_none(), "{label}");
+    }
+
+    // A few pixels changed: found, with the largest difference.
+    let mut changed = ours.clone();
+    let covered: Vec<usize> = (0..ours.len()).filter(|&k| ours[k] != ours[0]).collect();
+    assert!(covered.len() > 100);
+    for k in [
+        covered[10],
+        covered[covered.len() / 2],
+        covered[covered.len() - 10],
+    ] {
+        changed[k] = [changed[k][0] ^ 0x40, changed[k][1], changed[k][2], 255];
+    }
+    let path = dir.path().join("changed.png");
+    write_png(&path, IMAGE, &changed);
+    compare(&mut h, path);
+    let c = h
+        .state()
+        .compare_image()
+        .and_then(|ic| ic.comparison.clone())
+        .expect("compared");
+    assert!(!c.agrees());
+    assert!(
+        c.differing() >= 1 && c.differing() <= 3,
+        "{}",
+        c.differing()
+    );
+    let s = summary(&h);
+    assert!(s.contains("largest colour difference 64 levels"), "{s}");
+
+    // "First mismatch" pins the first changed pixel, with its reason in the strip.
+    h.get_by_label("First mismatch").click();
+    h.run();
+    h.run();
+    let first = c.first[0].pixel;
+    assert_eq!(h.state().state().view.pinned, Some(first));
+    let pinned = format!("Pinned ({}, {}):", first[0], first[1]);
+    assert!(h.query_by_label_contains(&pinned).is_some(), "{pinned}");
+
+    h.get_by_label("Close comparison").click();
+    h.run();
+    assert!(h.state().compare_image().is_none());
+}
+
+/// Screen position (points) of the centre of rendered pixel `p` in view 0.
+fn pixel_centre(h: &Harness<'_, BaryApp>, p: [u32; 2]) -> egui::Pos2 {
+    let view = h.state().canvas().views[0];
+    view.transform
+        .to_screen(DVec2::new(f64::from(p[0]) + 0.5, f64::from(p[1]) + 0.5))
+}
+
+#[test]
+fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
+    let mut h = harness();
+    h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
+    h.run();
+    let affine = canvas_colors(&h);
+    h.state_mut()
+        .push(AppCmd::SetMode(Interpolation::Perspective));
+    h.run();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("affine.png");
+    write_png(&path, IMAGE, &affine);
+    compare(&mut h, path);
+    let c = h
+        .state()
+        .compare_image()
+        .and_then(|ic| ic.comparison.clone())
+        .expect("compared");
+    assert!(c.color_differing > 0);
+    let looks = c.looks_like.clone().unwrap_or_default();
+    assert!(looks.contains("affine"), "{looks}");
+    assert!(
+        h.query_by_label_contains("looks like affine").is_some(),
+        "the verdict is in the strip"
+    );
+
+    // Click a mismatched pixel in the canvas: it is pinned, with its reason.
+    // The differing pixel nearest the image's centre (away from the vertex handles).
+    let ours = canvas_colors(&h);
+    let w = IMAGE[0] as usize;
+    let k = (0..ours.len())
+        .filter(|&k| (0..3).any(|i| ours[k][i].abs_diff(affine[k][i]) > 2))
+        .min_by_key(|&k| {
+            (k % w).abs_diff(w / 2).pow(2) + (k / w).abs_diff(IMAGE[1] as usize / 2).pow(2)
+        })
+        .expect("a colour difference");
+    let p = [(k % w) as u32, (k / w) as u32];
+    h.run();
+    let pos = pixel_centre(&h, p);
+    assert!(h.state().canvas().views[0].rect.contains(pos), "{pos:?}");
+    h.hover_at(pos);
+    h.run();
+    assert_eq!(h.state().canvas().hover, Some(p), "hovered");
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+    }
+    h.run();
+    assert_eq!(h.state().state().view.pinned, Some(p));
+    let reason = h
+        .state()
+        .compare_image()
+        .and_then(|ic| ic.pin_reason.clone())
+        .and_then(|(_, r)| r)
+        .expect("a reason for the pinned pixel");
+    assert!(reason.contains("affine"), "{reason}");
+}
+
+#[test]
+fn a_wrong_size_says_so_and_offers_the_images_size() {
+    let mut h = harness();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("small.png");
+    write_png(&path, [32, 24], &vec![[0, 0, 0, 255]; 32 * 24]);
+    compare(&mut h, path);
+    let ic = h.state().compare_image().expect("loaded");
+    assert_eq!(ic.size_mismatch, Some(IMAGE));
+    assert!(ic.comparison.is_none());
+    h.get_by_label_contains("small.png is 32×24, but the canvas image is 160×120");
+    h.get_by_label("Set the image size to 32×24").click();
+    h.run();
+    assert_eq!(h.state().state().scene.size(), (32, 24));
+    let ic = h.state().compare_image().expect("still comparing");
+    assert_eq!(ic.size_mismatch, None);
+    assert!(ic.comparison.is_some());
+
+    // Not an image, and a folder: a message naming the file, no panic.
+    let bad = dir.path().join("notes.png");
+    std::fs::write(&bad, b"not a png").expect("written");
+    compare(&mut h, bad);
+    let m = h.state().message().expect("a message").to_string();
+    assert!(m.contains("notes.png"), "{m}");
+    compare(&mut h, dir.path().to_path_buf());
+    let m = h.state().message().expect("a message").to_string();
+    assert!(m.contains("not a regular file"), "{m}");
+}
+
+#[test]
+fn a_chosen_background_colour_decides_coverage() {
+    let mut h = harness();
+    let dir = tempfile::tempdir().expect("tempdir");
+    // An opaque image on a white background, where barylab's background is dark: against
+    // the scene's background everything is covered; against white, the coverage is read.
+    let ours = canvas_colors(&h);
+    let bg = ours[0];
+    let white: Vec<[u8; 4]> = ours
+        .iter()
+        .map(|&p| if p == bg { [255, 255, 255, 255] } else { p })
+        .collect();
+    let path = dir.path().join("white.png");
+    write_png(&path, IMAGE, &white);
+    compare(&mut h, path);
+    let c = h
+        .state()
+        .compare_image()
+        .and_then(|ic| ic.comparison.clone())
+        .expect("compared");
+    assert!(c.only_theirs > 0, "{}", summary(&h));
+    h.state_mut()
+        .push(FileCommand::SetCompareBackground([255, 255, 255]));
+    h.run();
+    let s = summary(&h);
+    assert!(s.starts_with("No difference"), "{s}");
+}
