@@ -16,39 +16,14 @@ use super::render::CanvasOutput;
 use super::state::Command;
 use crate::compare::{self, Comparison, CoverageBy, Image, Reference, Rendered};
 use crate::figure::Compare;
-use crate::files::{FileKind, read_regular, shown};
+use crate::files::shown;
 use crate::i18n::Lang;
 use crate::raster::{Interpolation, NO_TRIANGLE, Texture};
 
-/// Reads an image through the library's checked reader (a regular file, under the image size
-/// cap) and decodes it as RGBA8; the error is one line naming the file and the problem.
+/// Reads an image through the library's checked reader ([`compare::read_image`]); the error
+/// is one line naming the file and the problem.
 pub fn read_image(path: &Path) -> Result<Image, String> {
-    let bytes = read_regular(path, FileKind::Image).map_err(|e| e.to_string())?;
-    let name = shown(path);
-    let fail = |e: &dyn std::fmt::Display| format!("cannot read image {name}: {e}");
-    let reader = image::ImageReader::new(std::io::Cursor::new(&bytes))
-        .with_guessed_format()
-        .map_err(|e| fail(&e))?;
-    if reader.format().is_none() {
-        return Err(fail(&"it is not a PNG, JPEG, BMP, TGA or WebP image"));
-    }
-    let (w, h) = image::ImageReader::new(std::io::Cursor::new(&bytes))
-        .with_guessed_format()
-        .map_err(|e| fail(&e))?
-        .into_dimensions()
-        .map_err(|e| fail(&e))?;
-    let max = crate::raster::project::MAX_IMAGE_SIZE;
-    if w == 0 || h == 0 || w > max || h > max {
-        return Err(fail(&format!(
-            "it is {w}x{h}; barylab renders 1x1 to {max}x{max}"
-        )));
-    }
-    let decoded = reader.decode().map_err(|e| fail(&e))?.to_rgba8();
-    Ok(Image {
-        width: w,
-        height: h,
-        pixels: decoded.pixels().map(|p| p.0).collect(),
-    })
+    compare::read_image(path, |_, _| Ok(()))
 }
 
 /// An image being compared with the canvas's render.

@@ -3,9 +3,9 @@
 use std::io::Cursor;
 use std::path::Path;
 
-use anyhow::{Result, bail};
+use anyhow::Result;
 use barylab::compare::{self, Comparison, CoverageBy, Difference, Image, Reference};
-use barylab::files::{self, FileKind, shown};
+use barylab::files::{self, shown};
 
 use super::CompareArgs;
 use super::commands::{inputs, prepare};
@@ -75,37 +75,21 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
 
 /// Reads the image, checking its size against the scene's before decoding it.
 fn read_image(path: &Path, size: (u32, u32), scene: &Path) -> Result<Image> {
-    let bytes = files::read_regular(path, FileKind::Image)?;
     let name = shown(path);
-    let reader = image::ImageReader::new(Cursor::new(&bytes))
-        .with_guessed_format()
-        .map_err(|e| anyhow::anyhow!("cannot read image {name}: {e}"))?;
-    if reader.format().is_none() {
-        bail!("cannot read image {name}: it is not a PNG, JPEG, BMP, TGA or WebP image");
-    }
-    let (w, h) = image::ImageReader::new(Cursor::new(&bytes))
-        .with_guessed_format()
-        .map_err(|e| anyhow::anyhow!("cannot read image {name}: {e}"))?
-        .into_dimensions()
-        .map_err(|e| anyhow::anyhow!("cannot read image {name}: {e}"))?;
-    if (w, h) != size {
-        bail!(
-            "image {name} is {w}x{h}, but {} renders {}x{}: compare images of the same size \
-             (or render the scene at {w}x{h} with --size {w}x{h})",
-            shown(scene),
-            size.0,
-            size.1
-        );
-    }
-    let decoded = reader
-        .decode()
-        .map_err(|e| anyhow::anyhow!("cannot read image {name}: {e}"))?
-        .to_rgba8();
-    Ok(Image {
-        width: w,
-        height: h,
-        pixels: decoded.pixels().map(|p| p.0).collect(),
+    compare::read_image(path, |w, h| {
+        if (w, h) == size {
+            Ok(())
+        } else {
+            Err(format!(
+                "image {name} is {w}x{h}, but {} renders {}x{}: compare images of the same size \
+                 (or render the scene at {w}x{h} with --size {w}x{h})",
+                shown(scene),
+                size.0,
+                size.1
+            ))
+        }
     })
+    .map_err(anyhow::Error::msg)
 }
 
 fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>) -> String {

@@ -7,8 +7,11 @@
 //! interpolation, pixel centres at integer coordinates) are tried by rendering or
 //! transforming barylab's image that way and counting what still differs ([`hypotheses`]).
 
+mod file;
 pub mod hypotheses;
 pub mod reasons;
+
+pub use file::read_image;
 
 use serde::Serialize;
 
