@@ -4,8 +4,7 @@
 //! Mesa's llvmpipe and finds the same coverage as barylab.
 
 use std::path::PathBuf;
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::process::Command;
 
 mod common;
 use common::xvfb::{start_xvfb, xvfb_or_skip};
@@ -185,41 +184,9 @@ fn the_tie_rule_is_chosen_in_the_controls_saved_in_the_scene_and_named_by_the_in
 
 // The real window under Xvfb.
 
-/// How long the app may take to open, draw and save its screenshot.
-const APP_TIMEOUT: Duration = Duration::from_secs(120);
-
 /// Runs the app; returns (success, stdout, stderr).
 fn run_app(display: &str, args: &[&str]) -> (bool, String, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_barylab"))
-        .args(args)
-        .env("DISPLAY", display)
-        .env_remove("WAYLAND_DISPLAY")
-        .env("LIBGL_ALWAYS_SOFTWARE", "1")
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start barylab");
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().expect("wait") {
-            break s;
-        }
-        if start.elapsed() > APP_TIMEOUT {
-            let _ = child.kill();
-            panic!("barylab did not exit within {APP_TIMEOUT:?}");
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    let read = |r: Option<&mut dyn std::io::Read>| {
-        let mut s = String::new();
-        if let Some(r) = r {
-            let _ = r.read_to_string(&mut s);
-        }
-        s
-    };
-    let out = read(child.stdout.as_mut().map(|r| r as &mut dyn std::io::Read));
-    let err = read(child.stderr.as_mut().map(|r| r as &mut dyn std::io::Read));
-    (status.success(), out, err)
+    common::xvfb::run_app(display, args, &[])
 }
 
 /// The last "gpu view: coverage identical on N of M pixels; ..." line: (N, M, K).

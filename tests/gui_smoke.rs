@@ -1,14 +1,10 @@
 //! Smoke test of the real window: start the binary under Xvfb with `--screenshot`, check the
 //! PNG shows the app. Skipped (with a message) when Xvfb is not installed, unless CI=true.
 
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::process::Command;
 
 mod common;
 use common::xvfb::{start_xvfb, xvfb_or_skip};
-
-/// How long the app may take to open, render and save its screenshot.
-const APP_TIMEOUT: Duration = Duration::from_secs(120);
 
 /// Runs the app with `args` on the display; returns (success, stderr).
 fn run_app(display: &str, args: &[&str]) -> (bool, String) {
@@ -17,33 +13,8 @@ fn run_app(display: &str, args: &[&str]) -> (bool, String) {
 
 /// [`run_app`] with these environment variables set.
 fn run_app_with(display: &str, args: &[&str], env: &[(&str, &str)]) -> (bool, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_barylab"))
-        .args(args)
-        .envs(env.iter().copied())
-        .env("DISPLAY", display)
-        .env_remove("WAYLAND_DISPLAY")
-        .env("LIBGL_ALWAYS_SOFTWARE", "1")
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start barylab");
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().expect("wait") {
-            break s;
-        }
-        if start.elapsed() > APP_TIMEOUT {
-            let _ = child.kill();
-            panic!("barylab did not exit within {APP_TIMEOUT:?}");
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    let mut err = String::new();
-    if let Some(mut e) = child.stderr.take() {
-        use std::io::Read;
-        let _ = e.read_to_string(&mut err);
-    }
-    (status.success(), err)
+    let (ok, _, err) = common::xvfb::run_app(display, args, env);
+    (ok, err)
 }
 
 #[test]

@@ -87,3 +87,42 @@ pub fn start_xvfb(xvfb: &Path) -> Xvfb {
     }
     x
 }
+
+/// How long the app may take to open, draw, save its screenshot and exit.
+const APP_TIMEOUT: Duration = Duration::from_secs(120);
+
+/// Runs the barylab binary on `display` with `args` and these environment variables (Mesa's
+/// software OpenGL); returns (success, stdout, stderr). Fails the test after [`APP_TIMEOUT`].
+pub fn run_app(display: &str, args: &[&str], env: &[(&str, &str)]) -> (bool, String, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_barylab"))
+        .args(args)
+        .envs(env.iter().copied())
+        .env("DISPLAY", display)
+        .env_remove("WAYLAND_DISPLAY")
+        .env("LIBGL_ALWAYS_SOFTWARE", "1")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start barylab");
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().expect("wait") {
+            break s;
+        }
+        if start.elapsed() > APP_TIMEOUT {
+            let _ = child.kill();
+            panic!("barylab did not exit within {APP_TIMEOUT:?}");
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    };
+    let read = |r: Option<&mut dyn std::io::Read>| {
+        let mut s = String::new();
+        if let Some(r) = r {
+            let _ = r.read_to_string(&mut s);
+        }
+        s
+    };
+    let out = read(child.stdout.as_mut().map(|r| r as &mut dyn std::io::Read));
+    let err = read(child.stderr.as_mut().map(|r| r as &mut dyn std::io::Read));
+    (status.success(), out, err)
+}
