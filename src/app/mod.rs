@@ -32,6 +32,7 @@ pub(crate) mod banner;
 pub(crate) mod bench_chart;
 pub mod bench_panel;
 pub mod canvas;
+pub(crate) mod canvas_layout;
 pub mod command;
 pub mod compare_image;
 mod options;
