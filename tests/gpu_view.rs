@@ -79,31 +79,7 @@ fn without_a_glow_context_the_gpu_view_says_why_and_the_canvas_keeps_working() {
 /// The tie lattice (vertices on pixel centres: many centres exactly on shared edges) as a
 /// clip-space scene.
 fn lattice_scene() -> Scene {
-    let (mesh, settings) = tie_lattice();
-    let vertices: Vec<String> = mesh
-        .vertices
-        .iter()
-        .map(|v| {
-            format!(
-                "{{\"clip\": [{}, {}, {}, {}], \"color\": [{}, {}, {}]}}",
-                v.clip.x, v.clip.y, v.clip.z, v.clip.w, v.color.x, v.color.y, v.color.z
-            )
-        })
-        .collect();
-    let triangles: Vec<String> = mesh
-        .triangles
-        .iter()
-        .map(|t| format!("[{}, {}, {}]", t[0], t[1], t[2]))
-        .collect();
-    let json = format!(
-        "{{\"width\": {}, \"height\": {}, \"vertices\": [{}], \"triangles\": [{}], \
-         \"shading\": \"vertex_color\", \"filter\": \"nearest\"}}",
-        settings.width,
-        settings.height,
-        vertices.join(", "),
-        triangles.join(", ")
-    );
-    Scene::from_json(&json, "lattice.json").expect("lattice scene")
+    Scene::from_json(&common::lattice_scene(""), "lattice.json").expect("lattice scene")
 }
 
 /// A pixel whose owner differs between the two rules (a centre exactly on a shared edge).

@@ -7,10 +7,13 @@
 use std::process::Command;
 
 use barylab::gpu::check::tie_lattice;
+
+mod common;
 use barylab::raster::render::prepare_triangle_with;
 use barylab::raster::setup::{TieRule, sample_point};
 use barylab::raster::{BuiltinTexture, ClipMesh, NO_TRIANGLE, RenderSettings, Texture, render};
 use barylab::scene::Scene;
+use common::lattice_scene;
 
 fn owners(mesh: &ClipMesh, settings: &RenderSettings, rule: TieRule) -> Vec<u32> {
     let s = RenderSettings {
@@ -97,34 +100,6 @@ fn top_left_is_llvmpipe_upside_down() {
         flip(owners(&mirrored, &settings, TieRule::Llvmpipe)),
         owners(&mesh, &settings, TieRule::TopLeft)
     );
-}
-
-/// The lattice as a clip-space scene file, with `extra` fields.
-fn lattice_scene(extra: &str) -> String {
-    let (mesh, settings) = tie_lattice();
-    let vertices: Vec<String> = mesh
-        .vertices
-        .iter()
-        .map(|v| {
-            format!(
-                "{{\"clip\": [{}, {}, {}, {}], \"color\": [{}, {}, {}]}}",
-                v.clip.x, v.clip.y, v.clip.z, v.clip.w, v.color.x, v.color.y, v.color.z
-            )
-        })
-        .collect();
-    let triangles: Vec<String> = mesh
-        .triangles
-        .iter()
-        .map(|t| format!("[{}, {}, {}]", t[0], t[1], t[2]))
-        .collect();
-    format!(
-        "{{\"width\": {}, \"height\": {}, \"vertices\": [{}], \"triangles\": [{}], \
-         \"shading\": \"vertex_color\", \"filter\": \"nearest\"{extra}}}",
-        settings.width,
-        settings.height,
-        vertices.join(", "),
-        triangles.join(", ")
-    )
 }
 
 #[test]

@@ -110,3 +110,34 @@ pub fn art(s: &str) -> String {
     }
     out
 }
+
+/// The tie lattice (`gpu::check::tie_lattice`: many pixel centres exactly on shared edges) as a
+/// clip-space scene file, with `extra` fields.
+#[cfg(feature = "gpu")]
+pub fn lattice_scene(extra: &str) -> String {
+    use barylab::gpu::check::tie_lattice;
+    let (mesh, settings) = tie_lattice();
+    let vertices: Vec<String> = mesh
+        .vertices
+        .iter()
+        .map(|v| {
+            format!(
+                "{{\"clip\": [{}, {}, {}, {}], \"color\": [{}, {}, {}]}}",
+                v.clip.x, v.clip.y, v.clip.z, v.clip.w, v.color.x, v.color.y, v.color.z
+            )
+        })
+        .collect();
+    let triangles: Vec<String> = mesh
+        .triangles
+        .iter()
+        .map(|t| format!("[{}, {}, {}]", t[0], t[1], t[2]))
+        .collect();
+    format!(
+        "{{\"width\": {}, \"height\": {}, \"vertices\": [{}], \"triangles\": [{}], \
+         \"shading\": \"vertex_color\", \"filter\": \"nearest\"{extra}}}",
+        settings.width,
+        settings.height,
+        vertices.join(", "),
+        triangles.join(", ")
+    )
+}
