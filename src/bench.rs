@@ -165,7 +165,7 @@ pub fn draw_frame(
     texture: &Texture,
     settings: &RenderSettings,
 ) -> Result<(), RenderError> {
-    raster::render_into(frame, mesh, texture, settings, raster::Buffers::ColorDepth).map(|_| ())
+    raster::render_into(frame, mesh, texture, settings, raster::Buffers::ColorDepth)
 }
 
 /// Median of the samples (the upper one of the middle two for an even count); `None` when

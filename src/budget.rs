@@ -10,6 +10,7 @@ use std::sync::OnceLock;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::files::bytes;
+use crate::raster::fast::{ProjectedVertex, Slot};
 use crate::raster::framebuffer::{Buffers, Framebuffer};
 use crate::raster::render::{MeshVertex, PreparedTriangle};
 use crate::raster::setup::TriangleSetup;
@@ -199,9 +200,10 @@ pub fn framebuffer_bytes_per_pixel(buffers: Buffers) -> u64 {
 }
 
 /// What a render of `width` x `height` with `buffers` of a mesh with `vertices` and
-/// `triangles` needs: the framebuffer, the output image (4 bytes a pixel), the mesh, and one
-/// set-up triangle per source triangle (clipped triangles take more, found by fallible
-/// allocation).
+/// `triangles` needs: the framebuffer, the output image (4 bytes a pixel), the mesh, and per
+/// source triangle one set-up triangle (the full render, [`Buffers::All`]) or the fast path's
+/// compact record and its place in a band's list (clipped triangles take more, found by
+/// fallible allocation).
 pub fn render_need(
     width: u32,
     height: u32,
@@ -210,9 +212,20 @@ pub fn render_need(
     triangles: usize,
 ) -> u64 {
     let pixels = u64::from(width) * u64::from(height);
-    let per_triangle = (size_of::<PreparedTriangle>() + size_of::<TriangleSetup>()) as u64;
+    let (per_triangle, per_vertex) = if buffers == Buffers::All {
+        (
+            size_of::<PreparedTriangle>() + size_of::<TriangleSetup>(),
+            0,
+        )
+    } else {
+        (
+            size_of::<Slot>() + size_of::<(u32, u32)>() * 2,
+            size_of::<ProjectedVertex>(),
+        )
+    };
+    let (per_triangle, per_vertex) = (per_triangle as u64, per_vertex as u64);
     pixels * (framebuffer_bytes_per_pixel(buffers) + 4)
-        + vertices as u64 * size_of::<MeshVertex>() as u64
+        + vertices as u64 * (size_of::<MeshVertex>() as u64 + per_vertex)
         + triangles as u64 * (per_triangle + size_of::<[u32; 3]>() as u64)
 }
 

@@ -412,6 +412,18 @@ struct BenchArgs {
     /// or wiped), or both with the difference heatmap.
     #[arg(long, value_enum, default_value = "single")]
     view: barylab::bench::View,
+    /// Time only this rasterizer (default: both).
+    #[arg(long, value_enum)]
+    rasterizer: Option<RasterizerArg>,
+    /// Time only this filter (default: nearest and bilinear).
+    #[arg(long, value_enum)]
+    filter: Option<FilterArg>,
+    /// Time only this interpolation mode (default: both).
+    #[arg(long, value_enum)]
+    mode: Option<ModeArg>,
+    /// Time only this many worker threads (default: 1 and the number of cores).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
+    threads: Option<u16>,
 }
 
 #[derive(clap::Args, Debug)]

@@ -8,6 +8,7 @@ mod common;
 
 use barylab::raster::lanes::{VectorLevel, set_vector_level};
 use barylab::raster::render::{ClipMesh, Rasterizer, RenderSettings, render, render_into};
+use barylab::raster::setup::TieRule;
 use barylab::raster::{
     Buffers, BuiltinTexture, Filter, Framebuffer, Interpolation, Shading, Texture, Wrap,
 };
@@ -190,6 +191,7 @@ proptest! {
         which in 0usize..3,
         wireframe in any::<bool>(),
         shading in 0usize..6,
+        top_left in any::<bool>(),
     ) {
         let (w, h) = (83, 61);
         let mut mesh = ClipMesh {
@@ -216,6 +218,7 @@ proptest! {
             wrap: [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat][wrap],
             wireframe,
             shading: Shading::ALL[shading],
+            tie_rule: if top_left { TieRule::TopLeft } else { TieRule::Llvmpipe },
             ..RenderSettings::default()
         };
         assert_edge_identical(&mesh, &tex, &s, name);

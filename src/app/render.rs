@@ -146,10 +146,13 @@ impl RenderCache {
                 .spare
                 .take()
                 .unwrap_or_else(|| Framebuffer::new(0, 0, base.background));
-            let triangles =
-                crate::raster::render_into(&mut frame, &mesh, texture, &settings, buffers)
-                    .map_err(|e| e.to_string())?;
-            let r = Arc::new(Render { frame, triangles });
+            crate::raster::render_into(&mut frame, &mesh, texture, &settings, buffers)
+                .map_err(|e| e.to_string())?;
+            // The canvas keeps the image only: the inspector probes the scene itself.
+            let r = Arc::new(Render {
+                frame,
+                triangles: Vec::new(),
+            });
             self.cache.push((one, r.clone()));
             renders.push((mode, r));
             rendered = true;

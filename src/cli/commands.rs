@@ -98,8 +98,27 @@ pub(super) fn bench(args: &BenchArgs) -> Result<()> {
     let texture = scene.load_texture(&base_dir)?;
     let mesh = scene.to_mesh();
     let base = scene.settings();
-    let records = barylab::bench::matrix(barylab::bench::available_cores())
+    // The matrix, narrowed to what the options name (any filter, trilinear too, replaces
+    // the matrix's two).
+    let wanted = |c: &barylab::bench::BenchConfig| {
+        args.rasterizer.is_none_or(|r| c.rasterizer == r.into())
+            && args.mode.is_none_or(|m| c.mode == m.into())
+            && args.threads.is_none_or(|t| c.threads == usize::from(t))
+            && (args.filter.is_none() || c.filter == barylab::Filter::Nearest)
+    };
+    let cores = match args.threads {
+        Some(t) => usize::from(t),
+        None => barylab::bench::available_cores(),
+    };
+    let records = barylab::bench::matrix(cores)
         .into_iter()
+        .filter(wanted)
+        .map(|mut c| {
+            if let Some(f) = args.filter {
+                c.filter = f.into();
+            }
+            c
+        })
         .map(|config| {
             barylab::bench::run_view(&mesh, &texture, &base, config, args.frames, args.view)
         })

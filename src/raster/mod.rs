@@ -5,6 +5,7 @@
 mod bands;
 pub mod camera;
 pub mod clip;
+pub(crate) mod fast;
 pub mod framebuffer;
 pub mod interpolate;
 pub mod lanes;

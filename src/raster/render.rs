@@ -14,6 +14,7 @@ use super::shade::{ShadeParams, Shading, shade};
 use super::texture::{Filter, Texture, Wrap};
 
 use super::bands::{RowBand, bin_by_band};
+use super::fast::FastMesh;
 pub use super::mesh::{ClipMesh, MeshVertex, subdivided_triangle};
 pub use super::prepare::{
     PreparedTriangle, TriangleStatus, prepare_all, prepare_all_with, prepare_triangle,
@@ -111,7 +112,8 @@ pub enum RenderError {
 pub struct Render {
     /// The image and the per-pixel buffers.
     pub frame: Framebuffer,
-    /// Every source triangle as prepared, in mesh order.
+    /// Every source triangle as prepared, in mesh order ([`render`]; empty where a caller
+    /// built a `Render` around an image from [`render_into`], which keeps no per-triangle record).
     pub triangles: Vec<PreparedTriangle>,
 }
 
@@ -122,13 +124,27 @@ pub fn render(
     settings: &RenderSettings,
 ) -> Result<Render, RenderError> {
     let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All);
-    let triangles = render_into(&mut frame, mesh, texture, settings, Buffers::All)?;
+    check_budget(mesh, settings, Buffers::All)?;
+    let triangles = prepare_triangles(mesh, settings)?;
+    let params = shade_params(settings, &triangles);
+    resize(&mut frame, settings.width, settings.height, Buffers::All);
+    rasterize_bands(
+        &triangles,
+        texture,
+        &params,
+        settings.rasterizer,
+        &mut frame,
+        ROWS_PER_BAND,
+        Some(settings.background),
+    );
     Ok(Render { frame, triangles })
 }
 
 /// Renders a clip-space mesh into `frame`, reusing its memory: the frame is resized to the
-/// settings' size, given `buffers`, cleared to the background and drawn. Returns what
-/// happened to each source triangle. With [`Buffers::ColorDepth`] the lane path
+/// settings' size, given `buffers`, cleared to the background and drawn, with the same pixels
+/// as [`render`]. It keeps no per-triangle record: every vertex is projected once and each
+/// triangle's set-up is rebuilt where it is drawn (module `fast`), so dense meshes need little
+/// memory. With [`Buffers::ColorDepth`] or [`Buffers::ColorDepthUv`] the lane path
 /// ([`lanes`](mod@super::lanes)) draws whatever it can.
 pub fn render_into(
     frame: &mut Framebuffer,
@@ -136,24 +152,44 @@ pub fn render_into(
     texture: &Texture,
     settings: &RenderSettings,
     buffers: Buffers,
-) -> Result<Vec<PreparedTriangle>, RenderError> {
+) -> Result<(), RenderError> {
+    check_budget(mesh, settings, buffers)?;
     let (w, h) = (settings.width, settings.height);
-    if (1..=MAX_IMAGE_SIZE).contains(&w) && (1..=MAX_IMAGE_SIZE).contains(&h) {
-        crate::budget::check_render(w, h, buffers, mesh.vertices.len(), mesh.triangles.len())?;
+    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
+        return Err(RenderError::BadSize {
+            width: w,
+            height: h,
+        });
     }
-    let triangles = prepare_triangles(mesh, settings)?;
-    let params = shade_params(settings, &triangles);
-    resize(frame, settings.width, settings.height, buffers);
-    rasterize_bands(
-        &triangles,
+    let prepared = FastMesh::prepare(mesh, settings.viewport(), settings.tie_rule);
+    let params = ShadeParams {
+        depth_range: prepared.depth_range(),
+        ..shade_params(settings, &[])
+    };
+    resize(frame, w, h, buffers);
+    prepared.rasterize(
         texture,
         &params,
         settings.rasterizer,
         frame,
         ROWS_PER_BAND,
-        Some(settings.background),
+        settings.background,
     );
-    Ok(triangles)
+    Ok(())
+}
+
+/// Refuses a render the memory limit cannot hold (image sizes out of range are refused
+/// after, with [`RenderError::BadSize`]).
+fn check_budget(
+    mesh: &ClipMesh,
+    settings: &RenderSettings,
+    buffers: Buffers,
+) -> Result<(), RenderError> {
+    let (w, h) = (settings.width, settings.height);
+    if (1..=MAX_IMAGE_SIZE).contains(&w) && (1..=MAX_IMAGE_SIZE).contains(&h) {
+        crate::budget::check_render(w, h, buffers, mesh.vertices.len(), mesh.triangles.len())?;
+    }
+    Ok(())
 }
 
 /// Gives `frame` the size and buffers asked for (contents are cleared later, per band).
@@ -233,9 +269,77 @@ pub fn rasterize_bands(
     });
 }
 
+/// What the lanes can draw of these shading parameters (colour and depth only): every shading
+/// but trilinear texture lookups in the edge-function lanes (trilinear goes per pixel, after
+/// block rejection); the scanline lanes draw texture shading without wireframe, the rest goes
+/// per pixel.
+pub(super) fn lane_shading(params: &ShadeParams) -> Option<LaneShading> {
+    let color = match params.shading {
+        Shading::Texture => matches!(params.filter, Filter::Nearest | Filter::Bilinear)
+            .then_some(lanes::LaneColor::Texture)?,
+        Shading::VertexColor => lanes::LaneColor::VertexColor,
+        Shading::Barycentric => lanes::LaneColor::Barycentric,
+        Shading::Depth => lanes::LaneColor::Depth(params.depth_range.0, params.depth_range.1),
+        Shading::Normal => lanes::LaneColor::Normal,
+        Shading::Lambert => lanes::LaneColor::Lambert,
+    };
+    Some(LaneShading {
+        mode: params.mode,
+        color,
+        filter: params.filter,
+        wrap: params.wrap,
+        wireframe: params.wireframe,
+    })
+}
+
+/// Where the lanes write in a band: colour and depth, and the triangle and uv buffers when
+/// the band has them.
+fn lane_target<'b>(band: &'b mut RowBand<'_>, source: u32) -> Target<'b> {
+    let uvs = !band.uv_affine.is_empty();
+    Target {
+        y0: band.y0,
+        width: band.width,
+        color: band.color,
+        depth: band.depth,
+        uv: uvs.then_some(UvTarget {
+            source,
+            triangle: band.triangle,
+            uv_affine: band.uv_affine,
+            uv_perspective: band.uv_perspective,
+        }),
+    }
+}
+
+/// Draws the rows of an [`exact`](lanes::LaneTriangle::exact) lane triangle (made for
+/// `shading`) that fall in a band without per-pixel buffers, with the edge-function lanes.
+pub(super) fn draw_lanes(
+    tri: &lanes::LaneTriangle,
+    source: u32,
+    texture: &Texture,
+    shading: LaneShading,
+    band: &mut RowBand<'_>,
+) {
+    let b = tri.bounds();
+    let y_start = b.y0.max(band.y0);
+    let y_end = b.y1.min((band.y0 + band.rows).saturating_sub(1));
+    if band.rows == 0 || y_start > y_end {
+        return;
+    }
+    let mut target = lane_target(band, source);
+    // With a shading, the lanes colour every covered sample themselves.
+    lanes::edge_triangle(
+        tri,
+        (y_start, y_end),
+        texture,
+        Some(shading),
+        &mut target,
+        &mut |_, _, _| {},
+    );
+}
+
 /// Visits every covered pixel centre of one set-up triangle within a band, depth-tests and
 /// writes it.
-fn rasterize(
+pub(super) fn rasterize(
     setup: &TriangleSetup,
     source: u32,
     texture: &Texture,
@@ -282,47 +386,17 @@ fn rasterize(
             band.inv_w[i] = frag.inv_w as f32;
         }
     };
-    // The lane path (colour and depth only): every shading but trilinear texture lookups
-    // in the edge-function lanes (trilinear per pixel, after block rejection); the scanline
-    // lanes draw texture shading without wireframe, the rest goes per pixel.
-    let lane_color = match params.shading {
-        Shading::Texture => matches!(params.filter, Filter::Nearest | Filter::Bilinear)
-            .then_some(lanes::LaneColor::Texture),
-        Shading::VertexColor => Some(lanes::LaneColor::VertexColor),
-        Shading::Barycentric => Some(lanes::LaneColor::Barycentric),
-        Shading::Depth => Some(lanes::LaneColor::Depth(
-            params.depth_range.0,
-            params.depth_range.1,
-        )),
-        Shading::Normal => Some(lanes::LaneColor::Normal),
-        Shading::Lambert => Some(lanes::LaneColor::Lambert),
-    };
-    let lane_shading = lane_color.map(|color| LaneShading {
-        mode: params.mode,
-        color,
-        filter: params.filter,
-        wrap: params.wrap,
-        wireframe: params.wireframe,
-    });
+    let lane_shading = lane_shading(params);
     if !aovs {
         match (rasterizer, lane_shading) {
-            (Rasterizer::EdgeFunction, shading) if lanes::edge_lanes_apply(setup) => {
-                let (y0, width) = (band.y0, band.width);
+            (Rasterizer::EdgeFunction, shading)
+                if let Some(tri) = Some(lanes::LaneTriangle::of(setup, shading, uvs))
+                    .filter(lanes::LaneTriangle::exact) =>
+            {
                 let mut per_pixel = Vec::new();
-                let mut target = Target {
-                    y0,
-                    width,
-                    color: band.color,
-                    depth: band.depth,
-                    uv: uvs.then_some(UvTarget {
-                        source,
-                        triangle: band.triangle,
-                        uv_affine: band.uv_affine,
-                        uv_perspective: band.uv_perspective,
-                    }),
-                };
+                let mut target = lane_target(band, source);
                 lanes::edge_triangle(
-                    setup,
+                    &tri,
                     (y_start, y_end),
                     texture,
                     shading,

@@ -339,28 +339,60 @@ pub fn setup_triangle_with(
     viewport: Viewport,
     rule: TieRule,
 ) -> Option<TriangleSetup> {
-    let p = [v[0].fixed, v[1].fixed, v[2].fixed];
-    let signed = signed_area2(p[0], p[1], p[2]);
-    if signed == 0 {
-        return None;
-    }
-    let positive = signed > 0;
-    let edges = [
-        Edge::with_rule(p[1], p[2], positive, rule),
-        Edge::with_rule(p[2], p[0], positive, rule),
-        Edge::with_rule(p[0], p[1], positive, rule),
-    ];
-    let bounds = pixel_bounds(&p, viewport)?;
-    let weights = WeightPlanes::new(v.map(|v| v.window))
-        .filter(|w| (w.area2 > 0.0) == positive)
-        .or_else(|| WeightPlanes::new(v.map(|v| v.window_snapped())))?;
+    let g = triangle_geometry(
+        [v[0].fixed, v[1].fixed, v[2].fixed],
+        v.map(|v| v.window),
+        viewport,
+        rule,
+    )?;
     Some(TriangleSetup {
         v,
-        edges,
+        edges: g.edges,
+        area2: g.area2,
+        weights: g.weights,
+        facing: g.facing,
+        bounds: g.bounds,
+    })
+}
+
+/// Everything of a [`TriangleSetup`] but its vertices: what decides coverage and the
+/// screen weights.
+#[derive(Clone, Copy, Debug)]
+pub struct Geometry {
+    /// Edge `i` is opposite vertex `i`.
+    pub edges: [Edge; 3],
+    /// Twice the snapped area, in 1/65536 pixel^2, positive.
+    pub area2: i64,
+    /// The interpolation weights.
+    pub weights: WeightPlanes,
+    /// Front or back.
+    pub facing: Facing,
+    /// Pixels whose centres can be covered.
+    pub bounds: PixelBounds,
+}
+
+/// The set-up of a triangle from its snapped (`fixed`, 1/256 pixel) and unsnapped (`window`,
+/// pixels) positions: exactly what [`setup_triangle_with`] gives it, without the vertices
+/// (the fast path sets triangles up from shared projected vertices). `None` exactly when
+/// [`setup_triangle_with`] gives `None`.
+pub fn triangle_geometry(
+    p: [I64Vec2; 3],
+    window: [DVec2; 3],
+    viewport: Viewport,
+    rule: TieRule,
+) -> Option<Geometry> {
+    let (signed, bounds, weights) = geometry(p, window, viewport)?;
+    let positive = signed > 0;
+    Some(Geometry {
+        edges: [
+            Edge::with_rule(p[1], p[2], positive, rule),
+            Edge::with_rule(p[2], p[0], positive, rule),
+            Edge::with_rule(p[0], p[1], positive, rule),
+        ],
         area2: signed.abs(),
         weights,
-        // Clockwise in image coordinates (y down) is counter-clockwise... for y up; positive
-        // area here means clockwise as displayed, which OpenGL calls the back face.
+        // Positive area in image coordinates (y down) means clockwise as displayed, which
+        // OpenGL calls the back face.
         facing: if positive {
             Facing::Back
         } else {
@@ -368,6 +400,36 @@ pub fn setup_triangle_with(
         },
         bounds,
     })
+}
+
+/// The pixel bounds [`setup_triangle_with`] gives a triangle with these snapped (`fixed`,
+/// 1/256 pixel) and unsnapped (`window`, pixels) positions, and `None` exactly when it
+/// gives `None`: what the fast path keeps of a triangle before it draws it.
+pub fn setup_bounds(
+    fixed: [I64Vec2; 3],
+    window: [DVec2; 3],
+    viewport: Viewport,
+) -> Option<PixelBounds> {
+    geometry(fixed, window, viewport).map(|(_, bounds, _)| bounds)
+}
+
+/// The signed snapped area, the bounds and the weight planes; `None` for zero snapped area,
+/// bounds outside the viewport, or no usable weight planes.
+fn geometry(
+    p: [I64Vec2; 3],
+    window: [DVec2; 3],
+    viewport: Viewport,
+) -> Option<(i64, PixelBounds, WeightPlanes)> {
+    let signed = signed_area2(p[0], p[1], p[2]);
+    if signed == 0 {
+        return None;
+    }
+    let positive = signed > 0;
+    let bounds = pixel_bounds(&p, viewport)?;
+    let weights = WeightPlanes::new(window)
+        .filter(|w| (w.area2 > 0.0) == positive)
+        .or_else(|| WeightPlanes::new(p.map(|f| f.as_dvec2() / SUBPIXEL as f64)))?;
+    Some((signed, bounds, weights))
 }
 
 /// Pixels whose centres can lie inside the triangle: centre `256 c + 128` within
@@ -404,22 +466,28 @@ impl TriangleSetup {
         ]
     }
 
-    /// Screen gradient (per pixel) of each *source-triangle* weight across this triangle, with
-    /// the weights taken as screen-linear: `grad f = sum_k f_k grad l_k`, with `grad l_k`
-    /// from [`WeightPlanes::gradients`].
+    /// Screen gradient (per pixel) of each *source-triangle* weight across this triangle
+    /// ([`source_weight_gradients`] of its weights and vertices' barycentric attributes).
     pub fn source_weight_gradients(&self) -> [DVec2; 3] {
-        let grad_l = self.weights.gradients();
-        let mut out = [DVec2::ZERO; 3];
-        for (i, g) in out.iter_mut().enumerate() {
-            for (k, gl) in grad_l.iter().enumerate() {
-                *g += *gl * f64::from(self.v[k].varyings.bary()[i]);
-            }
-        }
-        out
+        source_weight_gradients(&self.weights, self.v.map(|v| v.varyings.bary()))
     }
 
     /// Whether the sample with these edge values is covered under the fill rule.
     pub fn covers(&self, e: &[i64; 3]) -> bool {
         self.edges[0].passes(e[0]) && self.edges[1].passes(e[1]) && self.edges[2].passes(e[2])
     }
+}
+
+/// Screen gradient (per pixel) of each *source-triangle* weight across a rasterized triangle
+/// whose vertex `k` has source weights `bary[k]`, with the weights taken as screen-linear:
+/// `grad f_i = sum_k bary[k][i] grad l_k`, with `grad l_k` from [`WeightPlanes::gradients`].
+pub fn source_weight_gradients(weights: &WeightPlanes, bary: [[f32; 3]; 3]) -> [DVec2; 3] {
+    let grad_l = weights.gradients();
+    let mut out = [DVec2::ZERO; 3];
+    for (i, g) in out.iter_mut().enumerate() {
+        for (k, gl) in grad_l.iter().enumerate() {
+            *g += *gl * f64::from(bary[k][i]);
+        }
+    }
+    out
 }

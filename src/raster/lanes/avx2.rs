@@ -6,17 +6,15 @@
 
 use std::arch::x86_64::*;
 
-use glam::Vec3;
-
 use super::{
-    BLOCK_ROWS, Block, CHANNELS, Constants, EdgePlanes, LANES, LaneColor, LaneShading, LaneWrap,
+    BLOCK_ROWS, Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, LaneWrap,
     Stepped, Target, classify,
 };
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span;
 use crate::raster::setup::{TriangleSetup, WeightPlanes};
 use crate::raster::shade::{
-    WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX, lambert_rgba8, normal_rgba8,
+    AMBIENT, MIN_NORMAL_LENGTH, WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX,
 };
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
@@ -313,6 +311,24 @@ fn pack_opaque(r: __m256i, g: __m256i, b: __m256i) -> __m256i {
     )
 }
 
+/// `shade::unit_normal` of eight normals, operation for operation:
+/// `len = sqrt(x x + y y + z z)`, `n / len` when `len` is finite and at least
+/// [`MIN_NORMAL_LENGTH`], else `(0, 0, 1)`.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn unit_normal(n: [__m256; 3]) -> [__m256; 3] {
+    let sq = |x: __m256| _mm256_mul_ps(x, x);
+    let len = _mm256_sqrt_ps(_mm256_add_ps(_mm256_add_ps(sq(n[0]), sq(n[1])), sq(n[2])));
+    let ok = _mm256_and_ps(
+        _mm256_cmp_ps::<_CMP_LT_OQ>(len, _mm256_set1_ps(f32::INFINITY)),
+        _mm256_cmp_ps::<_CMP_GE_OQ>(len, _mm256_set1_ps(MIN_NORMAL_LENGTH)),
+    );
+    let unit = |x: __m256, otherwise: f32| {
+        _mm256_blendv_ps(_mm256_set1_ps(otherwise), _mm256_div_ps(x, len), ok)
+    };
+    [unit(n[0], 0.0), unit(n[1], 0.0), unit(n[2], 1.0)]
+}
+
 /// The colours of the non-texture shadings for eight samples, as `shade` makes them.
 #[inline]
 #[target_feature(enable = "avx2")]
@@ -334,32 +350,30 @@ fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
             pack_opaque(grey, grey, grey)
         }
         LaneColor::Normal | LaneColor::Lambert => {
-            // Per lane with the scalar `shade` functions (a square root and a division each),
-            // on the same f32 channels the portable lanes hold.
-            let mut ch = [[0f32; LANES]; CHANNELS];
-            for (c, out) in ch
-                .iter_mut()
-                .enumerate()
-                .take(if color == LaneColor::Lambert {
-                    CHANNELS
-                } else {
-                    3
-                })
-            {
-                // SAFETY: `out` is eight f32s; the unaligned store writes exactly those.
-                unsafe {
-                    _mm256_storeu_ps(out.as_mut_ptr(), to_f32(lo.channels[c], hi.channels[c]))
+            let ch = |c: usize| to_f32(lo.channels[c], hi.channels[c]);
+            if color == LaneColor::Normal {
+                let n = unit_normal([ch(0), ch(1), ch(2)]);
+                // `shade::normal_rgba8`: unorm8((n̂ + 1) * 0.5) per channel.
+                let c = |x: __m256| {
+                    unorm8(_mm256_mul_ps(
+                        _mm256_add_ps(x, _mm256_set1_ps(1.0)),
+                        _mm256_set1_ps(0.5),
+                    ))
                 };
+                return pack_opaque(c(n[0]), c(n[1]), c(n[2]));
             }
-            let v = |first: usize, k: usize| {
-                Vec3::new(ch[first][k], ch[first + 1][k], ch[first + 2][k])
-            };
-            let rgba: [[u8; 4]; LANES] = std::array::from_fn(|k| match color {
-                LaneColor::Normal => normal_rgba8(v(0, k)),
-                _ => lambert_rgba8(v(0, k), v(3, k)),
-            });
-            // SAFETY: eight RGBA8 pixels are 32 bytes, read unaligned.
-            unsafe { _mm256_loadu_si256(rgba.as_ptr().cast()) }
+            // The normal is in channels 3..6, the albedo (vertex colour) in 0..3.
+            let n = unit_normal([ch(3), ch(4), ch(5)]);
+            // `shade::lambert_factor`: AMBIENT + (1 - AMBIENT) max(0, n̂.z).
+            let f = _mm256_add_ps(
+                _mm256_set1_ps(AMBIENT),
+                _mm256_mul_ps(
+                    _mm256_set1_ps(1.0 - AMBIENT),
+                    _mm256_max_ps(n[2], _mm256_setzero_ps()),
+                ),
+            );
+            let c = |a: __m256| unorm8(_mm256_mul_ps(a, f));
+            pack_opaque(c(ch(0)), c(ch(1)), c(ch(2)))
         }
         _ => {
             let ch = |c: usize| unorm8(to_f32(lo.channels[c], hi.channels[c]));
@@ -372,7 +386,7 @@ fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
 /// wireframe.
 #[target_feature(enable = "avx2")]
 pub(super) fn edge_triangle(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,
     wide: bool,
@@ -381,12 +395,9 @@ pub(super) fn edge_triangle(
 ) {
     let (mode, color) = (shading.mode, shading.color);
     let mut lookups = sampler.map(|s| Lookups::new(s, wide));
-    let planes = EdgePlanes::new(setup);
-    let mut consts = Constants::new(setup, mode, shading.wireframe, color);
-    if target.uv.is_some() {
-        consts.both_uv = Some(super::both_uv(setup));
-    }
-    let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
+    let planes = &tri.planes;
+    let consts = &tri.consts;
+    let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
     let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
     let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
@@ -398,7 +409,7 @@ pub(super) fn edge_triangle(
         while bx <= x1 {
             let bx_end = bx + LANES as u32 - 1;
             let block = classify(
-                &planes,
+                planes,
                 (i64::from(bx), i64::from(bx_end)),
                 (i64::from(by), i64::from(by_end)),
             );
@@ -437,8 +448,8 @@ pub(super) fn edge_triangle(
                     let px = _mm256_set1_pd(f64::from(bx) + 0.5);
                     let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
-                    let lo = from_weights4(lo, &consts, mode, color);
-                    let hi = from_weights4(hi, &consts, mode, color);
+                    let lo = from_weights4(lo, consts, mode, color);
+                    let hi = from_weights4(hi, consts, mode, color);
                     let ok = covered & (lo.ok | (hi.ok << 4));
                     if ok == 0 {
                         continue;
@@ -482,7 +493,7 @@ pub(super) fn scanline_triangle(
     target: &mut Target<'_>,
 ) {
     let mut lookups = Lookups::new(sampler, wide);
-    let consts = Constants::new(setup, mode, false, LaneColor::Texture);
+    let consts = Constants::of(setup, mode, false, LaneColor::Texture);
     let step = Stepped::row_step(&consts, mode);
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));

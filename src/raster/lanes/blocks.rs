@@ -39,6 +39,11 @@ pub struct EdgePlanes {
 impl EdgePlanes {
     /// From `E(P) = dir_x (P_y - S_y) - dir_y (P_x - S_x)` with `P = (256 col + 128, 256 row + 128)`.
     pub fn new(setup: &TriangleSetup) -> Self {
+        Self::from_edges(&setup.edges)
+    }
+
+    /// The planes of these three edges (as [`EdgePlanes::new`]).
+    pub fn from_edges(edges: &[Edge; 3]) -> Self {
         let half = SUBPIXEL / 2;
         let mut out = Self {
             a: [0; 3],
@@ -46,7 +51,7 @@ impl EdgePlanes {
             c: [0; 3],
             t: [0; 3],
         };
-        for (i, e) in setup.edges.iter().enumerate() {
+        for (i, e) in edges.iter().enumerate() {
             out.a[i] = -e.dir.y * SUBPIXEL;
             out.b[i] = e.dir.x * SUBPIXEL;
             out.c[i] = e.dir.x * (half - e.start.y) - e.dir.y * (half - e.start.x);

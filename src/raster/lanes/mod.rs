@@ -42,7 +42,7 @@ use super::framebuffer::depth_passes;
 use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
 use super::scanline::row_span;
-use super::setup::{PixelBounds, TriangleSetup, WeightPlanes};
+use super::setup::{Edge, PixelBounds, TriangleSetup, WeightPlanes, source_weight_gradients};
 use super::shade::{
     WIRE_COLOR, WIRE_HALO_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge,
     on_wire_halo, unorm8,
@@ -50,6 +50,7 @@ use super::shade::{
 use super::texture::{
     self, Filter, Texture, Wrap, bilinear_fraction, bilinear_weights, byte_from_sum, wrap_coord,
 };
+use super::varying::Varyings;
 
 mod blocks;
 mod sampler;
@@ -220,14 +221,47 @@ struct Wire {
     len: [f64; 3],
 }
 
+/// What the lanes interpolate of a triangle's three vertices: `1/w`, the window depth and
+/// both attribute sets.
+#[derive(Clone, Copy, Debug)]
+pub struct LaneVertices {
+    /// `1 / w_clip` per vertex.
+    pub inv_w: [f64; 3],
+    /// Window depth per vertex.
+    pub depth: [f64; 3],
+    /// The attributes for `smooth` (perspective-correct) interpolation.
+    pub smooth: [Varyings; 3],
+    /// The attributes for `noperspective` (affine) interpolation.
+    pub noperspective: [Varyings; 3],
+}
+
+impl LaneVertices {
+    /// A set-up triangle's vertices.
+    pub fn of(setup: &TriangleSetup) -> Self {
+        Self {
+            inv_w: setup.v.map(|v| v.inv_w),
+            depth: setup.v.map(|v| v.depth),
+            smooth: setup.v.map(|v| v.varyings),
+            noperspective: setup.v.map(|v| v.noperspective),
+        }
+    }
+}
+
 impl Constants {
     /// `mode` picks the vertices' attribute set: `smooth` (perspective-correct) or
     /// `noperspective` (affine). The wireframe uses the `smooth` source weights with screen
     /// weights, as [`Fragment::edge_weights`](super::interpolate::Fragment::edge_weights).
-    fn new(setup: &TriangleSetup, mode: Interpolation, wireframe: bool, color: LaneColor) -> Self {
+    #[inline(always)]
+    fn new(
+        weights: &WeightPlanes,
+        verts: &LaneVertices,
+        mode: Interpolation,
+        wireframe: bool,
+        color: LaneColor,
+    ) -> Self {
         let vary = |k: usize| match mode {
-            Interpolation::Perspective => &setup.v[k].varyings,
-            Interpolation::Affine => &setup.v[k].noperspective,
+            Interpolation::Perspective => &verts.smooth[k],
+            Interpolation::Affine => &verts.noperspective[k],
         };
         let uv = [0, 1, 2].map(|k| vary(k).uv());
         let per_vertex = |f: &dyn Fn(usize) -> [f32; 3]| {
@@ -251,16 +285,16 @@ impl Constants {
             3
         };
         let wire = wireframe.then(|| {
-            let b = setup.v.map(|v| v.varyings.bary());
+            let b = verts.smooth.map(|v| v.bary());
             Wire {
                 bary: [0, 1, 2].map(|i| [0, 1, 2].map(|k| f64::from(b[k][i]))),
-                len: setup.source_weight_gradients().map(|g| g.length()),
+                len: source_weight_gradients(weights, b).map(|g| g.length()),
             }
         });
         Self {
-            weights: setup.weights,
-            inv_w: setup.v.map(|v| v.inv_w),
-            depth: setup.v.map(|v| v.depth),
+            weights: *weights,
+            inv_w: verts.inv_w,
+            depth: verts.depth,
             u: uv.map(|t| f64::from(t.x)),
             v: uv.map(|t| f64::from(t.y)),
             both_uv: None,
@@ -268,6 +302,80 @@ impl Constants {
             used_channels,
             wire,
         }
+    }
+
+    /// [`Constants::new`] of a set-up triangle.
+    fn of(setup: &TriangleSetup, mode: Interpolation, wireframe: bool, color: LaneColor) -> Self {
+        Self::new(
+            &setup.weights,
+            &LaneVertices::of(setup),
+            mode,
+            wireframe,
+            color,
+        )
+    }
+}
+
+/// A triangle as the edge-function lanes draw it: its edge planes, bounds and interpolation
+/// constants, from a [`TriangleSetup`] ([`LaneTriangle::of`]) or from its parts
+/// ([`LaneTriangle::new`], the fast path's shared vertices): the same values either way.
+#[derive(Clone, Copy, Debug)]
+pub struct LaneTriangle {
+    planes: EdgePlanes,
+    bounds: PixelBounds,
+    consts: Constants,
+}
+
+impl LaneTriangle {
+    /// From the triangle's edges, bounds and weight planes (see
+    /// [`triangle_geometry`](super::setup::triangle_geometry)) and its vertices, for drawing
+    /// with `shading` (`None`: coverage only, for the caller's per-pixel shading); `uv` when
+    /// the target keeps the uv buffers.
+    #[inline(always)]
+    pub fn new(
+        edges: &[Edge; 3],
+        bounds: PixelBounds,
+        weights: &WeightPlanes,
+        verts: &LaneVertices,
+        shading: Option<LaneShading>,
+        uv: bool,
+    ) -> Self {
+        let color = shading.map_or(LaneColor::Texture, |s| s.color);
+        let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
+        let wire = shading.is_some_and(|s| s.wireframe);
+        let mut consts = Constants::new(weights, verts, mode, wire, color);
+        if uv {
+            consts.both_uv = Some(both_uv(verts));
+        }
+        Self {
+            planes: EdgePlanes::from_edges(edges),
+            bounds,
+            consts,
+        }
+    }
+
+    /// From a set-up triangle.
+    pub fn of(setup: &TriangleSetup, shading: Option<LaneShading>, uv: bool) -> Self {
+        let verts = LaneVertices::of(setup);
+        Self::new(
+            &setup.edges,
+            setup.bounds,
+            &setup.weights,
+            &verts,
+            shading,
+            uv,
+        )
+    }
+
+    /// Pixels whose centres can be covered.
+    pub fn bounds(&self) -> PixelBounds {
+        self.bounds
+    }
+
+    /// Whether the lanes can draw it: edge values exact in `f64` over its bounds (otherwise,
+    /// near the guard band, the per-pixel path does).
+    pub fn exact(&self) -> bool {
+        self.planes.exact_over(&self.bounds)
     }
 }
 
@@ -336,12 +444,12 @@ fn channel3(s: &Samples, first: usize, k: usize) -> Vec3 {
 
 /// The vertices' uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]`
 /// (the `noperspective` set, then the `smooth` one), for [`Constants::both_uv`].
-fn both_uv(setup: &TriangleSetup) -> [[f64; 3]; 4] {
+fn both_uv(verts: &LaneVertices) -> [[f64; 3]; 4] {
     let uv = |k: usize, smooth: bool| {
         let v = if smooth {
-            &setup.v[k].varyings
+            &verts.smooth[k]
         } else {
-            &setup.v[k].noperspective
+            &verts.noperspective[k]
         };
         v.uv().as_dvec2()
     };
@@ -433,16 +541,12 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, s: &Samples, colors: &[[u8; 4]
     }
 }
 
-/// Whether the lane path can draw this triangle: edge values exact in `f64` over its bounds.
-pub fn edge_lanes_apply(setup: &TriangleSetup) -> bool {
-    EdgePlanes::new(setup).exact_over(&setup.bounds)
-}
-
-/// The edge-function rasterizer's lane path for rows `rows` (within the target band).
-/// With `shading` `None`, covered samples go to `fallback(x, y, edges)` instead (the caller's
-/// per-pixel shading), still with block rejection.
+/// The edge-function rasterizer's lane path for rows `rows` (within the target band), with
+/// the `shading` `tri` was made for. With `shading` `None`, covered samples go to
+/// `fallback(x, y, edges)` instead (the caller's per-pixel shading), still with block
+/// rejection. `tri` must be [`exact`](LaneTriangle::exact).
 pub fn edge_triangle(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     rows: (u32, u32),
     texture: &Texture,
     shading: Option<LaneShading>,
@@ -457,50 +561,47 @@ pub fn edge_triangle(
                 if sh.color != LaneColor::Texture || sampler.is_some() {
                     // SAFETY: the CPU supports AVX2, checked by `vector_path`.
                     unsafe {
-                        avx2::edge_triangle(setup, rows, sampler.as_ref(), wide_path(), &sh, target)
+                        avx2::edge_triangle(tri, rows, sampler.as_ref(), wide_path(), &sh, target)
                     };
                     return;
                 }
             }
             // SAFETY: as above.
-            unsafe { edge_triangle_avx2(setup, rows, texture, shading, target, fallback) };
+            unsafe { edge_triangle_avx2(tri, rows, texture, shading, target, fallback) };
             return;
         }
     }
-    edge_triangle_impl(setup, rows, texture, shading, target, fallback);
+    edge_triangle_impl(tri, rows, texture, shading, target, fallback);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn edge_triangle_avx2(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     rows: (u32, u32),
     texture: &Texture,
     shading: Option<LaneShading>,
     target: &mut Target<'_>,
     fallback: &mut dyn FnMut(u32, u32, [i64; 3]),
 ) {
-    edge_triangle_impl(setup, rows, texture, shading, target, fallback);
+    edge_triangle_impl(tri, rows, texture, shading, target, fallback);
 }
 
 #[inline(always)]
 fn edge_triangle_impl(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     texture: &Texture,
     shading: Option<LaneShading>,
     target: &mut Target<'_>,
     fallback: &mut dyn FnMut(u32, u32, [i64; 3]),
 ) {
-    let planes = EdgePlanes::new(setup);
+    let planes = &tri.planes;
+    let consts = &tri.consts;
     let color = shading.map_or(LaneColor::Texture, |s| s.color);
     let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
-    let mut consts = Constants::new(setup, mode, shading.is_some_and(|s| s.wireframe), color);
-    if target.uv.is_some() {
-        consts.both_uv = Some(both_uv(setup));
-    }
     let sampler = shading.map(|s| Sampler::new(texture, s.filter, s.wrap));
-    let (x0, x1) = (setup.bounds.x0, setup.bounds.x1);
+    let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let a = planes.a.map(|v| v as f64);
     let t = planes.t.map(|v| v as f64);
     let mut colors = [[0u8; 4]; LANES];
@@ -511,7 +612,7 @@ fn edge_triangle_impl(
         while bx <= x1 {
             let bx_end = bx + LANES as u32 - 1;
             let block = classify(
-                &planes,
+                planes,
                 (i64::from(bx), i64::from(bx_end)),
                 (i64::from(by), i64::from(by_end)),
             );
@@ -536,7 +637,7 @@ fn edge_triangle_impl(
                     match &sampler {
                         Some(sampler) => {
                             let l = row_weights(&consts.weights, bx, y);
-                            let mut s = from_weights(&l, &consts, mode);
+                            let mut s = from_weights(&l, consts, mode);
                             for k in 0..LANES {
                                 s.ok[k] &= covered[k];
                             }

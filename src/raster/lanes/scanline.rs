@@ -113,7 +113,7 @@ pub(super) fn scanline_triangle_impl(
     // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
     // scanline code).
     let mode = shading.mode;
-    let consts = Constants::new(setup, mode, false, LaneColor::Texture);
+    let consts = Constants::of(setup, mode, false, LaneColor::Texture);
     let sampler = Sampler::new(texture, shading.filter, shading.wrap);
     let step = Stepped::row_step(&consts, mode);
     let mut colors = [[0u8; 4]; LANES];

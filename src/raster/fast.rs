@@ -1,0 +1,363 @@
+//! The fast path's preparation of a mesh (colour and depth, optionally the uv buffers): what
+//! [`render_into`](super::render::render_into) draws without keeping every buffer.
+//!
+//! The full render keeps a [`PreparedTriangle`] per source triangle (its three window
+//! vertices with both attribute sets, edges, weight planes: about 900 bytes) because the
+//! probe and the inspector read them. Drawing needs none of that kept: here
+//!
+//! 1. every mesh vertex is projected **once** ([`ProjectedVertex`]: window position, snapped
+//!    position, depth, 1/w, and whether it is inside every clipping plane), shared by the
+//!    triangles that use it;
+//! 2. a triangle whose three vertices are inside every plane (most of a mesh) becomes a
+//!    [`Slot::Whole`] of 28 bytes: its corners and pixel bounds; the rare triangle the
+//!    clipper cuts is prepared as the full render prepares it ([`Slot::Clipped`]);
+//! 3. each band of rows rebuilds the set-up triangle of a whole triangle where it draws it,
+//!    with the same functions ([`project_vertex`]'s values, [`setup_triangle_with`]), so the
+//!    pixels are the full render's bit for bit (`tests/fast_path.rs`).
+//!
+//! A mesh of a million triangles then needs about 40 MB for this, not about 1 GB.
+
+use glam::{DVec2, I64Vec2};
+
+use super::bands::RowBand;
+use super::clip::{ClipPlane, planes};
+use super::framebuffer::Framebuffer;
+use super::lanes::{LaneShading, LaneTriangle, LaneVertices};
+use super::mesh::ClipMesh;
+use super::prepare::{PreparedTriangle, prepare_triangle_with};
+use super::project::{Viewport, WindowVertex, ndc_from_clip, project_vertex};
+use super::render::{Rasterizer, draw_lanes, lane_shading, rasterize};
+use super::setup::{
+    PixelBounds, TieRule, TriangleSetup, setup_bounds, setup_triangle_with, triangle_geometry,
+};
+use super::shade::ShadeParams;
+use super::texture::Texture;
+use super::varying::Varyings;
+
+/// A mesh vertex after the perspective divide and viewport transform, as
+/// [`project_vertex`] computes it (without the attributes, which stay in the mesh).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProjectedVertex {
+    /// Window position in pixels before snapping.
+    pub window: DVec2,
+    /// Snapped window position in 1/256 pixel.
+    pub fixed: I64Vec2,
+    /// Window depth in [0, 1].
+    pub depth: f64,
+    /// `1 / w_clip`.
+    pub inv_w: f64,
+    /// Finite and inside every clipping plane: a triangle of three such vertices is drawn
+    /// unclipped.
+    pub inside: bool,
+}
+
+impl ProjectedVertex {
+    /// Projects one clip-space position (the values of [`project_vertex`]).
+    fn new(clip: glam::DVec4, viewport: Viewport, planes: &[ClipPlane]) -> Self {
+        let w = project_vertex(
+            &super::clip::ClipVertex::new(clip, Varyings::default()),
+            viewport,
+        );
+        Self {
+            window: w.window,
+            fixed: w.fixed,
+            depth: w.depth,
+            inv_w: w.inv_w,
+            inside: clip.is_finite() && planes.iter().all(|p| p.distance(clip) >= 0.0),
+        }
+    }
+}
+
+/// What the fast path keeps of one source triangle.
+#[derive(Clone, Debug)]
+pub enum Slot {
+    /// Nothing to draw: a bad index, a NaN or infinite coordinate, zero area, off screen, or
+    /// clipped away.
+    Skip,
+    /// Inside every clipping plane: the corners (indices into the mesh's vertices) and the
+    /// pixel bounds; the set-up triangle is rebuilt where it is drawn.
+    Whole {
+        /// The source triangle's vertex indices.
+        corners: [u32; 3],
+        /// Pixels whose centres can be covered.
+        bounds: PixelBounds,
+    },
+    /// Cut by the clipper: prepared as the full render prepares it.
+    Clipped(Box<PreparedTriangle>),
+}
+
+/// A mesh prepared for the fast path: the projected vertices and one [`Slot`] per source
+/// triangle, in submission order.
+pub struct FastMesh<'m> {
+    mesh: &'m ClipMesh,
+    viewport: Viewport,
+    rule: TieRule,
+    /// One per mesh vertex.
+    pub vertices: Vec<ProjectedVertex>,
+    /// One per source triangle.
+    pub slots: Vec<Slot>,
+}
+
+/// Vertices or triangles one parallel task handles at least (small meshes stay on one
+/// thread).
+const CHUNK: usize = 512;
+
+impl<'m> FastMesh<'m> {
+    /// Projects every vertex once and reduces every source triangle to its [`Slot`], in
+    /// parallel (rayon's current pool).
+    pub fn prepare(mesh: &'m ClipMesh, viewport: Viewport, rule: TieRule) -> Self {
+        use rayon::prelude::*;
+        let planes = planes(viewport.guard_band_ndc());
+        let vertices: Vec<ProjectedVertex> = mesh
+            .vertices
+            .par_iter()
+            .with_min_len(CHUNK)
+            .map(|v| ProjectedVertex::new(v.clip, viewport, &planes))
+            .collect();
+        let mut out = Self {
+            mesh,
+            viewport,
+            rule,
+            vertices,
+            slots: Vec::new(),
+        };
+        out.slots = (0..mesh.triangles.len() as u32)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|i| out.slot(i))
+            .collect();
+        out
+    }
+
+    fn slot(&self, index: u32) -> Slot {
+        let Some(corners) = self.mesh.triangles.get(index as usize).copied() else {
+            return Slot::Skip;
+        };
+        let Some(p) = self.projected(corners) else {
+            return Slot::Skip;
+        };
+        if p.iter().all(|v| v.inside) {
+            let fixed = p.map(|v| v.fixed);
+            return match setup_bounds(fixed, p.map(|v| v.window), self.viewport) {
+                Some(bounds) => Slot::Whole { corners, bounds },
+                None => Slot::Skip,
+            };
+        }
+        let prepared = prepare_triangle_with(self.mesh, index, self.viewport, self.rule);
+        if prepared.setups.is_empty() {
+            Slot::Skip
+        } else {
+            Slot::Clipped(Box::new(prepared))
+        }
+    }
+
+    fn projected(&self, corners: [u32; 3]) -> Option<[&ProjectedVertex; 3]> {
+        let v = |k: usize| self.vertices.get(corners[k] as usize);
+        Some([v(0)?, v(1)?, v(2)?])
+    }
+
+    /// The set-up triangle of a whole triangle, exactly as
+    /// [`prepare_triangle_with`] sets it up: the window vertices of
+    /// [`source_vertices`](super::prepare::source_vertices) projected, then
+    /// [`setup_triangle_with`].
+    pub fn setup(&self, corners: [u32; 3]) -> Option<TriangleSetup> {
+        let mut window = [None; 3];
+        for (k, w) in window.iter_mut().enumerate() {
+            let i = corners[k] as usize;
+            let (m, p) = (self.mesh.vertices.get(i)?, self.vertices.get(i)?);
+            let mut bary = [0.0; 3];
+            bary[k] = 1.0;
+            let varyings = Varyings::new(bary, m.uv, m.color).with_normal(m.normal);
+            *w = Some(WindowVertex {
+                clip: m.clip,
+                ndc: ndc_from_clip(m.clip),
+                fixed: p.fixed,
+                window: p.window,
+                depth: p.depth,
+                inv_w: p.inv_w,
+                varyings,
+                noperspective: varyings,
+            });
+        }
+        let [a, b, c] = window;
+        setup_triangle_with([a?, b?, c?], self.viewport, self.rule)
+    }
+
+    /// A whole triangle as the edge-function lanes draw it, set up from the shared projected
+    /// vertices with [`triangle_geometry`] (the values [`FastMesh::setup`] gives); `None` when
+    /// it has no set-up. The lanes draw it when it is [`exact`](LaneTriangle::exact).
+    #[inline(always)]
+    fn lane_triangle(
+        &self,
+        corners: [u32; 3],
+        shading: LaneShading,
+        uv: bool,
+    ) -> Option<LaneTriangle> {
+        let [a, b, c] = self.projected(corners)?;
+        let g = triangle_geometry(
+            [a.fixed, b.fixed, c.fixed],
+            [a.window, b.window, c.window],
+            self.viewport,
+            self.rule,
+        )?;
+        let mut smooth = [Varyings::default(); 3];
+        for (k, s) in smooth.iter_mut().enumerate() {
+            let m = self.mesh.vertices.get(corners[k] as usize)?;
+            let mut bary = [0.0; 3];
+            bary[k] = 1.0;
+            *s = Varyings::new(bary, m.uv, m.color).with_normal(m.normal);
+        }
+        let verts = LaneVertices {
+            inv_w: [a.inv_w, b.inv_w, c.inv_w],
+            depth: [a.depth, b.depth, c.depth],
+            smooth,
+            noperspective: smooth,
+        };
+        Some(LaneTriangle::new(
+            &g.edges,
+            g.bounds,
+            &g.weights,
+            &verts,
+            Some(shading),
+            uv,
+        ))
+    }
+
+    /// The smallest and largest window depth of the drawn triangles' vertices, as
+    /// [`depth_range`](super::render::depth_range) of the full render's triangles.
+    pub fn depth_range(&self) -> (f64, f64) {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        let mut add = |d: f64| {
+            lo = lo.min(d);
+            hi = hi.max(d);
+        };
+        for slot in &self.slots {
+            match slot {
+                Slot::Skip => {}
+                Slot::Whole { corners, .. } => {
+                    for &c in corners {
+                        if let Some(v) = self.vertices.get(c as usize) {
+                            add(v.depth);
+                        }
+                    }
+                }
+                Slot::Clipped(t) => {
+                    for s in &t.setups {
+                        for v in &s.v {
+                            add(v.depth);
+                        }
+                    }
+                }
+            }
+        }
+        if lo <= hi { (lo, hi) } else { (0.0, 1.0) }
+    }
+
+    /// The set-up triangles that reach each band of `rows_per_band` rows, in submission
+    /// order, as `(source triangle, set-up index)`.
+    fn bins(&self, height: u32, rows_per_band: u32) -> Vec<Vec<(u32, u32)>> {
+        let bands = height.div_ceil(rows_per_band).max(1) as usize;
+        let mut bins: Vec<Vec<(u32, u32)>> = vec![Vec::new(); bands];
+        let mut add = |ti: usize, si: usize, b: &PixelBounds| {
+            let first = (b.y0 / rows_per_band) as usize;
+            let last = ((b.y1 / rows_per_band) as usize).min(bands - 1);
+            for bin in bins.iter_mut().take(last + 1).skip(first) {
+                bin.push((ti as u32, si as u32));
+            }
+        };
+        for (ti, slot) in self.slots.iter().enumerate() {
+            match slot {
+                Slot::Skip => {}
+                Slot::Whole { bounds, .. } => add(ti, 0, bounds),
+                Slot::Clipped(t) => {
+                    for (si, s) in t.setups.iter().enumerate() {
+                        add(ti, si, &s.bounds);
+                    }
+                }
+            }
+        }
+        bins
+    }
+
+    /// Draws every prepared triangle into `frame` (already sized), band by band in parallel,
+    /// clearing each band to `background` first.
+    pub fn rasterize(
+        &self,
+        texture: &Texture,
+        params: &ShadeParams,
+        rasterizer: Rasterizer,
+        frame: &mut Framebuffer,
+        rows_per_band: u32,
+        background: [u8; 4],
+    ) {
+        use rayon::prelude::*;
+        let rows_per_band = rows_per_band.max(1);
+        let bins = self.bins(frame.height, rows_per_band);
+        let bands = RowBand::split(frame, rows_per_band);
+        // Whole triangles go straight to the edge-function lanes when they can draw them.
+        let lanes = match (rasterizer, lane_shading(params)) {
+            (Rasterizer::EdgeFunction, Some(shading)) => Some(shading),
+            _ => None,
+        };
+        bands.into_par_iter().zip(bins).for_each(|(mut band, bin)| {
+            band.clear(background);
+            let lanes = lanes.filter(|_| !band.has_aovs());
+            let uvs = !band.uv_affine.is_empty();
+            for (j, &(ti, si)) in bin.iter().enumerate() {
+                // The triangles a band visits are scattered over the mesh: ask for the memory
+                // of the ones a few steps ahead while this one draws.
+                if let Some(&(ahead, _)) = bin.get(j + PREFETCH_SLOTS) {
+                    prefetch(self.slots.get(ahead as usize));
+                }
+                if let Some(&(ahead, _)) = bin.get(j + PREFETCH_VERTICES)
+                    && let Some(Slot::Whole { corners, .. }) = self.slots.get(ahead as usize)
+                {
+                    for &c in corners {
+                        prefetch(self.vertices.get(c as usize));
+                        prefetch(self.mesh.vertices.get(c as usize));
+                    }
+                }
+                match &self.slots[ti as usize] {
+                    Slot::Skip => {}
+                    Slot::Whole { corners, .. } => {
+                        if let Some(shading) = lanes
+                            && let Some(tri) = self.lane_triangle(*corners, shading, uvs)
+                            && tri.exact()
+                        {
+                            draw_lanes(&tri, ti, texture, shading, &mut band);
+                        } else if let Some(setup) = self.setup(*corners) {
+                            rasterize(&setup, ti, texture, params, rasterizer, &mut band);
+                        }
+                    }
+                    Slot::Clipped(t) => {
+                        if let Some(setup) = t.setups.get(si as usize) {
+                            rasterize(setup, ti, texture, params, rasterizer, &mut band);
+                        }
+                    }
+                }
+            }
+        });
+    }
+}
+
+/// How many triangles ahead in a band's list the slot is prefetched.
+const PREFETCH_SLOTS: usize = 8;
+/// How many triangles ahead the vertices are prefetched (their slot is in cache by then).
+const PREFETCH_VERTICES: usize = 4;
+
+/// Asks the CPU to bring the cache line of `value` closer (a hint; nothing on other CPUs).
+#[inline(always)]
+fn prefetch<T>(value: Option<&T>) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(v) = value {
+        // SAFETY: prefetching is a hint that never faults, and `v` is a valid reference.
+        unsafe {
+            std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(
+                (v as *const T).cast::<i8>(),
+            )
+        };
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = value;
+}
