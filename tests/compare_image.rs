@@ -4,9 +4,11 @@
 
 use std::path::{Path, PathBuf};
 
+use barylab::app::command::AppCommand;
 use barylab::app::files::FileCommand;
 use barylab::app::state::Command as AppCmd;
 use barylab::app::{AppOptions, BaryApp};
+use barylab::i18n::Lang;
 use barylab::raster::Interpolation;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -140,7 +142,7 @@ fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
         .and_then(|ic| ic.comparison.clone())
         .expect("compared");
     assert!(c.color_differing > 0);
-    let looks = c.looks_like.clone().unwrap_or_default();
+    let looks = c.looks_like.expect("a verdict").text(Lang::En);
     assert!(looks.contains("affine"), "{looks}");
     assert!(
         h.query_by_label_contains("looks like affine").is_some(),
@@ -179,8 +181,38 @@ fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
         .compare_image()
         .and_then(|ic| ic.pin_reason.clone())
         .and_then(|(_, r)| r)
-        .expect("a reason for the pinned pixel");
-    assert!(reason.contains("affine"), "{reason}");
+        .expect("a reason for the pinned pixel")
+        .expect("the probe found it");
+    let en = reason.text(Lang::En);
+    assert!(en.contains("affine"), "{en}");
+
+    // In Chinese, the verdict and the pinned pixel's reason are Chinese, with no English
+    // catalogue text left in them.
+    let zh = reason.text(Lang::Zh);
+    assert!(zh.contains("仿射插值") && zh.contains("纹素"), "{zh}");
+    for english in ["affine", "texels", "looks like", "perspective-correct"] {
+        assert!(!zh.contains(english), "{zh}");
+    }
+    let looks_zh = c.looks_like.expect("a verdict").text(Lang::Zh);
+    assert!(looks_zh.contains("看起来像仿射插值"), "{looks_zh}");
+    assert!(!looks_zh.contains("looks like"), "{looks_zh}");
+    if barylab::i18n::cjk_font().is_none() {
+        // Without a Chinese font the app stays English (tests/app_lang.rs).
+        return;
+    }
+    h.state_mut().push(AppCommand::SetLang(Lang::Zh));
+    h.run();
+    assert_eq!(h.state().lang(), Lang::Zh);
+    assert!(
+        h.query_by_label(&looks_zh).is_some(),
+        "the Chinese verdict is in the strip"
+    );
+    assert!(
+        h.query_by_label_contains(&format!("已固定 ({}, {})：{zh}", p[0], p[1]))
+            .is_some(),
+        "the Chinese reason is in the strip"
+    );
+    assert!(h.query_by_label_contains("looks like affine").is_none());
 }
 
 #[test]

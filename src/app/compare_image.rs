@@ -14,6 +14,7 @@ use super::files::FileCommand;
 use super::gpu_view::{GpuResult, GpuView};
 use super::render::CanvasOutput;
 use super::state::Command;
+use crate::compare::reasons::Reason;
 use crate::compare::{self, Comparison, CoverageBy, Image, Reference, Rendered};
 use crate::figure::Compare;
 use crate::files::shown;
@@ -42,8 +43,9 @@ pub struct ImageCompare {
     key: Option<(u64, Interpolation)>,
     /// What the pinned pixel's reason needs.
     reference: Option<Held>,
-    /// The pinned pixel and why it differs (`None`: it agrees).
-    pub pin_reason: Option<([u32; 2], Option<String>)>,
+    /// The pinned pixel and why it differs (`None`: it agrees; `Err`: the probe's or the
+    /// renderer's message). Worded in the UI's language when shown.
+    pub pin_reason: Option<([u32; 2], Option<Result<Reason, String>>)>,
     /// The image's background colour, chosen (`--compare-background`, the strip's colour
     /// button): covered is any other colour, even where the image has alpha. `None`: alpha
     /// when the image has transparency, else the scene's background colour.
@@ -204,10 +206,10 @@ impl ImageCompare {
     }
 
     /// Why pixel `p` differs (`None` when it agrees or the reason cannot be found).
-    fn reason_at(&self, p: [u32; 2]) -> Option<String> {
+    fn reason_at(&self, p: [u32; 2]) -> Option<Result<Reason, String>> {
         let (c, h) = (self.comparison.as_ref()?, self.reference.as_ref()?);
         if let Some(listed) = c.first.iter().find(|d| d.pixel == p) {
-            return Some(listed.reason.clone());
+            return Some(Ok(listed.reason.clone()));
         }
         let k = (p[1] as usize) * (c.width as usize) + p[0] as usize;
         let theirs = *self.image.pixels.get(k)?;
@@ -223,7 +225,7 @@ impl ImageCompare {
             .filter(|t| t.differing * 2 < c.differing())
             .min_by_key(|t| t.differing);
         if let Some(t) = best.filter(|t| !t.differs_at(k)) {
-            return Some(t.pixel_reason(k, frame, &h.texture));
+            return Some(Ok(t.pixel_reason(k, frame, &h.texture)));
         }
         let reference = Reference {
             scene: &h.scene,
@@ -232,10 +234,7 @@ impl ImageCompare {
             settings: h.settings,
         };
         let context = compare::reasons::Context::new(&reference, &h.render, h.by, c.tolerance);
-        Some(match context.and_then(|cx| cx.reason(p, d, theirs)) {
-            Ok(r) => r,
-            Err(e) => e,
-        })
+        Some(context.and_then(|cx| cx.reason(p, d, theirs)))
     }
 }
 
@@ -295,10 +294,16 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
             }
             if let Some(([x, y], reason)) = &ic.pin_reason {
                 let text = match reason {
-                    Some(r) => lang.tr_with(
-                        "compare_image.pinned_reason",
-                        &[("x", x), ("y", y), ("reason", r)],
-                    ),
+                    Some(r) => {
+                        let r = match r {
+                            Ok(r) => r.text(lang),
+                            Err(e) => e.clone(),
+                        };
+                        lang.tr_with(
+                            "compare_image.pinned_reason",
+                            &[("x", x), ("y", y), ("reason", &r)],
+                        )
+                    }
                     None => lang.tr_with("compare_image.pinned_agrees", &[("x", x), ("y", y)]),
                 };
                 ui.add(egui::Label::new(RichText::new(text).strong()).wrap());
@@ -350,7 +355,7 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
                     legend(ui, lang);
                 }
                 if let Some(l) = &c.looks_like {
-                    ui.add(egui::Label::new(RichText::new(l).italics()).wrap());
+                    ui.add(egui::Label::new(RichText::new(l.text(lang)).italics()).wrap());
                 }
             }
         });

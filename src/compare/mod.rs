@@ -9,12 +9,14 @@
 
 mod file;
 pub mod hypotheses;
+mod reason;
 pub mod reasons;
 
 pub use file::read_image;
 
 use serde::Serialize;
 
+use crate::i18n::Lang;
 use crate::raster::{ClipMesh, Interpolation, NO_TRIANGLE, RenderSettings, Texture};
 use crate::scene::Scene;
 
@@ -78,8 +80,9 @@ pub enum Difference {
     Color,
 }
 
-/// One differing pixel with its reason.
-#[derive(Clone, Debug, Serialize)]
+/// One differing pixel with its reason. In JSON the reason is `reason` (in English) and
+/// `why` (the structured [`reasons::Reason`], its `kind` a stable code).
+#[derive(Clone, Debug)]
 pub struct PixelDifference {
     /// `[x, y]`, row 0 at the top.
     pub pixel: [u32; 2],
@@ -91,8 +94,36 @@ pub struct PixelDifference {
     pub ours: [u8; 4],
     /// The source triangle barylab drew there.
     pub triangle: Option<u32>,
-    /// One line: why they differ, from the probe.
-    pub reason: String,
+    /// Why they differ, from the probe or a whole-image explanation
+    /// ([`reasons::Reason::text`] words it).
+    pub reason: reasons::Reason,
+}
+
+impl Serialize for PixelDifference {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut s = serializer.serialize_struct("PixelDifference", 7)?;
+        s.serialize_field("pixel", &self.pixel)?;
+        s.serialize_field("difference", &self.difference)?;
+        s.serialize_field("theirs", &self.theirs)?;
+        s.serialize_field("ours", &self.ours)?;
+        s.serialize_field("triangle", &self.triangle)?;
+        s.serialize_field("reason", &self.reason.text(Lang::En))?;
+        s.serialize_field("why", &self.reason)?;
+        s.end()
+    }
+}
+
+/// `looks_like` in JSON: the verdict in English, and its kind as `looks_like_kind`.
+fn looks_like_json<S: serde::Serializer>(
+    verdict: &Option<hypotheses::Verdict>,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut m = serializer.serialize_map(Some(2))?;
+    m.serialize_entry("looks_like", &verdict.map(|v| v.text(Lang::En)))?;
+    m.serialize_entry("looks_like_kind", &verdict.map(|v| v.kind))?;
+    m.end()
 }
 
 /// The result of a comparison.
@@ -125,8 +156,11 @@ pub struct Comparison {
     pub max_color_at: Option<[u32; 2]>,
     /// The whole-image explanations tried, best first, with what each leaves differing.
     pub hypotheses: Vec<hypotheses::Tried>,
-    /// The explanation that fits much better than barylab's own image, if any.
-    pub looks_like: Option<String>,
+    /// The explanation that fits much better than barylab's own image, if any
+    /// ([`hypotheses::Verdict::text`] words it). In JSON: `looks_like` (in English) and
+    /// `looks_like_kind`.
+    #[serde(flatten, serialize_with = "looks_like_json")]
+    pub looks_like: Option<hypotheses::Verdict>,
     /// The first differing pixels in row order.
     pub first: Vec<PixelDifference>,
 }
