@@ -40,7 +40,8 @@ pub struct ImageCompare {
     pub size_mismatch: Option<[u32; 2]>,
     /// Why the comparison failed (the renderer's or the probe's message).
     pub error: Option<String>,
-    key: Option<(u64, Interpolation)>,
+    /// What the last comparison was made of (`None`: compare on the next update).
+    key: Option<Inputs>,
     /// What the pinned pixel's reason needs.
     reference: Option<Held>,
     /// The pinned pixel and why it differs (`None`: it agrees; `Err`: the probe's or the
@@ -50,6 +51,35 @@ pub struct ImageCompare {
     /// button): covered is any other colour, even where the image has alpha. `None`: alpha
     /// when the image has transparency, else the scene's background colour.
     pub background: Option<[u8; 3]>,
+    /// The scene changed during a drag: compared when it ends.
+    pub deferred: bool,
+    comparisons: u64,
+}
+
+/// What a comparison is made of: the canvas's scene as rendered (with the render's
+/// generation, which saves comparing scenes while it has not changed), the mode and the
+/// texture. A new render of the same scene (another compare view, another rasterizer) does
+/// not compare again.
+struct Inputs {
+    generation: u64,
+    scene: crate::scene::Scene,
+    mode: Interpolation,
+    texture: Arc<Texture>,
+}
+
+impl Inputs {
+    /// Whether `output` in `mode` with `texture` is what was compared (the texture is
+    /// checked only when given).
+    fn same(
+        &self,
+        output: &CanvasOutput,
+        mode: Interpolation,
+        texture: Option<&Arc<Texture>>,
+    ) -> bool {
+        self.mode == mode
+            && texture.is_none_or(|t| Arc::ptr_eq(t, &self.texture))
+            && (self.generation == output.generation || self.scene == output.scene)
+    }
 }
 
 /// The scene as compared, kept for the pinned pixel's reason.
@@ -81,6 +111,8 @@ impl ImageCompare {
             reference: None,
             pin_reason: None,
             background: None,
+            deferred: false,
+            comparisons: 0,
         }
     }
 
@@ -99,26 +131,53 @@ impl ImageCompare {
 
     /// Whether the comparison is made for the canvas's current render.
     pub fn settled(&self, output: Option<&CanvasOutput>, mode: Interpolation) -> bool {
-        output.is_some_and(|o| self.key == Some((o.generation, mode)))
+        output.is_some_and(|o| self.key.as_ref().is_some_and(|k| k.same(o, mode, None)))
     }
 
-    /// Once per frame: compares again when the canvas rendered anew or the mode changed, and
-    /// finds the pinned pixel's reason when the pin moved. Returns whether anything changed.
+    /// How many comparisons were made.
+    pub fn comparisons(&self) -> u64 {
+        self.comparisons
+    }
+
+    /// Once per frame: compares again when what is compared changed (the canvas's scene, the
+    /// mode, the texture, the background colour; not merely a new render of the same scene,
+    /// e.g. for another compare view), and finds the pinned pixel's reason when the pin
+    /// moved. While a pointer button is held (`held`: a drag, which renders every frame) a
+    /// changed scene is not compared: the canvas shows barylab's render until the drag
+    /// ends, then compares once. Returns whether anything changed.
     pub fn update(
         &mut self,
         output: Option<&CanvasOutput>,
         mode: Interpolation,
         texture: &Arc<Texture>,
         pinned: Option<[u32; 2]>,
+        held: bool,
     ) -> bool {
         let mut changed = false;
-        if let Some(out) = output
-            && self.key != Some((out.generation, mode))
-        {
-            self.key = Some((out.generation, mode));
-            self.compare(out, mode, texture);
-            self.pin_reason = None;
-            changed = true;
+        if let Some(out) = output {
+            match &mut self.key {
+                Some(k) if k.same(out, mode, Some(texture)) => k.generation = out.generation,
+                Some(_) if held => {
+                    if !self.deferred {
+                        self.clear();
+                        self.deferred = true;
+                        self.pin_reason = None;
+                        changed = true;
+                    }
+                }
+                _ => {
+                    self.deferred = false;
+                    self.key = Some(Inputs {
+                        generation: out.generation,
+                        scene: out.scene.clone(),
+                        mode,
+                        texture: Arc::clone(texture),
+                    });
+                    self.compare(out, mode, texture);
+                    self.pin_reason = None;
+                    changed = true;
+                }
+            }
         }
         if self.pin_reason.as_ref().map(|p| p.0) != pinned {
             self.pin_reason = pinned.map(|p| (p, self.reason_at(p)));
@@ -127,12 +186,18 @@ impl ImageCompare {
         changed
     }
 
-    fn compare(&mut self, out: &CanvasOutput, mode: Interpolation, texture: &Arc<Texture>) {
+    /// Forgets the last comparison (the canvas shows barylab's render).
+    fn clear(&mut self) {
         self.view.result = None;
         self.comparison = None;
         self.reference = None;
         self.error = None;
         self.view.generation += 1;
+    }
+
+    fn compare(&mut self, out: &CanvasOutput, mode: Interpolation, texture: &Arc<Texture>) {
+        self.clear();
+        self.comparisons += 1;
         let mut settings = out.scene.settings();
         settings.mode = mode;
         if [settings.width, settings.height] != self.size() {
@@ -157,10 +222,11 @@ impl ImageCompare {
                 settings,
             };
             let tol = compare::DEFAULT_TOLERANCE;
-            let c = compare::compare(&self.image, &reference, by, tol)?;
-            let diff = compare::difference_image(&self.image, &reference, by, tol)?;
+            // One render for the comparison, the difference image and the pinned reasons.
             let render =
                 crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
+            let c = compare::compare_rendered(&self.image, &reference, &render, by, tol)?;
+            let diff = compare::difference_image_of(&self.image, &render.frame, by, tol);
             Ok::<_, String>((c, diff, render))
         })();
         let (c, diff, render) = match made {
@@ -327,6 +393,9 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
                     }
                 });
             }
+            if ic.deferred {
+                ui.label(RichText::new(lang.tr("compare.after_drag")).italics());
+            }
             if let Some(e) = &ic.error {
                 ui.add(red(e.clone()).wrap());
             }
@@ -432,11 +501,12 @@ impl super::BaryApp {
     }
 
     /// Once per frame: the comparison for the current render. Returns whether it changed.
-    pub(super) fn compare_image_frame(&mut self, texture: &Arc<Texture>) -> bool {
+    /// `held`: a pointer button is down (a drag may be going on).
+    pub(super) fn compare_image_frame(&mut self, texture: &Arc<Texture>, held: bool) -> bool {
         let (mode, pinned) = (self.state.options().mode, self.state.view.pinned);
         let out = self.canvas.output.as_ref();
         self.compare_image
             .as_mut()
-            .is_some_and(|ic| ic.update(out, mode, texture, pinned))
+            .is_some_and(|ic| ic.update(out, mode, texture, pinned, held))
     }
 }

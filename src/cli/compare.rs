@@ -45,11 +45,13 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
         texture: &texture,
         settings,
     };
-    let c = compare::compare(&image, &reference, by, args.tolerance)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", shown(&args.input.scene)))?;
+    let failed = |e: String| anyhow::anyhow!("{}: {e}", shown(&args.input.scene));
+    let render =
+        barylab::raster::render(&mesh, &texture, &settings).map_err(|e| failed(e.to_string()))?;
+    let c = compare::compare_rendered(&image, &reference, &render, by, args.tolerance)
+        .map_err(failed)?;
     if let Some(o) = &args.output {
-        let diff = compare::difference_image(&image, &reference, by, args.tolerance)
-            .map_err(anyhow::Error::msg)?;
+        let diff = compare::difference_image_of(&image, &render.frame, by, args.tolerance);
         let mut png = Vec::new();
         diff.write_to(&mut Cursor::new(&mut png), image::ImageFormat::Png)?;
         files::write_bytes(o, &png)?;

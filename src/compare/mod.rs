@@ -253,6 +253,28 @@ pub fn compare(
     }
     let render =
         crate::raster::render(reference.mesh, reference.texture, s).map_err(|e| e.to_string())?;
+    compare_rendered(theirs, reference, &render, by, tolerance)
+}
+
+/// [`compare`] with barylab's render of `reference` already made (with all its buffers, as
+/// [`crate::raster::render`] makes it), so that a caller who also needs the render or the
+/// [`difference_image_of`] renders once. The sizes must match.
+pub fn compare_rendered(
+    theirs: &Image,
+    reference: &Reference,
+    render: &crate::raster::render::Render,
+    by: CoverageBy,
+    tolerance: u8,
+) -> Result<Comparison, String> {
+    let s = &reference.settings;
+    let f = &render.frame;
+    if (theirs.width, theirs.height) != (f.width, f.height) || theirs.pixels.len() != f.color.len()
+    {
+        return Err(format!(
+            "the image is {}x{}, the render {}x{}",
+            theirs.width, theirs.height, f.width, f.height
+        ));
+    }
     let ours = Rendered::of(&render.frame);
     let width = s.width;
     let mut c = Comparison {
@@ -303,7 +325,7 @@ pub fn compare(
         .filter(|h| h.differing * 2 < c.differing())
         .min_by_key(|h| h.differing);
     c.looks_like = best.map(|h| h.verdict());
-    let context = reasons::Context::new(reference, &render, by, tolerance)?;
+    let context = reasons::Context::new(reference, render, by, tolerance)?;
     for (k, d) in differing {
         let xy = [(k as u32) % width, (k as u32) / width];
         let explained = best.filter(|h| !h.differs_at(k));
@@ -336,9 +358,21 @@ pub fn difference_image(
 ) -> Result<image::RgbaImage, String> {
     let render = crate::raster::render(reference.mesh, reference.texture, &reference.settings)
         .map_err(|e| e.to_string())?;
-    let ours = Rendered::of(&render.frame);
+    Ok(difference_image_of(theirs, &render.frame, by, tolerance))
+}
+
+/// [`difference_image`] of barylab's frame already rendered (the sizes must match: pixels
+/// past the shorter of the two are left black).
+pub fn difference_image_of(
+    theirs: &Image,
+    frame: &crate::raster::Framebuffer,
+    by: CoverageBy,
+    tolerance: u8,
+) -> image::RgbaImage {
+    let ours = Rendered::of(frame);
     let mut out = image::RgbaImage::new(theirs.width, theirs.height);
-    for (k, (px, &p)) in out.pixels_mut().zip(&theirs.pixels).enumerate() {
+    let n = ours.color.len();
+    for (k, (px, &p)) in out.pixels_mut().zip(&theirs.pixels).take(n).enumerate() {
         let o = ours.color[k];
         let grey = ((u32::from(o[0]) * 3 + u32::from(o[1]) * 6 + u32::from(o[2])) / 10 / 3) as u8;
         px.0 = match classify(p, &ours, k, by, tolerance) {
@@ -351,5 +385,5 @@ pub fn difference_image(
             }
         };
     }
-    Ok(out)
+    out
 }
