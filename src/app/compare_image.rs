@@ -27,6 +27,10 @@ pub fn read_image(path: &Path) -> Result<Image, String> {
     compare::read_image(path, |_, _| Ok(()))
 }
 
+/// Why a pinned pixel differs, or the probe's or the renderer's message when that cannot be
+/// found.
+pub type PinReason = Result<Reason, String>;
+
 /// An image being compared with the canvas's render.
 pub struct ImageCompare {
     /// The file it was read from.
@@ -46,7 +50,7 @@ pub struct ImageCompare {
     reference: Option<Held>,
     /// The pinned pixel and why it differs (`None`: it agrees; `Err`: the probe's or the
     /// renderer's message). Worded in the UI's language when shown.
-    pub pin_reason: Option<([u32; 2], Option<Result<Reason, String>>)>,
+    pub pin_reason: Option<([u32; 2], Option<PinReason>)>,
     /// The image's background colour, chosen (`--compare-background`, the strip's colour
     /// button): covered is any other colour, even where the image has alpha. `None`: alpha
     /// when the image has transparency, else the scene's background colour.
@@ -272,7 +276,7 @@ impl ImageCompare {
     }
 
     /// Why pixel `p` differs (`None` when it agrees or the reason cannot be found).
-    fn reason_at(&self, p: [u32; 2]) -> Option<Result<Reason, String>> {
+    fn reason_at(&self, p: [u32; 2]) -> Option<PinReason> {
         let (c, h) = (self.comparison.as_ref()?, self.reference.as_ref()?);
         if let Some(listed) = c.first.iter().find(|d| d.pixel == p) {
             return Some(Ok(listed.reason.clone()));
