@@ -23,8 +23,8 @@ use crate::raster::{Interpolation, NO_TRIANGLE, Texture};
 
 /// Reads an image through the library's checked reader ([`compare::read_image`]); the error
 /// is one line naming the file and the problem.
-pub fn read_image(path: &Path) -> Result<Image, String> {
-    compare::read_image(path, |_, _| Ok(()))
+pub fn read_image(path: &Path, lang: Lang) -> Result<Image, String> {
+    compare::read_image(path, lang, |_, _| Ok(()))
 }
 
 /// Why a pinned pixel differs, or the probe's or the renderer's message when that cannot be
@@ -486,7 +486,7 @@ impl super::BaryApp {
     /// Reads `path` and compares it with the canvas's render from the next frame on (the GPU
     /// view goes off); a bad file leaves a one-line error naming it.
     pub(super) fn open_compare_image(&mut self, path: &Path) {
-        match read_image(path) {
+        match read_image(path, self.lang) {
             Ok(image) => {
                 let print = self.gpu_view.print_summary;
                 self.compare_image = Some(ImageCompare::new(path.to_path_buf(), image, print));

@@ -85,7 +85,7 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
 /// Reads the image, checking its size against the scene's before decoding it.
 fn read_image(path: &Path, size: (u32, u32), scene: &Path, lang: Lang) -> Result<Image> {
     let name = shown(path);
-    compare::read_image(path, |w, h| {
+    compare::read_image(path, lang, |w, h| {
         if (w, h) == size {
             Ok(())
         } else {
