@@ -201,6 +201,10 @@ struct CompareArgs {
     /// Print the comparison as JSON.
     #[arg(long)]
     json: bool,
+    /// Language of the report and the reasons: en, zh (zh-CN), or auto (the system locale:
+    /// LC_ALL, LC_MESSAGES, LANG). JSON keeps English texts and adds stable `kind` codes.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
 }
 
 /// Parses a colour: black, white, #rrggbb or R,G,B.
@@ -248,6 +252,10 @@ struct GpuCheckArgs {
     /// Print one JSON object instead of text.
     #[arg(long)]
     json: bool,
+    /// Language of the report: en, zh (zh-CN), or auto (the system locale: LC_ALL,
+    /// LC_MESSAGES, LANG). JSON stays the same in every language.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
 }
 
 #[derive(clap::Args, Debug)]

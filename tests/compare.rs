@@ -290,3 +290,109 @@ fn games101_assignment_2_mistakes_are_named() {
         "{out}"
     );
 }
+
+/// The English fragments of the `compare` catalogue section (between placeholders, with two
+/// or more English words besides names), which a Chinese report must not contain.
+fn english_fragments() -> Vec<String> {
+    let path = format!("{}/locales/en.yml", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("catalogue");
+    let value: serde_yaml::Value = serde_yaml::from_str(&text).expect("YAML");
+    fn strings(v: &serde_yaml::Value, out: &mut Vec<String>) {
+        match v {
+            serde_yaml::Value::Mapping(m) => m.values().for_each(|v| strings(v, out)),
+            serde_yaml::Value::String(s) => out.push(s.clone()),
+            _ => {}
+        }
+    }
+    let mut all = Vec::new();
+    strings(&value["compare"], &mut all);
+    assert!(all.len() > 50, "the compare section: {}", all.len());
+    let names = [
+        "barylab", "OpenGL", "Mesa", "llvmpipe", "MSAA", "Vulkan", "GPU",
+    ];
+    let mut out = Vec::new();
+    for s in all {
+        let mut rest = s.as_str();
+        loop {
+            let (piece, next) = match rest.find("%{") {
+                Some(i) => (&rest[..i], rest[i..].find('}').map(|j| &rest[i + j + 1..])),
+                None => (rest, None),
+            };
+            let words = piece
+                .split(|c: char| !c.is_ascii_alphabetic())
+                .filter(|w| w.len() >= 3 && !names.contains(w))
+                .count();
+            if words >= 2 {
+                out.push(piece.trim().to_string());
+            }
+            match next {
+                Some(n) => rest = n,
+                None => break,
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_report_and_the_reasons_are_chinese_with_lang_zh() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let affine = make_image(
+        "default.json",
+        dir.path(),
+        "affine.png",
+        |s| s.mode = Interpolation::Affine,
+        as_is,
+    );
+    let right = make_image("vertex-colors.json", dir.path(), "right.png", |_| {}, as_is);
+    let flipped = dir.path().join("flipped.png");
+    image::open(&right)
+        .expect("png")
+        .flipv()
+        .save(&flipped)
+        .expect("save");
+    let english = english_fragments();
+    for (name, image, words) in [
+        ("default.json", &affine, ["结论：看起来像仿射插值", "纹素"]),
+        (
+            "vertex-colors.json",
+            &flipped,
+            ["结论：看起来 y 方向被翻转了", "上下翻转后的 barylab 图像"],
+        ),
+    ] {
+        let (code, out, err) = compare(&[&scene(name), s(image), "--lang", "zh"]);
+        assert_eq!(code, Some(1), "{out}{err}");
+        for w in words {
+            assert!(out.contains(w), "{w}: {out}");
+        }
+        assert!(out.contains("最先出现的不同像素："), "{out}");
+        for e in &english {
+            assert!(!out.contains(e.as_str()), "English {e:?} in: {out}");
+            assert!(!err.contains(e.as_str()), "English {e:?} in: {err}");
+        }
+        assert!(err.contains("个不同"), "{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        // The same in English names the English words, and JSON stays English.
+        let (_, en, _) = compare(&[&scene(name), s(image), "--lang", "en"]);
+        assert!(en.contains("verdict: looks"), "{en}");
+        let (_, json, _) = compare(&[&scene(name), s(image), "--lang", "zh", "--json"]);
+        let json: serde_json::Value = serde_json::from_str(&json).expect("json");
+        assert!(
+            json["looks_like"]
+                .as_str()
+                .is_some_and(|l| l.starts_with("looks")),
+            "{json}"
+        );
+        let first = &json["first"][0];
+        assert!(first["why"]["kind"].is_string(), "{json}");
+        assert!(
+            first["reason"].as_str().is_some_and(|r| r.is_ascii()),
+            "{json}"
+        );
+    }
+    assert_eq!(
+        compare(&[&scene("default.json"), s(&affine), "--json"]).1,
+        compare(&[&scene("default.json"), s(&affine), "--json", "--lang", "zh"]).1,
+        "JSON is the same in every language"
+    );
+}

@@ -4,10 +4,14 @@
 
 use std::path::{Path, PathBuf};
 
+use barylab::app::command::AppCommand;
 use barylab::app::files::FileCommand;
 use barylab::app::state::Command as AppCmd;
 use barylab::app::{AppOptions, BaryApp};
+use barylab::figure::Compare;
+use barylab::i18n::Lang;
 use barylab::raster::Interpolation;
+use barylab::raster::render::Rasterizer;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec2;
@@ -140,7 +144,7 @@ fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
         .and_then(|ic| ic.comparison.clone())
         .expect("compared");
     assert!(c.color_differing > 0);
-    let looks = c.looks_like.clone().unwrap_or_default();
+    let looks = c.looks_like.expect("a verdict").text(Lang::En);
     assert!(looks.contains("affine"), "{looks}");
     assert!(
         h.query_by_label_contains("looks like affine").is_some(),
@@ -179,8 +183,38 @@ fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
         .compare_image()
         .and_then(|ic| ic.pin_reason.clone())
         .and_then(|(_, r)| r)
-        .expect("a reason for the pinned pixel");
-    assert!(reason.contains("affine"), "{reason}");
+        .expect("a reason for the pinned pixel")
+        .expect("the probe found it");
+    let en = reason.text(Lang::En);
+    assert!(en.contains("affine"), "{en}");
+
+    // In Chinese, the verdict and the pinned pixel's reason are Chinese, with no English
+    // catalogue text left in them.
+    let zh = reason.text(Lang::Zh);
+    assert!(zh.contains("仿射插值") && zh.contains("纹素"), "{zh}");
+    for english in ["affine", "texels", "looks like", "perspective-correct"] {
+        assert!(!zh.contains(english), "{zh}");
+    }
+    let looks_zh = c.looks_like.expect("a verdict").text(Lang::Zh);
+    assert!(looks_zh.contains("看起来像仿射插值"), "{looks_zh}");
+    assert!(!looks_zh.contains("looks like"), "{looks_zh}");
+    if barylab::i18n::cjk_font().is_none() {
+        // Without a Chinese font the app stays English (tests/app_lang.rs).
+        return;
+    }
+    h.state_mut().push(AppCommand::SetLang(Lang::Zh));
+    h.run();
+    assert_eq!(h.state().lang(), Lang::Zh);
+    assert!(
+        h.query_by_label(&looks_zh).is_some(),
+        "the Chinese verdict is in the strip"
+    );
+    assert!(
+        h.query_by_label_contains(&format!("已固定 ({}, {})：{zh}", p[0], p[1]))
+            .is_some(),
+        "the Chinese reason is in the strip"
+    );
+    assert!(h.query_by_label_contains("looks like affine").is_none());
 }
 
 #[test]
@@ -238,4 +272,105 @@ fn a_chosen_background_colour_decides_coverage() {
     h.run();
     let s = summary(&h);
     assert!(s.starts_with("No difference"), "{s}");
+}
+
+/// The comparison is made again only when what is compared changes: another compare view
+/// renders the canvas anew but compares nothing; another mode compares again. At 1920x1080,
+/// where one comparison takes a noticeable time (printed).
+#[test]
+fn a_new_render_of_the_same_scene_does_not_compare_again() {
+    const BIG: [u32; 2] = [1920, 1080];
+    let mut h = harness();
+    h.state_mut().push(AppCmd::SetImageSize(Some(BIG)));
+    h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
+    h.run();
+    let colors = |h: &Harness<'_, BaryApp>| {
+        let out = h.state().canvas().output.as_ref().expect("rendered");
+        assert_eq!(out.size, BIG);
+        let mode = h.state().state().options().mode;
+        out.render(mode).expect("a render").frame.color.clone()
+    };
+    let affine = colors(&h);
+    h.state_mut()
+        .push(AppCmd::SetMode(Interpolation::Perspective));
+    h.run();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("affine-1080p.png");
+    write_png(&path, BIG, &affine);
+    let start = std::time::Instant::now();
+    compare(&mut h, path);
+    let first = start.elapsed();
+    let ic = h.state().compare_image().expect("comparing");
+    assert!(ic.comparison.as_ref().is_some_and(|c| !c.agrees()));
+    let made = ic.comparisons();
+    let generation = |h: &Harness<'_, BaryApp>| {
+        h.state()
+            .canvas()
+            .output
+            .as_ref()
+            .map(|o| o.generation)
+            .expect("rendered")
+    };
+    let settled = |h: &Harness<'_, BaryApp>| {
+        let ic = h.state().compare_image().expect("comparing");
+        ic.settled(
+            h.state().canvas().output.as_ref(),
+            Interpolation::Perspective,
+        )
+    };
+    // Another rasterizer renders anew (the same pixels): nothing is compared again.
+    for r in [Rasterizer::Scanline, Rasterizer::EdgeFunction] {
+        let before = generation(&h);
+        let start = std::time::Instant::now();
+        h.state_mut().push(AppCmd::SetRasterizer(r));
+        h.run();
+        eprintln!("{r:?} at 1920x1080: {:?}", start.elapsed());
+        assert_ne!(generation(&h), before, "{r:?} renders anew");
+        let ic = h.state().compare_image().expect("comparing");
+        assert_eq!(ic.comparisons(), made, "{r:?} compares nothing again");
+        assert!(settled(&h));
+    }
+    for view in [Compare::SideBySide, Compare::Difference, Compare::Single] {
+        h.state_mut().push(AppCmd::SetCompare(view));
+        h.run();
+        let ic = h.state().compare_image().expect("comparing");
+        assert_eq!(ic.comparisons(), made, "{view:?} compares nothing again");
+        assert!(settled(&h));
+    }
+    // A change while a button is held (a drag) is compared when it is released.
+    let corner = egui::pos2(SIZE.x - 4.0, SIZE.y - 4.0);
+    let button = |h: &mut Harness<'_, BaryApp>, pressed| {
+        h.event(egui::Event::PointerButton {
+            pos: corner,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+    };
+    h.hover_at(corner);
+    button(&mut h, true);
+    h.state_mut()
+        .push(AppCmd::SetTieRule(barylab::raster::setup::TieRule::TopLeft));
+    h.run();
+    let ic = h.state().compare_image().expect("comparing");
+    assert!(
+        ic.deferred && ic.comparison.is_none(),
+        "not compared during the drag"
+    );
+    assert_eq!(ic.comparisons(), made);
+    button(&mut h, false);
+    h.run();
+    let ic = h.state().compare_image().expect("comparing");
+    assert!(
+        !ic.deferred && ic.comparison.is_some(),
+        "compared after the drag"
+    );
+    assert_eq!(ic.comparisons(), made + 1);
+    let made = made + 1;
+    h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
+    h.run();
+    let ic = h.state().compare_image().expect("comparing");
+    assert_eq!(ic.comparisons(), made + 1, "another mode compares again");
+    assert!(ic.comparison.as_ref().is_some_and(|c| c.agrees()));
+    eprintln!("first comparison at 1920x1080 (with its frames): {first:?}");
 }

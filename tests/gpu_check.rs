@@ -200,3 +200,41 @@ fn a_bad_scene_is_named() {
         "{stderr}"
     );
 }
+
+/// `--lang zh`: the report in Chinese (the notes too); JSON stays English.
+#[test]
+fn the_report_is_chinese_with_lang_zh() {
+    if !llvmpipe_present() {
+        return;
+    }
+    let run = |args: &[&str]| {
+        let out = barylab()
+            .args(["gpu-check", "--software", "--size", "160x90"])
+            .args(args)
+            .arg("assets/scenes/vertex-colors.json")
+            .output()
+            .expect("run barylab");
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).to_string()
+    };
+    let zh = run(&["--lang", "zh"]);
+    assert!(zh.contains("OpenGL：llvmpipe"), "{zh}");
+    assert!(zh.contains("GPU 遵循与 llvmpipe 相同的填充规则"), "{zh}");
+    assert!(zh.contains("覆盖：barylab 覆盖了 14400 个像素中的"), "{zh}");
+    assert!(zh.contains("所属三角形：0 个不一致"), "{zh}");
+    for english in [
+        "coverage:",
+        "owning triangle",
+        "mismatches",
+        "ties:",
+        "note:",
+    ] {
+        assert!(!zh.contains(english), "{english}: {zh}");
+    }
+    let json = |lang| run(&["--json", "--lang", lang]);
+    assert_eq!(json("zh"), json("en"), "JSON is the same in every language");
+}

@@ -14,6 +14,7 @@ use super::files::FileCommand;
 use super::gpu_view::{GpuResult, GpuView};
 use super::render::CanvasOutput;
 use super::state::Command;
+use crate::compare::reasons::Reason;
 use crate::compare::{self, Comparison, CoverageBy, Image, Reference, Rendered};
 use crate::figure::Compare;
 use crate::files::shown;
@@ -22,9 +23,13 @@ use crate::raster::{Interpolation, NO_TRIANGLE, Texture};
 
 /// Reads an image through the library's checked reader ([`compare::read_image`]); the error
 /// is one line naming the file and the problem.
-pub fn read_image(path: &Path) -> Result<Image, String> {
-    compare::read_image(path, |_, _| Ok(()))
+pub fn read_image(path: &Path, lang: Lang) -> Result<Image, String> {
+    compare::read_image(path, lang, |_, _| Ok(()))
 }
+
+/// Why a pinned pixel differs, or the probe's or the renderer's message when that cannot be
+/// found.
+pub type PinReason = Result<Reason, String>;
 
 /// An image being compared with the canvas's render.
 pub struct ImageCompare {
@@ -39,15 +44,46 @@ pub struct ImageCompare {
     pub size_mismatch: Option<[u32; 2]>,
     /// Why the comparison failed (the renderer's or the probe's message).
     pub error: Option<String>,
-    key: Option<(u64, Interpolation)>,
+    /// What the last comparison was made of (`None`: compare on the next update).
+    key: Option<Inputs>,
     /// What the pinned pixel's reason needs.
     reference: Option<Held>,
-    /// The pinned pixel and why it differs (`None`: it agrees).
-    pub pin_reason: Option<([u32; 2], Option<String>)>,
+    /// The pinned pixel and why it differs (`None`: it agrees; `Err`: the probe's or the
+    /// renderer's message). Worded in the UI's language when shown.
+    pub pin_reason: Option<([u32; 2], Option<PinReason>)>,
     /// The image's background colour, chosen (`--compare-background`, the strip's colour
     /// button): covered is any other colour, even where the image has alpha. `None`: alpha
     /// when the image has transparency, else the scene's background colour.
     pub background: Option<[u8; 3]>,
+    /// The scene changed during a drag: compared when it ends.
+    pub deferred: bool,
+    comparisons: u64,
+}
+
+/// What a comparison is made of: the canvas's scene as rendered (with the render's
+/// generation, which saves comparing scenes while it has not changed), the mode and the
+/// texture. A new render of the same scene (another compare view, another rasterizer) does
+/// not compare again.
+struct Inputs {
+    generation: u64,
+    scene: crate::scene::Scene,
+    mode: Interpolation,
+    texture: Arc<Texture>,
+}
+
+impl Inputs {
+    /// Whether `output` in `mode` with `texture` is what was compared (the texture is
+    /// checked only when given).
+    fn same(
+        &self,
+        output: &CanvasOutput,
+        mode: Interpolation,
+        texture: Option<&Arc<Texture>>,
+    ) -> bool {
+        self.mode == mode
+            && texture.is_none_or(|t| Arc::ptr_eq(t, &self.texture))
+            && (self.generation == output.generation || self.scene == output.scene)
+    }
 }
 
 /// The scene as compared, kept for the pinned pixel's reason.
@@ -79,6 +115,8 @@ impl ImageCompare {
             reference: None,
             pin_reason: None,
             background: None,
+            deferred: false,
+            comparisons: 0,
         }
     }
 
@@ -97,26 +135,53 @@ impl ImageCompare {
 
     /// Whether the comparison is made for the canvas's current render.
     pub fn settled(&self, output: Option<&CanvasOutput>, mode: Interpolation) -> bool {
-        output.is_some_and(|o| self.key == Some((o.generation, mode)))
+        output.is_some_and(|o| self.key.as_ref().is_some_and(|k| k.same(o, mode, None)))
     }
 
-    /// Once per frame: compares again when the canvas rendered anew or the mode changed, and
-    /// finds the pinned pixel's reason when the pin moved. Returns whether anything changed.
+    /// How many comparisons were made.
+    pub fn comparisons(&self) -> u64 {
+        self.comparisons
+    }
+
+    /// Once per frame: compares again when what is compared changed (the canvas's scene, the
+    /// mode, the texture, the background colour; not merely a new render of the same scene,
+    /// e.g. for another compare view), and finds the pinned pixel's reason when the pin
+    /// moved. While a pointer button is held (`held`: a drag, which renders every frame) a
+    /// changed scene is not compared: the canvas shows barylab's render until the drag
+    /// ends, then compares once. Returns whether anything changed.
     pub fn update(
         &mut self,
         output: Option<&CanvasOutput>,
         mode: Interpolation,
         texture: &Arc<Texture>,
         pinned: Option<[u32; 2]>,
+        held: bool,
     ) -> bool {
         let mut changed = false;
-        if let Some(out) = output
-            && self.key != Some((out.generation, mode))
-        {
-            self.key = Some((out.generation, mode));
-            self.compare(out, mode, texture);
-            self.pin_reason = None;
-            changed = true;
+        if let Some(out) = output {
+            match &mut self.key {
+                Some(k) if k.same(out, mode, Some(texture)) => k.generation = out.generation,
+                Some(_) if held => {
+                    if !self.deferred {
+                        self.clear();
+                        self.deferred = true;
+                        self.pin_reason = None;
+                        changed = true;
+                    }
+                }
+                _ => {
+                    self.deferred = false;
+                    self.key = Some(Inputs {
+                        generation: out.generation,
+                        scene: out.scene.clone(),
+                        mode,
+                        texture: Arc::clone(texture),
+                    });
+                    self.compare(out, mode, texture);
+                    self.pin_reason = None;
+                    changed = true;
+                }
+            }
         }
         if self.pin_reason.as_ref().map(|p| p.0) != pinned {
             self.pin_reason = pinned.map(|p| (p, self.reason_at(p)));
@@ -125,12 +190,18 @@ impl ImageCompare {
         changed
     }
 
-    fn compare(&mut self, out: &CanvasOutput, mode: Interpolation, texture: &Arc<Texture>) {
+    /// Forgets the last comparison (the canvas shows barylab's render).
+    fn clear(&mut self) {
         self.view.result = None;
         self.comparison = None;
         self.reference = None;
         self.error = None;
         self.view.generation += 1;
+    }
+
+    fn compare(&mut self, out: &CanvasOutput, mode: Interpolation, texture: &Arc<Texture>) {
+        self.clear();
+        self.comparisons += 1;
         let mut settings = out.scene.settings();
         settings.mode = mode;
         if [settings.width, settings.height] != self.size() {
@@ -155,10 +226,11 @@ impl ImageCompare {
                 settings,
             };
             let tol = compare::DEFAULT_TOLERANCE;
-            let c = compare::compare(&self.image, &reference, by, tol)?;
-            let diff = compare::difference_image(&self.image, &reference, by, tol)?;
+            // One render for the comparison, the difference image and the pinned reasons.
             let render =
                 crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
+            let c = compare::compare_rendered(&self.image, &reference, &render, by, tol)?;
+            let diff = compare::difference_image_of(&self.image, &render.frame, by, tol);
             Ok::<_, String>((c, diff, render))
         })();
         let (c, diff, render) = match made {
@@ -204,10 +276,10 @@ impl ImageCompare {
     }
 
     /// Why pixel `p` differs (`None` when it agrees or the reason cannot be found).
-    fn reason_at(&self, p: [u32; 2]) -> Option<String> {
+    fn reason_at(&self, p: [u32; 2]) -> Option<PinReason> {
         let (c, h) = (self.comparison.as_ref()?, self.reference.as_ref()?);
         if let Some(listed) = c.first.iter().find(|d| d.pixel == p) {
-            return Some(listed.reason.clone());
+            return Some(Ok(listed.reason.clone()));
         }
         let k = (p[1] as usize) * (c.width as usize) + p[0] as usize;
         let theirs = *self.image.pixels.get(k)?;
@@ -223,7 +295,7 @@ impl ImageCompare {
             .filter(|t| t.differing * 2 < c.differing())
             .min_by_key(|t| t.differing);
         if let Some(t) = best.filter(|t| !t.differs_at(k)) {
-            return Some(t.pixel_reason(k, frame, &h.texture));
+            return Some(Ok(t.pixel_reason(k, frame, &h.texture)));
         }
         let reference = Reference {
             scene: &h.scene,
@@ -232,10 +304,7 @@ impl ImageCompare {
             settings: h.settings,
         };
         let context = compare::reasons::Context::new(&reference, &h.render, h.by, c.tolerance);
-        Some(match context.and_then(|cx| cx.reason(p, d, theirs)) {
-            Ok(r) => r,
-            Err(e) => e,
-        })
+        Some(context.and_then(|cx| cx.reason(p, d, theirs)))
     }
 }
 
@@ -295,10 +364,16 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
             }
             if let Some(([x, y], reason)) = &ic.pin_reason {
                 let text = match reason {
-                    Some(r) => lang.tr_with(
-                        "compare_image.pinned_reason",
-                        &[("x", x), ("y", y), ("reason", r)],
-                    ),
+                    Some(r) => {
+                        let r = match r {
+                            Ok(r) => r.text(lang),
+                            Err(e) => e.clone(),
+                        };
+                        lang.tr_with(
+                            "compare_image.pinned_reason",
+                            &[("x", x), ("y", y), ("reason", &r)],
+                        )
+                    }
                     None => lang.tr_with("compare_image.pinned_agrees", &[("x", x), ("y", y)]),
                 };
                 ui.add(egui::Label::new(RichText::new(text).strong()).wrap());
@@ -321,6 +396,9 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
                         out.push(Command::SetImageSize(Some([iw, ih])).into());
                     }
                 });
+            }
+            if ic.deferred {
+                ui.label(RichText::new(lang.tr("compare.after_drag")).italics());
             }
             if let Some(e) = &ic.error {
                 ui.add(red(e.clone()).wrap());
@@ -350,7 +428,7 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
                     legend(ui, lang);
                 }
                 if let Some(l) = &c.looks_like {
-                    ui.add(egui::Label::new(RichText::new(l).italics()).wrap());
+                    ui.add(egui::Label::new(RichText::new(l.text(lang)).italics()).wrap());
                 }
             }
         });
@@ -408,7 +486,7 @@ impl super::BaryApp {
     /// Reads `path` and compares it with the canvas's render from the next frame on (the GPU
     /// view goes off); a bad file leaves a one-line error naming it.
     pub(super) fn open_compare_image(&mut self, path: &Path) {
-        match read_image(path) {
+        match read_image(path, self.lang) {
             Ok(image) => {
                 let print = self.gpu_view.print_summary;
                 self.compare_image = Some(ImageCompare::new(path.to_path_buf(), image, print));
@@ -427,11 +505,12 @@ impl super::BaryApp {
     }
 
     /// Once per frame: the comparison for the current render. Returns whether it changed.
-    pub(super) fn compare_image_frame(&mut self, texture: &Arc<Texture>) -> bool {
+    /// `held`: a pointer button is down (a drag may be going on).
+    pub(super) fn compare_image_frame(&mut self, texture: &Arc<Texture>, held: bool) -> bool {
         let (mode, pinned) = (self.state.options().mode, self.state.view.pinned);
         let out = self.canvas.output.as_ref();
         self.compare_image
             .as_mut()
-            .is_some_and(|ic| ic.update(out, mode, texture, pinned))
+            .is_some_and(|ic| ic.update(out, mode, texture, pinned, held))
     }
 }

@@ -363,7 +363,8 @@ impl BaryApp {
         {
             ctx.request_repaint();
         }
-        if self.compare_image_frame(&texture) {
+        let held = ctx.input(|i| i.pointer.any_down());
+        if self.compare_image_frame(&texture, held) {
             ctx.request_repaint();
         }
 

@@ -4,8 +4,10 @@ use std::io::Cursor;
 use std::path::Path;
 
 use anyhow::Result;
+use barylab::compare::reasons::mode_short;
 use barylab::compare::{self, Comparison, CoverageBy, Difference, Image, Reference};
 use barylab::files::{self, shown};
+use barylab::i18n::Lang;
 
 use super::CompareArgs;
 use super::commands::{inputs, prepare};
@@ -21,10 +23,12 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
     if let Some(o) = &args.output {
         output::not_an_input(o, &read)?;
     }
+    let lang = args.lang;
     let image = read_image(
         &args.image,
         (settings.width, settings.height),
         &args.input.scene,
+        lang,
     )?;
     let by = match args.background {
         Some(c) => CoverageBy::Background(c),
@@ -41,11 +45,13 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
         texture: &texture,
         settings,
     };
-    let c = compare::compare(&image, &reference, by, args.tolerance)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", shown(&args.input.scene)))?;
+    let failed = |e: String| anyhow::anyhow!("{}: {e}", shown(&args.input.scene));
+    let render =
+        barylab::raster::render(&mesh, &texture, &settings).map_err(|e| failed(e.to_string()))?;
+    let c = compare::compare_rendered(&image, &reference, &render, by, args.tolerance)
+        .map_err(failed)?;
     if let Some(o) = &args.output {
-        let diff = compare::difference_image(&image, &reference, by, args.tolerance)
-            .map_err(anyhow::Error::msg)?;
+        let diff = compare::difference_image_of(&image, &render.frame, by, args.tolerance);
         let mut png = Vec::new();
         diff.write_to(&mut Cursor::new(&mut png), image::ImageFormat::Png)?;
         files::write_bytes(o, &png)?;
@@ -58,96 +64,123 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
             &args.image,
             &args.input.scene,
             args.output.as_deref(),
+            lang,
         ))?;
     }
     if c.agrees() {
         return Ok(());
     }
-    Err(Differs(format!(
-        "{} differs from barylab's render of {} on {} of {} pixels",
-        shown(&args.image),
-        shown(&args.input.scene),
-        c.differing(),
-        c.pixels
+    Err(Differs(lang.tr_with(
+        "compare.report.differs",
+        &[
+            ("image", &shown(&args.image)),
+            ("scene", &shown(&args.input.scene)),
+            ("n", &c.differing()),
+            ("total", &c.pixels),
+        ],
     ))
     .into())
 }
 
 /// Reads the image, checking its size against the scene's before decoding it.
-fn read_image(path: &Path, size: (u32, u32), scene: &Path) -> Result<Image> {
+fn read_image(path: &Path, size: (u32, u32), scene: &Path, lang: Lang) -> Result<Image> {
     let name = shown(path);
-    compare::read_image(path, |w, h| {
+    compare::read_image(path, lang, |w, h| {
         if (w, h) == size {
             Ok(())
         } else {
-            Err(format!(
-                "image {name} is {w}x{h}, but {} renders {}x{}: compare images of the same size \
-                 (or render the scene at {w}x{h} with --size {w}x{h})",
-                shown(scene),
-                size.0,
-                size.1
+            Err(lang.tr_with(
+                "compare.report.wrong_size",
+                &[
+                    ("image", &name),
+                    ("w", &w),
+                    ("h", &h),
+                    ("scene", &shown(scene)),
+                    ("sw", &size.0),
+                    ("sh", &size.1),
+                ],
             ))
         }
     })
     .map_err(anyhow::Error::msg)
 }
 
-fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>) -> String {
+/// The report: what was compared, coverage, colour, the verdict and the first differing
+/// pixels with their reasons, in `lang`.
+fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>, lang: Lang) -> String {
     let by = match c.coverage_by {
-        CoverageBy::Alpha => "alpha of at least 128".to_string(),
-        CoverageBy::Background([r, g, b]) => format!("any colour but the background {r},{g},{b}"),
+        CoverageBy::Alpha => lang.tr("compare.report.by_alpha"),
+        CoverageBy::Background([r, g, b]) => lang.tr_with(
+            "compare.report.by_background",
+            &[("color", &format!("{r},{g},{b}"))],
+        ),
     };
-    let mut out = format!(
-        "{} against barylab's render of {} ({}x{}, {}); covered: {by}; tolerance {} levels\n",
-        shown(image),
-        shown(scene),
-        c.width,
-        c.height,
-        barylab::bench::mode_name(c.mode),
-        c.tolerance
-    );
-    out.push_str(&format!(
-        "coverage: {} pixels differ ({} covered only in the image, {} only by barylab, which covers {})\n",
-        c.only_theirs + c.only_ours,
-        c.only_theirs,
-        c.only_ours,
-        c.covered
+    let mut lines = vec![lang.tr_with(
+        "compare.report.header",
+        &[
+            ("image", &shown(image)),
+            ("scene", &shown(scene)),
+            ("w", &c.width),
+            ("h", &c.height),
+            ("mode", &mode_short(c.mode, lang)),
+            ("by", &by),
+            ("tolerance", &c.tolerance),
+        ],
+    )];
+    lines.push(lang.tr_with(
+        "compare.report.coverage",
+        &[
+            ("n", &(c.only_theirs + c.only_ours)),
+            ("only_image", &c.only_theirs),
+            ("only_barylab", &c.only_ours),
+            ("covered", &c.covered),
+        ],
     ));
     let at = c
         .max_color_at
-        .map(|[x, y]| format!(" at ({x}, {y})"))
+        .map(|[x, y]| lang.tr_with("compare.report.at", &[("x", &x), ("y", &y)]))
         .unwrap_or_default();
-    out.push_str(&format!(
-        "colour: {} pixels covered by both differ by more than {} levels; largest difference {}{at}\n",
-        c.color_differing, c.tolerance, c.max_color_difference
+    lines.push(lang.tr_with(
+        "compare.report.colour",
+        &[
+            ("n", &c.color_differing),
+            ("tolerance", &c.tolerance),
+            ("max", &c.max_color_difference),
+            ("at", &at),
+        ],
     ));
     if c.agrees() {
-        out.push_str("verdict: the images agree\n");
+        lines.push(lang.tr("compare.report.agree"));
     } else {
-        match &c.looks_like {
-            Some(l) => out.push_str(&format!("verdict: {l}\n")),
-            None => out.push_str(&format!("verdict: {} pixels differ\n", c.differing())),
-        }
-        out.push_str("first differing pixels:\n");
+        lines.push(match &c.looks_like {
+            Some(v) => lang.tr_with("compare.report.verdict", &[("verdict", &v.text(lang))]),
+            None => lang.tr_with("compare.report.differ", &[("n", &c.differing())]),
+        });
+        lines.push(lang.tr("compare.report.first"));
         for p in &c.first {
-            let what = match p.difference {
-                Difference::OnlyTheirs => "covered only in the image",
-                Difference::OnlyOurs => "covered only by barylab",
-                Difference::Color => "colour",
-            };
+            let what = lang.tr(match p.difference {
+                Difference::OnlyTheirs => "compare.report.only_image",
+                Difference::OnlyOurs => "compare.report.only_barylab",
+                Difference::Color => "compare.report.colour_kind",
+            });
             let rgb = |c: [u8; 4]| format!("{},{},{}", c[0], c[1], c[2]);
-            out.push_str(&format!(
-                "  ({}, {}) {what}: image {}, barylab {}: {}\n",
-                p.pixel[0],
-                p.pixel[1],
-                rgb(p.theirs),
-                rgb(p.ours),
-                p.reason
+            lines.push(lang.tr_with(
+                "compare.report.pixel",
+                &[
+                    ("x", &p.pixel[0]),
+                    ("y", &p.pixel[1]),
+                    ("what", &what),
+                    ("image", &rgb(p.theirs)),
+                    ("barylab", &rgb(p.ours)),
+                    ("reason", &p.reason.text(lang)),
+                ],
             ));
         }
     }
     if let Some(d) = diff {
-        out.push_str(&format!("difference image -> {}\n", shown(d)));
+        lines.push(lang.tr_with("compare.report.difference_image", &[("file", &shown(d))]));
     }
+    let mut out = lines.join("\n");
+    out.push('\n');
     out
 }

@@ -1,7 +1,11 @@
 //! `barylab gpu-check`: barylab beside this computer's OpenGL, scene by scene.
 
 use anyhow::Result;
+use barylab::compare::hypotheses::rule_words;
+use barylab::compare::reasons::mode_short;
 use barylab::gpu::{self, Gpu, check};
+use barylab::i18n::Lang;
+use barylab::raster::Interpolation;
 use serde::Serialize;
 
 use super::GpuCheckArgs;
@@ -49,7 +53,7 @@ pub(super) fn run(args: &GpuCheckArgs) -> Result<()> {
     if args.json {
         print(&format!("{}\n", serde_json::to_string_pretty(&report)?))?;
     } else {
-        print(&text(&report))?;
+        print(&text(&report, args.lang))?;
     }
     let differing: Vec<&str> = report
         .scenes
@@ -60,12 +64,14 @@ pub(super) fn run(args: &GpuCheckArgs) -> Result<()> {
     if differing.is_empty() {
         return Ok(());
     }
-    Err(Differs(format!(
-        "coverage differs from {} in {} of {} scenes: {}",
-        report.renderer,
-        differing.len(),
-        report.scenes.len(),
-        differing.join(", ")
+    Err(Differs(args.lang.tr_with(
+        "compare.gpu_check.differs",
+        &[
+            ("renderer", &report.renderer),
+            ("n", &differing.len()),
+            ("total", &report.scenes.len()),
+            ("list", &differing.join(", ")),
+        ],
     ))
     .into())
 }
@@ -76,75 +82,110 @@ fn pixels(list: &[[u32; 2]], total: usize) -> String {
     format!("{}{more}", shown.join(", "))
 }
 
-fn text(r: &Report) -> String {
-    let mut out = format!("OpenGL: {} ({}; {})\n", r.renderer, r.vendor, r.version);
+/// " at (x, y), ..." for the listed pixels, or nothing when there are none.
+fn at_list(list: &[[u32; 2]], total: usize, lang: Lang) -> String {
+    if total == 0 {
+        return String::new();
+    }
+    lang.tr_with("compare.gpu_check.at", &[("list", &pixels(list, total))])
+}
+
+/// The report in `lang`.
+fn text(r: &Report, lang: Lang) -> String {
+    let mut out = lang.tr_with(
+        "compare.gpu_check.opengl",
+        &[
+            ("renderer", &r.renderer),
+            ("vendor", &r.vendor),
+            ("version", &r.version),
+        ],
+    );
+    out.push('\n');
     let t = &r.ties;
     out.push_str(&match t.follows {
-        Some(rule) => format!(
-            "ties: the GPU follows {} ({} of the tie lattice's pixels would differ under the other rule)\n",
-            rule.describe(),
-            t.rules_differ_on
+        Some(rule) => lang.tr_with(
+            "compare.gpu_check.ties_follow",
+            &[("rule", &rule_words(rule, lang)), ("n", &t.rules_differ_on)],
         ),
-        None => format!(
-            "ties: the GPU follows neither rule: {} lattice pixels differ from the llvmpipe rule, {} from the top-left rule\n",
-            t.differing_llvmpipe, t.differing_top_left
+        None => lang.tr_with(
+            "compare.gpu_check.ties_neither",
+            &[
+                ("llvmpipe", &t.differing_llvmpipe),
+                ("top_left", &t.differing_top_left),
+            ],
         ),
     });
+    out.push('\n');
     for s in &r.scenes {
-        out.push_str(&format!(
-            "\n{} {}x{}, {}, {} filter, {}:\n",
-            s.scene,
-            s.width,
-            s.height,
-            s.mode,
-            s.filter,
-            s.output.replace('_', " ")
-        ));
+        let mode = match s.mode {
+            "affine" => mode_short(Interpolation::Affine, lang),
+            _ => mode_short(Interpolation::Perspective, lang),
+        };
+        let filter = lang.tr(&format!("probe.filter.{}", s.filter));
+        let output = lang.tr(&format!("probe.shading.{}", s.output));
+        let mut lines = vec![
+            String::new(),
+            lang.tr_with(
+                "compare.gpu_check.scene",
+                &[
+                    ("scene", &s.scene),
+                    ("w", &s.width),
+                    ("h", &s.height),
+                    ("mode", &mode),
+                    ("filter", &filter),
+                    ("output", &output),
+                ],
+            ),
+        ];
         for n in &s.notes {
-            out.push_str(&format!("  note: {n}\n"));
+            lines.push(lang.tr_with("compare.gpu_check.note", &[("note", &n.text(lang))]));
         }
-        out.push_str(&format!(
-            "  coverage: {} of {} pixels covered by barylab; {} mismatches{}\n",
-            s.covered,
-            s.pixels,
-            s.coverage_mismatches,
-            if s.coverage_mismatches > 0 {
-                format!(
-                    " at {}",
-                    pixels(&s.coverage_mismatch_pixels, s.coverage_mismatches)
-                )
-            } else {
-                String::new()
-            }
+        lines.push(lang.tr_with(
+            "compare.gpu_check.coverage",
+            &[
+                ("covered", &s.covered),
+                ("total", &s.pixels),
+                ("n", &s.coverage_mismatches),
+                (
+                    "at",
+                    &at_list(&s.coverage_mismatch_pixels, s.coverage_mismatches, lang),
+                ),
+            ],
         ));
-        out.push_str(&format!(
-            "  owning triangle: {} mismatches{}\n",
-            s.triangle_mismatches,
-            if s.triangle_mismatches > 0 {
-                format!(
-                    " at {}",
-                    pixels(&s.triangle_mismatch_pixels, s.triangle_mismatches)
-                )
-            } else {
-                String::new()
-            }
+        lines.push(lang.tr_with(
+            "compare.gpu_check.triangles",
+            &[
+                ("n", &s.triangle_mismatches),
+                (
+                    "at",
+                    &at_list(&s.triangle_mismatch_pixels, s.triangle_mismatches, lang),
+                ),
+            ],
         ));
-        let at = s
-            .max_color_at
-            .map(|[x, y]| format!(" at ({x}, {y})"))
-            .unwrap_or_default();
-        out.push_str(&format!(
-            "  colour: {} differing; largest difference {} levels{at}, 99.9% within {}\n",
-            s.color_differing, s.max_color_difference, s.p999_color_difference
+        let at = |p: Option<[u32; 2]>| {
+            p.map(|[x, y]| lang.tr_with("compare.report.at", &[("x", &x), ("y", &y)]))
+                .unwrap_or_default()
+        };
+        lines.push(lang.tr_with(
+            "compare.gpu_check.colour",
+            &[
+                ("n", &s.color_differing),
+                ("max", &s.max_color_difference),
+                ("at", &at(s.max_color_at)),
+                ("p999", &s.p999_color_difference),
+            ],
         ));
-        let at = s
-            .max_uv_at
-            .map(|[x, y]| format!(" at ({x}, {y})"))
-            .unwrap_or_default();
-        out.push_str(&format!(
-            "  uv: largest difference {:.1e}{at}\n",
-            s.max_uv_difference
+        lines.push(lang.tr_with(
+            "compare.gpu_check.uv",
+            &[
+                ("max", &format!("{:.1e}", s.max_uv_difference)),
+                ("at", &at(s.max_uv_at)),
+            ],
         ));
+        for l in lines {
+            out.push_str(&l);
+            out.push('\n');
+        }
     }
     out
 }

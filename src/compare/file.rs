@@ -6,18 +6,26 @@ use std::path::Path;
 
 use super::Image;
 use crate::files::{FileKind, read_regular, shown};
+use crate::i18n::Lang;
 
 /// Reads the image at `path` as RGBA8. `check` sees the width and height before the pixels
 /// are decoded and may refuse them with a message; sizes outside 1 to
 /// [`MAX_IMAGE_SIZE`](crate::raster::project::MAX_IMAGE_SIZE) are refused first. The error is
-/// one line naming the file and the problem.
+/// one line naming the file and the problem, in `lang` (the decoder's and the file system's
+/// own messages stay as they are).
 pub fn read_image(
     path: &Path,
+    lang: Lang,
     check: impl FnOnce(u32, u32) -> Result<(), String>,
 ) -> Result<Image, String> {
     let bytes = read_regular(path, FileKind::Image).map_err(|e| e.to_string())?;
     let name = shown(path);
-    let fail = |e: &dyn std::fmt::Display| format!("cannot read image {name}: {e}");
+    let fail = |e: &dyn std::fmt::Display| {
+        lang.tr_with(
+            "compare.file.cannot_read",
+            &[("file", &name), ("error", &e.to_string())],
+        )
+    };
     let reader = || {
         image::ImageReader::new(Cursor::new(&bytes))
             .with_guessed_format()
@@ -25,13 +33,14 @@ pub fn read_image(
     };
     let first = reader()?;
     if first.format().is_none() {
-        return Err(fail(&"it is not a PNG, JPEG, BMP, TGA or WebP image"));
+        return Err(fail(&lang.tr("compare.file.not_an_image")));
     }
     let (w, h) = reader()?.into_dimensions().map_err(|e| fail(&e))?;
     let max = crate::raster::project::MAX_IMAGE_SIZE;
     if w == 0 || h == 0 || w > max || h > max {
-        return Err(fail(&format!(
-            "it is {w}x{h}; barylab renders 1x1 to {max}x{max}"
+        return Err(fail(&lang.tr_with(
+            "compare.file.size",
+            &[("w", &w), ("h", &h), ("max", &max)],
         )));
     }
     check(w, h)?;

@@ -4,7 +4,9 @@
 
 use serde::Serialize;
 
+use super::reasons::Reason;
 use super::{CoverageBy, Image, Reference, Rendered, classify};
+use crate::i18n::Lang;
 use crate::raster::setup::TieRule;
 use crate::raster::{Framebuffer, Interpolation, Texture};
 
@@ -30,21 +32,106 @@ pub enum Kind {
     IntegerCentresYUp,
 }
 
-/// A tried explanation and how many pixels still differ under it.
-#[derive(Clone, Debug, Serialize)]
+/// A whole-image explanation as a verdict: which one, what it leaves differing, and what it
+/// is in this comparison (the other mode, the other tie rule); worded by [`Verdict::text`].
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Verdict {
+    /// Which explanation.
+    pub kind: Kind,
+    /// Pixels that still differ under it.
+    pub differing: usize,
+    /// The other interpolation mode (the one [`Kind::OtherMode`] renders in).
+    pub other_mode: Interpolation,
+    /// The other tie rule (the one [`Kind::OtherTieRule`] renders under).
+    pub other_rule: TieRule,
+}
+
+impl Verdict {
+    /// What barylab's image was turned into, e.g. "barylab's image flipped upside down".
+    pub fn description(&self, lang: Lang) -> String {
+        match self.kind {
+            Kind::YFlipped => lang.tr("compare.describe.y_flipped"),
+            Kind::Rotated180 => lang.tr("compare.describe.rotated180"),
+            Kind::OtherMode => lang.tr_with(
+                "compare.describe.other_mode",
+                &[("mode", &mode_words(self.other_mode, lang))],
+            ),
+            Kind::OtherTieRule => lang.tr_with(
+                "compare.describe.other_tie_rule",
+                &[("rule", &rule_words(self.other_rule, lang))],
+            ),
+            Kind::IntegerCentresYDown => lang.tr("compare.describe.integer_y_down"),
+            Kind::IntegerCentresYUp => lang.tr("compare.describe.integer_y_up"),
+        }
+    }
+
+    /// What the other image looks like, e.g. "looks like y flipped (image row 0 written at
+    /// the bottom)".
+    pub fn looks(&self, lang: Lang) -> String {
+        match self.kind {
+            Kind::YFlipped => lang.tr("compare.looks.y_flipped"),
+            Kind::Rotated180 => lang.tr("compare.looks.rotated180"),
+            Kind::OtherMode => lang.tr_with(
+                "compare.looks.other_mode",
+                &[("mode", &mode_words(self.other_mode, lang))],
+            ),
+            Kind::OtherTieRule => lang.tr("compare.looks.other_tie_rule"),
+            Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => {
+                lang.tr("compare.looks.integer_centres")
+            }
+        }
+    }
+
+    /// The verdict line, e.g. "looks like y flipped (…): barylab's image flipped upside down
+    /// leaves 0 pixels differing".
+    pub fn text(&self, lang: Lang) -> String {
+        lang.tr_with(
+            "compare.looks.verdict",
+            &[
+                ("looks", &self.looks(lang)),
+                ("description", &self.description(lang)),
+                ("n", &self.differing),
+            ],
+        )
+    }
+
+    /// The verdict in a few words, e.g. "looks like y flipped".
+    pub fn short(&self, lang: Lang) -> String {
+        lang.tr(match self.kind {
+            Kind::YFlipped => "compare.short.y_flipped",
+            Kind::Rotated180 => "compare.short.rotated180",
+            Kind::OtherMode => "compare.short.other_mode",
+            Kind::OtherTieRule => "compare.short.other_tie_rule",
+            Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => "compare.short.integer_centres",
+        })
+    }
+}
+
+/// A tried explanation and how many pixels still differ under it. In JSON: `kind`,
+/// `description` (English) and `differing`.
+#[derive(Clone, Debug)]
 pub struct Tried {
     /// Which explanation.
     pub kind: Kind,
-    /// What barylab's image was turned into, e.g. "barylab's image flipped upside down".
-    pub description: String,
     /// Pixels that differ from it.
     pub differing: usize,
     /// Per pixel: whether it differs from this explanation.
-    #[serde(skip)]
     mask: Vec<bool>,
     /// The mode of the other-mode render.
-    #[serde(skip)]
     other_mode: Interpolation,
+    /// The rule of the other-tie-rule render.
+    other_rule: TieRule,
+}
+
+impl Serialize for Tried {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut s = serializer.serialize_struct("Tried", 3)?;
+        s.serialize_field("kind", &self.kind)?;
+        s.serialize_field("description", &self.verdict().description(Lang::En))?;
+        s.serialize_field("differing", &self.differing)?;
+        s.end()
+    }
 }
 
 impl Tried {
@@ -53,68 +140,49 @@ impl Tried {
         self.mask.get(k).copied().unwrap_or(true)
     }
 
-    /// The verdict line, e.g. "looks like y flipped: ...".
-    pub fn verdict(&self) -> String {
-        let what = match self.kind {
-            Kind::YFlipped => {
-                "looks like y flipped (image row 0 written at the bottom)".to_string()
-            }
-            Kind::Rotated180 => "looks rotated by 180 degrees (x and y flipped): a projection \
-                                 whose w has the wrong sign, e.g. a near plane at z = +n for a \
-                                 camera looking down -z"
-                .to_string(),
-            Kind::OtherMode => format!("looks like {} interpolation", mode_words(self.other_mode)),
-            Kind::OtherTieRule => {
-                "looks like the other tie rule for centres exactly on an edge".to_string()
-            }
-            Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => {
-                "looks like pixel centres at integer coordinates (x, y) instead of \
-                 (x + 0.5, y + 0.5)"
-                    .to_string()
-            }
-        };
-        format!(
-            "{what}: {} leaves {} pixels differing",
-            self.description, self.differing
-        )
+    /// This explanation as a verdict.
+    pub fn verdict(&self) -> Verdict {
+        Verdict {
+            kind: self.kind,
+            differing: self.differing,
+            other_mode: self.other_mode,
+            other_rule: self.other_rule,
+        }
     }
 
     /// The reason for one pixel this explanation accounts for.
-    pub fn pixel_reason(&self, k: usize, frame: &Framebuffer, texture: &Texture) -> String {
+    pub fn pixel_reason(&self, k: usize, frame: &Framebuffer, texture: &Texture) -> Reason {
         match self.kind {
             Kind::OtherMode => {
                 let (p, a) = (frame.uv_perspective[k], frame.uv_affine[k]);
                 let texels = ((p[0] - a[0]).abs() * texture.width() as f32)
                     .max((p[1] - a[1]).abs() * texture.height() as f32);
-                format!(
-                    "uv differs by {texels:.1} texels between perspective-correct and affine \
-                     here, and this colour is barylab's {} one: looks like {} interpolation",
-                    mode_words(self.other_mode),
-                    mode_words(self.other_mode)
-                )
+                Reason::OtherMode {
+                    texels,
+                    looks_like: self.other_mode,
+                }
             }
-            _ => format!("agrees with {}: {}", self.description, self.verdict_short()),
-        }
-    }
-
-    fn verdict_short(&self) -> &'static str {
-        match self.kind {
-            Kind::YFlipped => "looks like y flipped",
-            Kind::Rotated180 => "looks rotated by 180 degrees (w of the wrong sign)",
-            Kind::OtherMode => "looks like the other interpolation mode",
-            Kind::OtherTieRule => "looks like the other tie rule",
-            Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => {
-                "looks like pixel centres at integer coordinates"
-            }
+            _ => Reason::Explained {
+                verdict: self.verdict(),
+            },
         }
     }
 }
 
-fn mode_words(m: Interpolation) -> &'static str {
-    match m {
-        Interpolation::Affine => "affine (screen-space)",
-        Interpolation::Perspective => "perspective-correct",
-    }
+/// The mode in a verdict, in `lang`: "affine (screen-space)" or "perspective-correct".
+fn mode_words(m: Interpolation, lang: Lang) -> String {
+    lang.tr(match m {
+        Interpolation::Affine => "compare.mode.affine",
+        Interpolation::Perspective => "compare.mode.perspective",
+    })
+}
+
+/// A tie rule in words, in `lang`.
+pub fn rule_words(rule: TieRule, lang: Lang) -> String {
+    lang.tr(match rule {
+        TieRule::Llvmpipe => "compare.rule.llvmpipe",
+        TieRule::TopLeft => "compare.rule.top_left",
+    })
 }
 
 /// Tries every explanation; best (fewest differing) first.
@@ -142,8 +210,12 @@ pub fn try_all(
             .map(|r| Rendered::of(&r.frame))
             .map_err(|e| e.to_string())
     };
+    let other_rule = match s.tie_rule {
+        TieRule::Llvmpipe => TieRule::TopLeft,
+        TieRule::TopLeft => TieRule::Llvmpipe,
+    };
     let mut tried = Vec::new();
-    let mut add = |kind, description: String, image: Rendered| {
+    let mut add = |kind, image: Rendered| {
         let mask: Vec<bool> = theirs
             .pixels
             .iter()
@@ -152,38 +224,24 @@ pub fn try_all(
             .collect();
         tried.push(Tried {
             kind,
-            description,
             differing: mask.iter().filter(|&&d| d).count(),
             mask,
             other_mode,
+            other_rule,
         });
     };
-    add(
-        Kind::YFlipped,
-        "barylab's image flipped upside down".into(),
-        remap(&|x, y| (h - 1 - y) * w + x),
-    );
+    add(Kind::YFlipped, remap(&|x, y| (h - 1 - y) * w + x));
     add(
         Kind::Rotated180,
-        "barylab's image rotated by 180 degrees".into(),
         remap(&|x, y| (h - 1 - y) * w + (w - 1 - x)),
     );
-    add(
-        Kind::OtherMode,
-        format!("barylab's {} render", mode_words(other_mode)),
-        render(reference.mesh, other_mode)?,
-    );
-    let other_rule = match s.tie_rule {
-        TieRule::Llvmpipe => TieRule::TopLeft,
-        TieRule::TopLeft => TieRule::Llvmpipe,
-    };
+    add(Kind::OtherMode, render(reference.mesh, other_mode)?);
     let with_rule = crate::raster::RenderSettings {
         tie_rule: other_rule,
         ..*s
     };
     add(
         Kind::OtherTieRule,
-        format!("barylab's render under {}", other_rule.describe()),
         crate::raster::render(reference.mesh, reference.texture, &with_rule)
             .map(|r| Rendered::of(&r.frame))
             .map_err(|e| e.to_string())?,
@@ -192,7 +250,6 @@ pub fn try_all(
     // half a pixel the other way.
     add(
         Kind::IntegerCentresYDown,
-        "barylab's render sampled at integer coordinates (y down)".into(),
         render(
             &shifted(reference.mesh, s.width, s.height, 0.5, 0.5),
             s.mode,
@@ -200,7 +257,6 @@ pub fn try_all(
     );
     add(
         Kind::IntegerCentresYUp,
-        "barylab's render sampled at integer coordinates (y up)".into(),
         render(
             &shifted(reference.mesh, s.width, s.height, 0.5, -0.5),
             s.mode,

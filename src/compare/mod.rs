@@ -9,12 +9,14 @@
 
 mod file;
 pub mod hypotheses;
+mod reason;
 pub mod reasons;
 
 pub use file::read_image;
 
 use serde::Serialize;
 
+use crate::i18n::Lang;
 use crate::raster::{ClipMesh, Interpolation, NO_TRIANGLE, RenderSettings, Texture};
 use crate::scene::Scene;
 
@@ -78,8 +80,9 @@ pub enum Difference {
     Color,
 }
 
-/// One differing pixel with its reason.
-#[derive(Clone, Debug, Serialize)]
+/// One differing pixel with its reason. In JSON the reason is `reason` (in English) and
+/// `why` (the structured [`reasons::Reason`], its `kind` a stable code).
+#[derive(Clone, Debug)]
 pub struct PixelDifference {
     /// `[x, y]`, row 0 at the top.
     pub pixel: [u32; 2],
@@ -91,8 +94,36 @@ pub struct PixelDifference {
     pub ours: [u8; 4],
     /// The source triangle barylab drew there.
     pub triangle: Option<u32>,
-    /// One line: why they differ, from the probe.
-    pub reason: String,
+    /// Why they differ, from the probe or a whole-image explanation
+    /// ([`reasons::Reason::text`] words it).
+    pub reason: reasons::Reason,
+}
+
+impl Serialize for PixelDifference {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut s = serializer.serialize_struct("PixelDifference", 7)?;
+        s.serialize_field("pixel", &self.pixel)?;
+        s.serialize_field("difference", &self.difference)?;
+        s.serialize_field("theirs", &self.theirs)?;
+        s.serialize_field("ours", &self.ours)?;
+        s.serialize_field("triangle", &self.triangle)?;
+        s.serialize_field("reason", &self.reason.text(Lang::En))?;
+        s.serialize_field("why", &self.reason)?;
+        s.end()
+    }
+}
+
+/// `looks_like` in JSON: the verdict in English, and its kind as `looks_like_kind`.
+fn looks_like_json<S: serde::Serializer>(
+    verdict: &Option<hypotheses::Verdict>,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut m = serializer.serialize_map(Some(2))?;
+    m.serialize_entry("looks_like", &verdict.map(|v| v.text(Lang::En)))?;
+    m.serialize_entry("looks_like_kind", &verdict.map(|v| v.kind))?;
+    m.end()
 }
 
 /// The result of a comparison.
@@ -125,8 +156,11 @@ pub struct Comparison {
     pub max_color_at: Option<[u32; 2]>,
     /// The whole-image explanations tried, best first, with what each leaves differing.
     pub hypotheses: Vec<hypotheses::Tried>,
-    /// The explanation that fits much better than barylab's own image, if any.
-    pub looks_like: Option<String>,
+    /// The explanation that fits much better than barylab's own image, if any
+    /// ([`hypotheses::Verdict::text`] words it). In JSON: `looks_like` (in English) and
+    /// `looks_like_kind`.
+    #[serde(flatten, serialize_with = "looks_like_json")]
+    pub looks_like: Option<hypotheses::Verdict>,
     /// The first differing pixels in row order.
     pub first: Vec<PixelDifference>,
 }
@@ -219,6 +253,28 @@ pub fn compare(
     }
     let render =
         crate::raster::render(reference.mesh, reference.texture, s).map_err(|e| e.to_string())?;
+    compare_rendered(theirs, reference, &render, by, tolerance)
+}
+
+/// [`compare`] with barylab's render of `reference` already made (with all its buffers, as
+/// [`crate::raster::render`] makes it), so that a caller who also needs the render or the
+/// [`difference_image_of`] renders once. The sizes must match.
+pub fn compare_rendered(
+    theirs: &Image,
+    reference: &Reference,
+    render: &crate::raster::render::Render,
+    by: CoverageBy,
+    tolerance: u8,
+) -> Result<Comparison, String> {
+    let s = &reference.settings;
+    let f = &render.frame;
+    if (theirs.width, theirs.height) != (f.width, f.height) || theirs.pixels.len() != f.color.len()
+    {
+        return Err(format!(
+            "the image is {}x{}, the render {}x{}",
+            theirs.width, theirs.height, f.width, f.height
+        ));
+    }
     let ours = Rendered::of(&render.frame);
     let width = s.width;
     let mut c = Comparison {
@@ -269,7 +325,7 @@ pub fn compare(
         .filter(|h| h.differing * 2 < c.differing())
         .min_by_key(|h| h.differing);
     c.looks_like = best.map(|h| h.verdict());
-    let context = reasons::Context::new(reference, &render, by, tolerance)?;
+    let context = reasons::Context::new(reference, render, by, tolerance)?;
     for (k, d) in differing {
         let xy = [(k as u32) % width, (k as u32) / width];
         let explained = best.filter(|h| !h.differs_at(k));
@@ -302,9 +358,21 @@ pub fn difference_image(
 ) -> Result<image::RgbaImage, String> {
     let render = crate::raster::render(reference.mesh, reference.texture, &reference.settings)
         .map_err(|e| e.to_string())?;
-    let ours = Rendered::of(&render.frame);
+    Ok(difference_image_of(theirs, &render.frame, by, tolerance))
+}
+
+/// [`difference_image`] of barylab's frame already rendered (the sizes must match: pixels
+/// past the shorter of the two are left black).
+pub fn difference_image_of(
+    theirs: &Image,
+    frame: &crate::raster::Framebuffer,
+    by: CoverageBy,
+    tolerance: u8,
+) -> image::RgbaImage {
+    let ours = Rendered::of(frame);
     let mut out = image::RgbaImage::new(theirs.width, theirs.height);
-    for (k, (px, &p)) in out.pixels_mut().zip(&theirs.pixels).enumerate() {
+    let n = ours.color.len();
+    for (k, (px, &p)) in out.pixels_mut().zip(&theirs.pixels).take(n).enumerate() {
         let o = ours.color[k];
         let grey = ((u32::from(o[0]) * 3 + u32::from(o[1]) * 6 + u32::from(o[2])) / 10 / 3) as u8;
         px.0 = match classify(p, &ours, k, by, tolerance) {
@@ -317,5 +385,5 @@ pub fn difference_image(
             }
         };
     }
-    Ok(out)
+    out
 }

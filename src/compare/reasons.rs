@@ -6,14 +6,16 @@
 use super::{CoverageBy, Difference, Reference, rgb_difference};
 use crate::probe::{PixelTrace, Position, Prober, TriangleCoverage};
 use crate::raster::render::Render;
-use crate::raster::setup::TieRule;
 use crate::raster::{Interpolation, NO_TRIANGLE, RenderSettings};
+
+pub use super::reason::{Reason, mode_short};
 
 /// What the reasons need: a prober of the scene, barylab's render and the other mode's.
 pub struct Context<'a> {
     prober: Prober<'a>,
     render: &'a Render,
     other: Render,
+    other_mode: Interpolation,
     reference: &'a Reference<'a>,
     tolerance: u8,
 }
@@ -44,6 +46,7 @@ impl<'a> Context<'a> {
             prober,
             render,
             other,
+            other_mode: mode,
             reference,
             tolerance,
         })
@@ -55,7 +58,7 @@ impl<'a> Context<'a> {
         [x, y]: [u32; 2],
         d: Difference,
         theirs: [u8; 4],
-    ) -> Result<String, String> {
+    ) -> Result<Reason, String> {
         let trace = self.prober.pixel(x, y).map_err(|e| e.to_string())?;
         Ok(match d {
             Difference::OnlyTheirs | Difference::OnlyOurs => self.coverage_reason(&trace, d),
@@ -81,7 +84,7 @@ impl<'a> Context<'a> {
             .then(|| test.edges[i].value as f64 / len / crate::raster::project::SUBPIXEL as f64)
     }
 
-    fn coverage_reason(&self, trace: &PixelTrace, d: Difference) -> String {
+    fn coverage_reason(&self, trace: &PixelTrace, d: Difference) -> Reason {
         let by_name = |source: u32| {
             trace
                 .triangles
@@ -98,46 +101,33 @@ impl<'a> Context<'a> {
             let Some(e) = test.edges.iter().find(|e| e.value == 0) else {
                 continue;
             };
-            let kind = kind_words(e.kind);
-            let rule = match self.reference.settings.tie_rule {
-                TieRule::Llvmpipe => {
-                    "the tie rule (llvmpipe's: left and bottom edges own their centres)"
-                }
-                TieRule::TopLeft => "the tie rule (top-left: left and top edges own their centres)",
-            };
-            return match trace.written_by {
-                Some(w) => format!(
-                    "centre exactly on edge {} ({kind}) of triangle {}: {rule} gives it to \
-                     triangle {}",
-                    e.name,
-                    Self::name(t),
-                    by_name(w)
-                ),
-                None => format!(
-                    "centre exactly on edge {} ({kind}) of triangle {}: {rule} leaves it out, \
-                     and no triangle lies on the other side",
-                    e.name,
-                    Self::name(t)
-                ),
+            return Reason::OnEdge {
+                edge: e.name.clone(),
+                edge_kind: e.kind,
+                triangle: Self::name(t),
+                rule: self.reference.settings.tie_rule,
+                owner: trace.written_by.map(by_name),
             };
         }
         match (d, trace.written_by) {
             (Difference::OnlyOurs, Some(w)) => {
                 let Some(t) = trace.triangles.iter().find(|t| t.source == w) else {
-                    return format!("barylab's triangle {w} covers this centre");
+                    return Reason::Covered {
+                        triangle: w.to_string(),
+                    };
                 };
                 let nearest = (0..3)
                     .filter_map(|i| Some((i, self.edge_distance(t, i)?)))
                     .min_by(|a, b| a.1.total_cmp(&b.1));
                 match (nearest, &t.test) {
-                    (Some((i, dist)), Some(test)) => format!(
-                        "centre {} px inside edge {} of triangle {}{}",
-                        px(dist),
-                        test.edges[i].name,
-                        Self::name(t),
-                        closeness(dist, "leaves it out")
-                    ),
-                    _ => format!("barylab's triangle {} covers this centre", Self::name(t)),
+                    (Some((i, dist)), Some(test)) => Reason::Inside {
+                        distance: dist,
+                        edge: test.edges[i].name.clone(),
+                        triangle: Self::name(t),
+                    },
+                    _ => Reason::Covered {
+                        triangle: Self::name(t),
+                    },
                 }
             }
             _ => {
@@ -154,23 +144,21 @@ impl<'a> Context<'a> {
                     })
                     .min_by(|a, b| b.1.1.total_cmp(&a.1.1));
                 match nearest {
-                    Some((t, (i, dist))) => format!(
-                        "centre {} px outside edge {} of triangle {}{}",
-                        px(-dist),
-                        t.test
+                    Some((t, (i, dist))) => Reason::Outside {
+                        distance: -dist,
+                        edge: t
+                            .test
                             .as_ref()
-                            .map(|s| s.edges[i].name.as_str())
-                            .unwrap_or("?"),
-                        Self::name(t),
-                        closeness(-dist, "covers it")
-                    ),
-                    None => "no triangle comes near this pixel centre in barylab's render".into(),
+                            .map_or_else(|| "?".to_string(), |s| s.edges[i].name.clone()),
+                        triangle: Self::name(t),
+                    },
+                    None => Reason::NothingNear,
                 }
             }
         }
     }
 
-    fn colour_reason(&self, trace: &PixelTrace, theirs: [u8; 4]) -> String {
+    fn colour_reason(&self, trace: &PixelTrace, theirs: [u8; 4]) -> Reason {
         let [x, y] = trace.pixel;
         let f = &self.render.frame;
         let k = (y * f.width + x) as usize;
@@ -182,14 +170,10 @@ impl<'a> Context<'a> {
             let tex = self.reference.texture;
             let texels = ((p[0] - a[0]).abs() * tex.width() as f32)
                 .max((p[1] - a[1]).abs() * tex.height() as f32);
-            let words = match self.reference.settings.mode {
-                Interpolation::Affine => "perspective-correct",
-                Interpolation::Perspective => "affine",
+            return Reason::OtherMode {
+                texels,
+                looks_like: self.other_mode,
             };
-            return format!(
-                "uv differs by {texels:.1} texels between perspective-correct and affine here, \
-                 and this colour is barylab's {words} one: looks like {words} interpolation"
-            );
         }
         let covering: Vec<&TriangleCoverage> = trace
             .triangles
@@ -201,43 +185,30 @@ impl<'a> Context<'a> {
             let behind = covering.iter().find(|t| t.source != w);
             if let (Some(front), Some(behind)) = (front, behind) {
                 let depth = |t: &TriangleCoverage| t.depth_test.map_or(f32::NAN, |d| d.depth);
-                return format!(
-                    "triangles {} and {} both cover this centre; barylab keeps the nearer {} \
-                     (window depth {:.5} < {:.5}): a reversed depth test (or z sign) would \
-                     show {}",
-                    Self::name(front),
-                    Self::name(behind),
-                    Self::name(front),
-                    depth(front),
-                    depth(behind),
-                    Self::name(behind)
-                );
+                return Reason::Depth {
+                    front: Self::name(front),
+                    behind: Self::name(behind),
+                    front_depth: depth(front),
+                    behind_depth: depth(behind),
+                };
             }
         }
         if let Some(n) = self.blended_with_neighbour(x, y, theirs) {
-            return format!(
-                "an edge pixel whose colour lies between barylab's and its neighbour's at \
-                 ({}, {}): looks like anti-aliasing (supersampling or MSAA)",
-                n.0, n.1
-            );
+            return Reason::AntiAliased {
+                neighbour: [n.0, n.1],
+            };
         }
         let uv = match self.reference.settings.mode {
             Interpolation::Affine => f.uv_affine[k],
             Interpolation::Perspective => f.uv_perspective[k],
         };
         let tri = f.triangle[k];
-        format!(
-            "colour differs by {diff} levels; barylab draws triangle {} here with uv ({:.4}, \
-             {:.4}) and colour {:?}",
-            if tri == NO_TRIANGLE {
-                "-".to_string()
-            } else {
-                tri.to_string()
-            },
-            uv[0],
-            uv[1],
-            [ours[0], ours[1], ours[2]]
-        )
+        Reason::Colour {
+            levels: diff,
+            triangle: (tri != NO_TRIANGLE).then_some(tri),
+            uv,
+            colour: [ours[0], ours[1], ours[2]],
+        }
     }
 
     /// A 4-neighbour with another triangle (or none) whose colour, with barylab's, brackets
@@ -269,39 +240,5 @@ impl<'a> Context<'a> {
             (between && rgb_difference(theirs, other) > self.tolerance)
                 .then_some((nx as u32, ny as u32))
         })
-    }
-}
-
-fn kind_words(k: crate::raster::setup::EdgeKind) -> &'static str {
-    use crate::raster::setup::EdgeKind as E;
-    match k {
-        E::Left => "a left edge",
-        E::Right => "a right edge",
-        E::Top => "a top edge",
-        E::Bottom => "a bottom edge",
-    }
-}
-
-/// A distance in pixels, with enough digits for a hair's breadth.
-fn px(d: f64) -> String {
-    if d < 0.01 {
-        format!("{d:.4}")
-    } else {
-        format!("{d:.2}")
-    }
-}
-
-/// What a centre this close to an edge means; `other` is what the other image did.
-fn closeness(d: f64, other: &str) -> String {
-    let subpixel = 1.0 / crate::raster::project::SUBPIXEL as f64;
-    if d <= subpixel {
-        format!(
-            ": within 1/256 pixel, where snapping the vertices to the 1/256 grid decides; \
-             the other image {other}"
-        )
-    } else if d < 0.5 {
-        format!(": the other image {other}, as a sample moved by less than half a pixel would")
-    } else {
-        format!(": clearly decided, yet the other image {other}")
     }
 }

@@ -69,8 +69,50 @@ pub struct SceneCheck {
     /// `[x, y]` of the first pixel (in row order) with `max_uv_difference`; `None` when it
     /// is 0.
     pub max_uv_at: Option<[u32; 2]>,
-    /// What was changed to draw it on the GPU (shading, filter, wireframe).
-    pub notes: Vec<String>,
+    /// What was changed to draw it on the GPU (shading, filter, wireframe); in JSON as
+    /// English sentences.
+    #[serde(serialize_with = "notes_json")]
+    pub notes: Vec<Note>,
+}
+
+/// A setting of the scene the GPU check changed to draw it on the GPU.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Note {
+    /// A shading the GPU check does not draw: vertex colours are compared instead.
+    Shading(Shading),
+    /// Trilinear filtering, compared as bilinear (no mipmaps on the GPU).
+    Trilinear,
+    /// The wireframe overlay, left out.
+    Wireframe,
+}
+
+impl Note {
+    /// The note in one line, in `lang`.
+    pub fn text(self, lang: crate::i18n::Lang) -> String {
+        match self {
+            Note::Shading(s) => {
+                let key = match s {
+                    Shading::Texture => "probe.shading.texture",
+                    Shading::VertexColor => "probe.shading.vertex_color",
+                    Shading::Barycentric => "probe.shading.barycentric",
+                    Shading::Depth => "probe.shading.depth",
+                    Shading::Normal => "probe.shading.normal",
+                    Shading::Lambert => "probe.shading.lambert",
+                };
+                lang.tr_with(
+                    "compare.gpu_check.note_shading",
+                    &[("shading", &lang.tr(key))],
+                )
+            }
+            Note::Trilinear => lang.tr("compare.gpu_check.note_trilinear"),
+            Note::Wireframe => lang.tr("compare.gpu_check.note_wireframe"),
+        }
+    }
+}
+
+/// The notes as English sentences (JSON stays the same in every language).
+fn notes_json<S: serde::Serializer>(notes: &[Note], serializer: S) -> Result<S::Ok, S::Error> {
+    serializer.collect_seq(notes.iter().map(|n| n.text(crate::i18n::Lang::En)))
 }
 
 impl SceneCheck {
@@ -118,22 +160,17 @@ pub fn check_mesh(
         Shading::Texture => Output::Texture,
         Shading::VertexColor => Output::VertexColor,
         other => {
-            notes.push(format!(
-                "the GPU check draws texture or vertex colours, not {other:?} shading: \
-                 vertex colours compared"
-            ));
+            notes.push(Note::Shading(other));
             settings.shading = Shading::VertexColor;
             Output::VertexColor
         }
     };
     if settings.filter == Filter::Trilinear && output == Output::Texture {
-        notes.push(
-            "trilinear needs mipmaps, which the GPU check does not build: bilinear compared".into(),
-        );
+        notes.push(Note::Trilinear);
         settings.filter = Filter::Bilinear;
     }
     if settings.wireframe {
-        notes.push("the wireframe overlay is left out".into());
+        notes.push(Note::Wireframe);
         settings.wireframe = false;
     }
     let mesh = mesh_at_f32(mesh);
