@@ -159,36 +159,31 @@ impl ModelMesh {
             return Err(ModelError::EmptyFile { path: shown });
         }
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        Self::from_obj(files::strip_bom(&bytes), &shown, &dir)
+        let parsed = parse_obj(files::strip_bom(&bytes), &shown, &dir)?;
+        // The text is not needed any more: its memory is free before the mesh is built.
+        drop(bytes);
+        Self::from_parsed(parsed, shown, &dir)
     }
 
     /// Parses OBJ text; `shown` names it in messages, and its MTL and texture paths are
     /// relative to `dir`.
     pub fn from_obj(bytes: &[u8], shown: &str, dir: &Path) -> Result<Self, ModelError> {
-        let shown = shown.to_string();
-        // tobj's loader gives no reason for a failed MTL: keep ours for the note.
-        let mtl_error = std::cell::RefCell::new(None::<String>);
-        let load_mtl = |name: &Path| match files::read_regular(&dir.join(name), FileKind::Material)
-        {
-            Ok(text) => tobj::load_mtl_buf(&mut files::strip_bom(&text)),
-            Err(e) => {
-                mtl_error.replace(Some(e.to_string()));
-                Err(tobj::LoadError::OpenFileFailed)
-            }
-        };
-        let (models, materials) =
-            tobj::load_obj_buf(&mut &bytes[..], &tobj::GPU_LOAD_OPTIONS, load_mtl).map_err(
-                |e| ModelError::Parse {
-                    path: shown.clone(),
-                    reason: explain(&e),
-                },
-            )?;
+        let parsed = parse_obj(bytes, shown, dir)?;
+        Self::from_parsed(parsed, shown.to_string(), dir)
+    }
+
+    fn from_parsed(parsed: ParsedObj, shown: String, dir: &Path) -> Result<Self, ModelError> {
+        let ParsedObj {
+            models,
+            materials,
+            mtl_error,
+        } = parsed;
         let dir = dir.to_path_buf();
         let mut out = ModelMesh::default();
         let materials = match materials {
             Ok(m) => m,
             Err(e) => {
-                let why = mtl_error.take().unwrap_or_else(|| explain(&e));
+                let why = mtl_error.unwrap_or_else(|| explain(&e));
                 out.notes.push(format!(
                     "the material library (mtllib) of {shown} could not be loaded ({why}); \
                      drawing without materials"
@@ -198,6 +193,14 @@ impl ModelMesh {
         };
         let mut all_have_uv = true;
         let mut all_have_normals = true;
+        // Reserved once: growing by doubling would hold up to twice the memory.
+        let vertices: usize = models.iter().map(|m| m.mesh.positions.len() / 3).sum();
+        let triangles: usize = models.iter().map(|m| m.mesh.indices.len() / 3).sum();
+        out.positions.reserve_exact(vertices);
+        out.normals.reserve_exact(vertices);
+        out.uvs.reserve_exact(vertices);
+        out.colors.reserve_exact(vertices);
+        out.triangles.reserve_exact(triangles);
         for m in &models {
             let mesh = &m.mesh;
             let base = out.positions.len() as u32;
@@ -265,6 +268,7 @@ impl ModelMesh {
                 out.triangles.push([base + t[0], base + t[1], base + t[2]]);
             }
         }
+        drop(models);
         if out.triangles.is_empty() {
             return Err(ModelError::NoTriangles { path: shown });
         }
@@ -302,4 +306,38 @@ impl ModelMesh {
         }
         (lo, hi)
     }
+}
+
+/// What tobj parsed of an OBJ file, before barylab builds its mesh.
+struct ParsedObj {
+    models: Vec<tobj::Model>,
+    materials: Result<Vec<tobj::Material>, tobj::LoadError>,
+    /// Why the MTL file could not be read, when that was the problem.
+    mtl_error: Option<String>,
+}
+
+/// Parses OBJ text with tobj (polygons triangulated, one index per vertex); `shown` names it
+/// in messages, and its MTL path is relative to `dir`.
+fn parse_obj(bytes: &[u8], shown: &str, dir: &Path) -> Result<ParsedObj, ModelError> {
+    // tobj's loader gives no reason for a failed MTL: keep ours for the note.
+    let mtl_error = std::cell::RefCell::new(None::<String>);
+    let load_mtl = |name: &Path| match files::read_regular(&dir.join(name), FileKind::Material) {
+        Ok(text) => tobj::load_mtl_buf(&mut files::strip_bom(&text)),
+        Err(e) => {
+            mtl_error.replace(Some(e.to_string()));
+            Err(tobj::LoadError::OpenFileFailed)
+        }
+    };
+    let (models, materials) =
+        tobj::load_obj_buf(&mut &bytes[..], &tobj::GPU_LOAD_OPTIONS, load_mtl).map_err(|e| {
+            ModelError::Parse {
+                path: shown.to_string(),
+                reason: explain(&e),
+            }
+        })?;
+    Ok(ParsedObj {
+        models,
+        materials,
+        mtl_error: mtl_error.into_inner(),
+    })
 }

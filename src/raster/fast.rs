@@ -211,7 +211,7 @@ impl<'m> FastMesh<'m> {
             inv_w: [a.inv_w, b.inv_w, c.inv_w],
             depth: [a.depth, b.depth, c.depth],
             smooth,
-            noperspective: smooth,
+            noperspective: None,
         };
         Some(LaneTriangle::new(
             &g.edges,

@@ -162,10 +162,11 @@ pub fn render_into(
         });
     }
     let prepared = FastMesh::prepare(mesh, settings.viewport(), settings.tie_rule);
-    let params = ShadeParams {
-        depth_range: prepared.depth_range(),
-        ..shade_params(settings, &[])
-    };
+    let mut params = shade_params(settings, &[]);
+    // Only depth shading reads the range (a pass over every triangle).
+    if settings.shading == Shading::Depth {
+        params.depth_range = prepared.depth_range();
+    }
     resize(frame, w, h, buffers);
     prepared.rasterize(
         texture,

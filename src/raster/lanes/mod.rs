@@ -231,8 +231,9 @@ pub struct LaneVertices {
     pub depth: [f64; 3],
     /// The attributes for `smooth` (perspective-correct) interpolation.
     pub smooth: [Varyings; 3],
-    /// The attributes for `noperspective` (affine) interpolation.
-    pub noperspective: [Varyings; 3],
+    /// The attributes for `noperspective` (affine) interpolation, when they differ from
+    /// `smooth` (only where the clipper made a vertex).
+    pub noperspective: Option<[Varyings; 3]>,
 }
 
 impl LaneVertices {
@@ -242,7 +243,7 @@ impl LaneVertices {
             inv_w: setup.v.map(|v| v.inv_w),
             depth: setup.v.map(|v| v.depth),
             smooth: setup.v.map(|v| v.varyings),
-            noperspective: setup.v.map(|v| v.noperspective),
+            noperspective: Some(setup.v.map(|v| v.noperspective)),
         }
     }
 }
@@ -259,9 +260,9 @@ impl Constants {
         wireframe: bool,
         color: LaneColor,
     ) -> Self {
-        let vary = |k: usize| match mode {
-            Interpolation::Perspective => &verts.smooth[k],
-            Interpolation::Affine => &verts.noperspective[k],
+        let vary = |k: usize| match (mode, &verts.noperspective) {
+            (Interpolation::Affine, Some(n)) => &n[k],
+            _ => &verts.smooth[k],
         };
         let uv = [0, 1, 2].map(|k| vary(k).uv());
         let per_vertex = |f: &dyn Fn(usize) -> [f32; 3]| {
@@ -446,10 +447,9 @@ fn channel3(s: &Samples, first: usize, k: usize) -> Vec3 {
 /// (the `noperspective` set, then the `smooth` one), for [`Constants::both_uv`].
 fn both_uv(verts: &LaneVertices) -> [[f64; 3]; 4] {
     let uv = |k: usize, smooth: bool| {
-        let v = if smooth {
-            &verts.smooth[k]
-        } else {
-            &verts.noperspective[k]
+        let v = match (smooth, &verts.noperspective) {
+            (false, Some(n)) => &n[k],
+            _ => &verts.smooth[k],
         };
         v.uv().as_dvec2()
     };
