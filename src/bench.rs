@@ -218,8 +218,10 @@ pub fn draw_view(
         View::Single => draw_frame(a, mesh, texture, settings),
         View::Side | View::Wipe => both(a, p, Buffers::ColorDepth),
         View::Difference => {
-            both(a, p, Buffers::ColorDepthUv)?;
-            let h = heatmap::heatmap(p, (texture.width(), texture.height()));
+            // As the app's canvas: one render in the configuration's mode that keeps the uv
+            // of both modes, then the heatmap.
+            raster::render_into(a, mesh, texture, settings, Buffers::ColorDepthUv)?;
+            let h = heatmap::heatmap(a, (texture.width(), texture.height()));
             std::hint::black_box(h);
             Ok(())
         }

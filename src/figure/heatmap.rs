@@ -49,23 +49,29 @@ const HEAT_STEPS: usize = 1024;
 /// assert_ne!(heat_color(1.0, 4.0), heat_color(3.0, 4.0));
 /// ```
 pub fn heat_color(d: f32, scale_max: f32) -> [u8; 4] {
+    let table = heat_table();
+    let t = if scale_max > 0.0 {
+        (d / scale_max).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    // Rounded to the nearest step (t >= 0, so adding a half and truncating rounds); a NaN
+    // stays NaN through the clamp and converts to index 0.
+    let i = (t * (HEAT_STEPS - 1) as f32 + 0.5) as usize;
+    table[i.min(HEAT_STEPS - 1)]
+}
+
+/// The colour scale's [`HEAT_STEPS`] colours, computed once.
+fn heat_table() -> &'static [[u8; 4]] {
     static TABLE: std::sync::OnceLock<Vec<[u8; 4]>> = std::sync::OnceLock::new();
-    let table = TABLE.get_or_init(|| {
+    TABLE.get_or_init(|| {
         (0..HEAT_STEPS)
             .map(|i| {
                 let c = colorous::MAGMA.eval_continuous(i as f64 / (HEAT_STEPS - 1) as f64);
                 [c.r, c.g, c.b, 255]
             })
             .collect()
-    });
-    let t = if scale_max > 0.0 {
-        (d / scale_max).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    // A NaN stays NaN through the clamp and converts to index 0.
-    let i = (t * (HEAT_STEPS - 1) as f32).round() as usize;
-    table[i.min(HEAT_STEPS - 1)]
+    })
 }
 
 /// The smallest of 1, 1.5, 2, 3, 4, 5, 6, 8 times a power of ten that is at least `x` (at
@@ -94,27 +100,49 @@ pub fn nice_ceiling(x: f32) -> f32 {
     10.0 * p
 }
 
-/// The heatmap of a framebuffer for a texture of `texture_size` texels.
+/// The heatmap of a framebuffer for a texture of `texture_size` texels (rows in parallel, on
+/// rayon's current pool).
 pub fn heatmap(frame: &Framebuffer, texture_size: (u32, u32)) -> Heatmap {
+    use rayon::prelude::*;
     let n = frame.color.len();
-    let mut diff = vec![None; n];
-    let mut max = 0.0f32;
-    for (i, d) in diff.iter_mut().enumerate() {
-        if frame.triangle[i] != crate::raster::NO_TRIANGLE {
-            let v = texel_difference(frame.uv_affine[i], frame.uv_perspective[i], texture_size);
-            max = max.max(v);
-            *d = Some(v);
-        }
+    let covered = frame.triangle.len() == n && frame.uv_affine.len() == n;
+    // The difference per pixel (NaN where nothing is drawn), then the colours on its scale.
+    let mut diff = vec![f32::NAN; n];
+    if covered {
+        diff.par_chunks_mut(HEATMAP_CHUNK)
+            .enumerate()
+            .for_each(|(c, chunk)| {
+                let first = c * HEATMAP_CHUNK;
+                let rows = first..first + chunk.len();
+                let triangle = &frame.triangle[rows.clone()];
+                let affine = &frame.uv_affine[rows.clone()];
+                let perspective = &frame.uv_perspective[rows];
+                for (k, d) in chunk.iter_mut().enumerate() {
+                    if triangle[k] != crate::raster::NO_TRIANGLE {
+                        *d = texel_difference(affine[k], perspective[k], texture_size);
+                    }
+                }
+            });
     }
+    let max = diff
+        .par_chunks(HEATMAP_CHUNK)
+        .map(|c| c.iter().copied().fold(0.0f32, f32::max))
+        .reduce(|| 0.0f32, f32::max);
     let scale_max = nice_ceiling(max);
-    let pixels = diff
-        .iter()
-        .zip(&frame.color)
-        .map(|(d, c)| match d {
-            Some(v) => heat_color(*v, scale_max),
-            None => [c[0] / 2, c[1] / 2, c[2] / 2, c[3]],
-        })
-        .collect();
+    let mut pixels = vec![[0u8; 4]; n];
+    pixels
+        .par_chunks_mut(HEATMAP_CHUNK)
+        .zip(diff.par_chunks(HEATMAP_CHUNK))
+        .zip(frame.color.par_chunks(HEATMAP_CHUNK))
+        .for_each(|((out, diff), color)| {
+            for ((o, &d), c) in out.iter_mut().zip(diff).zip(color) {
+                *o = if d.is_nan() {
+                    [c[0] / 2, c[1] / 2, c[2] / 2, c[3]]
+                } else {
+                    heat_color(d, scale_max)
+                };
+            }
+        });
     Heatmap {
         width: frame.width,
         height: frame.height,
@@ -123,6 +151,9 @@ pub fn heatmap(frame: &Framebuffer, texture_size: (u32, u32)) -> Heatmap {
         scale_max,
     }
 }
+
+/// Pixels one parallel task of [`heatmap`] handles at least.
+const HEATMAP_CHUNK: usize = 16 * 1024;
 
 #[cfg(test)]
 mod tests {
