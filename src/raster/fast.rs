@@ -183,26 +183,34 @@ impl<'m> FastMesh<'m> {
         setup_triangle_with([a?, b?, c?], self.viewport, self.rule)
     }
 
-    /// A whole triangle as the edge-function lanes draw it, set up from the shared projected
-    /// vertices with [`triangle_geometry`] (the values [`FastMesh::setup`] gives); `None` when
-    /// it has no set-up. The lanes draw it when it is [`exact`](LaneTriangle::exact).
+    /// Sets `tri` to a whole triangle as the edge-function lanes draw it, set up from the
+    /// shared projected vertices with [`triangle_geometry`] (the values [`FastMesh::setup`]
+    /// gives); `false` when it has no set-up. The lanes draw it when it is
+    /// [`exact`](LaneTriangle::exact).
     #[inline(always)]
-    fn lane_triangle(
+    fn set_lane_triangle(
         &self,
+        tri: &mut LaneTriangle,
         corners: [u32; 3],
         shading: LaneShading,
         uv: bool,
-    ) -> Option<LaneTriangle> {
-        let [a, b, c] = self.projected(corners)?;
-        let g = triangle_geometry(
+    ) -> bool {
+        let Some([a, b, c]) = self.projected(corners) else {
+            return false;
+        };
+        let Some(g) = triangle_geometry(
             [a.fixed, b.fixed, c.fixed],
             [a.window, b.window, c.window],
             self.viewport,
             self.rule,
-        )?;
+        ) else {
+            return false;
+        };
         let mut smooth = [Varyings::default(); 3];
         for (k, s) in smooth.iter_mut().enumerate() {
-            let m = self.mesh.vertices.get(corners[k] as usize)?;
+            let Some(m) = self.mesh.vertices.get(corners[k] as usize) else {
+                return false;
+            };
             let mut bary = [0.0; 3];
             bary[k] = 1.0;
             *s = Varyings::new(bary, m.uv, m.color).with_normal(m.normal);
@@ -213,14 +221,8 @@ impl<'m> FastMesh<'m> {
             smooth,
             noperspective: None,
         };
-        Some(LaneTriangle::new(
-            &g.edges,
-            g.bounds,
-            &g.weights,
-            &verts,
-            Some(shading),
-            uv,
-        ))
+        tri.set(&g.edges, g.bounds, &g.weights, &verts, Some(shading), uv);
+        true
     }
 
     /// The smallest and largest window depth of the drawn triangles' vertices, as
@@ -304,6 +306,7 @@ impl<'m> FastMesh<'m> {
             band.clear(background);
             let lanes = lanes.filter(|_| !band.has_aovs());
             let uvs = !band.uv_affine.is_empty();
+            let mut tri = LaneTriangle::EMPTY;
             for (j, &(ti, si)) in bin.iter().enumerate() {
                 // The triangles a band visits are scattered over the mesh: ask for the memory
                 // of the ones a few steps ahead while this one draws.
@@ -322,7 +325,7 @@ impl<'m> FastMesh<'m> {
                     Slot::Skip => {}
                     Slot::Whole { corners, .. } => {
                         if let Some(shading) = lanes
-                            && let Some(tri) = self.lane_triangle(*corners, shading, uvs)
+                            && self.set_lane_triangle(&mut tri, *corners, shading, uvs)
                             && tri.exact()
                         {
                             draw_lanes(&tri, ti, texture, shading, &mut band);

@@ -249,71 +249,87 @@ impl LaneVertices {
 }
 
 impl Constants {
-    /// `mode` picks the vertices' attribute set: `smooth` (perspective-correct) or
-    /// `noperspective` (affine). The wireframe uses the `smooth` source weights with screen
-    /// weights, as [`Fragment::edge_weights`](super::interpolate::Fragment::edge_weights).
+    /// Constants of no triangle, to be [`set`](Constants::set).
+    const EMPTY: Self = Self {
+        weights: WeightPlanes {
+            start: [glam::DVec2::ZERO; 3],
+            dir: [glam::DVec2::ZERO; 3],
+            area2: 0.0,
+            inv_area2: 0.0,
+        },
+        inv_w: [0.0; 3],
+        depth: [0.0; 3],
+        u: [0.0; 3],
+        v: [0.0; 3],
+        both_uv: None,
+        channels: [[0.0; 3]; CHANNELS],
+        used_channels: 0,
+        wire: None,
+    };
+
+    /// Sets every field for a triangle, in place (the lanes set one up per triangle and
+    /// band: a dense mesh sets up hundreds of thousands a frame). `mode` picks the vertices'
+    /// attribute set: `smooth` (perspective-correct) or `noperspective` (affine). The
+    /// wireframe uses the `smooth` source weights with screen weights, as
+    /// [`Fragment::edge_weights`](super::interpolate::Fragment::edge_weights).
     #[inline(always)]
-    fn new(
+    fn set(
+        &mut self,
         weights: &WeightPlanes,
         verts: &LaneVertices,
         mode: Interpolation,
         wireframe: bool,
         color: LaneColor,
-    ) -> Self {
+    ) {
         let vary = |k: usize| match (mode, &verts.noperspective) {
             (Interpolation::Affine, Some(n)) => &n[k],
             _ => &verts.smooth[k],
         };
-        let uv = [0, 1, 2].map(|k| vary(k).uv());
-        let per_vertex = |f: &dyn Fn(usize) -> [f32; 3]| {
-            let at = [f(0), f(1), f(2)];
-            [0, 1, 2].map(|c| [0, 1, 2].map(|k| f64::from(at[k][c])))
+        self.weights = *weights;
+        self.inv_w = verts.inv_w;
+        self.depth = verts.depth;
+        for k in 0..3 {
+            let uv = vary(k).uv();
+            self.u[k] = f64::from(uv.x);
+            self.v[k] = f64::from(uv.y);
+        }
+        let mut put = |first: usize, f: &dyn Fn(usize) -> [f32; 3]| {
+            for k in 0..3 {
+                let at = f(k);
+                for c in 0..3 {
+                    self.channels[first + c][k] = f64::from(at[c]);
+                }
+            }
         };
-        let normal = || per_vertex(&|k| vary(k).normal().to_array());
-        let color3 = || per_vertex(&|k| vary(k).color().to_array());
-        let mut channels = [[0.0; 3]; CHANNELS];
-        let first = match color {
-            LaneColor::VertexColor | LaneColor::Lambert => color3(),
-            LaneColor::Barycentric => per_vertex(&|k| vary(k).bary()),
-            LaneColor::Normal => normal(),
-            LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
-        };
-        channels[..3].copy_from_slice(&first);
-        let used_channels = if color == LaneColor::Lambert {
-            channels[3..].copy_from_slice(&normal());
+        match color {
+            LaneColor::VertexColor | LaneColor::Lambert => {
+                put(0, &|k| vary(k).color().to_array())
+            }
+            LaneColor::Barycentric => put(0, &|k| vary(k).bary()),
+            LaneColor::Normal => put(0, &|k| vary(k).normal().to_array()),
+            LaneColor::Texture | LaneColor::Depth(..) => put(0, &|_| [0.0; 3]),
+        }
+        self.used_channels = if color == LaneColor::Lambert {
+            put(3, &|k| vary(k).normal().to_array());
             CHANNELS
         } else {
             3
         };
-        let wire = wireframe.then(|| {
+        self.wire = wireframe.then(|| {
             let b = verts.smooth.map(|v| v.bary());
             Wire {
                 bary: [0, 1, 2].map(|i| [0, 1, 2].map(|k| f64::from(b[k][i]))),
                 len: source_weight_gradients(weights, b).map(|g| g.length()),
             }
         });
-        Self {
-            weights: *weights,
-            inv_w: verts.inv_w,
-            depth: verts.depth,
-            u: uv.map(|t| f64::from(t.x)),
-            v: uv.map(|t| f64::from(t.y)),
-            both_uv: None,
-            channels,
-            used_channels,
-            wire,
-        }
+        self.both_uv = None;
     }
 
-    /// [`Constants::new`] of a set-up triangle.
+    /// The constants of a set-up triangle.
     fn of(setup: &TriangleSetup, mode: Interpolation, wireframe: bool, color: LaneColor) -> Self {
-        Self::new(
-            &setup.weights,
-            &LaneVertices::of(setup),
-            mode,
-            wireframe,
-            color,
-        )
+        let mut c = Self::EMPTY;
+        c.set(&setup.weights, &LaneVertices::of(setup), mode, wireframe, color);
+        c
     }
 }
 
@@ -328,11 +344,27 @@ pub struct LaneTriangle {
 }
 
 impl LaneTriangle {
+    /// A triangle covering nothing, to be [`set`](LaneTriangle::set).
+    pub const EMPTY: Self = Self {
+        planes: EdgePlanes {
+            a: [0; 3],
+            b: [0; 3],
+            c: [-1; 3],
+            t: [0; 3],
+        },
+        bounds: PixelBounds {
+            x0: 1,
+            y0: 1,
+            x1: 0,
+            y1: 0,
+        },
+        consts: Constants::EMPTY,
+    };
+
     /// From the triangle's edges, bounds and weight planes (see
     /// [`triangle_geometry`](super::setup::triangle_geometry)) and its vertices, for drawing
     /// with `shading` (`None`: coverage only, for the caller's per-pixel shading); `uv` when
     /// the target keeps the uv buffers.
-    #[inline(always)]
     pub fn new(
         edges: &[Edge; 3],
         bounds: PixelBounds,
@@ -341,18 +373,31 @@ impl LaneTriangle {
         shading: Option<LaneShading>,
         uv: bool,
     ) -> Self {
+        let mut tri = Self::EMPTY;
+        tri.set(edges, bounds, weights, verts, shading, uv);
+        tri
+    }
+
+    /// [`LaneTriangle::new`] in place, so that a loop over many triangles reuses one.
+    #[inline(always)]
+    pub fn set(
+        &mut self,
+        edges: &[Edge; 3],
+        bounds: PixelBounds,
+        weights: &WeightPlanes,
+        verts: &LaneVertices,
+        shading: Option<LaneShading>,
+        uv: bool,
+    ) {
         let color = shading.map_or(LaneColor::Texture, |s| s.color);
         let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
         let wire = shading.is_some_and(|s| s.wireframe);
-        let mut consts = Constants::new(weights, verts, mode, wire, color);
+        self.consts.set(weights, verts, mode, wire, color);
         if uv {
-            consts.both_uv = Some(both_uv(verts));
+            self.consts.both_uv = Some(both_uv(verts));
         }
-        Self {
-            planes: EdgePlanes::from_edges(edges),
-            bounds,
-            consts,
-        }
+        self.planes = EdgePlanes::from_edges(edges);
+        self.bounds = bounds;
     }
 
     /// From a set-up triangle.
