@@ -108,12 +108,25 @@ impl<'m> FastMesh<'m> {
     pub fn prepare(mesh: &'m ClipMesh, viewport: Viewport, rule: TieRule) -> Self {
         use rayon::prelude::*;
         let planes = planes(viewport.guard_band_ndc());
-        let vertices: Vec<ProjectedVertex> = mesh
-            .vertices
+        let (mut vertices, mut slots) = SCRATCH.with(|s| {
+            let mut s = s.borrow_mut();
+            (
+                std::mem::take(&mut s.vertices),
+                std::mem::take(&mut s.slots),
+            )
+        });
+        // A much larger mesh drawn before gives its memory back.
+        if vertices.capacity() > 4 * mesh.vertices.len().max(KEEP_AT_LEAST) {
+            vertices = Vec::new();
+        }
+        if slots.capacity() > 4 * mesh.triangles.len().max(KEEP_AT_LEAST) {
+            slots = Vec::new();
+        }
+        mesh.vertices
             .par_iter()
             .with_min_len(CHUNK)
             .map(|v| ProjectedVertex::new(v.clip, viewport, &planes))
-            .collect();
+            .collect_into_vec(&mut vertices);
         let mut out = Self {
             mesh,
             viewport,
@@ -121,11 +134,12 @@ impl<'m> FastMesh<'m> {
             vertices,
             slots: Vec::new(),
         };
-        out.slots = (0..mesh.triangles.len() as u32)
+        (0..mesh.triangles.len() as u32)
             .into_par_iter()
             .with_min_len(CHUNK)
             .map(|i| out.slot(i))
-            .collect();
+            .collect_into_vec(&mut slots);
+        out.slots = slots;
         out
     }
 
@@ -260,7 +274,10 @@ impl<'m> FastMesh<'m> {
     /// order, as `(source triangle, set-up index)`.
     fn bins(&self, height: u32, rows_per_band: u32) -> Vec<Vec<(u32, u32)>> {
         let bands = height.div_ceil(rows_per_band).max(1) as usize;
-        let mut bins: Vec<Vec<(u32, u32)>> = vec![Vec::new(); bands];
+        let mut bins = SCRATCH.with(|s| std::mem::take(&mut s.borrow_mut().bins));
+        bins.resize_with(bands, Vec::new);
+        bins.truncate(bands);
+        bins.iter_mut().for_each(Vec::clear);
         let mut add = |ti: usize, si: usize, b: &PixelBounds| {
             let first = (b.y0 / rows_per_band) as usize;
             let last = ((b.y1 / rows_per_band) as usize).min(bands - 1);
@@ -302,46 +319,81 @@ impl<'m> FastMesh<'m> {
             (Rasterizer::EdgeFunction, Some(shading)) => Some(shading),
             _ => None,
         };
-        bands.into_par_iter().zip(bins).for_each(|(mut band, bin)| {
-            band.clear(background);
-            let lanes = lanes.filter(|_| !band.has_aovs());
-            let uvs = !band.uv_affine.is_empty();
-            let mut tri = LaneTriangle::EMPTY;
-            for (j, &(ti, si)) in bin.iter().enumerate() {
-                // The triangles a band visits are scattered over the mesh: ask for the memory
-                // of the ones a few steps ahead while this one draws.
-                if let Some(&(ahead, _)) = bin.get(j + PREFETCH_SLOTS) {
-                    prefetch(self.slots.get(ahead as usize));
-                }
-                if let Some(&(ahead, _)) = bin.get(j + PREFETCH_VERTICES)
-                    && let Some(Slot::Whole { corners, .. }) = self.slots.get(ahead as usize)
-                {
-                    for &c in corners {
-                        prefetch(self.vertices.get(c as usize));
-                        prefetch(self.mesh.vertices.get(c as usize));
+        bands
+            .into_par_iter()
+            .zip(&bins)
+            .for_each(|(mut band, bin)| {
+                band.clear(background);
+                let lanes = lanes.filter(|_| !band.has_aovs());
+                let uvs = !band.uv_affine.is_empty();
+                let mut tri = LaneTriangle::EMPTY;
+                for (j, &(ti, si)) in bin.iter().enumerate() {
+                    // The triangles a band visits are scattered over the mesh: ask for the memory
+                    // of the ones a few steps ahead while this one draws.
+                    if let Some(&(ahead, _)) = bin.get(j + PREFETCH_SLOTS) {
+                        prefetch(self.slots.get(ahead as usize));
                     }
-                }
-                match &self.slots[ti as usize] {
-                    Slot::Skip => {}
-                    Slot::Whole { corners, .. } => {
-                        if let Some(shading) = lanes
-                            && self.set_lane_triangle(&mut tri, *corners, shading, uvs)
-                            && tri.exact()
-                        {
-                            draw_lanes(&tri, ti, texture, shading, &mut band);
-                        } else if let Some(setup) = self.setup(*corners) {
-                            rasterize(&setup, ti, texture, params, rasterizer, &mut band);
+                    if let Some(&(ahead, _)) = bin.get(j + PREFETCH_VERTICES)
+                        && let Some(Slot::Whole { corners, .. }) = self.slots.get(ahead as usize)
+                    {
+                        for &c in corners {
+                            prefetch(self.vertices.get(c as usize));
+                            prefetch(self.mesh.vertices.get(c as usize));
                         }
                     }
-                    Slot::Clipped(t) => {
-                        if let Some(setup) = t.setups.get(si as usize) {
-                            rasterize(setup, ti, texture, params, rasterizer, &mut band);
+                    match &self.slots[ti as usize] {
+                        Slot::Skip => {}
+                        Slot::Whole { corners, .. } => {
+                            if let Some(shading) = lanes
+                                && self.set_lane_triangle(&mut tri, *corners, shading, uvs)
+                                && tri.exact()
+                            {
+                                draw_lanes(&tri, ti, texture, shading, &mut band);
+                            } else if let Some(setup) = self.setup(*corners) {
+                                rasterize(&setup, ti, texture, params, rasterizer, &mut band);
+                            }
+                        }
+                        Slot::Clipped(t) => {
+                            if let Some(setup) = t.setups.get(si as usize) {
+                                rasterize(setup, ti, texture, params, rasterizer, &mut band);
+                            }
                         }
                     }
                 }
-            }
+            });
+        SCRATCH.with(|s| s.borrow_mut().bins = bins);
+    }
+}
+
+impl Drop for FastMesh<'_> {
+    /// Gives the vectors back for the next frame's [`FastMesh::prepare`] on this thread.
+    fn drop(&mut self) {
+        let mut slots = std::mem::take(&mut self.slots);
+        slots.clear();
+        let vertices = std::mem::take(&mut self.vertices);
+        SCRATCH.with(|s| {
+            let mut s = s.borrow_mut();
+            s.vertices = vertices;
+            s.slots = slots;
         });
     }
+}
+
+/// Vertices and triangles the kept vectors may hold whatever the mesh.
+const KEEP_AT_LEAST: usize = 1 << 16;
+
+/// The fast path's vectors, kept from one frame to the next on the thread that renders: a
+/// dense mesh's tens of megabytes are then not taken from the system (and zeroed by it) again
+/// every frame.
+#[derive(Default)]
+struct Scratch {
+    vertices: Vec<ProjectedVertex>,
+    slots: Vec<Slot>,
+    bins: Vec<Vec<(u32, u32)>>,
+}
+
+thread_local! {
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::default();
 }
 
 /// How many triangles ahead in a band's list the slot is prefetched.

@@ -302,9 +302,7 @@ impl Constants {
             }
         };
         match color {
-            LaneColor::VertexColor | LaneColor::Lambert => {
-                put(0, &|k| vary(k).color().to_array())
-            }
+            LaneColor::VertexColor | LaneColor::Lambert => put(0, &|k| vary(k).color().to_array()),
             LaneColor::Barycentric => put(0, &|k| vary(k).bary()),
             LaneColor::Normal => put(0, &|k| vary(k).normal().to_array()),
             LaneColor::Texture | LaneColor::Depth(..) => put(0, &|_| [0.0; 3]),
@@ -328,7 +326,13 @@ impl Constants {
     /// The constants of a set-up triangle.
     fn of(setup: &TriangleSetup, mode: Interpolation, wireframe: bool, color: LaneColor) -> Self {
         let mut c = Self::EMPTY;
-        c.set(&setup.weights, &LaneVertices::of(setup), mode, wireframe, color);
+        c.set(
+            &setup.weights,
+            &LaneVertices::of(setup),
+            mode,
+            wireframe,
+            color,
+        );
         c
     }
 }
