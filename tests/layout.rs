@@ -6,6 +6,7 @@
 use barylab::app::state::Command;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::i18n::{Lang, cjk_font};
+use barylab::probe::format::fmt_number;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 
@@ -99,4 +100,65 @@ fn lang_word(lang: Lang, key: &str) -> String {
         .next()
         .unwrap_or_default()
         .to_string()
+}
+
+/// The inspector's per-vertex numbers of the pinned pixel, as it prints them.
+fn pin_numbers(h: &Harness<'_, BaryApp>) -> Vec<String> {
+    let r = h.state().pin_report().expect("pin report");
+    let d = r.trace.detail.as_ref().expect("covered");
+    let p = d.perspective.expect("1/w");
+    let mut n: Vec<f64> = d.screen.rasterizer.to_vec();
+    n.extend(p.correction.weights);
+    n.extend(d.raster.vertices.iter().map(|v| v.inv_w));
+    n.into_iter().map(fmt_number).collect()
+}
+
+/// Points: the right edge of what the inspector panel shows (inside its frame's margin and
+/// beside its scroll bar; the panel is at the window's right edge).
+fn inspector_right(h: &Harness<'_, BaryApp>) -> f32 {
+    let scroll = h.ctx.global_style().spacing.scroll;
+    h.ctx.content_rect().right() - 8.0 - scroll.allocated_width()
+}
+
+#[test]
+fn the_inspectors_numbers_are_never_cut_at_its_edge() {
+    for lang in langs() {
+        for (size, scales) in [
+            ([1280.0, 800.0], [1.0, 1.25, 1.5]),
+            ([1280.0, 800.0], [1.3, 1.4, 1.1]),
+            ([1024.0, 768.0], [1.0, 1.0, 1.0]),
+            ([1920.0, 1080.0], [1.0, 1.5, 2.0]),
+        ] {
+            let options = AppOptions {
+                lang: Some(lang),
+                pin: Some([400, 420]),
+                ..AppOptions::default()
+            };
+            let mut h = harness(size, options);
+            for scale in scales {
+                h.state_mut().push(Command::SetUiScale(scale));
+                settle(&mut h);
+                // Hover another pixel, so the pinned-and-hovered table shows too.
+                let view = h.state().canvas().views[0];
+                let pos = view.transform.to_screen(glam::DVec2::new(300.5, 450.5));
+                h.hover_at(pos);
+                settle(&mut h);
+                let right = inspector_right(&h);
+                let what = format!("{lang:?} {size:?} at text size {scale}");
+                for n in pin_numbers(&h) {
+                    let nodes: Vec<egui::Rect> = h
+                        .query_all_by_label_contains(&n)
+                        .map(|node| node.rect())
+                        .collect();
+                    assert!(!nodes.is_empty(), "{what}: {n} not shown");
+                    for r in nodes {
+                        assert!(
+                            r.right() <= right + 0.5,
+                            "{what}: {n} is cut: {r:?}, the panel shows up to {right}"
+                        );
+                    }
+                }
+            }
+        }
+    }
 }
