@@ -180,7 +180,10 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 // A label with a box keeps clear of the others; a bare letter (a handle's
                 // name) stays where it is.
                 let (p, bounds) = ([base.x, base.y], to_box(clip));
-                let b = if background.is_some() {
+                // A title keeps its place above the image (handles move out of its way).
+                let b = if is_title(shape) {
+                    figure_text::place_label(p, *offset, *anchor, outer, bounds)
+                } else if background.is_some() {
                     figure_text::place_label_avoiding(p, *offset, *anchor, outer, bounds, &placed)
                 } else {
                     below_titles(
@@ -473,7 +476,7 @@ mod tests {
             origin: Pos2::new(100.0, 100.0),
             scale: 1.0,
         };
-        let clip = Rect::from_min_max(Pos2::new(98.0, 56.0), Pos2::new(400.0, 400.0));
+        let clip = Rect::from_min_max(Pos2::new(98.0, 40.0), Pos2::new(400.0, 400.0));
         let texts = painted(&overlay, clip, t);
         let title = texts
             .iter()
@@ -483,5 +486,7 @@ mod tests {
         // The title is painted after (over) the handle, and the letter is not under it.
         assert!(title > letter, "{texts:?}");
         assert!(!texts[title].1.intersects(texts[letter].1), "{texts:?}");
+        // And the title keeps its place above the image (the handle does not push it down).
+        assert!(texts[title].1.bottom() <= t.origin.y, "{texts:?}");
     }
 }
