@@ -18,8 +18,14 @@ use crate::raster::render::TriangleStatus;
 /// coverage, the screen weights, the 1/w correction and the texture coordinate.
 const OPEN_SECTIONS: [usize; 4] = [2, 4, 5, 8];
 
-/// Points: width of a number column.
+/// Points: the least width of a number column.
 const NUMBER_WIDTH: f32 = 64.0;
+/// Points between two columns of the table of per-vertex numbers.
+const COLUMN_SPACING: f32 = 8.0;
+/// Points of the panel's width the table leaves spare (rounding, the panel's edge).
+const TABLE_SLACK: f32 = 4.0;
+
+mod columns;
 
 fn weight_text(w: f64) -> RichText {
     let t = RichText::new(fmt_number(w)).monospace();
@@ -66,7 +72,8 @@ fn miss_reason(c: &TriangleCoverage, lang: Lang) -> String {
 fn header_ui(ui: &mut Ui, r: &PixelReport, role: &str) {
     let lang = super::locale::lang(ui.ctx());
     let t = &r.trace;
-    ui.horizontal(|ui| {
+    // Wrapped: in a narrow panel "pinned" goes to the next line rather than past the edge.
+    ui.horizontal_wrapped(|ui| {
         let c = t.color;
         let (rect, _) = ui.allocate_exact_size(egui::vec2(28.0, 28.0), egui::Sense::hover());
         ui.painter().rect_filled(
@@ -132,44 +139,102 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
     };
     let v = &d.raster.vertices;
     let seed = d.perspective.map(|p| p.correction);
+    // The columns: r s t, 1/W, a b c, each a header (with its tooltip) and a value a vertex.
+    let columns: [(String, String, Vec<RichText>); 3] = [
+        (
+            lang.tr("app.inspector.screen"),
+            lang.tr("app.inspector.screen_tip"),
+            (0..v.len())
+                .map(|k| weight_text(d.screen.rasterizer[k]))
+                .collect(),
+        ),
+        (
+            lang.tr("app.inspector.inv_w"),
+            lang.tr("app.inspector.inv_w_tip"),
+            v.iter()
+                .map(|vk| RichText::new(fmt_number(vk.inv_w)).monospace())
+                .collect(),
+        ),
+        (
+            lang.tr("app.inspector.corrected"),
+            lang.tr("app.inspector.corrected_tip"),
+            (0..v.len())
+                .map(|k| match seed {
+                    Some(s) => weight_text(s.weights[k]),
+                    None => RichText::new("–"),
+                })
+                .collect(),
+        ),
+    ];
+    // As many columns side by side as fit the panel; the rest in tables below.
+    let width = |t: &RichText| {
+        egui::WidgetText::from(t.clone())
+            .into_galley(
+                ui,
+                Some(egui::TextWrapMode::Extend),
+                f32::INFINITY,
+                egui::TextStyle::Body,
+            )
+            .size()
+            .x
+    };
+    let vertex_header = RichText::new(lang.tr("app.inspector.vertex")).weak();
+    let name_width = v
+        .iter()
+        .map(|vk| width(&RichText::new(&vk.name).strong()))
+        .fold(width(&vertex_header), f32::max);
+    let column_widths: Vec<f32> = columns
+        .iter()
+        .map(|(header, _, values)| {
+            values
+                .iter()
+                .map(width)
+                .fold(width(&RichText::new(header)).max(NUMBER_WIDTH), f32::max)
+        })
+        .collect();
+    let per_table = columns::per_table(
+        ui.available_width() - TABLE_SLACK,
+        name_width,
+        &column_widths,
+        COLUMN_SPACING,
+    );
+    // A horizontal scroll area all the same, as in [`compare_ui`].
     egui::ScrollArea::horizontal()
         .id_salt("summary-scroll")
         .show(ui, |ui| {
-            egui::Grid::new(("summary", r.pixel))
-                .num_columns(4)
-                .spacing([8.0, 4.0])
-                .striped(true)
-                .show(ui, |ui| {
-                    ui.label(RichText::new(lang.tr("app.inspector.vertex")).weak());
-                    ui.label(RichText::new(lang.tr("app.inspector.screen")).weak())
-                        .on_hover_text(lang.tr("app.inspector.screen_tip"));
-                    ui.label(RichText::new(lang.tr("app.inspector.inv_w")).weak())
-                        .on_hover_text(lang.tr("app.inspector.inv_w_tip"));
-                    ui.label(RichText::new(lang.tr("app.inspector.corrected")).weak())
-                        .on_hover_text(lang.tr("app.inspector.corrected_tip"));
-                    ui.end_row();
-                    for (k, vk) in v.iter().enumerate() {
-                        let mesh = vk
-                            .source_vertex
-                            .and_then(|s| d.vertices.get(s))
-                            .map(|vt| vt.index as usize);
-                        let c = mesh.map_or(CLIP_POINT, vertex_color);
-                        let name = ui.label(RichText::new(&vk.name).strong().color(color(c)));
-                        if mesh.is_none() {
-                            name.on_hover_text(lang.tr("app.inspector.clipped_vertex_tip"));
+            for (t, chunk) in columns.chunks(per_table).enumerate() {
+                egui::Grid::new(("summary", r.pixel, t))
+                    .num_columns(1 + chunk.len())
+                    .spacing([COLUMN_SPACING, 4.0])
+                    .min_col_width(0.0)
+                    .striped(true)
+                    .show(ui, |ui| {
+                        ui.label(vertex_header.clone());
+                        for (k, (header, tip, _)) in chunk.iter().enumerate() {
+                            let w = column_widths[t * per_table + k];
+                            ui.add_sized([w, 20.0], egui::Label::new(RichText::new(header).weak()))
+                                .on_hover_text(tip);
                         }
-                        ui.add_sized(
-                            [NUMBER_WIDTH, 20.0],
-                            egui::Label::new(weight_text(d.screen.rasterizer[k])),
-                        );
-                        ui.label(RichText::new(fmt_number(vk.inv_w)).monospace());
-                        match seed {
-                            Some(s) => ui.label(weight_text(s.weights[k])),
-                            None => ui.label("–"),
-                        };
                         ui.end_row();
-                    }
-                });
+                        for (k, vk) in v.iter().enumerate() {
+                            let mesh = vk
+                                .source_vertex
+                                .and_then(|s| d.vertices.get(s))
+                                .map(|vt| vt.index as usize);
+                            let c = mesh.map_or(CLIP_POINT, vertex_color);
+                            let name = ui.label(RichText::new(&vk.name).strong().color(color(c)));
+                            if mesh.is_none() {
+                                name.on_hover_text(lang.tr("app.inspector.clipped_vertex_tip"));
+                            }
+                            for (j, (_, _, values)) in chunk.iter().enumerate() {
+                                let w = column_widths[t * per_table + j];
+                                ui.add_sized([w, 20.0], egui::Label::new(values[k].clone()));
+                            }
+                            ui.end_row();
+                        }
+                    });
+                ui.add_space(2.0);
+            }
         });
     if let Some(s) = seed {
         let n = [0, 1, 2].map(|k| v[k].name.as_str());
@@ -237,8 +302,17 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
 fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
     let lang = super::locale::lang(ui.ctx());
     ui.label(RichText::new(lang.tr("app.inspector.compare")).strong());
-    let rows = |r: &PixelReport| -> Vec<String> {
+    // `split`: a pair of numbers on two lines (for a narrow panel).
+    let rows = |r: &PixelReport, split: bool| -> Vec<String> {
         let d = r.trace.detail.as_ref();
+        let two = |uv: [f32; 2]| {
+            let p = pair32(uv);
+            if split {
+                p.replacen(", ", ",\n ", 1)
+            } else {
+                p
+            }
+        };
         let w3 = |w: [f64; 3]| {
             w.iter()
                 .map(|x| fmt_number(*x))
@@ -253,9 +327,9 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
             d.and_then(|d| d.perspective)
                 .map_or("–".into(), |p| fmt_number(p.correction.w_p)),
             d.and_then(|d| d.attribute.as_ref())
-                .map_or("–".into(), |a| pair32(a.uv_affine)),
+                .map_or("–".into(), |a| two(a.uv_affine)),
             d.and_then(|d| d.attribute.as_ref())
-                .map_or("–".into(), |a| pair32(a.uv_perspective)),
+                .map_or("–".into(), |a| two(a.uv_perspective)),
         ]
     };
     let names = [
@@ -266,26 +340,83 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
         &lang.tr("app.inspector.uv_affine"),
         &lang.tr("app.inspector.uv_perspective"),
     ];
-    let (a, b) = (rows(pinned), rows(hovered));
+    let width = |t: &str, mono: bool| {
+        let t = if mono {
+            RichText::new(t).monospace()
+        } else {
+            RichText::new(t)
+        };
+        egui::WidgetText::from(t)
+            .into_galley(
+                ui,
+                Some(egui::TextWrapMode::Extend),
+                f32::INFINITY,
+                egui::TextStyle::Body,
+            )
+            .size()
+            .x
+    };
+    let heads = [
+        lang.tr("app.inspector.pinned"),
+        lang.tr("app.inspector.hovered"),
+    ];
+    let name_width = names.iter().map(|n| width(n, false)).fold(0.0, f32::max);
+    let spacing = 12.0;
+    // Pinned beside hovered when both fit the panel, else one table below the other, with
+    // the uv pairs on two lines if that is still too wide.
+    let fit = |split: bool| {
+        let (a, b) = (rows(pinned, split), rows(hovered, split));
+        let column_widths: Vec<f32> = [&a, &b]
+            .iter()
+            .zip(&heads)
+            .map(|(col, head)| {
+                col.iter()
+                    .map(|x| width(x, true))
+                    .fold(width(head, false), f32::max)
+            })
+            .collect();
+        let per_table = columns::per_table(
+            ui.available_width() - TABLE_SLACK,
+            name_width,
+            &column_widths,
+            spacing,
+        );
+        (a, b, per_table)
+    };
+    let (a, b, per_table) = match fit(false) {
+        (a, b, 2) => (a, b, 2),
+        _ => fit(true),
+    };
+    let values = [&a, &b];
+    // A horizontal scroll area all the same: nothing here widens the panel's content (which
+    // would move the derivation below past the panel's edge).
     egui::ScrollArea::horizontal()
         .id_salt("compare-scroll")
         .show(ui, |ui| {
-            egui::Grid::new("compare")
-                .num_columns(3)
-                .spacing([12.0, 4.0])
-                .striped(true)
-                .show(ui, |ui| {
-                    ui.label("");
-                    ui.label(RichText::new(lang.tr("app.inspector.pinned")).weak());
-                    ui.label(RichText::new(lang.tr("app.inspector.hovered")).weak());
-                    ui.end_row();
-                    for ((n, x), y) in names.iter().zip(&a).zip(&b) {
-                        ui.add(egui::Label::new(RichText::new(*n).weak()).extend());
-                        ui.add(egui::Label::new(RichText::new(x).monospace()).extend());
-                        ui.add(egui::Label::new(RichText::new(y).monospace()).extend());
+            for (t, chunk) in [0, 1].chunks(per_table).enumerate() {
+                egui::Grid::new(("compare", t))
+                    .num_columns(1 + chunk.len())
+                    .spacing([spacing, 4.0])
+                    .striped(true)
+                    .show(ui, |ui| {
+                        ui.label("");
+                        for &c in chunk {
+                            ui.label(RichText::new(&heads[c]).weak());
+                        }
                         ui.end_row();
-                    }
-                });
+                        for (i, n) in names.iter().enumerate() {
+                            ui.add(egui::Label::new(RichText::new(*n).weak()).extend());
+                            for &c in chunk {
+                                ui.add(
+                                    egui::Label::new(RichText::new(&values[c][i]).monospace())
+                                        .extend(),
+                                );
+                            }
+                            ui.end_row();
+                        }
+                    });
+                ui.add_space(2.0);
+            }
         });
 }
 
@@ -309,11 +440,35 @@ fn derivation_ui(ui: &mut Ui, r: &PixelReport, open: Option<&[InspectorSection]>
         .size(20.0),
     );
     for (i, section) in r.document.sections.iter().enumerate() {
-        egui::CollapsingHeader::new(RichText::new(&section.title).strong())
-            .id_salt(("derivation", i))
-            .default_open(OPEN_SECTIONS.contains(&i))
-            .open(wanted.as_ref().map(|w| w.contains(&i)))
-            .show(ui, |ui| section_ui(ui, i, &section.to_text()));
+        // Not a CollapsingHeader: its title never wraps, and a long one would widen the
+        // panel's content so the sections below it were cut at the panel's edge.
+        let id = ui.make_persistent_id(("derivation", i));
+        let mut state = egui::collapsing_header::CollapsingState::load_with_default_open(
+            ui.ctx(),
+            id,
+            OPEN_SECTIONS.contains(&i),
+        );
+        if let Some(w) = &wanted {
+            state.set_open(w.contains(&i));
+        }
+        let (_, header, _) = state
+            .show_header(ui, |ui| {
+                ui.add(
+                    egui::Label::new(RichText::new(&section.title).strong())
+                        .wrap()
+                        .sense(egui::Sense::click()),
+                )
+            })
+            .body(|ui| section_ui(ui, i, &section.to_text()));
+        if header.inner.clicked() {
+            let mut state = egui::collapsing_header::CollapsingState::load_with_default_open(
+                ui.ctx(),
+                id,
+                OPEN_SECTIONS.contains(&i),
+            );
+            state.toggle(ui);
+            state.store(ui.ctx());
+        }
     }
 }
 

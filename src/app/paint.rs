@@ -75,6 +75,9 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
             _ => None,
         })
         .collect();
+    // The views' titles, drawn last so no handle near the image's top edge covers them; a
+    // handle's letter that would lie on one moves below it.
+    let mut titles: Vec<(Rect, std::sync::Arc<egui::Galley>, Rgba, Option<Rgba>)> = Vec::new();
     for shape in &overlay.shapes {
         match shape {
             Shape::Polygon {
@@ -177,15 +180,26 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 // A label with a box keeps clear of the others; a bare letter (a handle's
                 // name) stays where it is.
                 let (p, bounds) = ([base.x, base.y], to_box(clip));
-                let b = if background.is_some() {
+                // A title keeps its place above the image (handles move out of its way).
+                let b = if is_title(shape) {
+                    figure_text::place_label(p, *offset, *anchor, outer, bounds)
+                } else if background.is_some() {
                     figure_text::place_label_avoiding(p, *offset, *anchor, outer, bounds, &placed)
                 } else {
-                    figure_text::place_label(p, *offset, *anchor, outer, bounds)
+                    below_titles(
+                        figure_text::place_label(p, *offset, *anchor, outer, bounds),
+                        &titles,
+                        bounds,
+                    )
                 };
                 if background.is_some() {
                     placed.push(b);
                 }
-                draw_label(&painter, to_rect(b), galley, *c, *background);
+                if is_title(shape) {
+                    titles.push((to_rect(b), galley, *c, *background));
+                } else {
+                    draw_label(&painter, to_rect(b), galley, *c, *background);
+                }
             }
             Shape::LabelPair {
                 at,
@@ -214,8 +228,9 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 let (boxes, _) =
                     figure_text::place_pair([base.x, base.y + offset_y], *gap, outer, to_box(clip));
                 placed.extend(boxes);
+                // The wipe's two titles.
                 for (b, g) in boxes.into_iter().zip(galleys) {
-                    draw_label(&painter, to_rect(b), g, *c, *background);
+                    titles.push((to_rect(b), g, *c, *background));
                 }
             }
             Shape::PixelGrid {
@@ -237,6 +252,39 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 paint_color_bar(&painter, rect, colors, labels, title);
             }
         }
+    }
+    for (b, g, c, background) in titles {
+        draw_label(&painter, b, g, c, background);
+    }
+}
+
+/// Whether `shape` is a view's title: a boxed text above the image's top-left corner.
+fn is_title(shape: &Shape) -> bool {
+    matches!(shape, Shape::Text { at, offset, background: Some(_), .. }
+        if *at == DVec2::ZERO && *offset == [0.0, -crate::figure::overlay::TITLE_GAP])
+}
+
+/// A bare letter's box `b` moved down below any title it would lie on (if that stays inside
+/// `bounds`).
+fn below_titles(
+    b: figure_text::Box2,
+    titles: &[(Rect, std::sync::Arc<egui::Galley>, Rgba, Option<Rgba>)],
+    bounds: figure_text::Box2,
+) -> figure_text::Box2 {
+    let r = to_rect(b);
+    let Some(bottom) = titles
+        .iter()
+        .filter(|(t, ..)| t.intersects(r))
+        .map(|(t, ..)| t.bottom())
+        .reduce(f32::max)
+    else {
+        return b;
+    };
+    let d = bottom + 1.0 - b[1];
+    if b[3] + d <= bounds[3] {
+        [b[0], b[1] + d, b[2], b[3] + d]
+    } else {
+        b
     }
 }
 
@@ -367,4 +415,78 @@ fn paint_color_bar(
         FontId::proportional(16.0),
         text,
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::overlay::{Anchor, TITLE_GAP};
+
+    /// The texts painted, in order, with their screen rectangles.
+    fn painted(overlay: &Overlay, clip: Rect, t: CanvasTransform) -> Vec<(String, Rect)> {
+        let ctx = egui::Context::default();
+        let out = ctx.run_pass(egui::RawInput::default(), |ctx| {
+            let painter = egui::Painter::new(ctx.clone(), egui::LayerId::background(), clip);
+            paint(&painter, clip, t, overlay);
+        });
+        out.shapes
+            .iter()
+            .filter_map(|s| match &s.shape {
+                EShape::Text(text) => {
+                    Some((text.galley.text().to_string(), text.visual_bounding_rect()))
+                }
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_handle_at_the_top_edge_leaves_the_title_readable() {
+        // A vertex just above the image's top-left corner, its handle in the title strip.
+        let corner = DVec2::new(4.0, -4.0);
+        let overlay = Overlay {
+            shapes: vec![
+                Shape::Text {
+                    at: DVec2::ZERO,
+                    offset: [0.0, -TITLE_GAP],
+                    anchor: Anchor::LeftBottom,
+                    text: "AFFINE".into(),
+                    size: 24.0,
+                    color: [255; 4],
+                    background: Some([0, 0, 0, 200]),
+                },
+                Shape::Circle {
+                    centre: corner,
+                    radius: 11.0,
+                    fill: [200, 0, 0, 255],
+                    stroke: None,
+                },
+                Shape::Text {
+                    at: corner,
+                    offset: [0.0, 0.0],
+                    anchor: Anchor::Center,
+                    text: "D".into(),
+                    size: 16.0,
+                    color: [0, 0, 0, 255],
+                    background: None,
+                },
+            ],
+        };
+        let t = CanvasTransform {
+            origin: Pos2::new(100.0, 100.0),
+            scale: 1.0,
+        };
+        let clip = Rect::from_min_max(Pos2::new(98.0, 40.0), Pos2::new(400.0, 400.0));
+        let texts = painted(&overlay, clip, t);
+        let title = texts
+            .iter()
+            .position(|(s, _)| s == "AFFINE")
+            .expect("title");
+        let letter = texts.iter().position(|(s, _)| s == "D").expect("letter");
+        // The title is painted after (over) the handle, and the letter is not under it.
+        assert!(title > letter, "{texts:?}");
+        assert!(!texts[title].1.intersects(texts[letter].1), "{texts:?}");
+        // And the title keeps its place above the image (the handle does not push it down).
+        assert!(texts[title].1.bottom() <= t.origin.y, "{texts:?}");
+    }
 }

@@ -7,6 +7,8 @@ use super::state::AppState;
 use crate::figure::Compare;
 use crate::raster::Interpolation;
 
+mod fit;
+
 /// Timings the app measures itself.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct FrameTiming {
@@ -64,7 +66,8 @@ pub fn clear_if(message: &mut Option<Message>, gone: impl Fn(&Cause) -> bool) {
     }
 }
 
-/// The status line.
+/// The status line: one line, whose less important parts go (to the frame time's tooltip)
+/// or get shorter when the window is narrow ([`fit`]).
 pub fn status_ui(
     ui: &mut Ui,
     state: &AppState,
@@ -76,70 +79,98 @@ pub fn status_ui(
     // One line, always: the timings change every frame, and a status line that wrapped would
     // change the canvas's height, move the canvas and re-render it (a feedback loop).
     ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Truncate);
-    ui.horizontal(|ui| {
-        let mode = state.options().mode;
-        let (mode_text, mode_color) = match state.view.compare {
-            Compare::Single => match mode {
-                Interpolation::Affine => (
-                    &lang.tr("app.status.affine"),
-                    Color32::from_rgb(230, 140, 60),
-                ),
-                Interpolation::Perspective => (
-                    &lang.tr("app.status.perspective"),
-                    Color32::from_rgb(80, 170, 255),
-                ),
-            },
-            Compare::SideBySide => (&lang.tr("app.status.side_by_side"), Color32::LIGHT_GRAY),
-            Compare::Wipe => (&lang.tr("app.status.wipe"), Color32::LIGHT_GRAY),
-            Compare::Difference => (&lang.tr("app.status.difference"), Color32::LIGHT_GRAY),
+    let mode = state.options().mode;
+    let (mode_text, mode_color) = match state.view.compare {
+        Compare::Single => match mode {
+            Interpolation::Affine => (
+                lang.tr("app.status.affine"),
+                Color32::from_rgb(230, 140, 60),
+            ),
+            Interpolation::Perspective => (
+                lang.tr("app.status.perspective"),
+                Color32::from_rgb(80, 170, 255),
+            ),
+        },
+        Compare::SideBySide => (lang.tr("app.status.side_by_side"), Color32::LIGHT_GRAY),
+        Compare::Wipe => (lang.tr("app.status.wipe"), Color32::LIGHT_GRAY),
+        Compare::Difference => (lang.tr("app.status.difference"), Color32::LIGHT_GRAY),
+    };
+    let canvas_text = canvas.output.as_ref().map(|out| {
+        // Screen pixels per rendered pixel: whole when magnified.
+        let px = canvas
+            .views
+            .first()
+            .map_or(1.0, |v| v.transform.scale * ui.ctx().pixels_per_point());
+        let px = if (px - px.round()).abs() < 1e-3 {
+            format!("{}", px.round())
+        } else {
+            format!("{px:.2}")
         };
-        if state.view.gpu {
-            ui.label(
-                RichText::new(lang.tr("gpu_view.status"))
-                    .strong()
-                    .color(Color32::LIGHT_GREEN),
-            );
+        let args: [(&str, &dyn std::fmt::Display); 3] =
+            [("w", &out.size[0]), ("h", &out.size[1]), ("px", &px)];
+        [
+            lang.tr_with("app.status.canvas", &args),
+            lang.tr_with("app.status.canvas_short", &args),
+        ]
+    });
+    let t = canvas.timing;
+    let frame = timing
+        .frame_ms
+        .map_or_else(|| "–".to_string(), |f| format!("{f:.1} ms"));
+    let rasterizer = match state.view.rasterizer {
+        crate::raster::render::Rasterizer::EdgeFunction => lang.tr("app.status.edge"),
+        crate::raster::render::Rasterizer::Scanline => lang.tr("app.status.scanline"),
+    };
+    let all_timings = format!(
+        "{} ({}) {:.1} ms · {} {:.1} ms · {} {:.1} ms · {} {}",
+        &lang.tr("app.status.render"),
+        rasterizer,
+        t.render_ms,
+        &lang.tr("app.status.upload"),
+        t.upload_ms,
+        &lang.tr("app.status.ui"),
+        timing.ui_ms,
+        &lang.tr("app.status.frame"),
+        frame
+    );
+    let texts = fit::StatusTexts {
+        gpu: state.view.gpu.then(|| lang.tr("gpu_view.status")),
+        mode: mode_text,
+        canvas: canvas_text,
+        timings: [
+            all_timings.clone(),
+            format!("{} {}", &lang.tr("app.status.frame"), frame),
+        ],
+        message: message.map(|m| m.text.clone()),
+        help: lang.tr("app.status.help"),
+    };
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let measure = |s: &str| {
+        ui.fonts_mut(|f| {
+            f.layout_no_wrap(s.to_string(), font.clone(), Color32::WHITE)
+                .size()
+                .x
+        })
+    };
+    let gap = ui.spacing().item_spacing.x;
+    let shown = texts.fit(ui.available_width(), gap, SEPARATOR, measure);
+    ui.horizontal(|ui| {
+        if let Some(g) = &texts.gpu {
+            ui.label(RichText::new(g).strong().color(Color32::LIGHT_GREEN));
         }
-        ui.label(RichText::new(mode_text).strong().color(mode_color));
+        ui.label(RichText::new(&texts.mode).strong().color(mode_color));
         ui.separator();
-        if let Some(out) = &canvas.output {
-            // Screen pixels per rendered pixel: whole when magnified.
-            let px = canvas
-                .views
-                .first()
-                .map_or(1.0, |v| v.transform.scale * ui.ctx().pixels_per_point());
-            let px = if (px - px.round()).abs() < 1e-3 {
-                format!("{}", px.round())
-            } else {
-                format!("{px:.2}")
-            };
-            ui.label(lang.tr_with(
-                "app.status.canvas",
-                &[("w", &out.size[0]), ("h", &out.size[1]), ("px", &px)],
-            ));
+        if let Some([long, short]) = &texts.canvas {
+            ui.label(if shown.long_canvas { long } else { short });
             ui.separator();
         }
-        let t = canvas.timing;
-        let frame = timing
-            .frame_ms
-            .map_or_else(|| "–".to_string(), |f| format!("{f:.1} ms"));
-        let rasterizer = match state.view.rasterizer {
-            crate::raster::render::Rasterizer::EdgeFunction => lang.tr("app.status.edge"),
-            crate::raster::render::Rasterizer::Scanline => lang.tr("app.status.scanline"),
+        let tip = if shown.all_timings {
+            lang.tr("app.status.frame_tip")
+        } else {
+            format!("{all_timings}\n\n{}", lang.tr("app.status.frame_tip"))
         };
-        ui.label(format!(
-            "{} ({}) {:.1} ms · {} {:.1} ms · {} {:.1} ms · {} {}",
-            &lang.tr("app.status.render"),
-            rasterizer,
-            t.render_ms,
-            &lang.tr("app.status.upload"),
-            t.upload_ms,
-            &lang.tr("app.status.ui"),
-            timing.ui_ms,
-            &lang.tr("app.status.frame"),
-            frame
-        ))
-        .on_hover_text(lang.tr("app.status.frame_tip"));
+        ui.label(&texts.timings[usize::from(!shown.all_timings)])
+            .on_hover_text(tip);
         if let Some(m) = message {
             ui.separator();
             let c = if m.error {
@@ -149,8 +180,13 @@ pub fn status_ui(
             };
             ui.label(RichText::new(&m.text).color(c));
         }
-        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            ui.label(RichText::new(lang.tr("app.status.help")).weak());
-        });
+        if shown.help {
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                ui.label(RichText::new(&texts.help).weak());
+            });
+        }
     });
 }
+
+/// Points a separator takes on the status line besides the gaps on either side of it.
+const SEPARATOR: f32 = 6.0;

@@ -1,0 +1,164 @@
+//! Layout on a projector: at 1024x768 and larger text sizes nothing the class needs is cut
+//! off. The status line keeps its mode, canvas and frame time whole (it drops the less
+//! important parts instead of eliding them), and the inspector's numbers stay inside its
+//! panel. Driven through egui_kittest like tests/app.rs.
+
+use barylab::app::state::Command;
+use barylab::app::{AppOptions, BaryApp};
+use barylab::i18n::{Lang, cjk_font};
+use barylab::probe::format::fmt_number;
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+
+fn harness(size: [f32; 2], options: AppOptions) -> Harness<'static, BaryApp> {
+    let app = BaryApp::new(None, options);
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(size[0], size[1]))
+        .with_max_steps(30)
+        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
+    h.run();
+    h
+}
+
+/// Lets a new window size or text size settle (the zoom lays the window out again).
+fn settle(h: &mut Harness<'_, BaryApp>) {
+    for _ in 0..4 {
+        h.step();
+    }
+    h.run();
+}
+
+/// The languages to check: Chinese only with a font that has its glyphs.
+fn langs() -> Vec<Lang> {
+    if cjk_font().is_some() {
+        vec![Lang::En, Lang::Zh]
+    } else {
+        assert!(
+            std::env::var("CI").as_deref() != Ok("true"),
+            "no CJK font found: CI needs fonts-noto-cjk"
+        );
+        vec![Lang::En]
+    }
+}
+
+/// Points `text` takes on one line in the body font.
+fn text_width(h: &Harness<'_, BaryApp>, text: &str) -> f32 {
+    let font = egui::TextStyle::Body.resolve(&h.ctx.global_style());
+    h.ctx.fonts_mut(|f| {
+        f.layout_no_wrap(text.to_string(), font, egui::Color32::WHITE)
+            .size()
+            .x
+    })
+}
+
+/// Asserts the label containing `part` is shown whole (not elided) inside the window.
+fn whole(h: &Harness<'_, BaryApp>, part: &str, what: &str) {
+    let screen = h.ctx.content_rect();
+    let node = h
+        .query_all_by_label_contains(part)
+        .last()
+        .unwrap_or_else(|| panic!("{what}: no label with {part:?}"));
+    let ak = node.accesskit_node();
+    let label = ak.label().or_else(|| ak.value()).unwrap_or_default();
+    let rect = node.rect();
+    let need = text_width(h, &label);
+    assert!(
+        rect.width() + 0.5 >= need && rect.right() <= screen.right() + 0.5,
+        "{what}: {label:?} is cut: {rect:?} for {need} points in {screen:?}"
+    );
+}
+
+#[test]
+fn the_status_line_keeps_mode_canvas_and_frame_time_whole_on_a_projector() {
+    for lang in langs() {
+        let options = AppOptions {
+            lang: Some(lang),
+            ..AppOptions::default()
+        };
+        let mut h = harness([1024.0, 768.0], options);
+        let frame = lang_word(lang, "frame");
+        for scale in [1.0, 1.5, 2.0] {
+            h.state_mut().push(Command::SetUiScale(scale));
+            for compare in [
+                barylab::figure::Compare::Single,
+                barylab::figure::Compare::SideBySide,
+            ] {
+                h.state_mut().push(Command::SetCompare(compare));
+                settle(&mut h);
+                let what = format!("{lang:?} at text size {scale}, {compare:?}");
+                whole(&h, &frame, &what);
+                whole(&h, "800×600", &what);
+            }
+        }
+    }
+}
+
+/// The first word of the status line's `key` entry, from the catalogue.
+fn lang_word(lang: Lang, key: &str) -> String {
+    barylab::i18n::tr(lang, &format!("app.status.{key}"))
+        .split_whitespace()
+        .next()
+        .unwrap_or_default()
+        .to_string()
+}
+
+/// The inspector's per-vertex numbers of the pinned pixel, as it prints them.
+fn pin_numbers(h: &Harness<'_, BaryApp>) -> Vec<String> {
+    let r = h.state().pin_report().expect("pin report");
+    let d = r.trace.detail.as_ref().expect("covered");
+    let p = d.perspective.expect("1/w");
+    let mut n: Vec<f64> = d.screen.rasterizer.to_vec();
+    n.extend(p.correction.weights);
+    n.extend(d.raster.vertices.iter().map(|v| v.inv_w));
+    n.into_iter().map(fmt_number).collect()
+}
+
+/// Points: the right edge of what the inspector panel shows (inside its frame's margin and
+/// beside its scroll bar; the panel is at the window's right edge).
+fn inspector_right(h: &Harness<'_, BaryApp>) -> f32 {
+    let scroll = h.ctx.global_style().spacing.scroll;
+    h.ctx.content_rect().right() - 8.0 - scroll.allocated_width()
+}
+
+#[test]
+fn the_inspectors_numbers_are_never_cut_at_its_edge() {
+    for lang in langs() {
+        for (size, scales) in [
+            ([1280.0, 800.0], [1.0, 1.25, 1.5]),
+            ([1280.0, 800.0], [1.3, 1.4, 1.1]),
+            ([1024.0, 768.0], [1.0, 1.0, 1.0]),
+            ([1920.0, 1080.0], [1.0, 1.5, 2.0]),
+        ] {
+            let options = AppOptions {
+                lang: Some(lang),
+                pin: Some([400, 420]),
+                ..AppOptions::default()
+            };
+            let mut h = harness(size, options);
+            for scale in scales {
+                h.state_mut().push(Command::SetUiScale(scale));
+                settle(&mut h);
+                // Hover another pixel, so the pinned-and-hovered table shows too.
+                let view = h.state().canvas().views[0];
+                let pos = view.transform.to_screen(glam::DVec2::new(300.5, 450.5));
+                h.hover_at(pos);
+                settle(&mut h);
+                let right = inspector_right(&h);
+                let what = format!("{lang:?} {size:?} at text size {scale}");
+                for n in pin_numbers(&h) {
+                    let nodes: Vec<egui::Rect> = h
+                        .query_all_by_label_contains(&n)
+                        .map(|node| node.rect())
+                        .collect();
+                    assert!(!nodes.is_empty(), "{what}: {n} not shown");
+                    for r in nodes {
+                        assert!(
+                            r.right() <= right + 0.5,
+                            "{what}: {n} is cut: {r:?}, the panel shows up to {right}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
