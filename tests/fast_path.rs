@@ -225,3 +225,32 @@ proptest! {
         assert_scanline_close(&mesh, &tex, &s, name);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(512))]
+
+    /// What the fast path keeps of a triangle before drawing it (its bounds, or nothing)
+    /// is what the full set-up gives, slivers and off-screen triangles included.
+    #[test]
+    fn setup_bounds_agree_with_the_full_setup(
+        pts in proptest::collection::vec((-20.0f64..100.0, -20.0f64..80.0), 3),
+        sliver in any::<bool>(),
+    ) {
+        use barylab::raster::clip::ClipVertex;
+        use barylab::raster::project::{Viewport, project_vertex};
+        use barylab::raster::setup::{setup_bounds, setup_triangle};
+        use barylab::raster::varying::Varyings;
+        let vp = Viewport { width: 64, height: 48 };
+        let mut p = pts.clone();
+        if sliver {
+            // The third point a hair off the line through the first two.
+            p[2] = (p[0].0 * 0.5 + p[1].0 * 0.5 + 1e-4, p[0].1 * 0.5 + p[1].1 * 0.5);
+        }
+        let v = [0, 1, 2].map(|k| {
+            let clip = glam::DVec4::new(p[k].0 / 32.0 - 1.0, 1.0 - p[k].1 / 24.0, 0.0, 1.0);
+            project_vertex(&ClipVertex::new(clip, Varyings::default()), vp)
+        });
+        let full = setup_triangle(v, vp).map(|s| s.bounds);
+        prop_assert_eq!(setup_bounds(v.map(|v| v.fixed), vp), full);
+    }
+}

@@ -151,8 +151,7 @@ impl<'m> FastMesh<'m> {
             return Slot::Skip;
         };
         if p.iter().all(|v| v.inside) {
-            let fixed = p.map(|v| v.fixed);
-            return match setup_bounds(fixed, p.map(|v| v.window), self.viewport) {
+            return match setup_bounds(p.map(|v| v.fixed), self.viewport) {
                 Some(bounds) => Slot::Whole { corners, bounds },
                 None => Slot::Skip,
             };

@@ -403,14 +403,15 @@ pub fn triangle_geometry(
 }
 
 /// The pixel bounds [`setup_triangle_with`] gives a triangle with these snapped (`fixed`,
-/// 1/256 pixel) and unsnapped (`window`, pixels) positions, and `None` exactly when it
-/// gives `None`: what the fast path keeps of a triangle before it draws it.
-pub fn setup_bounds(
-    fixed: [I64Vec2; 3],
-    window: [DVec2; 3],
-    viewport: Viewport,
-) -> Option<PixelBounds> {
-    geometry(fixed, window, viewport).map(|(_, bounds, _)| bounds)
+/// 1/256 pixel) positions, and `None` exactly when it gives `None`: what the fast path keeps
+/// of a triangle before it draws it. (The weight planes never refuse a triangle whose snapped
+/// area is not zero: their fallback, the snapped positions, has that area, at least
+/// 1/65536 pixel^2, so they are not needed here.)
+pub fn setup_bounds(fixed: [I64Vec2; 3], viewport: Viewport) -> Option<PixelBounds> {
+    if signed_area2(fixed[0], fixed[1], fixed[2]) == 0 {
+        return None;
+    }
+    pixel_bounds(&fixed, viewport)
 }
 
 /// The signed snapped area, the bounds and the weight planes; `None` for zero snapped area,
