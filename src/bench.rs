@@ -21,7 +21,8 @@ pub enum View {
     Side,
     /// Both modes, one each side of the wipe line (two renders; composing them is a copy).
     Wipe,
-    /// Both modes with the triangle and uv buffers, then the texel-difference heatmap.
+    /// One image that keeps the triangle and the uv of both modes, then the texel-difference
+    /// heatmap (as the app's difference view).
     Difference,
 }
 
