@@ -257,7 +257,7 @@ pub fn compare(
 }
 
 /// [`compare`] with barylab's render of `reference` already made (with all its buffers, as
-/// [`crate::raster::render`] makes it), so that a caller who also needs the render or the
+/// [`crate::raster::render()`] makes it), so that a caller who also needs the render or the
 /// [`difference_image_of`] renders once. The sizes must match.
 pub fn compare_rendered(
     theirs: &Image,
