@@ -1,6 +1,8 @@
 //! File > Compare with image… in the app, driven through egui_kittest: barylab's own render
 //! agrees; a few changed pixels and an affine render are found, with reasons; a wrong size
 //! says so and offers the image's size; clicking a mismatched pixel pins it with its reason.
+//! The comparison runs in a background thread: the frame that starts it returns at once, the
+//! last result stays shown meanwhile, and a later frame shows the new one ([`settle`]).
 
 use std::path::{Path, PathBuf};
 
@@ -48,7 +50,30 @@ fn write_png(path: &Path, size: [u32; 2], pixels: &[[u8; 4]]) {
 
 fn compare(h: &mut Harness<'_, BaryApp>, path: PathBuf) {
     h.state_mut().push(FileCommand::CompareImage(path));
-    h.run();
+    settle(h);
+}
+
+/// Whether a comparison is going on in the background.
+fn comparing(h: &Harness<'_, BaryApp>) -> bool {
+    h.state()
+        .compare_image()
+        .is_some_and(|ic| ic.is_comparing())
+}
+
+/// Runs frames until the background comparison's result is shown (a bounded number of
+/// frames, a short sleep between them).
+fn settle(h: &mut Harness<'_, BaryApp>) {
+    const FRAMES: usize = 3000;
+    for _ in 0..FRAMES {
+        h.run();
+        if !comparing(h) {
+            // Once more: the strip shows what the last frame took.
+            h.run();
+            return;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    panic!("no comparison result after {FRAMES} frames");
 }
 
 fn summary(h: &Harness<'_, BaryApp>) -> String {
@@ -229,7 +254,7 @@ fn a_wrong_size_says_so_and_offers_the_images_size() {
     assert!(ic.comparison.is_none());
     h.get_by_label_contains("small.png is 32×24, but the canvas image is 160×120");
     h.get_by_label("Set the image size to 32×24").click();
-    h.run();
+    settle(&mut h);
     assert_eq!(h.state().state().scene.size(), (32, 24));
     let ic = h.state().compare_image().expect("still comparing");
     assert_eq!(ic.size_mismatch, None);
@@ -269,7 +294,7 @@ fn a_chosen_background_colour_decides_coverage() {
     assert!(c.only_theirs > 0, "{}", summary(&h));
     h.state_mut()
         .push(FileCommand::SetCompareBackground([255, 255, 255]));
-    h.run();
+    settle(&mut h);
     let s = summary(&h);
     assert!(s.starts_with("No difference"), "{s}");
 }
@@ -359,7 +384,7 @@ fn a_new_render_of_the_same_scene_does_not_compare_again() {
     );
     assert_eq!(ic.comparisons(), made);
     button(&mut h, false);
-    h.run();
+    settle(&mut h);
     let ic = h.state().compare_image().expect("comparing");
     assert!(
         !ic.deferred && ic.comparison.is_some(),
@@ -368,9 +393,102 @@ fn a_new_render_of_the_same_scene_does_not_compare_again() {
     assert_eq!(ic.comparisons(), made + 1);
     let made = made + 1;
     h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
-    h.run();
+    settle(&mut h);
     let ic = h.state().compare_image().expect("comparing");
     assert_eq!(ic.comparisons(), made + 1, "another mode compares again");
     assert!(ic.comparison.as_ref().is_some_and(|c| c.agrees()));
     eprintln!("first comparison at 1920x1080 (with its frames): {first:?}");
+}
+
+/// The comparison runs in the background: the frame that starts it returns without its
+/// result ("Comparing…" in the strip), a later frame shows it. While a new comparison runs
+/// the last result stays shown and a mismatch pinned on it gets its reason; a comparison
+/// overtaken by another (the mode changed again) is dropped.
+#[test]
+fn the_comparison_runs_in_the_background_and_the_last_result_stays_shown() {
+    let mut h = harness();
+    h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
+    h.run();
+    let affine = canvas_colors(&h);
+    h.state_mut()
+        .push(AppCmd::SetMode(Interpolation::Perspective));
+    h.run();
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("affine.png");
+    write_png(&path, IMAGE, &affine);
+
+    // Frame 1 opens the image; frame 2 starts the comparison and returns without it.
+    h.state_mut().push(FileCommand::CompareImage(path));
+    h.step();
+    h.step();
+    let ic = h.state().compare_image().expect("opened");
+    assert!(ic.is_comparing(), "started in the background");
+    assert!(ic.comparison.is_none() && ic.view.result.is_none());
+    assert_eq!(ic.comparisons(), 1);
+    let out = h.state().canvas().output.as_ref();
+    assert!(!ic.settled(out, Interpolation::Perspective));
+    h.step();
+    assert!(
+        h.query_by_label_contains("Comparing…").is_some(),
+        "the strip says a comparison is going on"
+    );
+    settle(&mut h);
+    let ic = h.state().compare_image().expect("opened");
+    assert!(!ic.is_comparing(), "done");
+    let out = h.state().canvas().output.as_ref();
+    assert!(ic.settled(out, Interpolation::Perspective));
+    let c = ic.comparison.clone().expect("the result is shown");
+    assert!(ic.view.result.is_some());
+    assert!(c.color_differing > 0, "{}", summary(&h));
+    assert!(h.query_by_label_contains("Comparing…").is_none());
+    h.get_by_label(&summary(&h));
+
+    // Another mode: the frame that starts the new comparison still shows the last result,
+    // and a mismatch pinned in it is explained from it.
+    let p = c.first[0].pixel;
+    h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
+    h.state_mut().push(AppCmd::Pin(Some(p)));
+    h.step();
+    h.step();
+    let ic = h.state().compare_image().expect("opened");
+    assert!(ic.is_comparing(), "the new comparison is going on");
+    assert_eq!(ic.comparisons(), 2);
+    assert!(
+        ic.comparison.as_ref().is_some_and(|c| !c.agrees()) && ic.view.result.is_some(),
+        "the last result stays shown"
+    );
+    let reason = ic
+        .pin_reason
+        .clone()
+        .filter(|(at, _)| *at == p)
+        .and_then(|(_, r)| r)
+        .expect("the pinned mismatch has a reason")
+        .expect("the probe found it");
+    assert!(reason.text(Lang::En).contains("affine"), "{reason:?}");
+    settle(&mut h);
+    let ic = h.state().compare_image().expect("opened");
+    assert!(!ic.is_comparing());
+    assert!(ic.comparison.as_ref().is_some_and(|c| c.agrees()));
+    assert_eq!(
+        ic.pin_reason.clone().map(|(at, r)| (at, r.is_none())),
+        Some((p, true))
+    );
+
+    // Two changes in a row: the first comparison is dropped, the shown one is the last's.
+    h.state_mut()
+        .push(AppCmd::SetMode(Interpolation::Perspective));
+    h.step();
+    h.step();
+    h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
+    h.step();
+    h.step();
+    assert_eq!(h.state().compare_image().expect("opened").comparisons(), 4);
+    settle(&mut h);
+    let ic = h.state().compare_image().expect("opened");
+    let out = h.state().canvas().output.as_ref();
+    assert!(ic.settled(out, Interpolation::Affine));
+    assert!(
+        ic.comparison.as_ref().is_some_and(|c| c.agrees()),
+        "the affine comparison is shown, not the overtaken perspective one"
+    );
 }

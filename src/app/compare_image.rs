@@ -3,9 +3,18 @@
 //! the GPU view's compare modes (`other_image`): coverage by alpha, or by the scene's
 //! background colour when the image is opaque (as `barylab compare`), the summary, the worst
 //! and first mismatched pixels, and for the pinned pixel the reason from [`crate::compare`].
+//!
+//! The comparison (a render, the comparison with its hypotheses' renders, the difference
+//! image: about a second at 1920x1080) runs in a background thread, as the Benchmark
+//! window's runs do ([`super::bench_panel`]): the window keeps showing the last result, with
+//! a "comparing…" note, until the new one arrives; a result for a scene that has changed
+//! since is dropped.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, TryRecvError, channel};
+use std::time::Duration;
 
 use egui::{Color32, RichText, Ui};
 
@@ -35,7 +44,7 @@ pub type PinReason = Result<Reason, String>;
 pub struct ImageCompare {
     /// The file it was read from.
     pub path: PathBuf,
-    image: Image,
+    image: Arc<Image>,
     /// The display (barylab's image, this image, the difference image), as the GPU view's.
     pub view: GpuView,
     /// The last comparison (`None` while the sizes differ).
@@ -57,7 +66,40 @@ pub struct ImageCompare {
     pub background: Option<[u8; 3]>,
     /// The scene changed during a drag: compared when it ends.
     pub deferred: bool,
+    /// The comparison going on in the background, if any.
+    running: Option<Running>,
+    /// The last comparison's number (each started comparison gets the next one).
+    job: u64,
+    /// The background thread ended without a result (it panicked).
+    pub lost: bool,
     comparisons: u64,
+}
+
+/// How often a frame looks for the background result when nothing else repaints (the
+/// thread asks for a repaint when it is done; this is a fallback).
+const POLL: Duration = Duration::from_millis(100);
+
+/// A comparison going on in a background thread.
+struct Running {
+    /// Its number: a message with another number is for an outdated scene.
+    job: u64,
+    messages: Receiver<(u64, Result<Made, String>)>,
+    /// Set when the comparison is no longer wanted (checked between its steps).
+    stop: Arc<AtomicBool>,
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        self.stop.store(true, Ordering::Relaxed);
+    }
+}
+
+/// What the background thread makes: the comparison, the display and the pinned pixel's
+/// needs.
+struct Made {
+    comparison: Comparison,
+    result: GpuResult,
+    held: Held,
 }
 
 /// What a comparison is made of: the canvas's scene as rendered (with the render's
@@ -106,7 +148,7 @@ impl ImageCompare {
         view.other_name = Some(name);
         Self {
             path,
-            image,
+            image: Arc::new(image),
             view,
             comparison: None,
             size_mismatch: None,
@@ -116,6 +158,9 @@ impl ImageCompare {
             pin_reason: None,
             background: None,
             deferred: false,
+            running: None,
+            job: 0,
+            lost: false,
             comparisons: 0,
         }
     }
@@ -133,12 +178,19 @@ impl ImageCompare {
         [self.image.width, self.image.height]
     }
 
-    /// Whether the comparison is made for the canvas's current render.
+    /// Whether the comparison is made (and done) for the canvas's current render.
     pub fn settled(&self, output: Option<&CanvasOutput>, mode: Interpolation) -> bool {
-        output.is_some_and(|o| self.key.as_ref().is_some_and(|k| k.same(o, mode, None)))
+        self.running.is_none()
+            && output.is_some_and(|o| self.key.as_ref().is_some_and(|k| k.same(o, mode, None)))
     }
 
-    /// How many comparisons were made.
+    /// Whether a comparison is going on in the background (the last result, if any, is
+    /// shown meanwhile).
+    pub fn is_comparing(&self) -> bool {
+        self.running.is_some()
+    }
+
+    /// How many comparisons were started.
     pub fn comparisons(&self) -> u64 {
         self.comparisons
     }
@@ -148,24 +200,29 @@ impl ImageCompare {
     /// e.g. for another compare view), and finds the pinned pixel's reason when the pin
     /// moved. While a pointer button is held (`held`: a drag, which renders every frame) a
     /// changed scene is not compared: the canvas shows barylab's render until the drag
-    /// ends, then compares once. Returns whether anything changed.
+    /// ends, then compares once.
+    ///
+    /// The comparison runs in a background thread: this frame starts it and returns; a later
+    /// frame takes the result (`ctx` is asked to repaint when it is ready). Meanwhile the
+    /// last result stays shown. Returns whether anything changed.
     pub fn update(
         &mut self,
+        ctx: &egui::Context,
         output: Option<&CanvasOutput>,
         mode: Interpolation,
         texture: &Arc<Texture>,
         pinned: Option<[u32; 2]>,
         held: bool,
     ) -> bool {
-        let mut changed = false;
+        let mut changed = self.poll();
         if let Some(out) = output {
             match &mut self.key {
                 Some(k) if k.same(out, mode, Some(texture)) => k.generation = out.generation,
                 Some(_) if held => {
                     if !self.deferred {
+                        self.running = None;
                         self.clear();
                         self.deferred = true;
-                        self.pin_reason = None;
                         changed = true;
                     }
                 }
@@ -177,11 +234,13 @@ impl ImageCompare {
                         mode,
                         texture: Arc::clone(texture),
                     });
-                    self.compare(out, mode, texture);
-                    self.pin_reason = None;
+                    self.compare(ctx, out, mode, texture);
                     changed = true;
                 }
             }
+        }
+        if self.running.is_some() {
+            ctx.request_repaint_after(POLL);
         }
         if self.pin_reason.as_ref().map(|p| p.0) != pinned {
             self.pin_reason = pinned.map(|p| (p, self.reason_at(p)));
@@ -196,19 +255,74 @@ impl ImageCompare {
         self.comparison = None;
         self.reference = None;
         self.error = None;
+        self.lost = false;
+        self.pin_reason = None;
         self.view.generation += 1;
     }
 
-    fn compare(&mut self, out: &CanvasOutput, mode: Interpolation, texture: &Arc<Texture>) {
-        self.clear();
+    /// Takes the background thread's result, when it has come. Returns whether anything
+    /// changed.
+    fn poll(&mut self) -> bool {
+        let Some(running) = &self.running else {
+            return false;
+        };
+        let job = running.job;
+        match running.messages.try_recv() {
+            Err(TryRecvError::Empty) => false,
+            Err(TryRecvError::Disconnected) => {
+                self.running = None;
+                self.clear();
+                self.lost = true;
+                true
+            }
+            // A result for an outdated scene (not kept: a new comparison replaces the
+            // receiver, but checked all the same).
+            Ok((n, _)) if n != job => false,
+            Ok((_, made)) => {
+                self.running = None;
+                self.clear();
+                match made {
+                    Ok(m) => self.show(m),
+                    Err(e) => self.error = Some(format!("{}: {e}", shown(&self.path))),
+                }
+                true
+            }
+        }
+    }
+
+    /// Shows a comparison made in the background.
+    fn show(&mut self, made: Made) {
+        if self.view.print_summary {
+            println!("image compare: {}", summary(&made.comparison, Lang::En));
+        }
+        self.view.result = Some(made.result);
+        self.comparison = Some(made.comparison);
+        self.reference = Some(made.held);
+    }
+
+    /// Starts comparing the image with `out`'s scene in `mode` in a background thread (a
+    /// comparison going on is dropped). A wrong size is said at once.
+    fn compare(
+        &mut self,
+        ctx: &egui::Context,
+        out: &CanvasOutput,
+        mode: Interpolation,
+        texture: &Arc<Texture>,
+    ) {
+        self.running = None;
         self.comparisons += 1;
         let mut settings = out.scene.settings();
         settings.mode = mode;
         if [settings.width, settings.height] != self.size() {
+            self.clear();
             self.size_mismatch = Some([settings.width, settings.height]);
             return;
         }
         self.size_mismatch = None;
+        if self.view.result.is_none() {
+            // Nothing to keep showing (the last one failed, or there was none).
+            self.clear();
+        }
         let by = if let Some(c) = self.background {
             CoverageBy::Background(c)
         } else if self.image.has_transparency() {
@@ -217,62 +331,42 @@ impl ImageCompare {
             let b = settings.background;
             CoverageBy::Background([b[0], b[1], b[2]])
         };
-        let mesh = out.scene.to_mesh();
-        let made = (|| {
-            let reference = Reference {
-                scene: &out.scene,
-                mesh: &mesh,
-                texture,
-                settings,
-            };
-            let tol = compare::DEFAULT_TOLERANCE;
-            // One render for the comparison, the difference image and the pinned reasons.
-            let render =
-                crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
-            let c = compare::compare_rendered(&self.image, &reference, &render, by, tol)?;
-            let diff = compare::difference_image_of(&self.image, &render.frame, by, tol);
-            Ok::<_, String>((c, diff, render))
-        })();
-        let (c, diff, render) = match made {
-            Ok(m) => m,
-            Err(e) => {
-                self.error = Some(format!("{}: {e}", shown(&self.path)));
-                return;
-            }
-        };
-        let first = c.first.first().map(|p| p.pixel);
-        let worst = c.max_color_at.filter(|_| c.color_differing > 0).or(first);
-        let image_diff = crate::gpu::view::ImageDiff {
-            width: c.width,
-            height: c.height,
-            pixels: c.pixels,
-            covered: c.covered,
-            only_gpu: c.only_theirs,
-            only_barylab: c.only_ours,
-            triangle_mismatches: 0,
-            color_differing: c.color_differing,
-            max_color_difference: c.max_color_difference,
-            worst,
-            image: diff.pixels().map(|p| p.0).collect(),
-        };
-        if self.view.print_summary {
-            println!("image compare: {}", summary(&c, Lang::En));
-        }
-        self.view.result = Some(GpuResult {
-            ours: render.frame.color.clone(),
-            gpu: self.image.pixels.clone(),
-            diff: image_diff,
-            notes: Vec::new(),
-        });
-        self.comparison = Some(c);
-        self.reference = Some(Held {
+        self.job += 1;
+        let job = self.job;
+        let stop = Arc::new(AtomicBool::new(false));
+        let (tx, rx) = channel();
+        let work = Work {
             scene: out.scene.clone(),
-            mesh,
             texture: Arc::clone(texture),
+            image: Arc::clone(&self.image),
             settings,
-            render,
             by,
-        });
+            stop: Arc::clone(&stop),
+        };
+        let ctx = ctx.clone();
+        let spawned = std::thread::Builder::new()
+            .name("barylab-compare-image".into())
+            .spawn(move || {
+                if let Some(made) = work.run() {
+                    // The receiver is gone when a newer comparison replaced this one.
+                    if tx.send((job, made)).is_ok() {
+                        ctx.request_repaint();
+                    }
+                }
+            });
+        match spawned {
+            Ok(_) => {
+                self.running = Some(Running {
+                    job,
+                    messages: rx,
+                    stop,
+                });
+            }
+            Err(e) => {
+                self.clear();
+                self.error = Some(format!("{}: {e}", shown(&self.path)));
+            }
+        }
     }
 
     /// Why pixel `p` differs (`None` when it agrees or the reason cannot be found).
@@ -305,6 +399,85 @@ impl ImageCompare {
         };
         let context = compare::reasons::Context::new(&reference, &h.render, h.by, c.tolerance);
         Some(context.and_then(|cx| cx.reason(p, d, theirs)))
+    }
+}
+
+/// One comparison's inputs, owned by the background thread.
+struct Work {
+    scene: crate::scene::Scene,
+    texture: Arc<Texture>,
+    image: Arc<Image>,
+    settings: crate::raster::RenderSettings,
+    by: CoverageBy,
+    stop: Arc<AtomicBool>,
+}
+
+impl Work {
+    /// Renders, compares and makes the difference image; `None` when stopped on the way
+    /// (a newer comparison is wanted).
+    fn run(self) -> Option<Result<Made, String>> {
+        let stopped = || self.stop.load(Ordering::Relaxed);
+        let mesh = self.scene.to_mesh();
+        if stopped() {
+            return None;
+        }
+        let tol = compare::DEFAULT_TOLERANCE;
+        // One render for the comparison, the difference image and the pinned reasons.
+        let render = match crate::raster::render(&mesh, &self.texture, &self.settings) {
+            Ok(r) => r,
+            Err(e) => return Some(Err(e.to_string())),
+        };
+        if stopped() {
+            return None;
+        }
+        let reference = Reference {
+            scene: &self.scene,
+            mesh: &mesh,
+            texture: &self.texture,
+            settings: self.settings,
+        };
+        let c = match compare::compare_rendered(&self.image, &reference, &render, self.by, tol) {
+            Ok(c) => c,
+            Err(e) => return Some(Err(e)),
+        };
+        if stopped() {
+            return None;
+        }
+        let diff = compare::difference_image_of(&self.image, &render.frame, self.by, tol);
+        let first = c.first.first().map(|p| p.pixel);
+        let worst = c.max_color_at.filter(|_| c.color_differing > 0).or(first);
+        let image_diff = crate::gpu::view::ImageDiff {
+            width: c.width,
+            height: c.height,
+            pixels: c.pixels,
+            covered: c.covered,
+            only_gpu: c.only_theirs,
+            only_barylab: c.only_ours,
+            triangle_mismatches: 0,
+            color_differing: c.color_differing,
+            max_color_difference: c.max_color_difference,
+            worst,
+            image: diff.pixels().map(|p| p.0).collect(),
+        };
+        let result = GpuResult {
+            ours: render.frame.color.clone(),
+            gpu: self.image.pixels.clone(),
+            diff: image_diff,
+            notes: Vec::new(),
+        };
+        let held = Held {
+            scene: self.scene,
+            mesh,
+            texture: self.texture,
+            settings: self.settings,
+            render,
+            by: self.by,
+        };
+        Some(Ok(Made {
+            comparison: c,
+            result,
+            held,
+        }))
     }
 }
 
@@ -400,8 +573,15 @@ pub fn strip_ui(ui: &mut Ui, ic: &ImageCompare, compare: Compare) -> Vec<AppComm
             if ic.deferred {
                 ui.label(RichText::new(lang.tr("compare.after_drag")).italics());
             }
+            if ic.is_comparing() {
+                ui.label(RichText::new(lang.tr("compare_image.comparing")).italics());
+            }
             if let Some(e) = &ic.error {
                 ui.add(red(e.clone()).wrap());
+            }
+            if ic.lost {
+                let e = lang.tr_with("compare_image.lost", &[("file", &shown(&ic.path))]);
+                ui.add(red(e).wrap());
             }
             if let Some(c) = &ic.comparison {
                 let by = match c.coverage_by {
@@ -506,11 +686,16 @@ impl super::BaryApp {
 
     /// Once per frame: the comparison for the current render. Returns whether it changed.
     /// `held`: a pointer button is down (a drag may be going on).
-    pub(super) fn compare_image_frame(&mut self, texture: &Arc<Texture>, held: bool) -> bool {
+    pub(super) fn compare_image_frame(
+        &mut self,
+        ctx: &egui::Context,
+        texture: &Arc<Texture>,
+        held: bool,
+    ) -> bool {
         let (mode, pinned) = (self.state.options().mode, self.state.view.pinned);
         let out = self.canvas.output.as_ref();
         self.compare_image
             .as_mut()
-            .is_some_and(|ic| ic.update(out, mode, texture, pinned, held))
+            .is_some_and(|ic| ic.update(ctx, out, mode, texture, pinned, held))
     }
 }

@@ -364,7 +364,7 @@ impl BaryApp {
             ctx.request_repaint();
         }
         let held = ctx.input(|i| i.pointer.any_down());
-        if self.compare_image_frame(&texture, held) {
+        if self.compare_image_frame(&ctx, &texture, held) {
             ctx.request_repaint();
         }
 
