@@ -167,17 +167,7 @@ fn summary_ui(ui: &mut Ui, r: &PixelReport) {
         ),
     ];
     // As many columns side by side as fit the panel; the rest in tables below.
-    let width = |t: &RichText| {
-        egui::WidgetText::from(t.clone())
-            .into_galley(
-                ui,
-                Some(egui::TextWrapMode::Extend),
-                f32::INFINITY,
-                egui::TextStyle::Body,
-            )
-            .size()
-            .x
-    };
+    let width = |t: &RichText| columns::text_width(ui, t.clone());
     let vertex_header = RichText::new(lang.tr("app.inspector.vertex")).weak();
     let name_width = v
         .iter()
@@ -346,15 +336,7 @@ fn compare_ui(ui: &mut Ui, pinned: &PixelReport, hovered: &PixelReport) {
         } else {
             RichText::new(t)
         };
-        egui::WidgetText::from(t)
-            .into_galley(
-                ui,
-                Some(egui::TextWrapMode::Extend),
-                f32::INFINITY,
-                egui::TextStyle::Body,
-            )
-            .size()
-            .x
+        columns::text_width(ui, t)
     };
     let heads = [
         lang.tr("app.inspector.pinned"),

@@ -16,6 +16,19 @@ pub(crate) fn per_table(width: f32, name: f32, columns: &[f32], spacing: f32) ->
         .unwrap_or(1)
 }
 
+/// The width in points of `text` laid out on one line in the body style of `ui`.
+pub(crate) fn text_width(ui: &egui::Ui, text: egui::RichText) -> f32 {
+    egui::WidgetText::from(text)
+        .into_galley(
+            ui,
+            Some(egui::TextWrapMode::Extend),
+            f32::INFINITY,
+            egui::TextStyle::Body,
+        )
+        .size()
+        .x
+}
+
 #[cfg(test)]
 mod tests {
     use super::per_table;
