@@ -102,6 +102,31 @@ fn affine_interpolation_is_named_with_the_uv_difference_in_texels() {
     let d = image::open(&diff).expect("diff.png").to_rgba8();
     assert_eq!(d.dimensions(), (800, 600));
     assert!(d.pixels().any(|p| p.0[0] == 255 && p.0[2] == 0));
+    // The texels named are the heatmap's and the inspector's measure: the length of the uv
+    // offset in texels, from barylab's own render of the scene.
+    let (_, json, _) = compare(&[&scene("default.json"), s(&wrong), "--json"]);
+    let json: serde_json::Value = serde_json::from_str(&json).expect("json");
+    let first = &json["first"][0];
+    assert_eq!(first["why"]["kind"], "other_mode", "{first}");
+    let texels = first["why"]["texels"].as_f64().expect("texels") as f32;
+    let [x, y] = [0, 1].map(|i| first["pixel"][i].as_u64().expect("pixel") as u32);
+    let path = scene("default.json");
+    let sc = Scene::load(Path::new(&path)).expect("scene");
+    let tex = sc
+        .load_texture(Path::new(&path).parent().expect("folder"))
+        .expect("texture");
+    let out = render(&sc.to_mesh(), &tex, &sc.settings()).expect("render");
+    let k = (y * out.frame.width + x) as usize;
+    let expected = barylab::figure::heatmap::texel_difference(
+        out.frame.uv_affine[k],
+        out.frame.uv_perspective[k],
+        (tex.width(), tex.height()),
+    );
+    // (Up to the JSON's rounding of an f32.)
+    assert!(
+        (texels - expected).abs() < 1e-5,
+        "at ({x}, {y}): {texels} against {expected}"
+    );
 }
 
 #[test]

@@ -153,15 +153,10 @@ impl Tried {
     /// The reason for one pixel this explanation accounts for.
     pub fn pixel_reason(&self, k: usize, frame: &Framebuffer, texture: &Texture) -> Reason {
         match self.kind {
-            Kind::OtherMode => {
-                let (p, a) = (frame.uv_perspective[k], frame.uv_affine[k]);
-                let texels = ((p[0] - a[0]).abs() * texture.width() as f32)
-                    .max((p[1] - a[1]).abs() * texture.height() as f32);
-                Reason::OtherMode {
-                    texels,
-                    looks_like: self.other_mode,
-                }
-            }
+            Kind::OtherMode => Reason::OtherMode {
+                texels: uv_gap_texels(frame, k, texture),
+                looks_like: self.other_mode,
+            },
             _ => Reason::Explained {
                 verdict: self.verdict(),
             },
@@ -281,4 +276,15 @@ pub fn shifted(
         v.clip.y -= 2.0 * dy / f64::from(height) * v.clip.w;
     }
     m
+}
+
+/// How far apart the affine and the perspective-correct uv of pixel `k` are, in texels: the
+/// heatmap's and the inspector's measure ([`texel_difference`](crate::figure::heatmap::texel_difference),
+/// the length of the offset).
+pub(super) fn uv_gap_texels(frame: &Framebuffer, k: usize, texture: &Texture) -> f32 {
+    crate::figure::heatmap::texel_difference(
+        frame.uv_affine[k],
+        frame.uv_perspective[k],
+        (texture.width(), texture.height()),
+    )
 }

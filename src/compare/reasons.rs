@@ -166,12 +166,8 @@ impl<'a> Context<'a> {
         let other = self.other.frame.color[k];
         let diff = rgb_difference(theirs, ours);
         if rgb_difference(theirs, other) <= self.tolerance {
-            let (p, a) = (f.uv_perspective[k], f.uv_affine[k]);
-            let tex = self.reference.texture;
-            let texels = ((p[0] - a[0]).abs() * tex.width() as f32)
-                .max((p[1] - a[1]).abs() * tex.height() as f32);
             return Reason::OtherMode {
-                texels,
+                texels: super::hypotheses::uv_gap_texels(f, k, self.reference.texture),
                 looks_like: self.other_mode,
             };
         }
