@@ -26,7 +26,9 @@ use super::lanes::{LaneShading, LaneTriangle, LaneVertices};
 use super::mesh::ClipMesh;
 use super::prepare::{PreparedTriangle, prepare_triangle_with};
 use super::project::{Viewport, WindowVertex, ndc_from_clip, project_vertex};
-use super::render::{Rasterizer, draw_lanes, lane_shading, rasterize};
+use super::render::{
+    Rasterizer, draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply,
+};
 use super::setup::{
     PixelBounds, TieRule, TriangleSetup, setup_bounds, setup_triangle_with, triangle_geometry,
 };
@@ -313,18 +315,21 @@ impl<'m> FastMesh<'m> {
         let rows_per_band = rows_per_band.max(1);
         let bins = self.bins(frame.height, rows_per_band);
         let bands = RowBand::split(frame, rows_per_band);
-        // Whole triangles go straight to the edge-function lanes when they can draw them.
-        let lanes = match (rasterizer, lane_shading(params)) {
-            (Rasterizer::EdgeFunction, Some(shading)) => Some(shading),
-            _ => None,
-        };
+        // Whole triangles go straight to the lanes when they can draw them.
+        let shading = lane_shading(params);
         bands
             .into_par_iter()
             .zip(&bins)
             .for_each(|(mut band, bin)| {
                 band.clear(background);
-                let lanes = lanes.filter(|_| !band.has_aovs());
                 let uvs = !band.uv_affine.is_empty();
+                let lanes = shading.filter(|s| {
+                    !band.has_aovs()
+                        && match rasterizer {
+                            Rasterizer::EdgeFunction => true,
+                            Rasterizer::Scanline => !uvs && scanline_lanes_apply(s),
+                        }
+                });
                 let mut tri = LaneTriangle::EMPTY;
                 for (j, &(ti, si)) in bin.iter().enumerate() {
                     // The triangles a band visits are scattered over the mesh: ask for the memory
@@ -343,12 +348,25 @@ impl<'m> FastMesh<'m> {
                     match &self.slots[ti as usize] {
                         Slot::Skip => {}
                         Slot::Whole { corners, .. } => {
-                            if let Some(shading) = lanes
-                                && self.set_lane_triangle(&mut tri, *corners, shading, uvs)
-                                && tri.exact()
-                            {
-                                draw_lanes(&tri, ti, texture, shading, &mut band);
-                            } else if let Some(setup) = self.setup(*corners) {
+                            let drawn = match lanes {
+                                Some(shading)
+                                    if self.set_lane_triangle(&mut tri, *corners, shading, uvs) =>
+                                {
+                                    match rasterizer {
+                                        Rasterizer::Scanline => {
+                                            draw_scanline_lanes(&tri, texture, shading, &mut band);
+                                            true
+                                        }
+                                        Rasterizer::EdgeFunction if tri.exact() => {
+                                            draw_lanes(&tri, ti, texture, shading, &mut band);
+                                            true
+                                        }
+                                        Rasterizer::EdgeFunction => false,
+                                    }
+                                }
+                                _ => false,
+                            };
+                            if !drawn && let Some(setup) = self.setup(*corners) {
                                 rasterize(&setup, ti, texture, params, rasterizer, &mut band);
                             }
                         }

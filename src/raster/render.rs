@@ -338,6 +338,36 @@ pub(super) fn draw_lanes(
     );
 }
 
+/// Whether the scanline lanes draw with this shading into a band without uv or per-pixel
+/// buffers (texture shading without the wireframe; the rest goes per pixel).
+pub(super) fn scanline_lanes_apply(shading: &LaneShading) -> bool {
+    !shading.wireframe && shading.color == lanes::LaneColor::Texture
+}
+
+/// Draws the rows of a lane triangle (made for `shading`, without uv) that fall in a band
+/// without uv or per-pixel buffers, with the scanline lanes.
+pub(super) fn draw_scanline_lanes(
+    tri: &lanes::LaneTriangle,
+    texture: &Texture,
+    shading: LaneShading,
+    band: &mut RowBand<'_>,
+) {
+    let b = tri.bounds();
+    let y_start = b.y0.max(band.y0);
+    let y_end = b.y1.min((band.y0 + band.rows).saturating_sub(1));
+    if band.rows == 0 || y_start > y_end {
+        return;
+    }
+    let mut target = Target {
+        y0: band.y0,
+        width: band.width,
+        color: band.color,
+        depth: band.depth,
+        uv: None,
+    };
+    lanes::scanline_triangle(tri, (y_start, y_end), texture, shading, &mut target);
+}
+
 /// Visits every covered pixel centre of one set-up triangle within a band, depth-tests and
 /// writes it.
 pub(super) fn rasterize(
@@ -412,17 +442,9 @@ pub(super) fn rasterize(
                 }
                 return;
             }
-            (Rasterizer::Scanline, Some(shading))
-                if !shading.wireframe && !uvs && shading.color == lanes::LaneColor::Texture =>
-            {
-                let mut target = Target {
-                    y0: band.y0,
-                    width: band.width,
-                    color: band.color,
-                    depth: band.depth,
-                    uv: None,
-                };
-                lanes::scanline_triangle(setup, (y_start, y_end), texture, shading, &mut target);
+            (Rasterizer::Scanline, Some(shading)) if !uvs && scanline_lanes_apply(&shading) => {
+                let tri = lanes::LaneTriangle::of(setup, Some(shading), false);
+                draw_scanline_lanes(&tri, texture, shading, band);
                 return;
             }
             _ => {}

@@ -15,7 +15,7 @@
 
 use super::interpolate::Fragment;
 use super::project::SUBPIXEL;
-use super::setup::{Edge, TriangleSetup, sample_point};
+use super::setup::{Edge, PixelBounds, TriangleSetup, sample_point};
 use super::varying::{NUM_VARYINGS, Varyings};
 
 /// `floor(n / d)` for `d > 0`.
@@ -68,14 +68,18 @@ fn edge_columns(edge: &Edge, py: i64) -> (i64, i64) {
 /// assert_eq!(row_span(&s, 2), Some((0, 4)));
 /// ```
 pub fn row_span(setup: &TriangleSetup, row: u32) -> Option<(u32, u32)> {
-    let b = setup.bounds;
+    row_span_of(&setup.edges, setup.bounds, row)
+}
+
+/// [`row_span`] of a triangle given by its edges and bounds.
+pub fn row_span_of(edges: &[Edge; 3], b: PixelBounds, row: u32) -> Option<(u32, u32)> {
     if row < b.y0 || row > b.y1 {
         return None;
     }
     let py = sample_point(0, row).y;
     let mut lo = i64::from(b.x0);
     let mut hi = i64::from(b.x1);
-    for edge in &setup.edges {
+    for edge in edges {
         let (l, h) = edge_columns(edge, py);
         lo = lo.max(l);
         hi = hi.min(h);

@@ -123,6 +123,14 @@ pub struct Edge {
 }
 
 impl Edge {
+    /// An edge no sample passes (a placeholder before a triangle is set).
+    pub const EMPTY: Self = Self {
+        start: I64Vec2::ZERO,
+        dir: I64Vec2::ZERO,
+        kind: EdgeKind::Top,
+        inclusive: false,
+    };
+
     /// Builds the edge S->E oriented for a triangle of the given sign of area.
     ///
     /// Classification (y down): interior side normal is `(-dir_y, dir_x)`. `dir_y < 0`: left edge;

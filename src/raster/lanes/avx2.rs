@@ -11,8 +11,8 @@ use super::{
     Stepped, Target, classify,
 };
 use crate::raster::interpolate::Interpolation;
-use crate::raster::scanline::row_span;
-use crate::raster::setup::{TriangleSetup, WeightPlanes};
+use crate::raster::scanline::row_span_of;
+use crate::raster::setup::WeightPlanes;
 use crate::raster::shade::{
     AMBIENT, MIN_NORMAL_LENGTH, WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX,
 };
@@ -485,7 +485,7 @@ pub(super) fn edge_triangle(
 /// The scanline lane path (see the parent module).
 #[target_feature(enable = "avx2")]
 pub(super) fn scanline_triangle(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: &VecSampler<'_>,
     wide: bool,
@@ -493,15 +493,15 @@ pub(super) fn scanline_triangle(
     target: &mut Target<'_>,
 ) {
     let mut lookups = Lookups::new(sampler, wide);
-    let consts = Constants::of(setup, mode, false, LaneColor::Texture);
-    let step = Stepped::row_step(&consts, mode);
+    let consts = &tri.consts;
+    let step = Stepped::row_step(consts, mode);
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
     for y in y_start..=y_end {
-        let Some((x0, x1)) = row_span(setup, y) else {
+        let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
             continue;
         };
-        let start = Stepped::span_start(&consts, mode, x0, y);
+        let start = Stepped::span_start(consts, mode, x0, y);
         // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
         let lanes = Stepped::lanes(start, &step);
         let load = |f: fn(&Stepped) -> f64, h: usize| {

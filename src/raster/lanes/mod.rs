@@ -19,7 +19,7 @@
 //!   [`Texture::sample_rgba8`] in the same order, so the result is **bit-identical** to the
 //!   per-pixel renderer and to what the probe reports.
 //! - **Scanline** ([`scanline_triangle`]): exact integer spans per row
-//!   ([`row_span`]); along a span `u/w`, `v/w`, `1/w` and the depth are stepped by their
+//!   ([`row_span`](super::scanline::row_span)); along a span `u/w`, `v/w`, `1/w` and the depth are stepped by their
 //!   per-pixel increments (eight lanes advance by eight increments), and the
 //!   perspective-correct uv is `(u/w) * (1 / (1/w))`, one division per pixel. Coverage is
 //!   identical to the edge-function path; values agree up to floating-point rounding.
@@ -41,7 +41,7 @@ use glam::Vec3;
 use super::framebuffer::depth_passes;
 use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
-use super::scanline::row_span;
+use super::scanline::row_span_of;
 use super::setup::{Edge, PixelBounds, TriangleSetup, WeightPlanes, source_weight_gradients};
 use super::shade::{
     WIRE_COLOR, WIRE_HALO_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge,
@@ -322,26 +322,14 @@ impl Constants {
         });
         self.both_uv = None;
     }
-
-    /// The constants of a set-up triangle.
-    fn of(setup: &TriangleSetup, mode: Interpolation, wireframe: bool, color: LaneColor) -> Self {
-        let mut c = Self::EMPTY;
-        c.set(
-            &setup.weights,
-            &LaneVertices::of(setup),
-            mode,
-            wireframe,
-            color,
-        );
-        c
-    }
 }
 
-/// A triangle as the edge-function lanes draw it: its edge planes, bounds and interpolation
+/// A triangle as the lanes draw it (edge functions or scanline): its edges, edge planes, bounds and interpolation
 /// constants, from a [`TriangleSetup`] ([`LaneTriangle::of`]) or from its parts
 /// ([`LaneTriangle::new`], the fast path's shared vertices): the same values either way.
 #[derive(Clone, Copy, Debug)]
 pub struct LaneTriangle {
+    edges: [Edge; 3],
     planes: EdgePlanes,
     bounds: PixelBounds,
     consts: Constants,
@@ -350,6 +338,7 @@ pub struct LaneTriangle {
 impl LaneTriangle {
     /// A triangle covering nothing, to be [`set`](LaneTriangle::set).
     pub const EMPTY: Self = Self {
+        edges: [Edge::EMPTY; 3],
         planes: EdgePlanes {
             a: [0; 3],
             b: [0; 3],
@@ -401,6 +390,7 @@ impl LaneTriangle {
             self.consts.both_uv = Some(both_uv(verts));
         }
         self.planes = EdgePlanes::from_edges(edges);
+        self.edges = *edges;
         self.bounds = bounds;
     }
 

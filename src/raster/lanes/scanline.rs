@@ -2,9 +2,10 @@
 
 use super::*;
 
-/// The scanline rasterizer's lane path for rows `rows` (within the target band).
+/// The scanline rasterizer's lane path for rows `rows` (within the target band); `tri` made
+/// for this `shading` (texture, no wireframe), without the uv buffers.
 pub fn scanline_triangle(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     rows: (u32, u32),
     texture: &Texture,
     shading: LaneShading,
@@ -16,35 +17,28 @@ pub fn scanline_triangle(
             if let Some(sampler) = avx2::VecSampler::new(texture, &shading) {
                 // SAFETY: the CPU supports AVX2, checked by `vector_path`.
                 unsafe {
-                    avx2::scanline_triangle(
-                        setup,
-                        rows,
-                        &sampler,
-                        wide_path(),
-                        shading.mode,
-                        target,
-                    )
+                    avx2::scanline_triangle(tri, rows, &sampler, wide_path(), shading.mode, target)
                 };
                 return;
             }
             // SAFETY: as above.
-            unsafe { scanline_triangle_avx2(setup, rows, texture, shading, target) };
+            unsafe { scanline_triangle_avx2(tri, rows, texture, shading, target) };
             return;
         }
     }
-    scanline_triangle_impl(setup, rows, texture, shading, target);
+    scanline_triangle_impl(tri, rows, texture, shading, target);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 pub(super) fn scanline_triangle_avx2(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     rows: (u32, u32),
     texture: &Texture,
     shading: LaneShading,
     target: &mut Target<'_>,
 ) {
-    scanline_triangle_impl(setup, rows, texture, shading, target);
+    scanline_triangle_impl(tri, rows, texture, shading, target);
 }
 
 /// What the scanline lanes step: `u`, `v` (divided by w when perspective-correct), `1/w`
@@ -104,7 +98,7 @@ impl Stepped {
 
 #[inline(always)]
 pub(super) fn scanline_triangle_impl(
-    setup: &TriangleSetup,
+    tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     texture: &Texture,
     shading: LaneShading,
@@ -113,15 +107,15 @@ pub(super) fn scanline_triangle_impl(
     // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
     // scanline code).
     let mode = shading.mode;
-    let consts = Constants::of(setup, mode, false, LaneColor::Texture);
+    let consts = &tri.consts;
     let sampler = Sampler::new(texture, shading.filter, shading.wrap);
-    let step = Stepped::row_step(&consts, mode);
+    let step = Stepped::row_step(consts, mode);
     let mut colors = [[0u8; 4]; LANES];
     for y in y_start..=y_end {
-        let Some((x0, x1)) = row_span(setup, y) else {
+        let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
             continue;
         };
-        let start = Stepped::span_start(&consts, mode, x0, y);
+        let start = Stepped::span_start(consts, mode, x0, y);
         // Lane k holds pixel x0 + k; each chunk advances every lane by eight increments.
         let mut lanes = Stepped::lanes(start, &step);
         let n = LANES as f64;
