@@ -28,8 +28,19 @@ pub fn card_height(width: f32, spacing: f32, size: f32) -> f32 {
     } else {
         9.0
     };
-    rows * (ROW * size + spacing) + 0.5 * size
+    rows * (ROW * size + spacing) + 0.5 * size + ROW * hint_text(size) + spacing
 }
+
+/// Text size of the card's line of keys (F5 / Esc, Page Down / Up) for card text `size`: on
+/// its own line at the card's foot, large enough to read from the back of the room, smaller
+/// than the numbers so it does not compete with them.
+pub fn hint_text(size: f32) -> f32 {
+    HINT_SHARE * size
+}
+
+/// The line of keys' size, as a share of the card's text size (at 1024x768 about 18 points,
+/// half as large again as the body text).
+const HINT_SHARE: f32 = 0.7;
 
 /// A row's height, in text heights.
 const ROW: f32 = 1.3;
@@ -76,35 +87,52 @@ pub fn card_ui(
     keys_hint: Option<&str>,
 ) {
     let lang = super::locale::lang(ui.ctx());
+    // The line of keys at the card's foot, the card's numbers above it.
+    let hint = keys_hint.map_or_else(|| lang.tr("app.present.leave"), str::to_string);
+    ui.with_layout(egui::Layout::bottom_up(egui::Align::Min), |ui| {
+        ui.add(
+            egui::Label::new(RichText::new(hint).size(hint_text(size)).color(DIM))
+                .wrap_mode(egui::TextWrapMode::Truncate),
+        );
+        ui.with_layout(egui::Layout::top_down(egui::Align::Min), |ui| {
+            card_body(ui, hovered, pinned, size, lang);
+        });
+    });
+}
+
+/// The card above its line of keys: the pixel, its weights table and its numbers.
+fn card_body(
+    ui: &mut Ui,
+    hovered: Option<&PixelReport>,
+    pinned: Option<&PixelReport>,
+    size: f32,
+    lang: crate::i18n::Lang,
+) {
     let big = |s: String| big(s, size);
     let label = |s: &str| label(s, size);
     let focus = pinned
         .map(|r| (r, lang.tr("app.present.pinned")))
         .or(hovered.map(|r| (r, lang.tr("app.present.hovered"))));
-    ui.horizontal_wrapped(|ui| {
-        match &focus {
-            Some((r, how)) => {
-                let mode = match r.mode {
-                    Interpolation::Affine => lang.tr("app.present.affine"),
-                    Interpolation::Perspective => lang.tr("app.present.perspective"),
-                };
-                ui.label(
-                    big(format!(
-                        "{} {}, {} ({how}) · {mode}",
-                        &lang.tr("app.present.pixel"),
-                        r.pixel[0],
-                        r.pixel[1]
-                    ))
-                    .color(ACCENT)
-                    .strong(),
-                );
-            }
-            None => {
-                ui.label(big(lang.tr("app.present.no_pixel")).color(ACCENT));
-            }
+    ui.horizontal_wrapped(|ui| match &focus {
+        Some((r, how)) => {
+            let mode = match r.mode {
+                Interpolation::Affine => lang.tr("app.present.affine"),
+                Interpolation::Perspective => lang.tr("app.present.perspective"),
+            };
+            ui.label(
+                big(format!(
+                    "{} {}, {} ({how}) · {mode}",
+                    &lang.tr("app.present.pixel"),
+                    r.pixel[0],
+                    r.pixel[1]
+                ))
+                .color(ACCENT)
+                .strong(),
+            );
         }
-        let hint = keys_hint.map_or_else(|| lang.tr("app.present.leave"), str::to_string);
-        ui.label(RichText::new(hint).size(size * 0.55).color(DIM));
+        None => {
+            ui.label(big(lang.tr("app.present.no_pixel")).color(ACCENT));
+        }
     });
     let Some((r, _)) = focus else {
         return;
