@@ -451,7 +451,11 @@ pub(crate) fn canvas_ui(
         if let Some(g) = input.gpu.filter(|_| gpu == Some(true)) {
             gpu_view::relabel(&mut shapes, lang, view_settings.compare, g);
         }
-        paint::paint(&painter, clip, view.transform, &shapes);
+        let image = Rect::from_min_max(
+            view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
+            view.rect.max + egui::vec2(2.0, 2.0),
+        );
+        paint::paint(&painter, clip, image, view.transform, &shapes);
     }
     out
 }
