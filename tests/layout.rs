@@ -210,7 +210,7 @@ fn the_presentation_cards_keys_have_a_readable_line_of_their_own() {
             .unwrap_or_else(|| panic!("{lang:?}: no line of keys"));
         let rect = node.rect();
         // The card's text size at 768 points high (app::present::card_text).
-        let size = 26.0;
+        let size: f32 = 26.0;
         // Its own line (it was squeezed beside the title), at least the body text's size (the
         // label is taller than its text size), inside the window.
         let body = egui::TextStyle::Body.resolve(&h.ctx.global_style()).size;

@@ -69,7 +69,7 @@ const HINT_SHARE: f32 = 0.6;
 const ROW: f32 = 1.3;
 /// The card puts the weights table and the other lines side by side from this many text
 /// heights of width (the table and the longest line, uv perspective with two numbers, whole).
-const SIDE_BY_SIDE_EMS: f32 = 34.0;
+const SIDE_BY_SIDE_EMS: f32 = 36.0;
 /// Characters of a number column.
 const NUMBER_EMS: f32 = 7.0;
 /// Significant digits on the card: enough to see the difference, few enough to read.
