@@ -122,7 +122,9 @@ fn projector_windows_keep_a_large_image_with_and_without_presentation_mode() {
             // The 800x600 image (its background around the quad) takes a good part of the
             // window: the panels fold away rather than crush it.
             let share = image_share(&img);
-            let least = if present { 0.35 } else { 0.3 };
+            // (In presentation mode the card's line of keys has a row of its own and the
+            // handles a margin below the image: 0.33 at 1024x768, about 0.37 before.)
+            let least = if present { 0.32 } else { 0.3 };
             assert!(
                 share > least,
                 "{size} present={present}: image {share:.2} of the window"

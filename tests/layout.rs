@@ -162,3 +162,78 @@ fn the_inspectors_numbers_are_never_cut_at_its_edge() {
         }
     }
 }
+
+#[test]
+fn a_lesson_leaves_the_canvas_most_of_the_window_on_a_wide_screen() {
+    let lesson = barylab::lesson::Lesson::builtin().expect("built-in lesson");
+    let steps = lesson.steps.len();
+    for lang in langs() {
+        let options = AppOptions {
+            lang: Some(lang),
+            lesson: Some((lesson.clone(), 2)),
+            ..AppOptions::default()
+        };
+        let mut h = harness([1920.0, 1080.0], options);
+        h.state_mut().push(Command::SetUiScale(1.5));
+        settle(&mut h);
+        for step in [2, 0, steps - 1] {
+            h.state_mut().enter_lesson(lesson.clone(), step);
+            settle(&mut h);
+            let window = h.ctx.content_rect();
+            let canvas = h.state().canvas().area.expect("the canvas is shown");
+            // Over half the window (the top bar and the status line take their share); it
+            // was 0.42 when the panel kept the points it had at text size 1.
+            assert!(
+                canvas.height() >= 0.5 * window.height(),
+                "{lang:?} step {}: the canvas is {canvas:?} in {window:?}",
+                step + 1
+            );
+        }
+    }
+}
+
+#[test]
+fn the_presentation_cards_keys_have_a_readable_line_of_their_own() {
+    for lang in langs() {
+        let options = AppOptions {
+            lang: Some(lang),
+            present: true,
+            pin: Some([400, 420]),
+            ..AppOptions::default()
+        };
+        let mut h = harness([1024.0, 768.0], options);
+        settle(&mut h);
+        let hint = barylab::i18n::tr(lang, "app.present.leave");
+        let node = h
+            .query_all_by_label_contains("F5")
+            .last()
+            .unwrap_or_else(|| panic!("{lang:?}: no line of keys"));
+        let rect = node.rect();
+        // The card's text size at 768 points high (app::present::card_text).
+        let size: f32 = 26.0;
+        // Its own line (it was squeezed beside the title), at least the body text's size (the
+        // label is taller than its text size), inside the window.
+        let body = egui::TextStyle::Body.resolve(&h.ctx.global_style()).size;
+        assert!(
+            rect.height() >= (0.6 * size).max(body),
+            "{lang:?}: {hint:?} is {rect:?} for numbers of {size} points"
+        );
+        let window = h.ctx.content_rect();
+        assert!(
+            window.contains_rect(rect),
+            "{lang:?}: {rect:?} in {window:?}"
+        );
+        // Below every other line of the card, overlapping none.
+        let wp = h
+            .query_all_by_label_contains("W_P =")
+            .map(|n| n.rect())
+            .collect::<Vec<_>>();
+        assert!(!wp.is_empty(), "{lang:?}: the card shows no W_P");
+        for r in wp {
+            assert!(
+                r.bottom() <= rect.top() + 0.5,
+                "{lang:?}: {r:?} over {rect:?}"
+            );
+        }
+    }
+}

@@ -49,6 +49,8 @@ const VIEW_TEXTURE: TextureOptions = TextureOptions {
 pub struct View {
     /// Screen rectangle of the image, in points.
     pub rect: Rect,
+    /// The view's share of the canvas (its image, title strip and margins), in points.
+    pub area: Rect,
     /// Maps rendered-image pixels to screen points for this view.
     pub transform: CanvasTransform,
     /// What the view shows (a mode, the wipe, the difference heatmap).
@@ -222,8 +224,10 @@ pub(crate) fn canvas_ui(
     canvas.views = lay
         .views
         .iter()
-        .map(|&(rect, content)| View {
+        .zip(&lay.areas)
+        .map(|(&(rect, content), &area)| View {
             rect,
+            area,
             transform: CanvasTransform {
                 origin: rect.min,
                 scale,
@@ -440,17 +444,18 @@ pub(crate) fn canvas_ui(
                 _ => None,
             },
         };
-        // Overlays stay on the canvas (the image and its title strip), never over the panels.
-        let clip = Rect::from_min_max(
-            view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
-            view.rect.max + egui::vec2(2.0, 2.0),
-        )
-        .intersect(available);
+        // Overlays stay in their view's share of the canvas (the image, its title strip and
+        // the margins where handles and their labels go), never over the panels.
+        let clip = view.area.intersect(available);
         let mut shapes = overlay::build_in(&input_overlay, lang);
         if let Some(g) = input.gpu.filter(|_| gpu == Some(true)) {
             gpu_view::relabel(&mut shapes, lang, view_settings.compare, g);
         }
-        paint::paint(&painter, clip, view.transform, &shapes);
+        let image = Rect::from_min_max(
+            view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
+            view.rect.max + egui::vec2(2.0, 2.0),
+        );
+        paint::paint(&painter, clip, image, view.transform, &shapes);
     }
     out
 }

@@ -30,6 +30,9 @@ pub(crate) enum Sizing {
 pub(crate) struct Layout {
     /// Each view's screen rectangle (points) and what it shows.
     pub views: Vec<(Rect, ViewContent)>,
+    /// Each view's share of the canvas (points): its image, the title strip above it and the
+    /// margins around it, where the overlay's handles and labels may go.
+    pub areas: Vec<Rect>,
     /// The render size: width and height in rendered pixels.
     pub size: [u32; 2],
     /// Points per rendered pixel.
@@ -64,40 +67,39 @@ pub(crate) fn layout(
     };
     let areas: Vec<(Rect, ViewContent)> = match compare {
         Compare::SideBySide => {
-            // Side by side or one above the other, whichever gives larger views.
+            // Side by side or one above the other, whichever gives larger images (each area
+            // less its title strip and margins).
             let w = ((available.width() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
             let h = ((available.height() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
-            let fit = |w: f32, h: f32| w.min(h * aspect.max(f32::MIN_POSITIVE));
-            let (first, second) = if fit(w, available.height()) >= fit(available.width(), h) {
-                (
+            if side_by_side_is_larger(available.size(), aspect) {
+                vec![
                     Rect::from_min_size(available.min, egui::vec2(w, available.height())),
                     Rect::from_min_size(
                         Pos2::new(available.max.x - w, available.min.y),
                         egui::vec2(w, available.height()),
                     ),
-                )
+                ]
             } else {
-                (
+                vec![
                     Rect::from_min_size(available.min, egui::vec2(available.width(), h)),
                     Rect::from_min_size(
                         Pos2::new(available.min.x, available.max.y - h),
                         egui::vec2(available.width(), h),
                     ),
-                )
-            };
-            vec![
-                (first, ViewContent::Mode(Interpolation::Affine)),
-                (second, ViewContent::Mode(Interpolation::Perspective)),
-            ]
+                ]
+            }
+            .into_iter()
+            .zip([
+                ViewContent::Mode(Interpolation::Affine),
+                ViewContent::Mode(Interpolation::Perspective),
+            ])
+            .collect()
         }
         Compare::Single => vec![(available, ViewContent::Mode(Interpolation::Perspective))],
         Compare::Wipe => vec![(available, ViewContent::Wipe)],
         Compare::Difference => vec![(available, ViewContent::Difference)],
     };
-    let first = Rect::from_min_max(
-        areas[0].0.min + egui::vec2(0.0, overlay::TITLE_STRIP),
-        areas[0].0.max,
-    );
+    let first = image_area(areas[0].0);
     let ppp = pixels_per_point.max(0.01);
     let max = crate::raster::project::MAX_IMAGE_SIZE;
     let (size, scale) = match sizing {
@@ -125,10 +127,9 @@ pub(crate) fn layout(
         }
     };
     let views = areas
-        .into_iter()
-        .map(|(area, content)| {
-            let area =
-                Rect::from_min_max(area.min + egui::vec2(0.0, overlay::TITLE_STRIP), area.max);
+        .iter()
+        .map(|&(area, content)| {
+            let area = image_area(area);
             let shown = egui::vec2(size[0] as f32 * scale, size[1] as f32 * scale);
             let min = area.center() - shown / 2.0;
             // Snap to whole physical pixels so nearest magnification is crisp.
@@ -136,5 +137,94 @@ pub(crate) fn layout(
             (Rect::from_min_size(min, shown), content)
         })
         .collect();
-    Layout { views, size, scale }
+    Layout {
+        views,
+        areas: areas.into_iter().map(|(a, _)| a).collect(),
+        size,
+        scale,
+    }
+}
+
+/// Points kept free left, right and below a view's image: a vertex handle at the image's edge
+/// (its circle, grown when active, and its stroke) shows whole there.
+pub(crate) const HANDLE_MARGIN: f32 = overlay::HANDLE_RADIUS + 6.0;
+
+/// Where a view's image may go in its `area`: below the title strip, inside the handles'
+/// margins (when the area is large enough to spare them).
+pub(crate) fn image_area(area: Rect) -> Rect {
+    let m = if area.width() > 8.0 * HANDLE_MARGIN && area.height() > 8.0 * HANDLE_MARGIN {
+        HANDLE_MARGIN
+    } else {
+        0.0
+    };
+    Rect::from_min_max(
+        area.min + egui::vec2(m, overlay::TITLE_STRIP),
+        area.max - egui::vec2(m, m),
+    )
+}
+
+/// Whether two views of images `aspect` wide (width / height) go side by side in `available`
+/// points rather than one above the other: unless stacking gives each image (less its title
+/// strip and margins) [`STACK_ADVANTAGE`] times the width. Two images at the same height are
+/// the easier comparison, and a few per cent are not worth it.
+pub(crate) fn side_by_side_is_larger(available: egui::Vec2, aspect: f32) -> bool {
+    let aspect = aspect.max(f32::MIN_POSITIVE);
+    let image_width = |w: f32, h: f32| {
+        let inner = image_area(Rect::from_min_size(Pos2::ZERO, egui::vec2(w, h)));
+        inner.width().min(inner.height() * aspect).max(0.0)
+    };
+    let half_w = ((available.x - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
+    let half_h = ((available.y - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
+    image_width(half_w, available.y) * STACK_ADVANTAGE >= image_width(available.x, half_h)
+}
+
+/// How much larger stacked images must be for the side-by-side comparison to stack them.
+const STACK_ADVANTAGE: f32 = 1.05;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn side_by_side_when_the_title_strips_make_stacked_views_smaller() {
+        // The canvas at 1920x1080 with text size 1.5 and both panels open: 4:3 views. Without
+        // the title strips stacked views looked larger (min(756, 323 * 4/3) = 431 > 373); with
+        // them and the handles' margins the two are within a few per cent (339 and 350 points
+        // wide), and side by side wins.
+        let available = egui::vec2(756.0, 657.0);
+        assert!(side_by_side_is_larger(available, 4.0 / 3.0));
+        let lay = layout(
+            Rect::from_min_size(Pos2::ZERO, available),
+            Compare::SideBySide,
+            Sizing::Fixed([800, 600]),
+            1.5,
+        );
+        let [a, b] = [lay.views[0].0, lay.views[1].0];
+        assert!(a.right() <= b.left(), "{a:?} {b:?}");
+        // And a wide short canvas stacks nothing.
+        assert!(side_by_side_is_larger(egui::vec2(1200.0, 400.0), 4.0 / 3.0));
+        // A tall narrow one stacks.
+        assert!(!side_by_side_is_larger(egui::vec2(500.0, 900.0), 4.0 / 3.0));
+    }
+
+    #[test]
+    fn a_handle_at_an_image_corner_stays_inside_its_views_area() {
+        for compare in [Compare::Single, Compare::SideBySide] {
+            for available in [egui::vec2(700.0, 500.0), egui::vec2(1200.0, 650.0)] {
+                let lay = layout(
+                    Rect::from_min_size(Pos2::new(10.0, 20.0), available),
+                    compare,
+                    Sizing::Fixed([800, 600]),
+                    1.0,
+                );
+                for (&(image, _), area) in lay.views.iter().zip(&lay.areas) {
+                    let r = overlay::HANDLE_RADIUS + 4.0;
+                    for corner in [image.left_bottom(), image.right_bottom()] {
+                        let handle = Rect::from_center_size(corner, egui::Vec2::splat(2.0 * r));
+                        assert!(area.contains_rect(handle), "{handle:?} in {area:?}");
+                    }
+                }
+            }
+        }
+    }
 }

@@ -154,19 +154,31 @@ impl BaryApp {
             .fill(present::CARD_FILL)
             .inner_margin(egui::Margin::same(12));
         let (hover, pin) = (self.reports.hover.as_ref(), self.reports.pin.as_ref());
-        let size = present::card_text(rect.height());
+        let spacing = ui.spacing().item_spacing.y;
+        let below = rect.width() < PRESENT_SIDE_CARD_ASPECT * rect.height();
+        let size = if below {
+            present::card_text_below(
+                rect.width() - present::PANEL_MARGINS,
+                rect.height(),
+                spacing,
+            )
+        } else {
+            present::card_text(rect.height())
+        };
         let hint = self
             .lessons
             .session
             .is_some()
             .then(|| crate::i18n::tr(self.lang(), "lesson.present_hint"));
         let hint = hint.as_deref();
-        if rect.width() < PRESENT_SIDE_CARD_ASPECT * rect.height() {
-            let spacing = ui.spacing().item_spacing.y;
+        if below {
             egui::Panel::bottom("present-card")
                 .frame(frame)
                 .resizable(false)
-                .exact_size(present::card_height(rect.width() - 24.0, spacing, size) + 24.0)
+                .exact_size(
+                    present::card_height(rect.width() - present::PANEL_MARGINS, spacing, size)
+                        + present::PANEL_MARGINS,
+                )
                 .show(ui, |ui| present::card_ui(ui, hover, pin, size, hint));
         } else {
             egui::Panel::right("present-card")

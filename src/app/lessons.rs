@@ -81,6 +81,9 @@ pub struct Lessons {
     pub row_render: super::plots::RowRender,
     /// The plot column hovered this frame.
     pub plot_hover: Option<u32>,
+    /// The window height (points) the Lessons panel was last shown in and its share of it:
+    /// the panel keeps its share when the window or the text size changes.
+    panel_share: Option<(f32, f32)>,
 }
 
 impl Lessons {
@@ -524,13 +527,23 @@ impl BaryApp {
         };
         let height = ui.ctx().content_rect().height();
         let mut hovered = None;
-        egui::Panel::bottom("lesson")
+        let panel = egui::Panel::bottom("lesson")
             .resizable(true)
             .default_size(height * PANEL_SHARE)
-            .size_range(PANEL_MIN..=height * PANEL_MAX_SHARE)
-            .show(ui, |ui| {
-                out.extend(lesson_panel_ui(ui, session, lang, plot, &mut hovered));
-            });
+            .size_range(PANEL_MIN..=height * PANEL_MAX_SHARE);
+        // egui keeps a panel's size in points: after a new window or text size the panel
+        // would keep the points it had (half the window once the text is larger), so it gets
+        // its share of the new height back.
+        let panel = match self.lessons.panel_share {
+            Some((h, share)) if (h - height).abs() > 0.5 => {
+                panel.exact_size((height * share).clamp(PANEL_MIN, height * PANEL_MAX_SHARE))
+            }
+            _ => panel,
+        };
+        let shown = panel.show(ui, |ui| {
+            out.extend(lesson_panel_ui(ui, session, lang, plot, &mut hovered));
+        });
+        self.lessons.panel_share = Some((height, shown.response.rect.height() / height.max(1.0)));
         self.lessons.plot_hover = hovered;
     }
 

@@ -50,9 +50,18 @@ fn to_box(r: Rect) -> figure_text::Box2 {
     [r.left(), r.top(), r.right(), r.bottom()]
 }
 
-/// Paints the overlay, clipped to `clip`.
-pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &Overlay) {
+/// Paints the overlay: its lines and areas clipped to `image` (the image and its title
+/// strip), its handles and texts to `clip` (the view's share of the canvas, so a handle at the
+/// image's edge shows whole and its label has room beside it).
+pub fn paint(
+    painter: &egui::Painter,
+    clip: Rect,
+    image: Rect,
+    t: CanvasTransform,
+    overlay: &Overlay,
+) {
     let painter = painter.with_clip_rect(clip);
+    let geometry = painter.with_clip_rect(image.intersect(clip));
     // The label boxes placed so far: a label goes where it covers none of them if it can.
     // The handles are there from the start.
     let mut placed: Vec<figure_text::Box2> = overlay
@@ -91,7 +100,7 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                     pts.reverse();
                 }
                 if fill[3] > 0 {
-                    painter.add(EShape::convex_polygon(
+                    geometry.add(EShape::convex_polygon(
                         pts.clone(),
                         color(*fill),
                         PathStroke::NONE,
@@ -103,9 +112,9 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                         closed.push(*first);
                     }
                     if *dashed {
-                        painter.extend(EShape::dashed_line(&closed, stroke(*s), DASH.0, DASH.1));
+                        geometry.extend(EShape::dashed_line(&closed, stroke(*s), DASH.0, DASH.1));
                     } else {
-                        painter.add(EShape::closed_line(pts, stroke(*s)));
+                        geometry.add(EShape::closed_line(pts, stroke(*s)));
                     }
                 }
             }
@@ -116,9 +125,9 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
             } => {
                 let pts: Vec<Pos2> = points.iter().map(|p| t.to_screen(*p)).collect();
                 if *dashed {
-                    painter.extend(EShape::dashed_line(&pts, stroke(*s), DASH.0, DASH.1));
+                    geometry.extend(EShape::dashed_line(&pts, stroke(*s), DASH.0, DASH.1));
                 } else {
-                    painter.add(EShape::line(pts, stroke(*s)));
+                    geometry.add(EShape::line(pts, stroke(*s)));
                 }
             }
             Shape::Rect {
@@ -129,10 +138,10 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
             } => {
                 let r = Rect::from_min_max(t.to_screen(*min), t.to_screen(*max));
                 if fill[3] > 0 {
-                    painter.rect_filled(r, 0.0, color(*fill));
+                    geometry.rect_filled(r, 0.0, color(*fill));
                 }
                 if let Some(s) = s {
-                    painter.rect_stroke(r, 0.0, stroke(*s), StrokeKind::Outside);
+                    geometry.rect_stroke(r, 0.0, stroke(*s), StrokeKind::Outside);
                 }
             }
             Shape::Circle {
@@ -238,7 +247,7 @@ pub fn paint(painter: &egui::Painter, clip: Rect, t: CanvasTransform, overlay: &
                 height,
                 line,
                 dots,
-            } => paint_grid(&painter, clip, t, *width, *height, *line, *dots),
+            } => paint_grid(&geometry, clip, t, *width, *height, *line, *dots),
             Shape::ColorBar {
                 at,
                 offset,
@@ -427,7 +436,7 @@ mod tests {
         let ctx = egui::Context::default();
         let out = ctx.run_pass(egui::RawInput::default(), |ctx| {
             let painter = egui::Painter::new(ctx.clone(), egui::LayerId::background(), clip);
-            paint(&painter, clip, t, overlay);
+            paint(&painter, clip, clip, t, overlay);
         });
         out.shapes
             .iter()

@@ -98,13 +98,14 @@ pub(super) fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVe
     let Some(p) = h.window else {
         return;
     };
+    let radius = if h.active {
+        HANDLE_RADIUS + 3.0
+    } else {
+        HANDLE_RADIUS
+    };
     shapes.push(Shape::Circle {
         centre: p,
-        radius: if h.active {
-            HANDLE_RADIUS + 3.0
-        } else {
-            HANDLE_RADIUS
-        },
+        radius,
         fill: with_alpha(color, 200),
         stroke: Some(Stroke::new(
             if h.active { 3.5 } else { 2.5 },
@@ -122,7 +123,8 @@ pub(super) fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVe
     });
     // Diagonally outward from the centroid: neighbouring corners' labels go different ways.
     let (left, up) = (p.x < centre.x, p.y < centre.y);
-    let d = HANDLE_RADIUS * 0.75;
+    // (The handle's own radius: an active, larger handle's label stays beside it too.)
+    let d = radius * 0.75;
     shapes.push(Shape::Text {
         at: p,
         offset: [if left { -d } else { d }, if up { -d } else { d }],
