@@ -23,6 +23,8 @@ use crate::i18n::{Lang, tr};
 use crate::lesson::text::{self, Block, blocks};
 use crate::lesson::{InspectorSection, Lesson, LessonPlot, StepState};
 
+mod formula;
+
 /// What the Lessons panel, the strip, the menu and the keys ask for.
 #[derive(Clone, Debug, PartialEq)]
 pub enum LessonCommand {
@@ -241,17 +243,19 @@ fn text_ui(ui: &mut Ui, text: &str, size: f32) {
                 ui.add(egui::Label::new(job).wrap());
             }
             Block::Formula(lines) => {
-                // A matrix keeps its lines: wider than the panel, it scrolls sideways.
-                egui::ScrollArea::horizontal()
-                    .id_salt(("formula", k))
-                    .show(ui, |ui| {
-                        ui.add(
-                            egui::Label::new(
-                                RichText::new(lines.join("\n")).monospace().size(size - 2.0),
-                            )
-                            .extend(),
-                        );
-                    });
+                // A formula keeps its lines. A little wider than the panel, it is set a little
+                // smaller (down to FORMULA_MIN_SCALE of its size); wider still, its lines wrap
+                // at full size: a room reads a wrapped line, not a tiny or a cut one.
+                let text = lines.join("\n");
+                let natural = size - 2.0;
+                let width = formula::width(ui, &text, natural);
+                let label = match formula::fitted_size(natural, width, ui.available_width()) {
+                    Some(fitted) => {
+                        egui::Label::new(RichText::new(text).monospace().size(fitted)).extend()
+                    }
+                    None => egui::Label::new(RichText::new(text).monospace().size(natural)).wrap(),
+                };
+                ui.push_id(("formula", k), |ui| ui.add(label));
             }
         }
         ui.add_space(size * 0.4);
