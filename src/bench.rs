@@ -197,17 +197,28 @@ fn single_view() -> String {
     view_name(View::Single).to_string()
 }
 
-/// Draws one frame of `view` for timing, in the frames given (one per mode; reused from frame
-/// to frame): [`draw_frame`] for each image, and for the difference view the heatmap
+/// What [`draw_view`] draws into, kept from frame to frame as the app keeps it: one image per
+/// mode and the difference view's heatmap.
+pub struct ViewFrames {
+    /// The affine and the perspective-correct image (the single view uses the first).
+    pub images: [raster::Framebuffer; 2],
+    /// The difference view's heatmap.
+    pub heatmap: heatmap::Heatmap,
+}
+
+/// Draws one frame of `view` for timing, in the frames given (reused from frame to frame): [`draw_frame`] for each image, and for the difference view the heatmap
 /// (`figure::heatmap`) of the uv buffers, as the app's canvas does.
 pub fn draw_view(
-    frames: &mut [raster::Framebuffer; 2],
+    frames: &mut ViewFrames,
     mesh: &ClipMesh,
     texture: &Texture,
     settings: &RenderSettings,
     view: View,
 ) -> Result<(), RenderError> {
-    let [a, p] = frames;
+    let ViewFrames {
+        images: [a, p],
+        heatmap: heat,
+    } = frames;
     let both = |a: &mut raster::Framebuffer, p: &mut raster::Framebuffer, buffers| {
         for (frame, mode) in [(a, Interpolation::Affine), (p, Interpolation::Perspective)] {
             let s = RenderSettings { mode, ..*settings };
@@ -222,8 +233,8 @@ pub fn draw_view(
             // As the app's canvas: one render in the configuration's mode that keeps the uv
             // of both modes, then the heatmap.
             raster::render_into(a, mesh, texture, settings, Buffers::ColorDepthUv)?;
-            let h = heatmap::heatmap(a, (texture.width(), texture.height()));
-            std::hint::black_box(h);
+            heatmap::heatmap_into(a, (texture.width(), texture.height()), heat);
+            std::hint::black_box(&heat.pixels);
             Ok(())
         }
     }
@@ -267,7 +278,10 @@ pub fn run_view(
             reason: e.to_string(),
         })?;
     let mut times = Vec::with_capacity(frames as usize);
-    let mut images = [0, 1].map(|_| raster::Framebuffer::new(0, 0, settings.background));
+    let mut images = ViewFrames {
+        images: [0, 1].map(|_| raster::Framebuffer::new(0, 0, settings.background)),
+        heatmap: heatmap::Heatmap::default(),
+    };
     for _ in 0..frames {
         let start = Instant::now();
         workers.install(|| draw_view(&mut images, mesh, texture, &settings, view))?;

@@ -122,7 +122,9 @@ impl CanvasState {
                     self.timing.render_ms = ms;
                     self.timing.renders += 1;
                 }
-                self.output = Some(r.output);
+                if let Some(old) = self.output.replace(r.output) {
+                    self.renders.recycle(old);
+                }
                 self.error = None;
                 true
             }

@@ -74,6 +74,8 @@ pub struct RenderCache {
     cache: Vec<(RenderCacheKey, Arc<Render>)>,
     /// A framebuffer of a render that left the cache, reused by the next render.
     spare: Option<Framebuffer>,
+    /// The heatmap of an output no longer shown, whose memory the next heatmap reuses.
+    spare_heat: Option<Heatmap>,
 }
 
 /// A new output of [`RenderCache::update`].
@@ -84,6 +86,14 @@ pub struct Rendered {
 }
 
 impl RenderCache {
+    /// Takes back an output that is no longer shown, keeping its heatmap's memory for the next
+    /// one.
+    pub fn recycle(&mut self, old: CanvasOutput) {
+        if old.heatmap.is_some() {
+            self.spare_heat = old.heatmap;
+        }
+    }
+
     /// Renders `state` at `size` for the comparison `compare` if anything the image depends
     /// on changed: `Ok(None)` when nothing did. `generation` numbers the new output.
     pub fn update(
@@ -165,13 +175,14 @@ impl RenderCache {
                 }
             }
         }
-        let heat = (compare == Compare::Difference)
-            .then(|| {
-                renders
-                    .first()
-                    .map(|(_, r)| heatmap::heatmap(&r.frame, (texture.width(), texture.height())))
-            })
-            .flatten();
+        let heat = match renders.first() {
+            Some((_, r)) if compare == Compare::Difference => {
+                let mut h = self.spare_heat.take().unwrap_or_default();
+                heatmap::heatmap_into(&r.frame, (texture.width(), texture.height()), &mut h);
+                Some(h)
+            }
+            _ => None,
+        };
         let output = CanvasOutput {
             scene: key.scene.clone(),
             size,

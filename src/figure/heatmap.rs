@@ -14,12 +14,11 @@ use crate::raster::texture::texel_offset;
 /// assert!((d - 5.0).abs() < 1e-4);
 /// ```
 pub fn texel_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: (u32, u32)) -> f32 {
-    let [du, dv] = texel_offset(uv_affine, uv_perspective, [size.0 as f32, size.1 as f32]);
-    (du * du + dv * dv).sqrt()
+    square_difference(uv_affine, uv_perspective, [size.0 as f32, size.1 as f32]).sqrt()
 }
 
 /// A rendered heatmap and its scale.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Default)]
 pub struct Heatmap {
     /// Width in pixels.
     pub width: u32,
@@ -49,16 +48,26 @@ const HEAT_STEPS: usize = 1024;
 /// assert_ne!(heat_color(1.0, 4.0), heat_color(3.0, 4.0));
 /// ```
 pub fn heat_color(d: f32, scale_max: f32) -> [u8; 4] {
-    let table = heat_table();
-    let t = if scale_max > 0.0 {
-        (d / scale_max).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    // Rounded to the nearest step (t >= 0, so adding a half and truncating rounds); a NaN
-    // stays NaN through the clamp and converts to index 0.
-    let i = (t * (HEAT_STEPS - 1) as f32 + 0.5) as usize;
-    table[i.min(HEAT_STEPS - 1)]
+    heat_table()[heat_index(d, scale_max)]
+}
+
+/// The step of the colour scale for a difference `d` on a scale from 0 to `scale_max`: `d`
+/// over the scale, clamped to [0, 1] (a NaN counts as 0), times the last step, rounded to the
+/// nearest step.
+#[inline(always)]
+fn heat_index(d: f32, scale_max: f32) -> usize {
+    let t = if scale_max > 0.0 { d / scale_max } else { 0.0 };
+    // `max` and `min` written as compares: a NaN fails both and is replaced by 0.
+    let t = if t > 0.0 { t } else { 0.0 };
+    let t = if t < 1.0 { t } else { 1.0 };
+    // t >= 0, so adding a half and truncating rounds. The value is in [0.5, 1023.5]: the
+    // conversion needs no saturation (which would keep the loops from being vectorized).
+    let x = t * (HEAT_STEPS - 1) as f32 + 0.5;
+    debug_assert!((0.0..HEAT_STEPS as f32).contains(&x));
+    // SAFETY: `x` is finite and within [0.5, 1023.5] (t is clamped to [0, 1] above), so its
+    // truncation is representable as an i32.
+    let i = unsafe { x.to_int_unchecked::<i32>() };
+    i as usize
 }
 
 /// The colour scale's [`HEAT_STEPS`] colours, computed once.
@@ -103,53 +112,138 @@ pub fn nice_ceiling(x: f32) -> f32 {
 /// The heatmap of a framebuffer for a texture of `texture_size` texels (rows in parallel, on
 /// rayon's current pool).
 pub fn heatmap(frame: &Framebuffer, texture_size: (u32, u32)) -> Heatmap {
+    let mut out = Heatmap::default();
+    heatmap_into(frame, texture_size, &mut out);
+    out
+}
+
+/// [`heatmap`] into `out`, reusing its pixel memory (a view redrawn every frame then takes no
+/// fresh pages from the system). Two passes over the uv buffers and no buffer of its own: the
+/// largest difference first (it sets the scale), then each pixel's difference again, coloured
+/// on that scale. Both passes run over plain slices so the compiler vectorizes them; the
+/// largest difference is found among the squares (the square root is monotonic, so
+/// `sqrt(max d^2)` is exactly `max d`).
+pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Heatmap) {
     use rayon::prelude::*;
     let n = frame.color.len();
-    let covered = frame.triangle.len() == n && frame.uv_affine.len() == n;
-    // The difference per pixel (NaN where nothing is drawn), then the colours on its scale.
-    let mut diff = vec![f32::NAN; n];
-    if covered {
-        diff.par_chunks_mut(HEATMAP_CHUNK)
-            .enumerate()
-            .for_each(|(c, chunk)| {
-                let first = c * HEATMAP_CHUNK;
-                let rows = first..first + chunk.len();
-                let triangle = &frame.triangle[rows.clone()];
-                let affine = &frame.uv_affine[rows.clone()];
-                let perspective = &frame.uv_perspective[rows];
-                for (k, d) in chunk.iter_mut().enumerate() {
-                    if triangle[k] != crate::raster::NO_TRIANGLE {
-                        *d = texel_difference(affine[k], perspective[k], texture_size);
-                    }
-                }
-            });
-    }
-    let max = diff
-        .par_chunks(HEATMAP_CHUNK)
-        .map(|c| c.iter().copied().fold(0.0f32, f32::max))
-        .reduce(|| 0.0f32, f32::max);
+    let covered =
+        frame.triangle.len() == n && frame.uv_affine.len() == n && frame.uv_perspective.len() == n;
+    let size = [texture_size.0 as f32, texture_size.1 as f32];
+    let max = if covered {
+        frame
+            .triangle
+            .par_chunks(HEATMAP_CHUNK)
+            .zip(frame.uv_affine.par_chunks(HEATMAP_CHUNK))
+            .zip(frame.uv_perspective.par_chunks(HEATMAP_CHUNK))
+            .map(|((t, a), p)| largest_square(t, a, p, size))
+            .reduce(|| 0.0f32, |x, y| if y > x { y } else { x })
+            .sqrt()
+    } else {
+        0.0
+    };
     let scale_max = nice_ceiling(max);
-    let mut pixels = vec![[0u8; 4]; n];
-    pixels
-        .par_chunks_mut(HEATMAP_CHUNK)
-        .zip(diff.par_chunks(HEATMAP_CHUNK))
-        .zip(frame.color.par_chunks(HEATMAP_CHUNK))
-        .for_each(|((out, diff), color)| {
-            for ((o, &d), c) in out.iter_mut().zip(diff).zip(color) {
-                *o = if d.is_nan() {
-                    [c[0] / 2, c[1] / 2, c[2] / 2, c[3]]
-                } else {
-                    heat_color(d, scale_max)
-                };
-            }
-        });
-    Heatmap {
-        width: frame.width,
-        height: frame.height,
-        pixels,
-        max,
-        scale_max,
+    out.pixels.resize(n, [0; 4]);
+    let dim = |c: &[u8; 4]| [c[0] / 2, c[1] / 2, c[2] / 2, c[3]];
+    if covered {
+        out.pixels
+            .par_chunks_mut(HEATMAP_CHUNK)
+            .zip(frame.color.par_chunks(HEATMAP_CHUNK))
+            .zip(frame.triangle.par_chunks(HEATMAP_CHUNK))
+            .zip(frame.uv_affine.par_chunks(HEATMAP_CHUNK))
+            .zip(frame.uv_perspective.par_chunks(HEATMAP_CHUNK))
+            .for_each(|((((o, c), t), a), p)| color_run(o, c, t, a, p, size, scale_max));
+    } else {
+        out.pixels
+            .par_chunks_mut(HEATMAP_CHUNK)
+            .zip(frame.color.par_chunks(HEATMAP_CHUNK))
+            .for_each(|(o, c)| o.iter_mut().zip(c).for_each(|(o, c)| *o = dim(c)));
     }
+    out.width = frame.width;
+    out.height = frame.height;
+    out.max = max;
+    out.scale_max = scale_max;
+}
+
+/// The square of [`texel_difference`] (the same operations before the square root).
+#[inline(always)]
+fn square_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: [f32; 2]) -> f32 {
+    let [du, dv] = texel_offset(uv_affine, uv_perspective, size);
+    du * du + dv * dv
+}
+
+/// Colours a run of pixels: [`heat_color`] of the difference where a triangle is drawn, the
+/// framebuffer's colour dimmed elsewhere. One table, slices of one length (no bounds checks in
+/// the loop).
+fn color_run(
+    out: &mut [[u8; 4]],
+    color: &[[u8; 4]],
+    triangle: &[u32],
+    affine: &[[f32; 2]],
+    perspective: &[[f32; 2]],
+    size: [f32; 2],
+    scale_max: f32,
+) {
+    // Steps of RUN pixels: first every step index (arithmetic only, which the compiler
+    // vectorizes), then the table lookups.
+    const RUN: usize = 64;
+    const NOT_DRAWN: u32 = u32::MAX;
+    let table = heat_table();
+    let n = out.len();
+    let (color, triangle) = (&color[..n], &triangle[..n]);
+    let (affine, perspective) = (&affine[..n], &perspective[..n]);
+    let mut step = [0u32; RUN];
+    let mut first = 0;
+    while first < n {
+        let m = RUN.min(n - first);
+        let (t, a, p) = (
+            &triangle[first..first + m],
+            &affine[first..first + m],
+            &perspective[first..first + m],
+        );
+        for k in 0..m {
+            let d = square_difference(a[k], p[k], size).sqrt();
+            let drawn = t[k] != crate::raster::NO_TRIANGLE && !d.is_nan();
+            step[k] = if drawn {
+                heat_index(d, scale_max) as u32
+            } else {
+                NOT_DRAWN
+            };
+        }
+        let run = first..first + m;
+        for ((o, c), &s) in out[run.clone()].iter_mut().zip(&color[run]).zip(&step) {
+            *o = match s {
+                NOT_DRAWN => [c[0] / 2, c[1] / 2, c[2] / 2, c[3]],
+                s => table[s as usize],
+            };
+        }
+        first += m;
+    }
+}
+
+/// The largest [`square_difference`] over the covered pixels of a run of pixels (0 when none;
+/// a NaN is passed over), in eight independent lanes so that it vectorizes.
+fn largest_square(
+    triangle: &[u32],
+    affine: &[[f32; 2]],
+    perspective: &[[f32; 2]],
+    size: [f32; 2],
+) -> f32 {
+    const W: usize = 8;
+    let mut lanes = [0.0f32; W];
+    let n = triangle.len().min(affine.len()).min(perspective.len());
+    let (t, a, p) = (&triangle[..n], &affine[..n], &perspective[..n]);
+    for ((t, a), p) in t.chunks(W).zip(a.chunks(W)).zip(p.chunks(W)) {
+        for k in 0..t.len() {
+            let d = square_difference(a[k], p[k], size);
+            // `>` is false for a NaN, so a NaN never becomes the largest.
+            if t[k] != crate::raster::NO_TRIANGLE && d > lanes[k] {
+                lanes[k] = d;
+            }
+        }
+    }
+    lanes
+        .into_iter()
+        .fold(0.0, |x, y| if y > x { y } else { x })
 }
 
 /// Pixels one parallel task of [`heatmap`] handles at least.
@@ -188,5 +282,42 @@ mod tests {
             })
             .expect("covered pixel");
         assert_eq!(h.pixels[i], heat_color(h.max, h.scale_max));
+    }
+
+    /// Every pixel against a plain per-pixel evaluation of the definitions, and a reused
+    /// heatmap (of another size) gives the same as a new one.
+    #[test]
+    fn every_pixel_is_its_difference_on_the_scale() {
+        let texture = Texture::builtin(crate::raster::BuiltinTexture::UvGrid);
+        let size = (texture.width(), texture.height());
+        let mut floor = Preset::Floor.scene();
+        floor.set_size(203, 117);
+        let out = render(&floor.to_mesh(), &texture, &floor.settings()).expect("render");
+        let f = &out.frame;
+        let drawn = |i: usize| f.triangle[i] != crate::raster::NO_TRIANGLE;
+        let d = |i: usize| texel_difference(f.uv_affine[i], f.uv_perspective[i], size);
+        let max = (0..f.color.len())
+            .filter(|&i| drawn(i))
+            .map(d)
+            .fold(0.0f32, f32::max);
+        let mut reused = heatmap(f, (7, 3));
+        assert_eq!(reused.pixels.len(), f.color.len());
+        heatmap_into(f, size, &mut reused);
+        let h = heatmap(f, size);
+        assert_eq!(reused, h);
+        assert_eq!(h.max, max);
+        assert_eq!(h.scale_max, nice_ceiling(max));
+        for i in 0..f.color.len() {
+            let c = f.color[i];
+            let expected = if drawn(i) {
+                heat_color(d(i), h.scale_max)
+            } else {
+                [c[0] / 2, c[1] / 2, c[2] / 2, c[3]]
+            };
+            assert_eq!(h.pixels[i], expected, "pixel {i}");
+        }
+        // Some pixels of each kind, and more than one colour.
+        assert!((0..f.color.len()).any(drawn) && !(0..f.color.len()).all(drawn));
+        assert!(h.pixels.iter().any(|p| *p != h.pixels[0]));
     }
 }

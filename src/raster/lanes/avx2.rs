@@ -108,20 +108,53 @@ fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
     }
     let pass = write(target, chunk.index, chunk.valid, chunk.depth, rgba);
     if let (Some(uv), Some(both)) = (target.uv.as_mut(), &chunk.both_uv) {
-        // The lanes that passed the depth test, stored one by one (the buffers hold uv pairs).
-        let bits = _mm256_movemask_ps(_mm256_castsi256_ps(pass));
-        let mut lanes = [[0.0f32; 8]; 4];
-        for (out, v) in lanes.iter_mut().zip(both) {
-            // SAFETY: `out` holds exactly eight f32.
-            unsafe { _mm256_storeu_ps(out.as_mut_ptr(), *v) };
-        }
-        for k in 0..8 {
-            if bits & (1 << k) != 0 {
-                let i = chunk.index + k;
-                uv.triangle[i] = uv.source;
-                uv.uv_affine[i] = [lanes[0][k], lanes[1][k]];
-                uv.uv_perspective[i] = [lanes[2][k], lanes[3][k]];
-            }
+        store_uv(uv, chunk.index, pass, both);
+    }
+}
+
+/// Writes the source triangle and both uvs of the lanes in `pass` (eight pixels from buffer
+/// index `index` of the band): the uv pairs are interleaved in registers and stored with masks,
+/// as `write` stores the colour.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn store_uv(uv: &mut super::UvTarget<'_>, index: usize, pass: __m256i, both: &[__m256; 4]) {
+    debug_assert!(
+        index < uv.triangle.len()
+            && uv.triangle.len() == uv.uv_affine.len()
+            && uv.triangle.len() == uv.uv_perspective.len()
+    );
+    // Lane k's mask for both halves of its pair: (m0 m0 m1 m1 m2 m2 m3 m3), (m4 m4 ... m7 m7).
+    let m_lo = _mm256_unpacklo_epi32(pass, pass);
+    let m_hi = _mm256_unpackhi_epi32(pass, pass);
+    let masks = [
+        _mm256_permute2x128_si256::<0x20>(m_lo, m_hi),
+        _mm256_permute2x128_si256::<0x31>(m_lo, m_hi),
+    ];
+    // (u0 v0 u1 v1 u2 v2 u3 v3), (u4 v4 ... u7 v7).
+    let pairs = |u: __m256, v: __m256| {
+        let lo = _mm256_unpacklo_ps(u, v);
+        let hi = _mm256_unpackhi_ps(u, v);
+        [
+            _mm256_permute2f128_ps::<0x20>(lo, hi),
+            _mm256_permute2f128_ps::<0x31>(lo, hi),
+        ]
+    };
+    let affine = pairs(both[0], both[1]);
+    let perspective = pairs(both[2], both[3]);
+    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, so
+    // every element written (`index + k`, its two floats) is inside the three buffers, which
+    // have the colour buffer's length; masked stores touch no other element.
+    unsafe {
+        _mm256_maskstore_epi32(
+            uv.triangle.as_mut_ptr().add(index).cast::<i32>(),
+            pass,
+            _mm256_set1_epi32(uv.source as i32),
+        );
+        let a = uv.uv_affine.as_mut_ptr().add(index).cast::<f32>();
+        let p = uv.uv_perspective.as_mut_ptr().add(index).cast::<f32>();
+        for h in 0..2 {
+            _mm256_maskstore_ps(a.add(8 * h), masks[h], affine[h]);
+            _mm256_maskstore_ps(p.add(8 * h), masks[h], perspective[h]);
         }
     }
 }
