@@ -4,7 +4,7 @@
 //! model loads in a fraction of the memory a whole-file parser takes); MTL libraries are read
 //! with `tobj`. `reference.rs` is the `tobj`-based loader it replaced, kept for the tests.
 
-use std::io::{BufRead, BufReader};
+use std::io::{BufRead, BufReader, Seek, SeekFrom};
 use std::path::{Path, PathBuf};
 
 use glam::{DVec3, Vec2, Vec3};
@@ -213,12 +213,20 @@ impl ModelMesh {
         }
         let (file, _) = files::open_regular(path, FileKind::Model)?;
         let io = |e| ModelError::File(ReadError::io(path, FileKind::Model, e));
+        let cap = FileKind::Model.cap();
+        // Two passes over the file: the first counts its lines, so the arrays are reserved
+        // once (see `obj::count`).
         let mut input = BufReader::with_capacity(1 << 16, file);
         if input.fill_buf().map_err(io)?.is_empty() {
             return Err(ModelError::EmptyFile { path: shown });
         }
+        let counts = obj::count(&mut input, cap).map_err(io)?;
+        let mut file = input.into_inner();
+        file.get_mut().seek(SeekFrom::Start(0)).map_err(io)?;
+        file.set_limit(cap + 1);
+        let input = BufReader::with_capacity(1 << 16, file);
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        obj::read(input, &shown, &dir, FileKind::Model.cap()).map_err(|stop| match stop {
+        obj::read(input, &shown, &dir, cap, counts).map_err(|stop| match stop {
             obj::Stop::Model(e) => e,
             obj::Stop::Io(e) => io(e),
             obj::Stop::TooLarge => ReadError::grew(path, FileKind::Model).into(),
@@ -228,7 +236,8 @@ impl ModelMesh {
     /// Parses OBJ text (the same reader as [`ModelMesh::load`]); `shown` names it in
     /// messages, and its MTL and texture paths are relative to `dir`.
     pub fn from_obj(bytes: &[u8], shown: &str, dir: &Path) -> Result<Self, ModelError> {
-        obj::read(bytes, shown, dir, u64::MAX).map_err(|stop| match stop {
+        let counts = obj::count(bytes, u64::MAX).unwrap_or_default();
+        obj::read(bytes, shown, dir, u64::MAX, counts).map_err(|stop| match stop {
             obj::Stop::Model(e) => e,
             obj::Stop::Io(e) => ModelError::Parse {
                 path: shown.to_string(),
