@@ -67,8 +67,9 @@ fn index(choice: u32, count: usize, relative: bool, wild: bool) -> String {
 
 /// The OBJ text of `lines` after three positions, two texture coordinates and a normal, with
 /// `\n` or `\r\n` line ends as `crlf` says; `wild` files have indices out of range now and
-/// then.
-fn text(lines: &[Line], crlf: &[bool], wild: bool) -> String {
+/// then. `style` picks the faces' forms: 0 each corner its own, 1 every corner `v/vt/vn`, 2
+/// every corner `v/vt`, 3 each face one form (its first corner's).
+fn text(lines: &[Line], crlf: &[bool], wild: bool, style: u8) -> String {
     let (mut v, mut vt, mut vn) = (3, 2, 1);
     let mut out = String::from("v 0 0 0\nv 1 0.5 0\nv 0 1 0.25\nvt 0 0\nvt 1 1\nvn 0 0 1\n");
     for (k, l) in lines.iter().enumerate() {
@@ -97,7 +98,14 @@ fn text(lines: &[Line], crlf: &[bool], wild: bool) -> String {
             }
             Line::F(corners) => {
                 out.push('f');
+                let first = corners.first().map_or(0, |c| c.0);
                 for (form, [a, b, c], rel) in corners {
+                    let form = match style {
+                        1 => 3,
+                        2 => 1,
+                        3 => first,
+                        _ => *form,
+                    };
                     let p = index(*a, v, *rel, wild);
                     let t = index(*b, vt, *rel, wild);
                     let n = index(*c, vn, !rel, wild);
@@ -159,19 +167,19 @@ fn reason(e: &ModelError) -> String {
 }
 
 /// Both readers on `obj`: the same mesh, or errors where the streaming reader's message holds
-/// the reference's. Returns whether it loaded.
-fn same_as_reference(obj: &str, dir: &Path) -> Result<bool, TestCaseError> {
+/// the reference's. Returns the mesh when it loaded.
+fn same_as_reference(obj: &str, dir: &Path) -> Result<Option<ModelMesh>, TestCaseError> {
     let ours = ModelMesh::from_obj(obj.as_bytes(), "g.obj", dir);
     let reference = from_obj_tobj(obj.as_bytes(), "g.obj", dir);
     match (ours, reference) {
         (Ok(a), Ok(b)) => {
-            prop_assert_eq!(a, b, "{}", obj);
-            Ok(true)
+            prop_assert_eq!(&a, &b, "{}", obj);
+            Ok(Some(a))
         }
         (Err(a), Err(b)) => {
             let (a, b) = (reason(&a), reason(&b));
             prop_assert!(a.contains(&b), "ours: {a}\nreference: {b}\n{obj}");
-            Ok(false)
+            Ok(None)
         }
         (a, b) => Err(TestCaseError::fail(format!(
             "ours: {:?}\nreference: {:?}\n{obj}",
@@ -189,31 +197,39 @@ proptest! {
         lines in prop::collection::vec(line(), 1..60),
         crlf in prop::collection::vec(any::<bool>(), 60),
         wild in prop::bool::weighted(0.2),
+        style in 0u8..4,
     ) {
         let dir = mtl_dir();
-        same_as_reference(&text(&lines, &crlf, wild), dir.path())?;
+        same_as_reference(&text(&lines, &crlf, wild, style), dir.path())?;
     }
 }
 
 #[test]
 fn most_generated_files_load() {
-    // The property above is about meshes, not errors: most of its files must load.
+    // The property above is about meshes, not errors: most of its files must load, many with
+    // uvs.
     let dir = mtl_dir();
     let mut runner = proptest::test_runner::TestRunner::deterministic();
     let strategy = (
         prop::collection::vec(line(), 1..60),
         prop::collection::vec(any::<bool>(), 60),
         prop::bool::weighted(0.2),
+        0u8..4,
     );
-    let (mut loaded, mut total) = (0, 0);
+    let (mut loaded, mut textured, mut total) = (0, 0, 0);
     for _ in 0..300 {
-        let (lines, crlf, wild) = strategy.new_tree(&mut runner).expect("case").current();
+        let (lines, crlf, wild, style) = strategy.new_tree(&mut runner).expect("case").current();
         total += 1;
-        if same_as_reference(&text(&lines, &crlf, wild), dir.path()).expect("same") {
+        if let Some(m) =
+            same_as_reference(&text(&lines, &crlf, wild, style), dir.path()).expect("same")
+        {
             loaded += 1;
+            textured += usize::from(m.has_uv);
         }
     }
     assert!(loaded * 2 > total, "{loaded} of {total} loaded");
+    // With uvs on every face (and so the uv and normal paths taken) in a good share.
+    assert!(textured * 5 > total, "{textured} of {total} with uvs");
 }
 
 /// The streaming reader's message for `obj`.
