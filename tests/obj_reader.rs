@@ -54,7 +54,7 @@ fn line() -> impl Strategy<Value = Line> {
 /// `wild` file now and then one defined later or never.
 fn index(choice: u32, count: usize, relative: bool, wild: bool) -> String {
     let count = count as u32;
-    if count == 0 || (wild && choice % 13 == 0) {
+    if count == 0 || (wild && choice.is_multiple_of(13)) {
         return (count + 1 + choice % 3).to_string();
     }
     let i = choice % count;

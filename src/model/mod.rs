@@ -12,6 +12,7 @@ use glam::{DVec3, Vec2, Vec3};
 use crate::budget::{self, MemoryError};
 use crate::files::{self, FileKind, ReadError};
 
+mod count;
 mod obj;
 mod reference;
 
@@ -220,7 +221,7 @@ impl ModelMesh {
         if input.fill_buf().map_err(io)?.is_empty() {
             return Err(ModelError::EmptyFile { path: shown });
         }
-        let counts = obj::count(&mut input, cap).map_err(io)?;
+        let counts = count::count(&mut input, cap).map_err(io)?;
         let mut file = input.into_inner();
         file.get_mut().seek(SeekFrom::Start(0)).map_err(io)?;
         file.set_limit(cap + 1);
@@ -236,7 +237,7 @@ impl ModelMesh {
     /// Parses OBJ text (the same reader as [`ModelMesh::load`]); `shown` names it in
     /// messages, and its MTL and texture paths are relative to `dir`.
     pub fn from_obj(bytes: &[u8], shown: &str, dir: &Path) -> Result<Self, ModelError> {
-        let counts = obj::count(bytes, u64::MAX).unwrap_or_default();
+        let counts = count::count(bytes, u64::MAX).unwrap_or_default();
         obj::read(bytes, shown, dir, u64::MAX, counts).map_err(|stop| match stop {
             obj::Stop::Model(e) => e,
             obj::Stop::Io(e) => ModelError::Parse {
