@@ -111,8 +111,8 @@ struct Obj<'a> {
 
 /// Reads an OBJ text from `input` line by line and builds its mesh; `shown` names it in
 /// messages, its MTL and texture paths are relative to `dir`, and more than `max_bytes` of
-/// input is [`Stop::TooLarge`]. `counts` ([`super::count::count`]) sizes the arrays. A UTF-8 byte order
-/// mark at the start is skipped.
+/// input is [`Stop::TooLarge`]. `counts` ([`super::count::count`]) sizes the arrays. A UTF-8
+/// byte order mark at the start is skipped.
 pub(super) fn read(
     mut input: impl BufRead,
     shown: &str,
