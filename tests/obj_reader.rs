@@ -431,3 +431,53 @@ fn load_reads_files_and_names_them() {
         "{e}"
     );
 }
+
+/// Vertex normals as the loader computed them before its compact position table: a hash map
+/// from each position's bits to the sum of the face normals around it, in triangle order.
+fn normals_by_hash_map(positions: &[glam::DVec3], triangles: &[[u32; 3]]) -> Vec<glam::DVec3> {
+    use std::collections::HashMap;
+    let key = |p: &glam::DVec3| p.to_array().map(f64::to_bits);
+    let mut sums: HashMap<[u64; 3], glam::DVec3> = HashMap::new();
+    for t in triangles {
+        let [a, b, c] = t.map(|i| positions[i as usize]);
+        let face = (b - a).cross(c - a);
+        if face.is_finite() {
+            for &i in t {
+                *sums.entry(key(&positions[i as usize])).or_default() += face;
+            }
+        }
+    }
+    positions
+        .iter()
+        .map(|p| {
+            sums.get(&key(p))
+                .copied()
+                .unwrap_or_default()
+                .normalize_or_zero()
+        })
+        .collect()
+}
+
+proptest! {
+    #[test]
+    fn vertex_normals_share_sums_at_equal_positions(
+        picks in prop::collection::vec(0usize..12, 3..40),
+        triangles in prop::collection::vec(any::<[u16; 3]>(), 1..40),
+    ) {
+        // Few distinct positions (-0 beside 0 is a different one), so many vertices share one.
+        let corners: Vec<glam::DVec3> = (0..12)
+            .map(|k| {
+                let k = k as f64;
+                glam::DVec3::new(k.sin(), (k * 0.7).cos(), if k == 3.0 { -0.0 } else { k * 0.1 })
+            })
+            .collect();
+        let positions: Vec<glam::DVec3> = picks.iter().map(|&k| corners[k]).collect();
+        let n = positions.len();
+        let triangles: Vec<[u32; 3]> = triangles
+            .iter()
+            .map(|t| t.map(|i| (usize::from(i) % n) as u32))
+            .collect();
+        let ours = barylab::model::vertex_normals(&positions, &triangles);
+        prop_assert_eq!(ours, normals_by_hash_map(&positions, &triangles));
+    }
+}
