@@ -25,10 +25,13 @@ pub const AVAILABLE_SHARE: f64 = 0.75;
 /// The limit when the system does not say how much memory is available (no `/proc/meminfo`).
 pub const FALLBACK_LIMIT: u64 = 4 << 30;
 
-/// Bytes of memory per byte of OBJ text while it is parsed and turned into a mesh: the
-/// parser's positions, texture coordinates, index map and the mesh (f64 positions, colours)
-/// beside the text itself. Measured about 5 on sample models; 8 leaves room.
-pub const MODEL_BYTES_PER_FILE_BYTE: u64 = 8;
+/// Bytes of memory per byte of OBJ text while it is read and turned into a mesh. The streaming
+/// reader (`model/obj.rs`) never holds the text: the file's f32 positions, uvs and normals, 12
+/// bytes of indices per output vertex and the mesh (68 bytes a vertex, 12 a triangle), then the
+/// normals' position table. Measured 1.8 for a 1,002,000-triangle model of `v` and `f a b c`
+/// lines (38 MB of text) and 1.0 for a 1,000,000-triangle grid with `vt` and `vn` (71 MB); 3
+/// leaves room. (With tobj, which kept the text and a 104-byte record per face, it was 8.)
+pub const MODEL_BYTES_PER_FILE_BYTE: u64 = 3;
 
 /// Bytes of memory per byte of scene JSON while it is parsed (the text, the parsed vertices
 /// and triangles, and the checking pass).

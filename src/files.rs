@@ -153,10 +153,12 @@ pub fn describe(meta: &Metadata) -> &'static str {
     }
 }
 
-/// Reads a whole regular file of `kind`, at most its [`FileKind::cap`] bytes. Anything else (a
-/// FIFO, a device, a folder, a file that is too large) is an error naming what it is, found
-/// before the file is opened, so nothing blocks or reads forever.
-pub fn read_regular(path: &Path, kind: FileKind) -> Result<Vec<u8>, ReadError> {
+/// Opens a regular file of `kind` for reading, after the checks [`read_regular`] makes: a
+/// FIFO, a device, a folder or a file larger than [`FileKind::cap`] is an error naming what it
+/// is, found before the file is opened (so nothing blocks), and what was opened is checked
+/// again. Returns the file, limited to one byte more than the cap (so a file that grew while
+/// read shows as [`ReadError::grew`]), and its size when opened.
+pub fn open_regular(path: &Path, kind: FileKind) -> Result<(io::Take<File>, u64), ReadError> {
     let io = |cause| ReadError::Io {
         kind: kind.name(),
         path: shown(path),
@@ -186,20 +188,44 @@ pub fn read_regular(path: &Path, kind: FileKind) -> Result<Vec<u8>, ReadError> {
     // The file may have been replaced between the two looks; check what was opened.
     let meta = file.metadata().map_err(io)?;
     checked(&meta)?;
-    let mut out = Vec::new();
-    out.try_reserve_exact(meta.len() as usize)
-        .map_err(|e| io(io::Error::new(io::ErrorKind::OutOfMemory, e.to_string())))?;
     // One byte more than the cap shows a file that grew while being read.
-    file.take(kind.cap() + 1)
-        .read_to_end(&mut out)
-        .map_err(io)?;
-    if out.len() as u64 > kind.cap() {
-        return Err(ReadError::TooLarge {
+    Ok((file.take(kind.cap() + 1), meta.len()))
+}
+
+impl ReadError {
+    /// The error for a file of `kind` that grew past its cap while it was read (more bytes
+    /// came than [`FileKind::cap`]).
+    pub fn grew(path: &Path, kind: FileKind) -> Self {
+        ReadError::TooLarge {
             kind: kind.name(),
             path: shown(path),
             size: format!("more than {}", bytes(kind.cap())),
             cap: bytes(kind.cap()),
-        });
+        }
+    }
+
+    /// The error for a failed read of a file of `kind` (the operating system's `cause`).
+    pub fn io(path: &Path, kind: FileKind, cause: io::Error) -> Self {
+        ReadError::Io {
+            kind: kind.name(),
+            path: shown(path),
+            cause,
+        }
+    }
+}
+
+/// Reads a whole regular file of `kind`, at most its [`FileKind::cap`] bytes. Anything else (a
+/// FIFO, a device, a folder, a file that is too large) is an error naming what it is, found
+/// before the file is opened, so nothing blocks or reads forever ([`open_regular`]).
+pub fn read_regular(path: &Path, kind: FileKind) -> Result<Vec<u8>, ReadError> {
+    let io = |cause| ReadError::io(path, kind, cause);
+    let (mut file, len) = open_regular(path, kind)?;
+    let mut out = Vec::new();
+    out.try_reserve_exact(len as usize)
+        .map_err(|e| io(io::Error::new(io::ErrorKind::OutOfMemory, e.to_string())))?;
+    file.read_to_end(&mut out).map_err(io)?;
+    if out.len() as u64 > kind.cap() {
+        return Err(ReadError::grew(path, kind));
     }
     Ok(out)
 }
