@@ -36,9 +36,6 @@ struct Pending {
     halo: i32,
     /// Buffer index of lane 0.
     index: usize,
-    /// Buffer index of lane 4: `index + 4` for eight pixels of one row, or the start of the
-    /// next row for the small-triangle path's two rows of four.
-    index_hi: usize,
     /// `[u_affine, v_affine, u_smooth, v_smooth]` for a target with uv buffers.
     both_uv: Option<[__m256; 4]>,
 }
@@ -109,21 +106,22 @@ fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
             mask_from_bits(chunk.wire),
         );
     }
-    let at = [chunk.index, chunk.index_hi];
-    let pass = write(target, at, chunk.valid, chunk.depth, rgba);
+    let pass = write(target, chunk.index, chunk.valid, chunk.depth, rgba);
     if let (Some(uv), Some(both)) = (target.uv.as_mut(), &chunk.both_uv) {
-        store_uv(uv, at, pass, both);
+        store_uv(uv, chunk.index, pass, both);
     }
 }
 
-/// Writes the source triangle and both uvs of the lanes in `pass` (lanes 0-3 from buffer
-/// index `at[0]` of the band, lanes 4-7 from `at[1]`): the uv pairs are interleaved in
-/// registers and stored with masks, as `write` stores the colour.
+/// Writes the source triangle and both uvs of the lanes in `pass` (eight pixels from buffer
+/// index `index` of the band): the uv pairs are interleaved in registers and stored with masks,
+/// as `write` stores the colour.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn store_uv(uv: &mut super::UvTarget<'_>, at: [usize; 2], pass: __m256i, both: &[__m256; 4]) {
+fn store_uv(uv: &mut super::UvTarget<'_>, index: usize, pass: __m256i, both: &[__m256; 4]) {
     debug_assert!(
-        uv.triangle.len() == uv.uv_affine.len() && uv.triangle.len() == uv.uv_perspective.len()
+        index < uv.triangle.len()
+            && uv.triangle.len() == uv.uv_affine.len()
+            && uv.triangle.len() == uv.uv_perspective.len()
     );
     // Lane k's mask for both halves of its pair: (m0 m0 m1 m1 m2 m2 m3 m3), (m4 m4 ... m7 m7).
     let m_lo = _mm256_unpacklo_epi32(pass, pass);
@@ -143,107 +141,52 @@ fn store_uv(uv: &mut super::UvTarget<'_>, at: [usize; 2], pass: __m256i, both: &
     };
     let affine = pairs(both[0], both[1]);
     let perspective = pairs(both[2], both[3]);
-    let source = _mm_set1_epi32(uv.source as i32);
-    let bits = _mm256_movemask_ps(_mm256_castsi256_ps(pass));
-    for h in 0..2 {
-        // A half with no lane to write is skipped: its index may lie past the band.
-        if (bits >> (4 * h)) & 0xf == 0 {
-            continue;
-        }
-        let index = at[h];
-        debug_assert!(index < uv.triangle.len());
-        let half_mask = if h == 0 {
-            _mm256_castsi256_si128(pass)
-        } else {
-            _mm256_extracti128_si256::<1>(pass)
-        };
-        // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's rows,
-        // so every element written (`index + k` of this half, its two floats) is inside the
-        // three buffers, which have the colour buffer's length; masked stores touch no other
-        // element, and a half without enabled lanes is not addressed at all.
-        unsafe {
-            _mm_maskstore_epi32(
-                uv.triangle.as_mut_ptr().add(index).cast::<i32>(),
-                half_mask,
-                source,
-            );
-            let a = uv.uv_affine.as_mut_ptr().add(index).cast::<f32>();
-            let p = uv.uv_perspective.as_mut_ptr().add(index).cast::<f32>();
-            _mm256_maskstore_ps(a, masks[h], affine[h]);
-            _mm256_maskstore_ps(p, masks[h], perspective[h]);
+    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, so
+    // every element written (`index + k`, its two floats) is inside the three buffers, which
+    // have the colour buffer's length; masked stores touch no other element.
+    unsafe {
+        _mm256_maskstore_epi32(
+            uv.triangle.as_mut_ptr().add(index).cast::<i32>(),
+            pass,
+            _mm256_set1_epi32(uv.source as i32),
+        );
+        let a = uv.uv_affine.as_mut_ptr().add(index).cast::<f32>();
+        let p = uv.uv_perspective.as_mut_ptr().add(index).cast::<f32>();
+        for h in 0..2 {
+            _mm256_maskstore_ps(a.add(8 * h), masks[h], affine[h]);
+            _mm256_maskstore_ps(p.add(8 * h), masks[h], perspective[h]);
         }
     }
 }
 
-/// Depth-tests and writes eight pixels, lanes 0-3 from buffer index `at[0]` of the band and
-/// lanes 4-7 from `at[1]` (`at[0] + 4` for eight pixels of one row); lanes outside `ok` are
-/// neither read nor written. Returns the lanes that passed.
+/// Depth-tests and writes eight pixels starting at buffer index `index` of the band; lanes
+/// outside `ok` are neither read nor written. Returns the lanes that passed.
 #[inline]
 #[target_feature(enable = "avx2")]
 fn write(
     target: &mut Target<'_>,
-    at: [usize; 2],
+    index: usize,
     ok: __m256i,
     depth: __m256,
     rgba: __m256i,
 ) -> __m256i {
-    debug_assert!(target.depth.len() == target.color.len());
-    if at[1] == at[0] + 4 {
-        let index = at[0];
-        debug_assert!(index < target.depth.len());
-        // SAFETY: the caller's `ok` enables only lanes of pixels inside the band's row
-        // (columns up to the triangle's last column, which is inside the image), so every
-        // accessed element `index + k` is in both slices; masked loads and stores touch no
-        // other lane.
-        unsafe {
-            let dp = target.depth.as_mut_ptr().add(index);
-            let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
-            let old = _mm256_maskload_ps(dp, ok);
-            // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
-            let pass = _mm256_and_si256(
-                ok,
-                _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
-            );
-            _mm256_maskstore_ps(dp, pass, depth);
-            _mm256_maskstore_epi32(cp, pass, rgba);
-            return pass;
-        }
+    debug_assert!(index < target.depth.len() && target.depth.len() == target.color.len());
+    // SAFETY: the caller's `ok` enables only lanes of pixels inside the band's row (columns
+    // up to the triangle's last column, which is inside the image), so every accessed
+    // element `index + k` is in both slices; masked loads and stores touch no other lane.
+    unsafe {
+        let dp = target.depth.as_mut_ptr().add(index);
+        let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
+        let old = _mm256_maskload_ps(dp, ok);
+        // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
+        let pass = _mm256_and_si256(
+            ok,
+            _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
+        );
+        _mm256_maskstore_ps(dp, pass, depth);
+        _mm256_maskstore_epi32(cp, pass, rgba);
+        pass
     }
-    // Two runs of four: each half tested and written at its own index, the same operations.
-    let bits = _mm256_movemask_ps(_mm256_castsi256_ps(ok));
-    let halves = [
-        (
-            _mm256_castsi256_si128(ok),
-            _mm256_castps256_ps128(depth),
-            _mm256_castsi256_si128(rgba),
-        ),
-        (
-            _mm256_extracti128_si256::<1>(ok),
-            _mm256_extractf128_ps::<1>(depth),
-            _mm256_extracti128_si256::<1>(rgba),
-        ),
-    ];
-    let mut pass = [_mm_setzero_si128(); 2];
-    for (h, &(ok, depth, rgba)) in halves.iter().enumerate() {
-        // A half with no lane to write is skipped: its index may lie past the band.
-        if (bits >> (4 * h)) & 0xf == 0 {
-            continue;
-        }
-        let index = at[h];
-        debug_assert!(index < target.depth.len());
-        // SAFETY: as above, for the four pixels of this half (`ok` enables only pixels inside
-        // the band's rows); a half without enabled lanes is not addressed at all.
-        unsafe {
-            let dp = target.depth.as_mut_ptr().add(index);
-            let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
-            let old = _mm_maskload_ps(dp, ok);
-            let p = _mm_and_si128(ok, _mm_castps_si128(_mm_cmp_ps::<_CMP_LT_OQ>(depth, old)));
-            _mm_maskstore_ps(dp, p, depth);
-            _mm_maskstore_epi32(cp, p, rgba);
-            pass[h] = p;
-        }
-    }
-    _mm256_set_m128i(pass[1], pass[0])
 }
 
 /// An eight-lane mask from the low eight bits of `bits`.
@@ -277,25 +220,14 @@ fn dot3(w: &[__m256d; 3], x: [f64; 3]) -> __m256d {
 #[inline]
 #[target_feature(enable = "avx2")]
 fn weights4(w: &WeightPlanes, row: &[f64; 3], px: __m256d) -> [__m256d; 3] {
-    // Written out, not with a closure (which would not take the target features, so its
-    // vector arguments would go through memory).
-    [
-        weight4(w, row, px, 0),
-        weight4(w, row, px, 1),
-        weight4(w, row, px, 2),
-    ]
-}
-
-/// Weight `i` of [`weights4`].
-#[inline]
-#[target_feature(enable = "avx2")]
-fn weight4(w: &WeightPlanes, row: &[f64; 3], px: __m256d, i: usize) -> __m256d {
-    let dx = _mm256_sub_pd(px, _mm256_set1_pd(w.start[i].x));
-    let t = _mm256_sub_pd(
-        _mm256_set1_pd(row[i]),
-        _mm256_mul_pd(_mm256_set1_pd(w.dir[i].y), dx),
-    );
-    _mm256_mul_pd(t, _mm256_set1_pd(w.inv_area2))
+    [0, 1, 2].map(|i| {
+        let dx = _mm256_sub_pd(px, _mm256_set1_pd(w.start[i].x));
+        let t = _mm256_sub_pd(
+            _mm256_set1_pd(row[i]),
+            _mm256_mul_pd(_mm256_set1_pd(w.dir[i].y), dx),
+        );
+        _mm256_mul_pd(t, _mm256_set1_pd(w.inv_area2))
+    })
 }
 
 /// uv, depth (f64 lanes) and the validity bits of four samples from their screen weights, as
@@ -484,9 +416,7 @@ fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
 }
 
 /// The edge-function lane path (see the parent module): every [`LaneColor`], with the
-/// wireframe. A triangle at most four pixels wide (most triangles of a dense mesh) is drawn
-/// two rows at a time, four pixels of each row in one register ([`narrow_triangle`]); every
-/// pixel's value is computed by the same operations either way.
+/// wireframe.
 #[target_feature(enable = "avx2")]
 pub(super) fn edge_triangle(
     tri: &LaneTriangle,
@@ -496,84 +426,15 @@ pub(super) fn edge_triangle(
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
+    let (mode, color) = (shading.mode, shading.color);
     let mut lookups = sampler.map(|s| Lookups::new(s, wide));
+    let planes = &tri.planes;
+    let consts = &tri.consts;
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
-    if x1 - x0 < NARROW && y_end > y_start {
-        narrow_triangle(tri, (y_start, y_end), shading, &mut lookups, target);
-    } else {
-        block_triangle(tri, (y_start, y_end), shading, &mut lookups, target);
-    }
-    if let Some(l) = lookups.as_mut() {
-        l.flush(target);
-    }
-}
-
-/// Triangles narrower than this many pixels take [`narrow_triangle`].
-const NARROW: u32 = 4;
-
-/// The lanes' column offsets 0..3 and 4..7.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn lane_offsets() -> [__m256d; 2] {
-    [
-        _mm256_setr_pd(0.0, 1.0, 2.0, 3.0),
-        _mm256_setr_pd(4.0, 5.0, 6.0, 7.0),
-    ]
-}
-
-/// Edge values at four pixels of row `row` from column `col`, exact integers in `f64`
-/// lanes: `E(row, col) + a k`.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn edge_values(tri: &LaneTriangle, row: u32, col: u32, offset: __m256d) -> [__m256d; 3] {
-    // No closures here: a closure does not take the function's target features, and a call
-    // with vector arguments per row costs more than the arithmetic.
-    let base = tri.planes.at(i64::from(row), i64::from(col));
-    let a = &tri.planes.a;
-    let value = |i: usize| (base[i] as f64, a[i] as f64);
-    let (b0, a0) = value(0);
-    let (b1, a1) = value(1);
-    let (b2, a2) = value(2);
-    [
-        _mm256_add_pd(_mm256_set1_pd(b0), _mm256_mul_pd(_mm256_set1_pd(a0), offset)),
-        _mm256_add_pd(_mm256_set1_pd(b1), _mm256_mul_pd(_mm256_set1_pd(a1), offset)),
-        _mm256_add_pd(_mm256_set1_pd(b2), _mm256_mul_pd(_mm256_set1_pd(a2), offset)),
-    ]
-}
-
-/// The lanes (bit k for lane k) of four edge values that pass every edge.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn inside_bits(tri: &LaneTriangle, e: &[__m256d; 3]) -> i32 {
-    let t = &tri.planes.t;
-    let t = [
-        _mm256_set1_pd(t[0] as f64),
-        _mm256_set1_pd(t[1] as f64),
-        _mm256_set1_pd(t[2] as f64),
-    ];
-    let m = _mm256_and_pd(
-        _mm256_and_pd(
-            _mm256_cmp_pd::<_CMP_GE_OQ>(e[0], t[0]),
-            _mm256_cmp_pd::<_CMP_GE_OQ>(e[1], t[1]),
-        ),
-        _mm256_cmp_pd::<_CMP_GE_OQ>(e[2], t[2]),
-    );
-    _mm256_movemask_pd(m)
-}
-
-/// The bounding box in blocks of [`LANES`] x [`BLOCK_ROWS`] pixels, each rejected or accepted
-/// whole by its corners, then eight pixels of a row at a time.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn block_triangle(
-    tri: &LaneTriangle,
-    (y_start, y_end): (u32, u32),
-    shading: &LaneShading,
-    lookups: &mut Option<Lookups<'_, '_>>,
-    target: &mut Target<'_>,
-) {
-    let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
-    let [lane_lo, lane_hi] = lane_offsets();
+    let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+    let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
+    let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
+    let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
     let mut by = y_start;
     while by <= y_end {
         let by_end = (by + BLOCK_ROWS - 1).min(y_end);
@@ -581,7 +442,7 @@ fn block_triangle(
         while bx <= x1 {
             let bx_end = bx + LANES as u32 - 1;
             let block = classify(
-                &tri.planes,
+                planes,
                 (i64::from(bx), i64::from(bx_end)),
                 (i64::from(by), i64::from(by_end)),
             );
@@ -589,15 +450,59 @@ fn block_triangle(
                 let lanes_in = (x1 - bx + 1).min(LANES as u32);
                 let in_row = (1i32 << lanes_in) - 1;
                 for y in by..=by_end {
+                    let base = planes.at(i64::from(y), i64::from(bx));
+                    let mut lo = [_mm256_setzero_pd(); 3];
+                    let mut hi = [_mm256_setzero_pd(); 3];
+                    for i in 0..3 {
+                        let b = _mm256_set1_pd(base[i] as f64);
+                        lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
+                        hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
+                    }
                     let covered = if block == Block::Inside {
                         in_row
                     } else {
-                        let lo = edge_values(tri, y, bx, lane_lo);
-                        let hi = edge_values(tri, y, bx, lane_hi);
-                        (inside_bits(tri, &lo) | (inside_bits(tri, &hi) << 4)) & in_row
+                        let pass = |e: &[__m256d; 3]| {
+                            let m = _mm256_and_pd(
+                                _mm256_and_pd(
+                                    _mm256_cmp_pd::<_CMP_GE_OQ>(e[0], t[0]),
+                                    _mm256_cmp_pd::<_CMP_GE_OQ>(e[1], t[1]),
+                                ),
+                                _mm256_cmp_pd::<_CMP_GE_OQ>(e[2], t[2]),
+                            );
+                            _mm256_movemask_pd(m)
+                        };
+                        (pass(&lo) | (pass(&hi) << 4)) & in_row
                     };
-                    if covered != 0 {
-                        shade_chunk(tri, covered, [(y, bx), (y, bx + 4)], shading, lookups, target);
+                    if covered == 0 {
+                        continue;
+                    }
+                    let py = f64::from(y) + 0.5;
+                    let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
+                    let px = _mm256_set1_pd(f64::from(bx) + 0.5);
+                    let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
+                    let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
+                    let lo = from_weights4(lo, consts, mode, color);
+                    let hi = from_weights4(hi, consts, mode, color);
+                    let ok = covered & (lo.ok | (hi.ok << 4));
+                    if ok == 0 {
+                        continue;
+                    }
+                    let chunk = Pending {
+                        u: to_f32(lo.u, hi.u),
+                        v: to_f32(lo.v, hi.v),
+                        depth: to_f32(lo.depth, hi.depth),
+                        valid: mask_from_bits(ok),
+                        wire: lo.wire | (hi.wire << 4),
+                        halo: lo.halo | (hi.halo << 4),
+                        index: (y - target.y0) as usize * target.width as usize + bx as usize,
+                        both_uv: lo
+                            .both_uv
+                            .zip(hi.both_uv)
+                            .map(|(l, h)| [0, 1, 2, 3].map(|j| to_f32(l[j], h[j]))),
+                    };
+                    match lookups.as_mut() {
+                        Some(l) if color == LaneColor::Texture => l.push(target, chunk),
+                        _ => finish(target, &chunk, channel_colors(&lo, &hi, color)),
                     }
                 }
             }
@@ -605,92 +510,8 @@ fn block_triangle(
         }
         by = by_end + 1;
     }
-}
-
-/// A triangle less than [`NARROW`] pixels wide: rows `y` and `y + 1` together, the four
-/// columns from the bounds' first in lanes 0-3 (row `y`) and 4-7 (row `y + 1`). No block
-/// test: the pixels are tested one by one.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn narrow_triangle(
-    tri: &LaneTriangle,
-    (y_start, y_end): (u32, u32),
-    shading: &LaneShading,
-    lookups: &mut Option<Lookups<'_, '_>>,
-    target: &mut Target<'_>,
-) {
-    let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
-    let [lane_lo, _] = lane_offsets();
-    let in_half = (1i32 << (x1 - x0 + 1)) - 1;
-    let mut y = y_start;
-    while y <= y_end {
-        let second = y < y_end;
-        let mut covered = inside_bits(tri, &edge_values(tri, y, x0, lane_lo)) & in_half;
-        if second {
-            covered |= (inside_bits(tri, &edge_values(tri, y + 1, x0, lane_lo)) & in_half) << 4;
-        }
-        if covered != 0 {
-            shade_chunk(tri, covered, [(y, x0), (y + 1, x0)], shading, lookups, target);
-        }
-        y += 2;
-    }
-}
-
-/// [`WeightPlanes::row_term`] of the three weights at the centres of row `y`.
-#[inline(always)]
-fn row_terms(w: &WeightPlanes, y: u32) -> [f64; 3] {
-    let py = f64::from(y) + 0.5;
-    [w.row_term(0, py), w.row_term(1, py), w.row_term(2, py)]
-}
-
-/// Interpolates, shades and writes the `covered` lanes of one chunk: lanes 0-3 are the four
-/// pixels of row `at[0].0` from column `at[0].1`, lanes 4-7 those of row `at[1].0` from
-/// column `at[1].1` (eight pixels of one row, or four of two rows).
-#[inline]
-#[target_feature(enable = "avx2")]
-fn shade_chunk(
-    tri: &LaneTriangle,
-    covered: i32,
-    at: [(u32, u32); 2],
-    shading: &LaneShading,
-    lookups: &mut Option<Lookups<'_, '_>>,
-    target: &mut Target<'_>,
-) {
-    let (mode, color) = (shading.mode, shading.color);
-    let consts = &tri.consts;
-    let [lane_lo, _] = lane_offsets();
-    let row_lo = row_terms(&consts.weights, at[0].0);
-    let row_hi = if at[1].0 == at[0].0 {
-        row_lo
-    } else {
-        row_terms(&consts.weights, at[1].0)
-    };
-    let px_lo = _mm256_add_pd(_mm256_set1_pd(f64::from(at[0].1) + 0.5), lane_lo);
-    let px_hi = _mm256_add_pd(_mm256_set1_pd(f64::from(at[1].1) + 0.5), lane_lo);
-    let lo = from_weights4(weights4(&consts.weights, &row_lo, px_lo), consts, mode, color);
-    let hi = from_weights4(weights4(&consts.weights, &row_hi, px_hi), consts, mode, color);
-    let ok = covered & (lo.ok | (hi.ok << 4));
-    if ok == 0 {
-        return;
-    }
-    let row_start = |y: u32| (y - target.y0) as usize * target.width as usize;
-    let chunk = Pending {
-        u: to_f32(lo.u, hi.u),
-        v: to_f32(lo.v, hi.v),
-        depth: to_f32(lo.depth, hi.depth),
-        valid: mask_from_bits(ok),
-        wire: lo.wire | (hi.wire << 4),
-        halo: lo.halo | (hi.halo << 4),
-        index: row_start(at[0].0) + at[0].1 as usize,
-        index_hi: row_start(at[1].0) + at[1].1 as usize,
-        both_uv: lo
-            .both_uv
-            .zip(hi.both_uv)
-            .map(|(l, h)| [0, 1, 2, 3].map(|j| to_f32(l[j], h[j]))),
-    };
-    match lookups.as_mut() {
-        Some(l) if color == LaneColor::Texture => l.push(target, chunk),
-        _ => finish(target, &chunk, channel_colors(&lo, &hi, color)),
+    if let Some(l) = lookups.as_mut() {
+        l.flush(target);
     }
 }
 
@@ -766,7 +587,6 @@ pub(super) fn scanline_triangle(
                     wire: 0,
                     halo: 0,
                     index: row + x as usize,
-                    index_hi: row + x as usize + 4,
                     both_uv: None,
                 };
                 lookups.push(target, chunk);
