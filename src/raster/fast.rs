@@ -9,7 +9,7 @@
 //!    position, depth, 1/w, and whether it is inside every clipping plane), shared by the
 //!    triangles that use it;
 //! 2. a triangle whose three vertices are inside every plane (most of a mesh) becomes a
-//!    [`Slot::Whole`] of 28 bytes: its corners and pixel bounds; the rare triangle the
+//!    [`Slot::Whole`] of 20 bytes: its corners and the rows it can reach; the rare triangle the
 //!    clipper cuts is prepared as the full render prepares it ([`Slot::Clipped`]);
 //! 3. each band of rows rebuilds the set-up triangle of a whole triangle where it draws it,
 //!    with the same functions ([`project_vertex`]'s values, [`setup_triangle_with`]), so the
@@ -29,9 +29,7 @@ use super::project::{Viewport, WindowVertex, ndc_from_clip, project_vertex};
 use super::render::{
     Rasterizer, draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply,
 };
-use super::setup::{
-    PixelBounds, TieRule, TriangleSetup, setup_bounds, setup_triangle_with, triangle_geometry,
-};
+use super::setup::{TieRule, TriangleSetup, setup_bounds, setup_triangle_with, triangle_geometry};
 use super::shade::ShadeParams;
 use super::texture::Texture;
 use super::varying::Varyings;
@@ -70,22 +68,25 @@ impl ProjectedVertex {
     }
 }
 
-/// What the fast path keeps of one source triangle.
-#[derive(Clone, Debug)]
+/// What the fast path keeps of one source triangle (20 bytes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Slot {
     /// Nothing to draw: a bad index, a NaN or infinite coordinate, zero area, off screen, or
     /// clipped away.
     Skip,
     /// Inside every clipping plane: the corners (indices into the mesh's vertices) and the
-    /// pixel bounds; the set-up triangle is rebuilt where it is drawn.
+    /// first and last image row its pixels can lie on (for binning); the set-up triangle,
+    /// with its bounds, is rebuilt where it is drawn.
     Whole {
         /// The source triangle's vertex indices.
         corners: [u32; 3],
-        /// Pixels whose centres can be covered.
-        bounds: PixelBounds,
+        /// First and last row of its pixel bounds (rows fit in 16 bits: images are at most
+        /// [`MAX_IMAGE_SIZE`](super::project::MAX_IMAGE_SIZE) high).
+        rows: [u16; 2],
     },
-    /// Cut by the clipper: prepared as the full render prepares it.
-    Clipped(Box<PreparedTriangle>),
+    /// Cut by the clipper: prepared as the full render prepares it, kept in
+    /// [`FastMesh::clipped`] at this index.
+    Clipped(u32),
 }
 
 /// A mesh prepared for the fast path: the projected vertices and one [`Slot`] per source
@@ -98,6 +99,8 @@ pub struct FastMesh<'m> {
     pub vertices: Vec<ProjectedVertex>,
     /// One per source triangle.
     pub slots: Vec<Slot>,
+    /// The triangles the clipper cut (few), as [`Slot::Clipped`] indexes them.
+    pub clipped: Vec<PreparedTriangle>,
 }
 
 /// Vertices or triangles one parallel task handles at least (small meshes stay on one
@@ -110,13 +113,13 @@ impl<'m> FastMesh<'m> {
     pub fn prepare(mesh: &'m ClipMesh, viewport: Viewport, rule: TieRule) -> Self {
         use rayon::prelude::*;
         let planes = planes(viewport.guard_band_ndc());
-        let (mut vertices, mut slots) = SCRATCH.with(|s| {
-            let mut s = s.borrow_mut();
+        let (mut vertices, mut slots) = {
+            let mut s = scratch();
             (
                 std::mem::take(&mut s.vertices),
                 std::mem::take(&mut s.slots),
             )
-        });
+        };
         // A much larger mesh drawn before gives its memory back.
         if vertices.capacity() > 4 * mesh.vertices.len().max(KEEP_AT_LEAST) {
             vertices = Vec::new();
@@ -135,16 +138,39 @@ impl<'m> FastMesh<'m> {
             rule,
             vertices,
             slots: Vec::new(),
+            clipped: Vec::new(),
         };
+        // First pass: whole triangles get their slot; the few the clipper cuts are marked
+        // and prepared after, in order.
         (0..mesh.triangles.len() as u32)
             .into_par_iter()
             .with_min_len(CHUNK)
             .map(|i| out.slot(i))
             .collect_into_vec(&mut slots);
+        let cut: Vec<u32> = slots
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| **s == CUT)
+            .map(|(i, _)| i as u32)
+            .collect();
+        let prepared: Vec<PreparedTriangle> = cut
+            .par_iter()
+            .map(|&i| prepare_triangle_with(mesh, i, viewport, rule))
+            .collect();
+        for (i, p) in cut.into_iter().zip(prepared) {
+            slots[i as usize] = if p.setups.is_empty() {
+                Slot::Skip
+            } else {
+                out.clipped.push(p);
+                Slot::Clipped(out.clipped.len() as u32 - 1)
+            };
+        }
         out.slots = slots;
         out
     }
 
+    /// The slot of a triangle inside every plane, [`Slot::Skip`], or [`CUT`] for one the
+    /// clipper must cut.
     fn slot(&self, index: u32) -> Slot {
         let Some(corners) = self.mesh.triangles.get(index as usize).copied() else {
             return Slot::Skip;
@@ -154,16 +180,15 @@ impl<'m> FastMesh<'m> {
         };
         if p.iter().all(|v| v.inside) {
             return match setup_bounds(p.map(|v| v.fixed), self.viewport) {
-                Some(bounds) => Slot::Whole { corners, bounds },
+                Some(b) => Slot::Whole {
+                    corners,
+                    // The bounds lie inside the image, at most MAX_IMAGE_SIZE rows.
+                    rows: [b.y0 as u16, b.y1 as u16],
+                },
                 None => Slot::Skip,
             };
         }
-        let prepared = prepare_triangle_with(self.mesh, index, self.viewport, self.rule);
-        if prepared.setups.is_empty() {
-            Slot::Skip
-        } else {
-            Slot::Clipped(Box::new(prepared))
-        }
+        CUT
     }
 
     fn projected(&self, corners: [u32; 3]) -> Option<[&ProjectedVertex; 3]> {
@@ -259,12 +284,13 @@ impl<'m> FastMesh<'m> {
                         }
                     }
                 }
-                Slot::Clipped(t) => {
-                    for s in &t.setups {
-                        for v in &s.v {
-                            add(v.depth);
-                        }
-                    }
+                Slot::Clipped(_) => {}
+            }
+        }
+        for t in &self.clipped {
+            for s in &t.setups {
+                for v in &s.v {
+                    add(v.depth);
                 }
             }
         }
@@ -275,13 +301,13 @@ impl<'m> FastMesh<'m> {
     /// order, as `(source triangle, set-up index)`.
     fn bins(&self, height: u32, rows_per_band: u32) -> Vec<Vec<(u32, u32)>> {
         let bands = height.div_ceil(rows_per_band).max(1) as usize;
-        let mut bins = SCRATCH.with(|s| std::mem::take(&mut s.borrow_mut().bins));
+        let mut bins = std::mem::take(&mut scratch().bins);
         bins.resize_with(bands, Vec::new);
         bins.truncate(bands);
         bins.iter_mut().for_each(Vec::clear);
-        let mut add = |ti: usize, si: usize, b: &PixelBounds| {
-            let first = (b.y0 / rows_per_band) as usize;
-            let last = ((b.y1 / rows_per_band) as usize).min(bands - 1);
+        let mut add = |ti: usize, si: usize, y0: u32, y1: u32| {
+            let first = (y0 / rows_per_band) as usize;
+            let last = ((y1 / rows_per_band) as usize).min(bands - 1);
             for bin in bins.iter_mut().take(last + 1).skip(first) {
                 bin.push((ti as u32, si as u32));
             }
@@ -289,10 +315,12 @@ impl<'m> FastMesh<'m> {
         for (ti, slot) in self.slots.iter().enumerate() {
             match slot {
                 Slot::Skip => {}
-                Slot::Whole { bounds, .. } => add(ti, 0, bounds),
-                Slot::Clipped(t) => {
-                    for (si, s) in t.setups.iter().enumerate() {
-                        add(ti, si, &s.bounds);
+                Slot::Whole { rows, .. } => add(ti, 0, rows[0].into(), rows[1].into()),
+                Slot::Clipped(c) => {
+                    if let Some(t) = self.clipped.get(*c as usize) {
+                        for (si, s) in t.setups.iter().enumerate() {
+                            add(ti, si, s.bounds.y0, s.bounds.y1);
+                        }
                     }
                 }
             }
@@ -370,15 +398,19 @@ impl<'m> FastMesh<'m> {
                                 rasterize(&setup, ti, texture, params, rasterizer, &mut band);
                             }
                         }
-                        Slot::Clipped(t) => {
-                            if let Some(setup) = t.setups.get(si as usize) {
+                        Slot::Clipped(c) => {
+                            if let Some(setup) = self
+                                .clipped
+                                .get(*c as usize)
+                                .and_then(|t| t.setups.get(si as usize))
+                            {
                                 rasterize(setup, ti, texture, params, rasterizer, &mut band);
                             }
                         }
                     }
                 }
             });
-        SCRATCH.with(|s| s.borrow_mut().bins = bins);
+        scratch().bins = bins;
     }
 }
 
@@ -388,20 +420,19 @@ impl Drop for FastMesh<'_> {
         let mut slots = std::mem::take(&mut self.slots);
         slots.clear();
         let vertices = std::mem::take(&mut self.vertices);
-        SCRATCH.with(|s| {
-            let mut s = s.borrow_mut();
-            s.vertices = vertices;
-            s.slots = slots;
-        });
+        let mut s = scratch();
+        s.vertices = vertices;
+        s.slots = slots;
     }
 }
 
 /// Vertices and triangles the kept vectors may hold whatever the mesh.
 const KEEP_AT_LEAST: usize = 1 << 16;
 
-/// The fast path's vectors, kept from one frame to the next on the thread that renders: a
-/// dense mesh's tens of megabytes are then not taken from the system (and zeroed by it) again
-/// every frame.
+/// The fast path's vectors, kept from one frame to the next: a dense mesh's tens of megabytes
+/// are then not taken from the system (and zeroed by it) again every frame. One set for the
+/// process, not one per thread: whichever thread renders next takes it (a render running
+/// at the same time as another finds it empty and allocates its own).
 #[derive(Default)]
 struct Scratch {
     vertices: Vec<ProjectedVertex>,
@@ -409,9 +440,22 @@ struct Scratch {
     bins: Vec<Vec<(u32, u32)>>,
 }
 
-thread_local! {
-    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::default();
+static SCRATCH: std::sync::Mutex<Scratch> = std::sync::Mutex::new(Scratch {
+    vertices: Vec::new(),
+    slots: Vec::new(),
+    bins: Vec::new(),
+});
+
+/// The kept vectors (a poisoned lock only means a render panicked; its vectors are still
+/// vectors).
+fn scratch() -> std::sync::MutexGuard<'static, Scratch> {
+    SCRATCH
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
+
+/// A slot's marker, during [`FastMesh::prepare`], for a triangle the clipper must cut.
+const CUT: Slot = Slot::Clipped(u32::MAX);
 
 /// How many triangles ahead in a band's list the slot is prefetched.
 const PREFETCH_SLOTS: usize = 8;
@@ -432,4 +476,15 @@ fn prefetch<T>(value: Option<&T>) {
     }
     #[cfg(not(target_arch = "x86_64"))]
     let _ = value;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The per-triangle record stays compact (a million triangles: 20 MB).
+    #[test]
+    fn a_slot_is_twenty_bytes() {
+        assert_eq!(size_of::<Slot>(), 20);
+    }
 }
