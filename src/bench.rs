@@ -230,9 +230,9 @@ pub fn draw_view(
         View::Single => draw_frame(a, mesh, texture, settings),
         View::Side | View::Wipe => both(a, p, Buffers::ColorDepth),
         View::Difference => {
-            // As the app's canvas: one render in the configuration's mode that keeps the uv
-            // of both modes, then the heatmap.
-            raster::render_into(a, mesh, texture, settings, Buffers::ColorDepthUv)?;
+            // As the app's canvas: one render in the configuration's mode that keeps the
+            // texel difference of the two uvs, then the heatmap.
+            raster::render_into(a, mesh, texture, settings, Buffers::ColorDepthDifference)?;
             heatmap::heatmap_into(a, (texture.width(), texture.height()), heat);
             std::hint::black_box(&heat.pixels);
             Ok(())

@@ -200,6 +200,7 @@ pub fn framebuffer_bytes_per_pixel(buffers: Buffers) -> u64 {
         + per(f.uv_affine.len(), size_of::<[f32; 2]>())
         + per(f.uv_perspective.len(), size_of::<[f32; 2]>())
         + per(f.inv_w.len(), size_of::<f32>())
+        + per(f.texel_difference.len(), size_of::<f32>())
 }
 
 /// What a render of `width` x `height` with `buffers` of a mesh with `vertices` and

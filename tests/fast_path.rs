@@ -9,6 +9,7 @@ mod common;
 use barylab::raster::lanes::{VectorLevel, set_vector_level};
 use barylab::raster::render::{ClipMesh, Rasterizer, RenderSettings, render, render_into};
 use barylab::raster::setup::TieRule;
+use barylab::raster::texture::texel_difference;
 use barylab::raster::{
     Buffers, BuiltinTexture, Filter, Framebuffer, Interpolation, Shading, Texture, Wrap,
 };
@@ -93,6 +94,28 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
             bad.map(|i| (i % reference.width as usize, i / reference.width as usize)),
             None,
             "{what}, vector level {vector:?}: uv buffers differ at (x, y)"
+        );
+        // The difference view's buffers: colour, depth and the texel difference, which is the
+        // full render's two uvs through `texel_difference` (NaN where nothing is drawn).
+        set_vector_level(vector);
+        render_into(&mut frame, mesh, tex, s, Buffers::ColorDepthDifference).expect("render");
+        set_vector_level(VectorLevel::Avx512);
+        assert!(frame.triangle.is_empty() && frame.uv_affine.is_empty());
+        let size = (tex.width(), tex.height());
+        let bad = (0..reference.color.len()).find(|&i| {
+            let expected = if reference.triangle[i] == barylab::raster::NO_TRIANGLE {
+                f32::NAN
+            } else {
+                texel_difference(reference.uv_affine[i], reference.uv_perspective[i], size)
+            };
+            frame.color[i] != reference.color[i]
+                || frame.depth[i].to_bits() != reference.depth[i].to_bits()
+                || frame.texel_difference[i].to_bits() != expected.to_bits()
+        });
+        assert_eq!(
+            bad.map(|i| (i % reference.width as usize, i / reference.width as usize)),
+            None,
+            "{what}, vector level {vector:?}: texel differences differ at (x, y)"
         );
     }
 }

@@ -125,11 +125,11 @@ impl RenderCache {
         let start = Instant::now();
         let mesh = key.scene.to_mesh();
         let base = key.scene.settings();
-        // Only the difference heatmap reads the per-pixel uv buffers (which the edge-function
-        // lanes also draw); everything else shows colour. Both are bit-identical to the full
-        // render.
+        // Only the difference heatmap reads more than colour: the texel difference of the two
+        // uvs per pixel (which the edge-function lanes also draw). Both are bit-identical to
+        // the full render.
         let buffers = if compare == Compare::Difference {
-            Buffers::ColorDepthUv
+            Buffers::ColorDepthDifference
         } else {
             Buffers::ColorDepth
         };

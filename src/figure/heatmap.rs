@@ -2,20 +2,9 @@
 //! texture coordinates of each pixel are. Reads the framebuffer (which holds both); no GUI code.
 
 use crate::raster::Framebuffer;
-use crate::raster::texture::texel_offset;
 
-/// One pixel's difference in texels: the length of [`texel_offset`],
-/// `|((u_a - u_p) W, (v_a - v_p) H)|` for a W x H texture, in `f32`.
-///
-/// ```
-/// use barylab::figure::heatmap::texel_difference;
-/// // 0.03 of a 100-texel-wide texture across, 0.04 of a 100-texel-high one down: 5 texels.
-/// let d = texel_difference([0.53, 0.54], [0.5, 0.5], (100, 100));
-/// assert!((d - 5.0).abs() < 1e-4);
-/// ```
-pub fn texel_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: (u32, u32)) -> f32 {
-    square_difference(uv_affine, uv_perspective, [size.0 as f32, size.1 as f32]).sqrt()
-}
+pub use crate::raster::texture::texel_difference;
+use crate::raster::texture::square_texel_difference as square_difference;
 
 /// A rendered heatmap and its scale.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -129,6 +118,11 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
     let covered =
         frame.triangle.len() == n && frame.uv_affine.len() == n && frame.uv_perspective.len() == n;
     let size = [texture_size.0 as f32, texture_size.1 as f32];
+    if frame.texel_difference.len() == n {
+        // The render kept the difference itself (`Buffers::ColorDepthDifference`).
+        from_differences(frame, out);
+        return;
+    }
     let max = if covered {
         frame
             .triangle
@@ -162,13 +156,6 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
     out.height = frame.height;
     out.max = max;
     out.scale_max = scale_max;
-}
-
-/// The square of [`texel_difference`] (the same operations before the square root).
-#[inline(always)]
-fn square_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: [f32; 2]) -> f32 {
-    let [du, dv] = texel_offset(uv_affine, uv_perspective, size);
-    du * du + dv * dv
 }
 
 /// Colours a run of pixels: [`heat_color`] of the difference where a triangle is drawn, the
@@ -246,6 +233,53 @@ fn largest_square(
         .fold(0.0, |x, y| if y > x { y } else { x })
 }
 
+/// [`heatmap_into`] of a framebuffer that keeps the texel difference per pixel (NaN where
+/// nothing is drawn): the same two passes over 4 bytes a pixel instead of 20.
+fn from_differences(frame: &Framebuffer, out: &mut Heatmap) {
+    use rayon::prelude::*;
+    let d = &frame.texel_difference;
+    let max = d
+        .par_chunks(HEATMAP_CHUNK)
+        .map(largest)
+        .reduce(|| 0.0f32, |x, y| if y > x { y } else { x });
+    let scale_max = nice_ceiling(max);
+    let table = heat_table();
+    out.pixels.resize(d.len(), [0; 4]);
+    out.pixels
+        .par_chunks_mut(HEATMAP_CHUNK)
+        .zip(frame.color.par_chunks(HEATMAP_CHUNK))
+        .zip(d.par_chunks(HEATMAP_CHUNK))
+        .for_each(|((o, c), d)| {
+            for ((o, c), &d) in o.iter_mut().zip(c).zip(d) {
+                *o = if d.is_nan() {
+                    [c[0] / 2, c[1] / 2, c[2] / 2, c[3]]
+                } else {
+                    table[heat_index(d, scale_max)]
+                };
+            }
+        });
+    out.width = frame.width;
+    out.height = frame.height;
+    out.max = max;
+    out.scale_max = scale_max;
+}
+
+/// The largest of some differences (0 when none; NaN, where nothing is drawn, is passed
+/// over), in eight independent lanes so that it vectorizes.
+fn largest(d: &[f32]) -> f32 {
+    const W: usize = 8;
+    let mut lanes = [0.0f32; W];
+    for chunk in d.chunks(W) {
+        for (l, &x) in lanes.iter_mut().zip(chunk) {
+            // `>` is false for a NaN.
+            if x > *l {
+                *l = x;
+            }
+        }
+    }
+    lanes.into_iter().fold(0.0, |x, y| if y > x { y } else { x })
+}
+
 /// Pixels one parallel task of [`heatmap`] handles at least.
 const HEATMAP_CHUNK: usize = 16 * 1024;
 
@@ -316,6 +350,14 @@ mod tests {
             };
             assert_eq!(h.pixels[i], expected, "pixel {i}");
         }
+        // A render that keeps only the texel difference gives the same heatmap.
+        let mut fast = crate::raster::Framebuffer::new(0, 0, [0; 4]);
+        let buffers = crate::raster::Buffers::ColorDepthDifference;
+        let mesh = floor.to_mesh();
+        crate::raster::render_into(&mut fast, &mesh, &texture, &floor.settings(), buffers)
+            .expect("render");
+        assert_eq!(fast.buffers(), buffers);
+        assert_eq!(heatmap(&fast, size), h);
         // Some pixels of each kind, and more than one colour.
         assert!((0..f.color.len()).any(drawn) && !(0..f.color.len()).all(drawn));
         assert!(h.pixels.iter().any(|p| *p != h.pixels[0]));

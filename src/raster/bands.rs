@@ -42,6 +42,7 @@ pub(super) struct RowBand<'a> {
     pub(super) uv_affine: &'a mut [[f32; 2]],
     pub(super) uv_perspective: &'a mut [[f32; 2]],
     pub(super) inv_w: &'a mut [f32],
+    pub(super) texel_difference: &'a mut [f32],
 }
 
 impl<'a> RowBand<'a> {
@@ -61,6 +62,7 @@ impl<'a> RowBand<'a> {
             uv_affine: &mut frame.uv_affine,
             uv_perspective: &mut frame.uv_perspective,
             inv_w: &mut frame.inv_w,
+            texel_difference: &mut frame.texel_difference,
         };
         let mut out = Vec::new();
         while rest.rows > rows_per_band {
@@ -88,6 +90,7 @@ impl<'a> RowBand<'a> {
         self.uv_affine.fill([0.0; 2]);
         self.uv_perspective.fill([0.0; 2]);
         self.inv_w.fill(0.0);
+        self.texel_difference.fill(f32::NAN);
     }
 
     /// The first `rows` rows and the remainder.
@@ -107,6 +110,7 @@ impl<'a> RowBand<'a> {
         let (ua, ua_t) = cut(self.uv_affine, n);
         let (up, up_t) = cut(self.uv_perspective, n);
         let (iw, iw_t) = cut(self.inv_w, n);
+        let (td, td_t) = cut(self.texel_difference, n);
         (
             RowBand {
                 y0: self.y0,
@@ -121,6 +125,7 @@ impl<'a> RowBand<'a> {
                 uv_affine: ua,
                 uv_perspective: up,
                 inv_w: iw,
+                texel_difference: td,
             },
             RowBand {
                 y0: self.y0 + rows,
@@ -135,6 +140,7 @@ impl<'a> RowBand<'a> {
                 uv_affine: ua_t,
                 uv_perspective: up_t,
                 inv_w: iw_t,
+                texel_difference: td_t,
             },
         )
     }

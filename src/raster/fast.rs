@@ -350,7 +350,8 @@ impl<'m> FastMesh<'m> {
             .zip(&bins)
             .for_each(|(mut band, bin)| {
                 band.clear(background);
-                let uvs = !band.uv_affine.is_empty();
+                // Both uvs, for the uv buffers or the texel difference.
+                let uvs = !band.uv_affine.is_empty() || !band.texel_difference.is_empty();
                 let lanes = shading.filter(|s| {
                     !band.has_aovs()
                         && match rasterizer {

@@ -31,9 +31,12 @@ pub enum Buffers {
     /// Colour and depth only; the other buffers are left empty (the fast path for display
     /// and benchmarks).
     ColorDepth,
-    /// Colour, depth, the triangle and uv both ways: what the difference heatmap reads. The
+    /// Colour, depth, the triangle and uv both ways (what the GPU comparison reads). The
     /// edge-function lanes draw it (the weights, facing and 1/w buffers are left empty).
     ColorDepthUv,
+    /// Colour, depth and the texel difference of the two uvs per pixel: what the difference
+    /// heatmap reads, 4 bytes a pixel instead of the 20 of the triangle and two uv pairs.
+    ColorDepthDifference,
 }
 
 /// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold the
@@ -66,6 +69,11 @@ pub struct Framebuffer {
     pub uv_perspective: Vec<[f32; 2]>,
     /// 1/w interpolated linearly on screen.
     pub inv_w: Vec<f32>,
+    /// How far apart the affine and the perspective-correct uv are, in texels of the texture
+    /// drawn ([`texel_difference`](super::texture::texel_difference)); NaN where no triangle
+    /// is drawn. Only with [`Buffers::ColorDepthDifference`] (empty otherwise: the other
+    /// buffer sets keep both uvs).
+    pub texel_difference: Vec<f32>,
 }
 
 impl Framebuffer {
@@ -99,6 +107,16 @@ impl Framebuffer {
                     ..Self::new(0, 0, background)
                 };
             }
+            Buffers::ColorDepthDifference => {
+                return Self {
+                    width,
+                    height,
+                    color: vec![background; n],
+                    depth: vec![1.0; n],
+                    texel_difference: vec![f32::NAN; n],
+                    ..Self::new(0, 0, background)
+                };
+            }
             Buffers::All => {}
         }
         Self {
@@ -113,6 +131,7 @@ impl Framebuffer {
             uv_affine: vec![[0.0; 2]; n],
             uv_perspective: vec![[0.0; 2]; n],
             inv_w: vec![0.0; n],
+            texel_difference: Vec::new(),
         }
     }
 
@@ -125,6 +144,8 @@ impl Framebuffer {
     pub fn buffers(&self) -> Buffers {
         if self.weights_screen.len() == self.color.len() {
             Buffers::All
+        } else if self.texel_difference.len() == self.color.len() && !self.color.is_empty() {
+            Buffers::ColorDepthDifference
         } else if self.uv_affine.len() == self.color.len() {
             Buffers::ColorDepthUv
         } else {

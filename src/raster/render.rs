@@ -7,7 +7,7 @@
 
 use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 use super::interpolate::{self, Fragment, Interpolation};
-use super::lanes::{self, LaneShading, Target, UvTarget};
+use super::lanes::{self, DifferenceTarget, LaneShading, Target, UvTarget};
 use super::project::{MAX_IMAGE_SIZE, Viewport};
 use super::setup::{Facing, TieRule, TriangleSetup, sample_point};
 use super::shade::{ShadeParams, Shading, shade};
@@ -144,7 +144,8 @@ pub fn render(
 /// settings' size, given `buffers`, cleared to the background and drawn, with the same pixels
 /// as [`render`]. It keeps no per-triangle record: every vertex is projected once and each
 /// triangle's set-up is rebuilt where it is drawn (module `fast`), so dense meshes need little
-/// memory. With [`Buffers::ColorDepth`] or [`Buffers::ColorDepthUv`] the lane path
+/// memory. With [`Buffers::ColorDepth`], [`Buffers::ColorDepthUv`] or
+/// [`Buffers::ColorDepthDifference`] the lane path
 /// ([`lanes`](mod@super::lanes)) draws whatever it can.
 pub fn render_into(
     frame: &mut Framebuffer,
@@ -201,7 +202,10 @@ fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
     frame.color.resize(n, [0; 4]);
     frame.depth.resize(n, 1.0);
     let aov = if buffers == Buffers::All { n } else { 0 };
-    let uv = if buffers == Buffers::ColorDepth { 0 } else { n };
+    let uv = match buffers {
+        Buffers::All | Buffers::ColorDepthUv => n,
+        Buffers::ColorDepth | Buffers::ColorDepthDifference => 0,
+    };
     frame.triangle.resize(uv, NO_TRIANGLE);
     frame.facing.resize(aov, Facing::Front);
     frame.weights_screen.resize(aov, [0.0; 3]);
@@ -209,6 +213,12 @@ fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
     frame.uv_affine.resize(uv, [0.0; 2]);
     frame.uv_perspective.resize(uv, [0.0; 2]);
     frame.inv_w.resize(aov, 0.0);
+    let diff = if buffers == Buffers::ColorDepthDifference {
+        n
+    } else {
+        0
+    };
+    frame.texel_difference.resize(diff, f32::NAN);
 }
 
 /// The shading parameters of a render: the settings plus the depth range of the drawn
@@ -293,10 +303,11 @@ pub(super) fn lane_shading(params: &ShadeParams) -> Option<LaneShading> {
     })
 }
 
-/// Where the lanes write in a band: colour and depth, and the triangle and uv buffers when
-/// the band has them.
-fn lane_target<'b>(band: &'b mut RowBand<'_>, source: u32) -> Target<'b> {
+/// Where the lanes write in a band: colour and depth, and the triangle and uv buffers or the
+/// texel-difference buffer (of `texture`'s size) when the band has them.
+fn lane_target<'b>(band: &'b mut RowBand<'_>, source: u32, texture: &Texture) -> Target<'b> {
     let uvs = !band.uv_affine.is_empty();
+    let diffs = !band.texel_difference.is_empty();
     Target {
         y0: band.y0,
         width: band.width,
@@ -307,6 +318,10 @@ fn lane_target<'b>(band: &'b mut RowBand<'_>, source: u32) -> Target<'b> {
             triangle: band.triangle,
             uv_affine: band.uv_affine,
             uv_perspective: band.uv_perspective,
+        }),
+        difference: diffs.then_some(DifferenceTarget {
+            size: [texture.width() as f32, texture.height() as f32],
+            out: band.texel_difference,
         }),
     }
 }
@@ -326,7 +341,7 @@ pub(super) fn draw_lanes(
     if band.rows == 0 || y_start > y_end {
         return;
     }
-    let mut target = lane_target(band, source);
+    let mut target = lane_target(band, source, texture);
     // With a shading, the lanes colour every covered sample themselves.
     lanes::edge_triangle(
         tri,
@@ -364,6 +379,7 @@ pub(super) fn draw_scanline_lanes(
         color: band.color,
         depth: band.depth,
         uv: None,
+        difference: None,
     };
     lanes::scanline_triangle(tri, (y_start, y_end), texture, shading, &mut target);
 }
@@ -391,6 +407,8 @@ pub(super) fn rasterize(
     };
     let aovs = band.has_aovs();
     let uvs = !band.uv_affine.is_empty();
+    let diffs = !band.texel_difference.is_empty();
+    let texels = (texture.width(), texture.height());
     // Depth test, buffers and shading: the same for both rasterizers.
     let write = |band: &mut RowBand<'_>, x: u32, y: u32, frag: &Fragment| {
         let mut frag = *frag;
@@ -405,6 +423,13 @@ pub(super) fn rasterize(
         }
         band.depth[i] = depth;
         band.color[i] = shade(&frag, texture, params, &wire);
+        if diffs {
+            band.texel_difference[i] = super::texture::texel_difference(
+                frag.affine.uv().to_array(),
+                frag.correct.uv().to_array(),
+                texels,
+            );
+        }
         if uvs {
             band.triangle[i] = source;
             band.uv_affine[i] = frag.affine.uv().to_array();
@@ -421,11 +446,11 @@ pub(super) fn rasterize(
     if !aovs {
         match (rasterizer, lane_shading) {
             (Rasterizer::EdgeFunction, shading)
-                if let Some(tri) = Some(lanes::LaneTriangle::of(setup, shading, uvs))
+                if let Some(tri) = Some(lanes::LaneTriangle::of(setup, shading, uvs || diffs))
                     .filter(lanes::LaneTriangle::exact) =>
             {
                 let mut per_pixel = Vec::new();
-                let mut target = lane_target(band, source);
+                let mut target = lane_target(band, source, texture);
                 lanes::edge_triangle(
                     &tri,
                     (y_start, y_end),
@@ -442,7 +467,9 @@ pub(super) fn rasterize(
                 }
                 return;
             }
-            (Rasterizer::Scanline, Some(shading)) if !uvs && scanline_lanes_apply(&shading) => {
+            (Rasterizer::Scanline, Some(shading))
+                if !uvs && !diffs && scanline_lanes_apply(&shading) =>
+            {
                 let tri = lanes::LaneTriangle::of(setup, Some(shading), false);
                 draw_scanline_lanes(&tri, texture, shading, band);
                 return;

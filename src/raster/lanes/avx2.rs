@@ -110,6 +110,32 @@ fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
     if let (Some(uv), Some(both)) = (target.uv.as_mut(), &chunk.both_uv) {
         store_uv(uv, chunk.index, pass, both);
     }
+    if let (Some(d), Some(both)) = (target.difference.as_mut(), &chunk.both_uv) {
+        store_difference(d, chunk.index, pass, both);
+    }
+}
+
+/// Writes the texel difference of the lanes in `pass` (eight pixels from buffer index
+/// `index` of the band): `texture::square_texel_difference`'s operations, mirrored, then the
+/// square root (IEEE `f32` operations, so bit for bit the scalar values).
+#[inline]
+#[target_feature(enable = "avx2")]
+fn store_difference(
+    d: &mut super::DifferenceTarget<'_>,
+    index: usize,
+    pass: __m256i,
+    both: &[__m256; 4],
+) {
+    debug_assert!(index < d.out.len());
+    let du = _mm256_mul_ps(_mm256_sub_ps(both[0], both[2]), _mm256_set1_ps(d.size[0]));
+    let dv = _mm256_mul_ps(_mm256_sub_ps(both[1], both[3]), _mm256_set1_ps(d.size[1]));
+    let len = _mm256_sqrt_ps(_mm256_add_ps(
+        _mm256_mul_ps(du, du),
+        _mm256_mul_ps(dv, dv),
+    ));
+    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, and
+    // the buffer has the colour buffer's length; masked stores touch no other element.
+    unsafe { _mm256_maskstore_ps(d.out.as_mut_ptr().add(index), pass, len) };
 }
 
 /// Writes the source triangle and both uvs of the lanes in `pass` (eight pixels from buffer

@@ -121,7 +121,8 @@ type Mask = [bool; LANES];
 const OFFSETS: F64s = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
 
 /// Where the lanes write: the colour and depth rows `y0..` of one band of the framebuffer, and
-/// optionally the triangle and uv both ways ([`Buffers::ColorDepthUv`]).
+/// optionally the triangle and uv both ways ([`Buffers::ColorDepthUv`]) or their texel
+/// difference ([`DifferenceTarget`]).
 ///
 /// [`Buffers::ColorDepthUv`]: super::framebuffer::Buffers::ColorDepthUv
 pub struct Target<'a> {
@@ -135,6 +136,21 @@ pub struct Target<'a> {
     pub depth: &'a mut [f32],
     /// The triangle and uv buffers, when the render keeps them.
     pub uv: Option<UvTarget<'a>>,
+    /// The texel-difference buffer, when the render keeps it.
+    pub difference: Option<DifferenceTarget<'a>>,
+}
+
+/// The texel-difference buffer of a band ([`Buffers::ColorDepthDifference`]): where a
+/// fragment passes the depth test,
+/// [`texel_difference`](super::texture::texel_difference) of its `noperspective` and
+/// `smooth` uv, with the same `f32` operations.
+///
+/// [`Buffers::ColorDepthDifference`]: super::framebuffer::Buffers::ColorDepthDifference
+pub struct DifferenceTarget<'a> {
+    /// The texture's width and height in texels.
+    pub size: [f32; 2],
+    /// One value per pixel, as `color`.
+    pub out: &'a mut [f32],
 }
 
 /// The triangle and uv buffers of a band, for the difference heatmap: where a fragment passes
@@ -570,6 +586,15 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, s: &Samples, colors: &[[u8; 4]
         if depth_passes(s.depth[k], target.depth[i]) {
             target.depth[i] = s.depth[k];
             target.color[i] = colors[k];
+            if let Some(d) = target.difference.as_mut() {
+                let b = &s.both_uv;
+                d.out[i] = crate::raster::texture::square_texel_difference(
+                    [b[0][k], b[1][k]],
+                    [b[2][k], b[3][k]],
+                    d.size,
+                )
+                .sqrt();
+            }
             if let Some(uv) = target.uv.as_mut() {
                 let b = &s.both_uv;
                 uv.triangle[i] = uv.source;

@@ -134,6 +134,32 @@ where
     [(uv_1[0] - uv_2[0]) * size[0], (uv_1[1] - uv_2[1]) * size[1]]
 }
 
+/// One pixel's difference in texels: the length of [`texel_offset`],
+/// `|((u_a - u_p) W, (v_a - v_p) H)|` for a W x H texture, in `f32`. The difference heatmap
+/// shows it; the lanes compute it with the same operations.
+///
+/// ```
+/// use barylab::raster::texture::texel_difference;
+/// // 0.03 of a 100-texel-wide texture across, 0.04 of a 100-texel-high one down: 5 texels.
+/// let d = texel_difference([0.53, 0.54], [0.5, 0.5], (100, 100));
+/// assert!((d - 5.0).abs() < 1e-4);
+/// ```
+pub fn texel_difference(uv_affine: [f32; 2], uv_perspective: [f32; 2], size: (u32, u32)) -> f32 {
+    square_texel_difference(uv_affine, uv_perspective, [size.0 as f32, size.1 as f32]).sqrt()
+}
+
+/// The square of [`texel_difference`] (the same operations before the square root), with
+/// the texture size as `f32`.
+#[inline(always)]
+pub fn square_texel_difference(
+    uv_affine: [f32; 2],
+    uv_perspective: [f32; 2],
+    size: [f32; 2],
+) -> f32 {
+    let [du, dv] = texel_offset(uv_affine, uv_perspective, size);
+    du * du + dv * dv
+}
+
 /// Largest texture side kept as is; larger images are downscaled on load.
 pub const MAX_TEXTURE_SIZE: u32 = 4096;
 
