@@ -173,7 +173,6 @@ fn color_run(
     // Steps of RUN pixels: first every step index (arithmetic only, which the compiler
     // vectorizes), then the table lookups.
     const RUN: usize = 64;
-    const NOT_DRAWN: u32 = u32::MAX;
     let table = heat_table();
     let n = out.len();
     let (color, triangle) = (&color[..n], &triangle[..n]);
@@ -250,12 +249,24 @@ fn from_differences(frame: &Framebuffer, out: &mut Heatmap) {
         .zip(frame.color.par_chunks(HEATMAP_CHUNK))
         .zip(d.par_chunks(HEATMAP_CHUNK))
         .for_each(|((o, c), d)| {
-            for ((o, c), &d) in o.iter_mut().zip(c).zip(d) {
-                *o = if d.is_nan() {
-                    [c[0] / 2, c[1] / 2, c[2] / 2, c[3]]
-                } else {
-                    table[heat_index(d, scale_max)]
-                };
+            // Runs of RUN pixels: the steps first (arithmetic only, which vectorizes), then
+            // the table lookups.
+            const RUN: usize = 64;
+            let mut step = [0u32; RUN];
+            for ((o, c), d) in o.chunks_mut(RUN).zip(c.chunks(RUN)).zip(d.chunks(RUN)) {
+                for (s, &d) in step.iter_mut().zip(d) {
+                    *s = if d.is_nan() {
+                        NOT_DRAWN
+                    } else {
+                        heat_index(d, scale_max) as u32
+                    };
+                }
+                for ((o, c), &s) in o.iter_mut().zip(c).zip(&step) {
+                    *o = match s {
+                        NOT_DRAWN => [c[0] / 2, c[1] / 2, c[2] / 2, c[3]],
+                        s => table[s as usize],
+                    };
+                }
             }
         });
     out.width = frame.width;
@@ -269,7 +280,9 @@ fn from_differences(frame: &Framebuffer, out: &mut Heatmap) {
 fn largest(d: &[f32]) -> f32 {
     const W: usize = 8;
     let mut lanes = [0.0f32; W];
-    for chunk in d.chunks(W) {
+    let chunks = d.chunks_exact(W);
+    let rest = chunks.remainder();
+    for chunk in chunks {
         for (l, &x) in lanes.iter_mut().zip(chunk) {
             // `>` is false for a NaN.
             if x > *l {
@@ -277,8 +290,16 @@ fn largest(d: &[f32]) -> f32 {
             }
         }
     }
+    for (l, &x) in lanes.iter_mut().zip(rest) {
+        if x > *l {
+            *l = x;
+        }
+    }
     lanes.into_iter().fold(0.0, |x, y| if y > x { y } else { x })
 }
+
+/// A colour step that marks a pixel where nothing is drawn.
+const NOT_DRAWN: u32 = u32::MAX;
 
 /// Pixels one parallel task of [`heatmap`] handles at least.
 const HEATMAP_CHUNK: usize = 16 * 1024;
