@@ -232,7 +232,7 @@ pub fn draw_view(
         View::Difference => {
             // As the app's canvas: one render in the configuration's mode that keeps the
             // texel difference of the two uvs, then the heatmap.
-            raster::render_into(a, mesh, texture, settings, Buffers::ColorDepthDifference)?;
+            raster::render_into(a, mesh, texture, settings, Buffers::DepthDifference)?;
             heatmap::heatmap_into(a, (texture.width(), texture.height()), heat);
             std::hint::black_box(&heat.pixels);
             Ok(())

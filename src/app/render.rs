@@ -129,7 +129,7 @@ impl RenderCache {
         // uvs per pixel (which the edge-function lanes also draw). Both are bit-identical to
         // the full render.
         let buffers = if compare == Compare::Difference {
-            Buffers::ColorDepthDifference
+            Buffers::DepthDifference
         } else {
             Buffers::ColorDepth
         };

@@ -3,8 +3,8 @@
 
 use crate::raster::Framebuffer;
 
-pub use crate::raster::texture::texel_difference;
 use crate::raster::texture::square_texel_difference as square_difference;
+pub use crate::raster::texture::texel_difference;
 
 /// A rendered heatmap and its scale.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -119,7 +119,7 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
         frame.triangle.len() == n && frame.uv_affine.len() == n && frame.uv_perspective.len() == n;
     let size = [texture_size.0 as f32, texture_size.1 as f32];
     if frame.texel_difference.len() == n {
-        // The render kept the difference itself (`Buffers::ColorDepthDifference`).
+        // The render kept the difference itself (`Buffers::DepthDifference`).
         from_differences(frame, out);
         return;
     }
@@ -137,7 +137,6 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
     };
     let scale_max = nice_ceiling(max);
     out.pixels.resize(n, [0; 4]);
-    let dim = |c: &[u8; 4]| [c[0] / 2, c[1] / 2, c[2] / 2, c[3]];
     if covered {
         out.pixels
             .par_chunks_mut(HEATMAP_CHUNK)
@@ -150,7 +149,7 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
         out.pixels
             .par_chunks_mut(HEATMAP_CHUNK)
             .zip(frame.color.par_chunks(HEATMAP_CHUNK))
-            .for_each(|(o, c)| o.iter_mut().zip(c).for_each(|(o, c)| *o = dim(c)));
+            .for_each(|(o, c)| o.iter_mut().zip(c).for_each(|(o, c)| *o = dim(*c)));
     }
     out.width = frame.width;
     out.height = frame.height;
@@ -198,7 +197,7 @@ fn color_run(
         let run = first..first + m;
         for ((o, c), &s) in out[run.clone()].iter_mut().zip(&color[run]).zip(&step) {
             *o = match s {
-                NOT_DRAWN => [c[0] / 2, c[1] / 2, c[2] / 2, c[3]],
+                NOT_DRAWN => dim(*c),
                 s => table[s as usize],
             };
         }
@@ -263,7 +262,7 @@ fn from_differences(frame: &Framebuffer, out: &mut Heatmap) {
                 }
                 for ((o, c), &s) in o.iter_mut().zip(c).zip(&step) {
                     *o = match s {
-                        NOT_DRAWN => [c[0] / 2, c[1] / 2, c[2] / 2, c[3]],
+                        NOT_DRAWN => dim(*c),
                         s => table[s as usize],
                     };
                 }
@@ -295,7 +294,17 @@ fn largest(d: &[f32]) -> f32 {
             *l = x;
         }
     }
-    lanes.into_iter().fold(0.0, |x, y| if y > x { y } else { x })
+    lanes
+        .into_iter()
+        .fold(0.0, |x, y| if y > x { y } else { x })
+}
+
+/// A colour at half its brightness, alpha kept: `[r / 2, g / 2, b / 2, a]`, on the four bytes
+/// as one word (the same bytes).
+#[inline(always)]
+fn dim(c: [u8; 4]) -> [u8; 4] {
+    let w = u32::from_le_bytes(c);
+    (((w >> 1) & 0x007f_7f7f) | (w & 0xff00_0000)).to_le_bytes()
 }
 
 /// A colour step that marks a pixel where nothing is drawn.
@@ -373,7 +382,7 @@ mod tests {
         }
         // A render that keeps only the texel difference gives the same heatmap.
         let mut fast = crate::raster::Framebuffer::new(0, 0, [0; 4]);
-        let buffers = crate::raster::Buffers::ColorDepthDifference;
+        let buffers = crate::raster::Buffers::DepthDifference;
         let mesh = floor.to_mesh();
         crate::raster::render_into(&mut fast, &mesh, &texture, &floor.settings(), buffers)
             .expect("render");
@@ -382,5 +391,17 @@ mod tests {
         // Some pixels of each kind, and more than one colour.
         assert!((0..f.color.len()).any(drawn) && !(0..f.color.len()).all(drawn));
         assert!(h.pixels.iter().any(|p| *p != h.pixels[0]));
+    }
+}
+
+#[cfg(test)]
+mod dim_tests {
+    /// The word form halves each colour byte and keeps alpha, for every byte value.
+    #[test]
+    fn dim_halves_every_channel() {
+        for v in 0..=255u8 {
+            let c = [v, 255 - v, v / 3, v.wrapping_mul(7)];
+            assert_eq!(super::dim(c), [c[0] / 2, c[1] / 2, c[2] / 2, c[3]]);
+        }
     }
 }

@@ -34,9 +34,11 @@ pub enum Buffers {
     /// Colour, depth, the triangle and uv both ways (what the GPU comparison reads). The
     /// edge-function lanes draw it (the weights, facing and 1/w buffers are left empty).
     ColorDepthUv,
-    /// Colour, depth and the texel difference of the two uvs per pixel: what the difference
-    /// heatmap reads, 4 bytes a pixel instead of the 20 of the triangle and two uv pairs.
-    ColorDepthDifference,
+    /// Depth and the texel difference of the two uvs per pixel: what the difference heatmap
+    /// reads (4 bytes a pixel instead of the 20 of the triangle and two uv pairs). Nothing is
+    /// shaded: the colour buffer keeps the background, which the heatmap shows dimmed where
+    /// no triangle is drawn.
+    DepthDifference,
 }
 
 /// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold the
@@ -71,7 +73,7 @@ pub struct Framebuffer {
     pub inv_w: Vec<f32>,
     /// How far apart the affine and the perspective-correct uv are, in texels of the texture
     /// drawn ([`texel_difference`](super::texture::texel_difference)); NaN where no triangle
-    /// is drawn. Only with [`Buffers::ColorDepthDifference`] (empty otherwise: the other
+    /// is drawn. Only with [`Buffers::DepthDifference`] (empty otherwise: the other
     /// buffer sets keep both uvs).
     pub texel_difference: Vec<f32>,
 }
@@ -107,7 +109,7 @@ impl Framebuffer {
                     ..Self::new(0, 0, background)
                 };
             }
-            Buffers::ColorDepthDifference => {
+            Buffers::DepthDifference => {
                 return Self {
                     width,
                     height,
@@ -145,7 +147,7 @@ impl Framebuffer {
         if self.weights_screen.len() == self.color.len() {
             Buffers::All
         } else if self.texel_difference.len() == self.color.len() && !self.color.is_empty() {
-            Buffers::ColorDepthDifference
+            Buffers::DepthDifference
         } else if self.uv_affine.len() == self.color.len() {
             Buffers::ColorDepthUv
         } else {

@@ -145,7 +145,7 @@ pub fn render(
 /// as [`render`]. It keeps no per-triangle record: every vertex is projected once and each
 /// triangle's set-up is rebuilt where it is drawn (module `fast`), so dense meshes need little
 /// memory. With [`Buffers::ColorDepth`], [`Buffers::ColorDepthUv`] or
-/// [`Buffers::ColorDepthDifference`] the lane path
+/// [`Buffers::DepthDifference`] the lane path
 /// ([`lanes`](mod@super::lanes)) draws whatever it can.
 pub fn render_into(
     frame: &mut Framebuffer,
@@ -204,7 +204,7 @@ fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
     let aov = if buffers == Buffers::All { n } else { 0 };
     let uv = match buffers {
         Buffers::All | Buffers::ColorDepthUv => n,
-        Buffers::ColorDepth | Buffers::ColorDepthDifference => 0,
+        Buffers::ColorDepth | Buffers::DepthDifference => 0,
     };
     frame.triangle.resize(uv, NO_TRIANGLE);
     frame.facing.resize(aov, Facing::Front);
@@ -213,7 +213,7 @@ fn resize(frame: &mut Framebuffer, width: u32, height: u32, buffers: Buffers) {
     frame.uv_affine.resize(uv, [0.0; 2]);
     frame.uv_perspective.resize(uv, [0.0; 2]);
     frame.inv_w.resize(aov, 0.0);
-    let diff = if buffers == Buffers::ColorDepthDifference {
+    let diff = if buffers == Buffers::DepthDifference {
         n
     } else {
         0
@@ -422,7 +422,10 @@ pub(super) fn rasterize(
             return;
         }
         band.depth[i] = depth;
-        band.color[i] = shade(&frag, texture, params, &wire);
+        // A difference render shades nothing (`Buffers::DepthDifference`).
+        if !diffs {
+            band.color[i] = shade(&frag, texture, params, &wire);
+        }
         if diffs {
             band.texel_difference[i] = super::texture::texel_difference(
                 frag.affine.uv().to_array(),

@@ -129,10 +129,7 @@ fn store_difference(
     debug_assert!(index < d.out.len());
     let du = _mm256_mul_ps(_mm256_sub_ps(both[0], both[2]), _mm256_set1_ps(d.size[0]));
     let dv = _mm256_mul_ps(_mm256_sub_ps(both[1], both[3]), _mm256_set1_ps(d.size[1]));
-    let len = _mm256_sqrt_ps(_mm256_add_ps(
-        _mm256_mul_ps(du, du),
-        _mm256_mul_ps(dv, dv),
-    ));
+    let len = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(du, du), _mm256_mul_ps(dv, dv)));
     // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, and
     // the buffer has the colour buffer's length; masked stores touch no other element.
     unsafe { _mm256_maskstore_ps(d.out.as_mut_ptr().add(index), pass, len) };
@@ -210,7 +207,10 @@ fn write(
             _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
         );
         _mm256_maskstore_ps(dp, pass, depth);
-        _mm256_maskstore_epi32(cp, pass, rgba);
+        // A difference target keeps the background colour (see `DifferenceTarget`).
+        if target.difference.is_none() {
+            _mm256_maskstore_epi32(cp, pass, rgba);
+        }
         pass
     }
 }
@@ -527,6 +527,10 @@ pub(super) fn edge_triangle(
                             .map(|(l, h)| [0, 1, 2, 3].map(|j| to_f32(l[j], h[j]))),
                     };
                     match lookups.as_mut() {
+                        // A difference target is not shaded (see `DifferenceTarget`).
+                        _ if target.difference.is_some() => {
+                            finish(target, &chunk, _mm256_setzero_si256())
+                        }
                         Some(l) if color == LaneColor::Texture => l.push(target, chunk),
                         _ => finish(target, &chunk, channel_colors(&lo, &hi, color)),
                     }

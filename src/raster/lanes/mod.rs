@@ -140,12 +140,13 @@ pub struct Target<'a> {
     pub difference: Option<DifferenceTarget<'a>>,
 }
 
-/// The texel-difference buffer of a band ([`Buffers::ColorDepthDifference`]): where a
+/// The texel-difference buffer of a band ([`Buffers::DepthDifference`]): where a
 /// fragment passes the depth test,
 /// [`texel_difference`](super::texture::texel_difference) of its `noperspective` and
-/// `smooth` uv, with the same `f32` operations.
+/// `smooth` uv, with the same `f32` operations. A target with it is not shaded: depth and
+/// the difference are written, the colour buffer is left as it is.
 ///
-/// [`Buffers::ColorDepthDifference`]: super::framebuffer::Buffers::ColorDepthDifference
+/// [`Buffers::DepthDifference`]: super::framebuffer::Buffers::DepthDifference
 pub struct DifferenceTarget<'a> {
     /// The texture's width and height in texels.
     pub size: [f32; 2],
@@ -585,7 +586,9 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, s: &Samples, colors: &[[u8; 4]
         let i = row + x as usize + k;
         if depth_passes(s.depth[k], target.depth[i]) {
             target.depth[i] = s.depth[k];
-            target.color[i] = colors[k];
+            if target.difference.is_none() {
+                target.color[i] = colors[k];
+            }
             if let Some(d) = target.difference.as_mut() {
                 let b = &s.both_uv;
                 d.out[i] = crate::raster::texture::square_texel_difference(
@@ -705,7 +708,9 @@ fn edge_triangle_impl(
                             for k in 0..LANES {
                                 s.ok[k] &= covered[k];
                             }
+                            // A difference target is not shaded (see `DifferenceTarget`).
                             match color {
+                                _ if target.difference.is_some() => {}
                                 LaneColor::Texture => sampler.sample(&s.u, &s.v, &mut colors),
                                 _ => channel_colors(&s, color, &mut colors),
                             }
