@@ -310,22 +310,24 @@ impl Constants {
             self.u[k] = f64::from(uv.x);
             self.v[k] = f64::from(uv.y);
         }
-        let mut put = |first: usize, f: &dyn Fn(usize) -> [f32; 3]| {
-            for k in 0..3 {
-                let at = f(k);
+        // Channel values per vertex, as f64 (a plain array, so the match below inlines).
+        let of = |f: fn(&Varyings) -> [f32; 3]| [0, 1, 2].map(|k| f(vary(k)).map(f64::from));
+        let put = |channels: &mut [[f64; 3]; CHANNELS], first: usize, at: [[f64; 3]; 3]| {
+            for (k, at) in at.iter().enumerate() {
                 for c in 0..3 {
-                    self.channels[first + c][k] = f64::from(at[c]);
+                    channels[first + c][k] = at[c];
                 }
             }
         };
-        match color {
-            LaneColor::VertexColor | LaneColor::Lambert => put(0, &|k| vary(k).color().to_array()),
-            LaneColor::Barycentric => put(0, &|k| vary(k).bary()),
-            LaneColor::Normal => put(0, &|k| vary(k).normal().to_array()),
-            LaneColor::Texture | LaneColor::Depth(..) => put(0, &|_| [0.0; 3]),
-        }
+        let first = match color {
+            LaneColor::VertexColor | LaneColor::Lambert => of(|v| v.color().to_array()),
+            LaneColor::Barycentric => of(|v| v.bary()),
+            LaneColor::Normal => of(|v| v.normal().to_array()),
+            LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
+        };
+        put(&mut self.channels, 0, first);
         self.used_channels = if color == LaneColor::Lambert {
-            put(3, &|k| vary(k).normal().to_array());
+            put(&mut self.channels, 3, of(|v| v.normal().to_array()));
             CHANNELS
         } else {
             3
@@ -432,7 +434,14 @@ impl LaneTriangle {
     /// Whether the lanes can draw it: edge values exact in `f64` over its bounds (otherwise,
     /// near the guard band, the per-pixel path does).
     pub fn exact(&self) -> bool {
-        self.planes.exact_over(&self.bounds)
+        // Cheap and sufficient (nearly every triangle): every vertex within 2^24 subpixels
+        // (65,536 pixels) of the origin. Then |dir| < 2^25 and, for any sample the lanes visit
+        // (columns and rows below 2^14 + LANES, so below 2^22 subpixels), |P - S| < 2^25, and
+        // |E| = |dir_x (P_y - S_y) - dir_y (P_x - S_x)| < 2^51, below the exactness limit.
+        // Otherwise the edge values at the corners of the bounds are checked.
+        const NEAR: i64 = 1 << 24;
+        let near = |e: &Edge| e.start.x.abs() < NEAR && e.start.y.abs() < NEAR;
+        self.edges.iter().all(near) || self.planes.exact_over(&self.bounds)
     }
 }
 
@@ -750,5 +759,55 @@ mod tests {
         for c in 0..=255u8 {
             assert_eq!(byte_from_sum(0.0 + 1.0 * f32::from(c)), c);
         }
+    }
+
+    /// `LaneTriangle::exact`'s cheap test is sufficient: triangles with every vertex at the
+    /// edge of the near region (the extremes of the bound) have exact edge values over the
+    /// largest image.
+    #[test]
+    fn vertices_near_the_origin_give_exact_edges_over_any_image() {
+        use super::{EdgePlanes, PixelBounds};
+        use crate::raster::setup::{Edge, TieRule};
+        use glam::I64Vec2;
+        let far = (1i64 << 24) - 1;
+        let values = [-far, 0, far];
+        let bounds = PixelBounds {
+            x0: 0,
+            y0: 0,
+            x1: crate::raster::project::MAX_IMAGE_SIZE - 1,
+            y1: crate::raster::project::MAX_IMAGE_SIZE - 1,
+        };
+        let mut checked = 0;
+        for &ax in &values {
+            for &ay in &values {
+                for &bx in &values {
+                    for &by in &values {
+                        let p = [
+                            I64Vec2::new(ax, ay),
+                            I64Vec2::new(bx, by),
+                            I64Vec2::new(-ax, -far),
+                        ];
+                        for positive in [false, true] {
+                            let edge = |a: usize, b: usize| {
+                                Edge::with_rule(p[a], p[b], positive, TieRule::Llvmpipe)
+                            };
+                            let edges = [edge(1, 2), edge(2, 0), edge(0, 1)];
+                            assert!(EdgePlanes::from_edges(&edges).exact_over(&bounds), "{p:?}");
+                            checked += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 162);
+        // Beyond the region the bound no longer holds: such a triangle takes the full check.
+        let huge = 1i64 << 28;
+        let p = [
+            I64Vec2::new(-huge, -huge),
+            I64Vec2::new(huge, -huge),
+            I64Vec2::new(0, huge),
+        ];
+        let edge = |a: usize, b: usize| Edge::with_rule(p[a], p[b], true, TieRule::Llvmpipe);
+        assert!(!EdgePlanes::from_edges(&[edge(1, 2), edge(2, 0), edge(0, 1)]).exact_over(&bounds));
     }
 }
