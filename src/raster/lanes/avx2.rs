@@ -36,8 +36,6 @@ struct Pending {
     halo: i32,
     /// Buffer index of lane 0.
     index: usize,
-    /// `[u_affine, v_affine, u_smooth, v_smooth]` for a target with uv buffers.
-    both_uv: Option<[__m256; 4]>,
 }
 
 /// Texture lookups of chunks: one at a time with AVX2, or two at a time with AVX-512.
@@ -62,7 +60,7 @@ impl<'s, 'a> Lookups<'s, 'a> {
     fn push(&mut self, target: &mut Target<'_>, chunk: Pending) {
         if !self.wide {
             let rgba = sample(self.sampler, chunk.u, chunk.v);
-            finish(target, &chunk, rgba);
+            finish(target, &chunk, rgba, None);
             return;
         }
         match self.pending.take() {
@@ -72,8 +70,8 @@ impl<'s, 'a> Lookups<'s, 'a> {
                 let (a, b) = unsafe {
                     super::avx512::sample16(self.sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
-                finish(target, &first, a);
-                finish(target, &chunk, b);
+                finish(target, &first, a, None);
+                finish(target, &chunk, b, None);
             }
         }
     }
@@ -83,15 +81,23 @@ impl<'s, 'a> Lookups<'s, 'a> {
     fn flush(&mut self, target: &mut Target<'_>) {
         if let Some(chunk) = self.pending.take() {
             let rgba = sample(self.sampler, chunk.u, chunk.v);
-            finish(target, &chunk, rgba);
+            finish(target, &chunk, rgba, None);
         }
     }
 }
 
-/// Paints the wireframe over a chunk's colours and writes it.
+/// Paints the wireframe over a chunk's colours and writes it, with `both_uv`
+/// (`[u_affine, v_affine, u_smooth, v_smooth]`) into a target with uv or difference buffers.
+/// (The uvs are not part of [`Pending`]: a chunk waiting for its partner is moved, and
+/// the smaller the better.)
 #[inline]
 #[target_feature(enable = "avx2")]
-fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
+fn finish(
+    target: &mut Target<'_>,
+    chunk: &Pending,
+    mut rgba: __m256i,
+    both_uv: Option<&[__m256; 4]>,
+) {
     if chunk.halo != 0 {
         rgba = _mm256_blendv_epi8(
             rgba,
@@ -107,10 +113,10 @@ fn finish(target: &mut Target<'_>, chunk: &Pending, mut rgba: __m256i) {
         );
     }
     let pass = write(target, chunk.index, chunk.valid, chunk.depth, rgba);
-    if let (Some(uv), Some(both)) = (target.uv.as_mut(), &chunk.both_uv) {
+    if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
         store_uv(uv, chunk.index, pass, both);
     }
-    if let (Some(d), Some(both)) = (target.difference.as_mut(), &chunk.both_uv) {
+    if let (Some(d), Some(both)) = (target.difference.as_mut(), both_uv) {
         store_difference(d, chunk.index, pass, both);
     }
 }
@@ -521,18 +527,34 @@ pub(super) fn edge_triangle(
                         wire: lo.wire | (hi.wire << 4),
                         halo: lo.halo | (hi.halo << 4),
                         index: (y - target.y0) as usize * target.width as usize + bx as usize,
-                        both_uv: lo
-                            .both_uv
-                            .zip(hi.both_uv)
-                            .map(|(l, h)| [0, 1, 2, 3].map(|j| to_f32(l[j], h[j]))),
+                    };
+                    let both = match (&lo.both_uv, &hi.both_uv) {
+                        (Some(l), Some(h)) => Some([
+                            to_f32(l[0], h[0]),
+                            to_f32(l[1], h[1]),
+                            to_f32(l[2], h[2]),
+                            to_f32(l[3], h[3]),
+                        ]),
+                        _ => None,
                     };
                     match lookups.as_mut() {
                         // A difference target is not shaded (see `DifferenceTarget`).
                         _ if target.difference.is_some() => {
-                            finish(target, &chunk, _mm256_setzero_si256())
+                            finish(target, &chunk, _mm256_setzero_si256(), both.as_ref())
+                        }
+                        // With uv buffers each chunk is looked up on its own (no pairs,
+                        // which would have to carry the uvs).
+                        Some(l) if color == LaneColor::Texture && both.is_some() => {
+                            let rgba = sample(l.sampler, chunk.u, chunk.v);
+                            finish(target, &chunk, rgba, both.as_ref())
                         }
                         Some(l) if color == LaneColor::Texture => l.push(target, chunk),
-                        _ => finish(target, &chunk, channel_colors(&lo, &hi, color)),
+                        _ => finish(
+                            target,
+                            &chunk,
+                            channel_colors(&lo, &hi, color),
+                            both.as_ref(),
+                        ),
                     }
                 }
             }
@@ -617,7 +639,6 @@ pub(super) fn scanline_triangle(
                     wire: 0,
                     halo: 0,
                     index: row + x as usize,
-                    both_uv: None,
                 };
                 lookups.push(target, chunk);
             }
