@@ -68,6 +68,20 @@ pub enum ModelError {
     },
 }
 
+/// The last step of reading a model, whichever reader read it: whether it has uvs, normals
+/// computed from the positions where the file gives none for every vertex, and the note for
+/// a model without uvs (`shown` names it).
+fn finish(out: &mut ModelMesh, all_have_uv: bool, all_have_normals: bool, shown: &str) {
+    out.has_uv = all_have_uv;
+    if !all_have_normals {
+        out.normals = vertex_normals(&out.positions, &out.triangles);
+    }
+    if !all_have_uv {
+        // What this means depends on the shading chosen later: see `Scene::notes_for`.
+        out.notes.push(format!("{shown} {NO_UV}"));
+    }
+}
+
 /// Says what a `tobj` error means for someone looking at the file.
 fn explain(e: &tobj::LoadError) -> String {
     use tobj::LoadError as E;

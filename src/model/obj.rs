@@ -27,7 +27,7 @@ use glam::{DVec3, Vec2, Vec3};
 use tobj::LoadError as E;
 
 use super::count::{Counts, reserve};
-use super::{MAX_MODEL_COORD, ModelError, ModelMesh, NO_UV, explain, vertex_normals};
+use super::{MAX_MODEL_COORD, ModelError, ModelMesh, explain, finish};
 use crate::files::{self, FileKind};
 
 /// An index a face corner does not give: an empty field, `0`, or a relative index one before
@@ -573,14 +573,7 @@ impl<'a> Obj<'a> {
         // The file's arrays go before the normals are computed.
         out.triangles = std::mem::take(&mut self.triangles);
         drop(self);
-        out.has_uv = all_have_uv;
-        if !all_have_normals {
-            out.normals = vertex_normals(&out.positions, &out.triangles);
-        }
-        if !all_have_uv {
-            // What this means depends on the shading chosen later: see `Scene::notes_for`.
-            out.notes.push(format!("{shown} {NO_UV}"));
-        }
+        finish(&mut out, all_have_uv, all_have_normals, &shown);
         Ok(out)
     }
 }

@@ -7,7 +7,7 @@ use std::path::Path;
 
 use glam::{DVec3, Vec2, Vec3};
 
-use super::{MAX_MODEL_COORD, ModelError, ModelMesh, NO_UV, explain, vertex_normals};
+use super::{MAX_MODEL_COORD, ModelError, ModelMesh, explain, finish};
 use crate::files::{self, FileKind};
 
 /// Parses OBJ text with `tobj` (polygons triangulated, one index per vertex) and builds the
@@ -142,12 +142,6 @@ fn from_parsed(parsed: ParsedObj, shown: String, dir: &Path) -> Result<ModelMesh
     if out.triangles.is_empty() {
         return Err(ModelError::NoTriangles { path: shown });
     }
-    out.has_uv = all_have_uv;
-    if !all_have_normals {
-        out.normals = vertex_normals(&out.positions, &out.triangles);
-    }
-    if !all_have_uv {
-        out.notes.push(format!("{shown} {NO_UV}"));
-    }
+    finish(&mut out, all_have_uv, all_have_normals, &shown);
     Ok(out)
 }
