@@ -150,18 +150,26 @@ fn pixel_centre(h: &Harness<'_, BaryApp>, p: [u32; 2]) -> egui::Pos2 {
         .to_screen(DVec2::new(f64::from(p[0]) + 0.5, f64::from(p[1]) + 0.5))
 }
 
-#[test]
-fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
-    let mut h = harness();
+/// The app's affine render saved as a PNG (as a student's affine rasterizer would draw it),
+/// with the app back in perspective-correct mode: the folder (it lives as long as this value),
+/// the file and its pixels.
+fn affine_image(h: &mut Harness<'_, BaryApp>) -> (tempfile::TempDir, PathBuf, Vec<[u8; 4]>) {
     h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
     h.run();
-    let affine = canvas_colors(&h);
+    let affine = canvas_colors(h);
     h.state_mut()
         .push(AppCmd::SetMode(Interpolation::Perspective));
     h.run();
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("affine.png");
     write_png(&path, IMAGE, &affine);
+    (dir, path, affine)
+}
+
+#[test]
+fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
+    let mut h = harness();
+    let (_dir, path, affine) = affine_image(&mut h);
     compare(&mut h, path);
     let c = h
         .state()
@@ -407,15 +415,7 @@ fn a_new_render_of_the_same_scene_does_not_compare_again() {
 #[test]
 fn the_comparison_runs_in_the_background_and_the_last_result_stays_shown() {
     let mut h = harness();
-    h.state_mut().push(AppCmd::SetMode(Interpolation::Affine));
-    h.run();
-    let affine = canvas_colors(&h);
-    h.state_mut()
-        .push(AppCmd::SetMode(Interpolation::Perspective));
-    h.run();
-    let dir = tempfile::tempdir().expect("tempdir");
-    let path = dir.path().join("affine.png");
-    write_png(&path, IMAGE, &affine);
+    let (_dir, path, _) = affine_image(&mut h);
 
     // Frame 1 opens the image; frame 2 starts the comparison and returns without it.
     h.state_mut().push(FileCommand::CompareImage(path));

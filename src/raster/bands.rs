@@ -74,6 +74,13 @@ impl<'a> RowBand<'a> {
         out
     }
 
+    /// The first and last row of `bounds` inside this band, if any.
+    pub(super) fn rows_of(&self, bounds: &super::setup::PixelBounds) -> Option<(u32, u32)> {
+        let last = (self.y0 + self.rows).checked_sub(1)?;
+        let (start, end) = (bounds.y0.max(self.y0), bounds.y1.min(last));
+        (self.rows > 0 && start <= end).then_some((start, end))
+    }
+
     /// Whether every per-pixel buffer is present ([`Buffers::All`](super::framebuffer::Buffers::All)).
     pub(super) fn has_aovs(&self) -> bool {
         self.weights_screen.len() == self.color.len()

@@ -335,12 +335,9 @@ pub(super) fn draw_lanes(
     shading: LaneShading,
     band: &mut RowBand<'_>,
 ) {
-    let b = tri.bounds();
-    let y_start = b.y0.max(band.y0);
-    let y_end = b.y1.min((band.y0 + band.rows).saturating_sub(1));
-    if band.rows == 0 || y_start > y_end {
+    let Some((y_start, y_end)) = band.rows_of(&tri.bounds()) else {
         return;
-    }
+    };
     let mut target = lane_target(band, source, texture);
     // With a shading, the lanes colour every covered sample themselves.
     lanes::edge_triangle(
@@ -367,12 +364,9 @@ pub(super) fn draw_scanline_lanes(
     shading: LaneShading,
     band: &mut RowBand<'_>,
 ) {
-    let b = tri.bounds();
-    let y_start = b.y0.max(band.y0);
-    let y_end = b.y1.min((band.y0 + band.rows).saturating_sub(1));
-    if band.rows == 0 || y_start > y_end {
+    let Some((y_start, y_end)) = band.rows_of(&tri.bounds()) else {
         return;
-    }
+    };
     let mut target = Target {
         y0: band.y0,
         width: band.width,
@@ -395,11 +389,9 @@ pub(super) fn rasterize(
     band: &mut RowBand<'_>,
 ) {
     let b = setup.bounds;
-    let y_start = b.y0.max(band.y0);
-    let y_end = b.y1.min(band.y0 + band.rows - 1);
-    if band.rows == 0 || y_start > y_end {
+    let Some((y_start, y_end)) = band.rows_of(&b) else {
         return;
-    }
+    };
     let wire = if params.wireframe {
         setup.source_weight_gradients()
     } else {
