@@ -90,20 +90,10 @@ impl Note {
     /// The note in one line, in `lang`.
     pub fn text(self, lang: crate::i18n::Lang) -> String {
         match self {
-            Note::Shading(s) => {
-                let key = match s {
-                    Shading::Texture => "probe.shading.texture",
-                    Shading::VertexColor => "probe.shading.vertex_color",
-                    Shading::Barycentric => "probe.shading.barycentric",
-                    Shading::Depth => "probe.shading.depth",
-                    Shading::Normal => "probe.shading.normal",
-                    Shading::Lambert => "probe.shading.lambert",
-                };
-                lang.tr_with(
-                    "compare.gpu_check.note_shading",
-                    &[("shading", &lang.tr(key))],
-                )
-            }
+            Note::Shading(s) => lang.tr_with(
+                "compare.gpu_check.note_shading",
+                &[("shading", &crate::probe::format::shading_name(lang, s))],
+            ),
             Note::Trilinear => lang.tr("compare.gpu_check.note_trilinear"),
             Note::Wireframe => lang.tr("compare.gpu_check.note_wireframe"),
         }

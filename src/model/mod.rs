@@ -68,6 +68,25 @@ pub enum ModelError {
     },
 }
 
+/// What a part's material gives it, whichever reader read it: its diffuse colour (`Kd`, white
+/// without one), and the model's texture if none was found before (the first material's
+/// `map_Kd`, resolved against the OBJ's folder `dir`).
+fn material_look(
+    material: Option<&tobj::Material>,
+    dir: &Path,
+    texture: &mut Option<PathBuf>,
+) -> Vec3 {
+    if texture.is_none()
+        && let Some(tex) = material.and_then(|mat| mat.diffuse_texture.as_ref())
+    {
+        *texture = Some(dir.join(tex));
+    }
+    material
+        .and_then(|mat| mat.diffuse)
+        .map(Vec3::from)
+        .unwrap_or(Vec3::ONE)
+}
+
 /// The last step of reading a model, whichever reader read it: whether it has uvs, normals
 /// computed from the positions where the file gives none for every vertex, and the note for
 /// a model without uvs (`shown` names it).

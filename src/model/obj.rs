@@ -23,11 +23,11 @@ use std::collections::HashMap;
 use std::io::{self, BufRead};
 use std::path::Path;
 
-use glam::{DVec3, Vec2, Vec3};
+use glam::{DVec3, Vec2};
 use tobj::LoadError as E;
 
 use super::count::{Counts, reserve};
-use super::{MAX_MODEL_COORD, ModelError, ModelMesh, explain, finish};
+use super::{MAX_MODEL_COORD, ModelError, ModelMesh, explain, finish, material_look};
 use crate::files::{self, FileKind};
 
 /// An index a face corner does not give: an empty field, `0`, or a relative index one before
@@ -533,15 +533,7 @@ impl<'a> Obj<'a> {
         }
         for m in &self.models {
             let material = m.material.and_then(|id| self.materials.get(id));
-            let color = material
-                .and_then(|mat| mat.diffuse)
-                .map(Vec3::from)
-                .unwrap_or(Vec3::ONE);
-            if out.diffuse_texture.is_none()
-                && let Some(tex) = material.and_then(|mat| mat.diffuse_texture.as_ref())
-            {
-                out.diffuse_texture = Some(self.dir.join(tex));
-            }
+            let color = material_look(material, self.dir, &mut out.diffuse_texture);
             for &[v, vt, vn] in &self.keys[m.start..m.end] {
                 // Checked when the model ended: every index here is in range.
                 let p = DVec3::from(self.positions[v as usize].map(f64::from));

@@ -5,9 +5,9 @@
 
 use std::path::Path;
 
-use glam::{DVec3, Vec2, Vec3};
+use glam::{DVec3, Vec2};
 
-use super::{MAX_MODEL_COORD, ModelError, ModelMesh, explain, finish};
+use super::{MAX_MODEL_COORD, ModelError, ModelMesh, explain, finish, material_look};
 use crate::files::{self, FileKind};
 
 /// Parses OBJ text with `tobj` (polygons triangulated, one index per vertex) and builds the
@@ -90,15 +90,7 @@ fn from_parsed(parsed: ParsedObj, shown: String, dir: &Path) -> Result<ModelMesh
         let has_normals = mesh.normals.len() / 3 == n;
         all_have_normals &= has_normals;
         let material = mesh.material_id.and_then(|id| materials.get(id));
-        let color = material
-            .and_then(|mat| mat.diffuse)
-            .map(Vec3::from)
-            .unwrap_or(Vec3::ONE);
-        if out.diffuse_texture.is_none()
-            && let Some(tex) = material.and_then(|mat| mat.diffuse_texture.as_ref())
-        {
-            out.diffuse_texture = Some(dir.join(tex));
-        }
+        let color = material_look(material, dir, &mut out.diffuse_texture);
         for k in 0..n {
             let p = DVec3::new(
                 f64::from(mesh.positions[3 * k]),

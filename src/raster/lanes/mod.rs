@@ -376,7 +376,7 @@ impl LaneTriangle {
     /// From the triangle's edges, bounds and weight planes (see
     /// [`triangle_geometry`](super::setup::triangle_geometry)) and its vertices, for drawing
     /// with `shading` (`None`: coverage only, for the caller's per-pixel shading); `uv` when
-    /// the target keeps the uv buffers.
+    /// the target needs both uvs (it keeps the uv buffers or the texel difference).
     pub fn new(
         edges: &[Edge; 3],
         bounds: PixelBounds,
