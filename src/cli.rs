@@ -432,6 +432,27 @@ struct BenchArgs {
     /// Time only this many worker threads (default: 1 and the number of cores).
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
     threads: Option<u16>,
+    /// The highest instruction set the lanes may use (default: the best the CPU has). Every
+    /// level draws the same pixels.
+    #[arg(long, value_enum)]
+    vector: Option<VectorArg>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+enum VectorArg {
+    Portable,
+    Avx2,
+    Avx512,
+}
+
+impl From<VectorArg> for raster::lanes::VectorLevel {
+    fn from(v: VectorArg) -> Self {
+        match v {
+            VectorArg::Portable => raster::lanes::VectorLevel::Portable,
+            VectorArg::Avx2 => raster::lanes::VectorLevel::Avx2,
+            VectorArg::Avx512 => raster::lanes::VectorLevel::Avx512,
+        }
+    }
 }
 
 #[derive(clap::Args, Debug)]

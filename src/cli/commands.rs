@@ -98,6 +98,9 @@ pub(super) fn bench(args: &BenchArgs) -> Result<()> {
     let texture = scene.load_texture(&base_dir)?;
     let mesh = scene.to_mesh();
     let base = scene.settings();
+    if let Some(v) = args.vector {
+        barylab::raster::lanes::set_vector_level(v.into());
+    }
     // The matrix, narrowed to what the options name (any filter, trilinear too, replaces
     // the matrix's two).
     let wanted = |c: &barylab::bench::BenchConfig| {

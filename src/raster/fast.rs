@@ -22,7 +22,7 @@ use glam::{DVec2, I64Vec2};
 use super::bands::RowBand;
 use super::clip::{ClipPlane, planes};
 use super::framebuffer::Framebuffer;
-use super::lanes::{LaneShading, LaneTriangle, LaneVertices};
+use super::lanes::{LaneShading, LaneTriangle};
 use super::mesh::ClipMesh;
 use super::prepare::{PreparedTriangle, prepare_triangle_with};
 use super::project::{Viewport, WindowVertex, ndc_from_clip, project_vertex};
@@ -246,22 +246,20 @@ impl<'m> FastMesh<'m> {
         ) else {
             return false;
         };
-        let mut smooth = [Varyings::default(); 3];
-        for (k, s) in smooth.iter_mut().enumerate() {
-            let Some(m) = self.mesh.vertices.get(corners[k] as usize) else {
-                return false;
-            };
-            let mut bary = [0.0; 3];
-            bary[k] = 1.0;
-            *s = Varyings::new(bary, m.uv, m.color).with_normal(m.normal);
-        }
-        let verts = LaneVertices {
-            inv_w: [a.inv_w, b.inv_w, c.inv_w],
-            depth: [a.depth, b.depth, c.depth],
-            smooth,
-            noperspective: None,
+        let m = |k: usize| self.mesh.vertices.get(corners[k] as usize);
+        let (Some(ma), Some(mb), Some(mc)) = (m(0), m(1), m(2)) else {
+            return false;
         };
-        tri.set(&g.edges, g.bounds, &g.weights, &verts, Some(shading), uv);
+        tri.set_whole(
+            &g.edges,
+            g.bounds,
+            &g.weights,
+            [a.inv_w, b.inv_w, c.inv_w],
+            [a.depth, b.depth, c.depth],
+            [ma, mb, mc],
+            shading,
+            uv,
+        );
         true
     }
 

@@ -18,6 +18,7 @@ use crate::raster::shade::{
 };
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
+mod sparse;
 mod texture;
 
 use texture::sample;
@@ -34,8 +35,11 @@ struct Pending {
     wire: i32,
     /// Lanes in the wireframe's halo (the line wins where both are set).
     halo: i32,
-    /// Buffer index of lane 0.
+    /// Buffer index of lane 0 (a row chunk: eight pixels side by side).
     index: usize,
+    /// Buffer index of each lane instead, for a chunk gathered from several rows
+    /// ([`sparse`]).
+    lanes: Option<__m256i>,
 }
 
 /// Texture lookups of chunks: one at a time with AVX2, or two at a time with AVX-512.
@@ -112,7 +116,10 @@ fn finish(
             mask_from_bits(chunk.wire),
         );
     }
-    let pass = write(target, chunk.index, chunk.valid, chunk.depth, rgba);
+    let pass = match chunk.lanes {
+        Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
+        None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
+    };
     if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
         store_uv(uv, chunk.index, pass, both);
     }
@@ -460,6 +467,10 @@ pub(super) fn edge_triangle(
 ) {
     let (mode, color) = (shading.mode, shading.color);
     let mut lookups = sampler.map(|s| Lookups::new(s, wide));
+    // Sparse rows are gathered only where pixels are written one by one (no uv or
+    // difference buffers).
+    let mut gathered =
+        (target.uv.is_none() && target.difference.is_none()).then(sparse::Gathered::new);
     let planes = &tri.planes;
     let consts = &tri.consts;
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
@@ -508,62 +519,141 @@ pub(super) fn edge_triangle(
                     if covered == 0 {
                         continue;
                     }
+                    if let Some(g) = gathered.as_mut()
+                        && covered.count_ones() <= sparse::MAX_LANES
+                    {
+                        g.add(bx, y, covered);
+                        if g.full() {
+                            draw_gathered(g, consts, mode, color, &mut lookups, target);
+                        }
+                        continue;
+                    }
                     let py = f64::from(y) + 0.5;
                     let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
                     let px = _mm256_set1_pd(f64::from(bx) + 0.5);
                     let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
-                    let lo = from_weights4(lo, consts, mode, color);
-                    let hi = from_weights4(hi, consts, mode, color);
-                    let ok = covered & (lo.ok | (hi.ok << 4));
-                    if ok == 0 {
-                        continue;
-                    }
-                    let chunk = Pending {
-                        u: to_f32(lo.u, hi.u),
-                        v: to_f32(lo.v, hi.v),
-                        depth: to_f32(lo.depth, hi.depth),
-                        valid: mask_from_bits(ok),
-                        wire: lo.wire | (hi.wire << 4),
-                        halo: lo.halo | (hi.halo << 4),
-                        index: (y - target.y0) as usize * target.width as usize + bx as usize,
-                    };
-                    let both = match (&lo.both_uv, &hi.both_uv) {
-                        (Some(l), Some(h)) => Some([
-                            to_f32(l[0], h[0]),
-                            to_f32(l[1], h[1]),
-                            to_f32(l[2], h[2]),
-                            to_f32(l[3], h[3]),
-                        ]),
-                        _ => None,
-                    };
-                    match lookups.as_mut() {
-                        // A difference target is not shaded (see `DifferenceTarget`).
-                        _ if target.difference.is_some() => {
-                            finish(target, &chunk, _mm256_setzero_si256(), both.as_ref())
-                        }
-                        // With uv buffers each chunk is looked up on its own (no pairs,
-                        // which would have to carry the uvs).
-                        Some(l) if color == LaneColor::Texture && both.is_some() => {
-                            let rgba = sample(l.sampler, chunk.u, chunk.v);
-                            finish(target, &chunk, rgba, both.as_ref())
-                        }
-                        Some(l) if color == LaneColor::Texture => l.push(target, chunk),
-                        _ => finish(
-                            target,
-                            &chunk,
-                            channel_colors(&lo, &hi, color),
-                            both.as_ref(),
-                        ),
-                    }
+                    let index = (y - target.y0) as usize * target.width as usize + bx as usize;
+                    let at = Where::Row(index);
+                    shade_chunk(
+                        [lo, hi],
+                        covered,
+                        at,
+                        consts,
+                        mode,
+                        color,
+                        &mut lookups,
+                        target,
+                    );
                 }
             }
             bx += LANES as u32;
         }
         by = by_end + 1;
     }
+    if let Some(g) = gathered.as_mut() {
+        while !g.is_empty() {
+            draw_gathered(g, consts, mode, color, &mut lookups, target);
+        }
+    }
     if let Some(l) = lookups.as_mut() {
         l.flush(target);
+    }
+}
+
+/// Where a chunk's lanes are in the band's buffers.
+#[derive(Clone, Copy)]
+enum Where {
+    /// Eight pixels side by side from this buffer index.
+    Row(usize),
+    /// Each lane at its own buffer index ([`sparse`]).
+    Lanes(__m256i),
+}
+
+/// Interpolates, shades and writes the next (up to) eight gathered pixels.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn draw_gathered(
+    g: &mut sparse::Gathered,
+    consts: &Constants,
+    mode: Interpolation,
+    color: LaneColor,
+    lookups: &mut Option<Lookups<'_, '_>>,
+    target: &mut Target<'_>,
+) {
+    let (x, y, bits) = g.take();
+    let x_lo = sparse::centres(_mm256_castsi256_si128(x));
+    let x_hi = sparse::centres(_mm256_extracti128_si256::<1>(x));
+    let y_lo = sparse::centres(_mm256_castsi256_si128(y));
+    let y_hi = sparse::centres(_mm256_extracti128_si256::<1>(y));
+    let lo = sparse::weights4(&consts.weights, x_lo, y_lo);
+    let hi = sparse::weights4(&consts.weights, x_hi, y_hi);
+    let at = Where::Lanes(sparse::indices(target, x, y));
+    shade_chunk([lo, hi], bits, at, consts, mode, color, lookups, target);
+}
+
+/// Interpolates eight samples from their screen weights (`[lanes 0..4, lanes 4..8]`), shades
+/// the `covered` ones and writes them (or hands them to the texture lookups, which write them).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+#[target_feature(enable = "avx2")]
+fn shade_chunk(
+    [lo, hi]: [[__m256d; 3]; 2],
+    covered: i32,
+    at: Where,
+    consts: &Constants,
+    mode: Interpolation,
+    color: LaneColor,
+    lookups: &mut Option<Lookups<'_, '_>>,
+    target: &mut Target<'_>,
+) {
+    let lo = from_weights4(lo, consts, mode, color);
+    let hi = from_weights4(hi, consts, mode, color);
+    let ok = covered & (lo.ok | (hi.ok << 4));
+    if ok == 0 {
+        return;
+    }
+    let (index, lanes) = match at {
+        Where::Row(i) => (i, None),
+        Where::Lanes(l) => (0, Some(l)),
+    };
+    let chunk = Pending {
+        u: to_f32(lo.u, hi.u),
+        v: to_f32(lo.v, hi.v),
+        depth: to_f32(lo.depth, hi.depth),
+        valid: mask_from_bits(ok),
+        wire: lo.wire | (hi.wire << 4),
+        halo: lo.halo | (hi.halo << 4),
+        index,
+        lanes,
+    };
+    let both = match (&lo.both_uv, &hi.both_uv) {
+        (Some(l), Some(h)) => Some([
+            to_f32(l[0], h[0]),
+            to_f32(l[1], h[1]),
+            to_f32(l[2], h[2]),
+            to_f32(l[3], h[3]),
+        ]),
+        _ => None,
+    };
+    match lookups.as_mut() {
+        // A difference target is not shaded (see `DifferenceTarget`).
+        _ if target.difference.is_some() => {
+            finish(target, &chunk, _mm256_setzero_si256(), both.as_ref())
+        }
+        // With uv buffers each chunk is looked up on its own (no pairs,
+        // which would have to carry the uvs).
+        Some(l) if color == LaneColor::Texture && both.is_some() => {
+            let rgba = sample(l.sampler, chunk.u, chunk.v);
+            finish(target, &chunk, rgba, both.as_ref())
+        }
+        Some(l) if color == LaneColor::Texture => l.push(target, chunk),
+        _ => finish(
+            target,
+            &chunk,
+            channel_colors(&lo, &hi, color),
+            both.as_ref(),
+        ),
     }
 }
 
@@ -639,6 +729,7 @@ pub(super) fn scanline_triangle(
                     wire: 0,
                     halo: 0,
                     index: row + x as usize,
+                    lanes: None,
                 };
                 lookups.push(target, chunk);
             }

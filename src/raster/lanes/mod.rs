@@ -55,12 +55,15 @@ use super::varying::Varyings;
 mod blocks;
 mod sampler;
 mod scanline;
+mod triangle;
 
 pub use blocks::EdgePlanes;
 use blocks::{Block, classify};
 use sampler::{LaneWrap, Sampler};
 use scanline::Stepped;
 pub use scanline::scanline_triangle;
+use triangle::{CHANNELS, Constants};
+pub use triangle::{LaneTriangle, LaneVertices};
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
@@ -202,249 +205,6 @@ pub enum LaneColor {
     Lambert,
 }
 
-/// Interpolated channels the lanes carry: a colour (or weights, or a normal) in 0..3, and the
-/// normal in 3..6 for [`LaneColor::Lambert`].
-const CHANNELS: usize = 6;
-
-/// Per-triangle constants of the interpolation, as [`interpolate::fragment`] uses them.
-///
-/// [`interpolate::fragment`]: super::interpolate::fragment
-#[derive(Clone, Copy, Debug)]
-struct Constants {
-    weights: WeightPlanes,
-    inv_w: [f64; 3],
-    depth: [f64; 3],
-    u: [f64; 3],
-    v: [f64; 3],
-    /// uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]` per vertex, when
-    /// the target wants them.
-    both_uv: Option<[[f64; 3]; 4]>,
-    /// `channels[c][k]`: channel `c` of vertex `k`: the vertex colour, the source weights or
-    /// the normal in 0..3, and the normal in 3..6 for Lambert shading.
-    channels: [[f64; 3]; CHANNELS],
-    /// How many of `channels` the shading reads (3, or 6 for Lambert).
-    used_channels: usize,
-    wire: Option<Wire>,
-}
-
-/// The wireframe test of [`shade`](super::shade::shade): a sample is on a line when, for a
-/// source-triangle vertex `i` whose weight changes on screen (`len_i > 0`), its affine
-/// weight (as `f32`) over `len_i` is below [`WIRE_WIDTH_PX`].
-#[derive(Clone, Copy, Debug)]
-struct Wire {
-    /// `bary[i][k]`: source weight `i` at rasterized vertex `k`.
-    bary: [[f64; 3]; 3],
-    /// `|grad l_i|`, per pixel.
-    len: [f64; 3],
-}
-
-/// What the lanes interpolate of a triangle's three vertices: `1/w`, the window depth and
-/// both attribute sets.
-#[derive(Clone, Copy, Debug)]
-pub struct LaneVertices {
-    /// `1 / w_clip` per vertex.
-    pub inv_w: [f64; 3],
-    /// Window depth per vertex.
-    pub depth: [f64; 3],
-    /// The attributes for `smooth` (perspective-correct) interpolation.
-    pub smooth: [Varyings; 3],
-    /// The attributes for `noperspective` (affine) interpolation, when they differ from
-    /// `smooth` (only where the clipper made a vertex).
-    pub noperspective: Option<[Varyings; 3]>,
-}
-
-impl LaneVertices {
-    /// A set-up triangle's vertices.
-    pub fn of(setup: &TriangleSetup) -> Self {
-        Self {
-            inv_w: setup.v.map(|v| v.inv_w),
-            depth: setup.v.map(|v| v.depth),
-            smooth: setup.v.map(|v| v.varyings),
-            noperspective: Some(setup.v.map(|v| v.noperspective)),
-        }
-    }
-}
-
-impl Constants {
-    /// Constants of no triangle, to be [`set`](Constants::set).
-    const EMPTY: Self = Self {
-        weights: WeightPlanes {
-            start: [glam::DVec2::ZERO; 3],
-            dir: [glam::DVec2::ZERO; 3],
-            area2: 0.0,
-            inv_area2: 0.0,
-        },
-        inv_w: [0.0; 3],
-        depth: [0.0; 3],
-        u: [0.0; 3],
-        v: [0.0; 3],
-        both_uv: None,
-        channels: [[0.0; 3]; CHANNELS],
-        used_channels: 0,
-        wire: None,
-    };
-
-    /// Sets every field for a triangle, in place (the lanes set one up per triangle and
-    /// band: a dense mesh sets up hundreds of thousands a frame). `mode` picks the vertices'
-    /// attribute set: `smooth` (perspective-correct) or `noperspective` (affine). The
-    /// wireframe uses the `smooth` source weights with screen weights, as
-    /// [`Fragment::edge_weights`](super::interpolate::Fragment::edge_weights).
-    #[inline(always)]
-    fn set(
-        &mut self,
-        weights: &WeightPlanes,
-        verts: &LaneVertices,
-        mode: Interpolation,
-        wireframe: bool,
-        color: LaneColor,
-    ) {
-        let vary = |k: usize| match (mode, &verts.noperspective) {
-            (Interpolation::Affine, Some(n)) => &n[k],
-            _ => &verts.smooth[k],
-        };
-        self.weights = *weights;
-        self.inv_w = verts.inv_w;
-        self.depth = verts.depth;
-        for k in 0..3 {
-            let uv = vary(k).uv();
-            self.u[k] = f64::from(uv.x);
-            self.v[k] = f64::from(uv.y);
-        }
-        // Channel values per vertex, as f64 (a plain array, so the match below inlines).
-        let of = |f: fn(&Varyings) -> [f32; 3]| [0, 1, 2].map(|k| f(vary(k)).map(f64::from));
-        let put = |channels: &mut [[f64; 3]; CHANNELS], first: usize, at: [[f64; 3]; 3]| {
-            for (k, at) in at.iter().enumerate() {
-                for c in 0..3 {
-                    channels[first + c][k] = at[c];
-                }
-            }
-        };
-        let first = match color {
-            LaneColor::VertexColor | LaneColor::Lambert => of(|v| v.color().to_array()),
-            LaneColor::Barycentric => of(|v| v.bary()),
-            LaneColor::Normal => of(|v| v.normal().to_array()),
-            LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
-        };
-        put(&mut self.channels, 0, first);
-        self.used_channels = if color == LaneColor::Lambert {
-            put(&mut self.channels, 3, of(|v| v.normal().to_array()));
-            CHANNELS
-        } else {
-            3
-        };
-        self.wire = wireframe.then(|| {
-            let b = verts.smooth.map(|v| v.bary());
-            Wire {
-                bary: [0, 1, 2].map(|i| [0, 1, 2].map(|k| f64::from(b[k][i]))),
-                len: source_weight_gradients(weights, b).map(|g| g.length()),
-            }
-        });
-        self.both_uv = None;
-    }
-}
-
-/// A triangle as the lanes draw it (edge functions or scanline): its edges, edge planes, bounds and interpolation
-/// constants, from a [`TriangleSetup`] ([`LaneTriangle::of`]) or from its parts
-/// ([`LaneTriangle::new`], the fast path's shared vertices): the same values either way.
-#[derive(Clone, Copy, Debug)]
-pub struct LaneTriangle {
-    edges: [Edge; 3],
-    planes: EdgePlanes,
-    bounds: PixelBounds,
-    consts: Constants,
-}
-
-impl LaneTriangle {
-    /// A triangle covering nothing, to be [`set`](LaneTriangle::set).
-    pub const EMPTY: Self = Self {
-        edges: [Edge::EMPTY; 3],
-        planes: EdgePlanes {
-            a: [0; 3],
-            b: [0; 3],
-            c: [-1; 3],
-            t: [0; 3],
-        },
-        bounds: PixelBounds {
-            x0: 1,
-            y0: 1,
-            x1: 0,
-            y1: 0,
-        },
-        consts: Constants::EMPTY,
-    };
-
-    /// From the triangle's edges, bounds and weight planes (see
-    /// [`triangle_geometry`](super::setup::triangle_geometry)) and its vertices, for drawing
-    /// with `shading` (`None`: coverage only, for the caller's per-pixel shading); `uv` when
-    /// the target needs both uvs (it keeps the uv buffers or the texel difference).
-    pub fn new(
-        edges: &[Edge; 3],
-        bounds: PixelBounds,
-        weights: &WeightPlanes,
-        verts: &LaneVertices,
-        shading: Option<LaneShading>,
-        uv: bool,
-    ) -> Self {
-        let mut tri = Self::EMPTY;
-        tri.set(edges, bounds, weights, verts, shading, uv);
-        tri
-    }
-
-    /// [`LaneTriangle::new`] in place, so that a loop over many triangles reuses one.
-    #[inline(always)]
-    pub fn set(
-        &mut self,
-        edges: &[Edge; 3],
-        bounds: PixelBounds,
-        weights: &WeightPlanes,
-        verts: &LaneVertices,
-        shading: Option<LaneShading>,
-        uv: bool,
-    ) {
-        let color = shading.map_or(LaneColor::Texture, |s| s.color);
-        let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
-        let wire = shading.is_some_and(|s| s.wireframe);
-        self.consts.set(weights, verts, mode, wire, color);
-        if uv {
-            self.consts.both_uv = Some(both_uv(verts));
-        }
-        self.planes = EdgePlanes::from_edges(edges);
-        self.edges = *edges;
-        self.bounds = bounds;
-    }
-
-    /// From a set-up triangle.
-    pub fn of(setup: &TriangleSetup, shading: Option<LaneShading>, uv: bool) -> Self {
-        let verts = LaneVertices::of(setup);
-        Self::new(
-            &setup.edges,
-            setup.bounds,
-            &setup.weights,
-            &verts,
-            shading,
-            uv,
-        )
-    }
-
-    /// Pixels whose centres can be covered.
-    pub fn bounds(&self) -> PixelBounds {
-        self.bounds
-    }
-
-    /// Whether the lanes can draw it: edge values exact in `f64` over its bounds (otherwise,
-    /// near the guard band, the per-pixel path does).
-    pub fn exact(&self) -> bool {
-        // Cheap and sufficient (nearly every triangle): every vertex within 2^24 subpixels
-        // (65,536 pixels) of the origin. Then |dir| < 2^25 and, for any sample the lanes visit
-        // (columns and rows below 2^14 + LANES, so below 2^22 subpixels), |P - S| < 2^25, and
-        // |E| = |dir_x (P_y - S_y) - dir_y (P_x - S_x)| < 2^51, below the exactness limit.
-        // Otherwise the edge values at the corners of the bounds are checked.
-        const NEAR: i64 = 1 << 24;
-        let near = |e: &Edge| e.start.x.abs() < NEAR && e.start.y.abs() < NEAR;
-        self.edges.iter().all(near) || self.planes.exact_over(&self.bounds)
-    }
-}
-
 /// uv, depth, validity and wireframe hits of eight samples (and the interpolated channels
 /// and the `f64` depth for the shadings that show them).
 struct Samples {
@@ -506,24 +266,6 @@ fn channel3(s: &Samples, first: usize, k: usize) -> Vec3 {
         s.channels[first + 1][k],
         s.channels[first + 2][k],
     )
-}
-
-/// The vertices' uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]`
-/// (the `noperspective` set, then the `smooth` one), for [`Constants::both_uv`].
-fn both_uv(verts: &LaneVertices) -> [[f64; 3]; 4] {
-    let uv = |k: usize, smooth: bool| {
-        let v = match (smooth, &verts.noperspective) {
-            (false, Some(n)) => &n[k],
-            _ => &verts.smooth[k],
-        };
-        v.uv().as_dvec2()
-    };
-    [
-        [0, 1, 2].map(|k| uv(k, false).x),
-        [0, 1, 2].map(|k| uv(k, false).y),
-        [0, 1, 2].map(|k| uv(k, true).x),
-        [0, 1, 2].map(|k| uv(k, true).y),
-    ]
 }
 
 /// The screen weights of the eight pixels `x, x + 1, ...` of row `y`, as

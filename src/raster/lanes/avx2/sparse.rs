@@ -1,0 +1,157 @@
+//! Sparse rows gathered into full chunks: a small triangle (a dense mesh's, a few pixels
+//! each) covers one to three pixels of each row it crosses, so a row chunk of eight lanes
+//! does mostly wasted work. Rows whose chunk covers at most [`MAX_LANES`] pixels give their
+//! covered pixels to a [`Gathered`] list instead, and every eight of them are interpolated,
+//! shaded and written as one chunk, each lane with its own row. Every lane still computes
+//! the row path's operations on its own pixel centre (its own row term), so the values are
+//! the same bit for bit; only the write differs: lane by lane, not eight pixels side by side.
+//! The pixels of one triangle are distinct, so the order of their writes does not matter.
+
+use std::arch::x86_64::*;
+
+use super::super::{LANES, Target};
+use crate::raster::framebuffer::depth_passes;
+use crate::raster::setup::WeightPlanes;
+
+/// A row chunk covering at most this many pixels goes to the gathered list.
+pub(super) const MAX_LANES: u32 = 4;
+
+/// Covered pixels waiting to be drawn as full chunks (at most `LANES - 1` left over from
+/// the last chunk, plus one row's `MAX_LANES`).
+pub(super) struct Gathered {
+    x: [i32; 2 * LANES],
+    y: [i32; 2 * LANES],
+    len: usize,
+}
+
+impl Gathered {
+    pub(super) fn new() -> Self {
+        Self {
+            x: [0; 2 * LANES],
+            y: [0; 2 * LANES],
+            len: 0,
+        }
+    }
+
+    /// Adds the covered lanes (`bits`, lane k in bit k) of the chunk at column `x`, row `y`.
+    #[inline]
+    pub(super) fn add(&mut self, x: u32, y: u32, mut bits: i32) {
+        while bits != 0 && self.len < 2 * LANES {
+            let k = bits.trailing_zeros();
+            self.x[self.len] = (x + k) as i32;
+            self.y[self.len] = y as i32;
+            self.len += 1;
+            bits &= bits - 1;
+        }
+    }
+
+    /// Whether a full chunk is waiting.
+    #[inline]
+    pub(super) fn full(&self) -> bool {
+        self.len >= LANES
+    }
+
+    /// Whether nothing is waiting.
+    #[inline]
+    pub(super) fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Takes up to eight pixels: their columns and rows as lanes, and the lanes that hold
+    /// one (lane k in bit k; the other lanes repeat the first pixel).
+    #[target_feature(enable = "avx2")]
+    pub(super) fn take(&mut self) -> (__m256i, __m256i, i32) {
+        let n = self.len.min(LANES);
+        let (mut x, mut y) = ([self.x[0]; LANES], [self.y[0]; LANES]);
+        x[..n].copy_from_slice(&self.x[..n]);
+        y[..n].copy_from_slice(&self.y[..n]);
+        self.x.copy_within(n..self.len, 0);
+        self.y.copy_within(n..self.len, 0);
+        self.len -= n;
+        // SAFETY: unaligned loads of two eight-element i32 arrays.
+        let (xs, ys) = unsafe {
+            (
+                _mm256_loadu_si256(x.as_ptr().cast()),
+                _mm256_loadu_si256(y.as_ptr().cast()),
+            )
+        };
+        (xs, ys, (1 << n) - 1)
+    }
+}
+
+/// Pixel centres `i + 0.5` of four i32 lanes as `f64` (exact: the values are small integers
+/// plus a half, as the row path's `f64::from(x) + 0.5`).
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) fn centres(v: __m128i) -> __m256d {
+    _mm256_add_pd(_mm256_cvtepi32_pd(v), _mm256_set1_pd(0.5))
+}
+
+/// The screen weights at four pixel centres, each on its own row:
+/// [`WeightPlanes::weight`] of [`WeightPlanes::row_term`], the row path's operations
+/// (`avx2::weights4`) with the row term per lane.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) fn weights4(w: &WeightPlanes, px: __m256d, py: __m256d) -> [__m256d; 3] {
+    let mut out = [_mm256_setzero_pd(); 3];
+    for (i, o) in out.iter_mut().enumerate() {
+        let row = _mm256_mul_pd(
+            _mm256_set1_pd(w.dir[i].x),
+            _mm256_sub_pd(py, _mm256_set1_pd(w.start[i].y)),
+        );
+        let dx = _mm256_sub_pd(px, _mm256_set1_pd(w.start[i].x));
+        let t = _mm256_sub_pd(row, _mm256_mul_pd(_mm256_set1_pd(w.dir[i].y), dx));
+        *o = _mm256_mul_pd(t, _mm256_set1_pd(w.inv_area2));
+    }
+    out
+}
+
+/// Buffer indices of the band for columns `x` and image rows `y`.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) fn indices(target: &Target<'_>, x: __m256i, y: __m256i) -> __m256i {
+    let row = _mm256_sub_epi32(y, _mm256_set1_epi32(target.y0 as i32));
+    _mm256_add_epi32(
+        _mm256_mullo_epi32(row, _mm256_set1_epi32(target.width as i32)),
+        x,
+    )
+}
+
+/// Depth-tests and writes the lanes in `ok` of a gathered chunk, each at its own buffer
+/// index (`at`), one by one with [`depth_passes`]. Returns the lanes that passed. A target
+/// with uv or difference buffers never gets a gathered chunk.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) fn write(
+    target: &mut Target<'_>,
+    at: __m256i,
+    ok: __m256i,
+    depth: __m256,
+    rgba: __m256i,
+) -> __m256i {
+    debug_assert!(target.uv.is_none() && target.difference.is_none());
+    let (mut d, mut c, mut i) = ([0.0f32; LANES], [0i32; LANES], [0i32; LANES]);
+    // SAFETY: unaligned stores into three eight-element arrays.
+    unsafe {
+        _mm256_storeu_ps(d.as_mut_ptr(), depth);
+        _mm256_storeu_si256(c.as_mut_ptr().cast(), rgba);
+        _mm256_storeu_si256(i.as_mut_ptr().cast(), at);
+    }
+    let mut bits = _mm256_movemask_ps(_mm256_castsi256_ps(ok));
+    let mut pass = 0;
+    while bits != 0 {
+        let k = bits.trailing_zeros() as usize;
+        bits &= bits - 1;
+        let j = i[k] as usize;
+        if let Some(old) = target.depth.get_mut(j)
+            && depth_passes(d[k], *old)
+        {
+            *old = d[k];
+            if let Some(px) = target.color.get_mut(j) {
+                *px = c[k].to_le_bytes();
+            }
+            pass |= 1 << k;
+        }
+    }
+    super::mask_from_bits(pass)
+}
