@@ -471,6 +471,47 @@ pub(super) fn edge_triangle(
     // difference buffers).
     let mut gathered =
         (target.uv.is_none() && target.difference.is_none()).then(sparse::Gathered::new);
+    let consts = &tri.consts;
+    match gathered.as_mut() {
+        // A narrow triangle (a dense mesh's): every covered pixel is gathered.
+        Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => {
+            narrow_rows(tri, (y_start, y_end), g, mode, color, &mut lookups, target)
+        }
+        _ => block_rows(
+            tri,
+            (y_start, y_end),
+            gathered.as_mut(),
+            mode,
+            color,
+            &mut lookups,
+            target,
+        ),
+    }
+    if let Some(g) = gathered.as_mut() {
+        while !g.is_empty() {
+            draw_gathered(g, consts, mode, color, &mut lookups, target);
+        }
+    }
+    if let Some(l) = lookups.as_mut() {
+        l.flush(target);
+    }
+}
+
+/// The edge-function lanes over the triangle's blocks of [`LANES`] columns by [`BLOCK_ROWS`]
+/// rows: each block rejected, accepted or tested whole, then row by row; a row covering at
+/// most [`sparse::MAX_LANES`] pixels goes to `gathered` when there is one.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+#[target_feature(enable = "avx2")]
+fn block_rows(
+    tri: &LaneTriangle,
+    (y_start, y_end): (u32, u32),
+    mut gathered: Option<&mut sparse::Gathered>,
+    mode: Interpolation,
+    color: LaneColor,
+    lookups: &mut Option<Lookups<'_, '_>>,
+    target: &mut Target<'_>,
+) {
     let planes = &tri.planes;
     let consts = &tri.consts;
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
@@ -504,27 +545,17 @@ pub(super) fn edge_triangle(
                     let covered = if block == Block::Inside {
                         in_row
                     } else {
-                        let pass = |e: &[__m256d; 3]| {
-                            let m = _mm256_and_pd(
-                                _mm256_and_pd(
-                                    _mm256_cmp_pd::<_CMP_GE_OQ>(e[0], t[0]),
-                                    _mm256_cmp_pd::<_CMP_GE_OQ>(e[1], t[1]),
-                                ),
-                                _mm256_cmp_pd::<_CMP_GE_OQ>(e[2], t[2]),
-                            );
-                            _mm256_movemask_pd(m)
-                        };
-                        (pass(&lo) | (pass(&hi) << 4)) & in_row
+                        (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row
                     };
                     if covered == 0 {
                         continue;
                     }
-                    if let Some(g) = gathered.as_mut()
+                    if let Some(g) = gathered.as_deref_mut()
                         && covered.count_ones() <= sparse::MAX_LANES
                     {
                         g.add(bx, y, covered);
                         if g.full() {
-                            draw_gathered(g, consts, mode, color, &mut lookups, target);
+                            draw_gathered(g, consts, mode, color, lookups, target);
                         }
                         continue;
                     }
@@ -535,30 +566,75 @@ pub(super) fn edge_triangle(
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
                     let at = Where::Row(index);
-                    shade_chunk(
-                        [lo, hi],
-                        covered,
-                        at,
-                        consts,
-                        mode,
-                        color,
-                        &mut lookups,
-                        target,
-                    );
+                    shade_chunk([lo, hi], covered, at, consts, mode, color, lookups, target);
                 }
             }
             bx += LANES as u32;
         }
         by = by_end + 1;
     }
-    if let Some(g) = gathered.as_mut() {
-        while !g.is_empty() {
-            draw_gathered(g, consts, mode, color, &mut lookups, target);
+}
+
+/// The edge-function lanes over a triangle at most [`LANES`] columns wide: the edge values of
+/// one row of eight lanes, stepped row by row (exact integer additions: the triangle is
+/// [`exact`](LaneTriangle::exact)), and every covered pixel gathered, without blocks.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn narrow_rows(
+    tri: &LaneTriangle,
+    (y_start, y_end): (u32, u32),
+    g: &mut sparse::Gathered,
+    mode: Interpolation,
+    color: LaneColor,
+    lookups: &mut Option<Lookups<'_, '_>>,
+    target: &mut Target<'_>,
+) {
+    let planes = &tri.planes;
+    let x0 = tri.bounds.x0;
+    let lanes_in = (tri.bounds.x1 - x0 + 1).min(LANES as u32);
+    let in_row = (1i32 << lanes_in) - 1;
+    let base = planes.at(i64::from(y_start), i64::from(x0));
+    let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+    let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
+    let mut lo = [_mm256_setzero_pd(); 3];
+    let mut hi = [_mm256_setzero_pd(); 3];
+    let mut step = [_mm256_setzero_pd(); 3];
+    let mut t = [_mm256_setzero_pd(); 3];
+    for i in 0..3 {
+        let a = _mm256_set1_pd(planes.a[i] as f64);
+        let b = _mm256_set1_pd(base[i] as f64);
+        lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a, lane_lo));
+        hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a, lane_hi));
+        step[i] = _mm256_set1_pd(planes.b[i] as f64);
+        t[i] = _mm256_set1_pd(planes.t[i] as f64);
+    }
+    for y in y_start..=y_end {
+        let covered = (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row;
+        if covered != 0 {
+            g.add(x0, y, covered);
+            if g.full() {
+                draw_gathered(g, &tri.consts, mode, color, lookups, target);
+            }
+        }
+        for i in 0..3 {
+            lo[i] = _mm256_add_pd(lo[i], step[i]);
+            hi[i] = _mm256_add_pd(hi[i], step[i]);
         }
     }
-    if let Some(l) = lookups.as_mut() {
-        l.flush(target);
-    }
+}
+
+/// The lanes (bits 0..4) whose three edge values `e` reach their thresholds `t`.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn passing(e: &[__m256d; 3], t: &[__m256d; 3]) -> i32 {
+    let m = _mm256_and_pd(
+        _mm256_and_pd(
+            _mm256_cmp_pd::<_CMP_GE_OQ>(e[0], t[0]),
+            _mm256_cmp_pd::<_CMP_GE_OQ>(e[1], t[1]),
+        ),
+        _mm256_cmp_pd::<_CMP_GE_OQ>(e[2], t[2]),
+    );
+    _mm256_movemask_pd(m)
 }
 
 /// Where a chunk's lanes are in the band's buffers.

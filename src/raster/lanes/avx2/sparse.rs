@@ -58,24 +58,24 @@ impl Gathered {
     }
 
     /// Takes up to eight pixels: their columns and rows as lanes, and the lanes that hold
-    /// one (lane k in bit k; the other lanes repeat the first pixel).
+    /// one (lane k in bit k; the other lanes hold stale positions, whose values nobody
+    /// writes). The rest (fewer than eight) moves to the front.
+    #[inline]
     #[target_feature(enable = "avx2")]
     pub(super) fn take(&mut self) -> (__m256i, __m256i, i32) {
         let n = self.len.min(LANES);
-        let (mut x, mut y) = ([self.x[0]; LANES], [self.y[0]; LANES]);
-        x[..n].copy_from_slice(&self.x[..n]);
-        y[..n].copy_from_slice(&self.y[..n]);
-        self.x.copy_within(n..self.len, 0);
-        self.y.copy_within(n..self.len, 0);
-        self.len -= n;
-        // SAFETY: unaligned loads of two eight-element i32 arrays.
-        let (xs, ys) = unsafe {
-            (
-                _mm256_loadu_si256(x.as_ptr().cast()),
-                _mm256_loadu_si256(y.as_ptr().cast()),
-            )
-        };
-        (xs, ys, (1 << n) - 1)
+        // SAFETY: unaligned loads and stores of the first and second eight elements of the
+        // sixteen-element arrays.
+        unsafe {
+            let x = self.x.as_mut_ptr().cast::<__m256i>();
+            let y = self.y.as_mut_ptr().cast::<__m256i>();
+            let xs = _mm256_loadu_si256(x);
+            let ys = _mm256_loadu_si256(y);
+            _mm256_storeu_si256(x, _mm256_loadu_si256(x.add(1)));
+            _mm256_storeu_si256(y, _mm256_loadu_si256(y.add(1)));
+            self.len -= n;
+            (xs, ys, (1 << n) - 1)
+        }
     }
 }
 
