@@ -22,7 +22,7 @@ use glam::{DVec2, I64Vec2};
 use super::bands::RowBand;
 use super::clip::{ClipPlane, planes};
 use super::framebuffer::Framebuffer;
-use super::lanes::{LaneShading, LaneTriangle};
+use super::lanes::{LaneShading, LaneTriangle, Lanes};
 use super::mesh::ClipMesh;
 use super::prepare::{PreparedTriangle, prepare_triangle_with};
 use super::project::{Viewport, WindowVertex, ndc_from_clip, project_vertex};
@@ -357,6 +357,7 @@ impl<'m> FastMesh<'m> {
                             Rasterizer::Scanline => !uvs && scanline_lanes_apply(s),
                         }
                 });
+                let drawer = lanes.map(|s| Lanes::new(texture, s));
                 let mut tri = LaneTriangle::EMPTY;
                 for (j, &(ti, si)) in bin.iter().enumerate() {
                     // The triangles a band visits are scattered over the mesh: ask for the memory
@@ -375,17 +376,22 @@ impl<'m> FastMesh<'m> {
                     match &self.slots[ti as usize] {
                         Slot::Skip => {}
                         Slot::Whole { corners, .. } => {
-                            let drawn = match lanes {
-                                Some(shading)
-                                    if self.set_lane_triangle(&mut tri, *corners, shading, uvs) =>
+                            let drawn = match &drawer {
+                                Some(d)
+                                    if self.set_lane_triangle(
+                                        &mut tri,
+                                        *corners,
+                                        d.shading(),
+                                        uvs,
+                                    ) =>
                                 {
                                     match rasterizer {
                                         Rasterizer::Scanline => {
-                                            draw_scanline_lanes(&tri, texture, shading, &mut band);
+                                            draw_scanline_lanes(&tri, d, &mut band);
                                             true
                                         }
                                         Rasterizer::EdgeFunction if tri.exact() => {
-                                            draw_lanes(&tri, ti, texture, shading, &mut band);
+                                            draw_lanes(&tri, ti, d, texture, &mut band);
                                             true
                                         }
                                         Rasterizer::EdgeFunction => false,

@@ -333,28 +333,22 @@ fn lane_target<'b>(band: &'b mut RowBand<'_>, source: u32, texture: &Texture) ->
     }
 }
 
-/// Draws the rows of an [`exact`](lanes::LaneTriangle::exact) lane triangle (made for
-/// `shading`) that fall in a band without per-pixel buffers, with the edge-function lanes.
+/// Draws the rows of an [`exact`](lanes::LaneTriangle::exact) lane triangle (made for the
+/// shading of `lanes`) that fall in a band without per-pixel buffers, with the
+/// edge-function lanes.
 pub(super) fn draw_lanes(
     tri: &lanes::LaneTriangle,
     source: u32,
+    lanes: &lanes::Lanes<'_>,
     texture: &Texture,
-    shading: LaneShading,
     band: &mut RowBand<'_>,
 ) {
-    let Some((y_start, y_end)) = band.rows_of(&tri.bounds()) else {
+    let Some(rows) = band.rows_of(&tri.bounds()) else {
         return;
     };
     let mut target = lane_target(band, source, texture);
     // With a shading, the lanes colour every covered sample themselves.
-    lanes::edge_triangle(
-        tri,
-        (y_start, y_end),
-        texture,
-        Some(shading),
-        &mut target,
-        &mut |_, _, _| {},
-    );
+    lanes.edge_triangle(tri, rows, &mut target);
 }
 
 /// Whether the scanline lanes draw with this shading into a band without uv or per-pixel
@@ -363,15 +357,14 @@ pub(super) fn scanline_lanes_apply(shading: &LaneShading) -> bool {
     !shading.wireframe && shading.color == lanes::LaneColor::Texture
 }
 
-/// Draws the rows of a lane triangle (made for `shading`, without uv) that fall in a band
-/// without uv or per-pixel buffers, with the scanline lanes.
+/// Draws the rows of a lane triangle (made for the shading of `lanes`, without uv) that fall
+/// in a band without uv or per-pixel buffers, with the scanline lanes.
 pub(super) fn draw_scanline_lanes(
     tri: &lanes::LaneTriangle,
-    texture: &Texture,
-    shading: LaneShading,
+    lanes: &lanes::Lanes<'_>,
     band: &mut RowBand<'_>,
 ) {
-    let Some((y_start, y_end)) = band.rows_of(&tri.bounds()) else {
+    let Some(rows) = band.rows_of(&tri.bounds()) else {
         return;
     };
     let mut target = Target {
@@ -382,7 +375,7 @@ pub(super) fn draw_scanline_lanes(
         uv: None,
         difference: None,
     };
-    lanes::scanline_triangle(tri, (y_start, y_end), texture, shading, &mut target);
+    lanes.scanline_triangle(tri, rows, &mut target);
 }
 
 /// Visits every covered pixel centre of one set-up triangle within a band, depth-tests and
@@ -473,7 +466,7 @@ pub(super) fn rasterize(
                 if !uvs && !diffs && scanline_lanes_apply(&shading) =>
             {
                 let tri = lanes::LaneTriangle::of(setup, Some(shading), false);
-                draw_scanline_lanes(&tri, texture, shading, band);
+                draw_scanline_lanes(&tri, &lanes::Lanes::new(texture, shading), band);
                 return;
             }
             _ => {}

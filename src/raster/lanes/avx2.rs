@@ -271,77 +271,81 @@ fn weights4(w: &WeightPlanes, row: &[f64; 3], px: __m256d) -> [__m256d; 3] {
 
 /// uv, depth (f64 lanes) and the validity bits of four samples from their screen weights, as
 /// `interpolate::fragment`.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn from_weights4(l: [__m256d; 3], c: &Constants, mode: Interpolation, color: LaneColor) -> Four {
-    let q = [
-        _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
-        _mm256_mul_pd(l[1], _mm256_set1_pd(c.inv_w[1])),
-        _mm256_mul_pd(l[2], _mm256_set1_pd(c.inv_w[2])),
-    ];
-    let sum = _mm256_add_pd(_mm256_add_pd(q[0], q[1]), q[2]);
-    let ok = _mm256_and_pd(
-        _mm256_cmp_pd::<_CMP_GT_OQ>(sum, _mm256_setzero_pd()),
-        _mm256_cmp_pd::<_CMP_LT_OQ>(sum, _mm256_set1_pd(f64::INFINITY)),
-    );
-    let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
-    let p = [
-        _mm256_mul_pd(q[0], inv),
-        _mm256_mul_pd(q[1], inv),
-        _mm256_mul_pd(q[2], inv),
-    ];
-    let w = match mode {
-        Interpolation::Perspective => p,
-        Interpolation::Affine => l,
-    };
-    // uv both ways for the heatmap's buffers, as the lane code computes them.
-    let both_uv = c.both_uv.map(|b| {
-        [
-            dot3(&l, b[0]),
-            dot3(&l, b[1]),
-            dot3(&p, b[2]),
-            dot3(&p, b[3]),
-        ]
-    });
-    let (mut wire, mut halo) = (0, 0);
-    if let Some(wire_consts) = &c.wire {
-        for i in 0..3 {
-            if wire_consts.len[i] > 0.0 {
-                // `shade::on_wire_edge`, mirrored: the weight as f32, as the varyings hold
-                // it, then over the gradient length.
-                let weight = _mm256_cvtps_pd(_mm256_cvtpd_ps(dot3(&l, wire_consts.bary[i])));
-                let d = _mm256_div_pd(weight, _mm256_set1_pd(wire_consts.len[i]));
-                wire |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
-                    d,
-                    _mm256_set1_pd(WIRE_WIDTH_PX),
-                ));
-                // `shade::on_wire_halo`, mirrored the same way.
-                halo |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
-                    d,
-                    _mm256_set1_pd(WIRE_WIDTH_PX + WIRE_HALO_PX),
-                ));
+/// (A macro, not a function: it is expanded into each caller, so its vectors stay in
+/// registers; a call returns [`Four`] through memory. Use it in `unsafe`, AVX2 code.)
+macro_rules! from_weights4 {
+    ($l:expr, $c:expr, $mode:expr, $color:expr) => {{
+        let (l, c, mode, color): ([__m256d; 3], &Constants, Interpolation, LaneColor) =
+            ($l, $c, $mode, $color);
+        let q = [
+            _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
+            _mm256_mul_pd(l[1], _mm256_set1_pd(c.inv_w[1])),
+            _mm256_mul_pd(l[2], _mm256_set1_pd(c.inv_w[2])),
+        ];
+        let sum = _mm256_add_pd(_mm256_add_pd(q[0], q[1]), q[2]);
+        let ok = _mm256_and_pd(
+            _mm256_cmp_pd::<_CMP_GT_OQ>(sum, _mm256_setzero_pd()),
+            _mm256_cmp_pd::<_CMP_LT_OQ>(sum, _mm256_set1_pd(f64::INFINITY)),
+        );
+        let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
+        let p = [
+            _mm256_mul_pd(q[0], inv),
+            _mm256_mul_pd(q[1], inv),
+            _mm256_mul_pd(q[2], inv),
+        ];
+        let w = match mode {
+            Interpolation::Perspective => p,
+            Interpolation::Affine => l,
+        };
+        // uv both ways for the heatmap's buffers, as the lane code computes them.
+        let both_uv = c.both_uv.map(|b| {
+            [
+                dot3(&l, b[0]),
+                dot3(&l, b[1]),
+                dot3(&p, b[2]),
+                dot3(&p, b[3]),
+            ]
+        });
+        let (mut wire, mut halo) = (0, 0);
+        if let Some(wire_consts) = &c.wire {
+            for i in 0..3 {
+                if wire_consts.len[i] > 0.0 {
+                    // `shade::on_wire_edge`, mirrored: the weight as f32, as the varyings hold
+                    // it, then over the gradient length.
+                    let weight = _mm256_cvtps_pd(_mm256_cvtpd_ps(dot3(&l, wire_consts.bary[i])));
+                    let d = _mm256_div_pd(weight, _mm256_set1_pd(wire_consts.len[i]));
+                    wire |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
+                        d,
+                        _mm256_set1_pd(WIRE_WIDTH_PX),
+                    ));
+                    // `shade::on_wire_halo`, mirrored the same way.
+                    halo |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
+                        d,
+                        _mm256_set1_pd(WIRE_WIDTH_PX + WIRE_HALO_PX),
+                    ));
+                }
             }
         }
-    }
-    let mut channels = [_mm256_setzero_pd(); CHANNELS];
-    if !matches!(color, LaneColor::Texture | LaneColor::Depth(..)) {
-        for ch in 0..c.used_channels {
-            channels[ch] = dot3(&w, c.channels[ch]);
+        let mut channels = [_mm256_setzero_pd(); CHANNELS];
+        if !matches!(color, LaneColor::Texture | LaneColor::Depth(..)) {
+            for ch in 0..c.used_channels {
+                channels[ch] = dot3(&w, c.channels[ch]);
+            }
         }
-    }
-    Four {
-        u: dot3(&w, c.u),
-        v: dot3(&w, c.v),
-        depth: dot3(&l, c.depth),
-        ok: _mm256_movemask_pd(ok),
-        wire,
-        halo,
-        channels,
-        both_uv,
-    }
+        Four {
+            u: dot3(&w, c.u),
+            v: dot3(&w, c.v),
+            depth: dot3(&l, c.depth),
+            ok: _mm256_movemask_pd(ok),
+            wire,
+            halo,
+            channels,
+            both_uv,
+        }
+    }};
 }
 
-/// What [`from_weights4`] finds for four samples.
+/// What `from_weights4!` finds for four samples.
 struct Four {
     u: __m256d,
     v: __m256d,
@@ -683,8 +687,8 @@ fn shade_chunk(
     lookups: &mut Option<Lookups<'_, '_>>,
     target: &mut Target<'_>,
 ) {
-    let lo = from_weights4(lo, consts, mode, color);
-    let hi = from_weights4(hi, consts, mode, color);
+    let lo = from_weights4!(lo, consts, mode, color);
+    let hi = from_weights4!(hi, consts, mode, color);
     let ok = covered & (lo.ok | (hi.ok << 4));
     if ok == 0 {
         return;

@@ -53,12 +53,14 @@ use super::texture::{
 use super::varying::Varyings;
 
 mod blocks;
+mod paths;
 mod sampler;
 mod scanline;
 mod triangle;
 
 pub use blocks::EdgePlanes;
 use blocks::{Block, classify};
+pub use paths::Lanes;
 use sampler::{LaneWrap, Sampler};
 use scanline::Stepped;
 pub use scanline::scanline_triangle;
@@ -371,20 +373,13 @@ pub fn edge_triangle(
     target: &mut Target<'_>,
     fallback: &mut dyn FnMut(u32, u32, [i64; 3]),
 ) {
+    if let Some(sh) = shading {
+        return Lanes::new(texture, sh).edge_triangle(tri, rows, target);
+    }
     #[cfg(target_arch = "x86_64")]
     {
         if vector_path() {
-            if let Some(sh) = shading {
-                let sampler = avx2::VecSampler::new(texture, &sh);
-                if sh.color != LaneColor::Texture || sampler.is_some() {
-                    // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                    unsafe {
-                        avx2::edge_triangle(tri, rows, sampler.as_ref(), wide_path(), &sh, target)
-                    };
-                    return;
-                }
-            }
-            // SAFETY: as above.
+            // SAFETY: the CPU supports AVX2, checked by `vector_path`.
             unsafe { edge_triangle_avx2(tri, rows, texture, shading, target, fallback) };
             return;
         }

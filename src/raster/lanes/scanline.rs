@@ -11,22 +11,7 @@ pub fn scanline_triangle(
     shading: LaneShading,
     target: &mut Target<'_>,
 ) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if vector_path() {
-            if let Some(sampler) = avx2::VecSampler::new(texture, &shading) {
-                // SAFETY: the CPU supports AVX2, checked by `vector_path`.
-                unsafe {
-                    avx2::scanline_triangle(tri, rows, &sampler, wide_path(), shading.mode, target)
-                };
-                return;
-            }
-            // SAFETY: as above.
-            unsafe { scanline_triangle_avx2(tri, rows, texture, shading, target) };
-            return;
-        }
-    }
-    scanline_triangle_impl(tri, rows, texture, shading, target);
+    Lanes::new(texture, shading).scanline_triangle(tri, rows, target);
 }
 
 #[cfg(target_arch = "x86_64")]

@@ -158,7 +158,11 @@ impl Constants {
         });
         self.set_wire(weights, wireframe, ONE_HOT);
         // Both attribute sets are the same: the uvs twice (as `both_uv` gives them).
-        self.both_uv = uv.then_some([self.u, self.v, self.u, self.v]);
+        self.both_uv = if uv {
+            Some([self.u, self.v, self.u, self.v])
+        } else {
+            None
+        };
     }
 
     /// The three vertices' uv.

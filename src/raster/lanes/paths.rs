@@ -1,0 +1,110 @@
+//! Which lane code draws: chosen once for many triangles ([`Lanes`]), not per triangle.
+
+use super::*;
+
+/// The build of the lane code that runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Build {
+    /// The portable lane code.
+    Portable,
+    /// The portable lane code compiled with AVX2 (a texture wrap the vector sampler lacks).
+    Avx2Portable,
+    /// The AVX2 intrinsics.
+    Avx2,
+}
+
+/// The lane paths for drawing many triangles with one texture and shading (a band of the fast
+/// path): the instruction set and the texture sampler are chosen once, when it is made.
+pub struct Lanes<'t> {
+    texture: &'t Texture,
+    shading: LaneShading,
+    build: Build,
+    #[cfg(target_arch = "x86_64")]
+    sampler: Option<avx2::VecSampler<'t>>,
+    /// AVX-512 texture lookups allowed and present.
+    wide: bool,
+}
+
+impl<'t> Lanes<'t> {
+    /// The best lane code this CPU (and [`set_vector_level`]) allows for `shading`.
+    pub fn new(texture: &'t Texture, shading: LaneShading) -> Self {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if vector_path() {
+                let sampler = avx2::VecSampler::new(texture, &shading);
+                let build = if shading.color != LaneColor::Texture || sampler.is_some() {
+                    Build::Avx2
+                } else {
+                    Build::Avx2Portable
+                };
+                return Self {
+                    texture,
+                    shading,
+                    build,
+                    sampler,
+                    wide: wide_path(),
+                };
+            }
+        }
+        Self {
+            texture,
+            shading,
+            build: Build::Portable,
+            #[cfg(target_arch = "x86_64")]
+            sampler: None,
+            wide: false,
+        }
+    }
+
+    /// The shading it draws.
+    pub fn shading(&self) -> LaneShading {
+        self.shading
+    }
+
+    /// Draws rows `rows` (within the target band) of `tri`, made for this shading, with the
+    /// edge-function lanes (see [`edge_triangle`]). `tri` must be
+    /// [`exact`](LaneTriangle::exact).
+    pub fn edge_triangle(&self, tri: &LaneTriangle, rows: (u32, u32), target: &mut Target<'_>) {
+        let (texture, shading) = (self.texture, Some(self.shading));
+        let fallback = &mut |_, _, _| {};
+        match self.build {
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the CPU supports AVX2 (`vector_path` chose this build).
+            Build::Avx2 => unsafe {
+                avx2::edge_triangle(
+                    tri,
+                    rows,
+                    self.sampler.as_ref(),
+                    self.wide,
+                    &self.shading,
+                    target,
+                )
+            },
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: as above.
+            Build::Avx2Portable => unsafe {
+                edge_triangle_avx2(tri, rows, texture, shading, target, fallback)
+            },
+            _ => edge_triangle_impl(tri, rows, texture, shading, target, fallback),
+        }
+    }
+
+    /// Draws rows `rows` of `tri`, made for this shading (texture shading without the
+    /// wireframe), with the scanline lanes (see [`scanline_triangle`]).
+    pub fn scanline_triangle(&self, tri: &LaneTriangle, rows: (u32, u32), target: &mut Target<'_>) {
+        let (texture, shading) = (self.texture, self.shading);
+        match (self.build, &self.sampler) {
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the CPU supports AVX2 (`vector_path` chose this build).
+            (Build::Avx2, Some(sampler)) => unsafe {
+                avx2::scanline_triangle(tri, rows, sampler, self.wide, shading.mode, target)
+            },
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: as above.
+            (Build::Avx2 | Build::Avx2Portable, _) => unsafe {
+                scanline::scanline_triangle_avx2(tri, rows, texture, shading, target)
+            },
+            _ => scanline::scanline_triangle_impl(tri, rows, texture, shading, target),
+        }
+    }
+}
