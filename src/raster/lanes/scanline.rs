@@ -69,15 +69,20 @@ impl Stepped {
     pub(super) fn lanes(start: Self, step: &Self) -> [Self; LANES] {
         let mut lanes = [start; LANES];
         for k in 1..LANES {
-            let p = lanes[k - 1];
-            lanes[k] = Self {
-                u: p.u + step.u,
-                v: p.v + step.v,
-                inv_w: p.inv_w + step.inv_w,
-                depth: p.depth + step.depth,
-            };
+            lanes[k] = lanes[k - 1].next(step);
         }
         lanes
+    }
+
+    /// The values one pixel further along the row: one single step.
+    #[inline(always)]
+    pub(super) fn next(&self, step: &Self) -> Self {
+        Self {
+            u: self.u + step.u,
+            v: self.v + step.v,
+            inv_w: self.inv_w + step.inv_w,
+            depth: self.depth + step.depth,
+        }
     }
 }
 

@@ -9,7 +9,7 @@
 
 use std::arch::x86_64::*;
 
-use super::super::{LANES, Target};
+use super::super::{LANES, Stepped, Target};
 use crate::raster::framebuffer::depth_passes;
 use crate::raster::setup::WeightPlanes;
 
@@ -75,6 +75,75 @@ impl Gathered {
             _mm256_storeu_si256(y, _mm256_loadu_si256(y.add(1)));
             self.len -= n;
             (xs, ys, (1 << n) - 1)
+        }
+    }
+}
+
+/// Pixels of short spans of the scanline lanes waiting to be drawn as full chunks: each
+/// one's buffer index and stepped values (as the row path's lanes hold them).
+pub(super) struct SteppedGathered {
+    at: [i32; 2 * LANES],
+    /// `[u, v, 1/w, depth]` per pixel.
+    values: [[f64; 2 * LANES]; 4],
+    len: usize,
+}
+
+impl SteppedGathered {
+    pub(super) fn new() -> Self {
+        Self {
+            at: [0; 2 * LANES],
+            values: [[0.0; 2 * LANES]; 4],
+            len: 0,
+        }
+    }
+
+    /// Adds the pixel at buffer index `at` with its stepped values.
+    #[inline]
+    pub(super) fn add(&mut self, at: usize, s: &Stepped) {
+        if let Some(slot) = self.at.get_mut(self.len) {
+            *slot = at as i32;
+            for (v, x) in self.values.iter_mut().zip([s.u, s.v, s.inv_w, s.depth]) {
+                v[self.len] = x;
+            }
+            self.len += 1;
+        }
+    }
+
+    /// Whether a full chunk is waiting.
+    #[inline]
+    pub(super) fn full(&self) -> bool {
+        self.len >= LANES
+    }
+
+    /// Whether nothing is waiting.
+    #[inline]
+    pub(super) fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Takes up to eight pixels: their buffer indices, their values as
+    /// `[lanes 0..4, lanes 4..8]` of `[u, v, 1/w, depth]`, and the lanes that hold one (the
+    /// other lanes hold stale values, which nobody writes). The rest moves to the front.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(super) fn take(&mut self) -> (__m256i, [[__m256d; 4]; 2], i32) {
+        let n = self.len.min(LANES);
+        // SAFETY: unaligned loads and stores of elements 0..8 and 8..16 of sixteen-element
+        // arrays.
+        unsafe {
+            let at = self.at.as_mut_ptr().cast::<__m256i>();
+            let lanes = _mm256_loadu_si256(at);
+            _mm256_storeu_si256(at, _mm256_loadu_si256(at.add(1)));
+            let mut vals = [[_mm256_setzero_pd(); 4]; 2];
+            for (j, v) in self.values.iter_mut().enumerate() {
+                let p = v.as_mut_ptr();
+                vals[0][j] = _mm256_loadu_pd(p);
+                vals[1][j] = _mm256_loadu_pd(p.add(4));
+                _mm256_storeu_pd(p, _mm256_loadu_pd(p.add(8)));
+                _mm256_storeu_pd(p.add(4), _mm256_loadu_pd(p.add(12)));
+            }
+            self.len -= n;
+            (lanes, vals, (1 << n) - 1)
         }
     }
 }
