@@ -2,7 +2,9 @@
 //! the portable lane code in the parent module (and so as the per-pixel renderer), eight
 //! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
 //! is a mask or a clamp on both axes; tests check the two agree bit for bit.
-//! The texture lookups are in `avx2/texture.rs`.
+//! The texture lookups are in `avx2/texture.rs`, the writes of a chunk in `avx2/write.rs`, the
+//! non-texture colours in `avx2/shade.rs`, the gathering of sparse rows in `avx2/sparse.rs`
+//! and the scanline lanes in `avx2/scanline.rs`.
 
 use std::arch::x86_64::*;
 
@@ -18,11 +20,17 @@ use crate::raster::shade::{
 };
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
+mod scanline;
+mod shade;
 mod sparse;
 mod texture;
+mod write;
 
+pub(super) use scanline::scanline_triangle;
+use shade::channel_colors;
 use texture::sample;
 pub(super) use texture::{VecSampler, VecWrap};
+use write::{finish, mask_from_bits};
 
 /// A chunk of eight pixels whose colours are still to be looked up.
 struct Pending {
@@ -88,152 +96,6 @@ impl<'s, 'a> Lookups<'s, 'a> {
             finish(target, &chunk, rgba, None);
         }
     }
-}
-
-/// Paints the wireframe over a chunk's colours and writes it, with `both_uv`
-/// (`[u_affine, v_affine, u_smooth, v_smooth]`) into a target with uv or difference buffers.
-/// (The uvs are not part of [`Pending`]: a chunk waiting for its partner is moved, and
-/// the smaller the better.)
-#[inline]
-#[target_feature(enable = "avx2")]
-fn finish(
-    target: &mut Target<'_>,
-    chunk: &Pending,
-    mut rgba: __m256i,
-    both_uv: Option<&[__m256; 4]>,
-) {
-    if chunk.halo != 0 {
-        rgba = _mm256_blendv_epi8(
-            rgba,
-            _mm256_set1_epi32(i32::from_le_bytes(WIRE_HALO_COLOR)),
-            mask_from_bits(chunk.halo),
-        );
-    }
-    if chunk.wire != 0 {
-        rgba = _mm256_blendv_epi8(
-            rgba,
-            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
-            mask_from_bits(chunk.wire),
-        );
-    }
-    let pass = match chunk.lanes {
-        Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
-        None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
-    };
-    if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
-        store_uv(uv, chunk.index, pass, both);
-    }
-    if let (Some(d), Some(both)) = (target.difference.as_mut(), both_uv) {
-        store_difference(d, chunk.index, pass, both);
-    }
-}
-
-/// Writes the texel difference of the lanes in `pass` (eight pixels from buffer index
-/// `index` of the band): `texture::square_texel_difference`'s operations, mirrored, then the
-/// square root (IEEE `f32` operations, so bit for bit the scalar values).
-#[inline]
-#[target_feature(enable = "avx2")]
-fn store_difference(
-    d: &mut super::DifferenceTarget<'_>,
-    index: usize,
-    pass: __m256i,
-    both: &[__m256; 4],
-) {
-    debug_assert!(index < d.out.len());
-    let du = _mm256_mul_ps(_mm256_sub_ps(both[0], both[2]), _mm256_set1_ps(d.size[0]));
-    let dv = _mm256_mul_ps(_mm256_sub_ps(both[1], both[3]), _mm256_set1_ps(d.size[1]));
-    let len = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(du, du), _mm256_mul_ps(dv, dv)));
-    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, and
-    // the buffer has the colour buffer's length; masked stores touch no other element.
-    unsafe { _mm256_maskstore_ps(d.out.as_mut_ptr().add(index), pass, len) };
-}
-
-/// Writes the source triangle and both uvs of the lanes in `pass` (eight pixels from buffer
-/// index `index` of the band): the uv pairs are interleaved in registers and stored with masks,
-/// as `write` stores the colour.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn store_uv(uv: &mut super::UvTarget<'_>, index: usize, pass: __m256i, both: &[__m256; 4]) {
-    debug_assert!(
-        index < uv.triangle.len()
-            && uv.triangle.len() == uv.uv_affine.len()
-            && uv.triangle.len() == uv.uv_perspective.len()
-    );
-    // Lane k's mask for both halves of its pair: (m0 m0 m1 m1 m2 m2 m3 m3), (m4 m4 ... m7 m7).
-    let m_lo = _mm256_unpacklo_epi32(pass, pass);
-    let m_hi = _mm256_unpackhi_epi32(pass, pass);
-    let masks = [
-        _mm256_permute2x128_si256::<0x20>(m_lo, m_hi),
-        _mm256_permute2x128_si256::<0x31>(m_lo, m_hi),
-    ];
-    // (u0 v0 u1 v1 u2 v2 u3 v3), (u4 v4 ... u7 v7).
-    let pairs = |u: __m256, v: __m256| {
-        let lo = _mm256_unpacklo_ps(u, v);
-        let hi = _mm256_unpackhi_ps(u, v);
-        [
-            _mm256_permute2f128_ps::<0x20>(lo, hi),
-            _mm256_permute2f128_ps::<0x31>(lo, hi),
-        ]
-    };
-    let affine = pairs(both[0], both[1]);
-    let perspective = pairs(both[2], both[3]);
-    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, so
-    // every element written (`index + k`, its two floats) is inside the three buffers, which
-    // have the colour buffer's length; masked stores touch no other element.
-    unsafe {
-        _mm256_maskstore_epi32(
-            uv.triangle.as_mut_ptr().add(index).cast::<i32>(),
-            pass,
-            _mm256_set1_epi32(uv.source as i32),
-        );
-        let a = uv.uv_affine.as_mut_ptr().add(index).cast::<f32>();
-        let p = uv.uv_perspective.as_mut_ptr().add(index).cast::<f32>();
-        for h in 0..2 {
-            _mm256_maskstore_ps(a.add(8 * h), masks[h], affine[h]);
-            _mm256_maskstore_ps(p.add(8 * h), masks[h], perspective[h]);
-        }
-    }
-}
-
-/// Depth-tests and writes eight pixels starting at buffer index `index` of the band; lanes
-/// outside `ok` are neither read nor written. Returns the lanes that passed.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn write(
-    target: &mut Target<'_>,
-    index: usize,
-    ok: __m256i,
-    depth: __m256,
-    rgba: __m256i,
-) -> __m256i {
-    debug_assert!(index < target.depth.len() && target.depth.len() == target.color.len());
-    // SAFETY: the caller's `ok` enables only lanes of pixels inside the band's row (columns
-    // up to the triangle's last column, which is inside the image), so every accessed
-    // element `index + k` is in both slices; masked loads and stores touch no other lane.
-    unsafe {
-        let dp = target.depth.as_mut_ptr().add(index);
-        let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
-        let old = _mm256_maskload_ps(dp, ok);
-        // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
-        let pass = _mm256_and_si256(
-            ok,
-            _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
-        );
-        _mm256_maskstore_ps(dp, pass, depth);
-        // A difference target keeps the background colour (see `DifferenceTarget`).
-        if target.difference.is_none() {
-            _mm256_maskstore_epi32(cp, pass, rgba);
-        }
-        pass
-    }
-}
-
-/// An eight-lane mask from the low eight bits of `bits`.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn mask_from_bits(bits: i32) -> __m256i {
-    let b = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), b), b)
 }
 
 /// Two halves of four `f64` lanes converted to eight `f32` lanes.
@@ -359,103 +221,6 @@ struct Four {
     channels: [__m256d; CHANNELS],
     /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
     both_uv: Option<[__m256d; 4]>,
-}
-
-/// `unorm8(x)`: `round(clamp(x, 0, 1) * 255)`, half away from zero (NaN gives 0).
-#[inline]
-#[target_feature(enable = "avx2")]
-fn unorm8(x: __m256) -> __m256i {
-    let y = _mm256_mul_ps(
-        _mm256_min_ps(_mm256_max_ps(x, _mm256_setzero_ps()), _mm256_set1_ps(1.0)),
-        _mm256_set1_ps(255.0),
-    );
-    let t = _mm256_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
-    let up = _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_sub_ps(y, t), _mm256_set1_ps(0.5));
-    _mm256_cvttps_epi32(_mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0))))
-}
-
-/// Red, green, blue bytes and an opaque alpha packed into eight RGBA8 lanes.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn pack_opaque(r: __m256i, g: __m256i, b: __m256i) -> __m256i {
-    _mm256_or_si256(
-        _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
-        _mm256_or_si256(
-            _mm256_slli_epi32::<16>(b),
-            _mm256_set1_epi32(0xff00_0000_u32 as i32),
-        ),
-    )
-}
-
-/// `shade::unit_normal` of eight normals, operation for operation:
-/// `len = sqrt(x x + y y + z z)`, `n / len` when `len` is finite and at least
-/// [`MIN_NORMAL_LENGTH`], else `(0, 0, 1)`.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn unit_normal(n: [__m256; 3]) -> [__m256; 3] {
-    let sq = |x: __m256| _mm256_mul_ps(x, x);
-    let len = _mm256_sqrt_ps(_mm256_add_ps(_mm256_add_ps(sq(n[0]), sq(n[1])), sq(n[2])));
-    let ok = _mm256_and_ps(
-        _mm256_cmp_ps::<_CMP_LT_OQ>(len, _mm256_set1_ps(f32::INFINITY)),
-        _mm256_cmp_ps::<_CMP_GE_OQ>(len, _mm256_set1_ps(MIN_NORMAL_LENGTH)),
-    );
-    let unit = |x: __m256, otherwise: f32| {
-        _mm256_blendv_ps(_mm256_set1_ps(otherwise), _mm256_div_ps(x, len), ok)
-    };
-    [unit(n[0], 0.0), unit(n[1], 0.0), unit(n[2], 1.0)]
-}
-
-/// The colours of the non-texture shadings for eight samples, as `shade` makes them.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
-    match color {
-        LaneColor::Depth(near, far) => {
-            // `shade::depth_grey`, mirrored.
-            let grey = if far > near {
-                let scale = |d: __m256d| {
-                    _mm256_div_pd(
-                        _mm256_sub_pd(d, _mm256_set1_pd(near)),
-                        _mm256_set1_pd(far - near),
-                    )
-                };
-                unorm8(to_f32(scale(lo.depth), scale(hi.depth)))
-            } else {
-                _mm256_setzero_si256()
-            };
-            pack_opaque(grey, grey, grey)
-        }
-        LaneColor::Normal | LaneColor::Lambert => {
-            let ch = |c: usize| to_f32(lo.channels[c], hi.channels[c]);
-            if color == LaneColor::Normal {
-                let n = unit_normal([ch(0), ch(1), ch(2)]);
-                // `shade::normal_rgba8`: unorm8((n̂ + 1) * 0.5) per channel.
-                let c = |x: __m256| {
-                    unorm8(_mm256_mul_ps(
-                        _mm256_add_ps(x, _mm256_set1_ps(1.0)),
-                        _mm256_set1_ps(0.5),
-                    ))
-                };
-                return pack_opaque(c(n[0]), c(n[1]), c(n[2]));
-            }
-            // The normal is in channels 3..6, the albedo (vertex colour) in 0..3.
-            let n = unit_normal([ch(3), ch(4), ch(5)]);
-            // `shade::lambert_factor`: AMBIENT + (1 - AMBIENT) max(0, n̂.z).
-            let f = _mm256_add_ps(
-                _mm256_set1_ps(AMBIENT),
-                _mm256_mul_ps(
-                    _mm256_set1_ps(1.0 - AMBIENT),
-                    _mm256_max_ps(n[2], _mm256_setzero_ps()),
-                ),
-            );
-            let c = |a: __m256| unorm8(_mm256_mul_ps(a, f));
-            pack_opaque(c(ch(0)), c(ch(1)), c(ch(2)))
-        }
-        _ => {
-            let ch = |c: usize| unorm8(to_f32(lo.channels[c], hi.channels[c]));
-            pack_opaque(ch(0), ch(1), ch(2))
-        }
-    }
 }
 
 /// The edge-function lane path (see the parent module): every [`LaneColor`], with the
@@ -734,151 +499,5 @@ fn shade_chunk(
             channel_colors(&lo, &hi, color),
             both.as_ref(),
         ),
-    }
-}
-
-/// The scanline lane path (see the parent module).
-#[target_feature(enable = "avx2")]
-pub(super) fn scanline_triangle(
-    tri: &LaneTriangle,
-    (y_start, y_end): (u32, u32),
-    sampler: &VecSampler<'_>,
-    wide: bool,
-    mode: Interpolation,
-    target: &mut Target<'_>,
-) {
-    let mut lookups = Lookups::new(sampler, wide);
-    let consts = &tri.consts;
-    let step = Stepped::row_step(consts, mode);
-    let n = LANES as f64;
-    let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
-    let mut gathered = sparse::SteppedGathered::new();
-    for y in y_start..=y_end {
-        let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
-            continue;
-        };
-        let start = Stepped::span_start(consts, mode, x0, y);
-        if x1 - x0 < sparse::MAX_LANES {
-            // A short span: its pixels, k single steps from the start, are gathered.
-            let row = (y - target.y0) as usize * target.width as usize;
-            let mut at = start;
-            for x in x0..=x1 {
-                gathered.add(row + x as usize, &at);
-                if gathered.full() {
-                    draw_stepped(&mut gathered, mode, &mut lookups, target);
-                }
-                at = at.next(&step);
-            }
-            continue;
-        }
-        // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
-        let lanes = Stepped::lanes(start, &step);
-        let load = |f: fn(&Stepped) -> f64, h: usize| {
-            _mm256_setr_pd(
-                f(&lanes[4 * h]),
-                f(&lanes[4 * h + 1]),
-                f(&lanes[4 * h + 2]),
-                f(&lanes[4 * h + 3]),
-            )
-        };
-        // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8]
-        let mut vals = [0, 1].map(|h| {
-            [
-                load(|s| s.u, h),
-                load(|s| s.v, h),
-                load(|s| s.inv_w, h),
-                load(|s| s.depth, h),
-            ]
-        });
-        let row = (y - target.y0) as usize * target.width as usize;
-        let mut x = x0;
-        while x <= x1 {
-            let lanes_in = (x1 - x + 1).min(LANES as u32);
-            let (u, v, depth, ok) = stepped_chunk(&vals, (1i32 << lanes_in) - 1, mode);
-            if ok != 0 {
-                let chunk = Pending {
-                    u,
-                    v,
-                    depth,
-                    valid: mask_from_bits(ok),
-                    wire: 0,
-                    halo: 0,
-                    index: row + x as usize,
-                    lanes: None,
-                };
-                lookups.push(target, chunk);
-            }
-            for half in vals.iter_mut() {
-                for (q, s) in half.iter_mut().zip(&step8) {
-                    *q = _mm256_add_pd(*q, *s);
-                }
-            }
-            x += LANES as u32;
-        }
-    }
-    while !gathered.is_empty() {
-        draw_stepped(&mut gathered, mode, &mut lookups, target);
-    }
-    lookups.flush(target);
-}
-
-/// uv, depth and the lanes to write of one chunk of the scanline lanes from its stepped
-/// values (`[lanes 0..4, lanes 4..8]` of `[u, v, 1/w, depth]`): the lanes of `ok` whose
-/// `1/w` is positive and finite; uv is `(u/w) * (1 / (1/w))` when perspective-correct.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn stepped_chunk(
-    vals: &[[__m256d; 4]; 2],
-    mut ok: i32,
-    mode: Interpolation,
-) -> (__m256, __m256, __m256, i32) {
-    let mut uv = [[_mm256_setzero_pd(); 2]; 2];
-    for (h, v) in vals.iter().enumerate() {
-        let valid = _mm256_and_pd(
-            _mm256_cmp_pd::<_CMP_GT_OQ>(v[2], _mm256_setzero_pd()),
-            _mm256_cmp_pd::<_CMP_LT_OQ>(v[2], _mm256_set1_pd(f64::INFINITY)),
-        );
-        if _mm256_movemask_pd(valid) != 0xf {
-            ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
-        }
-        uv[h] = match mode {
-            Interpolation::Perspective => {
-                let w = _mm256_div_pd(_mm256_set1_pd(1.0), v[2]);
-                [_mm256_mul_pd(v[0], w), _mm256_mul_pd(v[1], w)]
-            }
-            Interpolation::Affine => [v[0], v[1]],
-        };
-    }
-    (
-        to_f32(uv[0][0], uv[1][0]),
-        to_f32(uv[0][1], uv[1][1]),
-        to_f32(vals[0][3], vals[1][3]),
-        ok,
-    )
-}
-
-/// Looks up and writes the next (up to) eight gathered pixels of the scanline lanes.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn draw_stepped(
-    g: &mut sparse::SteppedGathered,
-    mode: Interpolation,
-    lookups: &mut Lookups<'_, '_>,
-    target: &mut Target<'_>,
-) {
-    let (at, vals, bits) = g.take();
-    let (u, v, depth, ok) = stepped_chunk(&vals, bits, mode);
-    if ok != 0 {
-        let chunk = Pending {
-            u,
-            v,
-            depth,
-            valid: mask_from_bits(ok),
-            wire: 0,
-            halo: 0,
-            index: 0,
-            lanes: Some(at),
-        };
-        lookups.push(target, chunk);
     }
 }

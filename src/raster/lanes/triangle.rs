@@ -242,7 +242,7 @@ impl LaneTriangle {
     };
 
     /// From the triangle's edges, bounds and weight planes (see
-    /// [`triangle_geometry`](super::setup::triangle_geometry)) and its vertices, for drawing
+    /// [`triangle_geometry`](crate::raster::setup::triangle_geometry)) and its vertices, for drawing
     /// with `shading` (`None`: coverage only, for the caller's per-pixel shading); `uv` when
     /// the target needs both uvs (it keeps the uv buffers or the texel difference).
     pub fn new(

@@ -1,0 +1,149 @@
+//! The scanline lanes with AVX2 intrinsics (see the parent module).
+
+use super::*;
+
+/// The scanline lane path (see the parent module).
+#[target_feature(enable = "avx2")]
+pub(in crate::raster::lanes) fn scanline_triangle(
+    tri: &LaneTriangle,
+    (y_start, y_end): (u32, u32),
+    sampler: &VecSampler<'_>,
+    wide: bool,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    let mut lookups = Lookups::new(sampler, wide);
+    let consts = &tri.consts;
+    let step = Stepped::row_step(consts, mode);
+    let n = LANES as f64;
+    let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
+    let mut gathered = sparse::SteppedGathered::new();
+    for y in y_start..=y_end {
+        let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
+            continue;
+        };
+        let start = Stepped::span_start(consts, mode, x0, y);
+        if x1 - x0 < sparse::MAX_LANES {
+            // A short span: its pixels, k single steps from the start, are gathered.
+            let row = (y - target.y0) as usize * target.width as usize;
+            let mut at = start;
+            for x in x0..=x1 {
+                gathered.add(row + x as usize, &at);
+                if gathered.full() {
+                    draw_stepped(&mut gathered, mode, &mut lookups, target);
+                }
+                at = at.next(&step);
+            }
+            continue;
+        }
+        // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
+        let lanes = Stepped::lanes(start, &step);
+        let load = |f: fn(&Stepped) -> f64, h: usize| {
+            _mm256_setr_pd(
+                f(&lanes[4 * h]),
+                f(&lanes[4 * h + 1]),
+                f(&lanes[4 * h + 2]),
+                f(&lanes[4 * h + 3]),
+            )
+        };
+        // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8]
+        let mut vals = [0, 1].map(|h| {
+            [
+                load(|s| s.u, h),
+                load(|s| s.v, h),
+                load(|s| s.inv_w, h),
+                load(|s| s.depth, h),
+            ]
+        });
+        let row = (y - target.y0) as usize * target.width as usize;
+        let mut x = x0;
+        while x <= x1 {
+            let lanes_in = (x1 - x + 1).min(LANES as u32);
+            let (u, v, depth, ok) = stepped_chunk(&vals, (1i32 << lanes_in) - 1, mode);
+            if ok != 0 {
+                let chunk = Pending {
+                    u,
+                    v,
+                    depth,
+                    valid: mask_from_bits(ok),
+                    wire: 0,
+                    halo: 0,
+                    index: row + x as usize,
+                    lanes: None,
+                };
+                lookups.push(target, chunk);
+            }
+            for half in vals.iter_mut() {
+                for (q, s) in half.iter_mut().zip(&step8) {
+                    *q = _mm256_add_pd(*q, *s);
+                }
+            }
+            x += LANES as u32;
+        }
+    }
+    while !gathered.is_empty() {
+        draw_stepped(&mut gathered, mode, &mut lookups, target);
+    }
+    lookups.flush(target);
+}
+
+/// uv, depth and the lanes to write of one chunk of the scanline lanes from its stepped
+/// values (`[lanes 0..4, lanes 4..8]` of `[u, v, 1/w, depth]`): the lanes of `ok` whose
+/// `1/w` is positive and finite; uv is `(u/w) * (1 / (1/w))` when perspective-correct.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn stepped_chunk(
+    vals: &[[__m256d; 4]; 2],
+    mut ok: i32,
+    mode: Interpolation,
+) -> (__m256, __m256, __m256, i32) {
+    let mut uv = [[_mm256_setzero_pd(); 2]; 2];
+    for (h, v) in vals.iter().enumerate() {
+        let valid = _mm256_and_pd(
+            _mm256_cmp_pd::<_CMP_GT_OQ>(v[2], _mm256_setzero_pd()),
+            _mm256_cmp_pd::<_CMP_LT_OQ>(v[2], _mm256_set1_pd(f64::INFINITY)),
+        );
+        if _mm256_movemask_pd(valid) != 0xf {
+            ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
+        }
+        uv[h] = match mode {
+            Interpolation::Perspective => {
+                let w = _mm256_div_pd(_mm256_set1_pd(1.0), v[2]);
+                [_mm256_mul_pd(v[0], w), _mm256_mul_pd(v[1], w)]
+            }
+            Interpolation::Affine => [v[0], v[1]],
+        };
+    }
+    (
+        to_f32(uv[0][0], uv[1][0]),
+        to_f32(uv[0][1], uv[1][1]),
+        to_f32(vals[0][3], vals[1][3]),
+        ok,
+    )
+}
+
+/// Looks up and writes the next (up to) eight gathered pixels of the scanline lanes.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn draw_stepped(
+    g: &mut sparse::SteppedGathered,
+    mode: Interpolation,
+    lookups: &mut Lookups<'_, '_>,
+    target: &mut Target<'_>,
+) {
+    let (at, vals, bits) = g.take();
+    let (u, v, depth, ok) = stepped_chunk(&vals, bits, mode);
+    if ok != 0 {
+        let chunk = Pending {
+            u,
+            v,
+            depth,
+            valid: mask_from_bits(ok),
+            wire: 0,
+            halo: 0,
+            index: 0,
+            lanes: Some(at),
+        };
+        lookups.push(target, chunk);
+    }
+}

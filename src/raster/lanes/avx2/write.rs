@@ -1,0 +1,149 @@
+//! Writing a chunk of eight lanes: the depth test, colour, and the uv or difference buffers.
+
+use super::*;
+
+/// Paints the wireframe over a chunk's colours and writes it, with `both_uv`
+/// (`[u_affine, v_affine, u_smooth, v_smooth]`) into a target with uv or difference buffers.
+/// (The uvs are not part of [`Pending`]: a chunk waiting for its partner is moved, and
+/// the smaller the better.)
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) fn finish(
+    target: &mut Target<'_>,
+    chunk: &Pending,
+    mut rgba: __m256i,
+    both_uv: Option<&[__m256; 4]>,
+) {
+    if chunk.halo != 0 {
+        rgba = _mm256_blendv_epi8(
+            rgba,
+            _mm256_set1_epi32(i32::from_le_bytes(WIRE_HALO_COLOR)),
+            mask_from_bits(chunk.halo),
+        );
+    }
+    if chunk.wire != 0 {
+        rgba = _mm256_blendv_epi8(
+            rgba,
+            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
+            mask_from_bits(chunk.wire),
+        );
+    }
+    let pass = match chunk.lanes {
+        Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
+        None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
+    };
+    if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
+        store_uv(uv, chunk.index, pass, both);
+    }
+    if let (Some(d), Some(both)) = (target.difference.as_mut(), both_uv) {
+        store_difference(d, chunk.index, pass, both);
+    }
+}
+
+/// Writes the texel difference of the lanes in `pass` (eight pixels from buffer index
+/// `index` of the band): `texture::square_texel_difference`'s operations, mirrored, then the
+/// square root (IEEE `f32` operations, so bit for bit the scalar values).
+#[inline]
+#[target_feature(enable = "avx2")]
+fn store_difference(
+    d: &mut super::super::DifferenceTarget<'_>,
+    index: usize,
+    pass: __m256i,
+    both: &[__m256; 4],
+) {
+    debug_assert!(index < d.out.len());
+    let du = _mm256_mul_ps(_mm256_sub_ps(both[0], both[2]), _mm256_set1_ps(d.size[0]));
+    let dv = _mm256_mul_ps(_mm256_sub_ps(both[1], both[3]), _mm256_set1_ps(d.size[1]));
+    let len = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(du, du), _mm256_mul_ps(dv, dv)));
+    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, and
+    // the buffer has the colour buffer's length; masked stores touch no other element.
+    unsafe { _mm256_maskstore_ps(d.out.as_mut_ptr().add(index), pass, len) };
+}
+
+/// Writes the source triangle and both uvs of the lanes in `pass` (eight pixels from buffer
+/// index `index` of the band): the uv pairs are interleaved in registers and stored with masks,
+/// as `write` stores the colour.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn store_uv(uv: &mut super::super::UvTarget<'_>, index: usize, pass: __m256i, both: &[__m256; 4]) {
+    debug_assert!(
+        index < uv.triangle.len()
+            && uv.triangle.len() == uv.uv_affine.len()
+            && uv.triangle.len() == uv.uv_perspective.len()
+    );
+    // Lane k's mask for both halves of its pair: (m0 m0 m1 m1 m2 m2 m3 m3), (m4 m4 ... m7 m7).
+    let m_lo = _mm256_unpacklo_epi32(pass, pass);
+    let m_hi = _mm256_unpackhi_epi32(pass, pass);
+    let masks = [
+        _mm256_permute2x128_si256::<0x20>(m_lo, m_hi),
+        _mm256_permute2x128_si256::<0x31>(m_lo, m_hi),
+    ];
+    // (u0 v0 u1 v1 u2 v2 u3 v3), (u4 v4 ... u7 v7).
+    let pairs = |u: __m256, v: __m256| {
+        let lo = _mm256_unpacklo_ps(u, v);
+        let hi = _mm256_unpackhi_ps(u, v);
+        [
+            _mm256_permute2f128_ps::<0x20>(lo, hi),
+            _mm256_permute2f128_ps::<0x31>(lo, hi),
+        ]
+    };
+    let affine = pairs(both[0], both[1]);
+    let perspective = pairs(both[2], both[3]);
+    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, so
+    // every element written (`index + k`, its two floats) is inside the three buffers, which
+    // have the colour buffer's length; masked stores touch no other element.
+    unsafe {
+        _mm256_maskstore_epi32(
+            uv.triangle.as_mut_ptr().add(index).cast::<i32>(),
+            pass,
+            _mm256_set1_epi32(uv.source as i32),
+        );
+        let a = uv.uv_affine.as_mut_ptr().add(index).cast::<f32>();
+        let p = uv.uv_perspective.as_mut_ptr().add(index).cast::<f32>();
+        for h in 0..2 {
+            _mm256_maskstore_ps(a.add(8 * h), masks[h], affine[h]);
+            _mm256_maskstore_ps(p.add(8 * h), masks[h], perspective[h]);
+        }
+    }
+}
+
+/// Depth-tests and writes eight pixels starting at buffer index `index` of the band; lanes
+/// outside `ok` are neither read nor written. Returns the lanes that passed.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn write(
+    target: &mut Target<'_>,
+    index: usize,
+    ok: __m256i,
+    depth: __m256,
+    rgba: __m256i,
+) -> __m256i {
+    debug_assert!(index < target.depth.len() && target.depth.len() == target.color.len());
+    // SAFETY: the caller's `ok` enables only lanes of pixels inside the band's row (columns
+    // up to the triangle's last column, which is inside the image), so every accessed
+    // element `index + k` is in both slices; masked loads and stores touch no other lane.
+    unsafe {
+        let dp = target.depth.as_mut_ptr().add(index);
+        let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
+        let old = _mm256_maskload_ps(dp, ok);
+        // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
+        let pass = _mm256_and_si256(
+            ok,
+            _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
+        );
+        _mm256_maskstore_ps(dp, pass, depth);
+        // A difference target keeps the background colour (see `DifferenceTarget`).
+        if target.difference.is_none() {
+            _mm256_maskstore_epi32(cp, pass, rgba);
+        }
+        pass
+    }
+}
+
+/// An eight-lane mask from the low eight bits of `bits`.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) fn mask_from_bits(bits: i32) -> __m256i {
+    let b = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), b), b)
+}
