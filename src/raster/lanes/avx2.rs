@@ -67,12 +67,24 @@ impl<'s, 'a> Lookups<'s, 'a> {
         }
     }
 
-    /// Shades and writes `chunk`, now or together with the next one.
+    /// Shades and writes `chunk`, now or together with the next one; with `both`
+    /// (`[u_affine, v_affine, u_smooth, v_smooth]` for uv or difference buffers) always now,
+    /// on its own (a chunk waiting for a partner carries no uvs).
+    ///
+    /// `SITE` makes each caller its own copy: a function with one call site is inlined
+    /// whatever its size, and the texture lookups of a hot loop must be inlined into it
+    /// (a call boundary between its gathers costs up to half the speed).
+    #[inline]
     #[target_feature(enable = "avx2")]
-    fn push(&mut self, target: &mut Target<'_>, chunk: Pending) {
-        if !self.wide {
-            let rgba = sample(self.sampler, chunk.u, chunk.v);
-            finish(target, &chunk, rgba, None);
+    fn push<const SITE: u8>(
+        &mut self,
+        target: &mut Target<'_>,
+        chunk: Pending,
+        both: Option<&[__m256; 4]>,
+    ) {
+        if !self.wide || both.is_some() {
+            let rgba = sample::<SITE>(self.sampler, chunk.u, chunk.v);
+            finish(target, &chunk, rgba, both);
             return;
         }
         match self.pending.take() {
@@ -92,7 +104,7 @@ impl<'s, 'a> Lookups<'s, 'a> {
     #[target_feature(enable = "avx2")]
     fn flush(&mut self, target: &mut Target<'_>) {
         if let Some(chunk) = self.pending.take() {
-            let rgba = sample(self.sampler, chunk.u, chunk.v);
+            let rgba = sample::<{ u8::MAX }>(self.sampler, chunk.u, chunk.v);
             finish(target, &chunk, rgba, None);
         }
     }
@@ -258,7 +270,7 @@ pub(super) fn edge_triangle(
     }
     if let Some(g) = gathered.as_mut() {
         while !g.is_empty() {
-            draw_gathered(g, consts, mode, color, &mut lookups, target);
+            draw_gathered::<3>(g, consts, mode, color, &mut lookups, target);
         }
     }
     if let Some(l) = lookups.as_mut() {
@@ -324,7 +336,7 @@ fn block_rows(
                     {
                         g.add(bx, y, covered);
                         if g.full() {
-                            draw_gathered(g, consts, mode, color, lookups, target);
+                            draw_gathered::<2>(g, consts, mode, color, lookups, target);
                         }
                         continue;
                     }
@@ -335,7 +347,7 @@ fn block_rows(
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
                     let at = Where::Row(index);
-                    shade_chunk([lo, hi], covered, at, consts, mode, color, lookups, target);
+                    shade_chunk::<0>([lo, hi], covered, at, consts, mode, color, lookups, target);
                 }
             }
             bx += LANES as u32;
@@ -382,7 +394,7 @@ fn narrow_rows(
         if covered != 0 {
             g.add(x0, y, covered);
             if g.full() {
-                draw_gathered(g, &tri.consts, mode, color, lookups, target);
+                draw_gathered::<1>(g, &tri.consts, mode, color, lookups, target);
             }
         }
         for i in 0..3 {
@@ -418,7 +430,7 @@ enum Where {
 /// Interpolates, shades and writes the next (up to) eight gathered pixels.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn draw_gathered(
+fn draw_gathered<const SITE: u8>(
     g: &mut sparse::Gathered,
     consts: &Constants,
     mode: Interpolation,
@@ -434,7 +446,7 @@ fn draw_gathered(
     let lo = sparse::weights4(&consts.weights, x_lo, y_lo);
     let hi = sparse::weights4(&consts.weights, x_hi, y_hi);
     let at = Where::Lanes(sparse::indices(target, x, y));
-    shade_chunk([lo, hi], bits, at, consts, mode, color, lookups, target);
+    shade_chunk::<SITE>([lo, hi], bits, at, consts, mode, color, lookups, target);
 }
 
 /// Interpolates eight samples from their screen weights (`[lanes 0..4, lanes 4..8]`), shades
@@ -442,7 +454,7 @@ fn draw_gathered(
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
-fn shade_chunk(
+fn shade_chunk<const SITE: u8>(
     [lo, hi]: [[__m256d; 3]; 2],
     covered: i32,
     at: Where,
@@ -486,13 +498,7 @@ fn shade_chunk(
         _ if target.difference.is_some() => {
             finish(target, &chunk, _mm256_setzero_si256(), both.as_ref())
         }
-        // With uv buffers each chunk is looked up on its own (no pairs,
-        // which would have to carry the uvs).
-        Some(l) if color == LaneColor::Texture && both.is_some() => {
-            let rgba = sample(l.sampler, chunk.u, chunk.v);
-            finish(target, &chunk, rgba, both.as_ref())
-        }
-        Some(l) if color == LaneColor::Texture => l.push(target, chunk),
+        Some(l) if color == LaneColor::Texture => l.push::<SITE>(target, chunk, both.as_ref()),
         _ => finish(
             target,
             &chunk,

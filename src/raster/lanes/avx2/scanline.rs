@@ -30,7 +30,7 @@ pub(in crate::raster::lanes) fn scanline_triangle(
             for x in x0..=x1 {
                 gathered.add(row + x as usize, &at);
                 if gathered.full() {
-                    draw_stepped(&mut gathered, mode, &mut lookups, target);
+                    draw_stepped::<11>(&mut gathered, mode, &mut lookups, target);
                 }
                 at = at.next(&step);
             }
@@ -71,7 +71,7 @@ pub(in crate::raster::lanes) fn scanline_triangle(
                     index: row + x as usize,
                     lanes: None,
                 };
-                lookups.push(target, chunk);
+                lookups.push::<10>(target, chunk, None);
             }
             for half in vals.iter_mut() {
                 for (q, s) in half.iter_mut().zip(&step8) {
@@ -82,7 +82,7 @@ pub(in crate::raster::lanes) fn scanline_triangle(
         }
     }
     while !gathered.is_empty() {
-        draw_stepped(&mut gathered, mode, &mut lookups, target);
+        draw_stepped::<12>(&mut gathered, mode, &mut lookups, target);
     }
     lookups.flush(target);
 }
@@ -125,7 +125,7 @@ fn stepped_chunk(
 /// Looks up and writes the next (up to) eight gathered pixels of the scanline lanes.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn draw_stepped(
+fn draw_stepped<const SITE: u8>(
     g: &mut sparse::SteppedGathered,
     mode: Interpolation,
     lookups: &mut Lookups<'_, '_>,
@@ -144,6 +144,6 @@ fn draw_stepped(
             index: 0,
             lanes: Some(at),
         };
-        lookups.push(target, chunk);
+        lookups.push::<SITE>(target, chunk, None);
     }
 }

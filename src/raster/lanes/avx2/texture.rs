@@ -150,10 +150,15 @@ pub(in crate::raster::lanes) fn weighted<const C: i32>(
     byte_from_sum(sum)
 }
 
-/// The packed RGBA8 colours at eight uv, as `Texture::sample_rgba8`.
+/// The packed RGBA8 colours at eight uv, as `Texture::sample_rgba8` (`SITE`: one copy per
+/// caller, see `Lookups::push`).
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(in crate::raster::lanes) fn sample(s: &VecSampler<'_>, u: __m256, v: __m256) -> __m256i {
+pub(in crate::raster::lanes) fn sample<const SITE: u8>(
+    s: &VecSampler<'_>,
+    u: __m256,
+    v: __m256,
+) -> __m256i {
     let (w, h) = (_mm256_set1_ps(s.size.0), _mm256_set1_ps(s.size.1));
     match s.filter {
         Filter::Nearest => {
