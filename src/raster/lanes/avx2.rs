@@ -50,19 +50,19 @@ struct Pending {
     lanes: Option<__m256i>,
 }
 
-/// Texture lookups of chunks: one at a time with AVX2, or two at a time with AVX-512.
-struct Lookups<'s, 'a> {
-    sampler: &'s VecSampler<'a>,
+/// Texture lookups of chunks: one at a time with AVX2, or two at a time with AVX-512. The
+/// sampler is passed to each call, not kept: a reference parameter tells the compiler that
+/// the pixel writes do not change it, so its filter and wrap are decided once per loop.
+struct Lookups {
     wide: bool,
     pending: Option<Pending>,
 }
 
-impl<'s, 'a> Lookups<'s, 'a> {
-    fn new(sampler: &'s VecSampler<'a>, wide: bool) -> Self {
+impl Lookups {
+    fn new(sampler: Option<&VecSampler<'_>>, wide: bool) -> Self {
         Self {
-            sampler,
             // Measured: pairs pay for bilinear filtering (four lookups), not for nearest.
-            wide: wide && sampler.filter != Filter::Nearest,
+            wide: wide && sampler.is_some_and(|s| s.filter != Filter::Nearest),
             pending: None,
         }
     }
@@ -78,12 +78,13 @@ impl<'s, 'a> Lookups<'s, 'a> {
     #[target_feature(enable = "avx2")]
     fn push<const SITE: u8>(
         &mut self,
+        sampler: &VecSampler<'_>,
         target: &mut Target<'_>,
         chunk: Pending,
         both: Option<&[__m256; 4]>,
     ) {
         if !self.wide || both.is_some() {
-            let rgba = sample::<SITE>(self.sampler, chunk.u, chunk.v);
+            let rgba = sample::<SITE>(sampler, chunk.u, chunk.v);
             finish(target, &chunk, rgba, both);
             return;
         }
@@ -92,7 +93,7 @@ impl<'s, 'a> Lookups<'s, 'a> {
             Some(first) => {
                 // SAFETY: `wide` is set only when the CPU has AVX-512 F and BW (`wide_path`).
                 let (a, b) = unsafe {
-                    super::avx512::sample16(self.sampler, (first.u, first.v), (chunk.u, chunk.v))
+                    super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
                 finish(target, &first, a, None);
                 finish(target, &chunk, b, None);
@@ -102,9 +103,9 @@ impl<'s, 'a> Lookups<'s, 'a> {
 
     /// Shades and writes a chunk still waiting for a partner.
     #[target_feature(enable = "avx2")]
-    fn flush(&mut self, target: &mut Target<'_>) {
-        if let Some(chunk) = self.pending.take() {
-            let rgba = sample::<{ u8::MAX }>(self.sampler, chunk.u, chunk.v);
+    fn flush(&mut self, sampler: Option<&VecSampler<'_>>, target: &mut Target<'_>) {
+        if let (Some(chunk), Some(sampler)) = (self.pending.take(), sampler) {
+            let rgba = sample::<{ u8::MAX }>(sampler, chunk.u, chunk.v);
             finish(target, &chunk, rgba, None);
         }
     }
@@ -247,7 +248,7 @@ pub(super) fn edge_triangle(
     target: &mut Target<'_>,
 ) {
     let (mode, color) = (shading.mode, shading.color);
-    let mut lookups = sampler.map(|s| Lookups::new(s, wide));
+    let mut lookups = Lookups::new(sampler, wide);
     // Sparse rows are gathered only where pixels are written one by one (no uv or
     // difference buffers).
     let mut gathered =
@@ -255,27 +256,33 @@ pub(super) fn edge_triangle(
     let consts = &tri.consts;
     match gathered.as_mut() {
         // A narrow triangle (a dense mesh's): every covered pixel is gathered.
-        Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => {
-            narrow_rows(tri, (y_start, y_end), g, mode, color, &mut lookups, target)
-        }
+        Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => narrow_rows(
+            tri,
+            (y_start, y_end),
+            g,
+            mode,
+            color,
+            sampler,
+            &mut lookups,
+            target,
+        ),
         _ => block_rows(
             tri,
             (y_start, y_end),
             gathered.as_mut(),
             mode,
             color,
+            sampler,
             &mut lookups,
             target,
         ),
     }
     if let Some(g) = gathered.as_mut() {
         while !g.is_empty() {
-            draw_gathered::<3>(g, consts, mode, color, &mut lookups, target);
+            draw_gathered::<3>(g, consts, mode, color, sampler, &mut lookups, target);
         }
     }
-    if let Some(l) = lookups.as_mut() {
-        l.flush(target);
-    }
+    lookups.flush(sampler, target);
 }
 
 /// The edge-function lanes over the triangle's blocks of [`LANES`] columns by [`BLOCK_ROWS`]
@@ -290,7 +297,8 @@ fn block_rows(
     mut gathered: Option<&mut sparse::Gathered>,
     mode: Interpolation,
     color: LaneColor,
-    lookups: &mut Option<Lookups<'_, '_>>,
+    sampler: Option<&VecSampler<'_>>,
+    lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
     let planes = &tri.planes;
@@ -336,7 +344,7 @@ fn block_rows(
                     {
                         g.add(bx, y, covered);
                         if g.full() {
-                            draw_gathered::<2>(g, consts, mode, color, lookups, target);
+                            draw_gathered::<2>(g, consts, mode, color, sampler, lookups, target);
                         }
                         continue;
                     }
@@ -347,7 +355,17 @@ fn block_rows(
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
                     let at = Where::Row(index);
-                    shade_chunk::<0>([lo, hi], covered, at, consts, mode, color, lookups, target);
+                    shade_chunk::<0>(
+                        [lo, hi],
+                        covered,
+                        at,
+                        consts,
+                        mode,
+                        color,
+                        sampler,
+                        lookups,
+                        target,
+                    );
                 }
             }
             bx += LANES as u32;
@@ -367,7 +385,8 @@ fn narrow_rows(
     g: &mut sparse::Gathered,
     mode: Interpolation,
     color: LaneColor,
-    lookups: &mut Option<Lookups<'_, '_>>,
+    sampler: Option<&VecSampler<'_>>,
+    lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
     let planes = &tri.planes;
@@ -394,7 +413,7 @@ fn narrow_rows(
         if covered != 0 {
             g.add(x0, y, covered);
             if g.full() {
-                draw_gathered::<1>(g, &tri.consts, mode, color, lookups, target);
+                draw_gathered::<1>(g, &tri.consts, mode, color, sampler, lookups, target);
             }
         }
         for i in 0..3 {
@@ -435,7 +454,8 @@ fn draw_gathered<const SITE: u8>(
     consts: &Constants,
     mode: Interpolation,
     color: LaneColor,
-    lookups: &mut Option<Lookups<'_, '_>>,
+    sampler: Option<&VecSampler<'_>>,
+    lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
     let (x, y, bits) = g.take();
@@ -446,7 +466,17 @@ fn draw_gathered<const SITE: u8>(
     let lo = sparse::weights4(&consts.weights, x_lo, y_lo);
     let hi = sparse::weights4(&consts.weights, x_hi, y_hi);
     let at = Where::Lanes(sparse::indices(target, x, y));
-    shade_chunk::<SITE>([lo, hi], bits, at, consts, mode, color, lookups, target);
+    shade_chunk::<SITE>(
+        [lo, hi],
+        bits,
+        at,
+        consts,
+        mode,
+        color,
+        sampler,
+        lookups,
+        target,
+    );
 }
 
 /// Interpolates eight samples from their screen weights (`[lanes 0..4, lanes 4..8]`), shades
@@ -461,7 +491,8 @@ fn shade_chunk<const SITE: u8>(
     consts: &Constants,
     mode: Interpolation,
     color: LaneColor,
-    lookups: &mut Option<Lookups<'_, '_>>,
+    sampler: Option<&VecSampler<'_>>,
+    lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
     let lo = from_weights4!(lo, consts, mode, color);
@@ -493,12 +524,14 @@ fn shade_chunk<const SITE: u8>(
         ]),
         _ => None,
     };
-    match lookups.as_mut() {
+    match sampler {
         // A difference target is not shaded (see `DifferenceTarget`).
         _ if target.difference.is_some() => {
             finish(target, &chunk, _mm256_setzero_si256(), both.as_ref())
         }
-        Some(l) if color == LaneColor::Texture => l.push::<SITE>(target, chunk, both.as_ref()),
+        Some(sampler) if color == LaneColor::Texture => {
+            lookups.push::<SITE>(sampler, target, chunk, both.as_ref())
+        }
         _ => finish(
             target,
             &chunk,

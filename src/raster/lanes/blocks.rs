@@ -61,6 +61,7 @@ impl EdgePlanes {
     }
 
     /// The three edge values at pixel (col, row).
+    #[inline]
     pub fn at(&self, row: i64, col: i64) -> [i64; 3] {
         [0, 1, 2].map(|i| self.a[i] * col + self.b[i] * row + self.c[i])
     }
@@ -87,6 +88,7 @@ pub(super) enum Block {
     Partial,
 }
 
+#[inline]
 pub(super) fn classify(planes: &EdgePlanes, cols: (i64, i64), rows: (i64, i64)) -> Block {
     let corners = [
         planes.at(rows.0, cols.0),

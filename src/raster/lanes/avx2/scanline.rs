@@ -12,7 +12,7 @@ pub(in crate::raster::lanes) fn scanline_triangle(
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    let mut lookups = Lookups::new(sampler, wide);
+    let mut lookups = Lookups::new(Some(sampler), wide);
     let consts = &tri.consts;
     let step = Stepped::row_step(consts, mode);
     let n = LANES as f64;
@@ -30,7 +30,7 @@ pub(in crate::raster::lanes) fn scanline_triangle(
             for x in x0..=x1 {
                 gathered.add(row + x as usize, &at);
                 if gathered.full() {
-                    draw_stepped::<11>(&mut gathered, mode, &mut lookups, target);
+                    draw_stepped::<11>(&mut gathered, mode, sampler, &mut lookups, target);
                 }
                 at = at.next(&step);
             }
@@ -71,7 +71,7 @@ pub(in crate::raster::lanes) fn scanline_triangle(
                     index: row + x as usize,
                     lanes: None,
                 };
-                lookups.push::<10>(target, chunk, None);
+                lookups.push::<10>(sampler, target, chunk, None);
             }
             for half in vals.iter_mut() {
                 for (q, s) in half.iter_mut().zip(&step8) {
@@ -82,9 +82,9 @@ pub(in crate::raster::lanes) fn scanline_triangle(
         }
     }
     while !gathered.is_empty() {
-        draw_stepped::<12>(&mut gathered, mode, &mut lookups, target);
+        draw_stepped::<12>(&mut gathered, mode, sampler, &mut lookups, target);
     }
-    lookups.flush(target);
+    lookups.flush(Some(sampler), target);
 }
 
 /// uv, depth and the lanes to write of one chunk of the scanline lanes from its stepped
@@ -128,7 +128,8 @@ fn stepped_chunk(
 fn draw_stepped<const SITE: u8>(
     g: &mut sparse::SteppedGathered,
     mode: Interpolation,
-    lookups: &mut Lookups<'_, '_>,
+    sampler: &VecSampler<'_>,
+    lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
     let (at, vals, bits) = g.take();
@@ -144,6 +145,6 @@ fn draw_stepped<const SITE: u8>(
             index: 0,
             lanes: Some(at),
         };
-        lookups.push::<SITE>(target, chunk, None);
+        lookups.push::<SITE>(sampler, target, chunk, None);
     }
 }
