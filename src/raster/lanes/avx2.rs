@@ -377,6 +377,7 @@ fn block_rows(
 /// The edge-function lanes over a triangle at most [`LANES`] columns wide: the edge values of
 /// one row of eight lanes, stepped row by row (exact integer additions: the triangle is
 /// [`exact`](LaneTriangle::exact)), and every covered pixel gathered, without blocks.
+#[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
 fn narrow_rows(
