@@ -29,7 +29,10 @@ use super::project::{Viewport, WindowVertex, ndc_from_clip, project_vertex};
 use super::render::{
     Rasterizer, draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply,
 };
-use super::setup::{TieRule, TriangleSetup, setup_bounds, setup_triangle_with, triangle_geometry};
+use super::setup::{
+    TINY_TRIANGLE_PIXELS, TieRule, TriangleSetup, covers_no_sample, setup_bounds,
+    setup_triangle_with, triangle_geometry,
+};
 use super::shade::ShadeParams;
 use super::texture::Texture;
 use super::varying::Varyings;
@@ -263,6 +266,26 @@ impl<'m> FastMesh<'m> {
         true
     }
 
+    /// Whether a whole triangle a few pixels high is known to cover no pixel centre of the
+    /// band ([`covers_no_sample`]): then it is not set up.
+    #[inline(always)]
+    fn covers_nothing(&self, corners: [u32; 3], rows: [u16; 2], band: &RowBand<'_>) -> bool {
+        if u32::from(rows[1] - rows[0]) >= TINY_TRIANGLE_PIXELS {
+            return false;
+        }
+        let Some(p) = self.projected(corners) else {
+            return false;
+        };
+        let fixed = p.map(|v| v.fixed);
+        let (Some(bounds), Some(last)) = (
+            setup_bounds(fixed, self.viewport),
+            (band.y0 + band.rows).checked_sub(1),
+        ) else {
+            return false;
+        };
+        covers_no_sample(fixed, bounds, (band.y0, last), self.rule) == Some(true)
+    }
+
     /// The smallest and largest window depth of the drawn triangles' vertices, as
     /// [`depth_range`](super::render::depth_range) of the full render's triangles.
     pub fn depth_range(&self) -> (f64, f64) {
@@ -375,7 +398,10 @@ impl<'m> FastMesh<'m> {
                     }
                     match &self.slots[ti as usize] {
                         Slot::Skip => {}
-                        Slot::Whole { corners, .. } => {
+                        Slot::Whole { corners, rows } => {
+                            if self.covers_nothing(*corners, *rows, &band) {
+                                continue;
+                            }
                             let drawn = match &drawer {
                                 Some(d)
                                     if self.set_lane_triangle(

@@ -392,11 +392,7 @@ pub fn triangle_geometry(
     let (signed, bounds, weights) = geometry(p, window, viewport)?;
     let positive = signed > 0;
     Some(Geometry {
-        edges: [
-            Edge::with_rule(p[1], p[2], positive, rule),
-            Edge::with_rule(p[2], p[0], positive, rule),
-            Edge::with_rule(p[0], p[1], positive, rule),
-        ],
+        edges: edges_of(p, positive, rule),
         area2: signed.abs(),
         weights,
         // Positive area in image coordinates (y down) means clockwise as displayed, which
@@ -420,6 +416,63 @@ pub fn setup_bounds(fixed: [I64Vec2; 3], viewport: Viewport) -> Option<PixelBoun
         return None;
     }
     pixel_bounds(&fixed, viewport)
+}
+
+/// The edges V1->V2, V2->V0, V0->V1 of a triangle with these snapped positions, oriented for
+/// the sign of its area.
+fn edges_of(p: [I64Vec2; 3], positive: bool, rule: TieRule) -> [Edge; 3] {
+    [
+        Edge::with_rule(p[1], p[2], positive, rule),
+        Edge::with_rule(p[2], p[0], positive, rule),
+        Edge::with_rule(p[0], p[1], positive, rule),
+    ]
+}
+
+/// Pixels a triangle's bounds may hold for [`covers_no_sample`] to test them one by one.
+pub const TINY_TRIANGLE_PIXELS: u32 = 4;
+
+/// Whether a triangle with these snapped positions and (non-empty) pixel bounds covers no
+/// pixel centre in rows `rows` (inclusive), by its exact edge functions under `rule`: the
+/// test [`setup_triangle_with`]'s set-up triangle would make at each of those pixels, done
+/// before the set-up. `None` when more than [`TINY_TRIANGLE_PIXELS`] pixels would need
+/// testing. A dense model drawn small has many triangles between pixel centres; they need
+/// no set-up at all.
+///
+/// ```
+/// use barylab::raster::setup::{covers_no_sample, PixelBounds, TieRule};
+/// use glam::I64Vec2;
+/// // A sliver between the centres of pixels (0, 0) and (1, 0) (x from 130 to 250 of 256).
+/// let p = [I64Vec2::new(130, 0), I64Vec2::new(250, 0), I64Vec2::new(190, 250)];
+/// let b = PixelBounds { x0: 0, y0: 0, x1: 0, y1: 0 };
+/// assert_eq!(covers_no_sample(p, b, (0, 0), TieRule::default()), Some(true));
+/// // Moved left by 40/256 pixel it covers the centre (128, 128) of pixel (0, 0).
+/// let q = p.map(|v| v - I64Vec2::new(40, 0));
+/// assert_eq!(covers_no_sample(q, b, (0, 0), TieRule::default()), Some(false));
+/// ```
+pub fn covers_no_sample(
+    p: [I64Vec2; 3],
+    b: PixelBounds,
+    (first, last): (u32, u32),
+    rule: TieRule,
+) -> Option<bool> {
+    let (y0, y1) = (b.y0.max(first), b.y1.min(last));
+    if y0 > y1 {
+        return Some(true);
+    }
+    let pixels = u64::from(b.x1 - b.x0 + 1) * u64::from(y1 - y0 + 1);
+    if pixels > u64::from(TINY_TRIANGLE_PIXELS) {
+        return None;
+    }
+    let edges = edges_of(p, signed_area2(p[0], p[1], p[2]) > 0, rule);
+    for y in y0..=y1 {
+        for x in b.x0..=b.x1 {
+            let s = sample_point(x, y);
+            if edges.iter().all(|e| e.passes(e.value(s))) {
+                return Some(false);
+            }
+        }
+    }
+    Some(true)
 }
 
 /// The signed snapped area, the bounds and the weight planes; `None` for zero snapped area,
