@@ -25,13 +25,12 @@ use super::framebuffer::Framebuffer;
 use super::lanes::{LaneShading, LaneTriangle, Lanes};
 use super::mesh::ClipMesh;
 use super::prepare::{PreparedTriangle, prepare_triangle_with};
-use super::project::{Viewport, WindowVertex, ndc_from_clip, project_vertex};
+use super::project::{SUBPIXEL, Viewport, WindowVertex, ndc_from_clip, project_vertex};
 use super::render::{
     Rasterizer, draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply,
 };
 use super::setup::{
-    TINY_TRIANGLE_PIXELS, TieRule, TriangleSetup, covers_no_sample, setup_bounds,
-    setup_triangle_with, triangle_geometry,
+    TieRule, TriangleSetup, covers_no_sample, setup_bounds, setup_triangle_with, triangle_geometry,
 };
 use super::shade::ShadeParams;
 use super::texture::Texture;
@@ -266,17 +265,26 @@ impl<'m> FastMesh<'m> {
         true
     }
 
-    /// Whether a whole triangle a few pixels high is known to cover no pixel centre of the
-    /// band ([`covers_no_sample`]): then it is not set up.
+    /// Whether a whole triangle less than two pixels across is known to cover no pixel
+    /// centre of the band ([`covers_no_sample`]): then it is not set up.
     #[inline(always)]
     fn covers_nothing(&self, corners: [u32; 3], rows: [u16; 2], band: &RowBand<'_>) -> bool {
-        if u32::from(rows[1] - rows[0]) >= TINY_TRIANGLE_PIXELS {
+        if rows[1] - rows[0] > 1 {
             return false;
         }
         let Some(p) = self.projected(corners) else {
             return false;
         };
         let fixed = p.map(|v| v.fixed);
+        // Cheaply first: less than two pixels across each way, so at most 2x2 pixel centres.
+        let (lo, hi) = (
+            fixed[0].min(fixed[1]).min(fixed[2]),
+            fixed[0].max(fixed[1]).max(fixed[2]),
+        );
+        let span = hi - lo;
+        if span.x >= 2 * SUBPIXEL || span.y >= 2 * SUBPIXEL {
+            return false;
+        }
         let (Some(bounds), Some(last)) = (
             setup_bounds(fixed, self.viewport),
             (band.y0 + band.rows).checked_sub(1),
