@@ -447,6 +447,17 @@ enum Where {
     Lanes(__m256i),
 }
 
+impl Where {
+    /// [`Pending::index`] and [`Pending::lanes`].
+    #[inline]
+    fn parts(self) -> (usize, Option<__m256i>) {
+        match self {
+            Where::Row(i) => (i, None),
+            Where::Lanes(l) => (0, Some(l)),
+        }
+    }
+}
+
 /// Interpolates, shades and writes the next (up to) eight gathered pixels.
 #[inline]
 #[target_feature(enable = "avx2")]
@@ -502,10 +513,7 @@ fn shade_chunk<const SITE: u8>(
     if ok == 0 {
         return;
     }
-    let (index, lanes) = match at {
-        Where::Row(i) => (i, None),
-        Where::Lanes(l) => (0, Some(l)),
-    };
+    let (index, lanes) = at.parts();
     let chunk = Pending {
         u: to_f32(lo.u, hi.u),
         v: to_f32(lo.v, hi.v),

@@ -59,20 +59,16 @@ pub(in crate::raster::lanes) fn scanline_triangle(
         let mut x = x0;
         while x <= x1 {
             let lanes_in = (x1 - x + 1).min(LANES as u32);
-            let (u, v, depth, ok) = stepped_chunk(&vals, (1i32 << lanes_in) - 1, mode);
-            if ok != 0 {
-                let chunk = Pending {
-                    u,
-                    v,
-                    depth,
-                    valid: mask_from_bits(ok),
-                    wire: 0,
-                    halo: 0,
-                    index: row + x as usize,
-                    lanes: None,
-                };
-                lookups.push::<10>(sampler, target, chunk, None);
-            }
+            let at = Where::Row(row + x as usize);
+            push_stepped::<10>(
+                &vals,
+                (1i32 << lanes_in) - 1,
+                at,
+                mode,
+                sampler,
+                &mut lookups,
+                target,
+            );
             for half in vals.iter_mut() {
                 for (q, s) in half.iter_mut().zip(&step8) {
                     *q = _mm256_add_pd(*q, *s);
@@ -133,8 +129,34 @@ fn draw_stepped<const SITE: u8>(
     target: &mut Target<'_>,
 ) {
     let (at, vals, bits) = g.take();
-    let (u, v, depth, ok) = stepped_chunk(&vals, bits, mode);
+    push_stepped::<SITE>(
+        &vals,
+        bits,
+        Where::Lanes(at),
+        mode,
+        sampler,
+        lookups,
+        target,
+    );
+}
+
+/// Hands one chunk of the scanline lanes, from its stepped values, to the texture lookups
+/// (which write it).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+#[target_feature(enable = "avx2")]
+fn push_stepped<const SITE: u8>(
+    vals: &[[__m256d; 4]; 2],
+    ok: i32,
+    at: Where,
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    lookups: &mut Lookups,
+    target: &mut Target<'_>,
+) {
+    let (u, v, depth, ok) = stepped_chunk(vals, ok, mode);
     if ok != 0 {
+        let (index, lanes) = at.parts();
         let chunk = Pending {
             u,
             v,
@@ -142,8 +164,8 @@ fn draw_stepped<const SITE: u8>(
             valid: mask_from_bits(ok),
             wire: 0,
             halo: 0,
-            index: 0,
-            lanes: Some(at),
+            index,
+            lanes,
         };
         lookups.push::<SITE>(sampler, target, chunk, None);
     }
