@@ -17,7 +17,7 @@
 //!
 //! A mesh of a million triangles then needs about 40 MB for this, not about 1 GB.
 
-use glam::{DVec2, I64Vec2};
+use glam::{DVec2, I64Vec2, IVec2 as I32Vec2};
 
 use super::bands::RowBand;
 use super::clip::{ClipPlane, planes};
@@ -42,8 +42,11 @@ use super::varying::Varyings;
 pub struct ProjectedVertex {
     /// Window position in pixels before snapping.
     pub window: DVec2,
-    /// Snapped window position in 1/256 pixel.
-    pub fixed: I64Vec2,
+    /// Snapped window position in 1/256 pixel, in 32 bits: inside the guard band
+    /// ([`GUARD_BAND_PIXELS`](super::project::GUARD_BAND_PIXELS) = 2^20 pixels) it is below
+    /// 2^28 in magnitude. (Only vertices inside every plane are read as snapped positions;
+    /// others are saturated.) Use [`ProjectedVertex::fixed`].
+    fixed32: I32Vec2,
     /// Window depth in [0, 1].
     pub depth: f64,
     /// `1 / w_clip`.
@@ -54,6 +57,13 @@ pub struct ProjectedVertex {
 }
 
 impl ProjectedVertex {
+    /// The snapped window position in 1/256 pixel, as [`project_vertex`] gives it (for a
+    /// vertex inside every plane).
+    #[inline(always)]
+    pub fn fixed(&self) -> I64Vec2 {
+        self.fixed32.as_i64vec2()
+    }
+
     /// Projects one clip-space position (the values of [`project_vertex`]).
     fn new(clip: glam::DVec4, viewport: Viewport, planes: &[ClipPlane]) -> Self {
         let w = project_vertex(
@@ -62,7 +72,13 @@ impl ProjectedVertex {
         );
         Self {
             window: w.window,
-            fixed: w.fixed,
+            fixed32: w
+                .fixed
+                .clamp(
+                    I64Vec2::splat(i32::MIN.into()),
+                    I64Vec2::splat(i32::MAX.into()),
+                )
+                .as_ivec2(),
             depth: w.depth,
             inv_w: w.inv_w,
             inside: clip.is_finite() && planes.iter().all(|p| p.distance(clip) >= 0.0),
@@ -181,7 +197,7 @@ impl<'m> FastMesh<'m> {
             return Slot::Skip;
         };
         if p.iter().all(|v| v.inside) {
-            return match setup_bounds(p.map(|v| v.fixed), self.viewport) {
+            return match setup_bounds(p.map(|v| v.fixed()), self.viewport) {
                 Some(b) => Slot::Whole {
                     corners,
                     // The bounds lie inside the image, at most MAX_IMAGE_SIZE rows.
@@ -213,7 +229,7 @@ impl<'m> FastMesh<'m> {
             *w = Some(WindowVertex {
                 clip: m.clip,
                 ndc: ndc_from_clip(m.clip),
-                fixed: p.fixed,
+                fixed: p.fixed(),
                 window: p.window,
                 depth: p.depth,
                 inv_w: p.inv_w,
@@ -241,7 +257,7 @@ impl<'m> FastMesh<'m> {
             return false;
         };
         let Some(g) = triangle_geometry(
-            [a.fixed, b.fixed, c.fixed],
+            [a.fixed(), b.fixed(), c.fixed()],
             [a.window, b.window, c.window],
             self.viewport,
             self.rule,
@@ -275,7 +291,7 @@ impl<'m> FastMesh<'m> {
         let Some(p) = self.projected(corners) else {
             return false;
         };
-        let fixed = p.map(|v| v.fixed);
+        let fixed = p.map(|v| v.fixed());
         // Cheaply first: less than two pixels across each way, so at most 2x2 pixel centres.
         let (lo, hi) = (
             fixed[0].min(fixed[1]).min(fixed[2]),
@@ -525,5 +541,35 @@ mod tests {
     #[test]
     fn a_slot_is_twenty_bytes() {
         assert_eq!(size_of::<Slot>(), 20);
+    }
+
+    /// A projected vertex stays compact (a million vertices: 48 MB).
+    #[test]
+    fn a_projected_vertex_is_forty_eight_bytes() {
+        assert_eq!(size_of::<ProjectedVertex>(), 48);
+    }
+
+    /// The 32-bit snapped position holds every position inside the guard band exactly.
+    #[test]
+    fn snapped_positions_inside_the_guard_band_fit_32_bits() {
+        let viewport = Viewport {
+            width: 64,
+            height: 64,
+        };
+        let planes = planes(viewport.guard_band_ndc());
+        let g = viewport.guard_band_ndc();
+        for clip in [
+            glam::DVec4::new(g, -g, 0.0, 1.0),
+            glam::DVec4::new(-g, g, 0.5, 1.0),
+            glam::DVec4::new(0.25, -0.5, 0.0, 1.0),
+        ] {
+            let v = ProjectedVertex::new(clip, viewport, &planes);
+            let full = project_vertex(
+                &super::super::clip::ClipVertex::new(clip, Varyings::default()),
+                viewport,
+            );
+            assert!(v.inside, "{clip}");
+            assert_eq!(v.fixed(), full.fixed, "{clip}");
+        }
     }
 }
