@@ -441,7 +441,7 @@ impl<'m> FastMesh<'m> {
                                             true
                                         }
                                         Rasterizer::EdgeFunction if tri.exact() => {
-                                            draw_lanes(&tri, ti, d, texture, &mut band);
+                                            draw_lanes(&tri, ti, d, &mut band);
                                             true
                                         }
                                         Rasterizer::EdgeFunction => false,

@@ -340,13 +340,12 @@ pub(super) fn draw_lanes(
     tri: &lanes::LaneTriangle,
     source: u32,
     lanes: &lanes::Lanes<'_>,
-    texture: &Texture,
     band: &mut RowBand<'_>,
 ) {
     let Some(rows) = band.rows_of(&tri.bounds()) else {
         return;
     };
-    let mut target = lane_target(band, source, texture);
+    let mut target = lane_target(band, source, lanes.texture());
     // With a shading, the lanes colour every covered sample themselves.
     lanes.edge_triangle(tri, rows, &mut target);
 }

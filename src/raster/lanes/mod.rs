@@ -17,14 +17,21 @@
 //!   [`WeightPlanes::weight`](super::setup::WeightPlanes::weight), and every later step
 //!   repeats the operations of [`interpolate::fragment`](super::interpolate::fragment) and
 //!   [`Texture::sample_rgba8`] in the same order, so the result is **bit-identical** to the
-//!   per-pixel renderer and to what the probe reports.
+//!   per-pixel renderer and to what the probe reports. In the AVX2 build, a triangle at most
+//!   eight columns wide skips the blocks (its edge values are stepped row by row), and its
+//!   covered pixels, like those of any row chunk covering at most four, are gathered from
+//!   several rows into chunks of eight (`avx2/sparse.rs`): each lane does the same operations
+//!   at its own pixel centre.
 //! - **Scanline** ([`scanline_triangle`]): exact integer spans per row
 //!   ([`row_span`](super::scanline::row_span)); along a span `u/w`, `v/w`, `1/w` and the depth are stepped by their
 //!   per-pixel increments (eight lanes advance by eight increments), and the
 //!   perspective-correct uv is `(u/w) * (1 / (1/w))`, one division per pixel. Coverage is
-//!   identical to the edge-function path; values agree up to floating-point rounding.
+//!   identical to the edge-function path; values agree up to floating-point rounding. Spans of
+//!   at most four pixels are gathered into chunks of eight in the AVX2 build, with the values
+//!   the row's lanes would hold.
 //!
-//! Three builds of the same arithmetic, chosen at run time ([`VectorLevel`]): AVX2 intrinsics
+//! Three builds of the same arithmetic, chosen at run time ([`VectorLevel`]) once per band of
+//! triangles ([`Lanes`]): AVX2 intrinsics
 //! (`avx2.rs`), with bilinear texture lookups of two chunks (sixteen pixels) at once in
 //! AVX-512 when the CPU has it (`avx512.rs`), and portable lane code (plain arrays,
 //! compiled with AVX2 enabled where available). No fused multiply-add is used anywhere, so

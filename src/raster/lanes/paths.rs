@@ -61,6 +61,11 @@ impl<'t> Lanes<'t> {
         self.shading
     }
 
+    /// The texture it samples.
+    pub fn texture(&self) -> &'t Texture {
+        self.texture
+    }
+
     /// Draws rows `rows` (within the target band) of `tri`, made for this shading, with the
     /// edge-function lanes (see [`edge_triangle`]). `tri` must be
     /// [`exact`](LaneTriangle::exact).
