@@ -162,12 +162,18 @@ macro_rules! from_weights4 {
             _mm256_cmp_pd::<_CMP_GT_OQ>(sum, _mm256_setzero_pd()),
             _mm256_cmp_pd::<_CMP_LT_OQ>(sum, _mm256_set1_pd(f64::INFINITY)),
         );
-        let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
-        let p = [
-            _mm256_mul_pd(q[0], inv),
-            _mm256_mul_pd(q[1], inv),
-            _mm256_mul_pd(q[2], inv),
-        ];
+        // The perspective weights, unless nothing reads them (affine, without the heatmap's
+        // buffers): a division saved.
+        let p = if mode == Interpolation::Perspective || c.both_uv.is_some() {
+            let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
+            [
+                _mm256_mul_pd(q[0], inv),
+                _mm256_mul_pd(q[1], inv),
+                _mm256_mul_pd(q[2], inv),
+            ]
+        } else {
+            l
+        };
         let w = match mode {
             Interpolation::Perspective => p,
             Interpolation::Affine => l,

@@ -58,6 +58,34 @@ fn gather(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> __m512i {
     unsafe { _mm512_i32gather_epi32::<4>(index, s.texels.as_ptr().cast::<i32>()) }
 }
 
+/// The texels at `(i, j)` and `(i + 1, j)` of sixteen lanes, each pair read as one 64-bit
+/// element (`avx2::gather_pairs`); every `i + 1` must be inside the row.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn gather_pairs(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> (__m512i, __m512i) {
+    let row = match s.width_shift {
+        Some(k) => _mm512_sll_epi32(j, _mm_cvtsi32_si128(k)),
+        None => _mm512_mullo_epi32(j, _mm512_set1_epi32(s.width)),
+    };
+    let index = _mm512_add_epi32(row, i);
+    // SAFETY: i + 1 and j are inside the texture, so both texels of every pair are in
+    // `texels` (one row, side by side); the 8 bytes are read unaligned as one i64.
+    let (lo, hi) = unsafe {
+        let p = s.texels.as_ptr().cast::<i64>();
+        (
+            _mm512_i32gather_epi64::<4>(_mm512_castsi512_si256(index), p),
+            _mm512_i32gather_epi64::<4>(_mm512_extracti64x4_epi64::<1>(index), p),
+        )
+    };
+    // lo = (a0 b0 a1 b1 ... a7 b7), hi = (a8 b8 ... a15 b15).
+    let even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    let odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
+    (
+        _mm512_permutex2var_epi32(lo, even, hi),
+        _mm512_permutex2var_epi32(lo, odd, hi),
+    )
+}
+
 /// Channel `C` (0 = red) of sixteen packed texels, as f32 in 0..255.
 #[inline]
 #[target_feature(enable = "avx512f,avx512bw")]
@@ -142,12 +170,19 @@ pub(super) fn sample16(
                 wrap(j0, s.wrap.1),
                 wrap(_mm512_add_epi32(j0, one), s.wrap.1),
             );
-            let texels = [
-                gather(s, ia, ja),
-                gather(s, ib, ja),
-                gather(s, ia, jb),
-                gather(s, ib, jb),
-            ];
+            let side_by_side = _mm512_cmpeq_epi32_mask(ib, _mm512_add_epi32(ia, one)) == 0xffff;
+            let texels = if side_by_side {
+                let (t00, t10) = gather_pairs(s, ia, ja);
+                let (t01, t11) = gather_pairs(s, ia, jb);
+                [t00, t10, t01, t11]
+            } else {
+                [
+                    gather(s, ia, ja),
+                    gather(s, ib, ja),
+                    gather(s, ia, jb),
+                    gather(s, ib, jb),
+                ]
+            };
             // `texture::bilinear_weights`, mirrored.
             let ones = _mm512_set1_ps(1.0);
             let (oa, ob) = (_mm512_sub_ps(ones, a), _mm512_sub_ps(ones, b));

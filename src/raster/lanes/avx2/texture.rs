@@ -106,6 +106,39 @@ pub(in crate::raster::lanes) fn gather(s: &VecSampler<'_>, i: __m256i, j: __m256
     unsafe { _mm256_i32gather_epi32::<4>(s.texels.as_ptr().cast::<i32>(), index) }
 }
 
+/// The texels at `(i, j)` and `(i + 1, j)` of eight lanes, each pair read as one 64-bit
+/// element; every `i + 1` must be inside the row (a wrapped neighbour is not beside it).
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(in crate::raster::lanes) fn gather_pairs(
+    s: &VecSampler<'_>,
+    i: __m256i,
+    j: __m256i,
+) -> (__m256i, __m256i) {
+    let row = match s.width_shift {
+        Some(k) => _mm256_sll_epi32(j, _mm_cvtsi32_si128(k)),
+        None => _mm256_mullo_epi32(j, _mm256_set1_epi32(s.width)),
+    };
+    let index = _mm256_add_epi32(row, i);
+    // SAFETY: i + 1 and j are inside the texture, so both texels of every pair are in
+    // `texels` (one row, side by side); the 8 bytes are read unaligned as one i64.
+    let (lo, hi) = unsafe {
+        let p = s.texels.as_ptr().cast::<i64>();
+        (
+            _mm256_i32gather_epi64::<4>(p, _mm256_castsi256_si128(index)),
+            _mm256_i32gather_epi64::<4>(p, _mm256_extracti128_si256::<1>(index)),
+        )
+    };
+    // lo = (a0 b0 a1 b1 | a2 b2 a3 b3), hi = (a4 b4 a5 b5 | a6 b6 a7 b7).
+    let (lo, hi) = (_mm256_castsi256_ps(lo), _mm256_castsi256_ps(hi));
+    let a = _mm256_shuffle_ps::<0b10_00_10_00>(lo, hi); // a0 a1 a4 a5 | a2 a3 a6 a7
+    let b = _mm256_shuffle_ps::<0b11_01_11_01>(lo, hi);
+    (
+        _mm256_permute4x64_epi64::<0b11_01_10_00>(_mm256_castps_si256(a)),
+        _mm256_permute4x64_epi64::<0b11_01_10_00>(_mm256_castps_si256(b)),
+    )
+}
+
 /// Channel `C` (0 = red) of eight packed texels, as f32 in 0..255: one byte shuffle moves
 /// byte `C` of every texel to the bottom of its lane and zeroes the rest.
 #[inline]
@@ -183,12 +216,22 @@ pub(in crate::raster::lanes) fn sample<const SITE: u8>(
                 wrap(j0, s.wrap.1),
                 wrap(_mm256_add_epi32(j0, one), s.wrap.1),
             );
-            let texels = [
-                gather(s, ia, ja),
-                gather(s, ib, ja),
-                gather(s, ia, jb),
-                gather(s, ib, jb),
-            ];
+            let side_by_side = _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                ib,
+                _mm256_add_epi32(ia, one),
+            ))) == 0xff;
+            let texels = if side_by_side {
+                let (t00, t10) = gather_pairs(s, ia, ja);
+                let (t01, t11) = gather_pairs(s, ia, jb);
+                [t00, t10, t01, t11]
+            } else {
+                [
+                    gather(s, ia, ja),
+                    gather(s, ib, ja),
+                    gather(s, ia, jb),
+                    gather(s, ib, jb),
+                ]
+            };
             // `texture::bilinear_weights`, mirrored.
             let ones = _mm256_set1_ps(1.0);
             let (oa, ob) = (_mm256_sub_ps(ones, a), _mm256_sub_ps(ones, b));

@@ -125,6 +125,18 @@ fn write(
     unsafe {
         let dp = target.depth.as_mut_ptr().add(index);
         let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
+        if _mm256_movemask_ps(_mm256_castsi256_ps(ok)) == 0xff {
+            // Every lane is a pixel of the band's row, which only this thread draws: plain
+            // loads and stores of blended values (masked stores are slow on some CPUs).
+            let old = _mm256_loadu_ps(dp);
+            let pass = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old));
+            _mm256_storeu_ps(dp, _mm256_blendv_ps(old, depth, _mm256_castsi256_ps(pass)));
+            if target.difference.is_none() {
+                let old = _mm256_loadu_si256(cp.cast());
+                _mm256_storeu_si256(cp.cast(), _mm256_blendv_epi8(old, rgba, pass));
+            }
+            return pass;
+        }
         let old = _mm256_maskload_ps(dp, ok);
         // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
         let pass = _mm256_and_si256(
