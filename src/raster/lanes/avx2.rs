@@ -76,7 +76,7 @@ impl Lookups {
     /// (a call boundary between its gathers costs up to half the speed).
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn push<const SITE: u8>(
+    fn push<const SITE: u8, const WIDE: bool>(
         &mut self,
         sampler: &VecSampler<'_>,
         target: &mut Target<'_>,
@@ -84,7 +84,7 @@ impl Lookups {
         both: Option<&[__m256; 4]>,
     ) {
         if !self.wide || both.is_some() {
-            let rgba = sample::<SITE>(sampler, chunk.u, chunk.v);
+            let rgba = sample::<SITE, WIDE>(sampler, chunk.u, chunk.v);
             finish(target, &chunk, rgba, both);
             return;
         }
@@ -105,7 +105,7 @@ impl Lookups {
     #[target_feature(enable = "avx2")]
     fn flush(&mut self, sampler: Option<&VecSampler<'_>>, target: &mut Target<'_>) {
         if let (Some(chunk), Some(sampler)) = (self.pending.take(), sampler) {
-            let rgba = sample::<{ u8::MAX }>(sampler, chunk.u, chunk.v);
+            let rgba = sample::<{ u8::MAX }, false>(sampler, chunk.u, chunk.v);
             finish(target, &chunk, rgba, None);
         }
     }
@@ -243,52 +243,100 @@ struct Four {
 }
 
 /// The edge-function lane path (see the parent module): every [`LaneColor`], with the
-/// wireframe.
+/// wireframe. With `wide` (the CPU has AVX-512 F, BW, VL and DQ) the same code is compiled for
+/// AVX-512, which gives it twice the vector registers.
 #[target_feature(enable = "avx2")]
 pub(super) fn edge_triangle(
     tri: &LaneTriangle,
-    (y_start, y_end): (u32, u32),
+    rows: (u32, u32),
     sampler: Option<&VecSampler<'_>>,
     wide: bool,
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    let (mode, color) = (shading.mode, shading.color);
-    let mut lookups = Lookups::new(sampler, wide);
-    // Sparse rows are gathered only where pixels are written one by one (no uv or
-    // difference buffers).
-    let mut gathered =
-        (target.uv.is_none() && target.difference.is_none()).then(sparse::Gathered::new);
-    let consts = &tri.consts;
-    match gathered.as_mut() {
-        // A narrow triangle (a dense mesh's): every covered pixel is gathered.
-        Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => narrow_rows(
-            tri,
-            (y_start, y_end),
-            g,
-            mode,
-            color,
-            sampler,
-            &mut lookups,
-            target,
-        ),
-        _ => block_rows(
-            tri,
-            (y_start, y_end),
-            gathered.as_mut(),
-            mode,
-            color,
-            sampler,
-            &mut lookups,
-            target,
-        ),
+    if wide {
+        // SAFETY: `wide` is set only when the CPU has these features (`wide_path`).
+        unsafe { edge_triangle_512(tri, rows, sampler, shading, target) }
+    } else {
+        edge_triangle_256(tri, rows, sampler, shading, target)
     }
-    if let Some(g) = gathered.as_mut() {
-        while !g.is_empty() {
-            draw_gathered::<3>(g, consts, mode, color, sampler, &mut lookups, target);
+}
+
+#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
+fn edge_triangle_512(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: this function's features.
+    unsafe { edge_triangle_body::<true>(tri, rows, sampler, shading, target) }
+}
+
+#[target_feature(enable = "avx2")]
+fn edge_triangle_256(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: this function's features.
+    unsafe { edge_triangle_body::<false>(tri, rows, sampler, shading, target) }
+}
+
+/// The body of both entries, inlined into each (so compiled for each one's instruction set).
+///
+/// # Safety
+/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
+#[inline(always)]
+unsafe fn edge_triangle_body<const WIDE: bool>(
+    tri: &LaneTriangle,
+    (y_start, y_end): (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: as the function's.
+    unsafe {
+        let (mode, color) = (shading.mode, shading.color);
+        let mut lookups = Lookups::new(sampler, WIDE);
+        // Sparse rows are gathered only where pixels are written one by one (no uv or
+        // difference buffers).
+        let mut gathered =
+            (target.uv.is_none() && target.difference.is_none()).then(sparse::Gathered::new);
+        let consts = &tri.consts;
+        match gathered.as_mut() {
+            // A narrow triangle (a dense mesh's): every covered pixel is gathered.
+            Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => narrow_rows::<WIDE>(
+                tri,
+                (y_start, y_end),
+                g,
+                mode,
+                color,
+                sampler,
+                &mut lookups,
+                target,
+            ),
+            _ => block_rows::<WIDE>(
+                tri,
+                (y_start, y_end),
+                gathered.as_mut(),
+                mode,
+                color,
+                sampler,
+                &mut lookups,
+                target,
+            ),
         }
+        if let Some(g) = gathered.as_mut() {
+            while !g.is_empty() {
+                draw_gathered::<3, WIDE>(g, consts, mode, color, sampler, &mut lookups, target);
+            }
+        }
+        lookups.flush(sampler, target);
     }
-    lookups.flush(sampler, target);
 }
 
 /// The edge-function lanes over the triangle's blocks of [`LANES`] columns by [`BLOCK_ROWS`]
@@ -297,7 +345,7 @@ pub(super) fn edge_triangle(
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
-fn block_rows(
+fn block_rows<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     mut gathered: Option<&mut sparse::Gathered>,
@@ -350,7 +398,9 @@ fn block_rows(
                     {
                         g.add(bx, y, covered);
                         if g.full() {
-                            draw_gathered::<2>(g, consts, mode, color, sampler, lookups, target);
+                            draw_gathered::<2, WIDE>(
+                                g, consts, mode, color, sampler, lookups, target,
+                            );
                         }
                         continue;
                     }
@@ -361,7 +411,7 @@ fn block_rows(
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
                     let at = Where::Row(index);
-                    shade_chunk::<0>(
+                    shade_chunk::<0, WIDE>(
                         [lo, hi],
                         covered,
                         at,
@@ -386,7 +436,7 @@ fn block_rows(
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
-fn narrow_rows(
+fn narrow_rows<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     g: &mut sparse::Gathered,
@@ -420,7 +470,7 @@ fn narrow_rows(
         if covered != 0 {
             g.add(x0, y, covered);
             if g.full() {
-                draw_gathered::<1>(g, &tri.consts, mode, color, sampler, lookups, target);
+                draw_gathered::<1, WIDE>(g, &tri.consts, mode, color, sampler, lookups, target);
             }
         }
         for i in 0..3 {
@@ -467,7 +517,7 @@ impl Where {
 /// Interpolates, shades and writes the next (up to) eight gathered pixels.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn draw_gathered<const SITE: u8>(
+fn draw_gathered<const SITE: u8, const WIDE: bool>(
     g: &mut sparse::Gathered,
     consts: &Constants,
     mode: Interpolation,
@@ -484,7 +534,7 @@ fn draw_gathered<const SITE: u8>(
     let lo = sparse::weights4(&consts.weights, x_lo, y_lo);
     let hi = sparse::weights4(&consts.weights, x_hi, y_hi);
     let at = Where::Lanes(sparse::indices(target, x, y));
-    shade_chunk::<SITE>(
+    shade_chunk::<SITE, WIDE>(
         [lo, hi],
         bits,
         at,
@@ -502,7 +552,7 @@ fn draw_gathered<const SITE: u8>(
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
-fn shade_chunk<const SITE: u8>(
+fn shade_chunk<const SITE: u8, const WIDE: bool>(
     [lo, hi]: [[__m256d; 3]; 2],
     covered: i32,
     at: Where,
@@ -545,7 +595,7 @@ fn shade_chunk<const SITE: u8>(
             finish(target, &chunk, _mm256_setzero_si256(), both.as_ref())
         }
         Some(sampler) if color == LaneColor::Texture => {
-            lookups.push::<SITE>(sampler, target, chunk, both.as_ref())
+            lookups.push::<SITE, WIDE>(sampler, target, chunk, both.as_ref())
         }
         _ => finish(
             target,

@@ -112,6 +112,8 @@ fn wide_path() -> bool {
     VECTOR_LEVEL.load(Ordering::Relaxed) >= VectorLevel::Avx512 as u8
         && std::arch::is_x86_feature_detected!("avx512f")
         && std::arch::is_x86_feature_detected!("avx512bw")
+        && std::arch::is_x86_feature_detected!("avx512vl")
+        && std::arch::is_x86_feature_detected!("avx512dq")
 }
 
 /// Pixels processed together along a row.

@@ -2,85 +2,140 @@
 
 use super::*;
 
-/// The scanline lane path (see the parent module).
+/// The scanline lane path (see the parent module). With `wide` (the CPU has AVX-512 F, BW, VL
+/// and DQ) the same code is compiled for AVX-512, as `edge_triangle`.
 #[target_feature(enable = "avx2")]
 pub(in crate::raster::lanes) fn scanline_triangle(
     tri: &LaneTriangle,
-    (y_start, y_end): (u32, u32),
+    rows: (u32, u32),
     sampler: &VecSampler<'_>,
     wide: bool,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    let mut lookups = Lookups::new(Some(sampler), wide);
-    let consts = &tri.consts;
-    let step = Stepped::row_step(consts, mode);
-    let n = LANES as f64;
-    let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
-    let mut gathered = sparse::SteppedGathered::new();
-    for y in y_start..=y_end {
-        let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
-            continue;
-        };
-        let start = Stepped::span_start(consts, mode, x0, y);
-        if x1 - x0 < sparse::MAX_LANES {
-            // A short span: its pixels, k single steps from the start, are gathered.
+    if wide {
+        // SAFETY: `wide` is set only when the CPU has these features (`wide_path`).
+        unsafe { scanline_triangle_512(tri, rows, sampler, mode, target) }
+    } else {
+        scanline_triangle_256(tri, rows, sampler, mode, target)
+    }
+}
+
+#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
+fn scanline_triangle_512(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: &VecSampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: this function's features.
+    unsafe { scanline_triangle_body::<true>(tri, rows, sampler, mode, target) }
+}
+
+#[target_feature(enable = "avx2")]
+fn scanline_triangle_256(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: &VecSampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: this function's features.
+    unsafe { scanline_triangle_body::<false>(tri, rows, sampler, mode, target) }
+}
+
+/// The body of both entries, inlined into each (so compiled for each one's instruction set).
+///
+/// # Safety
+/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
+#[inline(always)]
+unsafe fn scanline_triangle_body<const WIDE: bool>(
+    tri: &LaneTriangle,
+    (y_start, y_end): (u32, u32),
+    sampler: &VecSampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: as the function's.
+    unsafe {
+        let mut lookups = Lookups::new(Some(sampler), WIDE);
+        let consts = &tri.consts;
+        let step = Stepped::row_step(consts, mode);
+        let n = LANES as f64;
+        let step8 =
+            [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
+        let mut gathered = sparse::SteppedGathered::new();
+        for y in y_start..=y_end {
+            let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
+                continue;
+            };
+            let start = Stepped::span_start(consts, mode, x0, y);
+            if x1 - x0 < sparse::MAX_LANES {
+                // A short span: its pixels, k single steps from the start, are gathered.
+                let row = (y - target.y0) as usize * target.width as usize;
+                let mut at = start;
+                for x in x0..=x1 {
+                    gathered.add(row + x as usize, &at);
+                    if gathered.full() {
+                        draw_stepped::<11, WIDE>(
+                            &mut gathered,
+                            mode,
+                            sampler,
+                            &mut lookups,
+                            target,
+                        );
+                    }
+                    at = at.next(&step);
+                }
+                continue;
+            }
+            // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
+            let lanes = Stepped::lanes(start, &step);
+            let load = |f: fn(&Stepped) -> f64, h: usize| {
+                _mm256_setr_pd(
+                    f(&lanes[4 * h]),
+                    f(&lanes[4 * h + 1]),
+                    f(&lanes[4 * h + 2]),
+                    f(&lanes[4 * h + 3]),
+                )
+            };
+            // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8]
+            let mut vals = [0, 1].map(|h| {
+                [
+                    load(|s| s.u, h),
+                    load(|s| s.v, h),
+                    load(|s| s.inv_w, h),
+                    load(|s| s.depth, h),
+                ]
+            });
             let row = (y - target.y0) as usize * target.width as usize;
-            let mut at = start;
-            for x in x0..=x1 {
-                gathered.add(row + x as usize, &at);
-                if gathered.full() {
-                    draw_stepped::<11>(&mut gathered, mode, sampler, &mut lookups, target);
+            let mut x = x0;
+            while x <= x1 {
+                let lanes_in = (x1 - x + 1).min(LANES as u32);
+                let at = Where::Row(row + x as usize);
+                push_stepped::<10, WIDE>(
+                    &vals,
+                    (1i32 << lanes_in) - 1,
+                    at,
+                    mode,
+                    sampler,
+                    &mut lookups,
+                    target,
+                );
+                for half in vals.iter_mut() {
+                    for (q, s) in half.iter_mut().zip(&step8) {
+                        *q = _mm256_add_pd(*q, *s);
+                    }
                 }
-                at = at.next(&step);
+                x += LANES as u32;
             }
-            continue;
         }
-        // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
-        let lanes = Stepped::lanes(start, &step);
-        let load = |f: fn(&Stepped) -> f64, h: usize| {
-            _mm256_setr_pd(
-                f(&lanes[4 * h]),
-                f(&lanes[4 * h + 1]),
-                f(&lanes[4 * h + 2]),
-                f(&lanes[4 * h + 3]),
-            )
-        };
-        // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8]
-        let mut vals = [0, 1].map(|h| {
-            [
-                load(|s| s.u, h),
-                load(|s| s.v, h),
-                load(|s| s.inv_w, h),
-                load(|s| s.depth, h),
-            ]
-        });
-        let row = (y - target.y0) as usize * target.width as usize;
-        let mut x = x0;
-        while x <= x1 {
-            let lanes_in = (x1 - x + 1).min(LANES as u32);
-            let at = Where::Row(row + x as usize);
-            push_stepped::<10>(
-                &vals,
-                (1i32 << lanes_in) - 1,
-                at,
-                mode,
-                sampler,
-                &mut lookups,
-                target,
-            );
-            for half in vals.iter_mut() {
-                for (q, s) in half.iter_mut().zip(&step8) {
-                    *q = _mm256_add_pd(*q, *s);
-                }
-            }
-            x += LANES as u32;
+        while !gathered.is_empty() {
+            draw_stepped::<12, WIDE>(&mut gathered, mode, sampler, &mut lookups, target);
         }
+        lookups.flush(Some(sampler), target);
     }
-    while !gathered.is_empty() {
-        draw_stepped::<12>(&mut gathered, mode, sampler, &mut lookups, target);
-    }
-    lookups.flush(Some(sampler), target);
 }
 
 /// uv, depth and the lanes to write of one chunk of the scanline lanes from its stepped
@@ -121,7 +176,7 @@ fn stepped_chunk(
 /// Looks up and writes the next (up to) eight gathered pixels of the scanline lanes.
 #[inline]
 #[target_feature(enable = "avx2")]
-fn draw_stepped<const SITE: u8>(
+fn draw_stepped<const SITE: u8, const WIDE: bool>(
     g: &mut sparse::SteppedGathered,
     mode: Interpolation,
     sampler: &VecSampler<'_>,
@@ -129,7 +184,7 @@ fn draw_stepped<const SITE: u8>(
     target: &mut Target<'_>,
 ) {
     let (at, vals, bits) = g.take();
-    push_stepped::<SITE>(
+    push_stepped::<SITE, WIDE>(
         &vals,
         bits,
         Where::Lanes(at),
@@ -145,7 +200,7 @@ fn draw_stepped<const SITE: u8>(
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
-fn push_stepped<const SITE: u8>(
+fn push_stepped<const SITE: u8, const WIDE: bool>(
     vals: &[[__m256d; 4]; 2],
     ok: i32,
     at: Where,
@@ -167,6 +222,6 @@ fn push_stepped<const SITE: u8>(
             index,
             lanes,
         };
-        lookups.push::<SITE>(sampler, target, chunk, None);
+        lookups.push::<SITE, WIDE>(sampler, target, chunk, None);
     }
 }

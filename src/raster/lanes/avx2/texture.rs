@@ -187,7 +187,7 @@ pub(in crate::raster::lanes) fn weighted<const C: i32>(
 /// caller, see `Lookups::push`).
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(in crate::raster::lanes) fn sample<const SITE: u8>(
+pub(in crate::raster::lanes) fn sample<const SITE: u8, const WIDE: bool>(
     s: &VecSampler<'_>,
     u: __m256,
     v: __m256,

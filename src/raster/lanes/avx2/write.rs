@@ -132,8 +132,13 @@ fn write(
             let pass = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old));
             _mm256_storeu_ps(dp, _mm256_blendv_ps(old, depth, _mm256_castsi256_ps(pass)));
             if target.difference.is_none() {
-                let old = _mm256_loadu_si256(cp.cast());
-                _mm256_storeu_si256(cp.cast(), _mm256_blendv_epi8(old, rgba, pass));
+                // The old colours are read only when some lane keeps its own.
+                let colour = if _mm256_movemask_ps(_mm256_castsi256_ps(pass)) == 0xff {
+                    rgba
+                } else {
+                    _mm256_blendv_epi8(_mm256_loadu_si256(cp.cast()), rgba, pass)
+                };
+                _mm256_storeu_si256(cp.cast(), colour);
             }
             return pass;
         }
