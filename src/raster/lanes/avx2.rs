@@ -83,7 +83,7 @@ impl Lookups {
         chunk: Pending,
         both: Option<&[__m256; 4]>,
     ) {
-        if !self.wide || both.is_some() {
+        if !(WIDE && self.wide) || both.is_some() {
             let rgba = sample::<SITE, WIDE>(sampler, chunk.u, chunk.v);
             finish(target, &chunk, rgba, both);
             return;
