@@ -85,7 +85,7 @@ impl Lookups {
     ) {
         if !(WIDE && self.wide) || both.is_some() {
             let rgba = sample::<SITE, WIDE>(sampler, chunk.u, chunk.v);
-            finish(target, &chunk, rgba, both);
+            finish::<SITE, WIDE>(target, &chunk, rgba, both);
             return;
         }
         match self.pending.take() {
@@ -95,8 +95,8 @@ impl Lookups {
                 let (a, b) = unsafe {
                     super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
-                finish(target, &first, a, None);
-                finish(target, &chunk, b, None);
+                finish::<SITE, WIDE>(target, &first, a, None);
+                finish::<SITE, WIDE>(target, &chunk, b, None);
             }
         }
     }
@@ -106,7 +106,7 @@ impl Lookups {
     fn flush(&mut self, sampler: Option<&VecSampler<'_>>, target: &mut Target<'_>) {
         if let (Some(chunk), Some(sampler)) = (self.pending.take(), sampler) {
             let rgba = sample::<{ u8::MAX }, false>(sampler, chunk.u, chunk.v);
-            finish(target, &chunk, rgba, None);
+            finish::<{ u8::MAX }, false>(target, &chunk, rgba, None);
         }
     }
 }
@@ -592,15 +592,15 @@ fn shade_chunk<const SITE: u8, const WIDE: bool>(
     match sampler {
         // A difference target is not shaded (see `DifferenceTarget`).
         _ if target.difference.is_some() => {
-            finish(target, &chunk, _mm256_setzero_si256(), both.as_ref())
+            finish::<SITE, WIDE>(target, &chunk, _mm256_setzero_si256(), both.as_ref())
         }
         Some(sampler) if color == LaneColor::Texture => {
             lookups.push::<SITE, WIDE>(sampler, target, chunk, both.as_ref())
         }
-        _ => finish(
+        _ => finish::<SITE, WIDE>(
             target,
             &chunk,
-            channel_colors(&lo, &hi, color),
+            channel_colors::<SITE, WIDE>(&lo, &hi, color),
             both.as_ref(),
         ),
     }

@@ -46,10 +46,15 @@ fn unit_normal(n: [__m256; 3]) -> [__m256; 3] {
     [unit(n[0], 0.0), unit(n[1], 0.0), unit(n[2], 1.0)]
 }
 
-/// The colours of the non-texture shadings for eight samples, as `shade` makes them.
+/// The colours of the non-texture shadings for eight samples, as `shade` makes them (`SITE`
+/// and `WIDE`: one copy per caller, see `Lookups::push`).
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(super) fn channel_colors(lo: &Four, hi: &Four, color: LaneColor) -> __m256i {
+pub(super) fn channel_colors<const SITE: u8, const WIDE: bool>(
+    lo: &Four,
+    hi: &Four,
+    color: LaneColor,
+) -> __m256i {
     match color {
         LaneColor::Depth(near, far) => {
             // `shade::depth_grey`, mirrored.

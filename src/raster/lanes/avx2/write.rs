@@ -3,12 +3,13 @@
 use super::*;
 
 /// Paints the wireframe over a chunk's colours and writes it, with `both_uv`
-/// (`[u_affine, v_affine, u_smooth, v_smooth]`) into a target with uv or difference buffers.
+/// (`[u_affine, v_affine, u_smooth, v_smooth]`) into a target with uv or difference buffers
+/// (`SITE` and `WIDE`: one copy per caller, see `Lookups::push`).
 /// (The uvs are not part of [`Pending`]: a chunk waiting for its partner is moved, and
 /// the smaller the better.)
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(super) fn finish(
+pub(super) fn finish<const SITE: u8, const WIDE: bool>(
     target: &mut Target<'_>,
     chunk: &Pending,
     mut rgba: __m256i,
