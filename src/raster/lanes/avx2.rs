@@ -85,7 +85,8 @@ impl Lookups {
     ) {
         if !(WIDE && self.wide) || both.is_some() {
             let rgba = sample::<SITE, WIDE>(sampler, chunk.u, chunk.v);
-            finish::<SITE, WIDE>(target, &chunk, rgba, both);
+            // SAFETY: this module runs with AVX2.
+            unsafe { finish(target, &chunk, rgba, both) };
             return;
         }
         match self.pending.take() {
@@ -95,8 +96,10 @@ impl Lookups {
                 let (a, b) = unsafe {
                     super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
-                finish::<SITE, WIDE>(target, &first, a, None);
-                finish::<SITE, WIDE>(target, &chunk, b, None);
+                // SAFETY: this module runs with AVX2.
+                unsafe { finish(target, &first, a, None) };
+                // SAFETY: this module runs with AVX2.
+                unsafe { finish(target, &chunk, b, None) };
             }
         }
     }
@@ -106,7 +109,8 @@ impl Lookups {
     fn flush(&mut self, sampler: Option<&VecSampler<'_>>, target: &mut Target<'_>) {
         if let (Some(chunk), Some(sampler)) = (self.pending.take(), sampler) {
             let rgba = sample::<{ u8::MAX }, false>(sampler, chunk.u, chunk.v);
-            finish::<{ u8::MAX }, false>(target, &chunk, rgba, None);
+            // SAFETY: this module runs with AVX2.
+            unsafe { finish(target, &chunk, rgba, None) };
         }
     }
 }
@@ -589,19 +593,14 @@ fn shade_chunk<const SITE: u8, const WIDE: bool>(
         ]),
         _ => None,
     };
-    match sampler {
+    let rgba = match sampler {
         // A difference target is not shaded (see `DifferenceTarget`).
-        _ if target.difference.is_some() => {
-            finish::<SITE, WIDE>(target, &chunk, _mm256_setzero_si256(), both.as_ref())
-        }
+        _ if target.difference.is_some() => _mm256_setzero_si256(),
         Some(sampler) if color == LaneColor::Texture => {
-            lookups.push::<SITE, WIDE>(sampler, target, chunk, both.as_ref())
+            return lookups.push::<SITE, WIDE>(sampler, target, chunk, both.as_ref());
         }
-        _ => finish::<SITE, WIDE>(
-            target,
-            &chunk,
-            channel_colors::<SITE, WIDE>(&lo, &hi, color),
-            both.as_ref(),
-        ),
-    }
+        _ => channel_colors::<SITE, WIDE>(&lo, &hi, color),
+    };
+    // SAFETY: this module runs with AVX2.
+    unsafe { finish(target, &chunk, rgba, both.as_ref()) }
 }

@@ -4,40 +4,45 @@ use super::*;
 
 /// Paints the wireframe over a chunk's colours and writes it, with `both_uv`
 /// (`[u_affine, v_affine, u_smooth, v_smooth]`) into a target with uv or difference buffers
-/// (`SITE` and `WIDE`: one copy per caller, see `Lookups::push`).
 /// (The uvs are not part of [`Pending`]: a chunk waiting for its partner is moved, and
-/// the smaller the better.)
-#[inline]
-#[target_feature(enable = "avx2")]
-pub(super) fn finish<const SITE: u8, const WIDE: bool>(
+/// the smaller the better.) Always inlined: it runs once or twice per chunk, and a call
+/// costs the dense meshes several percent.
+///
+/// # Safety
+/// The CPU has AVX2.
+#[inline(always)]
+pub(super) unsafe fn finish(
     target: &mut Target<'_>,
     chunk: &Pending,
     mut rgba: __m256i,
     both_uv: Option<&[__m256; 4]>,
 ) {
-    if chunk.halo != 0 {
-        rgba = _mm256_blendv_epi8(
-            rgba,
-            _mm256_set1_epi32(i32::from_le_bytes(WIRE_HALO_COLOR)),
-            mask_from_bits(chunk.halo),
-        );
-    }
-    if chunk.wire != 0 {
-        rgba = _mm256_blendv_epi8(
-            rgba,
-            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
-            mask_from_bits(chunk.wire),
-        );
-    }
-    let pass = match chunk.lanes {
-        Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
-        None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
-    };
-    if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
-        store_uv(uv, chunk.index, pass, both);
-    }
-    if let (Some(d), Some(both)) = (target.difference.as_mut(), both_uv) {
-        store_difference(d, chunk.index, pass, both);
+    // SAFETY: as the function's.
+    unsafe {
+        if chunk.halo != 0 {
+            rgba = _mm256_blendv_epi8(
+                rgba,
+                _mm256_set1_epi32(i32::from_le_bytes(WIRE_HALO_COLOR)),
+                mask_from_bits(chunk.halo),
+            );
+        }
+        if chunk.wire != 0 {
+            rgba = _mm256_blendv_epi8(
+                rgba,
+                _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
+                mask_from_bits(chunk.wire),
+            );
+        }
+        let pass = match chunk.lanes {
+            Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
+            None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
+        };
+        if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
+            store_uv(uv, chunk.index, pass, both);
+        }
+        if let (Some(d), Some(both)) = (target.difference.as_mut(), both_uv) {
+            store_difference(d, chunk.index, pass, both);
+        }
     }
 }
 
