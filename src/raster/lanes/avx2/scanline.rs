@@ -92,6 +92,19 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             }
             // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
             let lanes = Stepped::lanes(start, &step);
+            let row = (y - target.y0) as usize * target.width as usize;
+            if WIDE {
+                wide_span::<WIDE>(
+                    &lanes,
+                    &step,
+                    (row, x0, x1),
+                    mode,
+                    sampler,
+                    &mut lookups,
+                    target,
+                );
+                continue;
+            }
             let load = |f: fn(&Stepped) -> f64, h: usize| {
                 _mm256_setr_pd(
                     f(&lanes[4 * h]),
@@ -109,7 +122,6 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
                     load(|s| s.depth, h),
                 ]
             });
-            let row = (y - target.y0) as usize * target.width as usize;
             let mut x = x0;
             while x <= x1 {
                 let lanes_in = (x1 - x + 1).min(LANES as u32);
@@ -135,6 +147,73 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             draw_stepped::<12, WIDE>(&mut gathered, mode, sampler, &mut lookups, target);
         }
         lookups.flush(Some(sampler), target);
+    }
+}
+
+/// The chunks of one span with the eight `f64` lanes in one AVX-512 register: the operations
+/// of [`stepped_chunk`], lane for lane, so the same values.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+#[target_feature(enable = "avx2,avx512f,avx512dq")]
+fn wide_span<const WIDE: bool>(
+    lanes: &[Stepped; LANES],
+    step: &Stepped,
+    (row, x0, x1): (usize, u32, u32),
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    lookups: &mut Lookups,
+    target: &mut Target<'_>,
+) {
+    let load = |f: fn(&Stepped) -> f64| {
+        _mm512_setr_pd(
+            f(&lanes[0]),
+            f(&lanes[1]),
+            f(&lanes[2]),
+            f(&lanes[3]),
+            f(&lanes[4]),
+            f(&lanes[5]),
+            f(&lanes[6]),
+            f(&lanes[7]),
+        )
+    };
+    let mut vals = [
+        load(|s| s.u),
+        load(|s| s.v),
+        load(|s| s.inv_w),
+        load(|s| s.depth),
+    ];
+    let n = LANES as f64;
+    let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm512_set1_pd(x));
+    let mut x = x0;
+    while x <= x1 {
+        let lanes_in = (x1 - x + 1).min(LANES as u32);
+        let valid = _mm512_cmp_pd_mask::<_CMP_GT_OQ>(vals[2], _mm512_setzero_pd())
+            & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(vals[2], _mm512_set1_pd(f64::INFINITY));
+        let ok = ((1i32 << lanes_in) - 1) & i32::from(valid);
+        if ok != 0 {
+            let (u, v) = match mode {
+                Interpolation::Perspective => {
+                    let w = _mm512_div_pd(_mm512_set1_pd(1.0), vals[2]);
+                    (_mm512_mul_pd(vals[0], w), _mm512_mul_pd(vals[1], w))
+                }
+                Interpolation::Affine => (vals[0], vals[1]),
+            };
+            let chunk = Pending {
+                u: _mm512_cvtpd_ps(u),
+                v: _mm512_cvtpd_ps(v),
+                depth: _mm512_cvtpd_ps(vals[3]),
+                valid: mask_from_bits(ok),
+                wire: 0,
+                halo: 0,
+                index: row + x as usize,
+                lanes: None,
+            };
+            lookups.push::<10, WIDE>(sampler, target, chunk, None);
+        }
+        for (q, s) in vals.iter_mut().zip(&step8) {
+            *q = _mm512_add_pd(*q, *s);
+        }
+        x += LANES as u32;
     }
 }
 
