@@ -24,6 +24,7 @@ mod scanline;
 mod shade;
 mod sparse;
 mod texture;
+mod wide;
 mod write;
 
 pub(super) use scanline::scanline_triangle;
@@ -366,6 +367,8 @@ fn block_rows<const WIDE: bool>(
     let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
     let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
     let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
+    // Row chunks in one AVX-512 register each (see `wide`).
+    let wide_rows = WIDE && wide::applies(consts, color, target);
     let mut by = y_start;
     while by <= y_end {
         let by_end = (by + BLOCK_ROWS - 1).min(y_end);
@@ -410,10 +413,27 @@ fn block_rows<const WIDE: bool>(
                     }
                     let py = f64::from(y) + 0.5;
                     let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
+                    let index = (y - target.y0) as usize * target.width as usize + bx as usize;
+                    if let Some(sampler) = sampler.filter(|_| WIDE && wide_rows) {
+                        // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
+                        unsafe {
+                            wide::texture_row::<WIDE>(
+                                consts,
+                                &row,
+                                f64::from(bx) + 0.5,
+                                covered,
+                                index,
+                                mode,
+                                sampler,
+                                lookups,
+                                target,
+                            )
+                        };
+                        continue;
+                    }
                     let px = _mm256_set1_pd(f64::from(bx) + 0.5);
                     let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
-                    let index = (y - target.y0) as usize * target.width as usize + bx as usize;
                     let at = Where::Row(index);
                     shade_chunk::<0, WIDE>(
                         [lo, hi],

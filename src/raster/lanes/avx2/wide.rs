@@ -1,0 +1,89 @@
+//! The edge-function row path with the eight `f64` lanes of a chunk in one AVX-512 register:
+//! the operations of `weights4` and `from_weights4!`, lane for lane, so the same values (tests
+//! compare every vector build with the full render, bit for bit). Used for texture shading
+//! without the wireframe or the heatmap's buffers, the common case; the rest takes the two
+//! halves of four lanes.
+
+use super::*;
+
+/// Whether [`texture_row`] can draw a triangle's row chunks: texture shading, no wireframe,
+/// no uv or difference buffers.
+#[inline]
+pub(super) fn applies(consts: &Constants, color: LaneColor, target: &Target<'_>) -> bool {
+    color == LaneColor::Texture
+        && consts.wire.is_none()
+        && consts.both_uv.is_none()
+        && target.uv.is_none()
+        && target.difference.is_none()
+}
+
+/// `sum_i w_i x_i`, left to right, as `dot3`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn dot3(w: &[__m512d; 3], x: [f64; 3]) -> __m512d {
+    let t = _mm512_add_pd(
+        _mm512_mul_pd(w[0], _mm512_set1_pd(x[0])),
+        _mm512_mul_pd(w[1], _mm512_set1_pd(x[1])),
+    );
+    _mm512_add_pd(t, _mm512_mul_pd(w[2], _mm512_set1_pd(x[2])))
+}
+
+/// Interpolates the `covered` pixels of the row chunk of eight pixels from window x `px`
+/// (pixel centres) with row terms `row`, and hands them to the texture lookups, which write
+/// them. [`applies`] must hold.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+#[target_feature(enable = "avx2,avx512f,avx512dq")]
+pub(super) fn texture_row<const WIDE: bool>(
+    consts: &Constants,
+    row: &[f64; 3],
+    px: f64,
+    covered: i32,
+    index: usize,
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    lookups: &mut Lookups,
+    target: &mut Target<'_>,
+) {
+    let w = &consts.weights;
+    let x = _mm512_add_pd(
+        _mm512_set1_pd(px),
+        _mm512_setr_pd(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0),
+    );
+    // `weights4`: `(row - d_y (x - S_x)) * (1 / area2)`.
+    let l = [0, 1, 2].map(|i| {
+        let dx = _mm512_sub_pd(x, _mm512_set1_pd(w.start[i].x));
+        let t = _mm512_sub_pd(
+            _mm512_set1_pd(row[i]),
+            _mm512_mul_pd(_mm512_set1_pd(w.dir[i].y), dx),
+        );
+        _mm512_mul_pd(t, _mm512_set1_pd(w.inv_area2))
+    });
+    // `from_weights4!`: q_i = l_i / w_i, valid where their sum is positive and finite.
+    let q = [0, 1, 2].map(|i| _mm512_mul_pd(l[i], _mm512_set1_pd(consts.inv_w[i])));
+    let sum = _mm512_add_pd(_mm512_add_pd(q[0], q[1]), q[2]);
+    let valid = _mm512_cmp_pd_mask::<_CMP_GT_OQ>(sum, _mm512_setzero_pd())
+        & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(sum, _mm512_set1_pd(f64::INFINITY));
+    let ok = covered & i32::from(valid);
+    if ok == 0 {
+        return;
+    }
+    let weights = match mode {
+        Interpolation::Perspective => {
+            let inv = _mm512_div_pd(_mm512_set1_pd(1.0), sum);
+            [0, 1, 2].map(|i| _mm512_mul_pd(q[i], inv))
+        }
+        Interpolation::Affine => l,
+    };
+    let chunk = Pending {
+        u: _mm512_cvtpd_ps(dot3(&weights, consts.u)),
+        v: _mm512_cvtpd_ps(dot3(&weights, consts.v)),
+        depth: _mm512_cvtpd_ps(dot3(&l, consts.depth)),
+        valid: mask_from_bits(ok),
+        wire: 0,
+        halo: 0,
+        index,
+        lanes: None,
+    };
+    lookups.push::<4, WIDE>(sampler, target, chunk, None);
+}
