@@ -417,18 +417,18 @@ fn block_rows<const WIDE: bool>(
                     if let Some(sampler) = sampler.filter(|_| WIDE && wide_rows) {
                         // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
                         unsafe {
-                            wide::texture_row::<WIDE>(
+                            let l = wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5);
+                            wide::texture_chunk::<4, WIDE>(
+                                l,
                                 consts,
-                                &row,
-                                f64::from(bx) + 0.5,
                                 covered,
-                                index,
+                                Where::Row(index),
                                 mode,
                                 sampler,
                                 lookups,
                                 target,
-                            )
-                        };
+                            );
+                        }
                         continue;
                     }
                     let px = _mm256_set1_pd(f64::from(bx) + 0.5);
@@ -538,7 +538,8 @@ impl Where {
     }
 }
 
-/// Interpolates, shades and writes the next (up to) eight gathered pixels.
+/// Interpolates, shades and writes the next (up to) eight gathered pixels. (The AVX-512
+/// chunk of `wide` was measured slower here, on the dense meshes: more code, no gain.)
 #[inline]
 #[target_feature(enable = "avx2")]
 fn draw_gathered<const SITE: u8, const WIDE: bool>(

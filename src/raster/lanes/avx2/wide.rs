@@ -1,12 +1,13 @@
-//! The edge-function row path with the eight `f64` lanes of a chunk in one AVX-512 register:
+//! The edge-function lanes with the eight `f64` lanes of a chunk in one AVX-512 register:
 //! the operations of `weights4` and `from_weights4!`, lane for lane, so the same values (tests
 //! compare every vector build with the full render, bit for bit). Used for texture shading
-//! without the wireframe or the heatmap's buffers, the common case; the rest takes the two
-//! halves of four lanes.
+//! without the wireframe or the heatmap's buffers, the common case, for row chunks
+//! (gathered chunks keep the halves: measured slower on the dense meshes, more code for no
+//! gain); the rest takes the two halves of four lanes.
 
 use super::*;
 
-/// Whether [`texture_row`] can draw a triangle's row chunks: texture shading, no wireframe,
+/// Whether [`texture_chunk`] can draw a triangle's row chunks: texture shading, no wireframe,
 /// no uv or difference buffers.
 #[inline]
 pub(super) fn applies(consts: &Constants, color: LaneColor, target: &Target<'_>) -> bool {
@@ -28,38 +29,43 @@ fn dot3(w: &[__m512d; 3], x: [f64; 3]) -> __m512d {
     _mm512_add_pd(t, _mm512_mul_pd(w[2], _mm512_set1_pd(x[2])))
 }
 
-/// Interpolates the `covered` pixels of the row chunk of eight pixels from window x `px`
-/// (pixel centres) with row terms `row`, and hands them to the texture lookups, which write
-/// them. [`applies`] must hold.
-#[allow(clippy::too_many_arguments)]
+/// The screen weights of the row chunk of eight pixels from window x `px` (pixel centres),
+/// from the row terms `row`: `weights4`'s operations.
 #[inline]
-#[target_feature(enable = "avx2,avx512f,avx512dq")]
-pub(super) fn texture_row<const WIDE: bool>(
-    consts: &Constants,
-    row: &[f64; 3],
-    px: f64,
-    covered: i32,
-    index: usize,
-    mode: Interpolation,
-    sampler: &VecSampler<'_>,
-    lookups: &mut Lookups,
-    target: &mut Target<'_>,
-) {
-    let w = &consts.weights;
+#[target_feature(enable = "avx512f")]
+pub(super) fn row_weights(w: &WeightPlanes, row: &[f64; 3], px: f64) -> [__m512d; 3] {
     let x = _mm512_add_pd(
         _mm512_set1_pd(px),
         _mm512_setr_pd(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0),
     );
-    // `weights4`: `(row - d_y (x - S_x)) * (1 / area2)`.
-    let l = [0, 1, 2].map(|i| {
+    // `(row - d_y (x - S_x)) * (1 / area2)`.
+    [0, 1, 2].map(|i| {
         let dx = _mm512_sub_pd(x, _mm512_set1_pd(w.start[i].x));
         let t = _mm512_sub_pd(
             _mm512_set1_pd(row[i]),
             _mm512_mul_pd(_mm512_set1_pd(w.dir[i].y), dx),
         );
         _mm512_mul_pd(t, _mm512_set1_pd(w.inv_area2))
-    });
-    // `from_weights4!`: q_i = l_i / w_i, valid where their sum is positive and finite.
+    })
+}
+
+/// Interpolates the `covered` ones of eight pixels from their screen weights `l` and hands
+/// them to the texture lookups, which write them: `from_weights4!`'s operations. [`applies`]
+/// must hold.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+#[target_feature(enable = "avx2,avx512f,avx512dq")]
+pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
+    l: [__m512d; 3],
+    consts: &Constants,
+    covered: i32,
+    at: Where,
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    lookups: &mut Lookups,
+    target: &mut Target<'_>,
+) {
+    // q_i = l_i / w_i, valid where their sum is positive and finite.
     let q = [0, 1, 2].map(|i| _mm512_mul_pd(l[i], _mm512_set1_pd(consts.inv_w[i])));
     let sum = _mm512_add_pd(_mm512_add_pd(q[0], q[1]), q[2]);
     let valid = _mm512_cmp_pd_mask::<_CMP_GT_OQ>(sum, _mm512_setzero_pd())
@@ -75,6 +81,7 @@ pub(super) fn texture_row<const WIDE: bool>(
         }
         Interpolation::Affine => l,
     };
+    let (index, lanes) = at.parts();
     let chunk = Pending {
         u: _mm512_cvtpd_ps(dot3(&weights, consts.u)),
         v: _mm512_cvtpd_ps(dot3(&weights, consts.v)),
@@ -83,7 +90,7 @@ pub(super) fn texture_row<const WIDE: bool>(
         wire: 0,
         halo: 0,
         index,
-        lanes: None,
+        lanes,
     };
-    lookups.push::<4, WIDE>(sampler, target, chunk, None);
+    lookups.push::<SITE, WIDE>(sampler, target, chunk, None);
 }
