@@ -2,7 +2,8 @@
 //! `raster::lanes`) against the per-pixel renderer with every buffer (`render`):
 //! - edge functions: colour and depth bit for bit, with the AVX2 intrinsics and with the
 //!   portable lanes, for every filter, wrap, mode and shading;
-//! - scanline: identical coverage, colours equal up to rounding.
+//! - scanline: identical coverage, colours equal up to rounding, every shading; every vector
+//!   build of the scanline lanes bit for bit as the portable one.
 
 mod common;
 
@@ -197,12 +198,17 @@ fn edge_fast_path_is_bit_identical_on_every_sample_scene() {
                         assert_edge_identical(&mesh, &tex, &s, &what);
                     }
                 }
-                let s = RenderSettings {
-                    mode,
-                    filter,
-                    ..scene.settings()
-                };
-                assert_scanline_close(&mesh, &tex, &s, &path.display().to_string());
+                // The scanline lanes draw every shading but the wireframe.
+                for shading in Shading::ALL {
+                    let s = RenderSettings {
+                        mode,
+                        filter,
+                        shading,
+                        ..scene.settings()
+                    };
+                    let what = format!("{} {mode:?} {filter:?} {shading:?}", path.display());
+                    assert_scanline_close(&mesh, &tex, &s, &what);
+                }
             }
         }
         n += 1;

@@ -351,9 +351,9 @@ pub(super) fn draw_lanes(
 }
 
 /// Whether the scanline lanes draw with this shading into a band without uv or per-pixel
-/// buffers (texture shading without the wireframe; the rest goes per pixel).
+/// buffers (every colour without the wireframe; the wireframe goes per pixel).
 pub(super) fn scanline_lanes_apply(shading: &LaneShading) -> bool {
-    !shading.wireframe && shading.color == lanes::LaneColor::Texture
+    !shading.wireframe
 }
 
 /// Draws the rows of a lane triangle (made for the shading of `lanes`, without uv) that fall

@@ -94,15 +94,15 @@ impl<'t> Lanes<'t> {
         }
     }
 
-    /// Draws rows `rows` of `tri`, made for this shading (texture shading without the
-    /// wireframe), with the scanline lanes (see [`scanline_triangle`]).
+    /// Draws rows `rows` of `tri`, made for this shading (without the wireframe), with the
+    /// scanline lanes (see [`scanline_triangle`]).
     pub fn scanline_triangle(&self, tri: &LaneTriangle, rows: (u32, u32), target: &mut Target<'_>) {
         let (texture, shading) = (self.texture, self.shading);
         match (self.build, &self.sampler) {
             #[cfg(target_arch = "x86_64")]
             // SAFETY: the CPU supports AVX2 (`vector_path` chose this build).
-            (Build::Avx2, Some(sampler)) => unsafe {
-                avx2::scanline_triangle(tri, rows, sampler, self.wide, shading.mode, target)
+            (Build::Avx2, sampler) if sampler.is_some() || shading.color != LaneColor::Texture => unsafe {
+                avx2::scanline_triangle(tri, rows, sampler.as_ref(), self.wide, &shading, target)
             },
             #[cfg(target_arch = "x86_64")]
             // SAFETY: as above.

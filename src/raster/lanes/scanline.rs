@@ -3,7 +3,7 @@
 use super::*;
 
 /// The scanline rasterizer's lane path for rows `rows` (within the target band); `tri` made
-/// for this `shading` (texture, no wireframe), without the uv buffers.
+/// for this `shading` (any colour, no wireframe), without the uv buffers.
 pub fn scanline_triangle(
     tri: &LaneTriangle,
     rows: (u32, u32),
@@ -26,14 +26,16 @@ pub(super) fn scanline_triangle_avx2(
     scanline_triangle_impl(tri, rows, texture, shading, target);
 }
 
-/// What the scanline lanes step: `u`, `v` (divided by w when perspective-correct), `1/w`
-/// and depth, each linear along a row.
+/// What the scanline lanes step: `u`, `v` and the shading's channels (divided by w when
+/// perspective-correct), `1/w` and depth, each linear along a row.
 #[derive(Clone, Copy, Default)]
 pub(super) struct Stepped {
     pub(super) u: f64,
     pub(super) v: f64,
     pub(super) inv_w: f64,
     pub(super) depth: f64,
+    /// The first [`Constants::used_channels`] channels (vertex colour, normal, weights).
+    pub(super) ch: [f64; CHANNELS],
 }
 
 impl Stepped {
@@ -50,6 +52,9 @@ impl Stepped {
             s.v += scale * c.v[k];
             s.inv_w += l[k] * c.inv_w[k];
             s.depth += l[k] * c.depth[k];
+            for j in 0..c.used_channels {
+                s.ch[j] += scale * c.channels[j][k];
+            }
         }
         s
     }
@@ -82,6 +87,7 @@ impl Stepped {
             v: self.v + step.v,
             inv_w: self.inv_w + step.inv_w,
             depth: self.depth + step.depth,
+            ch: [0, 1, 2, 3, 4, 5].map(|j| self.ch[j] + step.ch[j]),
         }
     }
 }
@@ -96,8 +102,9 @@ pub(super) fn scanline_triangle_impl(
 ) {
     // The scanline lanes draw no wireframe (the caller sends that case to the per-pixel
     // scanline code).
-    let mode = shading.mode;
+    let (mode, color) = (shading.mode, shading.color);
     let consts = &tri.consts;
+    let used = consts.used_channels;
     let sampler = Sampler::new(texture, shading.filter, shading.wrap);
     let step = Stepped::row_step(consts, mode);
     let mut colors = [[0u8; 4]; LANES];
@@ -110,6 +117,7 @@ pub(super) fn scanline_triangle_impl(
         let mut lanes = Stepped::lanes(start, &step);
         let n = LANES as f64;
         let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
+        let sch = step.ch.map(|x| x * n);
         let mut x = x0;
         while x <= x1 {
             let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
@@ -120,21 +128,36 @@ pub(super) fn scanline_triangle_impl(
                 let (u, v) = match mode {
                     Interpolation::Perspective => {
                         let w = 1.0 / l.inv_w;
+                        for j in 0..used {
+                            s.channels[j][k] = (l.ch[j] * w) as f32;
+                        }
                         (l.u * w, l.v * w)
                     }
-                    Interpolation::Affine => (l.u, l.v),
+                    Interpolation::Affine => {
+                        for j in 0..used {
+                            s.channels[j][k] = l.ch[j] as f32;
+                        }
+                        (l.u, l.v)
+                    }
                 };
                 s.u[k] = u as f32;
                 s.v[k] = v as f32;
+                s.depth64[k] = l.depth;
                 s.depth[k] = l.depth as f32;
             }
-            sampler.sample(&s.u, &s.v, &mut colors);
+            match color {
+                LaneColor::Texture => sampler.sample(&s.u, &s.v, &mut colors),
+                _ => channel_colors(&s, color, &mut colors),
+            }
             write(target, x, y, &s, &colors);
             for l in lanes.iter_mut() {
                 l.u += su;
                 l.v += sv;
                 l.inv_w += sw;
                 l.depth += sd;
+                for j in 0..used {
+                    l.ch[j] += sch[j];
+                }
             }
             x += LANES as u32;
         }

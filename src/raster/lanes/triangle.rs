@@ -38,7 +38,8 @@ pub(super) struct Constants {
     /// `channels[c][k]`: channel `c` of vertex `k`: the vertex colour, the source weights or
     /// the normal in 0..3, and the normal in 3..6 for Lambert shading.
     pub(super) channels: [[f64; 3]; CHANNELS],
-    /// How many of `channels` the shading reads (3, or 6 for Lambert).
+    /// How many of `channels` the shading reads (none for texture and depth, 6 for Lambert,
+    /// else 3).
     pub(super) used_channels: usize,
     pub(super) wire: Option<Wire>,
 }
@@ -193,11 +194,13 @@ impl Constants {
             LaneColor::Texture | LaneColor::Depth(..) => [[0.0; 3]; 3],
         };
         put(&mut self.channels, 0, first);
-        self.used_channels = if color == LaneColor::Lambert {
-            put(&mut self.channels, 3, of(Attribute::Normal));
-            CHANNELS
-        } else {
-            3
+        self.used_channels = match color {
+            LaneColor::Lambert => {
+                put(&mut self.channels, 3, of(Attribute::Normal));
+                CHANNELS
+            }
+            LaneColor::Texture | LaneColor::Depth(..) => 0,
+            _ => 3,
         };
     }
 

@@ -8,16 +8,16 @@ use super::*;
 pub(in crate::raster::lanes) fn scanline_triangle(
     tri: &LaneTriangle,
     rows: (u32, u32),
-    sampler: &VecSampler<'_>,
+    sampler: Option<&VecSampler<'_>>,
     wide: bool,
-    mode: Interpolation,
+    shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
     if wide {
         // SAFETY: `wide` is set only when the CPU has these features (`wide_path`).
-        unsafe { scanline_triangle_512(tri, rows, sampler, mode, target) }
+        unsafe { scanline_triangle_512(tri, rows, sampler, shading, target) }
     } else {
-        scanline_triangle_256(tri, rows, sampler, mode, target)
+        scanline_triangle_256(tri, rows, sampler, shading, target)
     }
 }
 
@@ -25,24 +25,24 @@ pub(in crate::raster::lanes) fn scanline_triangle(
 fn scanline_triangle_512(
     tri: &LaneTriangle,
     rows: (u32, u32),
-    sampler: &VecSampler<'_>,
-    mode: Interpolation,
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
     // SAFETY: this function's features.
-    unsafe { scanline_triangle_body::<true>(tri, rows, sampler, mode, target) }
+    unsafe { scanline_triangle_body::<true>(tri, rows, sampler, shading, target) }
 }
 
 #[target_feature(enable = "avx2")]
 fn scanline_triangle_256(
     tri: &LaneTriangle,
     rows: (u32, u32),
-    sampler: &VecSampler<'_>,
-    mode: Interpolation,
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
     // SAFETY: this function's features.
-    unsafe { scanline_triangle_body::<false>(tri, rows, sampler, mode, target) }
+    unsafe { scanline_triangle_body::<false>(tri, rows, sampler, shading, target) }
 }
 
 /// The body of both entries, inlined into each (so compiled for each one's instruction set).
@@ -53,15 +53,31 @@ fn scanline_triangle_256(
 unsafe fn scanline_triangle_body<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
-    sampler: &VecSampler<'_>,
-    mode: Interpolation,
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
     // SAFETY: as the function's.
     unsafe {
-        let mut lookups = Lookups::new(Some(sampler), WIDE);
+        let (mode, color) = (shading.mode, shading.color);
         let consts = &tri.consts;
         let step = Stepped::row_step(consts, mode);
+        let sampler = match sampler {
+            Some(s) if color == LaneColor::Texture => s,
+            // Texture shading always has a sampler here (see `Lanes::scanline_triangle`).
+            _ if color == LaneColor::Texture => return,
+            _ => {
+                for y in y_start..=y_end {
+                    if let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) {
+                        let start = Stepped::span_start(consts, mode, x0, y);
+                        let row = (y - target.y0) as usize * target.width as usize;
+                        colour_span::<WIDE>(&start, &step, (row, x0, x1), consts, shading, target);
+                    }
+                }
+                return;
+            }
+        };
+        let mut lookups = Lookups::new(Some(sampler), WIDE);
         let n = LANES as f64;
         let step8 =
             [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
@@ -147,6 +163,107 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             draw_stepped::<12, WIDE>(&mut gathered, mode, sampler, &mut lookups, target);
         }
         lookups.flush(Some(sampler), target);
+    }
+}
+
+/// The chunks of one span with a non-texture colour (vertex colour, weights, depth, normal,
+/// Lambert): the channels are stepped like uv (divided by w when perspective-correct, then
+/// multiplied by `1 / (1/w)`), as the portable scanline lanes do.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn colour_span<const WIDE: bool>(
+    start: &Stepped,
+    step: &Stepped,
+    (row, x0, x1): (usize, u32, u32),
+    consts: &Constants,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    let used = consts.used_channels;
+    // Lane k is the span's start after k single steps, as `Stepped::lanes` makes it (only
+    // the values this colour reads; a span of at most four pixels fills only the low half).
+    let short = x1 - x0 < 4;
+    let load = |s: f64, d: f64| {
+        let mut a = [s; LANES];
+        for k in 1..if short { 4 } else { LANES } {
+            a[k] = a[k - 1] + d;
+        }
+        [
+            _mm256_setr_pd(a[0], a[1], a[2], a[3]),
+            _mm256_setr_pd(a[4], a[5], a[6], a[7]),
+        ]
+    };
+    let n = LANES as f64;
+    let mut inv_w = load(start.inv_w, step.inv_w);
+    let mut depth = load(start.depth, step.depth);
+    let mut ch = [[_mm256_setzero_pd(); CHANNELS]; 2];
+    for j in 0..used {
+        let [lo, hi] = load(start.ch[j], step.ch[j]);
+        (ch[0][j], ch[1][j]) = (lo, hi);
+    }
+    let (inv_w8, depth8) = (
+        _mm256_set1_pd(step.inv_w * n),
+        _mm256_set1_pd(step.depth * n),
+    );
+    let ch8 = step.ch.map(|x| _mm256_set1_pd(x * n));
+    let mut x = x0;
+    while x <= x1 {
+        let lanes_in = (x1 - x + 1).min(LANES as u32);
+        let mut ok = (1i32 << lanes_in) - 1;
+        let mut four = [0, 1].map(|h| {
+            let valid = _mm256_and_pd(
+                _mm256_cmp_pd::<_CMP_GT_OQ>(inv_w[h], _mm256_setzero_pd()),
+                _mm256_cmp_pd::<_CMP_LT_OQ>(inv_w[h], _mm256_set1_pd(f64::INFINITY)),
+            );
+            ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
+            Four {
+                u: _mm256_setzero_pd(),
+                v: _mm256_setzero_pd(),
+                depth: depth[h],
+                ok: 0,
+                wire: 0,
+                halo: 0,
+                channels: [_mm256_setzero_pd(); CHANNELS],
+                both_uv: None,
+            }
+        });
+        if ok != 0 {
+            for (h, f) in four.iter_mut().enumerate() {
+                let w = match shading.mode {
+                    Interpolation::Perspective => {
+                        Some(_mm256_div_pd(_mm256_set1_pd(1.0), inv_w[h]))
+                    }
+                    Interpolation::Affine => None,
+                };
+                for j in 0..used {
+                    f.channels[j] = match w {
+                        Some(w) => _mm256_mul_pd(ch[h][j], w),
+                        None => ch[h][j],
+                    };
+                }
+            }
+            let rgba = channel_colors::<13, WIDE>(&four[0], &four[1], shading.color);
+            let chunk = Pending {
+                u: _mm256_setzero_ps(),
+                v: _mm256_setzero_ps(),
+                depth: to_f32(depth[0], depth[1]),
+                valid: mask_from_bits(ok),
+                wire: 0,
+                halo: 0,
+                index: row + x as usize,
+                lanes: None,
+            };
+            // SAFETY: this module runs with AVX2.
+            unsafe { finish(target, &chunk, rgba, None) };
+        }
+        for h in 0..2 {
+            inv_w[h] = _mm256_add_pd(inv_w[h], inv_w8);
+            depth[h] = _mm256_add_pd(depth[h], depth8);
+            for j in 0..used {
+                ch[h][j] = _mm256_add_pd(ch[h][j], ch8[j]);
+            }
+        }
+        x += LANES as u32;
     }
 }
 
