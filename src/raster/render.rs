@@ -289,8 +289,8 @@ pub fn rasterize_bands(
 
 /// What the lanes can draw of these shading parameters (colour and depth only): every shading
 /// but trilinear texture lookups in the edge-function lanes (trilinear goes per pixel, after
-/// block rejection); the scanline lanes draw texture shading without wireframe, the rest goes
-/// per pixel.
+/// block rejection); the scanline lanes draw the same without the wireframe, which goes per
+/// pixel.
 pub(super) fn lane_shading(params: &ShadeParams) -> Option<LaneShading> {
     let color = match params.shading {
         Shading::Texture => matches!(params.filter, Filter::Nearest | Filter::Bilinear)

@@ -368,7 +368,7 @@ fn block_rows<const WIDE: bool>(
     let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
     let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
     // Row chunks in one AVX-512 register each (see `wide`).
-    let wide_rows = WIDE && wide::applies(consts, color, target);
+    let wide_rows = WIDE && wide::applies(consts, color, sampler, target);
     let mut by = y_start;
     while by <= y_end {
         let by_end = (by + BLOCK_ROWS - 1).min(y_end);
@@ -414,7 +414,7 @@ fn block_rows<const WIDE: bool>(
                     let py = f64::from(y) + 0.5;
                     let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
-                    if let Some(sampler) = sampler.filter(|_| WIDE && wide_rows) {
+                    if WIDE && wide_rows {
                         // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
                         unsafe {
                             let l = wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5);

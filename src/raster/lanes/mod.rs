@@ -3,8 +3,8 @@
 //! Both rasterizers have a lane form here, used when a render asks for colour and depth only
 //! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
 //! nearest or bilinear filtering, vertex colour, barycentric, depth, normal and Lambert shading, and the
-//! wireframe overlay; the scanline lanes draw texture shading without the wireframe. Other
-//! cases (trilinear filtering, the scanline rasterizer's other shadings) go through
+//! wireframe overlay; the scanline lanes draw the same shadings without the wireframe. Other
+//! cases (trilinear filtering, the scanline rasterizer's wireframe) go through
 //! [`render`](mod@super::render)'s per-pixel code (after the block rejection of the
 //! edge-function path).
 //!
@@ -23,17 +23,19 @@
 //!   several rows into chunks of eight (`avx2/sparse.rs`): each lane does the same operations
 //!   at its own pixel centre.
 //! - **Scanline** ([`scanline_triangle`]): exact integer spans per row
-//!   ([`row_span`](super::scanline::row_span)); along a span `u/w`, `v/w`, `1/w` and the depth are stepped by their
-//!   per-pixel increments (eight lanes advance by eight increments), and the
-//!   perspective-correct uv is `(u/w) * (1 / (1/w))`, one division per pixel. Coverage is
+//!   ([`row_span`](super::scanline::row_span)); along a span `u/w`, `v/w`, `1/w`, the depth
+//!   and the shading's channels (`c/w`) are stepped by their per-pixel increments (eight lanes
+//!   advance by eight increments), and the perspective-correct uv is `(u/w) * (1 / (1/w))`,
+//!   one division per pixel. Coverage is
 //!   identical to the edge-function path; values agree up to floating-point rounding. Spans of
 //!   at most four pixels are gathered into chunks of eight in the AVX2 build, with the values
 //!   the row's lanes would hold.
 //!
 //! Three builds of the same arithmetic, chosen at run time ([`VectorLevel`]) once per band of
 //! triangles ([`Lanes`]): AVX2 intrinsics
-//! (`avx2.rs`), with bilinear texture lookups of two chunks (sixteen pixels) at once in
-//! AVX-512 when the CPU has it (`avx512.rs`), and portable lane code (plain arrays,
+//! (`avx2.rs`), compiled a second time for AVX-512 when the CPU has it (32 registers, mask
+//! registers; row chunks of texture shading in one 512-bit register, `avx2/wide.rs`; bilinear
+//! texture lookups of two chunks, sixteen pixels, at once, `avx512.rs`), and portable lane code (plain arrays,
 //! compiled with AVX2 enabled where available). No fused multiply-add is used anywhere, so
 //! every build rounds identically; `tests/fast_path.rs` compares them all with the full
 //! render.

@@ -1,21 +1,33 @@
 //! The edge-function lanes with the eight `f64` lanes of a chunk in one AVX-512 register:
 //! the operations of `weights4` and `from_weights4!`, lane for lane, so the same values (tests
 //! compare every vector build with the full render, bit for bit). Used for texture shading
-//! without the wireframe or the heatmap's buffers, the common case, for row chunks
+//! without the wireframe or extra buffers, the common case, and for the difference view's
+//! buffers, for row chunks
 //! (gathered chunks keep the halves: measured slower on the dense meshes, more code for no
 //! gain); the rest takes the two halves of four lanes.
 
 use super::*;
 
-/// Whether [`texture_chunk`] can draw a triangle's row chunks: texture shading, no wireframe,
-/// no uv or difference buffers.
+/// Whether [`texture_chunk`] can draw a triangle's row chunks: texture shading without the
+/// wireframe or any extra buffer, or the difference view's buffers (which shade nothing, so
+/// neither colour nor wireframe matters there).
 #[inline]
-pub(super) fn applies(consts: &Constants, color: LaneColor, target: &Target<'_>) -> bool {
-    color == LaneColor::Texture
-        && consts.wire.is_none()
-        && consts.both_uv.is_none()
-        && target.uv.is_none()
-        && target.difference.is_none()
+pub(super) fn applies(
+    consts: &Constants,
+    color: LaneColor,
+    sampler: Option<&VecSampler<'_>>,
+    target: &Target<'_>,
+) -> bool {
+    target.uv.is_none()
+        && match target.difference {
+            Some(_) => consts.both_uv.is_some(),
+            None => {
+                color == LaneColor::Texture
+                    && sampler.is_some()
+                    && consts.wire.is_none()
+                    && consts.both_uv.is_none()
+            }
+        }
 }
 
 /// `sum_i w_i x_i`, left to right, as `dot3`.
@@ -61,7 +73,7 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
     covered: i32,
     at: Where,
     mode: Interpolation,
-    sampler: &VecSampler<'_>,
+    sampler: Option<&VecSampler<'_>>,
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
@@ -74,18 +86,47 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
     if ok == 0 {
         return;
     }
+    let (index, lanes) = at.parts();
+    let depth = _mm512_cvtpd_ps(dot3(&l, consts.depth));
+    let p = || {
+        let inv = _mm512_div_pd(_mm512_set1_pd(1.0), sum);
+        [0, 1, 2].map(|i| _mm512_mul_pd(q[i], inv))
+    };
+    if let (Some(b), Some(_)) = (&consts.both_uv, &target.difference) {
+        // The difference view: both uvs, nothing shaded (see `DifferenceTarget`).
+        let p = p();
+        let both = [
+            dot3(&l, b[0]),
+            dot3(&l, b[1]),
+            dot3(&p, b[2]),
+            dot3(&p, b[3]),
+        ]
+        .map(|x| _mm512_cvtpd_ps(x));
+        let chunk = Pending {
+            u: _mm256_setzero_ps(),
+            v: _mm256_setzero_ps(),
+            depth,
+            valid: mask_from_bits(ok),
+            wire: 0,
+            halo: 0,
+            index,
+            lanes,
+        };
+        // SAFETY: this module runs with AVX2.
+        unsafe { finish(target, &chunk, _mm256_setzero_si256(), Some(&both)) };
+        return;
+    }
+    let Some(sampler) = sampler else {
+        return;
+    };
     let weights = match mode {
-        Interpolation::Perspective => {
-            let inv = _mm512_div_pd(_mm512_set1_pd(1.0), sum);
-            [0, 1, 2].map(|i| _mm512_mul_pd(q[i], inv))
-        }
+        Interpolation::Perspective => p(),
         Interpolation::Affine => l,
     };
-    let (index, lanes) = at.parts();
     let chunk = Pending {
         u: _mm512_cvtpd_ps(dot3(&weights, consts.u)),
         v: _mm512_cvtpd_ps(dot3(&weights, consts.v)),
-        depth: _mm512_cvtpd_ps(dot3(&l, consts.depth)),
+        depth,
         valid: mask_from_bits(ok),
         wire: 0,
         halo: 0,
