@@ -59,6 +59,26 @@ fn heat_index(d: f32, scale_max: f32) -> usize {
     i as usize
 }
 
+/// [`heat_index`] of each difference in `d` into `steps` ([`NOT_DRAWN`] for a NaN: no triangle
+/// there), written without branches so that the compiler vectorizes it (a frame of the
+/// difference view runs it for every pixel).
+// `clamp` would keep a NaN, whose truncation below is undefined: `max` then `min` on purpose.
+#[allow(clippy::manual_clamp)]
+#[inline(always)]
+fn heat_steps(d: &[f32], scale_max: f32, steps: &mut [u32]) {
+    // `heat_index`, with the scale's test taken out of the loop: `max` and `min` give the
+    // same clamp for every number, and the NaN is told apart by the select below.
+    let scale = if scale_max > 0.0 { scale_max } else { f32::INFINITY };
+    let last = (HEAT_STEPS - 1) as f32;
+    for (s, &d) in steps.iter_mut().zip(d) {
+        let t = (d / scale).max(0.0).min(1.0);
+        // SAFETY: `t` is in [0, 1] (`max` returns 0 for a NaN), so the value is within
+        // [0.5, 1023.5] and its truncation is representable as an i32.
+        let i = unsafe { (t * last + 0.5).to_int_unchecked::<i32>() } as u32;
+        *s = if d.is_nan() { NOT_DRAWN } else { i };
+    }
+}
+
 /// The colour scale's [`HEAT_STEPS`] colours, computed once.
 fn heat_table() -> &'static [[u8; 4]] {
     static TABLE: std::sync::OnceLock<Vec<[u8; 4]>> = std::sync::OnceLock::new();
@@ -253,13 +273,7 @@ fn from_differences(frame: &Framebuffer, out: &mut Heatmap) {
             const RUN: usize = 64;
             let mut step = [0u32; RUN];
             for ((o, c), d) in o.chunks_mut(RUN).zip(c.chunks(RUN)).zip(d.chunks(RUN)) {
-                for (s, &d) in step.iter_mut().zip(d) {
-                    *s = if d.is_nan() {
-                        NOT_DRAWN
-                    } else {
-                        heat_index(d, scale_max) as u32
-                    };
-                }
+                heat_steps(d, scale_max, &mut step);
                 for ((o, c), &s) in o.iter_mut().zip(c).zip(&step) {
                     *o = match s {
                         NOT_DRAWN => dim(*c),
