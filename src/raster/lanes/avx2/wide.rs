@@ -87,7 +87,16 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
         return;
     }
     let (index, lanes) = at.parts();
-    let depth = _mm512_cvtpd_ps(dot3(&l, consts.depth));
+    let mut chunk = Pending {
+        u: _mm256_setzero_ps(),
+        v: _mm256_setzero_ps(),
+        depth: _mm512_cvtpd_ps(dot3(&l, consts.depth)),
+        valid: mask_from_bits(ok),
+        wire: 0,
+        halo: 0,
+        index,
+        lanes,
+    };
     let p = || {
         let inv = _mm512_div_pd(_mm512_set1_pd(1.0), sum);
         [0, 1, 2].map(|i| _mm512_mul_pd(q[i], inv))
@@ -102,16 +111,6 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
             dot3(&p, b[3]),
         ]
         .map(|x| _mm512_cvtpd_ps(x));
-        let chunk = Pending {
-            u: _mm256_setzero_ps(),
-            v: _mm256_setzero_ps(),
-            depth,
-            valid: mask_from_bits(ok),
-            wire: 0,
-            halo: 0,
-            index,
-            lanes,
-        };
         // SAFETY: this module runs with AVX2.
         unsafe { finish(target, &chunk, _mm256_setzero_si256(), Some(&both)) };
         return;
@@ -123,15 +122,7 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
         Interpolation::Perspective => p(),
         Interpolation::Affine => l,
     };
-    let chunk = Pending {
-        u: _mm512_cvtpd_ps(dot3(&weights, consts.u)),
-        v: _mm512_cvtpd_ps(dot3(&weights, consts.v)),
-        depth,
-        valid: mask_from_bits(ok),
-        wire: 0,
-        halo: 0,
-        index,
-        lanes,
-    };
+    chunk.u = _mm512_cvtpd_ps(dot3(&weights, consts.u));
+    chunk.v = _mm512_cvtpd_ps(dot3(&weights, consts.v));
     lookups.push::<SITE, WIDE>(sampler, target, chunk, None);
 }
