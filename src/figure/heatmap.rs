@@ -68,7 +68,11 @@ fn heat_index(d: f32, scale_max: f32) -> usize {
 fn heat_steps(d: &[f32], scale_max: f32, steps: &mut [u32]) {
     // `heat_index`, with the scale's test taken out of the loop: `max` and `min` give the
     // same clamp for every number, and the NaN is told apart by the select below.
-    let scale = if scale_max > 0.0 { scale_max } else { f32::INFINITY };
+    let scale = if scale_max > 0.0 {
+        scale_max
+    } else {
+        f32::INFINITY
+    };
     let last = (HEAT_STEPS - 1) as f32;
     for (s, &d) in steps.iter_mut().zip(d) {
         let t = (d / scale).max(0.0).min(1.0);
