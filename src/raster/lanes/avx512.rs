@@ -44,15 +44,22 @@ fn wrap(i: __m512i, w: VecWrap) -> __m512i {
     }
 }
 
-/// Sixteen texels at wrapped indices (each within the texture, so every read is in bounds).
+/// The texel index `j * width + i` of each lane (a shift when the width is a power of two).
 #[inline]
 #[target_feature(enable = "avx512f")]
-fn gather(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> __m512i {
+fn texel_index(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> __m512i {
     let row = match s.width_shift {
         Some(k) => _mm512_sll_epi32(j, _mm_cvtsi32_si128(k)),
         None => _mm512_mullo_epi32(j, _mm512_set1_epi32(s.width)),
     };
-    let index = _mm512_add_epi32(row, i);
+    _mm512_add_epi32(row, i)
+}
+
+/// Sixteen texels at wrapped indices (each within the texture, so every read is in bounds).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn gather(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> __m512i {
+    let index = texel_index(s, i, j);
     // SAFETY: `wrap` put i in 0..width and j in 0..height, so every index is below
     // width * height = texels.len(); a texel is 4 bytes, read as one i32.
     unsafe { _mm512_i32gather_epi32::<4>(index, s.texels.as_ptr().cast::<i32>()) }
@@ -63,11 +70,7 @@ fn gather(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> __m512i {
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn gather_pairs(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> (__m512i, __m512i) {
-    let row = match s.width_shift {
-        Some(k) => _mm512_sll_epi32(j, _mm_cvtsi32_si128(k)),
-        None => _mm512_mullo_epi32(j, _mm512_set1_epi32(s.width)),
-    };
-    let index = _mm512_add_epi32(row, i);
+    let index = texel_index(s, i, j);
     // SAFETY: i + 1 and j are inside the texture, so both texels of every pair are in
     // `texels` (one row, side by side); the 8 bytes are read unaligned as one i64.
     let (lo, hi) = unsafe {

@@ -156,15 +156,22 @@ pub(in crate::raster::lanes) fn wrap(i: __m256i, w: VecWrap) -> __m256i {
     }
 }
 
-/// Eight texels at wrapped indices (each within the texture, so every read is in bounds).
+/// The texel index `j * width + i` of each lane (a shift when the width is a power of two).
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(in crate::raster::lanes) fn gather(s: &VecSampler<'_>, i: __m256i, j: __m256i) -> __m256i {
+fn texel_index(s: &VecSampler<'_>, i: __m256i, j: __m256i) -> __m256i {
     let row = match s.width_shift {
         Some(k) => _mm256_sll_epi32(j, _mm_cvtsi32_si128(k)),
         None => _mm256_mullo_epi32(j, _mm256_set1_epi32(s.width)),
     };
-    let index = _mm256_add_epi32(row, i);
+    _mm256_add_epi32(row, i)
+}
+
+/// Eight texels at wrapped indices (each within the texture, so every read is in bounds).
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(in crate::raster::lanes) fn gather(s: &VecSampler<'_>, i: __m256i, j: __m256i) -> __m256i {
+    let index = texel_index(s, i, j);
     debug_assert!(s.texels.len() <= i32::MAX as usize);
     // SAFETY: `wrap` put i in 0..width and j in 0..height, so every index is below
     // width * height = texels.len(); a texel is 4 bytes, read as one i32.
@@ -180,11 +187,7 @@ pub(in crate::raster::lanes) fn gather_pairs(
     i: __m256i,
     j: __m256i,
 ) -> (__m256i, __m256i) {
-    let row = match s.width_shift {
-        Some(k) => _mm256_sll_epi32(j, _mm_cvtsi32_si128(k)),
-        None => _mm256_mullo_epi32(j, _mm256_set1_epi32(s.width)),
-    };
-    let index = _mm256_add_epi32(row, i);
+    let index = texel_index(s, i, j);
     // SAFETY: i + 1 and j are inside the texture, so both texels of every pair are in
     // `texels` (one row, side by side); the 8 bytes are read unaligned as one i64.
     let (lo, hi) = unsafe {
