@@ -270,10 +270,12 @@ unsafe fn edge_triangle_body<const WIDE: bool>(
                 target,
             ),
         }
-        if let Some(g) = gathered.as_mut() {
-            while !g.is_empty() {
-                draw_gathered::<3, WIDE>(g, consts, mode, color, sampler, &mut lookups, target);
-            }
+        // At most seven pixels are left (a chunk is drawn whenever eight wait): one chunk.
+        if let Some(g) = gathered.as_mut()
+            && !g.is_empty()
+        {
+            draw_gathered::<3, WIDE>(g, consts, mode, color, sampler, &mut lookups, target);
+            debug_assert!(g.is_empty());
         }
         lookups.flush(sampler, target);
     }
@@ -429,7 +431,11 @@ fn narrow_rows<const WIDE: bool>(
         if covered != 0 {
             g.add(x0, y, covered);
             if g.full() {
-                draw_gathered::<1, WIDE>(g, &tri.consts, mode, color, sampler, lookups, target);
+                // Only triangles of more than eight pixels get here. An opaque reference keeps
+                // the compiler from loading and broadcasting every constant before the loop
+                // (and spilling them) for every triangle: about 250 instructions each.
+                let consts = std::hint::black_box(&tri.consts);
+                draw_gathered::<1, WIDE>(g, consts, mode, color, sampler, lookups, target);
             }
         }
         for i in 0..3 {
