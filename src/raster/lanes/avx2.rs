@@ -86,12 +86,15 @@ fn weights4(w: &WeightPlanes, row: &[f64; 3], px: __m256d) -> [__m256d; 3] {
 
 /// uv, depth (f64 lanes) and the validity bits of four samples from their screen weights, as
 /// `interpolate::fragment`.
+/// `uv`: whether the target may keep uvs (then [`Constants::both_uv`] is read; a constant
+/// `false` takes that code out).
 /// (A macro, not a function: it is expanded into each caller, so its vectors stay in
 /// registers; a call returns [`Four`] through memory. Use it in `unsafe`, AVX2 code.)
 macro_rules! from_weights4 {
-    ($l:expr, $c:expr, $mode:expr, $color:expr) => {{
+    ($l:expr, $c:expr, $mode:expr, $color:expr, $uv:expr) => {{
         let (l, c, mode, color): ([__m256d; 3], &Constants, Interpolation, LaneColor) =
             ($l, $c, $mode, $color);
+        let both_consts = if $uv { c.both_uv } else { None };
         let q = [
             _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
             _mm256_mul_pd(l[1], _mm256_set1_pd(c.inv_w[1])),
@@ -104,7 +107,7 @@ macro_rules! from_weights4 {
         );
         // The perspective weights, unless nothing reads them (affine, without the heatmap's
         // buffers): a division saved.
-        let p = if mode == Interpolation::Perspective || c.both_uv.is_some() {
+        let p = if mode == Interpolation::Perspective || both_consts.is_some() {
             let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
             [
                 _mm256_mul_pd(q[0], inv),
@@ -119,7 +122,7 @@ macro_rules! from_weights4 {
             Interpolation::Affine => l,
         };
         // uv both ways for the heatmap's buffers, as the lane code computes them.
-        let both_uv = c.both_uv.map(|b| {
+        let both_uv = both_consts.map(|b| {
             [
                 dot3(&l, b[0]),
                 dot3(&l, b[1]),
@@ -372,7 +375,7 @@ fn block_rows<const WIDE: bool>(
                     let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
                     let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
                     let at = Where::Row(index);
-                    shade_chunk::<0, WIDE>(
+                    shade_chunk::<0, WIDE, true>(
                         [lo, hi],
                         covered,
                         at,
@@ -492,6 +495,7 @@ fn draw_gathered<const SITE: u8, const WIDE: bool>(
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
+    debug_assert!(target.uv.is_none() && target.difference.is_none());
     let (x, y, bits) = g.take();
     let x_lo = sparse::centres(_mm256_castsi256_si128(x));
     let x_hi = sparse::centres(_mm256_extracti128_si256::<1>(x));
@@ -500,7 +504,8 @@ fn draw_gathered<const SITE: u8, const WIDE: bool>(
     let lo = sparse::weights4(&consts.weights, x_lo, y_lo);
     let hi = sparse::weights4(&consts.weights, x_hi, y_hi);
     let at = Where::Lanes(sparse::indices(target, x, y));
-    shade_chunk::<SITE, WIDE>(
+    // Pixels are gathered only for targets without uv or difference buffers.
+    shade_chunk::<SITE, WIDE, false>(
         [lo, hi],
         bits,
         at,
@@ -515,10 +520,11 @@ fn draw_gathered<const SITE: u8, const WIDE: bool>(
 
 /// Interpolates eight samples from their screen weights (`[lanes 0..4, lanes 4..8]`), shades
 /// the `covered` ones and writes them (or hands them to the texture lookups, which write them).
+/// `UV`: the target may have uv or difference buffers (gathered chunks never do).
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
-fn shade_chunk<const SITE: u8, const WIDE: bool>(
+fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
     [lo, hi]: [[__m256d; 3]; 2],
     covered: i32,
     at: Where,
@@ -529,8 +535,8 @@ fn shade_chunk<const SITE: u8, const WIDE: bool>(
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
-    let lo = from_weights4!(lo, consts, mode, color);
-    let hi = from_weights4!(hi, consts, mode, color);
+    let lo = from_weights4!(lo, consts, mode, color, UV);
+    let hi = from_weights4!(hi, consts, mode, color, UV);
     let ok = covered & (lo.ok | (hi.ok << 4));
     if ok == 0 {
         return;
