@@ -253,8 +253,11 @@ impl WeightPlanes {
     }
 
     /// The three weights at a window position.
+    #[inline]
     pub fn at(&self, p: DVec2) -> [f64; 3] {
-        [0, 1, 2].map(|i| self.weight(i, self.row_term(i, p.y), p.x))
+        // Written out: `[0, 1, 2].map` was left as a call (the scanline lanes call this per row).
+        let l = |i: usize| self.weight(i, self.row_term(i, p.y), p.x);
+        [l(0), l(1), l(2)]
     }
 
     /// The three weights at the centre of pixel (col, row): `P = (col + 0.5, row + 0.5)`.

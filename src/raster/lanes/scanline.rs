@@ -82,12 +82,17 @@ impl Stepped {
     /// The values one pixel further along the row: one single step.
     #[inline(always)]
     pub(super) fn next(&self, step: &Self) -> Self {
+        // A loop, not `array::map`: that was left as a call, once per pixel of a short span.
+        let mut ch = self.ch;
+        for (c, d) in ch.iter_mut().zip(&step.ch) {
+            *c += d;
+        }
         Self {
             u: self.u + step.u,
             v: self.v + step.v,
             inv_w: self.inv_w + step.inv_w,
             depth: self.depth + step.depth,
-            ch: [0, 1, 2, 3, 4, 5].map(|j| self.ch[j] + step.ch[j]),
+            ch,
         }
     }
 }

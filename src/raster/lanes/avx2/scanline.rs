@@ -159,8 +159,10 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
                 x += LANES as u32;
             }
         }
-        while !gathered.is_empty() {
+        // At most seven pixels are left (a chunk is drawn whenever eight wait): one chunk.
+        if !gathered.is_empty() {
             draw_stepped::<12, WIDE>(&mut gathered, mode, sampler, &mut lookups, target);
+            debug_assert!(gathered.is_empty());
         }
         lookups.flush(Some(sampler), target);
     }
