@@ -300,7 +300,8 @@ proptest! {
 
     /// Many small, overlapping triangles at different depths (most under four pixels wide,
     /// the lanes' narrow path, which draws two rows at once), across band boundaries, with
-    /// every shading: bit for bit as the full render, the heatmap's buffers too.
+    /// every shading: bit for bit as the full render, the heatmap's buffers too; the scanline
+    /// lanes with the same coverage.
     #[test]
     fn small_triangles_agree(
         tris in proptest::collection::vec(
@@ -342,5 +343,9 @@ proptest! {
             ..RenderSettings::default()
         };
         assert_edge_identical(&mesh, &tex, &s, name);
+        // The scanline lanes find a narrow triangle's spans from its edge values.
+        if !wireframe {
+            assert_scanline_close(&mesh, &tex, &s, name);
+        }
     }
 }

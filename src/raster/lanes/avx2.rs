@@ -410,27 +410,10 @@ fn narrow_rows<const WIDE: bool>(
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
-    let planes = &tri.planes;
     let x0 = tri.bounds.x0;
-    let lanes_in = (tri.bounds.x1 - x0 + 1).min(LANES as u32);
-    let in_row = (1i32 << lanes_in) - 1;
-    let base = planes.at(i64::from(y_start), i64::from(x0));
-    let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
-    let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
-    let mut lo = [_mm256_setzero_pd(); 3];
-    let mut hi = [_mm256_setzero_pd(); 3];
-    let mut step = [_mm256_setzero_pd(); 3];
-    let mut t = [_mm256_setzero_pd(); 3];
-    for i in 0..3 {
-        let a = _mm256_set1_pd(planes.a[i] as f64);
-        let b = _mm256_set1_pd(base[i] as f64);
-        lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a, lane_lo));
-        hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a, lane_hi));
-        step[i] = _mm256_set1_pd(planes.b[i] as f64);
-        t[i] = _mm256_set1_pd(planes.t[i] as f64);
-    }
+    let mut rows = NarrowRows::new(tri, y_start);
     for y in y_start..=y_end {
-        let covered = (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row;
+        let covered = rows.next_row();
         if covered != 0 {
             g.add(x0, y, covered);
             if g.full() {
@@ -441,10 +424,55 @@ fn narrow_rows<const WIDE: bool>(
                 draw_gathered::<1, WIDE>(g, consts, mode, color, sampler, lookups, target);
             }
         }
-        for i in 0..3 {
-            lo[i] = _mm256_add_pd(lo[i], step[i]);
-            hi[i] = _mm256_add_pd(hi[i], step[i]);
+    }
+}
+
+/// The coverage of a triangle at most [`LANES`] columns wide, row after row: the edge
+/// values of the eight lanes from its first column, stepped by exact integer additions (the
+/// triangle must be [`exact`](LaneTriangle::exact)).
+struct NarrowRows {
+    lo: [__m256d; 3],
+    hi: [__m256d; 3],
+    step: [__m256d; 3],
+    t: [__m256d; 3],
+    /// The lanes within the bounds.
+    in_row: i32,
+}
+
+impl NarrowRows {
+    /// Starting at row `y`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn new(tri: &LaneTriangle, y: u32) -> Self {
+        let planes = &tri.planes;
+        let x0 = tri.bounds.x0;
+        let lanes_in = (tri.bounds.x1 - x0 + 1).min(LANES as u32);
+        let base = planes.at(i64::from(y), i64::from(x0));
+        let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+        let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
+        let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
+        let b = base.map(|v| _mm256_set1_pd(v as f64));
+        Self {
+            lo: [0, 1, 2].map(|i| _mm256_add_pd(b[i], _mm256_mul_pd(a[i], lane_lo))),
+            hi: [0, 1, 2].map(|i| _mm256_add_pd(b[i], _mm256_mul_pd(a[i], lane_hi))),
+            step: planes.b.map(|v| _mm256_set1_pd(v as f64)),
+            t: planes.t.map(|v| _mm256_set1_pd(v as f64)),
+            in_row: (1i32 << lanes_in) - 1,
         }
+    }
+
+    /// The covered lanes of the current row (lane k in bit k: column `x0 + k`), then a step
+    /// to the next row.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn next_row(&mut self) -> i32 {
+        let covered =
+            (passing(&self.lo, &self.t) | (passing(&self.hi, &self.t) << 4)) & self.in_row;
+        for i in 0..3 {
+            self.lo[i] = _mm256_add_pd(self.lo[i], self.step[i]);
+            self.hi[i] = _mm256_add_pd(self.hi[i], self.step[i]);
+        }
+        covered
     }
 }
 

@@ -67,8 +67,9 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             // Texture shading always has a sampler here (see `Lanes::scanline_triangle`).
             _ if color == LaneColor::Texture => return,
             _ => {
+                let mut spans = RowSpans::new(tri, y_start);
                 for y in y_start..=y_end {
-                    if let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) {
+                    if let Some((x0, x1)) = spans.next(y) {
                         let start = Stepped::span_start(consts, mode, x0, y);
                         let row = (y - target.y0) as usize * target.width as usize;
                         colour_span::<WIDE>(&start, &step, (row, x0, x1), consts, shading, target);
@@ -82,8 +83,9 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
         let step8 =
             [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
         let mut gathered = sparse::SteppedGathered::new();
+        let mut spans = RowSpans::new(tri, y_start);
         for y in y_start..=y_end {
-            let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
+            let Some((x0, x1)) = spans.next(y) else {
                 continue;
             };
             let start = Stepped::span_start(consts, mode, x0, y);
@@ -165,6 +167,54 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             debug_assert!(gathered.is_empty());
         }
         lookups.flush(Some(sampler), target);
+    }
+}
+
+/// The covered span of each row in turn, as [`row_span_of`] finds it. For a triangle at most
+/// [`LANES`] columns wide (a dense mesh's) it is read from the exact edge values of the
+/// row's eight pixels instead ([`NarrowRows`]): the same columns (the covered samples of a row
+/// are one run, and both tests are exact), without `row_span_of`'s three integer divisions
+/// per row.
+struct RowSpans<'t> {
+    tri: &'t LaneTriangle,
+    narrow: Option<NarrowRows>,
+}
+
+impl<'t> RowSpans<'t> {
+    /// Spans from row `y` on.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn new(tri: &'t LaneTriangle, y: u32) -> Self {
+        let narrow = tri.bounds.x1 - tri.bounds.x0 < LANES as u32 && tri.exact();
+        Self {
+            tri,
+            narrow: narrow.then(|| NarrowRows::new(tri, y)),
+        }
+    }
+
+    /// The covered columns `[x0, x1]` of row `y`, the row after the last one asked for (or
+    /// the first row).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn next(&mut self, y: u32) -> Option<(u32, u32)> {
+        match self.narrow.as_mut() {
+            Some(rows) => {
+                let covered = rows.next_row();
+                (covered != 0).then(|| {
+                    // One run of lanes (a convex triangle's samples on a row).
+                    debug_assert_eq!(
+                        covered.count_ones(),
+                        32 - covered.leading_zeros() - covered.trailing_zeros()
+                    );
+                    let x0 = self.tri.bounds.x0;
+                    (
+                        x0 + covered.trailing_zeros(),
+                        x0 + 31 - covered.leading_zeros(),
+                    )
+                })
+            }
+            None => row_span_of(&self.tri.edges, self.tri.bounds, y),
+        }
     }
 }
 
