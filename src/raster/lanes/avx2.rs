@@ -91,9 +91,8 @@ fn weights4(w: &WeightPlanes, row: &[f64; 3], px: __m256d) -> [__m256d; 3] {
 /// (A macro, not a function: it is expanded into each caller, so its vectors stay in
 /// registers; a call returns [`Four`] through memory. Use it in `unsafe`, AVX2 code.)
 macro_rules! from_weights4 {
-    ($l:expr, $c:expr, $mode:expr, $color:expr, $uv:expr) => {{
-        let (l, c, mode, color): ([__m256d; 3], &Constants, Interpolation, LaneColor) =
-            ($l, $c, $mode, $color);
+    ($l:expr, $c:expr, $mode:expr, $uv:expr) => {{
+        let (l, c, mode): ([__m256d; 3], &Constants, Interpolation) = ($l, $c, $mode);
         let both_consts = if $uv { c.both_uv } else { None };
         let q = [
             _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
@@ -150,12 +149,6 @@ macro_rules! from_weights4 {
                 }
             }
         }
-        let mut channels = [_mm256_setzero_pd(); CHANNELS];
-        if !matches!(color, LaneColor::Texture | LaneColor::Depth(..)) {
-            for ch in 0..c.used_channels {
-                channels[ch] = dot3(&w, c.channels[ch]);
-            }
-        }
         Four {
             u: dot3(&w, c.u),
             v: dot3(&w, c.v),
@@ -163,7 +156,7 @@ macro_rules! from_weights4 {
             ok: _mm256_movemask_pd(ok),
             wire,
             halo,
-            channels,
+            w,
             both_uv,
         }
     }};
@@ -179,8 +172,10 @@ struct Four {
     wire: i32,
     /// Wireframe halo bits, lane k in bit k.
     halo: i32,
-    /// The interpolated channels of [`Constants`] (zero for texture and depth shading).
-    channels: [__m256d; CHANNELS],
+    /// The weights of the interpolation (perspective-correct or screen, by the mode): the
+    /// channels of [`Constants`] are `dot3(w, channel)`, computed only by the shadings that
+    /// read them (kept as weights, texture shading holds three vectors here, not six).
+    w: [__m256d; 3],
     /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
     both_uv: Option<[__m256d; 4]>,
 }
@@ -563,8 +558,8 @@ fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
-    let lo = from_weights4!(lo, consts, mode, color, UV);
-    let hi = from_weights4!(hi, consts, mode, color, UV);
+    let lo = from_weights4!(lo, consts, mode, UV);
+    let hi = from_weights4!(hi, consts, mode, UV);
     let ok = covered & (lo.ok | (hi.ok << 4));
     if ok == 0 {
         return;
@@ -595,7 +590,15 @@ fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
         Some(sampler) if color == LaneColor::Texture => {
             return lookups.push::<SITE, WIDE>(sampler, target, chunk, both.as_ref());
         }
-        _ => channel_colors::<SITE, WIDE>(&lo, &hi, color),
+        _ => {
+            let channel = |ch: usize| {
+                to_f32(
+                    dot3(&lo.w, consts.channels[ch]),
+                    dot3(&hi.w, consts.channels[ch]),
+                )
+            };
+            channel_colors::<SITE, WIDE>([lo.depth, hi.depth], channel, color)
+        }
     };
     // SAFETY: this module runs with AVX2.
     unsafe { finish(target, &chunk, rgba, both.as_ref()) }

@@ -262,25 +262,16 @@ fn colour_span<const WIDE: bool>(
     while x <= x1 {
         let lanes_in = (x1 - x + 1).min(LANES as u32);
         let mut ok = (1i32 << lanes_in) - 1;
-        let mut four = [0, 1].map(|h| {
+        for h in 0..2 {
             let valid = _mm256_and_pd(
                 _mm256_cmp_pd::<_CMP_GT_OQ>(inv_w[h], _mm256_setzero_pd()),
                 _mm256_cmp_pd::<_CMP_LT_OQ>(inv_w[h], _mm256_set1_pd(f64::INFINITY)),
             );
             ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
-            Four {
-                u: _mm256_setzero_pd(),
-                v: _mm256_setzero_pd(),
-                depth: depth[h],
-                ok: 0,
-                wire: 0,
-                halo: 0,
-                channels: [_mm256_setzero_pd(); CHANNELS],
-                both_uv: None,
-            }
-        });
+        }
         if ok != 0 {
-            for (h, f) in four.iter_mut().enumerate() {
+            let mut channels = [[_mm256_setzero_pd(); CHANNELS]; 2];
+            for (h, f) in channels.iter_mut().enumerate() {
                 let w = match shading.mode {
                     Interpolation::Perspective => {
                         Some(_mm256_div_pd(_mm256_set1_pd(1.0), inv_w[h]))
@@ -288,13 +279,14 @@ fn colour_span<const WIDE: bool>(
                     Interpolation::Affine => None,
                 };
                 for j in 0..used {
-                    f.channels[j] = match w {
+                    f[j] = match w {
                         Some(w) => _mm256_mul_pd(ch[h][j], w),
                         None => ch[h][j],
                     };
                 }
             }
-            let rgba = channel_colors::<13, WIDE>(&four[0], &four[1], shading.color);
+            let channel = |j: usize| to_f32(channels[0][j], channels[1][j]);
+            let rgba = channel_colors::<13, WIDE>(depth, channel, shading.color);
             let chunk = Pending {
                 u: _mm256_setzero_ps(),
                 v: _mm256_setzero_ps(),

@@ -46,13 +46,15 @@ fn unit_normal(n: [__m256; 3]) -> [__m256; 3] {
     [unit(n[0], 0.0), unit(n[1], 0.0), unit(n[2], 1.0)]
 }
 
-/// The colours of the non-texture shadings for eight samples, as `shade` makes them (`SITE`
-/// and `WIDE`: one copy per caller, see `Lookups::push`).
+/// The colours of the non-texture shadings for eight samples, as `shade` makes them, from
+/// their depths (`f64`, lanes 0..4 and 4..8) and `ch(c)`, channel `c` of [`Constants`]
+/// interpolated, as `f32` (called only for the channels the shading reads). `SITE` and
+/// `WIDE`: one copy per caller, see `Lookups::push`.
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(super) fn channel_colors<const SITE: u8, const WIDE: bool>(
-    lo: &Four,
-    hi: &Four,
+    [lo_depth, hi_depth]: [__m256d; 2],
+    ch: impl Fn(usize) -> __m256,
     color: LaneColor,
 ) -> __m256i {
     match color {
@@ -65,14 +67,13 @@ pub(super) fn channel_colors<const SITE: u8, const WIDE: bool>(
                         _mm256_set1_pd(far - near),
                     )
                 };
-                unorm8(to_f32(scale(lo.depth), scale(hi.depth)))
+                unorm8(to_f32(scale(lo_depth), scale(hi_depth)))
             } else {
                 _mm256_setzero_si256()
             };
             pack_opaque(grey, grey, grey)
         }
         LaneColor::Normal | LaneColor::Lambert => {
-            let ch = |c: usize| to_f32(lo.channels[c], hi.channels[c]);
             if color == LaneColor::Normal {
                 let n = unit_normal([ch(0), ch(1), ch(2)]);
                 // `shade::normal_rgba8`: unorm8((n̂ + 1) * 0.5) per channel.
@@ -97,9 +98,6 @@ pub(super) fn channel_colors<const SITE: u8, const WIDE: bool>(
             let c = |a: __m256| unorm8(_mm256_mul_ps(a, f));
             pack_opaque(c(ch(0)), c(ch(1)), c(ch(2)))
         }
-        _ => {
-            let ch = |c: usize| unorm8(to_f32(lo.channels[c], hi.channels[c]));
-            pack_opaque(ch(0), ch(1), ch(2))
-        }
+        _ => pack_opaque(unorm8(ch(0)), unorm8(ch(1)), unorm8(ch(2))),
     }
 }
