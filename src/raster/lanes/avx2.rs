@@ -601,5 +601,5 @@ fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
         }
     };
     // SAFETY: this module runs with AVX2.
-    unsafe { finish(target, &chunk, rgba, both.as_ref()) }
+    unsafe { finish::<WIDE>(target, &chunk, rgba, both.as_ref()) }
 }

@@ -298,7 +298,7 @@ fn colour_span<const WIDE: bool>(
                 lanes: None,
             };
             // SAFETY: this module runs with AVX2.
-            unsafe { finish(target, &chunk, rgba, None) };
+            unsafe { finish::<WIDE>(target, &chunk, rgba, None) };
         }
         for h in 0..2 {
             inv_w[h] = _mm256_add_pd(inv_w[h], inv_w8);

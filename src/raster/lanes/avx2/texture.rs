@@ -40,7 +40,7 @@ impl Lookups {
         if !(WIDE && self.wide) || both.is_some() {
             let rgba = sample::<SITE, WIDE>(sampler, chunk.u, chunk.v);
             // SAFETY: this module runs with AVX2.
-            unsafe { finish(target, &chunk, rgba, both) };
+            unsafe { finish::<WIDE>(target, &chunk, rgba, both) };
             return;
         }
         match self.pending.take() {
@@ -51,9 +51,9 @@ impl Lookups {
                     super::super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
                 // SAFETY: this module runs with AVX2.
-                unsafe { finish(target, &first, a, None) };
+                unsafe { finish::<WIDE>(target, &first, a, None) };
                 // SAFETY: this module runs with AVX2.
-                unsafe { finish(target, &chunk, b, None) };
+                unsafe { finish::<WIDE>(target, &chunk, b, None) };
             }
         }
     }
@@ -64,7 +64,7 @@ impl Lookups {
         if let (Some(chunk), Some(sampler)) = (self.pending.take(), sampler) {
             let rgba = sample::<{ u8::MAX }, false>(sampler, chunk.u, chunk.v);
             // SAFETY: this module runs with AVX2.
-            unsafe { finish(target, &chunk, rgba, None) };
+            unsafe { finish::<false>(target, &chunk, rgba, None) };
         }
     }
 }

@@ -112,7 +112,7 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
         ]
         .map(|x| _mm512_cvtpd_ps(x));
         // SAFETY: this module runs with AVX2.
-        unsafe { finish(target, &chunk, _mm256_setzero_si256(), Some(&both)) };
+        unsafe { finish::<WIDE>(target, &chunk, _mm256_setzero_si256(), Some(&both)) };
         return;
     }
     let Some(sampler) = sampler else {

@@ -9,9 +9,10 @@ use super::*;
 /// costs the dense meshes several percent.
 ///
 /// # Safety
-/// The CPU has AVX2.
+/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE` (gathered chunks are then
+/// written with scatters, `sparse::write_scatter`).
 #[inline(always)]
-pub(super) unsafe fn finish(
+pub(super) unsafe fn finish<const WIDE: bool>(
     target: &mut Target<'_>,
     chunk: &Pending,
     mut rgba: __m256i,
@@ -34,6 +35,9 @@ pub(super) unsafe fn finish(
             );
         }
         let pass = match chunk.lanes {
+            // (The function's unsafe block covers this: `WIDE` is set only when the CPU has
+            // AVX-512 F, BW, VL and DQ.)
+            Some(at) if WIDE => sparse::write_scatter(target, at, chunk.valid, chunk.depth, rgba),
             Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
             None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
         };
