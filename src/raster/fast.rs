@@ -29,9 +29,7 @@ use super::project::{SUBPIXEL, Viewport, WindowVertex, ndc_from_clip, project_ve
 use super::render::{
     Rasterizer, draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply,
 };
-use super::setup::{
-    TieRule, TriangleSetup, covers_no_sample, setup_bounds, setup_triangle_with, triangle_geometry,
-};
+use super::setup::{TieRule, TriangleSetup, covers_no_sample, setup_bounds, setup_triangle_with};
 use super::shade::ShadeParams;
 use super::texture::Texture;
 use super::varying::Varyings;
@@ -241,9 +239,10 @@ impl<'m> FastMesh<'m> {
         setup_triangle_with([a?, b?, c?], self.viewport, self.rule)
     }
 
-    /// Sets `tri` to a whole triangle as the edge-function lanes draw it, set up from the
-    /// shared projected vertices with [`triangle_geometry`] (the values [`FastMesh::setup`]
-    /// gives); `false` when it has no set-up. The lanes draw it when it is
+    /// Sets `tri` to a whole triangle as the edge-function lanes draw it, set up in place from
+    /// the shared projected vertices ([`LaneTriangle::set_whole`]: the values of
+    /// [`triangle_geometry`](super::setup::triangle_geometry) and [`FastMesh::setup`]);
+    /// `false` when it has no set-up. The lanes draw it when it is
     /// [`exact`](LaneTriangle::exact).
     #[inline(always)]
     fn set_lane_triangle(
@@ -256,29 +255,23 @@ impl<'m> FastMesh<'m> {
         let Some([a, b, c]) = self.projected(corners) else {
             return false;
         };
-        let Some(g) = triangle_geometry(
-            [a.fixed(), b.fixed(), c.fixed()],
-            [a.window, b.window, c.window],
-            self.viewport,
-            self.rule,
-        ) else {
-            return false;
-        };
         let m = |k: usize| self.mesh.vertices.get(corners[k] as usize);
         let (Some(ma), Some(mb), Some(mc)) = (m(0), m(1), m(2)) else {
             return false;
         };
         tri.set_whole(
-            &g.edges,
-            g.bounds,
-            &g.weights,
+            (
+                [a.fixed(), b.fixed(), c.fixed()],
+                [a.window, b.window, c.window],
+            ),
+            self.viewport,
+            self.rule,
             [a.inv_w, b.inv_w, c.inv_w],
             [a.depth, b.depth, c.depth],
             [ma, mb, mc],
             shading,
             uv,
-        );
-        true
+        )
     }
 
     /// Whether a whole triangle less than two pixels across is known to cover no pixel

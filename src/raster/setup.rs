@@ -223,6 +223,14 @@ pub struct WeightPlanes {
 }
 
 impl WeightPlanes {
+    /// Planes of no triangle (a placeholder before a triangle is set).
+    pub const EMPTY: Self = Self {
+        start: [DVec2::ZERO; 3],
+        dir: [DVec2::ZERO; 3],
+        area2: 0.0,
+        inv_area2: 0.0,
+    };
+
     /// `None` when the three positions have no finite, non-zero area.
     pub fn new(v: [DVec2; 3]) -> Option<Self> {
         let area2 = (v[1] - v[0]).perp_dot(v[2] - v[0]);
@@ -314,6 +322,16 @@ pub struct PixelBounds {
     pub y1: u32,
 }
 
+impl PixelBounds {
+    /// No pixel (a placeholder before a triangle is set).
+    pub const EMPTY: Self = Self {
+        x0: 1,
+        y0: 1,
+        x1: 0,
+        y1: 0,
+    };
+}
+
 /// Signed twice-area of the triangle a, b, c in image coordinates: `(b - a) x (c - a)`.
 /// Positive means clockwise as seen on screen (y down).
 ///
@@ -392,21 +410,50 @@ pub fn triangle_geometry(
     viewport: Viewport,
     rule: TieRule,
 ) -> Option<Geometry> {
-    let (signed, bounds, weights) = geometry(p, window, viewport)?;
+    let mut g = Geometry {
+        edges: [Edge::EMPTY; 3],
+        area2: 0,
+        weights: WeightPlanes::EMPTY,
+        facing: Facing::Front,
+        bounds: PixelBounds::EMPTY,
+    };
+    let (area2, facing) = geometry_into(
+        p,
+        window,
+        viewport,
+        rule,
+        &mut g.edges,
+        &mut g.weights,
+        &mut g.bounds,
+    )?;
+    Some(Geometry { area2, facing, ..g })
+}
+
+/// [`triangle_geometry`] written where the caller keeps its edges, weight planes and bounds
+/// (the fast path sets hundreds of thousands of triangles up per frame, in place), returning
+/// the twice-area and the facing. On `None` the three may hold anything.
+pub fn geometry_into(
+    p: [I64Vec2; 3],
+    window: [DVec2; 3],
+    viewport: Viewport,
+    rule: TieRule,
+    edges: &mut [Edge; 3],
+    weights: &mut WeightPlanes,
+    bounds: &mut PixelBounds,
+) -> Option<(i64, Facing)> {
+    let (signed, b, w) = geometry(p, window, viewport)?;
     let positive = signed > 0;
-    Some(Geometry {
-        edges: edges_of(p, positive, rule),
-        area2: signed.abs(),
-        weights,
-        // Positive area in image coordinates (y down) means clockwise as displayed, which
-        // OpenGL calls the back face.
-        facing: if positive {
-            Facing::Back
-        } else {
-            Facing::Front
-        },
-        bounds,
-    })
+    *edges = edges_of(p, positive, rule);
+    *weights = w;
+    *bounds = b;
+    // Positive area in image coordinates (y down) means clockwise as displayed, which
+    // OpenGL calls the back face.
+    let facing = if positive {
+        Facing::Back
+    } else {
+        Facing::Front
+    };
+    Some((signed.abs(), facing))
 }
 
 /// The pixel bounds [`setup_triangle_with`] gives a triangle with these snapped (`fixed`,

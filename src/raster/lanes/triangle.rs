@@ -1,8 +1,12 @@
 //! A triangle as the lanes draw it: its edges, edge planes, bounds and the per-triangle
 //! constants of the interpolation ([`LaneTriangle`]).
 
+use glam::{DVec2, I64Vec2};
+
 use super::*;
 use crate::raster::mesh::MeshVertex;
+use crate::raster::project::Viewport;
+use crate::raster::setup::{TieRule, geometry_into};
 
 /// Interpolated channels the lanes carry: a colour (or weights, or a normal) in 0..3, and the
 /// normal in 3..6 for [`LaneColor::Lambert`].
@@ -85,12 +89,7 @@ impl LaneVertices {
 impl Constants {
     /// Constants of no triangle, to be [`set`](Constants::set).
     pub(super) const EMPTY: Self = Self {
-        weights: WeightPlanes {
-            start: [glam::DVec2::ZERO; 3],
-            dir: [glam::DVec2::ZERO; 3],
-            area2: 0.0,
-            inv_area2: 0.0,
-        },
+        weights: WeightPlanes::EMPTY,
         inv_w: [0.0; 3],
         depth: [0.0; 3],
         u: [0.0; 3],
@@ -135,12 +134,11 @@ impl Constants {
     /// [`Constants::set`] for a triangle the clipper left whole, straight from its mesh
     /// vertices (the values `set` gives it, without building [`Varyings`]): both attribute
     /// sets are the vertices' own, and the source weights are one-hot. `uv`: also
-    /// [`Constants::both_uv`].
-    #[allow(clippy::too_many_arguments)]
+    /// [`Constants::both_uv`]. The weight planes are already set (in place, by
+    /// [`LaneTriangle::set_whole`]).
     #[inline(always)]
     pub(super) fn set_whole(
         &mut self,
-        weights: &WeightPlanes,
         inv_w: [f64; 3],
         depth: [f64; 3],
         verts: [&MeshVertex; 3],
@@ -148,7 +146,6 @@ impl Constants {
         color: LaneColor,
         uv: bool,
     ) {
-        self.weights = *weights;
         self.inv_w = inv_w;
         self.depth = depth;
         self.set_uv(verts.map(|v| v.uv));
@@ -157,7 +154,8 @@ impl Constants {
             Attribute::Source => ONE_HOT[k],
             Attribute::Normal => verts[k].normal.to_array(),
         });
-        self.set_wire(weights, wireframe, ONE_HOT);
+        let weights = self.weights;
+        self.set_wire(&weights, wireframe, ONE_HOT);
         // Both attribute sets are the same: the uvs twice (as `both_uv` gives them).
         self.both_uv = if uv {
             Some([self.u, self.v, self.u, self.v])
@@ -235,12 +233,7 @@ impl LaneTriangle {
             c: [-1; 3],
             t: [0; 3],
         },
-        bounds: PixelBounds {
-            x0: 1,
-            y0: 1,
-            x1: 0,
-            y1: 0,
-        },
+        bounds: PixelBounds::EMPTY,
         consts: Constants::EMPTY,
     };
 
@@ -284,34 +277,43 @@ impl LaneTriangle {
         self.bounds = bounds;
     }
 
-    /// [`LaneTriangle::set`] for a triangle the clipper left whole, from its mesh vertices and
-    /// their `1/w` and window depth (the fast path's shared vertices): the same values as
-    /// `set` with their [`Varyings`], one-hot source weights and no `noperspective` set.
+    /// [`LaneTriangle::set`] for a triangle the clipper left whole, from the snapped (`fixed`)
+    /// and unsnapped (`window`) positions, `1/w` and window depth of its mesh vertices (the
+    /// fast path's shared vertices): the same values as `set` with the triangle's
+    /// [`triangle_geometry`](crate::raster::setup::triangle_geometry), their [`Varyings`],
+    /// one-hot source weights and no `noperspective` set. The edges, weight planes and bounds
+    /// are set up in place ([`geometry_into`]). `false` (and the triangle unusable) when it
+    /// has no set-up.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     pub fn set_whole(
         &mut self,
-        edges: &[Edge; 3],
-        bounds: PixelBounds,
-        weights: &WeightPlanes,
+        (fixed, window): ([I64Vec2; 3], [DVec2; 3]),
+        viewport: Viewport,
+        rule: TieRule,
         inv_w: [f64; 3],
         depth: [f64; 3],
         verts: [&MeshVertex; 3],
         shading: LaneShading,
         uv: bool,
-    ) {
-        self.consts.set_whole(
-            weights,
-            inv_w,
-            depth,
-            verts,
-            shading.wireframe,
-            shading.color,
-            uv,
-        );
-        self.planes = EdgePlanes::from_edges(edges);
-        self.edges = *edges;
-        self.bounds = bounds;
+    ) -> bool {
+        let c = &mut self.consts;
+        if geometry_into(
+            fixed,
+            window,
+            viewport,
+            rule,
+            &mut self.edges,
+            &mut c.weights,
+            &mut self.bounds,
+        )
+        .is_none()
+        {
+            return false;
+        }
+        c.set_whole(inv_w, depth, verts, shading.wireframe, shading.color, uv);
+        self.planes = EdgePlanes::from_edges(&self.edges);
+        true
     }
 
     /// From a set-up triangle.
