@@ -461,6 +461,7 @@ pub fn geometry_into(
 /// of a triangle before it draws it. (The weight planes never refuse a triangle whose snapped
 /// area is not zero: their fallback, the snapped positions, has that area, at least
 /// 1/65536 pixel^2, so they are not needed here.)
+#[inline]
 pub fn setup_bounds(fixed: [I64Vec2; 3], viewport: Viewport) -> Option<PixelBounds> {
     if signed_area2(fixed[0], fixed[1], fixed[2]) == 0 {
         return None;
