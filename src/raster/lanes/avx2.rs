@@ -414,7 +414,7 @@ fn narrow_rows<const WIDE: bool>(
             if g.full() {
                 // Only triangles of more than eight pixels get here. An opaque reference keeps
                 // the compiler from loading and broadcasting every constant before the loop
-                // (and spilling them) for every triangle: about 250 instructions each.
+                // (and spilling them) for every triangle: about 200 instructions each.
                 let consts = std::hint::black_box(&tri.consts);
                 draw_gathered::<1, WIDE>(g, consts, mode, color, sampler, lookups, target);
             }

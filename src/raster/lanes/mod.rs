@@ -23,7 +23,8 @@
 //!   several rows into chunks of eight (`avx2/sparse.rs`): each lane does the same operations
 //!   at its own pixel centre.
 //! - **Scanline** ([`scanline_triangle`]): exact integer spans per row
-//!   ([`row_span`](super::scanline::row_span)); along a span `u/w`, `v/w`, `1/w`, the depth
+//!   ([`row_span`](super::scanline::row_span); in the AVX2 build, for a triangle at most eight
+//!   columns wide, the same columns read from its exact edge values); along a span `u/w`, `v/w`, `1/w`, the depth
 //!   and the shading's channels (`c/w`) are stepped by their per-pixel increments (eight lanes
 //!   advance by eight increments), and the perspective-correct uv is `(u/w) * (1 / (1/w))`,
 //!   one division per pixel. Coverage is

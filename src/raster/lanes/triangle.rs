@@ -127,7 +127,7 @@ impl Constants {
             Attribute::Source => vary(k).bary(),
             Attribute::Normal => vary(k).normal().to_array(),
         });
-        self.set_wire(weights, wireframe, verts.smooth.map(|v| v.bary()));
+        self.set_wire(wireframe, verts.smooth.map(|v| v.bary()));
         self.both_uv = None;
     }
 
@@ -154,8 +154,7 @@ impl Constants {
             Attribute::Source => ONE_HOT[k],
             Attribute::Normal => verts[k].normal.to_array(),
         });
-        let weights = self.weights;
-        self.set_wire(&weights, wireframe, ONE_HOT);
+        self.set_wire(wireframe, ONE_HOT);
         // Both attribute sets are the same: the uvs twice (as `both_uv` gives them).
         self.both_uv = if uv {
             Some([self.u, self.v, self.u, self.v])
@@ -202,9 +201,11 @@ impl Constants {
         };
     }
 
-    /// The wireframe's constants from the vertices' `smooth` source weights `b`, or none.
+    /// The wireframe's constants from the vertices' `smooth` source weights `b` and the weight
+    /// planes (set before), or none.
     #[inline(always)]
-    fn set_wire(&mut self, weights: &WeightPlanes, wireframe: bool, b: [[f32; 3]; 3]) {
+    fn set_wire(&mut self, wireframe: bool, b: [[f32; 3]; 3]) {
+        let weights = &self.weights;
         self.wire = wireframe.then(|| Wire {
             bary: [0, 1, 2].map(|i| [0, 1, 2].map(|k| f64::from(b[k][i]))),
             len: source_weight_gradients(weights, b).map(|g| g.length()),
