@@ -42,18 +42,33 @@ impl Stepped {
     /// The stepped quantities for screen weights `l` (a point's weights, or their per-pixel
     /// increments: the map is linear).
     pub(super) fn from_weights(l: [f64; 3], c: &Constants, mode: Interpolation) -> Self {
+        // Loops of a fixed length, unrolled: with `used_channels` as their bound they were
+        // about 200 instructions a call (twice per triangle of a dense mesh, at least).
+        match c.used_channels {
+            0 => Self::from_weights_n::<0>(l, c, mode),
+            3 => Self::from_weights_n::<3>(l, c, mode),
+            n => {
+                debug_assert_eq!(n, CHANNELS);
+                Self::from_weights_n::<CHANNELS>(l, c, mode)
+            }
+        }
+    }
+
+    /// [`from_weights`](Self::from_weights) for a shading reading the first `N` channels.
+    #[inline(always)]
+    fn from_weights_n<const N: usize>(l: [f64; 3], c: &Constants, mode: Interpolation) -> Self {
+        let scale = match mode {
+            Interpolation::Perspective => [l[0] * c.inv_w[0], l[1] * c.inv_w[1], l[2] * c.inv_w[2]],
+            Interpolation::Affine => l,
+        };
         let mut s = Self::default();
         for k in 0..3 {
-            let scale = match mode {
-                Interpolation::Perspective => l[k] * c.inv_w[k],
-                Interpolation::Affine => l[k],
-            };
-            s.u += scale * c.u[k];
-            s.v += scale * c.v[k];
+            s.u += scale[k] * c.u[k];
+            s.v += scale[k] * c.v[k];
             s.inv_w += l[k] * c.inv_w[k];
             s.depth += l[k] * c.depth[k];
-            for j in 0..c.used_channels {
-                s.ch[j] += scale * c.channels[j][k];
+            for j in 0..N {
+                s.ch[j] += scale[k] * c.channels[j][k];
             }
         }
         s

@@ -61,7 +61,16 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
     unsafe {
         let (mode, color) = (shading.mode, shading.color);
         let consts = &tri.consts;
-        let step = Stepped::row_step(consts, mode);
+        // The increments along a row, made when a span of more than one pixel needs them (a
+        // dense mesh's rows are often one pixel).
+        let mut step = None;
+        let mut step_of = |x0: u32, x1: u32| -> Stepped {
+            if x1 > x0 {
+                *step.get_or_insert_with(|| Stepped::row_step(consts, mode))
+            } else {
+                Stepped::default()
+            }
+        };
         let sampler = match sampler {
             Some(s) if color == LaneColor::Texture => s,
             // Texture shading always has a sampler here (see `Lanes::scanline_triangle`).
@@ -72,6 +81,7 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
                     if let Some((x0, x1)) = spans.next(y) {
                         let start = Stepped::span_start(consts, mode, x0, y);
                         let row = (y - target.y0) as usize * target.width as usize;
+                        let step = step_of(x0, x1);
                         colour_span::<WIDE>(&start, &step, (row, x0, x1), consts, shading, target);
                     }
                 }
@@ -79,9 +89,6 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             }
         };
         let mut lookups = Lookups::new(Some(sampler), WIDE);
-        let n = LANES as f64;
-        let step8 =
-            [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
         let mut gathered = sparse::SteppedGathered::new();
         let mut spans = RowSpans::new(tri, y_start);
         for y in y_start..=y_end {
@@ -89,6 +96,7 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
                 continue;
             };
             let start = Stepped::span_start(consts, mode, x0, y);
+            let step = step_of(x0, x1);
             if x1 - x0 < sparse::MAX_LANES {
                 // A short span: its pixels, k single steps from the start, are gathered.
                 let row = (y - target.y0) as usize * target.width as usize;
@@ -140,6 +148,9 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
                     load(|s| s.depth, h),
                 ]
             });
+            let n = LANES as f64;
+            let step8 =
+                [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
             let mut x = x0;
             while x <= x1 {
                 let lanes_in = (x1 - x + 1).min(LANES as u32);
@@ -200,18 +211,20 @@ impl<'t> RowSpans<'t> {
         match self.narrow.as_mut() {
             Some(rows) => {
                 let covered = rows.next_row();
-                (covered != 0).then(|| {
-                    // One run of lanes (a convex triangle's samples on a row).
-                    debug_assert_eq!(
-                        covered.count_ones(),
-                        32 - covered.leading_zeros() - covered.trailing_zeros()
-                    );
-                    let x0 = self.tri.bounds.x0;
-                    (
-                        x0 + covered.trailing_zeros(),
-                        x0 + 31 - covered.leading_zeros(),
-                    )
-                })
+                // An `if`, not `bool::then`: that was left as a call, once per row.
+                if covered == 0 {
+                    return None;
+                }
+                // One run of lanes (a convex triangle's samples on a row).
+                debug_assert_eq!(
+                    covered.count_ones(),
+                    32 - covered.leading_zeros() - covered.trailing_zeros()
+                );
+                let x0 = self.tri.bounds.x0;
+                Some((
+                    x0 + covered.trailing_zeros(),
+                    x0 + 31 - covered.leading_zeros(),
+                ))
             }
             None => row_span_of(&self.tri.edges, self.tri.bounds, y),
         }
@@ -220,10 +233,36 @@ impl<'t> RowSpans<'t> {
 
 /// The chunks of one span with a non-texture colour (vertex colour, weights, depth, normal,
 /// Lambert): the channels are stepped like uv (divided by w when perspective-correct, then
-/// multiplied by `1 / (1/w)`), as the portable scanline lanes do.
+/// multiplied by `1 / (1/w)`), as the portable scanline lanes do. `step` is read only when
+/// the span is longer than one pixel.
 #[inline]
 #[target_feature(enable = "avx2")]
 fn colour_span<const WIDE: bool>(
+    start: &Stepped,
+    step: &Stepped,
+    span: (usize, u32, u32),
+    consts: &Constants,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // A span of at most four pixels (most rows of a dense mesh) fills only the low half.
+    // SAFETY: this module runs with AVX2.
+    unsafe {
+        if span.2 - span.1 < 4 {
+            colour_chunks::<1, WIDE>(start, step, span, consts, shading, target);
+        } else {
+            colour_chunks::<2, WIDE>(start, step, span, consts, shading, target);
+        }
+    }
+}
+
+/// [`colour_span`]'s chunks with `H` halves of four lanes computed (1: a span of at most
+/// four pixels; the high half's lanes are then not written).
+///
+/// # Safety
+/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
+#[inline(always)]
+unsafe fn colour_chunks<const H: usize, const WIDE: bool>(
     start: &Stepped,
     step: &Stepped,
     (row, x0, x1): (usize, u32, u32),
@@ -231,83 +270,91 @@ fn colour_span<const WIDE: bool>(
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    let used = consts.used_channels;
-    // Lane k is the span's start after k single steps, as `Stepped::lanes` makes it (only
-    // the values this colour reads; a span of at most four pixels fills only the low half).
-    let short = x1 - x0 < 4;
-    let load = |s: f64, d: f64| {
-        let mut a = [s; LANES];
-        for k in 1..if short { 4 } else { LANES } {
-            a[k] = a[k - 1] + d;
+    // SAFETY: as the function's; the loads read lanes 0..8 of an eight-element array.
+    unsafe {
+        let used = consts.used_channels;
+        // Lane k is the span's start after k single steps, as `Stepped::lanes` makes it (only
+        // the values this colour reads, only the pixels of the span).
+        let lanes = (x1 - x0 + 1).min(4 * H as u32) as usize;
+        let load = |s: f64, d: f64| {
+            let mut a = [s; LANES];
+            for k in 1..lanes {
+                a[k] = a[k - 1] + d;
+            }
+            let mut v = [_mm256_setzero_pd(); H];
+            for (h, v) in v.iter_mut().enumerate() {
+                *v = _mm256_loadu_pd(a.as_ptr().add(4 * h));
+            }
+            v
+        };
+        let n = LANES as f64;
+        let mut inv_w = load(start.inv_w, step.inv_w);
+        let mut depth = load(start.depth, step.depth);
+        let mut ch = [[_mm256_setzero_pd(); CHANNELS]; H];
+        for j in 0..used {
+            for (h, v) in load(start.ch[j], step.ch[j]).into_iter().enumerate() {
+                ch[h][j] = v;
+            }
         }
-        [
-            _mm256_setr_pd(a[0], a[1], a[2], a[3]),
-            _mm256_setr_pd(a[4], a[5], a[6], a[7]),
-        ]
-    };
-    let n = LANES as f64;
-    let mut inv_w = load(start.inv_w, step.inv_w);
-    let mut depth = load(start.depth, step.depth);
-    let mut ch = [[_mm256_setzero_pd(); CHANNELS]; 2];
-    for j in 0..used {
-        let [lo, hi] = load(start.ch[j], step.ch[j]);
-        (ch[0][j], ch[1][j]) = (lo, hi);
-    }
-    let (inv_w8, depth8) = (
-        _mm256_set1_pd(step.inv_w * n),
-        _mm256_set1_pd(step.depth * n),
-    );
-    let ch8 = step.ch.map(|x| _mm256_set1_pd(x * n));
-    let mut x = x0;
-    while x <= x1 {
-        let lanes_in = (x1 - x + 1).min(LANES as u32);
-        let mut ok = (1i32 << lanes_in) - 1;
-        for h in 0..2 {
-            let valid = _mm256_and_pd(
-                _mm256_cmp_pd::<_CMP_GT_OQ>(inv_w[h], _mm256_setzero_pd()),
-                _mm256_cmp_pd::<_CMP_LT_OQ>(inv_w[h], _mm256_set1_pd(f64::INFINITY)),
-            );
-            ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
-        }
-        if ok != 0 {
-            let mut channels = [[_mm256_setzero_pd(); CHANNELS]; 2];
-            for (h, f) in channels.iter_mut().enumerate() {
-                let w = match shading.mode {
-                    Interpolation::Perspective => {
-                        Some(_mm256_div_pd(_mm256_set1_pd(1.0), inv_w[h]))
-                    }
-                    Interpolation::Affine => None,
-                };
-                for j in 0..used {
-                    f[j] = match w {
-                        Some(w) => _mm256_mul_pd(ch[h][j], w),
-                        None => ch[h][j],
+        let mut x = x0;
+        while x <= x1 {
+            let lanes_in = (x1 - x + 1).min(LANES as u32);
+            let mut ok = (1i32 << lanes_in) - 1;
+            for h in 0..H {
+                let valid = _mm256_and_pd(
+                    _mm256_cmp_pd::<_CMP_GT_OQ>(inv_w[h], _mm256_setzero_pd()),
+                    _mm256_cmp_pd::<_CMP_LT_OQ>(inv_w[h], _mm256_set1_pd(f64::INFINITY)),
+                );
+                ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
+            }
+            if ok != 0 {
+                let mut channels = [[_mm256_setzero_pd(); CHANNELS]; H];
+                for (h, f) in channels.iter_mut().enumerate() {
+                    let w = match shading.mode {
+                        Interpolation::Perspective => {
+                            Some(_mm256_div_pd(_mm256_set1_pd(1.0), inv_w[h]))
+                        }
+                        Interpolation::Affine => None,
                     };
+                    for j in 0..used {
+                        f[j] = match w {
+                            Some(w) => _mm256_mul_pd(ch[h][j], w),
+                            None => ch[h][j],
+                        };
+                    }
+                }
+                let channel = |j: usize| to_f32(channels[0][j], channels[H - 1][j]);
+                let depths = [depth[0], depth[H - 1]];
+                let rgba = channel_colors::<13, WIDE>(depths, channel, shading.color);
+                let chunk = Pending {
+                    u: _mm256_setzero_ps(),
+                    v: _mm256_setzero_ps(),
+                    depth: to_f32(depth[0], depth[H - 1]),
+                    valid: mask_from_bits(ok),
+                    wire: 0,
+                    halo: 0,
+                    index: row + x as usize,
+                    lanes: None,
+                };
+                finish::<WIDE>(target, &chunk, rgba, None);
+            }
+            x += LANES as u32;
+            if x > x1 {
+                break;
+            }
+            // Only a span of more than eight pixels (so `H` = 2) gets here.
+            let (inv_w8, depth8) = (
+                _mm256_set1_pd(step.inv_w * n),
+                _mm256_set1_pd(step.depth * n),
+            );
+            for h in 0..H {
+                inv_w[h] = _mm256_add_pd(inv_w[h], inv_w8);
+                depth[h] = _mm256_add_pd(depth[h], depth8);
+                for j in 0..used {
+                    ch[h][j] = _mm256_add_pd(ch[h][j], _mm256_set1_pd(step.ch[j] * n));
                 }
             }
-            let channel = |j: usize| to_f32(channels[0][j], channels[1][j]);
-            let rgba = channel_colors::<13, WIDE>(depth, channel, shading.color);
-            let chunk = Pending {
-                u: _mm256_setzero_ps(),
-                v: _mm256_setzero_ps(),
-                depth: to_f32(depth[0], depth[1]),
-                valid: mask_from_bits(ok),
-                wire: 0,
-                halo: 0,
-                index: row + x as usize,
-                lanes: None,
-            };
-            // SAFETY: this module runs with AVX2.
-            unsafe { finish::<WIDE>(target, &chunk, rgba, None) };
         }
-        for h in 0..2 {
-            inv_w[h] = _mm256_add_pd(inv_w[h], inv_w8);
-            depth[h] = _mm256_add_pd(depth[h], depth8);
-            for j in 0..used {
-                ch[h][j] = _mm256_add_pd(ch[h][j], ch8[j]);
-            }
-        }
-        x += LANES as u32;
     }
 }
 
