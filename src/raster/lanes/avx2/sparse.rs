@@ -9,7 +9,7 @@
 
 use std::arch::x86_64::*;
 
-use super::super::{LANES, Stepped, Target};
+use super::super::{LANES, Target};
 use crate::raster::framebuffer::depth_passes;
 use crate::raster::setup::WeightPlanes;
 
@@ -80,33 +80,50 @@ impl Gathered {
 }
 
 /// Pixels of short spans of the scanline lanes waiting to be drawn as full chunks: each
-/// one's buffer index and stepped values (as the row path's lanes hold them).
-pub(super) struct SteppedGathered {
-    at: [i32; 2 * LANES],
-    /// `[u, v, 1/w, depth]` per pixel.
-    values: [[f64; 2 * LANES]; 4],
+/// one's column, row and place `k` in its span (the pixel's values are its span's start
+/// values after `k` single steps, as the row path's lane `k` holds them). The chunk computes
+/// them lane by lane from these ([`scanline`](super::scanline)); nothing is stepped or
+/// copied per pixel here.
+pub(super) struct SpanGathered {
+    x: [i32; 2 * LANES],
+    y: [i32; 2 * LANES],
+    k: [i32; 2 * LANES],
     len: usize,
 }
 
-impl SteppedGathered {
+impl SpanGathered {
     pub(super) fn new() -> Self {
         Self {
-            at: [0; 2 * LANES],
-            values: [[0.0; 2 * LANES]; 4],
+            x: [0; 2 * LANES],
+            y: [0; 2 * LANES],
+            k: [0; 2 * LANES],
             len: 0,
         }
     }
 
-    /// Adds the pixel at buffer index `at` with its stepped values.
+    /// Adds the span `x0..=x1` (at most [`LANES`] pixels) of row `y`. At most
+    /// `LANES - 1` pixels may be waiting (a full chunk is drawn before the next add).
     #[inline]
-    pub(super) fn add(&mut self, at: usize, s: &Stepped) {
-        if let Some(slot) = self.at.get_mut(self.len) {
-            *slot = at as i32;
-            for (v, x) in self.values.iter_mut().zip([s.u, s.v, s.inv_w, s.depth]) {
-                v[self.len] = x;
-            }
-            self.len += 1;
+    #[target_feature(enable = "avx2")]
+    pub(super) fn add(&mut self, x0: u32, x1: u32, y: u32) {
+        debug_assert!(x1 >= x0 && x1 - x0 < LANES as u32 && self.len < LANES);
+        let n = ((x1 - x0 + 1) as usize).min(LANES);
+        let at = self.len.min(LANES);
+        let k = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+        // SAFETY: unaligned stores of eight elements from `at <= LANES` in sixteen-element
+        // arrays (lanes beyond the span are written but not counted).
+        unsafe {
+            let put = |a: &mut [i32; 2 * LANES], v: __m256i| {
+                _mm256_storeu_si256(a.as_mut_ptr().add(at).cast(), v)
+            };
+            put(
+                &mut self.x,
+                _mm256_add_epi32(_mm256_set1_epi32(x0 as i32), k),
+            );
+            put(&mut self.y, _mm256_set1_epi32(y as i32));
+            put(&mut self.k, k);
         }
+        self.len = at + n;
     }
 
     /// Whether a full chunk is waiting.
@@ -121,30 +138,23 @@ impl SteppedGathered {
         self.len == 0
     }
 
-    /// Takes up to eight pixels: their buffer indices, their values as
-    /// `[lanes 0..4, lanes 4..8]` of `[u, v, 1/w, depth]`, and the lanes that hold one (the
-    /// other lanes hold stale values, which nobody writes). The rest moves to the front.
+    /// Takes up to eight pixels: their columns, rows and places in their spans as lanes,
+    /// and the lanes that hold one (lane k in bit k; the other lanes hold stale pixels,
+    /// which nobody writes). The rest (fewer than eight) moves to the front.
     #[inline]
     #[target_feature(enable = "avx2")]
-    pub(super) fn take(&mut self) -> (__m256i, [[__m256d; 4]; 2], i32) {
+    pub(super) fn take(&mut self) -> (__m256i, __m256i, __m256i, i32) {
         let n = self.len.min(LANES);
-        // SAFETY: unaligned loads and stores of elements 0..8 and 8..16 of sixteen-element
-        // arrays.
-        unsafe {
-            let at = self.at.as_mut_ptr().cast::<__m256i>();
-            let lanes = _mm256_loadu_si256(at);
-            _mm256_storeu_si256(at, _mm256_loadu_si256(at.add(1)));
-            let mut vals = [[_mm256_setzero_pd(); 4]; 2];
-            for (j, v) in self.values.iter_mut().enumerate() {
-                let p = v.as_mut_ptr();
-                vals[0][j] = _mm256_loadu_pd(p);
-                vals[1][j] = _mm256_loadu_pd(p.add(4));
-                _mm256_storeu_pd(p, _mm256_loadu_pd(p.add(8)));
-                _mm256_storeu_pd(p.add(4), _mm256_loadu_pd(p.add(12)));
-            }
-            self.len -= n;
-            (lanes, vals, (1 << n) - 1)
-        }
+        // SAFETY: unaligned loads and stores of the first and second eight elements of the
+        // sixteen-element arrays.
+        let [x, y, k] = [&mut self.x, &mut self.y, &mut self.k].map(|a| unsafe {
+            let p = a.as_mut_ptr().cast::<__m256i>();
+            let v = _mm256_loadu_si256(p);
+            _mm256_storeu_si256(p, _mm256_loadu_si256(p.add(1)));
+            v
+        });
+        self.len -= n;
+        (x, y, k, (1 << n) - 1)
     }
 }
 
