@@ -176,7 +176,17 @@ impl Constants {
     #[inline(always)]
     fn set_channels(&mut self, color: LaneColor, attribute: impl Fn(usize, Attribute) -> [f32; 3]) {
         // Channel values per vertex, as f64 (a plain array, so the match below inlines).
-        let of = |a: Attribute| [0, 1, 2].map(|k| attribute(k, a).map(f64::from));
+        // Loops, not `array::map`: that was left as a call in some builds (once per triangle).
+        let of = |a: Attribute| {
+            let mut out = [[0.0; 3]; 3];
+            for (k, o) in out.iter_mut().enumerate() {
+                let x = attribute(k, a);
+                for c in 0..3 {
+                    o[c] = f64::from(x[c]);
+                }
+            }
+            out
+        };
         let put = |channels: &mut [[f64; 3]; CHANNELS], first: usize, at: [[f64; 3]; 3]| {
             for (k, at) in at.iter().enumerate() {
                 for c in 0..3 {

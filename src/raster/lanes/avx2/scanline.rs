@@ -129,18 +129,24 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
                     f(&lanes[4 * h + 3]),
                 )
             };
-            // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8]
-            let mut vals = [0, 1].map(|h| {
+            // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8] (written out: `array::map` was
+            // left as a call).
+            let half = |h: usize| {
                 [
                     load(|s| s.u, h),
                     load(|s| s.v, h),
                     load(|s| s.inv_w, h),
                     load(|s| s.depth, h),
                 ]
-            });
-            let n = LANES as f64;
-            let step8 =
-                [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm256_set1_pd(x));
+            };
+            let mut vals = [half(0), half(1)];
+            let n = _mm256_set1_pd(LANES as f64);
+            let step8 = [
+                _mm256_mul_pd(_mm256_set1_pd(step.u), n),
+                _mm256_mul_pd(_mm256_set1_pd(step.v), n),
+                _mm256_mul_pd(_mm256_set1_pd(step.inv_w), n),
+                _mm256_mul_pd(_mm256_set1_pd(step.depth), n),
+            ];
             let mut x = x0;
             while x <= x1 {
                 let lanes_in = (x1 - x + 1).min(LANES as u32);
@@ -566,9 +572,11 @@ fn start_values<const N: usize, const UV: bool>(
         let l = sparse::weights4(&c.weights, sparse::centres(p.first), sparse::centres(p.y));
         // `Stepped::from_weights`: sums from zero, vertex by vertex.
         let scale = match mode {
-            Interpolation::Perspective => {
-                [0, 1, 2].map(|i| _mm256_mul_pd(l[i], _mm256_set1_pd(c.inv_w[i])))
-            }
+            Interpolation::Perspective => [
+                _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
+                _mm256_mul_pd(l[1], _mm256_set1_pd(c.inv_w[1])),
+                _mm256_mul_pd(l[2], _mm256_set1_pd(c.inv_w[2])),
+            ],
             Interpolation::Affine => l,
         };
         let sum = |w: &[__m256d; 3], a: &[f64; 3]| {
@@ -584,7 +592,7 @@ fn start_values<const N: usize, const UV: bool>(
             v: if UV { sum(&scale, &c.v) } else { zero },
             inv_w: sum(&l, &c.inv_w),
             depth: sum(&l, &c.depth),
-            ch: [0; N].map(|_| zero),
+            ch: [zero; N],
         };
         for j in 0..N {
             v.ch[j] = sum(&scale, &c.channels[j]);
