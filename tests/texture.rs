@@ -1,7 +1,10 @@
 //! Texture sampling against hand-computed texel rules (OpenGL 4.6, 8.14).
 
-use barylab::raster::texture::{BuiltinTexture, Filter, Texture, Wrap};
+use barylab::raster::texture::{
+    BuiltinTexture, Filter, Texture, Wrap, bilinear_weights, byte_from_sum,
+};
 use glam::Vec2;
+use proptest::prelude::*;
 
 fn seed_2x2() -> Texture {
     Texture::builtin(BuiltinTexture::Rgbw2x2)
@@ -160,4 +163,34 @@ proptest::proptest! {
         }
         proptest::prop_assert_eq!(t.sample_lod(uv, filter, wrap, lambda), sum.map(|c| c / 255.0));
     }
+}
+
+proptest! {
+    /// Four equal texel values `c` blended with any bilinear weights round back to `c` (the
+    /// sum's rounding error is about `c * 1e-6`): the vector lanes skip the alpha sum of an
+    /// opaque texture on this ground.
+    #[test]
+    fn bilinear_sum_of_equal_texels_rounds_to_the_texel(
+        a in 0.0f32..=1.0,
+        b in 0.0f32..=1.0,
+        c in 0u8..=255,
+    ) {
+        let w = bilinear_weights(a, b);
+        let x = f32::from(c);
+        let sum = ((w[0] * x + w[1] * x) + w[2] * x) + w[3] * x;
+        prop_assert_eq!(byte_from_sum(sum), c);
+    }
+}
+
+#[test]
+fn bilinear_alpha_of_an_opaque_texture_is_255() {
+    let t = Texture::builtin(BuiltinTexture::Noise);
+    assert!(t.is_opaque());
+    for k in 0..2000 {
+        let uv = Vec2::new(k as f32 * 0.000_731, k as f32 * 0.001_377 - 0.7);
+        let c = t.sample_rgba8(uv, Filter::Bilinear, Wrap::Repeat, 0.0);
+        assert_eq!(c[3], 255, "uv {uv}");
+    }
+    let clear = Texture::from_texels(1, 1, vec![[1, 2, 3, 254]]).expect("texture");
+    assert!(!clear.is_opaque());
 }

@@ -198,7 +198,11 @@ pub(super) fn sample16(
             let r = weighted::<0>(&weights, &texels);
             let g = weighted::<1>(&weights, &texels);
             let b = weighted::<2>(&weights, &texels);
-            let a = weighted::<3>(&weights, &texels);
+            let a = if s.opaque {
+                _mm512_set1_epi32(0xff)
+            } else {
+                weighted::<3>(&weights, &texels)
+            };
             _mm512_or_si512(
                 _mm512_or_si512(r, _mm512_slli_epi32::<8>(g)),
                 _mm512_or_si512(_mm512_slli_epi32::<16>(b), _mm512_slli_epi32::<24>(a)),

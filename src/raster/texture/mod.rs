@@ -90,6 +90,8 @@ pub struct Texture {
     texels: Vec<[u8; 4]>,
     /// Mipmap levels 1, 2, ... down to 1x1 (level 0 is the texture itself).
     mips: Vec<Level>,
+    /// Every texel's alpha is 255.
+    opaque: bool,
 }
 
 /// One mipmap level.
@@ -301,11 +303,13 @@ pub(crate) fn fast_floor(x: f32) -> f32 {
 impl Texture {
     fn new_with_mips(width: u32, height: u32, texels: Vec<[u8; 4]>) -> Self {
         let mips = mip_chain(width, height, &texels);
+        let opaque = texels.iter().all(|t| t[3] == u8::MAX);
         Self {
             width,
             height,
             texels,
             mips,
+            opaque,
         }
     }
 
@@ -374,6 +378,13 @@ impl Texture {
     /// The base level's texels, row `j` starting at `j * width` (bottom row first).
     pub fn base_texels(&self) -> &[[u8; 4]] {
         &self.texels
+    }
+
+    /// Whether every texel's alpha is 255 (then every filtered alpha is 255: a weighted sum
+    /// of equal values `c` with weights adding up to 1 is within `c * 1e-6` of `c`, and
+    /// rounds to it).
+    pub fn is_opaque(&self) -> bool {
+        self.opaque
     }
 
     /// The texel at column `i`, row `j` (row 0 at the bottom). Indices must be in range.

@@ -95,6 +95,9 @@ pub(in crate::raster::lanes) struct VecSampler<'a> {
     pub(in crate::raster::lanes) size: (f32, f32),
     pub(in crate::raster::lanes) wrap: (VecWrap, VecWrap),
     pub(in crate::raster::lanes) filter: Filter,
+    /// Every texel's alpha is 255 ([`Texture::is_opaque`]): bilinear filtering then skips
+    /// the alpha sum, whose result is 255.
+    pub(in crate::raster::lanes) opaque: bool,
 }
 
 impl<'a> VecSampler<'a> {
@@ -114,6 +117,7 @@ impl<'a> VecSampler<'a> {
                 VecWrap::new(LaneWrap::new(h, shading.wrap))?,
             ),
             filter: shading.filter,
+            opaque: texture.is_opaque(),
         })
     }
 }
@@ -312,7 +316,11 @@ pub(in crate::raster::lanes) fn sample<const SITE: u8, const WIDE: bool>(
             let r = weighted::<0>(&weights, &texels);
             let g = weighted::<1>(&weights, &texels);
             let b = weighted::<2>(&weights, &texels);
-            let a = weighted::<3>(&weights, &texels);
+            let a = if s.opaque {
+                _mm256_set1_epi32(0xff)
+            } else {
+                weighted::<3>(&weights, &texels)
+            };
             _mm256_or_si256(
                 _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
                 _mm256_or_si256(_mm256_slli_epi32::<16>(b), _mm256_slli_epi32::<24>(a)),
