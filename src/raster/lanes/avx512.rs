@@ -89,6 +89,50 @@ fn gather_pairs(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> (__m512i, __m512i
     )
 }
 
+/// The texels `(i, ja)`, `(i + 1, ja)`, `(i, jb)` and `(i + 1, jb)` of sixteen lanes whose
+/// rows `ja` and `jb` are each the same in every lane and whose columns `i` lie within 30 of
+/// the smallest (a row of a magnified or mildly minified texture): picked from 32
+/// consecutive texels of each row, read with two plain loads, instead of gathered. `None`
+/// when the lanes do not qualify (or the 32 texels would run past the texture's end). Every
+/// `i + 1` must be inside the row, as for [`gather_pairs`]; then the picked texels are the
+/// gathered ones.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn row_blocks(s: &VecSampler<'_>, i: __m512i, ja: __m512i, jb: __m512i) -> Option<[__m512i; 4]> {
+    let first = |v: __m512i| _mm_cvtsi128_si32(_mm512_castsi512_si128(v));
+    let (j0, j1) = (first(ja), first(jb));
+    if _mm512_cmpneq_epi32_mask(ja, _mm512_set1_epi32(j0)) != 0
+        || _mm512_cmpneq_epi32_mask(jb, _mm512_set1_epi32(j1)) != 0
+    {
+        return None;
+    }
+    let i0 = _mm512_reduce_min_epi32(i);
+    let d = _mm512_sub_epi32(i, _mm512_set1_epi32(i0));
+    if _mm512_cmpgt_epu32_mask(d, _mm512_set1_epi32(30)) != 0 {
+        return None;
+    }
+    // Wrapped indices: i0, j0 and j1 are within the texture, so not negative.
+    let start = |j: i32| j as usize * s.width as usize + i0 as usize;
+    let (a, b) = (start(j0), start(j1));
+    if a.max(b) + 32 > s.texels.len() {
+        return None;
+    }
+    // SAFETY: texels a..a + 32 and b..b + 32 are inside `texels` (checked just above); a
+    // texel is 4 bytes, read as one i32.
+    let [a_lo, a_hi, b_lo, b_hi] = unsafe {
+        let p = s.texels.as_ptr().cast::<i32>();
+        let load = |k: usize| _mm512_loadu_si512(p.add(k).cast());
+        [load(a), load(a + 16), load(b), load(b + 16)]
+    };
+    let d1 = _mm512_add_epi32(d, _mm512_set1_epi32(1));
+    Some([
+        _mm512_permutex2var_epi32(a_lo, d, a_hi),
+        _mm512_permutex2var_epi32(a_lo, d1, a_hi),
+        _mm512_permutex2var_epi32(b_lo, d, b_hi),
+        _mm512_permutex2var_epi32(b_lo, d1, b_hi),
+    ])
+}
+
 /// Channel `C` (0 = red) of sixteen packed texels, as f32 in 0..255.
 #[inline]
 #[target_feature(enable = "avx512f,avx512bw")]
@@ -175,9 +219,14 @@ pub(super) fn sample16(
             );
             let side_by_side = _mm512_cmpeq_epi32_mask(ib, _mm512_add_epi32(ia, one)) == 0xffff;
             let texels = if side_by_side {
-                let (t00, t10) = gather_pairs(s, ia, ja);
-                let (t01, t11) = gather_pairs(s, ia, jb);
-                [t00, t10, t01, t11]
+                match row_blocks(s, ia, ja, jb) {
+                    Some(t) => t,
+                    None => {
+                        let (t00, t10) = gather_pairs(s, ia, ja);
+                        let (t01, t11) = gather_pairs(s, ia, jb);
+                        [t00, t10, t01, t11]
+                    }
+                }
             } else {
                 [
                     gather(s, ia, ja),
