@@ -421,3 +421,48 @@ fn the_report_and_the_reasons_are_chinese_with_lang_zh() {
         "JSON is the same in every language"
     );
 }
+
+/// What a comparison reads of barylab's render (colour, coverage by triangle, both uvs) is the
+/// same from the fast path's render (`render_for_comparison`) as from the full render, with
+/// both rasterizers, so the comparison does not depend on which one made it.
+#[test]
+fn the_comparison_render_equals_the_full_render_where_a_comparison_reads_it() {
+    use barylab::compare::render_for_comparison;
+    use barylab::raster::render::Rasterizer;
+    let mut n = 0;
+    for name in [
+        "default.json",
+        "bench-1080p.json",
+        "corner-behind.json",
+        "vertex-colors.json",
+    ] {
+        let mut sc = Scene::load(Path::new(&scene(name))).expect("scene");
+        let (w, h) = sc.size();
+        sc.set_size(w.min(320), h.min(240));
+        let mesh = sc.to_mesh();
+        let tex = sc.load_texture(Path::new(&scene(""))).expect("texture");
+        for mode in [Interpolation::Affine, Interpolation::Perspective] {
+            for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
+                let s = RenderSettings {
+                    mode,
+                    rasterizer,
+                    ..sc.settings()
+                };
+                let full = render(&mesh, &tex, &s).expect("full render").frame;
+                let fast = render_for_comparison(&mesh, &tex, &s)
+                    .expect("fast render")
+                    .frame;
+                let what = format!("{name} {mode:?} {rasterizer:?}");
+                assert_eq!(fast.color, full.color, "{what}: colour");
+                assert_eq!(fast.triangle, full.triangle, "{what}: triangle");
+                assert_eq!(fast.uv_affine, full.uv_affine, "{what}: affine uv");
+                assert_eq!(
+                    fast.uv_perspective, full.uv_perspective,
+                    "{what}: perspective uv"
+                );
+                n += 1;
+            }
+        }
+    }
+    assert_eq!(n, 16);
+}

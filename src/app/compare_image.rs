@@ -5,7 +5,8 @@
 //! and first mismatched pixels, and for the pinned pixel the reason from [`crate::compare`].
 //!
 //! The comparison (a render, the comparison with its hypotheses' renders, the difference
-//! image: about a second at 1920x1080) runs in a background thread, as the Benchmark
+//! image: about 0.2 s at 1920x1080 with the fast path's renders, `compare::render_for_comparison`)
+//! runs in a background thread, as the Benchmark
 //! window's runs do ([`super::bench_panel`]): the window keeps showing the last result, with
 //! a "comparing…" note, until the new one arrives; a result for a scene that has changed
 //! since is dropped.
@@ -423,9 +424,9 @@ impl Work {
         }
         let tol = compare::DEFAULT_TOLERANCE;
         // One render for the comparison, the difference image and the pinned reasons.
-        let render = match crate::raster::render(&mesh, &self.texture, &self.settings) {
+        let render = match compare::render_for_comparison(&mesh, &self.texture, &self.settings) {
             Ok(r) => r,
-            Err(e) => return Some(Err(e.to_string())),
+            Err(e) => return Some(Err(e)),
         };
         if stopped() {
             return None;

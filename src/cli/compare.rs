@@ -46,8 +46,7 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
         settings,
     };
     let failed = |e: String| anyhow::anyhow!("{}: {e}", shown(&args.input.scene));
-    let render =
-        barylab::raster::render(&mesh, &texture, &settings).map_err(|e| failed(e.to_string()))?;
+    let render = compare::render_for_comparison(&mesh, &texture, &settings).map_err(failed)?;
     let c = compare::compare_rendered(&image, &reference, &render, by, args.tolerance)
         .map_err(failed)?;
     if let Some(o) = &args.output {

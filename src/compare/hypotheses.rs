@@ -201,9 +201,8 @@ pub fn try_all(
     };
     let render = |mesh: &crate::raster::ClipMesh, mode| {
         let settings = crate::raster::RenderSettings { mode, ..*s };
-        crate::raster::render(mesh, reference.texture, &settings)
+        super::render_for_comparison(mesh, reference.texture, &settings)
             .map(|r| Rendered::of(&r.frame))
-            .map_err(|e| e.to_string())
     };
     let other_rule = match s.tie_rule {
         TieRule::Llvmpipe => TieRule::TopLeft,
@@ -237,9 +236,8 @@ pub fn try_all(
     };
     add(
         Kind::OtherTieRule,
-        crate::raster::render(reference.mesh, reference.texture, &with_rule)
-            .map(|r| Rendered::of(&r.frame))
-            .map_err(|e| e.to_string())?,
+        super::render_for_comparison(reference.mesh, reference.texture, &with_rule)
+            .map(|r| Rendered::of(&r.frame))?,
     );
     // Sampling at (x, y) instead of (x + 0.5, y + 0.5) is the same as moving the geometry by
     // half a pixel the other way.

@@ -23,6 +23,28 @@ use crate::scene::Scene;
 /// Differing pixels listed with their reasons (all are counted).
 pub const LISTED: usize = 12;
 
+/// barylab's render of a mesh for a comparison: colour, the triangle and both uvs per pixel,
+/// everything a comparison reads, drawn by the fast path ([`Buffers::ColorDepthUv`]: the same
+/// values as the full render, `tests/fast_path.rs`), several times faster than the full
+/// render with every buffer. The render keeps no per-triangle record (the reasons probe the
+/// scene themselves).
+///
+/// [`Buffers::ColorDepthUv`]: crate::raster::Buffers::ColorDepthUv
+pub fn render_for_comparison(
+    mesh: &ClipMesh,
+    texture: &Texture,
+    settings: &RenderSettings,
+) -> Result<crate::raster::render::Render, String> {
+    let mut frame = crate::raster::Framebuffer::new(0, 0, settings.background);
+    let buffers = crate::raster::Buffers::ColorDepthUv;
+    crate::raster::render_into(&mut frame, mesh, texture, settings, buffers)
+        .map_err(|e| e.to_string())?;
+    Ok(crate::raster::render::Render {
+        frame,
+        triangles: Vec::new(),
+    })
+}
+
 /// Default tolerance: 8-bit levels one channel may differ by and still agree (two rasterizers
 /// that follow the same rules still round and filter a little differently: llvmpipe and
 /// barylab differ by up to 2 with bilinear filtering).
@@ -251,13 +273,12 @@ pub fn compare(
             theirs.width, theirs.height, s.width, s.height
         ));
     }
-    let render =
-        crate::raster::render(reference.mesh, reference.texture, s).map_err(|e| e.to_string())?;
+    let render = render_for_comparison(reference.mesh, reference.texture, s)?;
     compare_rendered(theirs, reference, &render, by, tolerance)
 }
 
-/// [`compare`] with barylab's render of `reference` already made (with all its buffers, as
-/// [`crate::raster::render()`] makes it), so that a caller who also needs the render or the
+/// [`compare`] with barylab's render of `reference` already made (by
+/// [`render_for_comparison`], or with all its buffers by [`crate::raster::render()`]), so that a caller who also needs the render or the
 /// [`difference_image_of`] renders once. The sizes must match.
 pub fn compare_rendered(
     theirs: &Image,
@@ -356,8 +377,7 @@ pub fn difference_image(
     by: CoverageBy,
     tolerance: u8,
 ) -> Result<image::RgbaImage, String> {
-    let render = crate::raster::render(reference.mesh, reference.texture, &reference.settings)
-        .map_err(|e| e.to_string())?;
+    let render = render_for_comparison(reference.mesh, reference.texture, &reference.settings)?;
     Ok(difference_image_of(theirs, &render.frame, by, tolerance))
 }
 

@@ -40,8 +40,7 @@ impl<'a> Context<'a> {
             mode,
             ..reference.settings
         };
-        let other = crate::raster::render(reference.mesh, reference.texture, &settings)
-            .map_err(|e| e.to_string())?;
+        let other = super::render_for_comparison(reference.mesh, reference.texture, &settings)?;
         Ok(Self {
             prober,
             render,
