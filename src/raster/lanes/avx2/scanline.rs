@@ -251,36 +251,11 @@ impl<'t> RowSpans<'t> {
 
 /// The chunks of one span with a non-texture colour (vertex colour, weights, depth, normal,
 /// Lambert): the channels are stepped like uv (divided by w when perspective-correct, then
-/// multiplied by `1 / (1/w)`), as the portable scanline lanes do. `step` is read only when
-/// the span is longer than one pixel.
+/// multiplied by `1 / (1/w)`), as the portable scanline lanes do. Spans of more than
+/// [`sparse::MAX_LANES`] pixels come here (shorter ones are gathered, `spans.rs`).
 #[inline]
 #[target_feature(enable = "avx2")]
 fn colour_span<const WIDE: bool>(
-    start: &Stepped,
-    step: &Stepped,
-    span: (usize, u32, u32),
-    consts: &Constants,
-    shading: &LaneShading,
-    target: &mut Target<'_>,
-) {
-    // A span of at most four pixels (most rows of a dense mesh) fills only the low half.
-    // SAFETY: this module runs with AVX2.
-    unsafe {
-        if span.2 - span.1 < 4 {
-            colour_chunks::<1, WIDE>(start, step, span, consts, shading, target);
-        } else {
-            colour_chunks::<2, WIDE>(start, step, span, consts, shading, target);
-        }
-    }
-}
-
-/// [`colour_span`]'s chunks with `H` halves of four lanes computed (1: a span of at most
-/// four pixels; the high half's lanes are then not written).
-///
-/// # Safety
-/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
-#[inline(always)]
-unsafe fn colour_chunks<const H: usize, const WIDE: bool>(
     start: &Stepped,
     step: &Stepped,
     (row, x0, x1): (usize, u32, u32),
@@ -288,8 +263,9 @@ unsafe fn colour_chunks<const H: usize, const WIDE: bool>(
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    // SAFETY: as the function's; the loads read lanes 0..8 of an eight-element array.
+    // SAFETY: this module runs with AVX2; the loads read lanes 0..8 of an eight-element array.
     unsafe {
+        const H: usize = 2;
         let used = consts.used_channels;
         // Lane k is the span's start after k single steps, as `Stepped::lanes` makes it (only
         // the values this colour reads, only the pixels of the span).
@@ -360,7 +336,7 @@ unsafe fn colour_chunks<const H: usize, const WIDE: bool>(
             if x > x1 {
                 break;
             }
-            // Only a span of more than eight pixels (so `H` = 2) gets here.
+            // Only a span of more than eight pixels gets here.
             let (inv_w8, depth8) = (
                 _mm256_set1_pd(step.inv_w * n),
                 _mm256_set1_pd(step.depth * n),

@@ -151,7 +151,7 @@ fn start_values<const N: usize, const UV: bool>(
     }
 }
 
-/// [`draw_spans`] for a non-texture colour reading `N` channels: as [`colour_chunks`].
+/// [`draw_spans`] for a non-texture colour reading `N` channels: as `colour_span`.
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
