@@ -79,7 +79,7 @@ pub struct Lessons {
     dialog: NativeDialog,
     /// The inspector sections the step opens, until the inspector has shown them.
     pub open_sections: Option<Vec<InspectorSection>>,
-    /// The plot's render with every buffer (`super::plots`).
+    /// The plot row rendered with every buffer (`super::plots`).
     pub row_render: super::plots::RowRender,
     /// The plot column hovered this frame.
     pub plot_hover: Option<u32>,

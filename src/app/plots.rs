@@ -18,7 +18,6 @@ use super::command::AppCommand;
 use super::state::Command;
 use crate::i18n::{Lang, tr};
 use crate::lesson::LessonPlot;
-use crate::raster::render::Render;
 use crate::raster::{Framebuffer, Interpolation, NO_TRIANGLE, Texture};
 
 /// Named lines of one plot: (catalogue key of the name, points).
@@ -156,33 +155,35 @@ pub fn plot_ui(
     out
 }
 
-/// The last render with every buffer, by the canvas render it repeats and the mode.
-pub type RowRender = Option<((u64, Interpolation), Arc<Render>)>;
+/// The last row rendered with every buffer (one row high), by the canvas render it repeats,
+/// the mode and the row.
+pub type RowRender = Option<((u64, Interpolation, u32), Arc<Framebuffer>)>;
 
 impl BaryApp {
-    /// The chosen plot's lines along the pinned row, from a render with every buffer of the
-    /// scene the canvas shows (made once per canvas render and mode; the canvas itself renders
-    /// colour and depth only).
+    /// The chosen plot's lines along the pinned row, from that row rendered with every buffer
+    /// (`raster::render_row`: the full render's values, made once per canvas render, mode and
+    /// row; the canvas itself renders colour and depth only).
     pub(super) fn row_plot(&mut self, texture: &Texture) -> Option<(u32, PlotLines)> {
         let plot = self.state.view.plot?;
         let [x, y] = self.state.view.pinned?;
         let output = self.canvas.output.as_ref()?;
         let mode = self.state.options().mode;
-        let key = (output.generation, mode);
-        let cached = match &self.lessons.row_render {
+        let mut settings = output.scene.settings();
+        if y >= settings.height || x >= settings.width {
+            return None;
+        }
+        let key = (output.generation, mode, y);
+        let row = match &self.lessons.row_render {
             Some((k, r)) if *k == key => r.clone(),
             _ => {
-                let mut settings = output.scene.settings();
                 settings.mode = mode;
-                let r = Arc::new(
-                    crate::raster::render(&output.scene.to_mesh(), texture, &settings).ok()?,
-                );
+                let mesh = output.scene.to_mesh();
+                let r = Arc::new(crate::raster::render_row(&mesh, texture, &settings, y).ok()?);
                 self.lessons.row_render = Some((key, r.clone()));
                 r
             }
         };
-        let frame = &cached.frame;
-        (y < frame.height && x < frame.width).then(|| (x, row_lines(frame, y, plot)))
+        Some((x, row_lines(&row, 0, plot)))
     }
 
     /// The plot window, when a plot is chosen outside a lesson (a lesson shows it in its

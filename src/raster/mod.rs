@@ -21,6 +21,6 @@ pub mod varying;
 
 pub use framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 pub use interpolate::Interpolation;
-pub use render::{ClipMesh, MeshVertex, RenderSettings, render, render_into};
+pub use render::{ClipMesh, MeshVertex, RenderSettings, render, render_into, render_row};
 pub use shade::Shading;
 pub use texture::{BuiltinTexture, Filter, Texture, Wrap};

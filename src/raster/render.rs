@@ -140,6 +140,44 @@ pub fn render(
     Ok(Render { frame, triangles })
 }
 
+/// Row `y` of [`render`]'s image, every buffer, as a framebuffer one row high: the same
+/// values (the same triangles in the same order, the same per-pixel code), for a plot of one
+/// row (the app's row plot) without rendering the other rows. A row outside the image is
+/// left clear.
+pub fn render_row(
+    mesh: &ClipMesh,
+    texture: &Texture,
+    settings: &RenderSettings,
+    y: u32,
+) -> Result<Framebuffer, RenderError> {
+    let row_settings = RenderSettings {
+        height: 1,
+        ..*settings
+    };
+    check_budget(mesh, &row_settings, Buffers::All)?;
+    let triangles = prepare_triangles(mesh, settings)?;
+    let params = shade_params(settings, &triangles);
+    let mut frame = Framebuffer::with_buffers(settings.width, 1, settings.background, Buffers::All);
+    let mut bands = RowBand::split(&mut frame, 1);
+    if let Some(band) = bands.first_mut() {
+        band.clear(settings.background);
+        band.y0 = y;
+        for tri in &triangles {
+            for setup in &tri.setups {
+                rasterize(
+                    setup,
+                    tri.source,
+                    texture,
+                    &params,
+                    settings.rasterizer,
+                    band,
+                );
+            }
+        }
+    }
+    Ok(frame)
+}
+
 /// Renders a clip-space mesh into `frame`, reusing its memory: the frame is resized to the
 /// settings' size, given `buffers`, cleared to the background and drawn, with the same pixels
 /// as [`render`]. It keeps no per-triangle record: every vertex is projected once and each
