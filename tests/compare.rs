@@ -5,6 +5,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+mod common;
+
 use barylab::compare::hypotheses::shifted;
 use barylab::raster::{Interpolation, RenderSettings, render};
 use barylab::scene::Scene;
@@ -428,41 +430,25 @@ fn the_report_and_the_reasons_are_chinese_with_lang_zh() {
 #[test]
 fn the_comparison_render_equals_the_full_render_where_a_comparison_reads_it() {
     use barylab::compare::render_for_comparison;
-    use barylab::raster::render::Rasterizer;
-    let mut n = 0;
-    for name in [
+    let names = [
         "default.json",
         "bench-1080p.json",
         "corner-behind.json",
         "vertex-colors.json",
-    ] {
-        let mut sc = Scene::load(Path::new(&scene(name))).expect("scene");
-        let (w, h) = sc.size();
-        sc.set_size(w.min(320), h.min(240));
-        let mesh = sc.to_mesh();
-        let tex = sc.load_texture(Path::new(&scene(""))).expect("texture");
-        for mode in [Interpolation::Affine, Interpolation::Perspective] {
-            for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
-                let s = RenderSettings {
-                    mode,
-                    rasterizer,
-                    ..sc.settings()
-                };
-                let full = render(&mesh, &tex, &s).expect("full render").frame;
-                let fast = render_for_comparison(&mesh, &tex, &s)
-                    .expect("fast render")
-                    .frame;
-                let what = format!("{name} {mode:?} {rasterizer:?}");
-                assert_eq!(fast.color, full.color, "{what}: colour");
-                assert_eq!(fast.triangle, full.triangle, "{what}: triangle");
-                assert_eq!(fast.uv_affine, full.uv_affine, "{what}: affine uv");
-                assert_eq!(
-                    fast.uv_perspective, full.uv_perspective,
-                    "{what}: perspective uv"
-                );
-                n += 1;
-            }
-        }
+    ];
+    let variants = common::scene_variants(&names, (320, 240));
+    for (what, mesh, tex, s) in &variants {
+        let full = render(mesh, tex, s).expect("full render").frame;
+        let fast = render_for_comparison(mesh, tex, s)
+            .expect("fast render")
+            .frame;
+        assert_eq!(fast.color, full.color, "{what}: colour");
+        assert_eq!(fast.triangle, full.triangle, "{what}: triangle");
+        assert_eq!(fast.uv_affine, full.uv_affine, "{what}: affine uv");
+        assert_eq!(
+            fast.uv_perspective, full.uv_perspective,
+            "{what}: perspective uv"
+        );
     }
-    assert_eq!(n, 16);
+    assert_eq!(variants.len(), 16);
 }

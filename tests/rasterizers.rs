@@ -140,59 +140,42 @@ proptest! {
 #[test]
 fn render_row_equals_the_full_renders_row() {
     use barylab::raster::render_row;
-    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes"));
-    let mut rows = 0;
-    for name in [
+    let names = [
         "default.json",
         "corner-behind.json",
         "clip-two-triangles.json",
         "vertex-colors.json",
-    ] {
-        let mut sc = Scene::load(&dir.join(name)).expect("scene");
-        let (w, h) = sc.size();
-        sc.set_size(w.min(200), h.min(150));
-        let (w, h) = sc.size();
-        let mesh = sc.to_mesh();
-        let tex = sc.load_texture(dir).expect("texture");
-        for mode in [Interpolation::Affine, Interpolation::Perspective] {
-            for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
-                let s = RenderSettings {
-                    mode,
-                    rasterizer,
-                    ..sc.settings()
-                };
-                let full = render(&mesh, &tex, &s).expect("render").frame;
-                for y in [0, h / 3, h / 2, h - 1] {
-                    let row = render_row(&mesh, &tex, &s, y).expect("row");
-                    let at = |f: &Framebuffer| {
-                        y as usize * f.width as usize..(y as usize + 1) * f.width as usize
-                    };
-                    let r = at(&full);
-                    let what = format!("{name} {mode:?} {rasterizer:?} row {y}");
-                    assert_eq!((row.width, row.height), (w, 1), "{what}");
-                    assert_eq!(row.color, full.color[r.clone()], "{what}: colour");
-                    assert_eq!(row.depth, full.depth[r.clone()], "{what}: depth");
-                    assert_eq!(row.triangle, full.triangle[r.clone()], "{what}: triangle");
-                    assert_eq!(
-                        row.uv_affine,
-                        full.uv_affine[r.clone()],
-                        "{what}: affine uv"
-                    );
-                    assert_eq!(
-                        row.uv_perspective,
-                        full.uv_perspective[r.clone()],
-                        "{what}: uv"
-                    );
-                    assert_eq!(row.inv_w, full.inv_w[r.clone()], "{what}: 1/w");
-                    assert_eq!(
-                        row.weights_screen,
-                        full.weights_screen[r.clone()],
-                        "{what}: weights"
-                    );
-                    assert_eq!(row.facing, full.facing[r], "{what}: facing");
-                    rows += 1;
-                }
-            }
+    ];
+    let mut rows = 0;
+    for (what, mesh, tex, s) in common::scene_variants(&names, (200, 150)) {
+        let full = render(&mesh, &tex, &s).expect("render").frame;
+        let (w, h) = (s.width, s.height);
+        for y in [0, h / 3, h / 2, h - 1] {
+            let row = render_row(&mesh, &tex, &s, y).expect("row");
+            let r = y as usize * w as usize..(y as usize + 1) * w as usize;
+            let what = format!("{what} row {y}");
+            assert_eq!((row.width, row.height), (w, 1), "{what}");
+            assert_eq!(row.color, full.color[r.clone()], "{what}: colour");
+            assert_eq!(row.depth, full.depth[r.clone()], "{what}: depth");
+            assert_eq!(row.triangle, full.triangle[r.clone()], "{what}: triangle");
+            assert_eq!(
+                row.uv_affine,
+                full.uv_affine[r.clone()],
+                "{what}: affine uv"
+            );
+            assert_eq!(
+                row.uv_perspective,
+                full.uv_perspective[r.clone()],
+                "{what}: uv"
+            );
+            assert_eq!(row.inv_w, full.inv_w[r.clone()], "{what}: 1/w");
+            assert_eq!(
+                row.weights_screen,
+                full.weights_screen[r.clone()],
+                "{what}: weights"
+            );
+            assert_eq!(row.facing, full.facing[r], "{what}: facing");
+            rows += 1;
         }
     }
     assert_eq!(rows, 64);

@@ -141,3 +141,33 @@ pub fn lattice_scene(extra: &str) -> String {
         triangles.join(", ")
     )
 }
+
+/// Sample scenes (`assets/scenes/NAME`), made at most `max` pixels in size, each in both
+/// interpolation modes with both rasterizers: `(what, mesh, texture, settings)`.
+pub fn scene_variants(
+    names: &[&str],
+    max: (u32, u32),
+) -> Vec<(String, ClipMesh, Texture, RenderSettings)> {
+    use barylab::raster::render::Rasterizer;
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes"));
+    let mut out = Vec::new();
+    for name in names {
+        let mut sc = barylab::scene::Scene::load(&dir.join(name)).expect("scene");
+        let (w, h) = sc.size();
+        sc.set_size(w.min(max.0), h.min(max.1));
+        let mesh = sc.to_mesh();
+        let tex = sc.load_texture(dir).expect("texture");
+        for mode in [Interpolation::Affine, Interpolation::Perspective] {
+            for rasterizer in [Rasterizer::EdgeFunction, Rasterizer::Scanline] {
+                let s = RenderSettings {
+                    mode,
+                    rasterizer,
+                    ..sc.settings()
+                };
+                let what = format!("{name} {mode:?} {rasterizer:?}");
+                out.push((what, mesh.clone(), tex.clone(), s));
+            }
+        }
+    }
+    out
+}
