@@ -1,10 +1,13 @@
 //! The texture lookup of the AVX2 lane paths for sixteen pixels at once (two eight-pixel
 //! chunks), with AVX-512: the same operations in the same order as `avx2::sample`, so the
-//! same bytes; used when the CPU has AVX-512 F and BW.
+//! same bytes; used when the CPU has AVX-512 F and BW. The scanline lanes' long spans of
+//! bilinear texture shading are drawn here sixteen pixels at a time ([`span16`]).
 
 use std::arch::x86_64::*;
 
+use super::Target;
 use super::avx2::{VecSampler, VecWrap};
+use crate::raster::interpolate::Interpolation;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD};
 
 /// `(floor(clamp(x)) as i32, floor(clamp(x)))` with NaN giving index 0, as `texel_floor`.
@@ -179,6 +182,16 @@ fn weighted<const C: i32>(weights: &[__m512; 4], texels: &[__m512i; 4]) -> __m51
     byte_from_sum(sum)
 }
 
+/// Two halves of eight `f32` lanes as one register of sixteen (`lo` in lanes 0..8).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn join(lo: __m256, hi: __m256) -> __m512 {
+    _mm512_castsi512_ps(_mm512_inserti64x4::<1>(
+        _mm512_castsi256_si512(_mm256_castps_si256(lo)),
+        _mm256_castps_si256(hi),
+    ))
+}
+
 /// The packed RGBA8 colours at sixteen uv (lanes 0..8 from `first`, 8..16 from `second`),
 /// as `avx2::sample` gives them for each half.
 #[target_feature(enable = "avx512f,avx512bw,avx2")]
@@ -187,15 +200,19 @@ pub(super) fn sample16(
     (u0, v0): (__m256, __m256),
     (u1, v1): (__m256, __m256),
 ) -> (__m256i, __m256i) {
-    let join = |a: __m256, b: __m256| {
-        _mm512_castsi512_ps(_mm512_inserti64x4::<1>(
-            _mm512_castsi256_si512(_mm256_castps_si256(a)),
-            _mm256_castps_si256(b),
-        ))
-    };
-    let (u, v) = (join(u0, u1), join(v0, v1));
+    let packed = sample16_packed(s, join(u0, u1), join(v0, v1));
+    (
+        _mm512_castsi512_si256(packed),
+        _mm512_extracti64x4_epi64::<1>(packed),
+    )
+}
+
+/// The packed RGBA8 colours at sixteen uv, as `avx2::sample` gives them for each half.
+#[inline]
+#[target_feature(enable = "avx512f,avx512bw,avx2")]
+fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i {
     let (w, h) = (_mm512_set1_ps(s.size.0), _mm512_set1_ps(s.size.1));
-    let packed = match s.filter {
+    match s.filter {
         Filter::Nearest => {
             let i = wrap(floor_coord(_mm512_mul_ps(u, w)).0, s.wrap.0);
             let j = wrap(floor_coord(_mm512_mul_ps(v, h)).0, s.wrap.1);
@@ -257,9 +274,90 @@ pub(super) fn sample16(
                 _mm512_or_si512(_mm512_slli_epi32::<16>(b), _mm512_slli_epi32::<24>(a)),
             )
         }
+    }
+}
+
+/// The chunks of one span of bilinear texture shading in the scanline lanes, sixteen pixels
+/// at a time, into a band without uv or difference buffers.
+///
+/// `vals` holds `[u/w, v/w, 1/w, depth]` of the span's first eight pixels (lane k: the
+/// start after k single steps) and `step8` eight increments of each. Lanes 0..8 of a pair
+/// are one eight-pixel chunk of `avx2::scanline::wide_span` and lanes 8..16 the next one,
+/// reached by the same additions of `step8` in the same order, so every pixel gets the same
+/// values, the same colour (the same lookup, [`sample16`]'s) and the same depth test
+/// (`framebuffer::depth_passes`: an ordered less-than) as there, written with masks.
+#[target_feature(enable = "avx2,avx512f,avx512bw,avx512dq,avx512vl")]
+pub(super) fn span16(
+    mut vals: [__m512d; 4],
+    step8: [__m512d; 4],
+    (row, x0, x1): (usize, u32, u32),
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    target: &mut Target<'_>,
+) {
+    // The lanes with a positive, finite 1/w (`wide_span`'s test).
+    let valid = |inv_w: __m512d| {
+        _mm512_cmp_pd_mask::<_CMP_GT_OQ>(inv_w, _mm512_setzero_pd())
+            & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(inv_w, _mm512_set1_pd(f64::INFINITY))
     };
-    (
-        _mm512_castsi512_si256(packed),
-        _mm512_extracti64x4_epi64::<1>(packed),
-    )
+    // uv of eight lanes: `(u/w) * (1 / (1/w))` when perspective-correct.
+    let uv = |q: &[__m512d; 4]| match mode {
+        Interpolation::Perspective => {
+            let w = _mm512_div_pd(_mm512_set1_pd(1.0), q[2]);
+            (
+                _mm512_cvtpd_ps(_mm512_mul_pd(q[0], w)),
+                _mm512_cvtpd_ps(_mm512_mul_pd(q[1], w)),
+            )
+        }
+        Interpolation::Affine => (_mm512_cvtpd_ps(q[0]), _mm512_cvtpd_ps(q[1])),
+    };
+    let advance = |q: &[__m512d; 4]| {
+        [
+            _mm512_add_pd(q[0], step8[0]),
+            _mm512_add_pd(q[1], step8[1]),
+            _mm512_add_pd(q[2], step8[2]),
+            _mm512_add_pd(q[3], step8[3]),
+        ]
+    };
+    let mut x = x0;
+    while x <= x1 {
+        let next = advance(&vals);
+        let left = x1 - x + 1;
+        let span = if left >= 16 {
+            u16::MAX
+        } else {
+            ((1u32 << left) - 1) as u16
+        };
+        let ok = span & (u16::from(valid(vals[2])) | u16::from(valid(next[2])) << 8);
+        if ok != 0 {
+            let (u0, v0) = uv(&vals);
+            let (u1, v1) = uv(&next);
+            let depth = join(_mm512_cvtpd_ps(vals[3]), _mm512_cvtpd_ps(next[3]));
+            let rgba = sample16_packed(sampler, join(u0, u1), join(v0, v1));
+            write16(target, row + x as usize, ok, depth, rgba);
+        }
+        vals = advance(&next);
+        x += 16;
+    }
+}
+
+/// Depth-tests and writes the lanes of `ok` among sixteen pixels from buffer index `index` of
+/// a band without uv or difference buffers; other lanes are neither read nor written.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn write16(target: &mut Target<'_>, index: usize, ok: u16, depth: __m512, rgba: __m512i) {
+    debug_assert!(target.uv.is_none() && target.difference.is_none());
+    let end = index + (16 - ok.leading_zeros()) as usize;
+    debug_assert!(end <= target.depth.len() && target.depth.len() == target.color.len());
+    // SAFETY: the caller's `ok` enables only pixels of the span, inside the band's row, so
+    // every accessed element `index + k` is in both slices; masked loads and stores touch no
+    // other lane.
+    unsafe {
+        let dp = target.depth.as_mut_ptr().add(index);
+        let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
+        let old = _mm512_maskz_loadu_ps(ok, dp);
+        let pass = _mm512_mask_cmp_ps_mask::<_CMP_LT_OQ>(ok, depth, old);
+        _mm512_mask_storeu_ps(dp, pass, depth);
+        _mm512_mask_storeu_epi32(cp, pass, rgba);
+    }
 }
