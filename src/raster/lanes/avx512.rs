@@ -1,7 +1,7 @@
 //! The texture lookup of the AVX2 lane paths for sixteen pixels at once (two eight-pixel
 //! chunks), with AVX-512: the same operations in the same order as `avx2::sample`, so the
 //! same bytes; used when the CPU has AVX-512 F and BW. The scanline lanes' long spans of
-//! bilinear texture shading are drawn here sixteen pixels at a time ([`span16`]).
+//! texture shading are drawn here sixteen pixels at a time ([`span16`]).
 
 use std::arch::x86_64::*;
 
@@ -277,8 +277,8 @@ fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i {
     }
 }
 
-/// The chunks of one span of bilinear texture shading in the scanline lanes, sixteen pixels
-/// at a time, into a band without uv or difference buffers.
+/// The chunks of one span of texture shading (nearest or bilinear) in the scanline lanes,
+/// sixteen pixels at a time, into a band without uv or difference buffers.
 ///
 /// `vals` holds `[u/w, v/w, 1/w, depth]` of the span's first eight pixels (lane k: the
 /// start after k single steps) and `step8` eight increments of each. Lanes 0..8 of a pair

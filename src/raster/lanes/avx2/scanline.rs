@@ -387,7 +387,6 @@ fn wide_span<const WIDE: bool>(
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm512_set1_pd(x));
     if WIDE
-        && sampler.filter != Filter::Nearest
         && target.uv.is_none()
         && target.difference.is_none()
     {
