@@ -36,8 +36,9 @@
 //! triangles ([`Lanes`]): AVX2 intrinsics
 //! (`avx2.rs`), compiled a second time for AVX-512 when the CPU has it (32 registers, mask
 //! registers; row chunks of texture shading in one 512-bit register, `avx2/wide.rs`; bilinear
-//! texture lookups of two chunks, sixteen pixels, at once, `avx512.rs`), and portable lane code (plain arrays,
-//! compiled with AVX2 enabled where available). No fused multiply-add is used anywhere, so
+//! texture lookups of two chunks, sixteen pixels, at once, and the scanline lanes' long texture
+//! spans sixteen pixels at a time, `avx512.rs`), and portable lane code (plain arrays, compiled
+//! with AVX2 enabled where available). No fused multiply-add is used anywhere, so
 //! every build rounds identically; `tests/fast_path.rs` compares them all with the full
 //! render.
 

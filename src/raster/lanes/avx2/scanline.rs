@@ -386,10 +386,7 @@ fn wide_span<const WIDE: bool>(
     ];
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm512_set1_pd(x));
-    if WIDE
-        && target.uv.is_none()
-        && target.difference.is_none()
-    {
+    if WIDE && target.uv.is_none() && target.difference.is_none() {
         // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ (`wide_path`).
         unsafe { super::super::avx512::span16(vals, step8, (row, x0, x1), mode, sampler, target) };
         return;
