@@ -304,6 +304,11 @@ fn block_rows<const WIDE: bool>(
     let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
     // Row chunks in one AVX-512 register each (see `wide`).
     let wide_rows = WIDE && wide::applies(consts, color, sampler, target);
+    // Rows of a block inside the triangle in pairs of sixteen lanes (see `wide::texture_pair`).
+    let pairs = match sampler {
+        Some(s) if WIDE && wide::pairs_apply(consts, color, sampler, target) => Some(s),
+        _ => None,
+    };
     let mut by = y_start;
     while by <= y_end {
         let by_end = (by + BLOCK_ROWS - 1).min(y_end);
@@ -318,6 +323,38 @@ fn block_rows<const WIDE: bool>(
             if block != Block::Outside {
                 let lanes_in = (x1 - bx + 1).min(LANES as u32);
                 let in_row = (1i32 << lanes_in) - 1;
+                if let Some(sampler) = pairs
+                    && block == Block::Inside
+                    && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
+                {
+                    // Every row of the block is `in_row`; a last row without a partner is
+                    // paired with nothing (its lanes enabled in no pixel).
+                    let px = f64::from(bx) + 0.5;
+                    let mut y = by;
+                    while y <= by_end {
+                        // (Written out: `array::map` with these closures was left as calls.)
+                        let weights = |y: u32| {
+                            let py = f64::from(y) + 0.5;
+                            let w = &consts.weights;
+                            let row = [w.row_term(0, py), w.row_term(1, py), w.row_term(2, py)];
+                            // SAFETY: `pairs` is set only when `WIDE`, which is set only when
+                            // the CPU has AVX-512 F, BW, VL and DQ.
+                            unsafe { wide::row_weights(w, &row, px) }
+                        };
+                        let l = [weights(y), weights(y + 1)];
+                        let at =
+                            |y: u32| (y - target.y0) as usize * target.width as usize + bx as usize;
+                        let index = [at(y), at((y + 1).min(by_end))];
+                        let covered = [in_row, if y < by_end { in_row } else { 0 }];
+                        // SAFETY: as above.
+                        unsafe {
+                            wide::texture_pair(l, consts, covered, index, mode, sampler, target)
+                        };
+                        y += 2;
+                    }
+                    bx += LANES as u32;
+                    continue;
+                }
                 for y in by..=by_end {
                     let base = planes.at(i64::from(y), i64::from(bx));
                     let mut lo = [_mm256_setzero_pd(); 3];

@@ -185,7 +185,7 @@ fn weighted<const C: i32>(weights: &[__m512; 4], texels: &[__m512i; 4]) -> __m51
 /// Two halves of eight `f32` lanes as one register of sixteen (`lo` in lanes 0..8).
 #[inline]
 #[target_feature(enable = "avx512f")]
-fn join(lo: __m256, hi: __m256) -> __m512 {
+pub(super) fn join(lo: __m256, hi: __m256) -> __m512 {
     _mm512_castsi512_ps(_mm512_inserti64x4::<1>(
         _mm512_castsi256_si512(_mm256_castps_si256(lo)),
         _mm256_castps_si256(hi),
@@ -210,7 +210,7 @@ pub(super) fn sample16(
 /// The packed RGBA8 colours at sixteen uv, as `avx2::sample` gives them for each half.
 #[inline]
 #[target_feature(enable = "avx512f,avx512bw,avx2")]
-fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i {
+pub(super) fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i {
     let (w, h) = (_mm512_set1_ps(s.size.0), _mm512_set1_ps(s.size.1));
     match s.filter {
         Filter::Nearest => {
@@ -359,5 +359,58 @@ fn write16(target: &mut Target<'_>, index: usize, ok: u16, depth: __m512, rgba: 
         let pass = _mm512_mask_cmp_ps_mask::<_CMP_LT_OQ>(ok, depth, old);
         _mm512_mask_storeu_ps(dp, pass, depth);
         _mm512_mask_storeu_epi32(cp, pass, rgba);
+    }
+}
+
+/// [`write16`] for two rows of eight pixels: lanes 0..8 from buffer index `index[0]`, lanes
+/// 8..16 from `index[1]` (the edge-function lanes' row pairs, `avx2::wide::texture_pair`).
+#[inline]
+#[target_feature(enable = "avx512f,avx512vl,avx512dq")]
+pub(super) fn write_rows(
+    target: &mut Target<'_>,
+    index: [usize; 2],
+    ok: u16,
+    depth: __m512,
+    rgba: __m512i,
+) {
+    debug_assert!(target.uv.is_none() && target.difference.is_none());
+    let depths = [
+        _mm512_castps512_ps256(depth),
+        _mm512_extractf32x8_ps::<1>(depth),
+    ];
+    let colours = [
+        _mm512_castsi512_si256(rgba),
+        _mm512_extracti64x4_epi64::<1>(rgba),
+    ];
+    for h in 0..2 {
+        let k = (ok >> (8 * h)) as u8;
+        if k == 0 {
+            continue;
+        }
+        let end = index[h] + (8 - k.leading_zeros()) as usize;
+        debug_assert!(end <= target.depth.len() && target.depth.len() == target.color.len());
+        // SAFETY: the caller's `ok` enables only pixels of the row inside the band, so every
+        // accessed element `index[h] + k` is in both slices; masked loads and stores touch no
+        // other lane.
+        unsafe {
+            let dp = target.depth.as_mut_ptr().add(index[h]);
+            let cp = target.color.as_mut_ptr().add(index[h]).cast::<i32>();
+            if k == 0xff {
+                let old = _mm256_loadu_ps(dp);
+                let pass = _mm256_cmp_ps_mask::<_CMP_LT_OQ>(depths[h], old);
+                _mm256_storeu_ps(dp, _mm256_mask_blend_ps(pass, old, depths[h]));
+                let c = if pass == 0xff {
+                    colours[h]
+                } else {
+                    _mm256_mask_blend_epi32(pass, _mm256_loadu_si256(cp.cast()), colours[h])
+                };
+                _mm256_storeu_si256(cp.cast(), c);
+                continue;
+            }
+            let old = _mm256_maskz_loadu_ps(k, dp);
+            let pass = _mm256_mask_cmp_ps_mask::<_CMP_LT_OQ>(k, depths[h], old);
+            _mm256_mask_storeu_ps(dp, pass, depths[h]);
+            _mm256_mask_storeu_epi32(cp, pass, colours[h]);
+        }
     }
 }

@@ -126,3 +126,67 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
     chunk.v = _mm512_cvtpd_ps(dot3(&weights, consts.v));
     lookups.push::<SITE, WIDE>(sampler, target, chunk, None);
 }
+
+/// Whether [`texture_pair`] can draw a triangle's rows: texture shading without the wireframe
+/// or any extra buffer (not the difference view's).
+#[inline]
+pub(super) fn pairs_apply(
+    consts: &Constants,
+    color: LaneColor,
+    sampler: Option<&VecSampler<'_>>,
+    target: &Target<'_>,
+) -> bool {
+    target.difference.is_none() && applies(consts, color, sampler, target)
+}
+
+/// Two row chunks of eight pixels (rows `y` and `y + 1` of one block, screen weights `l[0]`
+/// and `l[1]`, buffer indices `index`) drawn as one chunk of sixteen: each row gets
+/// [`texture_chunk`]'s operations lane for lane, then one sixteen-lane texture lookup (the
+/// lookup a pair of chunks gets in `Lookups`), and a masked depth test and write per row.
+/// [`pairs_apply`] must hold.
+#[inline]
+#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
+pub(super) fn texture_pair(
+    l: [[__m512d; 3]; 2],
+    consts: &Constants,
+    covered: [i32; 2],
+    index: [usize; 2],
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    target: &mut Target<'_>,
+) {
+    let mut ok = 0u16;
+    let mut u = [_mm256_setzero_ps(); 2];
+    let mut v = [_mm256_setzero_ps(); 2];
+    let mut depth = [_mm256_setzero_ps(); 2];
+    for h in 0..2 {
+        let l = &l[h];
+        // q_i = l_i / w_i, valid where their sum is positive and finite.
+        let q_i = |i: usize| _mm512_mul_pd(l[i], _mm512_set1_pd(consts.inv_w[i]));
+        let q = [q_i(0), q_i(1), q_i(2)];
+        let sum = _mm512_add_pd(_mm512_add_pd(q[0], q[1]), q[2]);
+        let valid = _mm512_cmp_pd_mask::<_CMP_GT_OQ>(sum, _mm512_setzero_pd())
+            & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(sum, _mm512_set1_pd(f64::INFINITY));
+        ok |= ((covered[h] as u16) & u16::from(valid) & 0xff) << (8 * h);
+        depth[h] = _mm512_cvtpd_ps(dot3(l, consts.depth));
+        let weights = match mode {
+            Interpolation::Perspective => {
+                let inv = _mm512_div_pd(_mm512_set1_pd(1.0), sum);
+                [
+                    _mm512_mul_pd(q[0], inv),
+                    _mm512_mul_pd(q[1], inv),
+                    _mm512_mul_pd(q[2], inv),
+                ]
+            }
+            Interpolation::Affine => *l,
+        };
+        u[h] = _mm512_cvtpd_ps(dot3(&weights, consts.u));
+        v[h] = _mm512_cvtpd_ps(dot3(&weights, consts.v));
+    }
+    if ok == 0 {
+        return;
+    }
+    use super::super::avx512::{join, sample16_packed, write_rows};
+    let rgba = sample16_packed(sampler, join(u[0], u[1]), join(v[0], v[1]));
+    write_rows(target, index, ok, join(depth[0], depth[1]), rgba);
+}
