@@ -327,31 +327,18 @@ fn block_rows<const WIDE: bool>(
                     && block == Block::Inside
                     && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
                 {
-                    // Every row of the block is `in_row`; a last row without a partner is
-                    // paired with nothing (its lanes enabled in no pixel).
-                    let px = f64::from(bx) + 0.5;
-                    let mut y = by;
-                    while y <= by_end {
-                        // (Written out: `array::map` with these closures was left as calls.)
-                        let weights = |y: u32| {
-                            let py = f64::from(y) + 0.5;
-                            let w = &consts.weights;
-                            let row = [w.row_term(0, py), w.row_term(1, py), w.row_term(2, py)];
-                            // SAFETY: `pairs` is set only when `WIDE`, which is set only when
-                            // the CPU has AVX-512 F, BW, VL and DQ.
-                            unsafe { wide::row_weights(w, &row, px) }
-                        };
-                        let l = [weights(y), weights(y + 1)];
-                        let at =
-                            |y: u32| (y - target.y0) as usize * target.width as usize + bx as usize;
-                        let index = [at(y), at((y + 1).min(by_end))];
-                        let covered = [in_row, if y < by_end { in_row } else { 0 }];
-                        // SAFETY: as above.
-                        unsafe {
-                            wide::texture_pair(l, consts, covered, index, mode, sampler, target)
-                        };
-                        y += 2;
-                    }
+                    // SAFETY: `pairs` is set only when `WIDE`, which is set only when the CPU
+                    // has AVX-512 F, BW, VL and DQ.
+                    unsafe {
+                        wide::inside_block(
+                            consts,
+                            (bx, in_row),
+                            (by, by_end),
+                            mode,
+                            sampler,
+                            target,
+                        )
+                    };
                     bx += LANES as u32;
                     continue;
                 }
