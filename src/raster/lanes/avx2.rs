@@ -30,6 +30,8 @@ mod write;
 pub(super) use scanline::scanline_triangle;
 use shade::channel_colors;
 use texture::Lookups;
+#[cfg(test)]
+pub(super) use texture::byte_from_sum;
 pub(super) use texture::{VecSampler, VecWrap};
 use write::{finish, mask_from_bits};
 

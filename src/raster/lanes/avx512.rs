@@ -431,32 +431,55 @@ mod tests {
 
     use crate::raster::texture::byte_from_sum;
 
-    /// Every float from 0 to 255.001 (the range of a bilinear sum) rounds as the scalar code
-    /// rounds it, sixteen at a time.
-    #[test]
-    fn byte_from_sum_rounds_every_float_of_a_bilinear_sum_as_the_scalar_code() {
-        if !(is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx2")) {
-            return;
-        }
+    /// The floats from 0 to 255.001 (the range of a bilinear sum) that `round` rounds
+    /// differently from the scalar code (at most ten), sixteen at a time.
+    fn wrong_roundings(round: impl Fn(&[f32; 16]) -> [i32; 16]) -> Vec<(f32, i32)> {
         let last = 255.001f32.to_bits();
         let mut wrong = Vec::new();
         let mut bits = 0u32;
         while bits <= last && wrong.len() < 10 {
             let xs: [f32; 16] =
                 std::array::from_fn(|k| f32::from_bits((bits + k as u32).min(last)));
-            let mut out = [0i32; 16];
-            // SAFETY: the CPU has AVX-512 F (checked above); 16 lanes in and out.
-            unsafe {
-                let v = super::byte_from_sum(_mm512_loadu_ps(xs.as_ptr()));
-                _mm512_storeu_si512(out.as_mut_ptr().cast(), v);
-            }
-            for (x, got) in xs.iter().zip(out) {
+            for (x, got) in xs.iter().zip(round(&xs)) {
                 if got != i32::from(byte_from_sum(*x)) {
                     wrong.push((*x, got));
                 }
             }
             bits += 16;
         }
-        assert!(wrong.is_empty(), "rounded differently: {wrong:?}");
+        wrong
+    }
+
+    /// Every float from 0 to 255.001 rounds to the byte the scalar code gives, in the AVX-512
+    /// and in the AVX2 lanes (each checked where the CPU has it).
+    #[test]
+    fn every_bilinear_sum_rounds_as_the_scalar_code() {
+        if is_x86_feature_detected!("avx512f") {
+            let wrong = wrong_roundings(|xs| {
+                let mut out = [0i32; 16];
+                // SAFETY: the CPU has AVX-512 F (checked above); 16 lanes in and out.
+                unsafe {
+                    let v = super::byte_from_sum(_mm512_loadu_ps(xs.as_ptr()));
+                    _mm512_storeu_si512(out.as_mut_ptr().cast(), v);
+                }
+                out
+            });
+            assert!(wrong.is_empty(), "AVX-512 rounded differently: {wrong:?}");
+        }
+        if is_x86_feature_detected!("avx2") {
+            let wrong = wrong_roundings(|xs| {
+                let mut out = [0i32; 16];
+                for h in 0..2 {
+                    // SAFETY: the CPU has AVX2 (checked above); 8 lanes in and out.
+                    unsafe {
+                        let x = _mm256_loadu_ps(xs[8 * h..].as_ptr());
+                        let v = super::super::avx2::byte_from_sum(x);
+                        _mm256_storeu_si256(out[8 * h..].as_mut_ptr().cast(), v);
+                    }
+                }
+                out
+            });
+            assert!(wrong.is_empty(), "AVX2 rounded differently: {wrong:?}");
+        }
     }
 }
