@@ -1,7 +1,8 @@
 //! The texture lookup of the AVX2 lane paths for sixteen pixels at once (two eight-pixel
 //! chunks), with AVX-512: the same operations in the same order as `avx2::sample`, so the
-//! same bytes; used when the CPU has AVX-512 F and BW. The scanline lanes' long spans of
-//! texture shading are drawn here sixteen pixels at a time ([`span16`]).
+//! same bytes; used when the CPU has AVX-512 F, BW, VL and DQ. The scanline lanes' long spans
+//! of texture shading are drawn here sixteen pixels at a time ([`span16`]), and the
+//! edge-function lanes' row pairs are written here ([`write_rows`]).
 
 use std::arch::x86_64::*;
 
@@ -292,10 +293,11 @@ pub(super) fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m51
 ///
 /// `vals` holds `[u/w, v/w, 1/w, depth]` of the span's first eight pixels (lane k: the
 /// start after k single steps) and `step8` eight increments of each. Lanes 0..8 of a pair
-/// are one eight-pixel chunk of `avx2::scanline::wide_span` and lanes 8..16 the next one,
-/// reached by the same additions of `step8` in the same order, so every pixel gets the same
-/// values, the same colour (the same lookup, [`sample16`]'s) and the same depth test
-/// (`framebuffer::depth_passes`: an ordered less-than) as there, written with masks.
+/// are one eight-pixel chunk of the AVX2 scanline lanes (`avx2::scanline::stepped_chunk`'s
+/// operations, lane for lane) and lanes 8..16 the next one, reached by the same additions of
+/// `step8` in the same order, so every pixel gets the same values, the same colour (the same
+/// lookup as [`sample16`]) and the same depth test (`framebuffer::depth_passes`: an ordered
+/// less-than), written with masks.
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512dq,avx512vl")]
 pub(super) fn span16(
     mut vals: [__m512d; 4],
@@ -305,7 +307,7 @@ pub(super) fn span16(
     sampler: &VecSampler<'_>,
     target: &mut Target<'_>,
 ) {
-    // The lanes with a positive, finite 1/w (`wide_span`'s test).
+    // The lanes with a positive, finite 1/w (`stepped_chunk`'s test).
     let valid = |inv_w: __m512d| {
         _mm512_cmp_pd_mask::<_CMP_GT_OQ>(inv_w, _mm512_setzero_pd())
             & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(inv_w, _mm512_set1_pd(f64::INFINITY))

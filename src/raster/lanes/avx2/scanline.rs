@@ -115,15 +115,9 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
             let lanes = Stepped::lanes(start, &step);
             if WIDE {
-                wide_span::<WIDE>(
-                    &lanes,
-                    &step,
-                    (row, x0, x1),
-                    mode,
-                    sampler,
-                    &mut lookups,
-                    target,
-                );
+                // (The function's unsafe block covers this: `WIDE` is set only when the CPU
+                // has AVX-512 F, BW, VL and DQ, `wide_path`.)
+                wide_span(&lanes, &step, (row, x0, x1), mode, sampler, target);
                 continue;
             }
             let load = |f: fn(&Stepped) -> f64, h: usize| {
@@ -352,20 +346,25 @@ fn colour_span<const WIDE: bool>(
     }
 }
 
-/// The chunks of one span with the eight `f64` lanes in one AVX-512 register: the operations
-/// of [`stepped_chunk`], lane for lane, so the same values.
-#[allow(clippy::too_many_arguments)]
+/// The chunks of one span of texture shading with AVX-512 (into a band without uv or
+/// difference buffers, as every scanline band is): the `f64` values of the span's first eight
+/// pixels in one register each, and their increments over eight pixels, for
+/// [`avx512::span16`](super::super::avx512::span16), which draws the span sixteen pixels at a
+/// time with the operations of [`stepped_chunk`], lane for lane, so the same values.
+///
+/// # Safety
+/// The CPU has AVX2 and AVX-512 F, BW, VL and DQ.
 #[inline]
 #[target_feature(enable = "avx2,avx512f,avx512dq")]
-fn wide_span<const WIDE: bool>(
+unsafe fn wide_span(
     lanes: &[Stepped; LANES],
     step: &Stepped,
     (row, x0, x1): (usize, u32, u32),
     mode: Interpolation,
     sampler: &VecSampler<'_>,
-    lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
+    debug_assert!(target.uv.is_none() && target.difference.is_none());
     let load = |f: fn(&Stepped) -> f64| {
         _mm512_setr_pd(
             f(&lanes[0]),
@@ -378,7 +377,7 @@ fn wide_span<const WIDE: bool>(
             f(&lanes[7]),
         )
     };
-    let mut vals = [
+    let vals = [
         load(|s| s.u),
         load(|s| s.v),
         load(|s| s.inv_w),
@@ -386,42 +385,8 @@ fn wide_span<const WIDE: bool>(
     ];
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm512_set1_pd(x));
-    if WIDE && target.uv.is_none() && target.difference.is_none() {
-        // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ (`wide_path`).
-        unsafe { super::super::avx512::span16(vals, step8, (row, x0, x1), mode, sampler, target) };
-        return;
-    }
-    let mut x = x0;
-    while x <= x1 {
-        let lanes_in = (x1 - x + 1).min(LANES as u32);
-        let valid = _mm512_cmp_pd_mask::<_CMP_GT_OQ>(vals[2], _mm512_setzero_pd())
-            & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(vals[2], _mm512_set1_pd(f64::INFINITY));
-        let ok = ((1i32 << lanes_in) - 1) & i32::from(valid);
-        if ok != 0 {
-            let (u, v) = match mode {
-                Interpolation::Perspective => {
-                    let w = _mm512_div_pd(_mm512_set1_pd(1.0), vals[2]);
-                    (_mm512_mul_pd(vals[0], w), _mm512_mul_pd(vals[1], w))
-                }
-                Interpolation::Affine => (vals[0], vals[1]),
-            };
-            let chunk = Pending {
-                u: _mm512_cvtpd_ps(u),
-                v: _mm512_cvtpd_ps(v),
-                depth: _mm512_cvtpd_ps(vals[3]),
-                valid: mask_from_bits(ok),
-                wire: 0,
-                halo: 0,
-                index: row + x as usize,
-                lanes: None,
-            };
-            lookups.push::<10, WIDE>(sampler, target, chunk, None);
-        }
-        for (q, s) in vals.iter_mut().zip(&step8) {
-            *q = _mm512_add_pd(*q, *s);
-        }
-        x += LANES as u32;
-    }
+    // SAFETY: as the function's.
+    unsafe { super::super::avx512::span16(vals, step8, (row, x0, x1), mode, sampler, target) };
 }
 
 /// uv, depth and the lanes to write of one chunk of the scanline lanes from its stepped
