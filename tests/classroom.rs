@@ -191,21 +191,34 @@ fn presentation_mode_shows_the_pins_numbers_large_and_pages_through_presets() {
         .and_then(|d| d.perspective)
         .expect("1/w");
     // The card's numbers are the trace's.
-    assert!(
-        h.query_by_label(&format!("1/W_P = {}", fmt_digits(c.correction.inv_w_p, 4)))
-            .is_some()
+    let line = format!(
+        "1/W_P = {}  W_P = {}",
+        fmt_digits(c.correction.inv_w_p, 4),
+        fmt_digits(c.correction.w_p, 4)
     );
-    assert!(
-        h.query_by_label(&format!("W_P = {}", fmt_digits(c.correction.w_p, 4)))
-            .is_some()
-    );
-    // Page Down loads the first preset, Page Up steps back around to the last one.
+    assert!(h.query_by_label(&line).is_some(), "no {line:?} on the card");
+    // The card names the pixel's depth, the trace's window depth.
+    let depth = r
+        .trace
+        .detail
+        .as_ref()
+        .and_then(|d| d.depth)
+        .expect("depth");
+    let line = format!("depth z/w = {}", fmt_digits(depth.depth, 4));
+    assert!(h.query_by_label(&line).is_some(), "no {line:?} on the card");
+    // Page Down loads the first preset, Page Up steps back around to the last one; the pin
+    // stays, and the card names the preset.
     h.key_press(egui::Key::PageDown);
     h.run();
     let front = barylab::app::presets::Preset::FrontFacing;
     let mut expected = front.scene();
     expected.set_size(800, 600);
     assert_eq!(h.state().state().scene, expected);
+    assert_eq!(h.state().state().view.pinned, Some(p));
+    assert!(
+        h.query_by_label("Front-facing").is_some(),
+        "the card names the preset"
+    );
     h.key_press(egui::Key::PageUp);
     h.run();
     let last = barylab::app::presets::Preset::ALL[barylab::app::presets::Preset::ALL.len() - 1];

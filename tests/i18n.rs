@@ -204,6 +204,7 @@ fn figure_labels_match_the_catalogue() {
         hover: None,
         pin: None,
         sub_areas: false,
+        sub_area_fill: true,
         wipe: None,
         color_bar: Some(10.0),
     };

@@ -99,6 +99,9 @@ pub struct CanvasState {
     /// The canvas's whole area on screen (points), the views inside it (`None` before the
     /// first frame).
     pub area: Option<Rect>,
+    /// What lies over the canvas (presentation mode's card, as placed last frame): labels
+    /// keep clear of it where they can.
+    pub avoid: Vec<Rect>,
 }
 
 impl CanvasState {
@@ -187,6 +190,11 @@ pub(crate) struct CanvasInput<'a> {
     pub pin_report: Option<&'a PixelReport>,
     /// The GPU view, when it is on.
     pub gpu: Option<&'a GpuView>,
+    /// How the images are framed (presentation mode: larger, a single view without title).
+    pub framing: super::canvas_layout::Framing,
+    /// The size of the overlay's marks (handles, labels, markers) relative to the usual:
+    /// larger in presentation mode, for the back of the room.
+    pub mark_scale: f32,
 }
 
 /// The canvas panel. It renders and uploads what changed, and keeps its own widget state
@@ -212,7 +220,7 @@ pub(crate) fn canvas_ui(
     } else {
         Sizing::Fixed([scene_w, scene_h])
     };
-    let lay = layout(available, view_settings.compare, sizing, ppp);
+    let lay = layout(available, view_settings.compare, sizing, ppp, input.framing);
     let (size, scale) = (lay.size, lay.scale);
     canvas.pixel_size = lay.pixel_size(ppp);
     let compare = gpu_view::render_compare(input.gpu, view_settings.compare);
@@ -434,6 +442,7 @@ pub(crate) fn canvas_ui(
             hover: input.hover_report.map(PixelReport::mark),
             pin: input.pin_report.map(PixelReport::mark),
             sub_areas: view_settings.show_sub_areas,
+            sub_area_fill: state.options().shading != crate::raster::Shading::Texture,
             wipe: (view.content == ViewContent::Wipe && gpu != Some(false)).then_some((
                 f64::from(view_settings.wipe) * f64::from(size[0]),
                 Interpolation::Affine,
@@ -453,14 +462,66 @@ pub(crate) fn canvas_ui(
         if let Some(g) = input.gpu.filter(|_| gpu == Some(true)) {
             gpu_view::relabel(&mut shapes, lang, view_settings.compare, g);
         }
+        if input.framing.title_strip == 0.0 {
+            paint::drop_titles(&mut shapes);
+        } else if let Some(w) = flat_w(&handles)
+            && compare == Compare::Single
+            && gpu.is_none()
+        {
+            // Every corner at one w: both modes draw the same picture; the title says so
+            // instead of naming one (a lesson's flat steps are about screen space).
+            let title = lang.tr_with("figure.flat", &[("w", &format!("{w:.2}"))]);
+            paint::retitle(&mut shapes, &title);
+        }
+        // With the wireframe on, the triangle's outline would lie right over the wireframe's
+        // line (the thing to see): the line shows the triangle already.
+        if state.options().wireframe {
+            shapes.shapes.retain(|s| !overlay::is_triangle_outline(s));
+        }
+        // The scanline rasterizer: the pinned pixel's row, where it crosses two edges, and the
+        // span between (values stepped along the edges, then along the span).
+        if view_settings.rasterizer == crate::raster::render::Rasterizer::Scanline
+            && let Some(pin) = input.pin_report.map(PixelReport::mark)
+            && let Some(t) = pin.triangle
+            && let Some(span) = overlay::span_shapes(&t, pin.pixel[1])
+        {
+            // Over the triangle's outline, under the pixel marker and the handles.
+            let at = shapes
+                .shapes
+                .iter()
+                .rposition(|s| matches!(s, overlay::Shape::Polygon { .. }))
+                .map_or(0, |i| i + 1);
+            shapes.shapes.splice(at..at, span);
+        }
+        paint::scale_marks(&mut shapes, input.mark_scale);
         let image = Rect::from_min_max(
             view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
             view.rect.max + egui::vec2(2.0, 2.0),
         );
-        paint::paint(&painter, clip, image, view.transform, &shapes);
+        paint::paint(
+            &painter,
+            clip,
+            image,
+            view.transform,
+            &shapes,
+            &canvas.avoid,
+        );
     }
     out
 }
+
+/// The corners' common w when every handle has the same (within [`FLAT_W_TOLERANCE`]).
+fn flat_w(handles: &[HandleMark]) -> Option<f64> {
+    let first = handles.first()?.w;
+    handles
+        .iter()
+        .all(|h| (h.w - first).abs() <= FLAT_W_TOLERANCE * first.abs())
+        .then_some(first)
+}
+
+/// Relative difference of w below which the corners count as at one distance: far below the
+/// two decimals the labels show.
+const FLAT_W_TOLERANCE: f64 = 1e-9;
 
 /// Model scenes: drag orbits the camera about its target, Shift+drag or a right/middle drag
 /// pans, scrolling zooms. `scale` is points per rendered pixel.

@@ -25,6 +25,39 @@ pub(crate) enum Sizing {
     },
 }
 
+/// How the canvas frames its images: the title strip above each and how a magnified image is
+/// scaled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Framing {
+    /// Points above each image kept for its title (the mode, the heatmap's meaning).
+    pub title_strip: f32,
+    /// Magnified pixels are whole screen pixels, so every pixel is the same crisp square; off,
+    /// the image fills its view (presentation mode: the largest picture for the room).
+    pub whole_pixels: bool,
+}
+
+impl Framing {
+    /// The app's usual framing: titles above the images, whole screen pixels.
+    pub(crate) const NORMAL: Framing = Framing {
+        title_strip: overlay::TITLE_STRIP,
+        whole_pixels: true,
+    };
+
+    /// Presentation mode's framing for `compare`: the image fills its view; a single view has
+    /// no title strip (the card names the mode), the comparisons keep theirs (they say which
+    /// side is which).
+    pub(crate) fn presenting(compare: Compare) -> Framing {
+        Framing {
+            title_strip: if compare == Compare::Single {
+                0.0
+            } else {
+                overlay::TITLE_STRIP
+            },
+            whole_pixels: false,
+        }
+    }
+}
+
 /// The canvas's views, the render size and the points per rendered pixel.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Layout {
@@ -55,7 +88,9 @@ pub(crate) fn layout(
     compare: Compare,
     sizing: Sizing,
     pixels_per_point: f32,
+    framing: Framing,
 ) -> Layout {
+    let strip = framing.title_strip;
     let aspect = match sizing {
         Sizing::Fixed([w, h]) => w.max(1) as f32 / h.max(1) as f32,
         Sizing::Fit { aspect, .. } => aspect,
@@ -71,7 +106,7 @@ pub(crate) fn layout(
             // less its title strip and margins).
             let w = ((available.width() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
             let h = ((available.height() - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
-            if side_by_side_is_larger(available.size(), aspect) {
+            if side_by_side_is_larger(available.size(), aspect, strip) {
                 vec![
                     Rect::from_min_size(available.min, egui::vec2(w, available.height())),
                     Rect::from_min_size(
@@ -99,7 +134,18 @@ pub(crate) fn layout(
         Compare::Wipe => vec![(available, ViewContent::Wipe)],
         Compare::Difference => vec![(available, ViewContent::Difference)],
     };
-    let first = image_area(areas[0].0);
+    // A difference view keeps room right of its image for the colour bar.
+    let bar = if compare == Compare::Difference {
+        overlay::COLOR_BAR_ROOM
+    } else {
+        0.0
+    };
+    let image_room = |area: Rect| {
+        let mut r = image_area(area, strip);
+        r.max.x = (r.max.x - bar).max(r.min.x + 1.0);
+        r
+    };
+    let first = image_room(areas[0].0);
     let ppp = pixels_per_point.max(0.01);
     let max = crate::raster::project::MAX_IMAGE_SIZE;
     let (size, scale) = match sizing {
@@ -118,7 +164,7 @@ pub(crate) fn layout(
             // magnified pixel is the same crisp square; below that a pixel is too small to
             // see on its own and the image fills the canvas.
             let px = fit * ppp;
-            let px = if px >= WHOLE_PIXELS_FROM {
+            let px = if framing.whole_pixels && px >= WHOLE_PIXELS_FROM {
                 px.floor()
             } else {
                 px
@@ -129,7 +175,7 @@ pub(crate) fn layout(
     let views = areas
         .iter()
         .map(|&(area, content)| {
-            let area = image_area(area);
+            let area = image_room(area);
             let shown = egui::vec2(size[0] as f32 * scale, size[1] as f32 * scale);
             let min = area.center() - shown / 2.0;
             // Snap to whole physical pixels so nearest magnification is crisp.
@@ -149,16 +195,16 @@ pub(crate) fn layout(
 /// (its circle, grown when active, and its stroke) shows whole there.
 pub(crate) const HANDLE_MARGIN: f32 = overlay::HANDLE_RADIUS + 6.0;
 
-/// Where a view's image may go in its `area`: below the title strip, inside the handles'
-/// margins (when the area is large enough to spare them).
-pub(crate) fn image_area(area: Rect) -> Rect {
+/// Where a view's image may go in its `area`: below the title strip (`title_strip` points),
+/// inside the handles' margins (when the area is large enough to spare them).
+pub(crate) fn image_area(area: Rect, title_strip: f32) -> Rect {
     let m = if area.width() > 8.0 * HANDLE_MARGIN && area.height() > 8.0 * HANDLE_MARGIN {
         HANDLE_MARGIN
     } else {
         0.0
     };
     Rect::from_min_max(
-        area.min + egui::vec2(m, overlay::TITLE_STRIP),
+        area.min + egui::vec2(m, title_strip),
         area.max - egui::vec2(m, m),
     )
 }
@@ -167,10 +213,13 @@ pub(crate) fn image_area(area: Rect) -> Rect {
 /// points rather than one above the other: unless stacking gives each image (less its title
 /// strip and margins) [`STACK_ADVANTAGE`] times the width. Two images at the same height are
 /// the easier comparison, and a few per cent are not worth it.
-pub(crate) fn side_by_side_is_larger(available: egui::Vec2, aspect: f32) -> bool {
+pub(crate) fn side_by_side_is_larger(available: egui::Vec2, aspect: f32, title_strip: f32) -> bool {
     let aspect = aspect.max(f32::MIN_POSITIVE);
     let image_width = |w: f32, h: f32| {
-        let inner = image_area(Rect::from_min_size(Pos2::ZERO, egui::vec2(w, h)));
+        let inner = image_area(
+            Rect::from_min_size(Pos2::ZERO, egui::vec2(w, h)),
+            title_strip,
+        );
         inner.width().min(inner.height() * aspect).max(0.0)
     };
     let half_w = ((available.x - SIDE_BY_SIDE_GAP) / 2.0).max(1.0);
@@ -186,25 +235,64 @@ mod tests {
     use super::*;
 
     #[test]
+    fn presenting_a_small_image_fills_the_view_instead_of_whole_pixels() {
+        // A 320x240 step image in a 700x500 canvas at 1.5 pixels per point: 2.9 screen pixels
+        // per pixel fit. Normally that is floored to 2 (crisp squares); presenting, it fills.
+        let available = Rect::from_min_size(Pos2::ZERO, egui::vec2(700.0, 500.0));
+        let sizing = Sizing::Fixed([320, 240]);
+        let normal = layout(available, Compare::Single, sizing, 1.5, Framing::NORMAL);
+        assert_eq!(normal.scale * 1.5, 2.0);
+        let present = layout(
+            available,
+            Compare::Single,
+            sizing,
+            1.5,
+            Framing::presenting(Compare::Single),
+        );
+        let r = present.views[0].0;
+        // No title strip: the image is as tall as the canvas less the handles' margin below.
+        assert!((r.height() - (500.0 - HANDLE_MARGIN)).abs() < 1.0, "{r:?}");
+        assert!(
+            r.width() * r.height() > 1.9 * normal.views[0].0.area(),
+            "{r:?}"
+        );
+        // The comparisons keep their titles.
+        assert_eq!(
+            Framing::presenting(Compare::SideBySide).title_strip,
+            overlay::TITLE_STRIP
+        );
+    }
+
+    #[test]
     fn side_by_side_when_the_title_strips_make_stacked_views_smaller() {
         // The canvas at 1920x1080 with text size 1.5 and both panels open: 4:3 views. Without
         // the title strips stacked views looked larger (min(756, 323 * 4/3) = 431 > 373); with
         // them and the handles' margins the two are within a few per cent (339 and 350 points
         // wide), and side by side wins.
         let available = egui::vec2(756.0, 657.0);
-        assert!(side_by_side_is_larger(available, 4.0 / 3.0));
+        let strip = overlay::TITLE_STRIP;
+        assert!(side_by_side_is_larger(available, 4.0 / 3.0, strip));
         let lay = layout(
             Rect::from_min_size(Pos2::ZERO, available),
             Compare::SideBySide,
             Sizing::Fixed([800, 600]),
             1.5,
+            Framing::NORMAL,
         );
         let [a, b] = [lay.views[0].0, lay.views[1].0];
         assert!(a.right() <= b.left(), "{a:?} {b:?}");
         // And a wide short canvas stacks nothing.
-        assert!(side_by_side_is_larger(egui::vec2(1200.0, 400.0), 4.0 / 3.0));
+        assert!(side_by_side_is_larger(
+            egui::vec2(1200.0, 400.0),
+            4.0 / 3.0,
+            strip
+        ));
         // A tall narrow one stacks.
-        assert!(!side_by_side_is_larger(egui::vec2(500.0, 900.0), 4.0 / 3.0));
+        assert!(!side_by_side_is_larger(
+            egui::vec2(500.0, 900.0),
+            4.0 / 3.0,
+            strip
+        ));
     }
 
     #[test]
@@ -216,6 +304,7 @@ mod tests {
                     compare,
                     Sizing::Fixed([800, 600]),
                     1.0,
+                    Framing::NORMAL,
                 );
                 for (&(image, _), area) in lay.views.iter().zip(&lay.areas) {
                     let r = overlay::HANDLE_RADIUS + 4.0;

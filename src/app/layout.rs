@@ -5,16 +5,16 @@
 use std::sync::Arc;
 
 use super::canvas::{self, CanvasInput};
+use super::canvas_layout::Framing;
 use super::command::{self, AppCommand};
 use super::side_panels::{self, Fit};
 use super::textures::texture_key;
 use super::{BaryApp, compare_image, controls, gpu_view, inspector, present, state};
+use crate::figure::ViewContent;
 use crate::raster::Texture;
 
-/// Presentation mode: windows wider than this many heights get the card beside the canvas
-/// (taking this share of the width), others below it.
-const PRESENT_SIDE_CARD_ASPECT: f32 = 1.5;
-const PRESENT_SIDE_CARD_SHARE: f32 = 0.38;
+/// Presentation mode draws the canvas's marks (handles, labels, markers) this much larger.
+const PRESENT_MARK_SCALE: f32 = 1.35;
 
 impl BaryApp {
     /// The side panels, in what the canvas can spare; their commands go to `out`.
@@ -26,11 +26,13 @@ impl BaryApp {
         let row = ui.available_rect_before_wrap();
         let window = ctx.content_rect();
         let budget = side_panels::budget([window.width(), window.height()], row.height());
-        let fits = side_panels::fits(
+        let fits = side_panels::fits_forced(
             budget,
+            side_panels::room(window.width()),
             self.state.view.show_controls,
             self.state.view.show_inspector,
             self.panel_first,
+            self.panel_forced,
         );
         let mut controls_width = 0.0;
         match fits.controls {
@@ -50,6 +52,7 @@ impl BaryApp {
                     .default_size(side_panels::CONTROLS_DEFAULT)
                     .size_range(side_panels::PANEL_MIN..=max)
                     .show(ui, |ui| {
+                        out.extend(fold_row(ui, true, &lang.tr("app.top_bar.controls")));
                         // Content never widens the panel (see the inspector below).
                         let width = ui.available_width();
                         egui::ScrollArea::both()
@@ -113,6 +116,7 @@ impl BaryApp {
         &mut self,
         ui: &mut egui::Ui,
         texture: &Arc<Texture>,
+        framing: Framing,
         out: &mut Vec<AppCommand>,
     ) {
         egui::CentralPanel::default().show(ui, |ui| {
@@ -136,59 +140,414 @@ impl BaryApp {
                 hover_report: self.reports.hover.as_ref(),
                 pin_report: self.reports.pin.as_ref(),
                 gpu,
+                framing,
+                mark_scale: if self.presenting {
+                    PRESENT_MARK_SCALE
+                } else {
+                    1.0
+                },
             };
             out.extend(command::all(canvas::canvas_ui(ui, &mut self.canvas, input)));
         });
     }
 
-    /// Presentation mode: the card (below the canvas in a window about as tall as wide, else
-    /// beside it) and the canvas in all the rest.
+    /// Presentation mode: the canvas as large as the window allows, the card beside it where a
+    /// column is to spare (wide screens), else over it in the corner the scene leaves most
+    /// empty.
     pub(super) fn presentation(
         &mut self,
         ui: &mut egui::Ui,
         texture: &Arc<Texture>,
         out: &mut Vec<AppCommand>,
     ) {
-        let rect = ui.ctx().content_rect();
-        let frame = egui::Frame::new()
-            .fill(present::CARD_FILL)
-            .inner_margin(egui::Margin::same(12));
-        let (hover, pin) = (self.reports.hover.as_ref(), self.reports.pin.as_ref());
+        let rect = ui.available_rect_before_wrap();
         let spacing = ui.spacing().item_spacing.y;
-        let below = rect.width() < PRESENT_SIDE_CARD_ASPECT * rect.height();
-        let size = if below {
-            present::card_text_below(
-                rect.width() - present::PANEL_MARGINS,
-                rect.height(),
-                spacing,
-            )
-        } else {
-            present::card_text(rect.height())
-        };
-        let hint = self
-            .lessons
-            .session
-            .is_some()
-            .then(|| crate::i18n::tr(self.lang(), "lesson.present_hint"));
-        let hint = hint.as_deref();
-        if below {
-            egui::Panel::bottom("present-card")
-                .frame(frame)
-                .resizable(false)
-                .exact_size(
-                    present::card_height(rect.width() - present::PANEL_MARGINS, spacing, size)
-                        + present::PANEL_MARGINS,
-                )
-                .show(ui, |ui| present::card_ui(ui, hover, pin, size, hint));
-        } else {
+        let full = self.reports.hover.is_some() || self.reports.pin.is_some();
+        let compare = self.state.view.compare;
+        let framing = Framing::presenting(compare);
+        let (w, h) = self.state.scene.size();
+        let aspect = w.max(1) as f32 / h.max(1) as f32;
+        // The pinned row's plot, shown large beside or over the picture too.
+        let plot = self
+            .state
+            .view
+            .plot
+            .zip(self.state.view.pinned)
+            .map(|(p, _)| (p, self.row_plot(texture)));
+        let lang = self.lang();
+        let mut plot_hover = None;
+        if let Some(width) = beside_width(rect, aspect, compare, framing) {
+            self.canvas.avoid.clear();
+            let input = self.card_input(present::card_text_for_width(width));
             egui::Panel::right("present-card")
-                .frame(frame)
+                .frame(
+                    egui::Frame::new()
+                        .fill(present::CARD_FILL)
+                        .inner_margin(egui::Margin::same(12)),
+                )
                 .resizable(false)
-                .exact_size(rect.width() * PRESENT_SIDE_CARD_SHARE)
-                .show(ui, |ui| present::card_ui(ui, hover, pin, size, hint));
+                .exact_size(width)
+                .show(ui, |ui| {
+                    present::card_ui(ui, &input);
+                    if let Some((p, lines)) = plot {
+                        ui.add_space(12.0);
+                        out.extend(command::all(super::plots::plot_ui(
+                            ui,
+                            p,
+                            lines,
+                            lang,
+                            &mut plot_hover,
+                        )));
+                    }
+                });
+            self.lessons.plot_hover = plot_hover;
+            self.canvas_panel(ui, texture, framing, out);
+            return;
         }
-        self.canvas_panel(ui, texture, out);
+        if let Some(height) = below_height(rect, aspect, compare, framing, spacing) {
+            let size =
+                present::card_text_for_width(rect.width() / 2.0).min(below_text(height, spacing));
+            self.canvas.avoid.clear();
+            let input = self.card_input(size);
+            egui::Panel::bottom("present-card-below")
+                .frame(
+                    egui::Frame::new()
+                        .fill(present::CARD_FILL)
+                        .inner_margin(egui::Margin::same(12)),
+                )
+                .resizable(false)
+                .exact_size(height)
+                .show(ui, |ui| present::card_ui(ui, &input));
+            self.canvas_panel(ui, texture, framing, out);
+            return;
+        }
+        self.canvas_panel(ui, texture, framing, out);
+        // Over the picture: as wide as a share of the canvas allows, in its emptiest corner.
+        let area = self.canvas.area.unwrap_or(rect);
+        let size = present::card_text_for_width(
+            (OVER_CARD_SHARE * area.width())
+                .max(present::card_width_for_text(present::CARD_TEXT_RANGE.0)),
+        )
+        .min(OVER_MAX_TEXT);
+        let width = present::card_width_for_text(size).min(area.width());
+        let corner = self.emptiest_corner(
+            area,
+            egui::vec2(width, present::card_height(size, full, spacing)),
+        );
+        self.canvas.avoid = vec![corner];
+        // The plot in another corner, clear of the card.
+        let plot_size = egui::vec2(
+            PLOT_OVER_SHARE[0] * area.width(),
+            PLOT_OVER_SHARE[1] * area.height(),
+        );
+        let plot_at = plot
+            .is_some()
+            .then(|| self.emptiest_corner_except(area, plot_size, corner))
+            .flatten();
+        if let (Some((p, lines)), Some(at)) = (plot, plot_at) {
+            self.canvas.avoid.push(at);
+            egui::Area::new(egui::Id::unique("present-plot-over"))
+                .order(egui::Order::Foreground)
+                .fixed_pos(at.min)
+                .show(ui.ctx(), |ui| {
+                    egui::Frame::new()
+                        .fill(present::CARD_FILL_OVER)
+                        .corner_radius(6)
+                        .inner_margin(egui::Margin::same(10))
+                        .show(ui, |ui| {
+                            ui.allocate_ui(plot_size - egui::vec2(20.0, 20.0), |ui| {
+                                ui.set_min_size(plot_size - egui::vec2(20.0, 20.0));
+                                out.extend(command::all(super::plots::plot_ui(
+                                    ui,
+                                    p,
+                                    lines,
+                                    lang,
+                                    &mut plot_hover,
+                                )));
+                            });
+                        });
+                });
+        }
+        self.lessons.plot_hover = plot_hover;
+        let input = self.card_input(size);
+        egui::Area::new(egui::Id::unique("present-card-over"))
+            .order(egui::Order::Foreground)
+            .fixed_pos(corner.min)
+            .interactable(false)
+            .show(ui.ctx(), |ui| {
+                egui::Frame::new()
+                    .fill(present::CARD_FILL_OVER)
+                    .corner_radius(6)
+                    .inner_margin(egui::Margin::same(12))
+                    .show(ui, |ui| {
+                        ui.set_width(width - present::PANEL_MARGINS);
+                        present::card_ui(ui, &input);
+                    });
+            });
     }
+
+    /// The card's contents at text `size`.
+    fn card_input(&self, size: f32) -> present::CardInput<'_> {
+        present::CardInput {
+            hovered: self.reports.hover.as_ref(),
+            pinned: self.reports.pin.as_ref(),
+            context: self.present_context(),
+            keys_hint: self
+                .lessons
+                .session
+                .is_some()
+                .then(|| crate::i18n::tr(self.lang(), "lesson.present_hint")),
+            size,
+        }
+    }
+
+    /// What the canvas shows, for the card's first line: the lesson and its step, or the
+    /// preset last loaded.
+    fn present_context(&self) -> Option<String> {
+        let lang = self.lang();
+        if let Some(s) = &self.lessons.session {
+            let step = &s.lesson.steps[s.step];
+            let n = rust_i18n::t!(
+                "lesson.step_of",
+                locale = lang.code(),
+                n = s.step + 1,
+                total = s.lesson.steps.len()
+            );
+            return Some(format!("{n} · {}", step.title.get(lang)));
+        }
+        self.last_preset
+            .map(|p| super::controls::preset_name(p, lang))
+    }
+
+    /// The emptiest corner (as [`Self::emptiest_corner`]) for a box of `size` that does not
+    /// overlap `taken`, if there is one.
+    fn emptiest_corner_except(
+        &self,
+        area: egui::Rect,
+        size: egui::Vec2,
+        taken: egui::Rect,
+    ) -> Option<egui::Rect> {
+        self.corners_by_emptiness(area, size)
+            .into_iter()
+            .find(|c| !c.intersects(taken))
+    }
+
+    /// The corner of the canvas `area` where a card of `size` hides least of the picture:
+    /// fewest covered pixels under it (sampled on a grid), never over the pinned pixel, in
+    /// the order top right, top left, bottom right, bottom left on a tie. It depends on the
+    /// render and the pin only (not on the hovered pixel), so the card does not jump about.
+    fn emptiest_corner(&self, area: egui::Rect, size: egui::Vec2) -> egui::Rect {
+        self.corners_by_emptiness(area, size)[0]
+    }
+
+    /// The four corners for a box of `size` in the canvas `area`, the emptiest first (see
+    /// [`Self::emptiest_corner`]).
+    fn corners_by_emptiness(&self, area: egui::Rect, size: egui::Vec2) -> Vec<egui::Rect> {
+        let corners = [
+            egui::Rect::from_min_size(egui::pos2(area.max.x - size.x, area.min.y), size),
+            egui::Rect::from_min_size(area.min, size),
+            egui::Rect::from_min_size(area.max - size, size),
+            egui::Rect::from_min_size(egui::pos2(area.min.x, area.max.y - size.y), size),
+        ];
+        let Some(output) = &self.canvas.output else {
+            return corners.to_vec();
+        };
+        let pinned = self.state.view.pinned;
+        let vertices = crate::figure::vertices_on_screen(&output.scene, output.viewport());
+        let score = |card: &egui::Rect| -> u32 {
+            let mut covered = 0;
+            for view in &self.canvas.views {
+                // The handles with their w labels, the title strip and the colour bar count
+                // as picture too.
+                for v in vertices.iter().filter_map(|v| v.window) {
+                    let at = view.transform.to_screen(v);
+                    let label = egui::Rect::from_center_size(at, LABELLED_HANDLE);
+                    if label.intersects(*card) {
+                        covered += MARK_PENALTY;
+                    }
+                }
+                let title = egui::Rect::from_min_max(
+                    egui::pos2(view.rect.min.x, view.area.min.y),
+                    egui::pos2(view.rect.max.x, view.rect.min.y),
+                );
+                if title.height() > 1.0 && title.intersects(*card) {
+                    covered += MARK_PENALTY;
+                }
+                if view.content == ViewContent::Difference {
+                    let bar = egui::Rect::from_min_max(
+                        egui::pos2(view.rect.max.x, view.rect.min.y),
+                        egui::pos2(
+                            view.rect.max.x + crate::figure::overlay::COLOR_BAR_ROOM,
+                            view.rect.max.y,
+                        ),
+                    );
+                    if bar.intersects(*card) {
+                        covered += 2 * MARK_PENALTY;
+                    }
+                }
+                let mode = match view.content {
+                    ViewContent::Mode(m) => m,
+                    _ => self.state.options().mode,
+                };
+                let Some(render) = output.render(mode) else {
+                    continue;
+                };
+                let frame = &render.frame;
+                let part = card.intersect(view.rect);
+                if !part.is_positive() {
+                    continue;
+                }
+                if let Some([px, py]) = pinned {
+                    let centre = view
+                        .transform
+                        .to_screen(glam::DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
+                    if part.expand(8.0).contains(centre) {
+                        covered += PIN_PENALTY;
+                    }
+                }
+                let steps = CORNER_SAMPLES as f32;
+                for j in 0..CORNER_SAMPLES {
+                    for i in 0..CORNER_SAMPLES {
+                        let p = part.min
+                            + egui::vec2(
+                                (i as f32 + 0.5) / steps * part.width(),
+                                (j as f32 + 0.5) / steps * part.height(),
+                            );
+                        let c = view.transform.to_canvas(p);
+                        let (x, y) = (c.x.floor(), c.y.floor());
+                        if x < 0.0 || y < 0.0 {
+                            continue;
+                        }
+                        let (x, y) = (x as usize, y as usize);
+                        let width = frame.width as usize;
+                        if x < width && frame.depth.get(y * width + x).is_some_and(|d| *d < 1.0) {
+                            covered += 1;
+                        }
+                    }
+                }
+            }
+            covered
+        };
+        // A stable sort: on a tie the order above.
+        let mut scored: Vec<(u32, egui::Rect)> = corners.iter().map(|c| (score(c), *c)).collect();
+        scored.sort_by_key(|(s, _)| *s);
+        scored.into_iter().map(|(_, c)| c).collect()
+    }
+}
+
+/// The plot over the picture: its share of the canvas's width and height.
+const PLOT_OVER_SHARE: [f32; 2] = [0.46, 0.4];
+/// Points: the box around a handle where its letter and w label go.
+const LABELLED_HANDLE: egui::Vec2 = egui::vec2(150.0, 80.0);
+/// A corner over a handle's label, a title or the colour bar counts as this many covered
+/// samples.
+const MARK_PENALTY: u32 = 40;
+/// Points: the largest text of a card over the picture (on a large screen a larger card would
+/// hide more of it than the room needs to read it).
+const OVER_MAX_TEXT: f32 = 26.0;
+
+/// The card over the picture takes this share of the canvas's width.
+const OVER_CARD_SHARE: f32 = 0.42;
+/// Samples per side of the grid that measures how much of the picture a card would hide.
+const CORNER_SAMPLES: usize = 12;
+/// A corner over the pinned pixel counts as this many covered samples (more than a whole
+/// grid: it is never chosen while another corner is free of the pin).
+const PIN_PENALTY: u32 = 1000;
+/// The smallest text size (points) of a card beside the picture: narrower than that, the card
+/// goes over the picture instead.
+const BESIDE_MIN_TEXT: f32 = 16.0;
+/// The largest share of the window's width a card beside the picture takes.
+const BESIDE_MAX_SHARE: f32 = 0.36;
+
+/// The height of a wide card under two images side by side: the band the images at their
+/// largest leave free, or up to [`BELOW_MAX_SHARE`] of the canvas `rect` (the images give way),
+/// if a card at least [`BELOW_MIN_TEXT`] large fits there. A single image takes a column
+/// beside it or the card over it instead.
+fn below_height(
+    rect: egui::Rect,
+    aspect: f32,
+    compare: crate::figure::Compare,
+    framing: Framing,
+    spacing: f32,
+) -> Option<f32> {
+    if compare != crate::figure::Compare::SideBySide {
+        return None;
+    }
+    let margin = side_panels::CANVAS_MARGIN + super::canvas_layout::HANDLE_MARGIN;
+    let each = (rect.width() - 2.0 * margin - super::canvas::SIDE_BY_SIDE_GAP) / 2.0;
+    let used = each.max(0.0) / aspect.max(0.01)
+        + framing.title_strip
+        + 2.0 * side_panels::CANVAS_MARGIN
+        + super::canvas_layout::HANDLE_MARGIN;
+    let room = (rect.height() - used).max(BELOW_MAX_SHARE * rect.height());
+    let least = present::card_height_wide(BELOW_MIN_TEXT, spacing);
+    (room >= least).then(|| room.min(present::card_height_wide(OVER_MAX_TEXT, spacing)))
+}
+
+/// The largest share of the canvas's height a card under two images takes from them.
+const BELOW_MAX_SHARE: f32 = 0.3;
+/// The smallest text size (points) of a card under two images.
+const BELOW_MIN_TEXT: f32 = 13.0;
+
+/// The largest text size whose wide card fits `height` points.
+fn below_text(height: f32, spacing: f32) -> f32 {
+    let mut size = OVER_MAX_TEXT;
+    while size > BELOW_MIN_TEXT && present::card_height_wide(size, spacing) > height {
+        size -= 0.5;
+    }
+    size
+}
+
+/// The width of the card beside the picture, if the canvas `rect` (points) leaves a column
+/// for it next to the largest picture of `aspect` (width / height) it can hold.
+fn beside_width(
+    rect: egui::Rect,
+    aspect: f32,
+    compare: crate::figure::Compare,
+    framing: Framing,
+) -> Option<f32> {
+    let views = if compare == crate::figure::Compare::SideBySide {
+        2.0
+    } else {
+        1.0
+    };
+    let margin = side_panels::CANVAS_MARGIN + super::canvas_layout::HANDLE_MARGIN;
+    let height = rect.height()
+        - 2.0 * side_panels::CANVAS_MARGIN
+        - framing.title_strip
+        - super::canvas_layout::HANDLE_MARGIN;
+    let image = views * height.max(0.0) * aspect + 2.0 * margin;
+    let free = rect.width() - image;
+    let least = present::card_width_for_text(BESIDE_MIN_TEXT);
+    (free >= least).then(|| free.min(BESIDE_MAX_SHARE * rect.width()).max(least))
+}
+
+/// An open side panel's first row: its name and a button that folds it to a strip (so a panel
+/// opened on a small window, where the canvas gave way, is as easily put away).
+fn fold_row(ui: &mut egui::Ui, left: bool, name: &str) -> Vec<AppCommand> {
+    let lang = super::locale::lang(ui.ctx());
+    let mut folded = false;
+    ui.horizontal(|ui| {
+        ui.label(egui::RichText::new(name).strong());
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            let icon = if left { "«" } else { "»" };
+            folded = ui
+                .button(icon)
+                .on_hover_text(lang.tr_with("app.layout.fold_tip", &[("panel", &name)]))
+                .clicked();
+        });
+    });
+    if !folded {
+        return Vec::new();
+    }
+    vec![
+        if left {
+            state::Command::SetShowControls(false)
+        } else {
+            state::Command::SetShowInspector(false)
+        }
+        .into(),
+    ]
 }
 
 /// A collapsed side panel: a strip with one button that opens it (and lets it have the room

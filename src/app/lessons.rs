@@ -262,7 +262,7 @@ fn text_ui(ui: &mut Ui, text: &str, size: f32) {
     }
 }
 
-/// Previous, "Step n of N", Next.
+/// Previous, "Step n of N" (a menu of every step), Next.
 fn stepper_ui(ui: &mut Ui, session: &Session, lang: Lang, size: f32, out: &mut Vec<LessonCommand>) {
     let n = session.lesson.steps.len();
     if ui
@@ -274,15 +274,28 @@ fn stepper_ui(ui: &mut Ui, session: &Session, lang: Lang, size: f32, out: &mut V
     {
         out.push(LessonCommand::Previous);
     }
-    ui.label(
-        RichText::new(rust_i18n::t!(
-            "lesson.step_of",
-            locale = lang.code(),
-            n = session.step + 1,
-            total = n
-        ))
-        .size(size),
+    let current = rust_i18n::t!(
+        "lesson.step_of",
+        locale = lang.code(),
+        n = session.step + 1,
+        total = n
     );
+    // The step number opens the list of steps (the panel has no room for a list of its own
+    // on a projector).
+    let name = current.to_string();
+    egui::ComboBox::from_id_salt("lesson-step-menu")
+        .selected_text(RichText::new(current).size(size))
+        .height(f32::INFINITY)
+        .show_ui(ui, |ui| {
+            for (i, s) in session.lesson.steps.iter().enumerate() {
+                let label = format!("{}. {}", i + 1, s.title.get(lang));
+                if ui.selectable_label(i == session.step, label).clicked() && i != session.step {
+                    out.push(LessonCommand::Go(i));
+                }
+            }
+        })
+        .response
+        .widget_info(|| egui::WidgetInfo::labeled(egui::Role::ComboBox, true, &name));
     if ui
         .add_enabled(
             session.step + 1 < n,
@@ -297,8 +310,20 @@ fn stepper_ui(ui: &mut Ui, session: &Session, lang: Lang, size: f32, out: &mut V
 /// A plot and its lines along the pinned row (none while nothing is pinned).
 pub type PanelPlot = Option<(LessonPlot, Option<(u32, PlotLines)>)>;
 
-/// The Lessons panel: the list of steps on the left, the step's title, text and "try this"
-/// beside it, the step's plot on the right, and the buttons above.
+/// Points of panel width from which the Lessons panel shows its list of steps on the left
+/// (below that the step number's menu lists them).
+const LIST_FROM_WIDTH: f32 = 980.0;
+/// Points of panel width from which the plot goes beside the text (below that, under it).
+const PLOT_BESIDE_FROM_WIDTH: f32 = 600.0;
+/// Points: the plot's height when it goes under the text.
+const PLOT_BELOW_HEIGHT: f32 = 230.0;
+/// Points of panel width from which "Reset this step" and "Leave the lesson" are buttons in
+/// the first row (below that, a menu).
+const BUTTONS_FROM_WIDTH: f32 = 640.0;
+
+/// The Lessons panel: first, always, one row with Previous, the step number (a menu of the
+/// steps), Next, and Reset / Leave; under it the step's title, text and "try this", with the
+/// step's plot beside or under the text, and on a wide window the list of steps on the left.
 pub fn lesson_panel_ui(
     ui: &mut Ui,
     session: &Session,
@@ -310,59 +335,57 @@ pub fn lesson_panel_ui(
     let mut plot_out: Vec<AppCommand> = Vec::new();
     let lesson = &session.lesson;
     let step = &lesson.steps[session.step];
-    ui.horizontal_wrapped(|ui| {
-        ui.label(RichText::new(lesson.title.get(lang)).strong());
-        ui.separator();
+    let full_width = ui.available_width();
+    ui.horizontal(|ui| {
         stepper_ui(ui, session, lang, 15.0, &mut out);
-        ui.separator();
-        if ui.button(tr(lang, "lesson.reset_step")).clicked() {
-            out.push(LessonCommand::Reset);
-        }
-        if ui
-            .button(tr(lang, "lesson.leave"))
-            .on_hover_text(tr(lang, "lesson.leave_hint"))
-            .clicked()
-        {
-            out.push(LessonCommand::Leave);
-        }
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            let leave = |ui: &mut Ui, out: &mut Vec<LessonCommand>| {
+                if ui
+                    .button(tr(lang, "lesson.leave"))
+                    .on_hover_text(tr(lang, "lesson.leave_hint"))
+                    .clicked()
+                {
+                    out.push(LessonCommand::Leave);
+                    ui.close();
+                }
+            };
+            let reset = |ui: &mut Ui, out: &mut Vec<LessonCommand>| {
+                if ui.button(tr(lang, "lesson.reset_step")).clicked() {
+                    out.push(LessonCommand::Reset);
+                    ui.close();
+                }
+            };
+            if full_width >= BUTTONS_FROM_WIDTH {
+                leave(ui, &mut out);
+                reset(ui, &mut out);
+            } else {
+                ui.menu_button("☰", |ui| {
+                    reset(ui, &mut out);
+                    leave(ui, &mut out);
+                });
+            }
+            if full_width >= LIST_FROM_WIDTH {
+                ui.add(egui::Label::new(RichText::new(lesson.title.get(lang)).weak()).truncate());
+            }
+        });
     });
     ui.separator();
     let height = ui.available_height();
-    let list_width = (ui.available_width() * 0.28).clamp(150.0, 300.0);
     ui.horizontal_top(|ui| {
-        ui.allocate_ui_with_layout(
-            egui::vec2(list_width, height),
-            egui::Layout::top_down(egui::Align::Min),
-            |ui| {
-                egui::ScrollArea::vertical()
-                    .id_salt("lesson-steps")
-                    .auto_shrink([false, false])
-                    .show(ui, |ui| {
-                        for (i, s) in lesson.steps.iter().enumerate() {
-                            let label = format!("{}. {}", i + 1, s.title.get(lang));
-                            let r = ui.selectable_label(i == session.step, label);
-                            if r.clicked() && i != session.step {
-                                out.push(LessonCommand::Go(i));
-                            }
-                            // Scroll the current step into view once when it changes (the
-                            // list's own scratch memory), so the user can still scroll it.
-                            let id = ui.make_persistent_id("lesson-steps-scrolled");
-                            if i == session.step && ui.data(|d| d.get_temp::<usize>(id)) != Some(i)
-                            {
-                                r.scroll_to_me(Some(egui::Align::Center));
-                                ui.data_mut(|d| d.insert_temp(id, i));
-                            }
-                        }
-                    });
-            },
-        );
-        ui.separator();
-        let plot_width = if plot.is_some() {
-            (ui.available_width() * 0.42).max(220.0)
+        if full_width >= LIST_FROM_WIDTH {
+            let list_width = (full_width * 0.22).clamp(150.0, 300.0);
+            steps_list_ui(ui, session, lang, [list_width, height], &mut out);
+            ui.separator();
+        }
+        let beside = plot.is_some() && ui.available_width() >= PLOT_BESIDE_FROM_WIDTH;
+        let plot_width = if beside {
+            (ui.available_width() * 0.42).max(240.0)
         } else {
             0.0
         };
-        let text_width = (ui.available_width() - plot_width).max(200.0);
+        let text_width = (ui.available_width() - plot_width).max(160.0);
+        let mut plot = plot;
+        let below = if beside { None } else { plot.take() };
         ui.allocate_ui_with_layout(
             egui::vec2(text_width, height),
             egui::Layout::top_down(egui::Align::Min),
@@ -371,6 +394,10 @@ pub fn lesson_panel_ui(
                     .id_salt(("lesson-text", session.step))
                     .auto_shrink([false, false])
                     .show(ui, |ui| {
+                        // Keep the text clear of the scroll bar.
+                        let bar =
+                            ui.spacing().scroll.bar_width + ui.spacing().scroll.bar_outer_margin;
+                        ui.set_max_width(ui.available_width() - bar - 4.0);
                         ui.label(
                             RichText::new(format!(
                                 "{}. {}",
@@ -390,24 +417,78 @@ pub fn lesson_panel_ui(
                             );
                             text_ui(ui, step.try_this.get(lang), TEXT_SIZE);
                         });
+                        if let Some((p, lines)) = below {
+                            ui.add_space(8.0);
+                            ui.label(RichText::new(tr(lang, "lesson.plot_title")).strong());
+                            ui.allocate_ui(
+                                egui::vec2(ui.available_width(), PLOT_BELOW_HEIGHT),
+                                |ui| {
+                                    plot_out.extend(
+                                        plot_ui(ui, p, lines, lang, hovered_column)
+                                            .into_iter()
+                                            .map(Into::into),
+                                    );
+                                },
+                            );
+                        }
                     });
             },
         );
         if let Some((p, lines)) = plot {
             ui.separator();
-            ui.vertical(|ui| {
-                ui.label(RichText::new(tr(lang, "lesson.plot_title")).strong());
-                plot_out.extend(
-                    plot_ui(ui, p, lines, lang, hovered_column)
-                        .into_iter()
-                        .map(Into::into),
-                );
-            });
+            ui.allocate_ui_with_layout(
+                egui::vec2(ui.available_width(), height),
+                egui::Layout::top_down(egui::Align::Min),
+                |ui| {
+                    ui.set_max_width(ui.available_width() - 8.0);
+                    ui.set_max_height(height);
+                    plot_out.extend(
+                        plot_ui(ui, p, lines, lang, hovered_column)
+                            .into_iter()
+                            .map(Into::into),
+                    );
+                },
+            );
         }
     });
     let mut all: Vec<AppCommand> = out.into_iter().map(Into::into).collect();
     all.extend(plot_out);
     all
+}
+
+/// The list of steps (on a wide window), the current one scrolled into view once.
+fn steps_list_ui(
+    ui: &mut Ui,
+    session: &Session,
+    lang: Lang,
+    [width, height]: [f32; 2],
+    out: &mut Vec<LessonCommand>,
+) {
+    ui.allocate_ui_with_layout(
+        egui::vec2(width, height),
+        egui::Layout::top_down(egui::Align::Min),
+        |ui| {
+            egui::ScrollArea::vertical()
+                .id_salt("lesson-steps")
+                .auto_shrink([false, false])
+                .show(ui, |ui| {
+                    for (i, s) in session.lesson.steps.iter().enumerate() {
+                        let label = format!("{}. {}", i + 1, s.title.get(lang));
+                        let r = ui.selectable_label(i == session.step, label);
+                        if r.clicked() && i != session.step {
+                            out.push(LessonCommand::Go(i));
+                        }
+                        // Scroll the current step into view once when it changes (the
+                        // list's own scratch memory), so the user can still scroll it.
+                        let id = ui.make_persistent_id("lesson-steps-scrolled");
+                        if i == session.step && ui.data(|d| d.get_temp::<usize>(id)) != Some(i) {
+                            r.scroll_to_me(Some(egui::Align::Center));
+                            ui.data_mut(|d| d.insert_temp(id, i));
+                        }
+                    }
+                });
+        },
+    );
 }
 
 /// Presentation mode's strip: "n / N", the step's title in large print and its first
@@ -421,13 +502,17 @@ pub fn lesson_strip_ui(
     let mut out = Vec::new();
     let step = &session.lesson.steps[session.step];
     ui.horizontal(|ui| {
-        stepper_ui(ui, session, lang, size * 0.7, &mut out);
+        stepper_ui(ui, session, lang, size * 0.8, &mut out);
         ui.separator();
-        ui.label(
-            RichText::new(step.title.get(lang))
-                .strong()
-                .size(size)
-                .color(egui::Color32::WHITE),
+        // The title wraps rather than run off the window.
+        ui.add(
+            egui::Label::new(
+                RichText::new(step.title.get(lang))
+                    .strong()
+                    .size(size)
+                    .color(egui::Color32::WHITE),
+            )
+            .wrap(),
         );
     });
     let short = match &step.summary {
@@ -444,7 +529,7 @@ pub fn lesson_strip_ui(
         ui.add(
             egui::Label::new(
                 RichText::new(first)
-                    .size(size * 0.85)
+                    .size(size * 0.9)
                     .color(egui::Color32::LIGHT_GRAY),
             )
             .wrap(),
@@ -557,7 +642,7 @@ impl BaryApp {
         let Some(session) = &self.lessons.session else {
             return;
         };
-        let size = super::present::card_text(ui.ctx().content_rect().height());
+        let size = super::present::strip_text(ui.ctx().content_rect().height());
         egui::Panel::bottom("lesson-strip")
             .frame(
                 egui::Frame::new()

@@ -143,6 +143,9 @@ pub struct BaryApp {
     last_preset: Option<presets::Preset>,
     /// The side panel asked for last: it gets the room when both do not fit.
     panel_first: Side,
+    /// The side panel the user opened, which opens even where the canvas's share leaves no
+    /// room (the canvas gives way), until it is folded again.
+    panel_forced: Option<Side>,
     history: history::History,
     /// The scene file the scene came from or was saved to last (File > Save writes it).
     scene_file: Option<PathBuf>,
@@ -227,6 +230,7 @@ impl BaryApp {
             presenting: options.present,
             last_preset: None,
             panel_first: Side::default(),
+            panel_forced: None,
             history: history::History::default(),
             scene_file: None,
             lang,
@@ -459,7 +463,8 @@ impl BaryApp {
         });
         self.lesson_panel(ui, texture, &mut out);
         self.side_panels_ui(ui, &mut out);
-        self.canvas_panel(ui, texture, &mut out);
+        self.canvas.avoid.clear();
+        self.canvas_panel(ui, texture, canvas_layout::Framing::NORMAL, &mut out);
         self.plot_window(&ctx, texture, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(lang.tr("app.help.title"))
@@ -504,8 +509,24 @@ impl BaryApp {
             AppCommand::State(c) => {
                 match c {
                     state::Command::Preset(p) => self.last_preset = Some(p),
-                    state::Command::SetShowControls(true) => self.panel_first = Side::Controls,
-                    state::Command::SetShowInspector(true) => self.panel_first = Side::Inspector,
+                    state::Command::SetShowControls(true) => {
+                        self.panel_first = Side::Controls;
+                        self.panel_forced = Some(Side::Controls);
+                    }
+                    state::Command::SetShowInspector(true) => {
+                        self.panel_first = Side::Inspector;
+                        self.panel_forced = Some(Side::Inspector);
+                    }
+                    state::Command::SetShowControls(false)
+                        if self.panel_forced == Some(Side::Controls) =>
+                    {
+                        self.panel_forced = None;
+                    }
+                    state::Command::SetShowInspector(false)
+                        if self.panel_forced == Some(Side::Inspector) =>
+                    {
+                        self.panel_forced = None;
+                    }
                     state::Command::SetGpuView(true) => self.compare_image = None,
                     _ => {}
                 }

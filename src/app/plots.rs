@@ -11,7 +11,8 @@
 
 use std::sync::Arc;
 
-use egui_plot::{Corner, Legend, Line, Plot, VLine};
+use egui::RichText;
+use egui_plot::{Line, Plot, VLine};
 
 use super::BaryApp;
 use super::command::AppCommand;
@@ -115,7 +116,7 @@ pub fn plot_ui(
         let label = ui.label(tr(lang, "lesson.plot_kind"));
         egui::ComboBox::from_id_salt("row-plot-kind")
             .selected_text(tr(lang, title_key(plot)))
-            .width(ui.available_width().min(360.0))
+            .width(ui.available_width().clamp(80.0, 360.0))
             .show_ui(ui, |ui| {
                 for p in [LessonPlot::UvRow, LessonPlot::WRow, LessonPlot::DepthRow] {
                     if ui
@@ -134,13 +135,29 @@ pub fn plot_ui(
         ui.label(tr(lang, "lesson.plot_none"));
         return out;
     };
+    // The legend above the plot, in the lines' colours (egui_plot's legend lies over the
+    // lines it names).
+    ui.horizontal_wrapped(|ui| {
+        for (k, (key, _)) in lines.iter().enumerate() {
+            ui.label(RichText::new("━━").color(line_color(k)).strong());
+            ui.label(tr(lang, key));
+            ui.add_space(8.0);
+        }
+    });
     let shown = Plot::new(("row-plot", plot as u8))
-        .legend(Legend::default().position(Corner::LeftTop))
         .x_axis_label(tr(lang, "lesson.plot_column"))
-        .height((ui.available_height() - 8.0).max(120.0))
+        .show_axes([true, true])
+        // Never taller than the room left (a plot that overflowed its panel would push the
+        // panel's first row, the lesson's Previous / Next, out of sight).
+        .height((ui.available_height() - 8.0).max(PLOT_MIN_HEIGHT))
+        .width(ui.available_width().max(120.0))
         .show(ui, |p| {
-            for (key, points) in lines {
-                p.line(Line::new(tr(lang, key), points));
+            for (k, (key, points)) in lines.into_iter().enumerate() {
+                p.line(
+                    Line::new(tr(lang, key), points)
+                        .color(line_color(k))
+                        .width(2.5),
+                );
             }
             p.vline(VLine::new("", f64::from(pin_x)));
             p.pointer_coordinate()
@@ -153,6 +170,21 @@ pub fn plot_ui(
         *hovered_column = Some(at.x.round() as u32);
     }
     out
+}
+
+/// Points: the least height of the plot area.
+const PLOT_MIN_HEIGHT: f32 = 48.0;
+
+/// The colour of a plot's `k`th line: distinct on the dark and the light theme, and not the
+/// vertex colours (the lines are no vertices).
+fn line_color(k: usize) -> egui::Color32 {
+    const COLORS: [egui::Color32; 4] = [
+        egui::Color32::from_rgb(255, 140, 60),
+        egui::Color32::from_rgb(90, 170, 255),
+        egui::Color32::from_rgb(240, 90, 200),
+        egui::Color32::from_rgb(120, 220, 140),
+    ];
+    COLORS[k % COLORS.len()]
 }
 
 /// The last row rendered with every buffer (one row high), by the canvas render it repeats,

@@ -1,91 +1,118 @@
 //! Presentation mode's card: the pinned (else hovered) pixel's key numbers, large and high
-//! contrast, for the back of a lecture hall. Every number is the probe trace's (the same
-//! trace the inspector shows); nothing is computed here.
+//! contrast, for the back of a lecture hall, with what is shown (the lesson step or the
+//! preset). Every number is the probe trace's (the same trace the inspector shows); nothing is
+//! computed here.
+//!
+//! The card goes beside the picture where the window has a column to spare (wide screens),
+//! else over the picture, in the corner the scene leaves most empty (see
+//! [`super::layout`]). Its size follows from its width: the widest line must fit.
 
 use egui::{Color32, RichText, Ui};
 
 use super::pixel::PixelReport;
+use crate::figure::overlay::{CLIP_POINT, vertex_color};
 use crate::probe::format::fmt_digits;
 use crate::raster::Interpolation;
 
-/// Text size of the card's numbers in points (times the text size setting), for a window
-/// `height` points high: 26 at 768, larger on a larger screen.
-pub fn card_text(height: f32) -> f32 {
-    (height / 29.5).clamp(CARD_TEXT_RANGE.0, CARD_TEXT_RANGE.1)
+/// What the card shows.
+pub struct CardInput<'a> {
+    /// The hovered pixel's report.
+    pub hovered: Option<&'a PixelReport>,
+    /// The pinned pixel's report (shown rather than the hovered one).
+    pub pinned: Option<&'a PixelReport>,
+    /// What is on the canvas: the lesson step, or the preset's name.
+    pub context: Option<String>,
+    /// Replaces the line of keys (a lesson's Page Down / Page Up step through it).
+    pub keys_hint: Option<String>,
+    /// Text size of the numbers, in points.
+    pub size: f32,
 }
 
-/// The card's text size for a card `width` points wide under a canvas in a window `height`
-/// points high: [`card_text`], smaller if the card would take more than [`CARD_MAX_SHARE`] of
-/// the height (a large text size on a small window would leave the canvas a strip).
-pub fn card_text_below(width: f32, height: f32, spacing: f32) -> f32 {
-    let room = CARD_MAX_SHARE * height - PANEL_MARGINS;
-    let mut size = card_text(height);
-    // Down in half points to the largest size that fits (a smaller text may put the table
-    // beside the lines, which needs fewer rows, so the height is not monotonic in the size).
-    while size > CARD_SMALLEST && card_height(width, spacing, size) > room {
-        size -= 0.5;
-    }
-    size.max(CARD_SMALLEST)
-}
-
-/// The smallest text size the card shrinks to, in points.
-const CARD_SMALLEST: f32 = 10.0;
-
-/// The largest share of the window's height a card below the canvas takes.
-pub const CARD_MAX_SHARE: f32 = 0.45;
-/// Points the card's panel adds around it (its frame's margins).
+/// Characters (monospace) of the card's widest line: the weights table, `1/W_P = … W_P = …`
+/// and `uv perspective (…, …)`.
+const CARD_EMS: f32 = 31.0;
+/// Width of a monospace character, in text heights.
+const MONO_ADVANCE: f32 = 0.62;
+/// The smallest and largest text size of the card's numbers, in points.
+pub const CARD_TEXT_RANGE: (f32, f32) = (10.0, 40.0);
+/// Points the card's frame adds around its contents (its margins, both sides).
 pub const PANEL_MARGINS: f32 = 24.0;
-
-/// Smallest and largest card text size, in points.
-const CARD_TEXT_RANGE: (f32, f32) = (26.0, 44.0);
-
-/// The card's height in points for a card `width` points wide with text `size`: always the
-/// same for a window, whatever pixel it shows (a card that grew with its content would move
-/// the canvas under the pointer, change the hovered pixel, and so on).
-pub fn card_height(width: f32, spacing: f32, size: f32) -> f32 {
-    // The title, then the table (a header and three vertices) beside four lines, or above
-    // them (and then the title may take two lines).
-    let rows = if width >= SIDE_BY_SIDE_EMS * size {
-        5.0
-    } else {
-        10.0
-    };
-    // A little to spare below the line of keys at the card's foot.
-    rows * (ROW * size + spacing) + ROW * hint_text(size) + spacing + 0.1 * size
-}
-
-/// Text size of the card's line of keys (F5 / Esc, Page Down / Up) for card text `size`: on
-/// its own line at the card's foot, large enough to read from the back of the room, smaller
-/// than the numbers so it does not compete with them.
-pub fn hint_text(size: f32) -> f32 {
-    HINT_SHARE * size
-}
-
-/// The line of keys' size, as a share of the card's text size (at 1024x768 about 16 points, a
-/// quarter larger than the body text).
-const HINT_SHARE: f32 = 0.6;
-
 /// A row's height, in text heights.
 const ROW: f32 = 1.3;
-/// The card puts the weights table and the other lines side by side from this many text
-/// heights of width (the table and the longest line, uv perspective with two numbers, whole).
-const SIDE_BY_SIDE_EMS: f32 = 36.0;
+/// Rows of a card with a pixel: the pixel, the context, the mode, the table's header and
+/// three rows, 1/W_P and W_P, depth, uv both ways.
+const FULL_ROWS: f32 = 11.0;
+/// Rows of a card without a pixel: the context and the invitation to hover.
+const COMPACT_ROWS: f32 = 2.0;
+/// The context line's and the line of keys' size, as a share of the numbers' size.
+const SMALL_SHARE: f32 = 0.7;
 /// Characters of a number column.
-const NUMBER_EMS: f32 = 7.0;
+const NUMBER_EMS: f32 = 7.5;
+/// Characters of the vertex-name column.
+const NAME_EMS: f32 = 2.5;
+/// Relative difference of 1/w below which the corners count as at one distance (a flat
+/// triangle facing the camera): far below what four digits show.
+const FLAT_TOLERANCE: f64 = 1e-9;
 /// Significant digits on the card: enough to see the difference, few enough to read.
 const DIGITS: i32 = 4;
+
 /// The card's colours: white on near-black.
 pub const CARD_FILL: Color32 = Color32::from_rgb(8, 10, 16);
+/// The card's fill when it lies over the picture: the picture shows faintly through.
+pub const CARD_FILL_OVER: Color32 = Color32::from_rgba_premultiplied(8, 10, 16, 236);
 const INK: Color32 = Color32::WHITE;
 const DIM: Color32 = Color32::from_rgb(170, 180, 200);
 const ACCENT: Color32 = Color32::from_rgb(255, 214, 90);
 
-fn big(s: impl Into<String>, size: f32) -> RichText {
-    RichText::new(s).monospace().size(size).color(INK)
+/// The text size at which the card's widest line fills a card `width` points wide.
+///
+/// ```
+/// use barylab::app::present::{card_text_for_width, PANEL_MARGINS};
+/// // 31 characters of 0.62 text heights: 20 points of text need 408 points of card.
+/// assert!((card_text_for_width(31.0 * 0.62 * 20.0 + PANEL_MARGINS) - 20.0).abs() < 1e-3);
+/// ```
+pub fn card_text_for_width(width: f32) -> f32 {
+    ((width - PANEL_MARGINS) / (CARD_EMS * MONO_ADVANCE))
+        .clamp(CARD_TEXT_RANGE.0, CARD_TEXT_RANGE.1)
 }
 
-fn label(s: &str, size: f32) -> RichText {
-    RichText::new(s).monospace().size(size).color(DIM)
+/// The card's width for text `size` (the inverse of [`card_text_for_width`]).
+pub fn card_width_for_text(size: f32) -> f32 {
+    size * CARD_EMS * MONO_ADVANCE + PANEL_MARGINS
+}
+
+/// The card's height in points at text `size`, with a pixel to show (`full`) or without.
+/// Used to place the card before it is drawn; the card is never taller.
+pub fn card_height(size: f32, full: bool, spacing: f32) -> f32 {
+    let spacing = card_spacing(spacing, size);
+    let rows = if full { FULL_ROWS } else { COMPACT_ROWS };
+    rows * (ROW * size + spacing) + (ROW * SMALL_SHARE * size + spacing) + PANEL_MARGINS
+}
+
+/// The height in points of a wide card (two columns: the table beside the other lines) at
+/// text `size`.
+pub fn card_height_wide(size: f32, spacing: f32) -> f32 {
+    let spacing = card_spacing(spacing, size);
+    WIDE_ROWS * (ROW * size + spacing) + 2.0 * (ROW * SMALL_SHARE * size + spacing) + PANEL_MARGINS
+}
+
+/// The card's space between rows for the style's `spacing` and text `size`: at most a
+/// seventh of the text (the rows' own height already leaves room).
+fn card_spacing(spacing: f32, size: f32) -> f32 {
+    spacing.min(0.15 * size)
+}
+
+/// Rows of a wide card: the pixel, the mode, the table's header and three rows.
+const WIDE_ROWS: f32 = 6.0;
+
+/// Text size of presentation mode's other large print (the lesson strip's title) for a
+/// window `height` points high: 20 at 768, larger on a larger screen.
+pub fn strip_text(height: f32) -> f32 {
+    (height / 38.0).clamp(18.0, 34.0)
+}
+
+fn big(s: impl Into<String>, size: f32) -> RichText {
+    RichText::new(s).monospace().size(size).color(INK)
 }
 
 fn num(x: f64) -> String {
@@ -100,144 +127,198 @@ fn pair(uv: [f32; 2]) -> String {
     )
 }
 
-/// The card, for the pinned pixel's report if any, else the hovered one's. `keys_hint`
-/// replaces the line of keys (a lesson's Page Down / Page Up step through it).
-pub fn card_ui(
-    ui: &mut Ui,
-    hovered: Option<&PixelReport>,
-    pinned: Option<&PixelReport>,
-    size: f32,
-    keys_hint: Option<&str>,
-) {
+/// The card: the context line, the pixel's numbers, the line of keys at its foot.
+pub fn card_ui(ui: &mut Ui, input: &CardInput<'_>) {
     let lang = super::locale::lang(ui.ctx());
-    // The line of keys at the card's foot, the card's numbers above it.
-    let hint = keys_hint.map_or_else(|| lang.tr("app.present.leave"), str::to_string);
-    ui.with_layout(egui::Layout::bottom_up(egui::Align::Min), |ui| {
+    let size = input.size;
+    let small = SMALL_SHARE * size;
+    let hint = input
+        .keys_hint
+        .clone()
+        .unwrap_or_else(|| lang.tr("app.present.leave"));
+    ui.spacing_mut().item_spacing.y = card_spacing(ui.spacing().item_spacing.y, size);
+    let focus = input
+        .pinned
+        .map(|r| (r, lang.tr("app.present.pinned")))
+        .or(input.hovered.map(|r| (r, lang.tr("app.present.hovered"))));
+    if let Some(c) = &input.context {
         ui.add(
-            egui::Label::new(RichText::new(hint).size(hint_text(size)).color(DIM))
+            egui::Label::new(RichText::new(c).size(small).color(DIM))
                 .wrap_mode(egui::TextWrapMode::Truncate),
         );
-        ui.with_layout(egui::Layout::top_down(egui::Align::Min), |ui| {
-            card_body(ui, hovered, pinned, size, lang);
-        });
-    });
+    }
+    match &focus {
+        Some((r, how)) => pixel_ui(ui, r, how, size, lang),
+        None => {
+            ui.add(
+                egui::Label::new(big(lang.tr("app.present.no_pixel"), size).color(ACCENT)).wrap(),
+            );
+        }
+    }
+    ui.add(
+        egui::Label::new(RichText::new(hint).size(small).color(DIM))
+            .wrap_mode(egui::TextWrapMode::Truncate),
+    );
 }
 
-/// The card above its line of keys: the pixel, its weights table and its numbers.
-fn card_body(
-    ui: &mut Ui,
-    hovered: Option<&PixelReport>,
-    pinned: Option<&PixelReport>,
-    size: f32,
-    lang: crate::i18n::Lang,
-) {
-    let big = |s: String| big(s, size);
-    let label = |s: &str| label(s, size);
-    let focus = pinned
-        .map(|r| (r, lang.tr("app.present.pinned")))
-        .or(hovered.map(|r| (r, lang.tr("app.present.hovered"))));
-    ui.horizontal_wrapped(|ui| match &focus {
-        Some((r, how)) => {
-            let mode = match r.mode {
-                Interpolation::Affine => lang.tr("app.present.affine"),
-                Interpolation::Perspective => lang.tr("app.present.perspective"),
-            };
-            ui.label(
-                big(format!(
-                    "{} {}, {} ({how}) · {mode}",
+/// The pixel's lines: which pixel and mode, the weights table (rows in the vertex colours),
+/// 1/W_P and W_P, the depth, uv both ways.
+fn pixel_ui(ui: &mut Ui, r: &PixelReport, how: &str, size: f32, lang: crate::i18n::Lang) {
+    // Every w equal (a flat triangle facing the camera): both modes agree, and the card says
+    // so instead of naming one.
+    let flat = r.trace.detail.as_ref().and_then(|d| {
+        let w = d
+            .raster
+            .vertices
+            .iter()
+            .map(|v| v.inv_w)
+            .collect::<Vec<_>>();
+        let first = *w.first()?;
+        w.iter()
+            .all(|x| (x - first).abs() <= FLAT_TOLERANCE * first.abs())
+            .then(|| 1.0 / first)
+    });
+    let mode = match (flat, r.mode) {
+        (Some(w), _) => lang.tr_with("app.present.flat", &[("w", &fmt_digits(w, DIGITS))]),
+        (None, Interpolation::Affine) => lang.tr("app.present.affine"),
+        (None, Interpolation::Perspective) => lang.tr("app.present.perspective"),
+    };
+    ui.add(
+        egui::Label::new(
+            big(
+                format!(
+                    "{} {}, {} ({how})",
                     &lang.tr("app.present.pixel"),
                     r.pixel[0],
                     r.pixel[1]
-                ))
-                .color(ACCENT)
-                .strong(),
-            );
-        }
-        None => {
-            ui.label(big(lang.tr("app.present.no_pixel")).color(ACCENT));
-        }
-    });
-    let Some((r, _)) = focus else {
-        return;
-    };
+                ),
+                size,
+            )
+            .color(ACCENT)
+            .strong(),
+        )
+        .wrap_mode(egui::TextWrapMode::Truncate),
+    );
+    ui.label(big(mode, size).color(ACCENT));
     let Some(d) = &r.trace.detail else {
-        ui.label(big(lang.tr("app.present.not_covered")));
+        ui.add(egui::Label::new(big(lang.tr("app.present.not_covered"), size)).wrap());
         return;
     };
+    // Two columns (the table, then the other lines) where the card is wide enough, else one.
+    let wide = ui.available_width() >= 2.0 * CARD_EMS * MONO_ADVANCE * size + size;
+    if wide {
+        ui.horizontal_top(|ui| {
+            ui.vertical(|ui| table_ui(ui, r, d, size, lang));
+            ui.add_space(size);
+            ui.vertical(|ui| lines_ui(ui, r, d, size, lang));
+        });
+    } else {
+        table_ui(ui, r, d, size, lang);
+        lines_ui(ui, r, d, size, lang);
+    }
+}
+
+/// The weights table: a row per vertex in its colour, r s t, 1/W, a b c.
+fn table_ui(
+    ui: &mut Ui,
+    r: &PixelReport,
+    d: &crate::probe::TriangleTrace,
+    size: f32,
+    lang: crate::i18n::Lang,
+) {
     let correction = d.perspective.map(|p| p.correction);
+    let mesh_indices = r.mark().triangle.map(|t| t.mesh_indices);
     // A table of fixed-width cells (monospace numbers line up; no measured layout that could
     // change from frame to frame).
-    let grid = |ui: &mut Ui| {
-        let cell = |ui: &mut Ui, t: RichText, ems: f32| {
-            ui.add_sized(
-                [ems * size * 0.62, size * ROW],
-                egui::Label::new(t).wrap_mode(egui::TextWrapMode::Extend),
-            );
-        };
-        ui.horizontal(|ui| {
-            cell(ui, label(""), 1.5);
-            for h in [
-                &lang.tr("app.present.screen"),
-                &lang.tr("app.present.inv_w"),
-                &lang.tr("app.present.corrected"),
-            ] {
-                cell(ui, label(h), NUMBER_EMS);
-            }
-        });
-        for (k, v) in d.raster.vertices.iter().enumerate() {
-            ui.horizontal(|ui| {
-                cell(ui, big(v.name.clone()).color(ACCENT).strong(), 1.5);
-                cell(ui, big(num(d.screen.rasterizer[k])), NUMBER_EMS);
-                cell(ui, big(num(v.inv_w)), NUMBER_EMS);
-                let c = correction.map_or("–".into(), |c| num(c.weights[k]));
-                cell(ui, big(c), NUMBER_EMS);
-            });
-        }
+    let cell = |ui: &mut Ui, t: RichText, ems: f32| {
+        ui.add_sized(
+            [ems * size * MONO_ADVANCE, size * ROW],
+            egui::Label::new(t).wrap_mode(egui::TextWrapMode::Extend),
+        );
     };
-    let lines = |ui: &mut Ui| {
-        if let Some(c) = correction {
-            ui.label(big(format!(
-                "{} = {}",
+    ui.horizontal(|ui| {
+        ui.spacing_mut().item_spacing.x = 0.0;
+        cell(ui, big("", size), NAME_EMS);
+        for h in [
+            &lang.tr("app.present.screen"),
+            &lang.tr("app.present.inv_w"),
+            &lang.tr("app.present.corrected"),
+        ] {
+            cell(ui, big(h.as_str(), size).color(DIM), NUMBER_EMS);
+        }
+    });
+    for (k, v) in d.raster.vertices.iter().enumerate() {
+        let rgba = match mesh_indices.and_then(|m| m[k]) {
+            Some(i) => vertex_color(i),
+            None => CLIP_POINT,
+        };
+        let c = Color32::from_rgb(rgba[0], rgba[1], rgba[2]);
+        ui.horizontal(|ui| {
+            ui.spacing_mut().item_spacing.x = 0.0;
+            cell(ui, big(v.name.clone(), size).color(c).strong(), NAME_EMS);
+            cell(
+                ui,
+                big(num(d.screen.rasterizer[k]), size).color(c),
+                NUMBER_EMS,
+            );
+            cell(ui, big(num(v.inv_w), size).color(c), NUMBER_EMS);
+            let w = correction.map_or("–".into(), |cr| num(cr.weights[k]));
+            cell(ui, big(w, size).color(c), NUMBER_EMS);
+        });
+    }
+}
+
+/// 1/W_P and W_P, the depth, uv both ways (the mode's in the accent colour).
+fn lines_ui(
+    ui: &mut Ui,
+    r: &PixelReport,
+    d: &crate::probe::TriangleTrace,
+    size: f32,
+    lang: crate::i18n::Lang,
+) {
+    let correction = d.perspective.map(|p| p.correction);
+    if let Some(c) = correction {
+        ui.label(big(
+            format!(
+                "{} = {}  {} = {}",
                 &lang.tr("app.present.inv_w_p"),
-                num(c.inv_w_p)
-            )));
-            ui.label(big(format!(
-                "{} = {}",
+                num(c.inv_w_p),
                 &lang.tr("app.present.w_p"),
                 num(c.w_p)
-            )));
-        }
-        if let Some(a) = &d.attribute {
-            let strong = |t: RichText, on: bool| if on { t.color(ACCENT) } else { t };
-            ui.label(strong(
-                big(format!(
+            ),
+            size,
+        ));
+    }
+    if let Some(depth) = &d.depth {
+        ui.label(big(
+            format!("{} = {}", &lang.tr("app.present.depth"), num(depth.depth)),
+            size,
+        ));
+    }
+    if let Some(a) = &d.attribute {
+        let strong = |t: RichText, on: bool| if on { t.color(ACCENT) } else { t };
+        ui.label(strong(
+            big(
+                format!(
                     "{} {}",
                     &lang.tr("app.present.uv_affine"),
                     pair(a.uv_affine)
-                )),
-                r.mode == Interpolation::Affine,
-            ));
-            ui.label(strong(
-                big(format!(
+                ),
+                size,
+            ),
+            r.mode == Interpolation::Affine,
+        ));
+        ui.label(strong(
+            big(
+                format!(
                     "{} {}",
                     &lang.tr("app.present.uv_perspective"),
                     pair(a.uv_perspective)
-                )),
-                r.mode == Interpolation::Perspective,
-            ));
-        }
-    };
-    // Side by side when the card is wide enough, else one above the other (decided from the
-    // width alone, so the layout cannot flip back and forth).
-    if ui.available_width() >= SIDE_BY_SIDE_EMS * size {
-        ui.horizontal_top(|ui| {
-            ui.vertical(grid);
-            ui.add_space(size);
-            ui.vertical(lines);
-        });
-    } else {
-        grid(ui);
-        lines(ui);
+                ),
+                size,
+            ),
+            r.mode == Interpolation::Perspective,
+        ));
     }
 }
 
@@ -246,22 +327,15 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_card_under_the_canvas_leaves_it_over_half_the_window() {
-        // 1024x768 at text sizes 1, 1.5 and 2 (the window in points), and 1920x1080.
-        for [w, h] in [
-            [1024.0, 768.0],
-            [682.7, 512.0],
-            [512.0, 384.0],
-            [1280.0, 720.0],
-        ] {
-            let size = card_text_below(w - PANEL_MARGINS, h, 8.0);
-            let card = card_height(w - PANEL_MARGINS, 8.0, size) + PANEL_MARGINS;
-            assert!(
-                card <= CARD_MAX_SHARE * h + 0.5,
-                "{w}x{h}: {card} for {size}"
-            );
+    fn the_card_text_fills_the_width_it_is_given_within_its_range() {
+        for size in [12.0, 20.0, 31.5] {
+            let w = card_width_for_text(size);
+            assert!((card_text_for_width(w) - size).abs() < 1e-3, "{size}");
         }
-        // At 1024x768 the numbers keep their full size.
-        assert_eq!(card_text_below(1000.0, 768.0, 8.0), card_text(768.0));
+        // Too narrow or too wide: the range's ends.
+        assert_eq!(card_text_for_width(10.0), CARD_TEXT_RANGE.0);
+        assert_eq!(card_text_for_width(5000.0), CARD_TEXT_RANGE.1);
+        // A card without a pixel is far smaller than one with.
+        assert!(card_height(20.0, false, 4.0) < 0.4 * card_height(20.0, true, 4.0));
     }
 }

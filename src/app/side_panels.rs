@@ -19,6 +19,10 @@ pub const PANEL_SLACK: f32 = 10.0;
 pub const CANVAS_MARGIN: f32 = 8.0;
 /// Points: the width of a collapsed panel's strip.
 pub const STRIP: f32 = 30.0;
+/// Points: the narrowest the canvas gets when the user opens a panel that the canvas's share
+/// leaves no room for (a projector at a large text size): the canvas gives way down to this
+/// width rather than the panel staying shut.
+pub const CANVAS_MIN_WIDTH: f32 = 200.0;
 
 /// Which side panel gets the room first when both do not fit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -54,6 +58,46 @@ pub fn budget(window: [f32; 2], row_height: f32) -> f32 {
     let m = 2.0 * CANVAS_MARGIN;
     let min_canvas = CANVAS_SHARE * w * h / (row_height - m).max(1.0) + m;
     (w - min_canvas - 2.0 * PANEL_SLACK).max(0.0)
+}
+
+/// Points of width a panel the user opened may take when [`budget`] leaves it no room: the
+/// window less the canvas's narrowest width.
+pub fn room(window_width: f32) -> f32 {
+    (window_width - CANVAS_MIN_WIDTH - 2.0 * CANVAS_MARGIN - 2.0 * PANEL_SLACK).max(0.0)
+}
+
+/// Which panels open in `budget` points, the `first` one first. A panel the user opened
+/// (`forced`) that `budget` leaves shut opens all the same in `room` points (the canvas gives
+/// way), the other one then a strip.
+pub fn fits_forced(
+    budget: f32,
+    room: f32,
+    controls: bool,
+    inspector: bool,
+    first: Side,
+    forced: Option<Side>,
+) -> Fits {
+    let mut f = fits(budget, controls, inspector, first);
+    let strips = if controls && inspector { STRIP } else { 0.0 };
+    let open = Fit::Open { max: room - strips };
+    if room - strips >= PANEL_MIN {
+        match forced {
+            Some(Side::Controls) if controls && f.controls == Fit::Strip => {
+                f.controls = open;
+                if inspector {
+                    f.inspector = Fit::Strip;
+                }
+            }
+            Some(Side::Inspector) if inspector && f.inspector == Fit::Strip => {
+                f.inspector = open;
+                if controls {
+                    f.controls = Fit::Strip;
+                }
+            }
+            _ => {}
+        }
+    }
+    f
 }
 
 /// Which panels open in `budget` points, the `first` one first.
@@ -118,6 +162,35 @@ mod tests {
         let f = fits(PANEL_MIN + STRIP + 10.0, true, true, Side::Controls);
         assert_eq!(f.inspector, Fit::Strip);
         assert!(matches!(f.controls, Fit::Open { .. }));
+        // Text size 1.5 at 1024x768: the canvas's share leaves no room, but a panel the user
+        // opens opens (the canvas gives way, keeping CANVAS_MIN_WIDTH), the other a strip.
+        let (w, b) = (1024.0 / 1.5, budget([1024.0 / 1.5, 768.0 / 1.5], 440.0));
+        assert_eq!(fits(b, true, true, Side::Inspector).inspector, Fit::Strip);
+        for side in [Side::Controls, Side::Inspector] {
+            let f = fits_forced(b, room(w), true, true, side, Some(side));
+            let (open, other) = match side {
+                Side::Controls => (f.controls, f.inspector),
+                Side::Inspector => (f.inspector, f.controls),
+            };
+            assert!(
+                matches!(open, Fit::Open { max } if max >= PANEL_MIN),
+                "{f:?}"
+            );
+            assert_eq!(other, Fit::Strip);
+        }
+        // Text size 2: still each panel opens on request.
+        let f = fits_forced(
+            0.0,
+            room(512.0),
+            true,
+            true,
+            Side::Controls,
+            Some(Side::Controls),
+        );
+        assert!(matches!(f.controls, Fit::Open { .. }), "{f:?}");
+        // Not asked for: the canvas keeps its share.
+        let f = fits_forced(b, room(w), true, true, Side::Inspector, None);
+        assert_eq!((f.controls, f.inspector), (Fit::Strip, Fit::Strip));
         // Nothing wanted, nothing shown.
         let f = fits(1000.0, false, false, Side::Controls);
         assert_eq!((f.controls, f.inspector), (Fit::Hidden, Fit::Hidden));

@@ -67,7 +67,7 @@ impl Default for ViewSettings {
             wipe: 0.5,
             show_grid: true,
             show_handles: true,
-            show_sub_areas: true,
+            show_sub_areas: false,
             show_controls: true,
             show_inspector: true,
             pinned: None,
@@ -281,8 +281,9 @@ impl AppState {
                 } else {
                     self.scene_dir = None;
                 }
+                // The pin stays (the image size is kept): stepping through the presets shows
+                // the same pixel in each situation.
                 self.scene = scene;
-                self.view.pinned = None;
             }
             Command::ResetScene => {
                 let (w, h) = self.scene.size();

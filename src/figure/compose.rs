@@ -166,7 +166,13 @@ impl Figure {
             u64::from(h) * u64::from(o.pixel_size),
         );
         let [m, gap, strip] = layout_points(k).map(u64::from);
-        let total_w = 2 * m + u64::from(n) * view_w + u64::from(n - 1) * gap;
+        // A difference view keeps room right of its image for the colour bar.
+        let bar = if contents.contains(&ViewContent::Difference) {
+            (overlay::COLOR_BAR_ROOM * k).ceil() as u64
+        } else {
+            0
+        };
+        let total_w = 2 * m + u64::from(n) * view_w + u64::from(n - 1) * gap + bar;
         let total_h = 2 * m + strip + view_h;
         let (px_w, px_h) = (total_w * u64::from(o.scale), total_h * u64::from(o.scale));
         if px_w > u64::from(MAX_FIGURE_SIZE) || px_h > u64::from(MAX_FIGURE_SIZE) {
@@ -307,6 +313,7 @@ impl Figure {
                 hover: hovered.as_ref().map(pixel_mark),
                 pin: pinned.as_ref().map(pixel_mark),
                 sub_areas: o.show_sub_areas,
+                sub_area_fill: settings.shading != crate::raster::Shading::Texture,
                 wipe: (content == ViewContent::Wipe).then_some((
                     f64::from(o.wipe) * f64::from(w),
                     Interpolation::Affine,
@@ -323,7 +330,7 @@ impl Figure {
             let (left, right) = (
                 if i == 0 { m as f32 } else { gap as f32 / 2.0 },
                 if i + 1 == n as usize {
-                    m as f32
+                    (m + bar) as f32
                 } else {
                     gap as f32 / 2.0
                 },

@@ -139,7 +139,8 @@ impl InspectorSection {
     }
 }
 
-/// The overlays drawn over the canvas (each defaults to shown).
+/// The overlays drawn over the canvas (the grid and the handles default to shown, the
+/// sub-triangles to hidden: a step that teaches areas shows them).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Overlays {
@@ -156,7 +157,7 @@ impl Default for Overlays {
         Self {
             grid: true,
             handles: true,
-            sub_areas: true,
+            sub_areas: false,
         }
     }
 }

@@ -59,8 +59,11 @@ pub struct OverlayInput {
     pub hover: Option<PixelMark>,
     /// The pinned pixel (marker, triangle, sub-triangles).
     pub pin: Option<PixelMark>,
-    /// Draw the hovered pixel's sub-triangles.
+    /// Draw the marked pixel's sub-triangles.
     pub sub_areas: bool,
+    /// Fill the sub-triangles (tinted); off, they are outlines only, so a texture under them
+    /// keeps its colours.
+    pub sub_area_fill: bool,
     /// Wipe line x in canvas pixels, with the modes left and right of it.
     pub wipe: Option<(f64, Interpolation, Interpolation)>,
     /// Colour bar top value in texels (difference view).

@@ -10,15 +10,16 @@ use super::{
     vertex_color, vertex_name, with_alpha,
 };
 
-/// The triangle outline and, if asked, the three sub-triangles P V_{i+1} V_{i+2}, each in
-/// the colour of the vertex V_i whose weight its signed area is (dashed when negative).
+/// The triangle outline and, if asked (`Some(fill)`), the three sub-triangles P V_{i+1}
+/// V_{i+2}, each in the colour of the vertex V_i whose weight its signed area is (dashed when
+/// negative), tinted when `fill`, else outlines only.
 pub(super) fn triangle_shapes(
     shapes: &mut Vec<Shape>,
     t: &TriangleMark,
     p: DVec2,
-    sub_areas: bool,
+    sub_areas: Option<bool>,
 ) {
-    if sub_areas {
+    if let Some(fill) = sub_areas {
         for i in 0..3 {
             let (j, k) = ((i + 1) % 3, (i + 2) % 3);
             let color = t.mesh_indices[i].map_or(CLIP_POINT, vertex_color);
@@ -27,10 +28,10 @@ pub(super) fn triangle_shapes(
                 points: vec![p, t.vertices[j], t.vertices[k]],
                 fill: with_alpha(
                     color,
-                    if negative {
-                        SUB_AREA_ALPHA / 2
-                    } else {
-                        SUB_AREA_ALPHA
+                    match (fill, negative) {
+                        (false, _) => 0,
+                        (true, true) => SUB_AREA_ALPHA / 2,
+                        (true, false) => SUB_AREA_ALPHA,
                     },
                 ),
                 stroke: Some(Stroke::new(
@@ -44,9 +45,18 @@ pub(super) fn triangle_shapes(
     shapes.push(Shape::Polygon {
         points: t.vertices.to_vec(),
         fill: [0, 0, 0, 0],
-        stroke: Some(Stroke::new(3.0, [255, 255, 255, 230])),
+        stroke: Some(Stroke::new(3.0, TRIANGLE_OUTLINE)),
         dashed: false,
     });
+}
+
+/// Colour of the marked pixel's triangle outline.
+const TRIANGLE_OUTLINE: Rgba = [255, 255, 255, 230];
+
+/// Whether `shape` is the marked pixel's triangle outline (drawn by [`triangle_shapes`]).
+pub fn is_triangle_outline(shape: &Shape) -> bool {
+    matches!(shape, Shape::Polygon { fill: [_, _, _, 0], stroke: Some(s), dashed: false, points }
+        if s.color == TRIANGLE_OUTLINE && points.len() == 3)
 }
 
 /// A square around the pixel and a crosshair through its centre.
@@ -172,3 +182,61 @@ pub(super) fn behind_note(handles: &[HandleMark], behind: &str) -> Option<String
         .collect();
     (!names.is_empty()).then(|| format!("{behind}: {}", names.join(", ")))
 }
+
+/// The scanline of a marked pixel: where its row's centre line (y = row + 1/2) crosses the
+/// triangle's edges, the span between the two crossings, and a dot on each crossing, for the
+/// two-step (edges, then span) interpolation a scanline rasterizer does. `None` when the row
+/// misses the triangle.
+///
+/// ```
+/// use barylab::figure::overlay::{span_shapes, Shape, TriangleMark};
+/// use glam::DVec2;
+/// let t = TriangleMark {
+///     vertices: [DVec2::new(0.0, 10.0), DVec2::new(10.0, 10.0), DVec2::new(0.0, 0.0)],
+///     mesh_indices: [Some(0), Some(1), Some(2)],
+///     weights: [0.3, 0.3, 0.4],
+/// };
+/// // Row 4: its centre line y = 4.5 crosses x = 0 (edge CA) and x = 4.5 (edge BC).
+/// let shapes = span_shapes(&t, 4).expect("the row crosses the triangle");
+/// let Shape::Line { points, .. } = &shapes[1] else { panic!("the span first") };
+/// assert_eq!(points, &vec![DVec2::new(0.0, 4.5), DVec2::new(4.5, 4.5)]);
+/// ```
+pub fn span_shapes(t: &TriangleMark, row: u32) -> Option<Vec<Shape>> {
+    let y = f64::from(row) + 0.5;
+    let mut xs: Vec<f64> = Vec::with_capacity(3);
+    for i in 0..3 {
+        let (a, b) = (t.vertices[i], t.vertices[(i + 1) % 3]);
+        if (a.y - y) * (b.y - y) > 0.0 || a.y == b.y {
+            continue;
+        }
+        let k = (y - a.y) / (b.y - a.y);
+        xs.push(a.x + k * (b.x - a.x));
+    }
+    let lo = xs.iter().copied().reduce(f64::min)?;
+    let hi = xs.iter().copied().reduce(f64::max)?;
+    let (l, r) = (DVec2::new(lo, y), DVec2::new(hi, y));
+    let mut shapes = vec![
+        Shape::Line {
+            points: vec![l, r],
+            stroke: Stroke::new(6.0, SHADOW),
+            dashed: false,
+        },
+        Shape::Line {
+            points: vec![l, r],
+            stroke: Stroke::new(3.0, SPAN),
+            dashed: false,
+        },
+    ];
+    for p in [l, r] {
+        shapes.push(Shape::Circle {
+            centre: p,
+            radius: 6.0,
+            fill: SPAN,
+            stroke: Some(Stroke::new(2.0, SHADOW)),
+        });
+    }
+    Some(shapes)
+}
+
+/// Colour of the scanline span and its edge crossings.
+const SPAN: Rgba = [255, 230, 80, 255];

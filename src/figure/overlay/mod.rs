@@ -19,7 +19,7 @@ mod shape;
 mod style;
 
 pub use inputs::{HandleMark, OverlayInput, PixelMark, TriangleMark};
-pub use marks::{SCIENTIFIC_W, behind_camera_note, format_w};
+pub use marks::{SCIENTIFIC_W, behind_camera_note, format_w, is_triangle_outline, span_shapes};
 use marks::{behind_note, handle_shapes, pixel_marker, triangle_shapes};
 pub use shape::{Anchor, Overlay, Shape, Stroke};
 pub use style::*;
@@ -152,7 +152,7 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
             .collect();
         shapes.push(Shape::ColorBar {
             at: DVec2::new(wf, 0.0),
-            offset: [-90.0, COLOR_BAR_TOP],
+            offset: [COLOR_BAR_GAP, COLOR_BAR_TOP],
             size: [
                 26.0,
                 color_bar_height(
@@ -165,10 +165,12 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
         });
     }
 
-    for mark in [input.pin, input.hover].into_iter().flatten() {
-        if let Some(t) = mark.triangle {
-            triangle_shapes(&mut shapes, &t, centre_of(mark.pixel), input.sub_areas);
-        }
+    // One set of triangle marks at a time: the pinned pixel's, else the hovered one's.
+    if let Some(mark) = input.pin.or(input.hover)
+        && let Some(t) = mark.triangle
+    {
+        let sub_areas = input.sub_areas.then_some(input.sub_area_fill);
+        triangle_shapes(&mut shapes, &t, centre_of(mark.pixel), sub_areas);
     }
     if let Some(pin) = input.pin {
         pixel_marker(&mut shapes, pin.pixel, PIN, wf, hf, false);
@@ -202,6 +204,12 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
 
 /// Points: the colour bar's top lies this far below the image's top.
 const COLOR_BAR_TOP: f32 = 60.0;
+/// Points between the image's right edge and the colour bar: the bar sits outside the image,
+/// in the room the canvas keeps there ([`COLOR_BAR_ROOM`]).
+const COLOR_BAR_GAP: f32 = 12.0;
+/// Points the canvas (and a figure) keeps right of a difference image for its colour bar and
+/// the bar's labels.
+pub const COLOR_BAR_ROOM: f32 = 96.0;
 /// Points: the colour bar's largest height, and the room kept below it (its background and
 /// a margin).
 const COLOR_BAR_HEIGHT: f32 = 260.0;
@@ -243,6 +251,7 @@ mod tests {
             hover: None,
             pin: None,
             sub_areas: true,
+            sub_area_fill: true,
             wipe: None,
             color_bar: None,
         }
