@@ -7,7 +7,7 @@
 use std::arch::x86_64::*;
 
 use super::Target;
-use super::avx2::{VecSampler, VecWrap};
+use super::avx2_sampler::{VecSampler, VecWrap};
 use crate::raster::interpolate::Interpolation;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD};
 
@@ -475,7 +475,7 @@ mod tests {
                     // SAFETY: the CPU has AVX2 (checked above); 8 lanes in and out.
                     unsafe {
                         let x = _mm256_loadu_ps(xs[8 * h..].as_ptr());
-                        let v = super::super::avx2::byte_from_sum(x);
+                        let v = super::super::avx2_sampler::byte_from_sum(x);
                         _mm256_storeu_si256(out[8 * h..].as_mut_ptr().cast(), v);
                     }
                 }
