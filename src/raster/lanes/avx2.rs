@@ -194,7 +194,7 @@ pub(super) fn edge_triangle(
     target: &mut Target<'_>,
 ) {
     if wide {
-        // SAFETY: `wide` is set only when the CPU has these features (`wide_path`).
+        // SAFETY: `wide` is set only when the CPU has these features (`VectorLevel::avx512`).
         unsafe { edge_triangle_512(tri, rows, sampler, shading, target) }
     } else {
         edge_triangle_256(tri, rows, sampler, shading, target)
@@ -625,6 +625,7 @@ fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
             channel_colors::<SITE, WIDE>([lo.depth, hi.depth], channel, color)
         }
     };
-    // SAFETY: this module runs with AVX2.
+    // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
+    // band's row inside the image (`finish`'s conditions; every chunk is made so).
     unsafe { finish::<WIDE>(target, &chunk, rgba, both.as_ref()) }
 }

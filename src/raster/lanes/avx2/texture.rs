@@ -39,20 +39,24 @@ impl Lookups {
     ) {
         if !(WIDE && self.wide) || both.is_some() {
             let rgba = sample::<SITE, WIDE>(sampler, chunk.u, chunk.v);
-            // SAFETY: this module runs with AVX2.
+            // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
+            // band's row inside the image (`finish`'s conditions; every chunk is made so).
             unsafe { finish::<WIDE>(target, &chunk, rgba, both) };
             return;
         }
         match self.pending.take() {
             None => self.pending = Some(chunk),
             Some(first) => {
-                // SAFETY: `wide` is set only when the CPU has AVX-512 F and BW (`wide_path`).
+                // SAFETY: `wide` is set only when the CPU has AVX-512 F, BW, VL and DQ
+                // (`VectorLevel::avx512`).
                 let (a, b) = unsafe {
                     super::super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
-                // SAFETY: this module runs with AVX2.
+                // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
+                // band's row inside the image (`finish`'s conditions; every chunk is made so).
                 unsafe { finish::<WIDE>(target, &first, a, None) };
-                // SAFETY: this module runs with AVX2.
+                // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
+                // band's row inside the image (`finish`'s conditions; every chunk is made so).
                 unsafe { finish::<WIDE>(target, &chunk, b, None) };
             }
         }
@@ -63,7 +67,8 @@ impl Lookups {
     pub(super) fn flush(&mut self, sampler: Option<&VecSampler<'_>>, target: &mut Target<'_>) {
         if let (Some(chunk), Some(sampler)) = (self.pending.take(), sampler) {
             let rgba = sample::<{ u8::MAX }, false>(sampler, chunk.u, chunk.v);
-            // SAFETY: this module runs with AVX2.
+            // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
+            // band's row inside the image (`finish`'s conditions; every chunk is made so).
             unsafe { finish::<false>(target, &chunk, rgba, None) };
         }
     }
