@@ -1,5 +1,5 @@
 //! The memory a render needs, estimated before anything is allocated (the limit and the check
-//! are [`budget`](crate::budget)'s): the framebuffer (bytes per pixel from the buffer layout,
+//! are [`crate::budget`]'s): the framebuffer (bytes per pixel from the buffer layout,
 //! [`Buffers::bytes_per_pixel`]), the output image, the mesh, and per source triangle what the
 //! full render ([`PreparedTriangle`]) or the fast path (`Slot`, `ProjectedVertex`) keeps.
 
