@@ -1,6 +1,8 @@
 //! The memory budget: what a render, a figure, a scene or a model needs is estimated before
 //! anything is allocated, and a request past the budget is refused with a message giving the
-//! need and the limit (instead of the process being killed for want of memory).
+//! need and the limit (instead of the process being killed for want of memory). The limit,
+//! the error and the generic checks live here; each estimate lives with what it sizes (a
+//! render's in [`raster::footprint`](crate::raster::footprint)).
 //!
 //! The limit is, in order: [`set_limit`] (the command line's `--memory-limit`), the
 //! environment variable [`LIMIT_ENV`], or [`AVAILABLE_SHARE`] of the memory the system reports
@@ -10,10 +12,6 @@ use std::sync::OnceLock;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::files::bytes;
-use crate::raster::fast::{ProjectedVertex, Slot};
-use crate::raster::framebuffer::{Buffers, Framebuffer};
-use crate::raster::render::{MeshVertex, PreparedTriangle};
-use crate::raster::setup::TriangleSetup;
 
 /// Environment variable that sets the limit, e.g. `BARYLAB_MEMORY_LIMIT=2G`.
 pub const LIMIT_ENV: &str = "BARYLAB_MEMORY_LIMIT";
@@ -187,69 +185,6 @@ pub fn try_vec<T>(n: usize, what: &str) -> Result<Vec<T>, MemoryError> {
     Ok(v)
 }
 
-/// Bytes per pixel of a framebuffer with `buffers`.
-pub fn framebuffer_bytes_per_pixel(buffers: Buffers) -> u64 {
-    let f = Framebuffer::with_buffers(1, 1, [0; 4], buffers);
-    let per = |n: usize, size: usize| (n * size) as u64;
-    per(f.color.len(), size_of::<[u8; 4]>())
-        + per(f.depth.len(), size_of::<f32>())
-        + per(f.triangle.len(), size_of::<u32>())
-        + per(f.facing.len(), 1)
-        + per(f.weights_screen.len(), size_of::<[f32; 3]>())
-        + per(f.weights_perspective.len(), size_of::<[f32; 3]>())
-        + per(f.uv_affine.len(), size_of::<[f32; 2]>())
-        + per(f.uv_perspective.len(), size_of::<[f32; 2]>())
-        + per(f.inv_w.len(), size_of::<f32>())
-        + per(f.texel_difference.len(), size_of::<f32>())
-}
-
-/// What a render of `width` x `height` with `buffers` of a mesh with `vertices` and
-/// `triangles` needs: the framebuffer, the output image (4 bytes a pixel), the mesh, and per
-/// source triangle one set-up triangle (the full render, [`Buffers::All`]) or the fast path's
-/// compact record and its place in a band's list (clipped triangles take more, found by
-/// fallible allocation).
-pub fn render_need(
-    width: u32,
-    height: u32,
-    buffers: Buffers,
-    vertices: usize,
-    triangles: usize,
-) -> u64 {
-    let pixels = u64::from(width) * u64::from(height);
-    let (per_triangle, per_vertex) = if buffers == Buffers::All {
-        (
-            size_of::<PreparedTriangle>() + size_of::<TriangleSetup>(),
-            0,
-        )
-    } else {
-        (
-            size_of::<Slot>() + size_of::<(u32, u32)>() * 2,
-            size_of::<ProjectedVertex>(),
-        )
-    };
-    let (per_triangle, per_vertex) = (per_triangle as u64, per_vertex as u64);
-    pixels * (framebuffer_bytes_per_pixel(buffers) + 4)
-        + vertices as u64 * (size_of::<MeshVertex>() as u64 + per_vertex)
-        + triangles as u64 * (per_triangle + size_of::<[u32; 3]>() as u64)
-}
-
-/// Checks a render before it starts; `what` is named in the message.
-pub fn check_render(
-    width: u32,
-    height: u32,
-    buffers: Buffers,
-    vertices: usize,
-    triangles: usize,
-) -> Result<(), MemoryError> {
-    check(
-        || {
-            let t = if triangles == 1 { "" } else { "s" };
-            format!("a {width}x{height} render of {triangles} triangle{t}")
-        },
-        render_need(width, height, buffers, vertices, triangles),
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -263,19 +198,5 @@ mod tests {
         assert_eq!(parse_size("-5"), None);
         assert_eq!(parse_size("lots"), None);
         assert_eq!(parse_size("0"), None);
-    }
-
-    #[test]
-    fn a_full_size_render_needs_gigabytes() {
-        let need = render_need(16384, 16384, Buffers::All, 4, 2);
-        assert!(need > 14 << 30, "{}", bytes(need));
-        let small = render_need(16384, 16384, Buffers::ColorDepth, 4, 2);
-        assert!(small < need / 4, "{}", bytes(small));
-    }
-
-    #[test]
-    fn ten_million_triangles_need_gigabytes_at_any_size() {
-        let need = render_need(800, 600, Buffers::All, 10_000_000, 10_000_000);
-        assert!(need > 5 << 30, "{}", bytes(need));
     }
 }

@@ -1,5 +1,7 @@
 //! The app driven through egui_kittest: real clicks, hovers, drags and keys on the real UI.
 
+mod common;
+
 use barylab::app::state::Command;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::vertices_on_screen;
@@ -11,20 +13,11 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec2;
 
-/// Frames a run may take to settle (smooth scrolling spreads a wheel event over a few).
-const MAX_STEPS: u64 = 30;
-
 /// Window size of the tests, in points.
 const SIZE: egui::Vec2 = egui::vec2(1500.0, 950.0);
 
 fn harness() -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, AppOptions::default());
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .with_max_steps(MAX_STEPS)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness(SIZE, AppOptions::default())
 }
 
 /// Screen position (points) of the centre of rendered pixel `p` in view 0.
@@ -295,10 +288,7 @@ fn state_is_saved_on_exit_and_restored_on_start() {
     ] {
         app.push(c);
     }
-    let mut h2 = Harness::builder()
-        .with_size(SIZE)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h2.run();
+    let mut h2 = common::app::harness_of(app, SIZE);
     assert_eq!(h2.state().state(), &before);
     h2.state_mut().save(&mut storage);
     let restored = BaryApp::new(
@@ -328,10 +318,7 @@ fn state_file_is_written_atomically_and_read_first() {
     };
     let mut app = BaryApp::new_with_state_file(None, persist(), Some(path.clone()));
     app.push(Command::Preset(barylab::app::presets::Preset::FarCorner));
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
+    let mut h = common::app::harness_of(app, SIZE);
     let saved = h.state().state().clone();
     assert_ne!(saved.scene, Scene::default_scene());
     let mut storage = MemoryStorage::default();

@@ -7,6 +7,8 @@
 //! that need Chinese glyphs fail under CI (CI=true) and are skipped elsewhere, as in
 //! tests/figure_zh.rs.
 
+mod common;
+
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -37,16 +39,11 @@ fn have_cjk_font() -> bool {
 }
 
 fn harness_with(app: BaryApp) -> Harness<'static, BaryApp> {
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness_of(app, SIZE)
 }
 
 fn harness(options: AppOptions) -> Harness<'static, BaryApp> {
-    harness_with(BaryApp::new(None, options))
+    common::app::harness(SIZE, options)
 }
 
 fn shows(h: &Harness<'_, BaryApp>, label: &str) -> bool {

@@ -2,6 +2,8 @@
 //! canvas's share of a projector's window, presentation mode, undo and redo. Driven through
 //! egui_kittest like tests/app.rs.
 
+mod common;
+
 use std::process::Command as Process;
 
 use barylab::app::command::AppCommand;
@@ -16,16 +18,8 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec2;
 
-const MAX_STEPS: u64 = 30;
-
 fn harness(size: egui::Vec2) -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, AppOptions::default());
-    let mut h = Harness::builder()
-        .with_size(size)
-        .with_max_steps(MAX_STEPS)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness(size, AppOptions::default())
 }
 
 /// Lets a new window size or text size settle (the zoom lays the window out again).

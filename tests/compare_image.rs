@@ -4,6 +4,8 @@
 //! The comparison runs in a background thread: the frame that starts it returns at once, the
 //! last result stays shown meanwhile, and a later frame shows the new one ([`settle`]).
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
 use barylab::app::command::AppCommand;
@@ -22,12 +24,7 @@ const SIZE: egui::Vec2 = egui::vec2(1280.0, 800.0);
 const IMAGE: [u32; 2] = [160, 120];
 
 fn harness() -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, AppOptions::default());
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
+    let mut h = common::app::harness(SIZE, AppOptions::default());
     h.state_mut().push(AppCmd::SetImageSize(Some(IMAGE)));
     h.run();
     h

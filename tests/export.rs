@@ -1,6 +1,8 @@
 //! The app's Export panel driven through egui_kittest, and its files checked against
 //! `barylab figure` run on the exported scene.
 
+mod common;
+
 use std::path::Path;
 use std::process::Command;
 
@@ -16,13 +18,7 @@ use glam::DVec2;
 const SIZE: egui::Vec2 = egui::vec2(1500.0, 950.0);
 
 fn harness() -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, AppOptions::default());
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness(SIZE, AppOptions::default())
 }
 
 fn pixel_centre(h: &Harness<'_, BaryApp>, p: [u32; 2]) -> Pos2 {

@@ -7,8 +7,8 @@
 
 mod common;
 
-use barylab::raster::lanes::{VectorLevel, set_vector_level};
-use barylab::raster::render::{ClipMesh, Rasterizer, RenderSettings, render, render_into};
+use barylab::raster::lanes::VectorLevel;
+use barylab::raster::render::{ClipMesh, Rasterizer, RenderSettings, render, render_into_at};
 use barylab::raster::setup::TieRule;
 use barylab::raster::texture::texel_difference;
 use barylab::raster::{
@@ -18,8 +18,16 @@ use barylab::scene::Scene;
 use common::at_window;
 use proptest::prelude::*;
 
-fn fast(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, frame: &mut Framebuffer) {
-    render_into(frame, mesh, tex, s, Buffers::ColorDepth).expect("render");
+/// The fast path's colour and depth, its lanes at `vector` (the level is a parameter of the
+/// render, so tests running in parallel each draw at their own).
+fn fast(
+    mesh: &ClipMesh,
+    tex: &Texture,
+    s: &RenderSettings,
+    frame: &mut Framebuffer,
+    vector: VectorLevel,
+) {
+    render_into_at(frame, mesh, tex, s, Buffers::ColorDepth, vector).expect("render");
 }
 
 /// A texture whose size is not a power of two (the general wrap path), not opaque (the
@@ -58,9 +66,7 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
         VectorLevel::Avx2,
         VectorLevel::Portable,
     ] {
-        set_vector_level(vector);
-        fast(mesh, tex, s, &mut frame);
-        set_vector_level(VectorLevel::Avx512);
+        fast(mesh, tex, s, &mut frame, vector);
         assert_eq!(
             (frame.width, frame.height),
             (reference.width, reference.height)
@@ -84,9 +90,7 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
             "{what}, vector level {vector:?}: (x, y, fast, reference)"
         );
         // The heatmap's buffers (colour, depth, triangle, uv both ways), bit for bit too.
-        set_vector_level(vector);
-        render_into(&mut frame, mesh, tex, s, Buffers::ColorDepthUv).expect("render");
-        set_vector_level(VectorLevel::Avx512);
+        render_into_at(&mut frame, mesh, tex, s, Buffers::ColorDepthUv, vector).expect("render");
         assert!(frame.weights_screen.is_empty() && frame.inv_w.is_empty());
         let bits = |uv: [f32; 2]| uv.map(f32::to_bits);
         let bad = (0..reference.color.len()).find(|&i| {
@@ -104,9 +108,7 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
         // The difference view's buffers: depth and the texel difference, which is the full
         // render's two uvs through `texel_difference` (NaN where nothing is drawn); nothing is
         // shaded, so the colour is the background everywhere.
-        set_vector_level(vector);
-        render_into(&mut frame, mesh, tex, s, Buffers::DepthDifference).expect("render");
-        set_vector_level(VectorLevel::Avx512);
+        render_into_at(&mut frame, mesh, tex, s, Buffers::DepthDifference, vector).expect("render");
         assert!(frame.triangle.is_empty() && frame.uv_affine.is_empty());
         let size = (tex.width(), tex.height());
         let bad = (0..reference.color.len()).find(|&i| {
@@ -138,17 +140,13 @@ fn assert_scanline_close(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
     // Every build of the scanline lanes does the same arithmetic: the portable code's image
     // is the vector code's, bit for bit (short spans gathered into chunks included).
     let mut portable = Framebuffer::new(0, 0, s.background);
-    set_vector_level(VectorLevel::Portable);
-    fast(mesh, tex, &scan, &mut portable);
-    set_vector_level(VectorLevel::Avx512);
+    fast(mesh, tex, &scan, &mut portable, VectorLevel::Portable);
     for vector in [
         VectorLevel::Avx512,
         VectorLevel::Avx2,
         VectorLevel::Portable,
     ] {
-        set_vector_level(vector);
-        fast(mesh, tex, &scan, &mut frame);
-        set_vector_level(VectorLevel::Avx512);
+        fast(mesh, tex, &scan, &mut frame, vector);
         assert!(
             frame.color == portable.color && frame.depth == portable.depth,
             "{what}, vector level {vector:?}: the scanline lanes differ from the portable build"

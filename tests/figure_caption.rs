@@ -3,6 +3,8 @@
 //! the exported scene; the app's figure with a caption is byte for byte what `barylab figure
 //! --caption` makes from the exported scene.
 
+mod common;
+
 use std::path::Path;
 use std::process::Command as Process;
 
@@ -18,13 +20,7 @@ use egui_kittest::Harness;
 use glam::DVec2;
 
 fn harness(size: egui::Vec2) -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, AppOptions::default());
-    let mut h = Harness::builder()
-        .with_size(size)
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness(size, AppOptions::default())
 }
 
 fn click(h: &mut Harness<'_, BaryApp>, p: [u32; 2]) {

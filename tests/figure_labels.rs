@@ -3,15 +3,16 @@
 //! their boxes when resvg draws them, and the wipe line's two labels, which never overlap
 //! and never leave their view, in figures and on the app's canvas.
 
+mod common;
+
 use std::path::Path;
 
+use barylab::app::AppOptions;
 use barylab::app::state::Command as AppCommand;
-use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::text::{LABEL_INSET, LABEL_PAD, pair_fit, place_pair};
 use barylab::figure::{Background, Compare, Figure, FigureOptions, svg};
 use barylab::raster::Texture;
 use barylab::scene::Scene;
-use egui_kittest::Harness;
 use proptest::prelude::*;
 use resvg::{tiny_skia, usvg};
 
@@ -278,12 +279,7 @@ proptest! {
 /// never overlap and stay on the canvas wherever the line is.
 #[test]
 fn the_wipe_labels_never_overlap_nor_leave_the_canvas_in_the_app() {
-    let app = BaryApp::new(None, AppOptions::default());
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1024.0, 768.0))
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
+    let mut h = common::app::harness(egui::vec2(1024.0, 768.0), AppOptions::default());
     for c in [
         AppCommand::SetCompare(Compare::Wipe),
         AppCommand::SetUiScale(1.5),

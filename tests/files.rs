@@ -3,6 +3,8 @@
 //! banner naming the file and the problem and leave the scene exactly as it was; model scenes
 //! orbit, pan, zoom and are hovered like the quad.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -15,7 +17,6 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use glam::DVec2;
 
-const MAX_STEPS: u64 = 30;
 const SIZE: egui::Vec2 = egui::vec2(1500.0, 950.0);
 
 fn data(name: &str) -> PathBuf {
@@ -29,13 +30,7 @@ fn asset(name: &str) -> PathBuf {
 }
 
 fn harness() -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, AppOptions::default());
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .with_max_steps(MAX_STEPS)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness(SIZE, AppOptions::default())
 }
 
 /// A file dropped on the window, as winit hands it to egui.
@@ -302,12 +297,7 @@ fn model_harness() -> Harness<'static, BaryApp> {
             ..AppOptions::default()
         },
     );
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .with_max_steps(MAX_STEPS)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness_of(app, SIZE)
 }
 
 fn camera(h: &Harness<'_, BaryApp>) -> barylab::raster::camera::Camera {

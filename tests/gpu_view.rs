@@ -23,13 +23,7 @@ use egui_kittest::kittest::Queryable;
 const SIZE: egui::Vec2 = egui::vec2(1280.0, 800.0);
 
 fn harness(options: AppOptions) -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, options);
-    let mut h = Harness::builder()
-        .with_size(SIZE)
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness(SIZE, options)
 }
 
 #[test]

@@ -3,6 +3,8 @@
 //! important parts instead of eliding them), and the inspector's numbers stay inside its
 //! panel. Driven through egui_kittest like tests/app.rs.
 
+mod common;
+
 use barylab::app::state::Command;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::i18n::{Lang, cjk_font};
@@ -11,13 +13,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 
 fn harness(size: [f32; 2], options: AppOptions) -> Harness<'static, BaryApp> {
-    let app = BaryApp::new(None, options);
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(size[0], size[1]))
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-    h.run();
-    h
+    common::app::harness(egui::vec2(size[0], size[1]), options)
 }
 
 /// Lets a new window size or text size settle (the zoom lays the window out again).

@@ -1,6 +1,8 @@
 //! Lessons: the format (strict, errors with file, line and field), the built-in lesson, the
 //! `barylab lesson` command (list, figure, handout) and the app's Lessons panel.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -452,13 +454,7 @@ mod app {
     use egui_kittest::kittest::Queryable;
 
     fn harness() -> Harness<'static, BaryApp> {
-        let app = BaryApp::new(None, AppOptions::default());
-        let mut h = Harness::builder()
-            .with_size(egui::vec2(1280.0, 800.0))
-            .with_max_steps(30)
-            .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
-        h.run();
-        h
+        super::common::app::harness(egui::vec2(1280.0, 800.0), AppOptions::default())
     }
 
     /// The step's scene, view and pin are what the lesson says.

@@ -9,8 +9,9 @@ use std::process::Command;
 use barylab::gpu::check::tie_lattice;
 
 mod common;
+use barylab::raster::project::SUBPIXEL;
 use barylab::raster::render::prepare_triangle_with;
-use barylab::raster::setup::{TieRule, sample_point};
+use barylab::raster::setup::{TieRule, TriangleSetup, sample_point};
 use barylab::raster::{BuiltinTexture, ClipMesh, NO_TRIANGLE, RenderSettings, Texture, render};
 use barylab::scene::Scene;
 use common::lattice_scene;
@@ -26,6 +27,27 @@ fn owners(mesh: &ClipMesh, settings: &RenderSettings, rule: TieRule) -> Vec<u32>
         .triangle
 }
 
+/// What a rule's owner image comes to: pixels covered, and the sum over covered pixels of
+/// `(triangle + 1) * (pixel index + 1)` (changes when any pixel changes owner).
+fn tally(owners: &[u32]) -> (usize, u64) {
+    let covered: Vec<_> = owners
+        .iter()
+        .enumerate()
+        .filter(|(_, t)| **t != NO_TRIANGLE)
+        .collect();
+    let sum = covered
+        .iter()
+        .map(|&(k, &t)| (u64::from(t) + 1) * (k as u64 + 1))
+        .sum();
+    (covered.len(), sum)
+}
+
+/// The tie lattice's owners under each rule (`tally`), recorded from the renderer whose
+/// rules the tests below check (every interior centre once, top-left = llvmpipe upside down)
+/// and tests/llvmpipe.rs compares with Mesa; the default render is llvmpipe's.
+const LLVMPIPE_TALLY: (usize, u64) = (1120, 57429050);
+const TOP_LEFT_TALLY: (usize, u64) = (1120, 54987364);
+
 #[test]
 fn the_default_rule_is_llvmpipe_and_unchanged() {
     let (mesh, settings) = tie_lattice();
@@ -33,11 +55,29 @@ fn the_default_rule_is_llvmpipe_and_unchanged() {
     assert_eq!(RenderSettings::default().tie_rule, TieRule::Llvmpipe);
     let texture = Texture::builtin(BuiltinTexture::Checker);
     let default = render(&mesh, &texture, &settings).expect("render");
-    let explicit = owners(&mesh, &settings, TieRule::Llvmpipe);
-    assert_eq!(default.frame.triangle, explicit);
+    assert_eq!(tally(&default.frame.triangle), LLVMPIPE_TALLY);
+    assert_eq!(
+        tally(&owners(&mesh, &settings, TieRule::TopLeft)),
+        TOP_LEFT_TALLY
+    );
 }
 
-/// Each rule covers every lattice centre on a shared edge exactly once; the two differ only at
+/// A centre the mesh surrounds: each point a quarter pixel away from it in x and y (diagonals
+/// included) lies inside or on some triangle.
+fn surrounded(setups: &[&TriangleSetup], p: glam::I64Vec2) -> bool {
+    let q = SUBPIXEL / 4;
+    [-q, 0, q].iter().all(|&dx| {
+        [-q, 0, q].iter().all(|&dy| {
+            let o = p + glam::I64Vec2::new(dx, dy);
+            setups
+                .iter()
+                .any(|s| s.edge_values(o).iter().all(|&v| v >= 0))
+        })
+    })
+}
+
+/// Under each rule every lattice centre inside the mesh (the interior edges and vertices
+/// included) is covered exactly once, and none outside it; the two rules differ only at
 /// centres exactly on an edge.
 #[test]
 fn both_rules_cover_shared_edges_exactly_once() {
@@ -47,27 +87,35 @@ fn both_rules_cover_shared_edges_exactly_once() {
         let prepared: Vec<_> = (0..mesh.triangles.len() as u32)
             .map(|i| prepare_triangle_with(&mesh, i, viewport, rule))
             .collect();
-        let mut ties = 0;
+        let setups: Vec<&TriangleSetup> = prepared.iter().flat_map(|t| &t.setups).collect();
+        let mut interior_ties = 0;
         for y in 0..settings.height {
             for x in 0..settings.width {
                 let p = sample_point(x, y);
                 let mut covering = 0;
                 let mut on_edge = false;
-                for s in prepared.iter().flat_map(|t| &t.setups) {
+                for s in &setups {
                     let e = s.edge_values(p);
                     if e.iter().all(|&v| v >= 0) && e.contains(&0) {
                         on_edge = true;
                     }
                     covering += usize::from(s.covers(&e));
                 }
-                assert!(
-                    covering <= 1,
-                    "{rule:?}: ({x}, {y}) covered {covering} times"
-                );
-                ties += usize::from(on_edge);
+                if surrounded(&setups, p) {
+                    assert_eq!(covering, 1, "{rule:?}: ({x}, {y}) covered {covering} times");
+                    interior_ties += usize::from(on_edge);
+                } else {
+                    assert!(
+                        covering <= 1,
+                        "{rule:?}: ({x}, {y}) covered {covering} times"
+                    );
+                }
             }
         }
-        assert!(ties > 200, "{rule:?}: only {ties} centres on edges");
+        assert!(
+            interior_ties > 200,
+            "{rule:?}: only {interior_ties} interior centres on edges"
+        );
     }
     let (lp, tl) = (
         owners(&mesh, &settings, TieRule::Llvmpipe),

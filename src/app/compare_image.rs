@@ -24,7 +24,7 @@ use super::files::FileCommand;
 use super::gpu_view::{GpuResult, GpuView};
 use super::render::CanvasOutput;
 use super::state::Command;
-use crate::compare::reasons::Reason;
+use crate::compare::reason::Reason;
 use crate::compare::{self, Comparison, CoverageBy, Image, Reference, Rendered};
 use crate::figure::Compare;
 use crate::files::shown;
@@ -398,7 +398,7 @@ impl ImageCompare {
             texture: &h.texture,
             settings: h.settings,
         };
-        let context = compare::reasons::Context::new(&reference, &h.render, h.by, c.tolerance);
+        let context = compare::diagnose::Context::new(&reference, &h.render, h.by, c.tolerance);
         Some(context.and_then(|cx| cx.reason(p, d, theirs)))
     }
 }

@@ -34,7 +34,7 @@ pub(super) fn prepare(
     // texture is read.
     let (w, h) = scene.size();
     let (vertices, triangles) = scene.mesh_size();
-    barylab::budget::check_render(w, h, raster::Buffers::All, vertices, triangles)?;
+    barylab::raster::footprint::check_render(w, h, raster::Buffers::All, vertices, triangles)?;
     let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
     let mut settings = scene.settings();
     if let Some(m) = o.mode {

@@ -4,7 +4,7 @@ use std::io::Cursor;
 use std::path::Path;
 
 use anyhow::Result;
-use barylab::compare::reasons::mode_short;
+use barylab::compare::reason::mode_short;
 use barylab::compare::{self, Comparison, CoverageBy, Difference, Image, Reference};
 use barylab::files::{self, shown};
 use barylab::i18n::Lang;

@@ -1,8 +1,8 @@
 //! `barylab gpu-check`: barylab beside this computer's OpenGL, scene by scene.
 
 use anyhow::Result;
-use barylab::compare::hypotheses::rule_words;
-use barylab::compare::reasons::mode_short;
+use barylab::compare::reason::mode_short;
+use barylab::compare::verdict::rule_words;
 use barylab::gpu::{self, Gpu, check};
 use barylab::i18n::Lang;
 use barylab::raster::Interpolation;

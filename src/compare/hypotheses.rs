@@ -4,108 +4,12 @@
 
 use serde::Serialize;
 
-use super::reasons::Reason;
-use super::{CoverageBy, Image, Reference, Rendered, classify};
+use super::reason::Reason;
+use super::verdict::{Kind, Verdict};
+use super::{CoverageBy, Image, Reference, Rendered, classify, uv_gap_texels};
 use crate::i18n::Lang;
 use crate::raster::setup::TieRule;
 use crate::raster::{Framebuffer, Interpolation, Texture};
-
-/// One convention or mistake tried.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Kind {
-    /// Rows in the opposite order (image row 0 at the bottom).
-    YFlipped,
-    /// Rows and columns reversed: the projection's w has the wrong sign (x/w and y/w both
-    /// change sign).
-    Rotated180,
-    /// The other interpolation mode (affine for a perspective-correct scene, and back).
-    OtherMode,
-    /// Samples at integer pixel coordinates `(x, y)` in image rows (y down) instead of the
-    /// centres `(x + 0.5, y + 0.5)`.
-    IntegerCentresYDown,
-    /// The other tie rule (top-left for a llvmpipe scene, and back): differs only on centres
-    /// exactly on an edge.
-    OtherTieRule,
-    /// Samples at integer pixel coordinates in y-up rows (row 0 at the bottom, then written
-    /// out top row first, as a framework with y up does).
-    IntegerCentresYUp,
-}
-
-/// A whole-image explanation as a verdict: which one, what it leaves differing, and what it
-/// is in this comparison (the other mode, the other tie rule); worded by [`Verdict::text`].
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Verdict {
-    /// Which explanation.
-    pub kind: Kind,
-    /// Pixels that still differ under it.
-    pub differing: usize,
-    /// The other interpolation mode (the one [`Kind::OtherMode`] renders in).
-    pub other_mode: Interpolation,
-    /// The other tie rule (the one [`Kind::OtherTieRule`] renders under).
-    pub other_rule: TieRule,
-}
-
-impl Verdict {
-    /// What barylab's image was turned into, e.g. "barylab's image flipped upside down".
-    pub fn description(&self, lang: Lang) -> String {
-        match self.kind {
-            Kind::YFlipped => lang.tr("compare.describe.y_flipped"),
-            Kind::Rotated180 => lang.tr("compare.describe.rotated180"),
-            Kind::OtherMode => lang.tr_with(
-                "compare.describe.other_mode",
-                &[("mode", &mode_words(self.other_mode, lang))],
-            ),
-            Kind::OtherTieRule => lang.tr_with(
-                "compare.describe.other_tie_rule",
-                &[("rule", &rule_words(self.other_rule, lang))],
-            ),
-            Kind::IntegerCentresYDown => lang.tr("compare.describe.integer_y_down"),
-            Kind::IntegerCentresYUp => lang.tr("compare.describe.integer_y_up"),
-        }
-    }
-
-    /// What the other image looks like, e.g. "looks like y flipped (image row 0 written at
-    /// the bottom)".
-    pub fn looks(&self, lang: Lang) -> String {
-        match self.kind {
-            Kind::YFlipped => lang.tr("compare.looks.y_flipped"),
-            Kind::Rotated180 => lang.tr("compare.looks.rotated180"),
-            Kind::OtherMode => lang.tr_with(
-                "compare.looks.other_mode",
-                &[("mode", &mode_words(self.other_mode, lang))],
-            ),
-            Kind::OtherTieRule => lang.tr("compare.looks.other_tie_rule"),
-            Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => {
-                lang.tr("compare.looks.integer_centres")
-            }
-        }
-    }
-
-    /// The verdict line, e.g. "looks like y flipped (…): barylab's image flipped upside down
-    /// leaves 0 pixels differing".
-    pub fn text(&self, lang: Lang) -> String {
-        lang.tr_with(
-            "compare.looks.verdict",
-            &[
-                ("looks", &self.looks(lang)),
-                ("description", &self.description(lang)),
-                ("n", &self.differing),
-            ],
-        )
-    }
-
-    /// The verdict in a few words, e.g. "looks like y flipped".
-    pub fn short(&self, lang: Lang) -> String {
-        lang.tr(match self.kind {
-            Kind::YFlipped => "compare.short.y_flipped",
-            Kind::Rotated180 => "compare.short.rotated180",
-            Kind::OtherMode => "compare.short.other_mode",
-            Kind::OtherTieRule => "compare.short.other_tie_rule",
-            Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => "compare.short.integer_centres",
-        })
-    }
-}
 
 /// A tried explanation and how many pixels still differ under it. In JSON: `kind`,
 /// `description` (English) and `differing`.
@@ -162,22 +66,6 @@ impl Tried {
             },
         }
     }
-}
-
-/// The mode in a verdict, in `lang`: "affine (screen-space)" or "perspective-correct".
-fn mode_words(m: Interpolation, lang: Lang) -> String {
-    lang.tr(match m {
-        Interpolation::Affine => "compare.mode.affine",
-        Interpolation::Perspective => "compare.mode.perspective",
-    })
-}
-
-/// A tie rule in words, in `lang`.
-pub fn rule_words(rule: TieRule, lang: Lang) -> String {
-    lang.tr(match rule {
-        TieRule::Llvmpipe => "compare.rule.llvmpipe",
-        TieRule::TopLeft => "compare.rule.top_left",
-    })
 }
 
 /// Tries every explanation; best (fewest differing) first.
@@ -274,15 +162,4 @@ pub fn shifted(
         v.clip.y -= 2.0 * dy / f64::from(height) * v.clip.w;
     }
     m
-}
-
-/// How far apart the affine and the perspective-correct uv of pixel `k` are, in texels: the
-/// heatmap's and the inspector's measure ([`texel_difference`](crate::figure::heatmap::texel_difference),
-/// the length of the offset).
-pub(super) fn uv_gap_texels(frame: &Framebuffer, k: usize, texture: &Texture) -> f32 {
-    crate::figure::heatmap::texel_difference(
-        frame.uv_affine[k],
-        frame.uv_perspective[k],
-        (texture.width(), texture.height()),
-    )
 }

@@ -3,14 +3,15 @@
 //!
 //! Coverage of the other image comes from its alpha (at least half opaque is covered) or from
 //! a background colour (anything else is covered). Each differing pixel gets a one-line
-//! reason from the probe ([`reasons`]); whole-image explanations (y flipped, rotated, affine
+//! reason ([`reason::Reason`]) from the probe ([`diagnose`]); whole-image explanations (y flipped, rotated, affine
 //! interpolation, pixel centres at integer coordinates) are tried by rendering or
 //! transforming barylab's image that way and counting what still differs ([`hypotheses`]).
 
+pub mod diagnose;
 mod file;
 pub mod hypotheses;
-mod reason;
-pub mod reasons;
+pub mod reason;
+pub mod verdict;
 
 pub use file::read_image;
 
@@ -103,7 +104,7 @@ pub enum Difference {
 }
 
 /// One differing pixel with its reason. In JSON the reason is `reason` (in English) and
-/// `why` (the structured [`reasons::Reason`], its `kind` a stable code).
+/// `why` (the structured [`reason::Reason`], its `kind` a stable code).
 #[derive(Clone, Debug)]
 pub struct PixelDifference {
     /// `[x, y]`, row 0 at the top.
@@ -117,8 +118,8 @@ pub struct PixelDifference {
     /// The source triangle barylab drew there.
     pub triangle: Option<u32>,
     /// Why they differ, from the probe or a whole-image explanation
-    /// ([`reasons::Reason::text`] words it).
-    pub reason: reasons::Reason,
+    /// ([`reason::Reason::text`] words it).
+    pub reason: reason::Reason,
 }
 
 impl Serialize for PixelDifference {
@@ -138,7 +139,7 @@ impl Serialize for PixelDifference {
 
 /// `looks_like` in JSON: the verdict in English, and its kind as `looks_like_kind`.
 fn looks_like_json<S: serde::Serializer>(
-    verdict: &Option<hypotheses::Verdict>,
+    verdict: &Option<verdict::Verdict>,
     serializer: S,
 ) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
@@ -179,10 +180,10 @@ pub struct Comparison {
     /// The whole-image explanations tried, best first, with what each leaves differing.
     pub hypotheses: Vec<hypotheses::Tried>,
     /// The explanation that fits much better than barylab's own image, if any
-    /// ([`hypotheses::Verdict::text`] words it). In JSON: `looks_like` (in English) and
+    /// ([`verdict::Verdict::text`] words it). In JSON: `looks_like` (in English) and
     /// `looks_like_kind`.
     #[serde(flatten, serialize_with = "looks_like_json")]
-    pub looks_like: Option<hypotheses::Verdict>,
+    pub looks_like: Option<verdict::Verdict>,
     /// The first differing pixels in row order.
     pub first: Vec<PixelDifference>,
 }
@@ -346,7 +347,7 @@ pub fn compare_rendered(
         .filter(|h| h.differing * 2 < c.differing())
         .min_by_key(|h| h.differing);
     c.looks_like = best.map(|h| h.verdict());
-    let context = reasons::Context::new(reference, render, by, tolerance)?;
+    let context = diagnose::Context::new(reference, render, by, tolerance)?;
     for (k, d) in differing {
         let xy = [(k as u32) % width, (k as u32) / width];
         let explained = best.filter(|h| !h.differs_at(k));
@@ -406,4 +407,15 @@ pub fn difference_image_of(
         };
     }
     out
+}
+
+/// How far apart the affine and the perspective-correct uv of pixel `k` are, in texels: the
+/// heatmap's and the inspector's measure ([`texel_difference`](crate::figure::heatmap::texel_difference),
+/// the length of the offset).
+fn uv_gap_texels(frame: &crate::raster::Framebuffer, k: usize, texture: &Texture) -> f32 {
+    crate::figure::heatmap::texel_difference(
+        frame.uv_affine[k],
+        frame.uv_perspective[k],
+        (texture.width(), texture.height()),
+    )
 }

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::hypotheses::Verdict;
+use super::verdict::Verdict;
 use crate::i18n::Lang;
 use crate::raster::Interpolation;
 use crate::raster::setup::{EdgeKind, TieRule};
@@ -269,7 +269,7 @@ fn closeness(d: f64, other: &str, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compare::hypotheses::Kind;
+    use crate::compare::verdict::Kind;
 
     /// One reason of every kind (and every verdict kind in `Explained`).
     fn every_reason() -> Vec<Reason> {

@@ -63,8 +63,9 @@ fn figure_fits(
     renders: usize,
     pixels: [u64; 2],
 ) -> Result<(), crate::budget::MemoryError> {
-    use crate::budget::{FIGURE_BYTES_PER_PIXEL, check, render_need};
+    use crate::budget::{FIGURE_BYTES_PER_PIXEL, check};
     use crate::raster::Buffers;
+    use crate::raster::footprint::render_need;
     let (v, t) = (mesh.vertices.len(), mesh.triangles.len());
     let need = renders as u64 * render_need(size[0], size[1], Buffers::All, v, t)
         + render_need(0, 0, Buffers::All, v, t)

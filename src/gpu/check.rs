@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use glam::{DVec4, Vec2, Vec3};
+use glam::{Vec2, Vec3};
 use serde::Serialize;
 
 use super::{Gpu, Output, mesh_at_f32};
@@ -269,13 +269,14 @@ fn percentile(histogram: &[usize; 256], total: usize, fraction: f64) -> u8 {
 pub fn tie_lattice() -> (ClipMesh, RenderSettings) {
     let (w, h) = (64u32, 48u32);
     // Window position (x right, y down) to clip space with w = 1.
+    let viewport = crate::raster::project::Viewport {
+        width: w,
+        height: h,
+    };
     let vertex = |x: f64, y: f64, k: usize| MeshVertex {
-        clip: DVec4::new(
-            2.0 * x / f64::from(w) - 1.0,
-            1.0 - 2.0 * y / f64::from(h),
-            0.0,
-            1.0,
-        ),
+        clip: crate::raster::project::ndc_from_window(glam::DVec2::new(x, y), viewport)
+            .extend(0.0)
+            .extend(1.0),
         uv: Vec2::new((x / f64::from(w)) as f32, (y / f64::from(h)) as f32),
         color: Vec3::new(
             (k % 3) as f32 / 2.0,

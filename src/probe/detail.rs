@@ -8,12 +8,14 @@ use glam::{DVec2, DVec3, Vec2};
 
 use super::weights;
 use super::*;
+use crate::raster::clip::ClipVertex;
 use crate::raster::interpolate::{Fragment, Interpolation};
-use crate::raster::project::{self, SUBPIXEL};
+use crate::raster::project;
 use crate::raster::render;
 use crate::raster::setup::TriangleSetup;
 use crate::raster::shade::{self, Shading};
 use crate::raster::texture::{self, Filter};
+use crate::raster::varying::Varyings;
 
 impl Prober<'_> {
     fn vertex_trace(&self, ti: usize, k: usize) -> VertexTrace {
@@ -21,11 +23,10 @@ impl Prober<'_> {
         let v = self.mesh.vertices[index as usize];
         let viewport = self.viewport();
         let clip = v.clip;
+        // The renderer's own projection of the vertex (its varyings are not traced here).
         let projected = (clip.w > 0.0).then(|| {
-            let ndc = project::ndc_from_clip(clip);
-            let win = project::window_from_ndc(ndc, viewport);
-            let fixed = project::snap(win.truncate());
-            (ndc, win, fixed.as_dvec2() / SUBPIXEL as f64, fixed)
+            let vertex = ClipVertex::new(clip, Varyings::default());
+            project::project_vertex(&vertex, viewport)
         });
         let (object, world, view) = match &self.spaces {
             Some(sp) => {
@@ -46,11 +47,11 @@ impl Prober<'_> {
             world,
             view,
             clip: clip.to_array(),
-            ndc: projected.map(|p| p.0.to_array()),
-            window: projected.map(|p| p.1.to_array()),
-            window_snapped: projected.map(|p| p.2.to_array()),
-            window_fixed: projected.map(|p| p.3.to_array()),
-            inv_w: projected.map(|_| 1.0 / clip.w),
+            ndc: projected.map(|p| p.ndc.to_array()),
+            window: projected.map(|p| p.window.extend(p.depth).to_array()),
+            window_snapped: projected.map(|p| p.window_snapped().to_array()),
+            window_fixed: projected.map(|p| p.fixed.to_array()),
+            inv_w: projected.map(|p| p.inv_w),
             uv: v.uv.to_array(),
             color: v.color.to_array(),
         }

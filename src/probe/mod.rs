@@ -483,9 +483,6 @@ fn nearest_setup(tri: &PreparedTriangle, x: u32, y: u32) -> Option<(usize, f64)>
     best
 }
 
-/// NDC of a window position: [`project::ndc_from_window`], under the probe's older name.
-pub use crate::raster::project::ndc_from_window as ndc_of_window;
-
 /// Traces one pixel of a scene rendered with `settings` (see [`Prober`] for many pixels).
 ///
 /// ```

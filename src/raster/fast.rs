@@ -1,5 +1,6 @@
 //! The fast path's preparation of a mesh (colour and depth, optionally the uv buffers): what
-//! [`render_into`](super::render::render_into) draws without keeping every buffer.
+//! [`render_into`](super::render::render_into) draws without keeping every buffer. It draws
+//! each triangle with [`draw`](super::draw)'s kernel and lane glue, as the full render does.
 //!
 //! The full render keeps a [`PreparedTriangle`] per source triangle (its three window
 //! vertices with both attribute sets, edges, weight planes: about 900 bytes) because the
@@ -19,18 +20,17 @@
 
 use glam::{DVec2, I64Vec2, IVec2 as I32Vec2};
 
-use super::bands::RowBand;
+use super::bands::bin_rows;
 use super::clip::{ClipPlane, planes};
-use super::framebuffer::Framebuffer;
-use super::lanes::{LaneShading, LaneTriangle, Lanes};
+use super::draw::{draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply};
+use super::framebuffer::{Framebuffer, RowBand};
+use super::lanes::{LaneShading, LaneTriangle, Lanes, VectorLevel};
 use super::mesh::ClipMesh;
 use super::prepare::{PreparedTriangle, prepare_triangle_with};
 use super::project::{SUBPIXEL, Viewport, WindowVertex, ndc_from_clip, project_vertex};
-use super::render::{
-    Rasterizer, draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply,
-};
+use super::settings::Rasterizer;
 use super::setup::{TieRule, TriangleSetup, covers_no_sample, setup_bounds, setup_triangle_with};
-use super::shade::ShadeParams;
+use super::shade::{ShadeParams, depth_range};
 use super::texture::Texture;
 use super::varying::Varyings;
 
@@ -303,76 +303,59 @@ impl<'m> FastMesh<'m> {
         covers_no_sample(fixed, bounds, (band.y0, last), self.rule) == Some(true)
     }
 
-    /// The smallest and largest window depth of the drawn triangles' vertices, as
-    /// [`depth_range`](super::render::depth_range) of the full render's triangles.
+    /// The smallest and largest window depth of the drawn triangles' vertices
+    /// ([`depth_range`], as the full render's
+    /// [`shade_params`](super::render::shade_params) takes it of its triangles).
     pub fn depth_range(&self) -> (f64, f64) {
-        let mut lo = f64::INFINITY;
-        let mut hi = f64::NEG_INFINITY;
-        let mut add = |d: f64| {
-            lo = lo.min(d);
-            hi = hi.max(d);
-        };
-        for slot in &self.slots {
-            match slot {
-                Slot::Skip => {}
-                Slot::Whole { corners, .. } => {
-                    for &c in corners {
-                        if let Some(v) = self.vertices.get(c as usize) {
-                            add(v.depth);
-                        }
-                    }
-                }
-                Slot::Clipped(_) => {}
-            }
-        }
-        for t in &self.clipped {
-            for s in &t.setups {
-                for v in &s.v {
-                    add(v.depth);
-                }
-            }
-        }
-        if lo <= hi { (lo, hi) } else { (0.0, 1.0) }
+        let whole = self.slots.iter().flat_map(|slot| match slot {
+            Slot::Whole { corners, .. } => corners.as_slice(),
+            Slot::Skip | Slot::Clipped(_) => &[],
+        });
+        let clipped = self.clipped.iter().flat_map(|t| &t.setups);
+        depth_range(
+            whole
+                .filter_map(|&c| self.vertices.get(c as usize))
+                .map(|v| v.depth)
+                .chain(clipped.flat_map(|s| s.v.iter().map(|v| v.depth))),
+        )
     }
 
     /// The set-up triangles that reach each band of `rows_per_band` rows, in submission
-    /// order, as `(source triangle, set-up index)`.
+    /// order, as `(source triangle, set-up index)` ([`bin_rows`]; the vectors are kept from
+    /// frame to frame).
     fn bins(&self, height: u32, rows_per_band: u32) -> Vec<Vec<(u32, u32)>> {
-        let bands = height.div_ceil(rows_per_band).max(1) as usize;
         let mut bins = std::mem::take(&mut scratch().bins);
-        bins.resize_with(bands, Vec::new);
-        bins.truncate(bands);
-        bins.iter_mut().for_each(Vec::clear);
-        let mut add = |ti: usize, si: usize, y0: u32, y1: u32| {
-            let first = (y0 / rows_per_band) as usize;
-            let last = ((y1 / rows_per_band) as usize).min(bands - 1);
-            for bin in bins.iter_mut().take(last + 1).skip(first) {
-                bin.push((ti as u32, si as u32));
-            }
-        };
-        for (ti, slot) in self.slots.iter().enumerate() {
-            match slot {
-                Slot::Skip => {}
-                Slot::Whole { rows, .. } => add(ti, 0, rows[0].into(), rows[1].into()),
-                Slot::Clipped(c) => {
-                    if let Some(t) = self.clipped.get(*c as usize) {
-                        for (si, s) in t.setups.iter().enumerate() {
-                            add(ti, si, s.bounds.y0, s.bounds.y1);
-                        }
-                    }
-                }
-            }
-        }
+        let spans = self.slots.iter().enumerate().flat_map(|(ti, slot)| {
+            let ti = ti as u32;
+            let whole = match slot {
+                Slot::Whole { rows, .. } => Some((ti, 0, rows[0].into(), rows[1].into())),
+                Slot::Skip | Slot::Clipped(_) => None,
+            };
+            let clipped = match slot {
+                Slot::Clipped(c) => self
+                    .clipped
+                    .get(*c as usize)
+                    .map_or(&[][..], |t| t.setups.as_slice()),
+                Slot::Skip | Slot::Whole { .. } => &[],
+            };
+            whole.into_iter().chain(
+                clipped
+                    .iter()
+                    .enumerate()
+                    .map(move |(si, s)| (ti, si as u32, s.bounds.y0, s.bounds.y1)),
+            )
+        });
+        bin_rows(&mut bins, height, rows_per_band, spans);
         bins
     }
 
     /// Draws every prepared triangle into `frame` (already sized), band by band in parallel,
-    /// clearing each band to `background` first.
+    /// clearing each band to `background` first, the lanes at the vector level `vector`.
     pub fn rasterize(
         &self,
         texture: &Texture,
         params: &ShadeParams,
-        rasterizer: Rasterizer,
+        (rasterizer, vector): (Rasterizer, VectorLevel),
         frame: &mut Framebuffer,
         rows_per_band: u32,
         background: [u8; 4],
@@ -397,7 +380,7 @@ impl<'m> FastMesh<'m> {
                             Rasterizer::Scanline => !uvs && scanline_lanes_apply(s),
                         }
                 });
-                let drawer = lanes.map(|s| Lanes::new(texture, s));
+                let drawer = lanes.map(|s| Lanes::new(texture, s, vector));
                 let mut tri = LaneTriangle::EMPTY;
                 for (j, &(ti, si)) in bin.iter().enumerate() {
                     // The triangles a band visits are scattered over the mesh: ask for the memory
@@ -443,7 +426,14 @@ impl<'m> FastMesh<'m> {
                                 _ => false,
                             };
                             if !drawn && let Some(setup) = self.setup(*corners) {
-                                rasterize(&setup, ti, texture, params, rasterizer, &mut band);
+                                rasterize(
+                                    &setup,
+                                    ti,
+                                    texture,
+                                    params,
+                                    (rasterizer, vector),
+                                    &mut band,
+                                );
                             }
                         }
                         Slot::Clipped(c) => {
@@ -452,7 +442,14 @@ impl<'m> FastMesh<'m> {
                                 .get(*c as usize)
                                 .and_then(|t| t.setups.get(si as usize))
                             {
-                                rasterize(setup, ti, texture, params, rasterizer, &mut band);
+                                rasterize(
+                                    setup,
+                                    ti,
+                                    texture,
+                                    params,
+                                    (rasterizer, vector),
+                                    &mut band,
+                                );
                             }
                         }
                     }

@@ -41,11 +41,105 @@ pub enum Buffers {
     DepthDifference,
 }
 
+/// One buffer of a [`Framebuffer`] (a field of the same name).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Buffer {
+    /// [`Framebuffer::color`].
+    Color,
+    /// [`Framebuffer::depth`].
+    Depth,
+    /// [`Framebuffer::triangle`].
+    Triangle,
+    /// [`Framebuffer::facing`].
+    Facing,
+    /// [`Framebuffer::weights_screen`].
+    WeightsScreen,
+    /// [`Framebuffer::weights_perspective`].
+    WeightsPerspective,
+    /// [`Framebuffer::uv_affine`].
+    UvAffine,
+    /// [`Framebuffer::uv_perspective`].
+    UvPerspective,
+    /// [`Framebuffer::inv_w`].
+    InvW,
+    /// [`Framebuffer::texel_difference`].
+    TexelDifference,
+}
+
+impl Buffer {
+    /// Every buffer, in field order.
+    pub const ALL: [Buffer; 10] = [
+        Buffer::Color,
+        Buffer::Depth,
+        Buffer::Triangle,
+        Buffer::Facing,
+        Buffer::WeightsScreen,
+        Buffer::WeightsPerspective,
+        Buffer::UvAffine,
+        Buffer::UvPerspective,
+        Buffer::InvW,
+        Buffer::TexelDifference,
+    ];
+
+    /// Bytes one pixel of this buffer takes (the size of its element type).
+    pub const fn bytes_per_pixel(self) -> u64 {
+        (match self {
+            Buffer::Color => size_of::<[u8; 4]>(),
+            Buffer::Depth | Buffer::InvW | Buffer::TexelDifference => size_of::<f32>(),
+            Buffer::Triangle => size_of::<u32>(),
+            Buffer::Facing => size_of::<Facing>(),
+            Buffer::WeightsScreen | Buffer::WeightsPerspective => size_of::<[f32; 3]>(),
+            Buffer::UvAffine | Buffer::UvPerspective => size_of::<[f32; 2]>(),
+        }) as u64
+    }
+}
+
+impl Buffers {
+    /// The buffer layout, the one table of which buffer each set has: colour and depth
+    /// always; [`Buffers::All`] every other one but the texel difference;
+    /// [`Buffers::ColorDepthUv`] the triangle and both uvs; [`Buffers::DepthDifference`] the
+    /// texel difference. [`Framebuffer::resize`], the band views and the memory estimate of a
+    /// render read it.
+    ///
+    /// ```
+    /// use barylab::raster::framebuffer::{Buffer, Buffers};
+    /// assert!(Buffers::ColorDepthUv.has(Buffer::UvAffine));
+    /// assert!(!Buffers::All.has(Buffer::TexelDifference));
+    /// ```
+    pub const fn has(self, buffer: Buffer) -> bool {
+        use Buffer as B;
+        match (self, buffer) {
+            (_, B::Color | B::Depth) => true,
+            (Buffers::All, B::TexelDifference) => false,
+            (Buffers::All, _) => true,
+            (Buffers::ColorDepthUv, B::Triangle | B::UvAffine | B::UvPerspective) => true,
+            (Buffers::DepthDifference, B::TexelDifference) => true,
+            _ => false,
+        }
+    }
+
+    /// Bytes per pixel of a framebuffer with these buffers: the sum of
+    /// [`Buffer::bytes_per_pixel`] over the buffers it [has](Buffers::has).
+    ///
+    /// ```
+    /// use barylab::raster::framebuffer::Buffers;
+    /// assert_eq!(Buffers::ColorDepth.bytes_per_pixel(), 8);
+    /// assert_eq!(Buffers::DepthDifference.bytes_per_pixel(), 12);
+    /// ```
+    pub fn bytes_per_pixel(self) -> u64 {
+        Buffer::ALL
+            .iter()
+            .filter(|&&b| self.has(b))
+            .map(|b| b.bytes_per_pixel())
+            .sum()
+    }
+}
+
 /// Colour plus per-pixel data of the front-most fragment. Uncovered pixels hold the
-/// background colour, depth 1, 0 in the other float buffers (never NaN) and [`NO_TRIANGLE`]
-/// as their triangle. With
-/// [`Buffers::ColorDepth`] only `color` and `depth` have a value per pixel; the other buffers
-/// are empty.
+/// background colour, depth 1, 0 in the weight, uv and 1/w buffers, NaN in the texel
+/// difference and [`NO_TRIANGLE`] as their triangle. Which buffers have a value per pixel is
+/// [`Buffers::has`]'s table (with [`Buffers::ColorDepth`] only `color` and `depth`); the
+/// others are empty.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Framebuffer {
     /// Width in pixels.
@@ -86,54 +180,56 @@ impl Framebuffer {
 
     /// A cleared framebuffer with the given buffers.
     pub fn with_buffers(width: u32, height: u32, background: [u8; 4], buffers: Buffers) -> Self {
-        let n = width as usize * height as usize;
-        match buffers {
-            Buffers::ColorDepth => {
-                return Self {
-                    width,
-                    height,
-                    color: vec![background; n],
-                    depth: vec![1.0; n],
-                    ..Self::new(0, 0, background)
-                };
-            }
-            Buffers::ColorDepthUv => {
-                return Self {
-                    width,
-                    height,
-                    color: vec![background; n],
-                    depth: vec![1.0; n],
-                    triangle: vec![NO_TRIANGLE; n],
-                    uv_affine: vec![[0.0; 2]; n],
-                    uv_perspective: vec![[0.0; 2]; n],
-                    ..Self::new(0, 0, background)
-                };
-            }
-            Buffers::DepthDifference => {
-                return Self {
-                    width,
-                    height,
-                    color: vec![background; n],
-                    depth: vec![1.0; n],
-                    texel_difference: vec![f32::NAN; n],
-                    ..Self::new(0, 0, background)
-                };
-            }
-            Buffers::All => {}
-        }
-        Self {
-            width,
-            height,
-            color: vec![background; n],
-            depth: vec![1.0; n],
-            triangle: vec![NO_TRIANGLE; n],
-            facing: vec![Facing::Front; n],
-            weights_screen: vec![[0.0; 3]; n],
-            weights_perspective: vec![[0.0; 3]; n],
-            uv_affine: vec![[0.0; 2]; n],
-            uv_perspective: vec![[0.0; 2]; n],
-            inv_w: vec![0.0; n],
+        let mut frame = Self {
+            width: 0,
+            height: 0,
+            color: Vec::new(),
+            depth: Vec::new(),
+            triangle: Vec::new(),
+            facing: Vec::new(),
+            weights_screen: Vec::new(),
+            weights_perspective: Vec::new(),
+            uv_affine: Vec::new(),
+            uv_perspective: Vec::new(),
+            inv_w: Vec::new(),
             texel_difference: Vec::new(),
+        };
+        frame.resize(width, height, buffers);
+        frame.clear(background);
+        frame
+    }
+
+    /// Gives the framebuffer `width` x `height` pixels of the buffers `buffers` has
+    /// ([`Buffers::has`]) and empties the others, reusing the memory it holds. The pixels'
+    /// contents are not cleared: renders clear them band by band ([`Framebuffer::clear`]
+    /// clears the whole frame).
+    pub fn resize(&mut self, width: u32, height: u32, buffers: Buffers) {
+        let n = width as usize * height as usize;
+        let len = |b: Buffer| if buffers.has(b) { n } else { 0 };
+        self.width = width;
+        self.height = height;
+        self.color.resize(len(Buffer::Color), [0; 4]);
+        self.depth.resize(len(Buffer::Depth), 1.0);
+        self.triangle.resize(len(Buffer::Triangle), NO_TRIANGLE);
+        self.facing.resize(len(Buffer::Facing), Facing::Front);
+        self.weights_screen
+            .resize(len(Buffer::WeightsScreen), [0.0; 3]);
+        self.weights_perspective
+            .resize(len(Buffer::WeightsPerspective), [0.0; 3]);
+        self.uv_affine.resize(len(Buffer::UvAffine), [0.0; 2]);
+        self.uv_perspective
+            .resize(len(Buffer::UvPerspective), [0.0; 2]);
+        self.inv_w.resize(len(Buffer::InvW), 0.0);
+        self.texel_difference
+            .resize(len(Buffer::TexelDifference), f32::NAN);
+    }
+
+    /// Clears every pixel of every buffer: colour to `background`, depth to 1 (the far
+    /// plane), the rest to the values of an uncovered pixel.
+    pub fn clear(&mut self, background: [u8; 4]) {
+        let height = self.height.max(1);
+        for mut band in RowBand::split(self, height) {
+            band.clear(background);
         }
     }
 
@@ -142,16 +238,38 @@ impl Framebuffer {
         y as usize * self.width as usize + x as usize
     }
 
-    /// Which buffers this framebuffer has.
+    /// Which buffers this framebuffer has: the first of [`Buffers::All`],
+    /// [`Buffers::DepthDifference`], [`Buffers::ColorDepthUv`] and [`Buffers::ColorDepth`]
+    /// whose every buffer ([`Buffers::has`]) holds a value per pixel.
     pub fn buffers(&self) -> Buffers {
-        if self.weights_screen.len() == self.color.len() {
-            Buffers::All
-        } else if self.texel_difference.len() == self.color.len() && !self.color.is_empty() {
-            Buffers::DepthDifference
-        } else if self.uv_affine.len() == self.color.len() {
-            Buffers::ColorDepthUv
-        } else {
-            Buffers::ColorDepth
+        let n = self.color.len();
+        [
+            Buffers::All,
+            Buffers::DepthDifference,
+            Buffers::ColorDepthUv,
+        ]
+        .into_iter()
+        .find(|&set| {
+            Buffer::ALL
+                .into_iter()
+                .all(|b| !set.has(b) || self.buffer_len(b) == n)
+        })
+        .unwrap_or(Buffers::ColorDepth)
+    }
+
+    /// How many values `buffer` holds (`width * height`, or 0 where it is absent).
+    pub fn buffer_len(&self, buffer: Buffer) -> usize {
+        match buffer {
+            Buffer::Color => self.color.len(),
+            Buffer::Depth => self.depth.len(),
+            Buffer::Triangle => self.triangle.len(),
+            Buffer::Facing => self.facing.len(),
+            Buffer::WeightsScreen => self.weights_screen.len(),
+            Buffer::WeightsPerspective => self.weights_perspective.len(),
+            Buffer::UvAffine => self.uv_affine.len(),
+            Buffer::UvPerspective => self.uv_perspective.len(),
+            Buffer::InvW => self.inv_w.len(),
+            Buffer::TexelDifference => self.texel_difference.len(),
         }
     }
 
@@ -173,5 +291,168 @@ impl Framebuffer {
             px.0 = *c;
         }
         img
+    }
+}
+
+/// Mutable views of rows `y0..y0 + rows` of every framebuffer buffer: what one parallel task
+/// of a render draws into (an absent buffer is empty in every band).
+pub(super) struct RowBand<'a> {
+    pub(super) y0: u32,
+    pub(super) rows: u32,
+    pub(super) width: u32,
+    pub(super) color: &'a mut [[u8; 4]],
+    pub(super) depth: &'a mut [f32],
+    pub(super) triangle: &'a mut [u32],
+    pub(super) facing: &'a mut [Facing],
+    pub(super) weights_screen: &'a mut [[f32; 3]],
+    pub(super) weights_perspective: &'a mut [[f32; 3]],
+    pub(super) uv_affine: &'a mut [[f32; 2]],
+    pub(super) uv_perspective: &'a mut [[f32; 2]],
+    pub(super) inv_w: &'a mut [f32],
+    pub(super) texel_difference: &'a mut [f32],
+}
+
+impl<'a> RowBand<'a> {
+    /// Cuts the framebuffer into bands of `rows_per_band` rows (the last may be shorter).
+    pub(super) fn split(frame: &'a mut Framebuffer, rows_per_band: u32) -> Vec<RowBand<'a>> {
+        let width = frame.width;
+        let mut rest = RowBand {
+            y0: 0,
+            rows: frame.height,
+            width,
+            color: &mut frame.color,
+            depth: &mut frame.depth,
+            triangle: &mut frame.triangle,
+            facing: &mut frame.facing,
+            weights_screen: &mut frame.weights_screen,
+            weights_perspective: &mut frame.weights_perspective,
+            uv_affine: &mut frame.uv_affine,
+            uv_perspective: &mut frame.uv_perspective,
+            inv_w: &mut frame.inv_w,
+            texel_difference: &mut frame.texel_difference,
+        };
+        let mut out = Vec::new();
+        while rest.rows > rows_per_band {
+            let (head, tail) = rest.split_at(rows_per_band);
+            out.push(head);
+            rest = tail;
+        }
+        out.push(rest);
+        out
+    }
+
+    /// The first and last row of `bounds` inside this band, if any.
+    pub(super) fn rows_of(&self, bounds: &super::setup::PixelBounds) -> Option<(u32, u32)> {
+        let last = (self.y0 + self.rows).checked_sub(1)?;
+        let (start, end) = (bounds.y0.max(self.y0), bounds.y1.min(last));
+        (self.rows > 0 && start <= end).then_some((start, end))
+    }
+
+    /// Whether every per-pixel buffer is present ([`Buffers::All`]).
+    pub(super) fn has_aovs(&self) -> bool {
+        self.weights_screen.len() == self.color.len()
+    }
+
+    /// Clears every buffer of the band: colour to `background`, depth to 1 (the far plane).
+    pub(super) fn clear(&mut self, background: [u8; 4]) {
+        self.color.fill(background);
+        self.depth.fill(1.0);
+        self.triangle.fill(NO_TRIANGLE);
+        self.facing.fill(Facing::Front);
+        self.weights_screen.fill([0.0; 3]);
+        self.weights_perspective.fill([0.0; 3]);
+        self.uv_affine.fill([0.0; 2]);
+        self.uv_perspective.fill([0.0; 2]);
+        self.inv_w.fill(0.0);
+        self.texel_difference.fill(f32::NAN);
+    }
+
+    /// The first `rows` rows and the remainder.
+    fn split_at(self, rows: u32) -> (RowBand<'a>, RowBand<'a>) {
+        let n = rows as usize * self.width as usize;
+        // Absent buffers (`Buffers::ColorDepth`) are empty and stay empty in both halves.
+        fn cut<T>(s: &mut [T], n: usize) -> (&mut [T], &mut [T]) {
+            let n = n.min(s.len());
+            s.split_at_mut(n)
+        }
+        let (color, color_t) = self.color.split_at_mut(n);
+        let (depth, depth_t) = self.depth.split_at_mut(n);
+        let (triangle, triangle_t) = cut(self.triangle, n);
+        let (facing, facing_t) = cut(self.facing, n);
+        let (ws, ws_t) = cut(self.weights_screen, n);
+        let (wp, wp_t) = cut(self.weights_perspective, n);
+        let (ua, ua_t) = cut(self.uv_affine, n);
+        let (up, up_t) = cut(self.uv_perspective, n);
+        let (iw, iw_t) = cut(self.inv_w, n);
+        let (td, td_t) = cut(self.texel_difference, n);
+        (
+            RowBand {
+                y0: self.y0,
+                rows,
+                width: self.width,
+                color,
+                depth,
+                triangle,
+                facing,
+                weights_screen: ws,
+                weights_perspective: wp,
+                uv_affine: ua,
+                uv_perspective: up,
+                inv_w: iw,
+                texel_difference: td,
+            },
+            RowBand {
+                y0: self.y0 + rows,
+                rows: self.rows - rows,
+                width: self.width,
+                color: color_t,
+                depth: depth_t,
+                triangle: triangle_t,
+                facing: facing_t,
+                weights_screen: ws_t,
+                weights_perspective: wp_t,
+                uv_affine: ua_t,
+                uv_perspective: up_t,
+                inv_w: iw_t,
+                texel_difference: td_t,
+            },
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every buffer set's framebuffer has exactly the buffers of the layout table, each
+    /// `width * height` long, cleared; resizing to another set follows the table too; and the
+    /// bytes per pixel are the element sizes of those buffers.
+    #[test]
+    fn the_layout_table_decides_every_buffer() {
+        let sets = [
+            Buffers::All,
+            Buffers::ColorDepth,
+            Buffers::ColorDepthUv,
+            Buffers::DepthDifference,
+        ];
+        for set in sets {
+            let mut frame = Framebuffer::with_buffers(3, 2, [9; 4], set);
+            assert_eq!(frame.buffers(), set);
+            for b in Buffer::ALL {
+                let want = if set.has(b) { 6 } else { 0 };
+                assert_eq!(frame.buffer_len(b), want, "{set:?} {b:?}");
+            }
+            assert!(frame.color.iter().all(|&c| c == [9; 4]));
+            assert!(frame.texel_difference.iter().all(|d| d.is_nan()));
+            for other in sets {
+                frame.resize(5, 1, other);
+                assert_eq!(frame.buffers(), other, "{set:?} -> {other:?}");
+            }
+        }
+        assert_eq!(
+            Buffers::All.bytes_per_pixel(),
+            4 + 4 + 4 + 1 + 12 + 12 + 8 + 8 + 4
+        );
+        assert_eq!(Buffers::ColorDepthUv.bytes_per_pixel(), 4 + 4 + 4 + 8 + 8);
     }
 }

@@ -5,7 +5,9 @@
 mod bands;
 pub mod camera;
 pub mod clip;
+mod draw;
 pub(crate) mod fast;
+pub mod footprint;
 pub mod framebuffer;
 pub mod interpolate;
 pub mod lanes;
@@ -14,6 +16,7 @@ mod prepare;
 pub mod project;
 pub mod render;
 pub mod scanline;
+pub mod settings;
 pub mod setup;
 pub mod shade;
 pub mod texture;
@@ -21,6 +24,8 @@ pub mod varying;
 
 pub use framebuffer::{Buffers, Framebuffer, NO_TRIANGLE};
 pub use interpolate::Interpolation;
-pub use render::{ClipMesh, MeshVertex, RenderSettings, render, render_into, render_row};
+pub use mesh::{ClipMesh, MeshVertex};
+pub use render::{render, render_into, render_into_at, render_row};
+pub use settings::RenderSettings;
 pub use shade::Shading;
 pub use texture::{BuiltinTexture, Filter, Texture, Wrap};

@@ -6,8 +6,8 @@ use smallvec::SmallVec;
 
 use super::clip::{ClipPolygon, ClipVertex, clip_triangle, inside_every_plane};
 use super::mesh::ClipMesh;
-use super::project::{MAX_IMAGE_SIZE, Viewport, project_vertex};
-use super::render::{RenderError, RenderSettings};
+use super::project::{Viewport, project_vertex};
+use super::settings::{RenderError, RenderSettings};
 use super::setup::{Facing, TieRule, TriangleSetup, setup_triangle_with};
 use super::varying::Varyings;
 
@@ -157,20 +157,14 @@ pub fn prepare_triangle_with(
     out
 }
 
-/// Checks the image size (1 to [`MAX_IMAGE_SIZE`] pixels per side) and prepares every source
+/// Checks the image size ([`RenderSettings::check_size`]) and prepares every source
 /// triangle of `mesh` with [`prepare_triangle`], in order: the first step of a render, and
 /// what the probe traces.
 pub fn prepare_triangles(
     mesh: &ClipMesh,
     settings: &RenderSettings,
 ) -> Result<Vec<PreparedTriangle>, RenderError> {
-    let (w, h) = (settings.width, settings.height);
-    if w == 0 || h == 0 || w > MAX_IMAGE_SIZE || h > MAX_IMAGE_SIZE {
-        return Err(RenderError::BadSize {
-            width: w,
-            height: h,
-        });
-    }
+    settings.check_size()?;
     Ok(prepare_all_with(
         mesh,
         settings.viewport(),

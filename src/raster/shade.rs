@@ -68,6 +68,18 @@ pub fn unit_normal(n: Vec3) -> Vec3 {
     }
 }
 
+/// The normal as a colour before conversion to 8 bits: `(n̂ + 1) / 2` per channel, for a unit
+/// normal `n̂` ([`unit_normal`]), each channel in [0, 1].
+///
+/// ```
+/// use barylab::raster::shade::normal_colour;
+/// use glam::Vec3;
+/// assert_eq!(normal_colour(Vec3::Z), Vec3::new(0.5, 0.5, 1.0));
+/// ```
+pub fn normal_colour(unit: Vec3) -> Vec3 {
+    (unit + Vec3::ONE) * 0.5
+}
+
 /// The colour of [`Shading::Normal`]: `unorm8((n̂ + 1) / 2)` per channel, opaque.
 ///
 /// ```
@@ -77,7 +89,7 @@ pub fn unit_normal(n: Vec3) -> Vec3 {
 /// assert_eq!(normal_rgba8(Vec3::Z), [128, 128, 255, 255]);
 /// ```
 pub fn normal_rgba8(n: Vec3) -> [u8; 4] {
-    let c = (unit_normal(n) + Vec3::ONE) * 0.5;
+    let c = normal_colour(unit_normal(n));
     [unorm8(c.x), unorm8(c.y), unorm8(c.z), 255]
 }
 
@@ -249,6 +261,24 @@ pub struct ShadeParams {
     pub wireframe: bool,
     /// Window depths mapped to black and white in [`Shading::Depth`].
     pub depth_range: (f64, f64),
+}
+
+/// The depth range [`Shading::Depth`] maps to black and white: the smallest and largest of
+/// `depths` (the window depths of the drawn triangles' vertices), or (0, 1) when there are
+/// none. The full render and the fast path both pass their drawn vertices here.
+///
+/// ```
+/// use barylab::raster::shade::depth_range;
+/// assert_eq!(depth_range([0.5, 0.25, 0.75]), (0.25, 0.75));
+/// assert_eq!(depth_range([]), (0.0, 1.0));
+/// ```
+pub fn depth_range(depths: impl IntoIterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = depths
+        .into_iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), d| {
+            (lo.min(d), hi.max(d))
+        });
+    if lo <= hi { (lo, hi) } else { (0.0, 1.0) }
 }
 
 /// Converts a [0, 1] channel to 8 bits, rounding to nearest (unorm8 conversion).

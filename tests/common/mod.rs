@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod app;
 pub mod xvfb;
 
 use barylab::raster::render::{ClipMesh, MeshVertex, Render, RenderSettings, render};

@@ -2,15 +2,15 @@
 //! the portable lane code in the parent module (and so as the per-pixel renderer), eight
 //! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
 //! is a mask or a clamp on both axes; tests check the two agree bit for bit.
-//! The texture lookups are in `avx2/texture.rs`, the writes of a chunk in `avx2/write.rs`, the
+//! The texture lookups are in `avx2/texture.rs` (through the sampler of `avx2_sampler.rs`), the writes of a chunk in `avx2/write.rs`, the
 //! non-texture colours in `avx2/shade.rs`, the gathering of sparse rows in `avx2/sparse.rs`
 //! and the scanline lanes in `avx2/scanline.rs`.
 
 use std::arch::x86_64::*;
 
 use super::{
-    BLOCK_ROWS, Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, LaneWrap,
-    Stepped, Target, classify,
+    BLOCK_ROWS, Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, Stepped,
+    Target, classify,
 };
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span_of;
@@ -18,7 +18,7 @@ use crate::raster::setup::WeightPlanes;
 use crate::raster::shade::{
     AMBIENT, MIN_NORMAL_LENGTH, WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX,
 };
-use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
+use crate::raster::texture::Filter;
 
 mod scanline;
 mod shade;
@@ -30,10 +30,9 @@ mod write;
 pub(super) use scanline::scanline_triangle;
 use shade::channel_colors;
 use texture::Lookups;
-#[cfg(test)]
-pub(super) use texture::byte_from_sum;
-pub(super) use texture::{VecSampler, VecWrap};
 use write::{finish, mask_from_bits};
+
+use super::avx2_sampler::{VecSampler, sample};
 
 /// A chunk of eight pixels whose colours are still to be looked up.
 struct Pending {
@@ -195,7 +194,7 @@ pub(super) fn edge_triangle(
     target: &mut Target<'_>,
 ) {
     if wide {
-        // SAFETY: `wide` is set only when the CPU has these features (`wide_path`).
+        // SAFETY: `wide` is set only when the CPU has these features (`VectorLevel::avx512`).
         unsafe { edge_triangle_512(tri, rows, sampler, shading, target) }
     } else {
         edge_triangle_256(tri, rows, sampler, shading, target)
@@ -626,6 +625,7 @@ fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
             channel_colors::<SITE, WIDE>([lo.depth, hi.depth], channel, color)
         }
     };
-    // SAFETY: this module runs with AVX2.
+    // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
+    // band's row inside the image (`finish`'s conditions; every chunk is made so).
     unsafe { finish::<WIDE>(target, &chunk, rgba, both.as_ref()) }
 }

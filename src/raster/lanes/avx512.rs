@@ -7,7 +7,7 @@
 use std::arch::x86_64::*;
 
 use super::Target;
-use super::avx2::{VecSampler, VecWrap};
+use super::avx2_sampler::{VecSampler, VecWrap};
 use crate::raster::interpolate::Interpolation;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD};
 
@@ -298,8 +298,13 @@ pub(super) fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m51
 /// `step8` in the same order, so every pixel gets the same values, the same colour (the same
 /// lookup as [`sample16`]) and the same depth test (`framebuffer::depth_passes`: an ordered
 /// less-than), written with masks.
+///
+/// # Safety
+/// The CPU has the features enabled here, and columns `x0..=x1` of the band row whose first
+/// pixel is buffer index `row` are inside the target's colour and depth buffers (the writes,
+/// `write16`, check this only in debug builds).
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512dq,avx512vl")]
-pub(super) fn span16(
+pub(super) unsafe fn span16(
     mut vals: [__m512d; 4],
     step8: [__m512d; 4],
     (row, x0, x1): (usize, u32, u32),
@@ -346,7 +351,9 @@ pub(super) fn span16(
             let (u1, v1) = uv(&next);
             let depth = join(_mm512_cvtpd_ps(vals[3]), _mm512_cvtpd_ps(next[3]));
             let rgba = sample16_packed(sampler, join(u0, u1), join(v0, v1));
-            write16(target, row + x as usize, ok, depth, rgba);
+            // SAFETY: `ok` enables only columns x..=x1 of the span, which lie in the band's
+            // row `row` (the function's condition), so each index is in both buffers.
+            unsafe { write16(target, row + x as usize, ok, depth, rgba) };
         }
         vals = advance(&next);
         x += 16;
@@ -355,15 +362,18 @@ pub(super) fn span16(
 
 /// Depth-tests and writes the lanes of `ok` among sixteen pixels from buffer index `index` of
 /// a band without uv or difference buffers; other lanes are neither read nor written.
+///
+/// # Safety
+/// Every lane `k` enabled in `ok` has `index + k` below the length of `target.depth` and
+/// `target.color` (checked only in debug builds).
 #[inline]
 #[target_feature(enable = "avx512f")]
-fn write16(target: &mut Target<'_>, index: usize, ok: u16, depth: __m512, rgba: __m512i) {
+unsafe fn write16(target: &mut Target<'_>, index: usize, ok: u16, depth: __m512, rgba: __m512i) {
     debug_assert!(target.uv.is_none() && target.difference.is_none());
     let end = index + (16 - ok.leading_zeros()) as usize;
     debug_assert!(end <= target.depth.len() && target.depth.len() == target.color.len());
-    // SAFETY: the caller's `ok` enables only pixels of the span, inside the band's row, so
-    // every accessed element `index + k` is in both slices; masked loads and stores touch no
-    // other lane.
+    // SAFETY: the function's condition: every lane enabled in `ok` indexes both slices;
+    // masked loads and stores touch no other lane.
     unsafe {
         let dp = target.depth.as_mut_ptr().add(index);
         let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
@@ -475,7 +485,7 @@ mod tests {
                     // SAFETY: the CPU has AVX2 (checked above); 8 lanes in and out.
                     unsafe {
                         let x = _mm256_loadu_ps(xs[8 * h..].as_ptr());
-                        let v = super::super::avx2::byte_from_sum(x);
+                        let v = super::super::avx2_sampler::byte_from_sum(x);
                         _mm256_storeu_si256(out[8 * h..].as_mut_ptr().cast(), v);
                     }
                 }

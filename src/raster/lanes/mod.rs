@@ -1,12 +1,15 @@
-//! The fast path: eight pixels of a row at a time, colour and depth only.
+//! The fast path: eight pixels of a row at a time (sixteen in the AVX-512 spans and lookups).
 //!
-//! Both rasterizers have a lane form here, used when a render asks for colour and depth only
-//! (the app's canvas, `barylab bench`). The edge-function lanes draw texture shading with
-//! nearest or bilinear filtering, vertex colour, barycentric, depth, normal and Lambert shading, and the
-//! wireframe overlay; the scanline lanes draw the same shadings without the wireframe. Other
-//! cases (trilinear filtering, the scanline rasterizer's wireframe) go through
-//! [`render`](mod@super::render)'s per-pixel code (after the block rejection of the
-//! edge-function path).
+//! Both rasterizers have a lane form here, used when a render asks for fewer buffers than all
+//! ([`render_into`](super::render::render_into): the app's canvas, `barylab bench`). The
+//! edge-function lanes write colour and depth, and the triangle and both uvs
+//! (`Buffers::ColorDepthUv`) or the texel difference (`Buffers::DepthDifference`) where the
+//! band has them; they draw texture shading with nearest or bilinear filtering, vertex colour,
+//! barycentric, depth, normal and Lambert shading, and the wireframe overlay. The scanline
+//! lanes draw the same shadings without the wireframe, into colour and depth only. Other cases
+//! (trilinear filtering, the scanline rasterizer's wireframe or uv buffers) go through the
+//! per-pixel kernel (`raster/draw.rs`, after the block rejection of the edge-function
+//! path).
 //!
 //! - **Edge functions** ([`edge_triangle`]): the bounding box is walked in blocks of
 //!   [`LANES`] columns by [`BLOCK_ROWS`] rows. The three edge functions at a block's corners
@@ -81,6 +84,8 @@ pub use triangle::{LaneTriangle, LaneVertices};
 #[cfg(target_arch = "x86_64")]
 mod avx2;
 #[cfg(target_arch = "x86_64")]
+mod avx2_sampler;
+#[cfg(target_arch = "x86_64")]
 mod avx512;
 
 /// The instruction sets the lane paths may use (each also needs the CPU to have it).
@@ -94,30 +99,44 @@ pub enum VectorLevel {
     Avx512 = 2,
 }
 
-/// The highest [`VectorLevel`] allowed (the default: all).
+/// The level [`render_into`](super::render::render_into) draws at: all by default; the
+/// command line's `--vector` sets it for the run ([`set_vector_level`]).
 static VECTOR_LEVEL: AtomicU8 = AtomicU8::new(VectorLevel::Avx512 as u8);
 
-/// Limits the instruction sets the lane paths use. Every level gives the same pixels; tests
-/// switch levels to compare them.
+/// Sets the level [`render_into`](super::render::render_into) draws at for the rest of the
+/// run (`barylab bench --vector`). Every level gives the same pixels; tests pass the level to
+/// [`render_into_at`](super::render::render_into_at) instead of setting it here.
 pub fn set_vector_level(level: VectorLevel) {
     VECTOR_LEVEL.store(level as u8, Ordering::Relaxed);
 }
 
-/// Whether the AVX2 intrinsics path is allowed and the CPU has AVX2.
-#[cfg(target_arch = "x86_64")]
-fn vector_path() -> bool {
-    VECTOR_LEVEL.load(Ordering::Relaxed) >= VectorLevel::Avx2 as u8
-        && std::arch::is_x86_feature_detected!("avx2")
-}
+impl VectorLevel {
+    /// The level [`render_into`](super::render::render_into) draws at (see
+    /// [`set_vector_level`]).
+    pub fn current() -> Self {
+        match VECTOR_LEVEL.load(Ordering::Relaxed) {
+            0 => VectorLevel::Portable,
+            1 => VectorLevel::Avx2,
+            _ => VectorLevel::Avx512,
+        }
+    }
 
-/// Whether the AVX-512 texture lookups are allowed and the CPU has AVX-512 F and BW.
-#[cfg(target_arch = "x86_64")]
-fn wide_path() -> bool {
-    VECTOR_LEVEL.load(Ordering::Relaxed) >= VectorLevel::Avx512 as u8
-        && std::arch::is_x86_feature_detected!("avx512f")
-        && std::arch::is_x86_feature_detected!("avx512bw")
-        && std::arch::is_x86_feature_detected!("avx512vl")
-        && std::arch::is_x86_feature_detected!("avx512dq")
+    /// Whether the AVX2 intrinsics path is allowed at this level and the CPU has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    fn avx2(self) -> bool {
+        self >= VectorLevel::Avx2 && std::arch::is_x86_feature_detected!("avx2")
+    }
+
+    /// Whether the AVX-512 texture lookups are allowed at this level and the CPU has AVX-512
+    /// F, BW, VL and DQ.
+    #[cfg(target_arch = "x86_64")]
+    fn avx512(self) -> bool {
+        self >= VectorLevel::Avx512
+            && std::arch::is_x86_feature_detected!("avx512f")
+            && std::arch::is_x86_feature_detected!("avx512bw")
+            && std::arch::is_x86_feature_detected!("avx512vl")
+            && std::arch::is_x86_feature_detected!("avx512dq")
+    }
 }
 
 /// Pixels processed together along a row.
@@ -375,24 +394,24 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, s: &Samples, colors: &[[u8; 4]
 }
 
 /// The edge-function rasterizer's lane path for rows `rows` (within the target band), with
-/// the `shading` `tri` was made for. With `shading` `None`, covered samples go to
+/// the `shading` `tri` was made for, at the vector level `vector`. With `shading` `None`, covered samples go to
 /// `fallback(x, y, edges)` instead (the caller's per-pixel shading), still with block
 /// rejection. `tri` must be [`exact`](LaneTriangle::exact).
 pub fn edge_triangle(
     tri: &LaneTriangle,
     rows: (u32, u32),
     texture: &Texture,
-    shading: Option<LaneShading>,
+    (shading, vector): (Option<LaneShading>, VectorLevel),
     target: &mut Target<'_>,
     fallback: &mut dyn FnMut(u32, u32, [i64; 3]),
 ) {
     if let Some(sh) = shading {
-        return Lanes::new(texture, sh).edge_triangle(tri, rows, target);
+        return Lanes::new(texture, sh, vector).edge_triangle(tri, rows, target);
     }
     #[cfg(target_arch = "x86_64")]
     {
-        if vector_path() {
-            // SAFETY: the CPU supports AVX2, checked by `vector_path`.
+        if vector.avx2() {
+            // SAFETY: the CPU supports AVX2, checked by `VectorLevel::avx2`.
             unsafe { edge_triangle_avx2(tri, rows, texture, shading, target, fallback) };
             return;
         }

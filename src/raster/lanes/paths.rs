@@ -20,18 +20,18 @@ pub struct Lanes<'t> {
     shading: LaneShading,
     build: Build,
     #[cfg(target_arch = "x86_64")]
-    sampler: Option<avx2::VecSampler<'t>>,
+    sampler: Option<avx2_sampler::VecSampler<'t>>,
     /// AVX-512 texture lookups allowed and present.
     wide: bool,
 }
 
 impl<'t> Lanes<'t> {
-    /// The best lane code this CPU (and [`set_vector_level`]) allows for `shading`.
-    pub fn new(texture: &'t Texture, shading: LaneShading) -> Self {
+    /// The best lane code this CPU and the level `vector` allow for `shading`.
+    pub fn new(texture: &'t Texture, shading: LaneShading, vector: VectorLevel) -> Self {
         #[cfg(target_arch = "x86_64")]
         {
-            if vector_path() {
-                let sampler = avx2::VecSampler::new(texture, &shading);
+            if vector.avx2() {
+                let sampler = avx2_sampler::VecSampler::new(texture, &shading);
                 let build = if shading.color != LaneColor::Texture || sampler.is_some() {
                     Build::Avx2
                 } else {
@@ -42,10 +42,12 @@ impl<'t> Lanes<'t> {
                     shading,
                     build,
                     sampler,
-                    wide: wide_path(),
+                    wide: vector.avx512(),
                 };
             }
         }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = vector;
         Self {
             texture,
             shading,
@@ -74,7 +76,7 @@ impl<'t> Lanes<'t> {
         let fallback = &mut |_, _, _| {};
         match self.build {
             #[cfg(target_arch = "x86_64")]
-            // SAFETY: the CPU supports AVX2 (`vector_path` chose this build).
+            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build).
             Build::Avx2 => unsafe {
                 avx2::edge_triangle(
                     tri,
@@ -100,7 +102,7 @@ impl<'t> Lanes<'t> {
         let (texture, shading) = (self.texture, self.shading);
         match (self.build, &self.sampler) {
             #[cfg(target_arch = "x86_64")]
-            // SAFETY: the CPU supports AVX2 (`vector_path` chose this build).
+            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build).
             (Build::Avx2, sampler) if sampler.is_some() || shading.color != LaneColor::Texture => unsafe {
                 avx2::scanline_triangle(tri, rows, sampler.as_ref(), self.wide, &shading, target)
             },

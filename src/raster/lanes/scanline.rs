@@ -3,15 +3,16 @@
 use super::*;
 
 /// The scanline rasterizer's lane path for rows `rows` (within the target band); `tri` made
-/// for this `shading` (any colour, no wireframe), without the uv buffers.
+/// for this `shading` (any colour, no wireframe), without the uv buffers; at the vector level
+/// `vector`.
 pub fn scanline_triangle(
     tri: &LaneTriangle,
     rows: (u32, u32),
     texture: &Texture,
-    shading: LaneShading,
+    (shading, vector): (LaneShading, VectorLevel),
     target: &mut Target<'_>,
 ) {
-    Lanes::new(texture, shading).scanline_triangle(tri, rows, target);
+    Lanes::new(texture, shading, vector).scanline_triangle(tri, rows, target);
 }
 
 #[cfg(target_arch = "x86_64")]

@@ -133,7 +133,7 @@ fn normal_lines(b: &mut Builder, shading: Shading, n: &NormalTrace) {
     ]);
     match shading {
         Shading::Normal => {
-            let c = n.unit.map(|x| (x + 1.0) * 0.5);
+            let c = crate::raster::shade::normal_colour(glam::Vec3::from_array(n.unit)).to_array();
             b.eq_note(
                 vec![
                     frac(grp(vec![sym("n̂"), PLUS, M::Int(1)]), M::Int(2)),

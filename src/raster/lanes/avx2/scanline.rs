@@ -19,7 +19,7 @@ pub(in crate::raster::lanes) fn scanline_triangle(
     target: &mut Target<'_>,
 ) {
     if wide {
-        // SAFETY: `wide` is set only when the CPU has these features (`wide_path`).
+        // SAFETY: `wide` is set only when the CPU has these features (`VectorLevel::avx512`).
         unsafe { scanline_triangle_512(tri, rows, sampler, shading, target) }
     } else {
         scanline_triangle_256(tri, rows, sampler, shading, target)
@@ -116,7 +116,8 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
             let lanes = Stepped::lanes(start, &step);
             if WIDE {
                 // (The function's unsafe block covers this: `WIDE` is set only when the CPU
-                // has AVX-512 F, BW, VL and DQ, `wide_path`.)
+                // has AVX-512 F, BW, VL and DQ, `VectorLevel::avx512`; `x0..=x1` is the row's
+                // exact span, inside the triangle's bounds and so inside the image.)
                 wide_span(&lanes, &step, (row, x0, x1), mode, sampler, target);
                 continue;
             }
@@ -353,7 +354,8 @@ fn colour_span<const WIDE: bool>(
 /// time with the operations of [`stepped_chunk`], lane for lane, so the same values.
 ///
 /// # Safety
-/// The CPU has AVX2 and AVX-512 F, BW, VL and DQ.
+/// The CPU has AVX2 and AVX-512 F, BW, VL and DQ, and columns `x0..=x1` of the band row
+/// whose first pixel is buffer index `row` are inside the target's buffers.
 #[inline]
 #[target_feature(enable = "avx2,avx512f,avx512dq")]
 unsafe fn wide_span(
@@ -385,7 +387,8 @@ unsafe fn wide_span(
     ];
     let n = LANES as f64;
     let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm512_set1_pd(x));
-    // SAFETY: as the function's.
+    // SAFETY: as the function's: the CPU features, and the span `x0..=x1` of the band's row
+    // `row` lies inside the image (`span16`'s conditions).
     unsafe { super::super::avx512::span16(vals, step8, (row, x0, x1), mode, sampler, target) };
 }
 

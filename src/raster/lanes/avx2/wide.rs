@@ -111,7 +111,8 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
             dot3(&p, b[3]),
         ]
         .map(|x| _mm512_cvtpd_ps(x));
-        // SAFETY: this module runs with AVX2.
+        // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
+        // band's row inside the image (`finish`'s conditions; every chunk is made so).
         unsafe { finish::<WIDE>(target, &chunk, _mm256_setzero_si256(), Some(&both)) };
         return;
     }

@@ -10,7 +10,11 @@ use super::*;
 ///
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE` (gathered chunks are then
-/// written with scatters, `sparse::write_scatter`).
+/// written with scatters, `sparse::write_scatter`). Every lane of `chunk.valid` is a pixel
+/// of the target band's row inside the image: for a row chunk, buffer indices
+/// `chunk.index + k` below the length of the colour and depth buffers (and of the uv or
+/// difference buffers the target has), as [`write`], [`store_uv`] and [`store_difference`]
+/// require.
 #[inline(always)]
 pub(super) unsafe fn finish<const WIDE: bool>(
     target: &mut Target<'_>,
@@ -18,7 +22,8 @@ pub(super) unsafe fn finish<const WIDE: bool>(
     mut rgba: __m256i,
     both_uv: Option<&[__m256; 4]>,
 ) {
-    // SAFETY: as the function's.
+    // SAFETY: the function's conditions: the CPU features, and `chunk.valid` enables only
+    // pixels inside the buffers (so do `pass`'s lanes, a subset of them).
     unsafe {
         if chunk.halo != 0 {
             rgba = _mm256_blendv_epi8(
@@ -53,9 +58,13 @@ pub(super) unsafe fn finish<const WIDE: bool>(
 /// Writes the texel difference of the lanes in `pass` (eight pixels from buffer index
 /// `index` of the band): `texture::square_texel_difference`'s operations, mirrored, then the
 /// square root (IEEE `f32` operations, so bit for bit the scalar values).
+///
+/// # Safety
+/// Every lane `k` enabled in `pass` has `index + k < d.out.len()` (the masked store writes
+/// those elements and no other; checked only in debug builds).
 #[inline]
 #[target_feature(enable = "avx2")]
-fn store_difference(
+unsafe fn store_difference(
     d: &mut super::super::DifferenceTarget<'_>,
     index: usize,
     pass: __m256i,
@@ -65,17 +74,27 @@ fn store_difference(
     let du = _mm256_mul_ps(_mm256_sub_ps(both[0], both[2]), _mm256_set1_ps(d.size[0]));
     let dv = _mm256_mul_ps(_mm256_sub_ps(both[1], both[3]), _mm256_set1_ps(d.size[1]));
     let len = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(du, du), _mm256_mul_ps(dv, dv)));
-    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, and
-    // the buffer has the colour buffer's length; masked stores touch no other element.
+    // SAFETY: the function's condition: `pass` enables only lanes whose element is in
+    // `d.out`; masked stores touch no other element.
     unsafe { _mm256_maskstore_ps(d.out.as_mut_ptr().add(index), pass, len) };
 }
 
 /// Writes the source triangle and both uvs of the lanes in `pass` (eight pixels from buffer
 /// index `index` of the band): the uv pairs are interleaved in registers and stored with masks,
 /// as `write` stores the colour.
+///
+/// # Safety
+/// Every lane `k` enabled in `pass` has `index + k` below the length of `uv.triangle`,
+/// `uv.uv_affine` and `uv.uv_perspective` (the masked stores write those elements and no
+/// other; checked only in debug builds).
 #[inline]
 #[target_feature(enable = "avx2")]
-fn store_uv(uv: &mut super::super::UvTarget<'_>, index: usize, pass: __m256i, both: &[__m256; 4]) {
+unsafe fn store_uv(
+    uv: &mut super::super::UvTarget<'_>,
+    index: usize,
+    pass: __m256i,
+    both: &[__m256; 4],
+) {
     debug_assert!(
         index < uv.triangle.len()
             && uv.triangle.len() == uv.uv_affine.len()
@@ -99,9 +118,9 @@ fn store_uv(uv: &mut super::super::UvTarget<'_>, index: usize, pass: __m256i, bo
     };
     let affine = pairs(both[0], both[1]);
     let perspective = pairs(both[2], both[3]);
-    // SAFETY: as in `write`: `pass` enables only lanes of pixels inside the band's row, so
-    // every element written (`index + k`, its two floats) is inside the three buffers, which
-    // have the colour buffer's length; masked stores touch no other element.
+    // SAFETY: the function's condition: `pass` enables only lanes whose element
+    // (`index + k`, its two floats) is inside the three buffers; masked stores touch no
+    // other element.
     unsafe {
         _mm256_maskstore_epi32(
             uv.triangle.as_mut_ptr().add(index).cast::<i32>(),
@@ -119,9 +138,14 @@ fn store_uv(uv: &mut super::super::UvTarget<'_>, index: usize, pass: __m256i, bo
 
 /// Depth-tests and writes eight pixels starting at buffer index `index` of the band; lanes
 /// outside `ok` are neither read nor written. Returns the lanes that passed.
+///
+/// # Safety
+/// Every lane `k` enabled in `ok` has `index + k` below the length of `target.depth` and
+/// `target.color`; when all eight are enabled, all eight elements are read and written
+/// (checked only in debug builds).
 #[inline]
 #[target_feature(enable = "avx2")]
-fn write(
+unsafe fn write(
     target: &mut Target<'_>,
     index: usize,
     ok: __m256i,
@@ -129,9 +153,8 @@ fn write(
     rgba: __m256i,
 ) -> __m256i {
     debug_assert!(index < target.depth.len() && target.depth.len() == target.color.len());
-    // SAFETY: the caller's `ok` enables only lanes of pixels inside the band's row (columns
-    // up to the triangle's last column, which is inside the image), so every accessed
-    // element `index + k` is in both slices; masked loads and stores touch no other lane.
+    // SAFETY: the function's condition: every lane enabled in `ok` indexes both slices;
+    // masked loads and stores touch no other lane.
     unsafe {
         let dp = target.depth.as_mut_ptr().add(index);
         let cp = target.color.as_mut_ptr().add(index).cast::<i32>();

@@ -3,12 +3,11 @@
 //! mode's colour, two triangles at one centre (the depth test), an edge pixel with a blended
 //! colour (anti-aliasing).
 
-use super::{CoverageBy, Difference, Reference, rgb_difference};
+use super::reason::Reason;
+use super::{CoverageBy, Difference, Reference, rgb_difference, uv_gap_texels};
 use crate::probe::{PixelTrace, Position, Prober, TriangleCoverage};
 use crate::raster::render::Render;
 use crate::raster::{Interpolation, NO_TRIANGLE, RenderSettings};
-
-pub use super::reason::{Reason, mode_short};
 
 /// What the reasons need: a prober of the scene, barylab's render and the other mode's.
 pub struct Context<'a> {
@@ -166,7 +165,7 @@ impl<'a> Context<'a> {
         let diff = rgb_difference(theirs, ours);
         if rgb_difference(theirs, other) <= self.tolerance {
             return Reason::OtherMode {
-                texels: super::hypotheses::uv_gap_texels(f, k, self.reference.texture),
+                texels: uv_gap_texels(f, k, self.reference.texture),
                 looks_like: self.other_mode,
             };
         }
