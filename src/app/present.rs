@@ -131,9 +131,7 @@ fn pair(uv: [f32; 2]) -> String {
 pub fn card_ui(ui: &mut Ui, input: &CardInput<'_>) {
     let lang = super::locale::lang(ui.ctx());
     let size = input.size;
-    // The small lines never below the body text (the room reads them too).
-    let body = egui::TextStyle::Body.resolve(ui.style()).size;
-    let small = (SMALL_SHARE * size).max(body);
+    let small = SMALL_SHARE * size;
     let hint = input
         .keys_hint
         .clone()
