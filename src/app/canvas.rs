@@ -329,7 +329,10 @@ pub(crate) fn canvas_ui(
                     (p.x - view.rect.left()) / view.rect.width(),
                 ));
             }
-            r.on_hover_text(lang.tr("app.canvas.wipe_line"));
+            // No tooltip while dragging: it would cover what the drag changes.
+            if !r.dragged() {
+                r.on_hover_text(lang.tr("app.canvas.wipe_line"));
+            }
         }
 
         // Handles.
@@ -401,7 +404,9 @@ pub(crate) fn canvas_ui(
                         });
                     }
                 }
-                r.on_hover_text(lang.tr("app.canvas.handle_tip"));
+                if !r.dragged() {
+                    r.on_hover_text(lang.tr("app.canvas.handle_tip"));
+                }
             }
         }
     }

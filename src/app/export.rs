@@ -466,9 +466,10 @@ pub(crate) fn export_ui(
         .collapsible(false)
         .resizable(false)
         .default_width(560.0)
-        // Low on the right, over the inspector: the canvas being exported stays in view.
-        .pivot(egui::Align2::RIGHT_BOTTOM)
-        .default_pos(ctx.content_rect().right_bottom() - egui::vec2(20.0, 60.0))
+        // High on the right, over the inspector: the canvas being exported stays in view, and
+        // so does an open lesson's bar at the bottom.
+        .pivot(egui::Align2::RIGHT_TOP)
+        .default_pos(ctx.content_rect().right_top() + egui::vec2(-20.0, 60.0))
         .show(ctx, |ui| window_contents(ui, panel, folder_text, &mut out));
     if !open {
         out.push(ExportCommand::Close);
