@@ -534,10 +534,19 @@ fn parse_args() -> Result<Cli, ExitCode> {
 }
 
 pub fn main() -> ExitCode {
+    // First, before any thread starts: an interrupted run removes its temporary files.
+    if let Err(e) = barylab::files::remove_temps_on_signals() {
+        note!("warning: cannot catch Ctrl+C to remove temporary files: {e}");
+    }
     let cli = match parse_args() {
         Ok(cli) => cli,
         Err(code) => return code,
     };
+    // No output of a command replaces a file it read (the interactive app saves scenes over
+    // the files they came from, as Save does; its screenshot run is a command).
+    if cli.command.is_some() || cli.screenshot.is_some() {
+        barylab::files::guard_inputs();
+    }
     if let Some(bytes) = cli.memory_limit {
         barylab::budget::set_limit(bytes);
     }
@@ -608,6 +617,11 @@ fn app(cli: &Cli) -> Result<()> {
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,
     };
+    if let Some(shot) = &cli.screenshot {
+        // The scene, its texture or model and the lesson were read by now; the image to
+        // compare is read by the window.
+        output::not_an_input(shot, cli.compare_image.as_slice())?;
+    }
     barylab::app::run(options)?;
     Ok(())
 }

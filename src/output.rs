@@ -80,8 +80,12 @@ pub fn check_output(path: &Path, extensions: &[&str]) -> Result<()> {
     Ok(())
 }
 
-/// Refuses to write `output` when it is one of `inputs` (the same file, by any name).
+/// Refuses to write `output` when it is a file this command read ([`files::check_not_input`])
+/// or one of `inputs` it will read (the same file, by any name).
 pub fn not_an_input(output: &Path, inputs: &[PathBuf]) -> Result<()> {
+    // Every file read so far (the same check runs again for every file written) ...
+    files::check_not_input(output)?;
+    // ... and those named that are read later.
     if let Some(input) = inputs.iter().find(|i| files::same_file(output, i)) {
         bail!(
             "cannot write {}: it is an input of this command ({}); choose another output file",
