@@ -199,3 +199,67 @@ fn an_interrupted_write_leaves_no_temporary_file() {
         assert!(!out.exists(), "no output after the signal");
     }
 }
+
+/// The binary without the tests' fixed memory limit, under an address-space limit (`ulimit
+/// -v`) of `bytes`.
+fn under_address_limit(bytes: u64) -> Command {
+    use std::os::unix::process::CommandExt;
+    let mut c = Command::new(env!("CARGO_BIN_EXE_barylab"));
+    c.env_remove("BARYLAB_MEMORY_LIMIT");
+    let limit = libc::rlimit {
+        rlim_cur: bytes,
+        rlim_max: bytes,
+    };
+    // SAFETY: setrlimit is async-signal-safe and `limit` is a valid record copied into the
+    // closure; it runs in the child between fork and exec.
+    unsafe {
+        c.pre_exec(move || {
+            if libc::setrlimit(libc::RLIMIT_AS, &limit) == 0 {
+                Ok(())
+            } else {
+                Err(std::io::Error::last_os_error())
+            }
+        });
+    }
+    c
+}
+
+#[test]
+fn the_default_memory_limit_respects_the_address_space_limit() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("o.png");
+    const LIMIT: u64 = 3 << 30;
+    // An 8192x8192 render needs about 3.8 GiB: more than the process may have, whatever the
+    // machine's free memory. Refused with a message (it aborted in the allocator before).
+    let o = within_deadline(under_address_limit(LIMIT).args([
+        "render",
+        &scene("default.json"),
+        "--size",
+        "8192x8192",
+        "-o",
+        s(&out),
+    ]));
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.starts_with("error: a 8192x8192 render of 2 triangles needs about 3.8 GiB")
+            && err.contains("of what the address space limit (ulimit -v) leaves this process"),
+        "{err}"
+    );
+    // The limit is 75% of what is left: below 75% of 3 GiB.
+    let limit = err
+        .split("more than the limit of ")
+        .nth(1)
+        .and_then(|t| t.split(" GiB").next())
+        .and_then(|t| t.parse::<f64>().ok())
+        .expect("the limit in GiB");
+    assert!(limit > 0.5 && limit < 2.25, "{err}");
+    // A request within it is drawn.
+    let o = within_deadline(under_address_limit(LIMIT).args([
+        "render",
+        &scene("default.json"),
+        "-o",
+        s(&out),
+    ]));
+    assert!(o.status.success(), "{}", stderr(&o));
+}
