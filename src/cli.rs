@@ -542,6 +542,11 @@ pub fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(code) => return code,
     };
+    if cli.command.is_some()
+        && let Err(e) = output::stdout_open()
+    {
+        return output::report(&e);
+    }
     // No output of a command replaces a file it read (the interactive app saves scenes over
     // the files they came from, as Save does; its screenshot run is a command).
     if cli.command.is_some() || cli.screenshot.is_some() {
@@ -622,6 +627,5 @@ fn app(cli: &Cli) -> Result<()> {
         // compare is read by the window.
         output::not_an_input(shot, cli.compare_image.as_slice())?;
     }
-    barylab::app::run(options)?;
-    Ok(())
+    barylab::app::run(options).map_err(|e| anyhow::anyhow!(output::window_error(&e.to_string())))
 }

@@ -357,6 +357,16 @@ pub fn check_output(path: &Path, extensions: &[&str]) -> Result<(), WriteError> 
             .extension()
             .and_then(|e| e.to_str())
             .map(str::to_ascii_lowercase);
+        // ".png" is a hidden file's name with no extension, not an extension alone.
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if ext.is_none()
+            && let Some(bare) = name.strip_prefix('.')
+            && extensions.contains(&bare.to_ascii_lowercase().as_str())
+        {
+            return Err(refused(format!(
+                "the file name is only the extension {name}: give it a name, e.g. out{name}"
+            )));
+        }
         if !ext.is_some_and(|e| extensions.contains(&e.as_str())) {
             let list: Vec<String> = extensions.iter().map(|e| format!(".{e}")).collect();
             return Err(refused(format!(
