@@ -17,6 +17,7 @@ mod compare;
 mod gpu_check;
 mod lesson;
 mod values;
+mod work;
 
 use values::*;
 

@@ -157,3 +157,32 @@ fn no_display_is_said_without_a_source_path() {
         "{e}"
     );
 }
+
+#[test]
+fn absurd_work_is_refused_with_the_estimate() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = |n: &str| dir.path().join(n);
+    // One large triangle a million times over: hours of drawing.
+    let mut obj = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    obj.push_str(&"f 1 2 3\n".repeat(1_000_000));
+    std::fs::write(d("many.obj"), obj).expect("write");
+    let out = bin()
+        .args(["render", s(&d("many.obj")), "-o", s(&d("o.png"))])
+        .output()
+        .expect("run");
+    let e = stderr(&out);
+    assert_eq!(out.status.code(), Some(1), "{e}");
+    assert!(
+        e.contains(&format!(
+            "error: {}: drawing its 1000000 triangles at 800x600 covers about ",
+            s(&d("many.obj"))
+        )) && e.contains("more than the 1e10 barylab draws in one command"),
+        "{e}"
+    );
+    assert!(!d("o.png").exists());
+    // A thousand copies are drawn.
+    let mut obj = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    obj.push_str(&"f 1 2 3\n".repeat(1000));
+    std::fs::write(d("few.obj"), obj).expect("write");
+    succeeds(&["render", s(&d("few.obj")), "-o", s(&d("o.png"))]);
+}
