@@ -138,12 +138,7 @@ fn no_output_replaces_a_file_the_command_read() {
     assert!(!d("o.png").exists(), "the PNG is not written either");
     // A lesson step's figure over the step scene's texture.
     scene_with_texture(dir.path(), "l.json", "photo.png");
-    let both = |t: &str| serde_json::json!({"en": t, "zh": t});
-    let lesson = serde_json::json!({
-        "title": both("t"),
-        "steps": [{"title": both("one"), "text": both("x"), "try": both("y"), "scene": "l.json"}]
-    });
-    std::fs::write(d("lesson.json"), lesson.to_string()).expect("write");
+    bad_input::write_one_step_lesson(&d("lesson.json"), "l.json");
     is_input(
         &fails(&[
             "lesson",

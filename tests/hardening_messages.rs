@@ -115,12 +115,7 @@ fn a_lesson_step_error_is_said_once() {
     let d = |n: &str| dir.path().join(n);
     std::fs::write(d("notes.png"), "not a picture\n").expect("write");
     scene_with(dir.path(), "s.json", "texture", "notes.png".into());
-    let both = |t: &str| serde_json::json!({"en": t, "zh": t});
-    let lesson = serde_json::json!({
-        "title": both("t"),
-        "steps": [{"title": both("one"), "text": both("x"), "try": both("y"), "scene": "s.json"}]
-    });
-    std::fs::write(d("l.json"), lesson.to_string()).expect("write");
+    bad_input::write_one_step_lesson(&d("l.json"), "s.json");
     let e = fails(&[
         "lesson",
         s(&d("l.json")),
