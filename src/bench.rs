@@ -91,6 +91,9 @@ pub enum BenchError {
     /// Zero frames were asked for.
     #[error("frames must be at least 1")]
     NoFrames,
+    /// The view's renders together do not fit the memory limit.
+    #[error(transparent)]
+    Memory(#[from] crate::budget::MemoryError),
 }
 
 /// The short name of a rasterizer in records and tables.
@@ -240,6 +243,33 @@ pub fn draw_view(
     }
 }
 
+/// Refuses a view whose framebuffers, kept together from frame to frame, do not fit the
+/// memory limit: side by side and wipe keep two images ([`draw_view`]), so they need twice
+/// one render's memory.
+fn check_view_memory(
+    mesh: &ClipMesh,
+    settings: &RenderSettings,
+    view: View,
+) -> Result<(), crate::budget::MemoryError> {
+    let (renders, buffers) = match view {
+        View::Single => (1, Buffers::ColorDepth),
+        View::Side | View::Wipe => (2, Buffers::ColorDepth),
+        View::Difference => (1, Buffers::DepthDifference),
+    };
+    let (w, h) = (settings.width, settings.height);
+    let (vertices, triangles) = (mesh.vertices.len(), mesh.triangles.len());
+    crate::budget::check(
+        || {
+            format!(
+                "the {} view at {w}x{h} ({renders} render{} of {triangles} triangles)",
+                view_name(view),
+                if renders == 1 { "" } else { "s" }
+            )
+        },
+        renders * crate::budget::render_need(w, h, buffers, vertices, triangles),
+    )
+}
+
 /// Times `frames` frames of one configuration, `base` giving everything else (size, wrap,
 /// shading, background), and returns the median.
 pub fn run_config(
@@ -277,6 +307,7 @@ pub fn run_view(
             threads: config.threads,
             reason: e.to_string(),
         })?;
+    check_view_memory(mesh, &settings, view)?;
     let mut times = Vec::with_capacity(frames as usize);
     let mut images = ViewFrames {
         images: [0, 1].map(|_| raster::Framebuffer::new(0, 0, settings.background)),

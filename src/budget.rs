@@ -6,7 +6,9 @@
 //!
 //! The limit is, in order: [`set_limit`] (the command line's `--memory-limit`), the
 //! environment variable [`LIMIT_ENV`], or [`AVAILABLE_SHARE`] of the memory the system reports
-//! available (`MemAvailable` in `/proc/meminfo`), else [`FALLBACK_LIMIT`].
+//! available (`MemAvailable` in `/proc/meminfo`) or, when smaller, of the room the process's
+//! own limits leave (`ulimit -v`, `ulimit -d`, a cgroup's memory.max), else
+//! [`FALLBACK_LIMIT`].
 
 use std::sync::OnceLock;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -38,6 +40,17 @@ pub const SCENE_BYTES_PER_FILE_BYTE: u64 = 4;
 /// Bytes per pixel of a figure's PNG beyond its renders: the canvas, the overlay layer, the
 /// output image and the encoded PNG (4 bytes each).
 pub const FIGURE_BYTES_PER_PIXEL: u64 = 16;
+
+/// Bytes per pixel of decoding an image file (a texture, an image to compare): the decoded
+/// image in the file's own format (up to 8 bytes, RGBA at 16 bits), its RGBA8 copy and the
+/// texture or comparison image made from it (4 bytes each).
+pub const IMAGE_DECODE_BYTES_PER_PIXEL: u64 = 16;
+
+/// What decoding a `width` x `height` image file needs
+/// (`width * height *` [`IMAGE_DECODE_BYTES_PER_PIXEL`]).
+pub fn image_decode_need(width: u32, height: u32) -> u64 {
+    u64::from(width) * u64::from(height) * IMAGE_DECODE_BYTES_PER_PIXEL
+}
 
 /// Set by `--memory-limit`; 0 means not set.
 static OVERRIDE: AtomicU64 = AtomicU64::new(0);
@@ -118,9 +131,113 @@ pub fn parse_size(s: &str) -> Option<u64> {
 /// The available memory the system reports, in bytes.
 fn available() -> Option<u64> {
     let text = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    kib_field(&text, "MemAvailable:")
+}
+
+/// A `NAME:  1234 kB` line of a /proc file, in bytes.
+fn kib_field(text: &str, name: &str) -> Option<u64> {
+    let line = text.lines().find(|l| l.starts_with(name))?;
     let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kb.saturating_mul(1024))
+}
+
+/// What bounds the memory of this process besides the machine's available memory, and the
+/// room it leaves, in bytes: the address-space limit (`ulimit -v`, RLIMIT_AS) less the
+/// process's virtual size now, the data limit (RLIMIT_DATA) less its data now, and the
+/// memory.max of its cgroup and each parent (containers, shared lab machines) less what the
+/// cgroup uses. The smallest room, with its name for messages; `None` when nothing is set.
+fn process_room() -> Option<(u64, &'static str)> {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    let mut rooms: Vec<(u64, &'static str)> = Vec::new();
+    #[cfg(unix)]
+    for (resource, used, name) in [
+        (
+            libc::RLIMIT_AS,
+            "VmSize:",
+            "the address space limit (ulimit -v)",
+        ),
+        (
+            libc::RLIMIT_DATA,
+            "VmData:",
+            "the data size limit (ulimit -d)",
+        ),
+    ] {
+        let mut lim = libc::rlimit {
+            rlim_cur: 0,
+            rlim_max: 0,
+        };
+        // SAFETY: `lim` is a valid place for one `rlimit` record; the result is checked.
+        let ok = unsafe { libc::getrlimit(resource, &mut lim) } == 0;
+        if ok && lim.rlim_cur != libc::RLIM_INFINITY {
+            let used = kib_field(&status, used).unwrap_or(0);
+            // `rlim_t` is a u64 on Linux, maybe narrower elsewhere.
+            #[allow(clippy::useless_conversion)]
+            let cur = u64::from(lim.rlim_cur);
+            rooms.push((cur.saturating_sub(used), name));
+        }
+    }
+    if let Some(room) = cgroup_room() {
+        rooms.push((room, "the memory.max of its cgroup"));
+    }
+    rooms.into_iter().min_by_key(|(room, _)| *room)
+}
+
+/// The smallest `memory.max - memory.current` of this process's cgroup (v2) and its
+/// parents, or v1's `memory.limit_in_bytes - memory.usage_in_bytes`.
+fn cgroup_room() -> Option<u64> {
+    let read = |p: &std::path::Path| {
+        std::fs::read_to_string(p)
+            .ok()
+            .and_then(|t| t.trim().parse::<u64>().ok())
+    };
+    let own = std::fs::read_to_string("/proc/self/cgroup").ok()?;
+    let mut best: Option<u64> = None;
+    let mut keep = |room: u64| best = Some(best.map_or(room, |b| b.min(room)));
+    if let Some(path) = own.lines().find_map(|l| l.strip_prefix("0::")) {
+        let mut dir = std::path::Path::new("/sys/fs/cgroup").join(path.trim_start_matches('/'));
+        loop {
+            // "max" (no limit) does not parse as a number.
+            if let Some(max) = read(&dir.join("memory.max")) {
+                keep(max.saturating_sub(read(&dir.join("memory.current")).unwrap_or(0)));
+            }
+            if dir.as_os_str().len() <= "/sys/fs/cgroup".len() || !dir.pop() {
+                break;
+            }
+        }
+    }
+    let v1 = std::path::Path::new("/sys/fs/cgroup/memory");
+    /// v1 writes a number near 2^63 for "no limit".
+    const V1_UNLIMITED: u64 = 1 << 60;
+    if let Some(max) = read(&v1.join("memory.limit_in_bytes")).filter(|&m| m < V1_UNLIMITED) {
+        keep(max.saturating_sub(read(&v1.join("memory.usage_in_bytes")).unwrap_or(0)));
+    }
+    best
+}
+
+/// The default limit: [`AVAILABLE_SHARE`] of the smaller of the available memory and the
+/// room the process's own limits leave ([`process_room`]), else [`FALLBACK_LIMIT`] (or the
+/// room, when smaller).
+fn default_limit() -> Limit {
+    let share = |b: u64| (b as f64 * AVAILABLE_SHARE) as u64;
+    let percent = AVAILABLE_SHARE * 100.0;
+    match (available(), process_room()) {
+        (Some(a), Some((room, name))) if room < a => Limit {
+            bytes: share(room),
+            source: format!("{percent:.0}% of what {name} leaves this process"),
+        },
+        (None, Some((room, name))) if share(room) < FALLBACK_LIMIT => Limit {
+            bytes: share(room),
+            source: format!("{percent:.0}% of what {name} leaves this process"),
+        },
+        (Some(a), _) => Limit {
+            bytes: share(a),
+            source: format!("{percent:.0}% of the available memory"),
+        },
+        (None, _) => Limit {
+            bytes: FALLBACK_LIMIT,
+            source: "the default when available memory is unknown".into(),
+        },
+    }
 }
 
 /// The current limit.
@@ -146,18 +263,7 @@ pub fn limit() -> Result<Limit, MemoryError> {
     }
     // Read once: the share of what was available when the program started.
     static DEFAULT: OnceLock<Limit> = OnceLock::new();
-    Ok(DEFAULT
-        .get_or_init(|| match available() {
-            Some(a) => Limit {
-                bytes: (a as f64 * AVAILABLE_SHARE) as u64,
-                source: format!("{:.0}% of the available memory", AVAILABLE_SHARE * 100.0),
-            },
-            None => Limit {
-                bytes: FALLBACK_LIMIT,
-                source: "the default when available memory is unknown".into(),
-            },
-        })
-        .clone())
+    Ok(DEFAULT.get_or_init(default_limit).clone())
 }
 
 /// Refuses `need` bytes for `what` ("a 16384x16384 render") past the limit.

@@ -17,6 +17,7 @@ mod compare;
 mod gpu_check;
 mod lesson;
 mod values;
+mod work;
 
 use values::*;
 
@@ -534,10 +535,24 @@ fn parse_args() -> Result<Cli, ExitCode> {
 }
 
 pub fn main() -> ExitCode {
+    // First, before any thread starts: an interrupted run removes its temporary files.
+    if let Err(e) = barylab::files::remove_temps_on_signals() {
+        note!("warning: cannot catch Ctrl+C to remove temporary files: {e}");
+    }
     let cli = match parse_args() {
         Ok(cli) => cli,
         Err(code) => return code,
     };
+    if cli.command.is_some()
+        && let Err(e) = output::stdout_open()
+    {
+        return output::report(&e);
+    }
+    // No output of a command replaces a file it read (the interactive app saves scenes over
+    // the files they came from, as Save does; its screenshot run is a command).
+    if cli.command.is_some() || cli.screenshot.is_some() {
+        barylab::files::guard_inputs();
+    }
     if let Some(bytes) = cli.memory_limit {
         barylab::budget::set_limit(bytes);
     }
@@ -608,6 +623,10 @@ fn app(cli: &Cli) -> Result<()> {
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,
     };
-    barylab::app::run(options)?;
-    Ok(())
+    if let Some(shot) = &cli.screenshot {
+        // The scene, its texture or model and the lesson were read by now; the image to
+        // compare is read by the window.
+        output::not_an_input(shot, cli.compare_image.as_slice())?;
+    }
+    barylab::app::run(options).map_err(|e| anyhow::anyhow!(output::window_error(&e.to_string())))
 }

@@ -6,11 +6,24 @@
 //!   ([`write_atomic`], [`stage`]): a full disk or a crash never leaves a half-written file, and
 //!   the previous file stays as it was. [`check_output`] checks an output path before any
 //!   long work starts.
+//!   A file of the kernel's pseudo file systems (`/proc`, `/sys`, ...), whose size says
+//!   nothing of what a read returns and whose read may block forever, is refused by the file
+//!   system it is on, before it is opened.
+//! - Never over an input: outputs are checked against every file read ([`check_not_input`]).
+//! - Interrupted: the temporary files being written are removed on SIGINT, SIGTERM and SIGHUP
+//!   ([`remove_temps_on_signals`]).
 //! - Messages: [`shown`] escapes control characters and shortens very long paths.
 
 use std::fs::{File, Metadata};
 use std::io::{self, BufWriter, Read, Write};
 use std::path::{Path, PathBuf};
+
+mod inputs;
+mod special;
+mod temps;
+
+pub use inputs::{FileId, check_not_input, guard_inputs};
+pub use temps::{SIGNAL_EXIT_BASE, remove_temps_on_signals};
 
 /// Largest scene file (JSON) read. Scenes written by hand or by the app are a few KB; 10
 /// million triangles of the clip-space form take about 100 MB of text.
@@ -182,12 +195,33 @@ pub fn open_regular(path: &Path, kind: FileKind) -> Result<(io::Take<File>, u64)
         }
         Ok(())
     };
-    // `metadata` follows symbolic links and never opens the file: a FIFO is caught here.
+    let pseudo = |what: Option<&'static str>| match what {
+        Some(what) => Err(ReadError::NotRegular {
+            kind: kind.name(),
+            path: shown(path),
+            what,
+        }),
+        None => Ok(()),
+    };
+    // `metadata` follows symbolic links and never opens the file: a FIFO is caught here, and
+    // a file of /proc or /sys (`/proc/kmsg` blocks a read forever) by its file system.
     checked(&std::fs::metadata(path).map_err(io)?)?;
-    let file = File::open(path).map_err(io)?;
+    pseudo(special::pseudo_path(path))?;
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        // A regular file ignores it; anything else that slipped through fails instead of
+        // blocking the read.
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    let file = options.open(path).map_err(io)?;
     // The file may have been replaced between the two looks; check what was opened.
     let meta = file.metadata().map_err(io)?;
     checked(&meta)?;
+    pseudo(special::pseudo_file(&file))?;
+    inputs::remember(&meta, path, kind);
     // One byte more than the cap shows a file that grew while being read.
     Ok((file.take(kind.cap() + 1), meta.len()))
 }
@@ -299,19 +333,7 @@ pub fn number(v: f64) -> String {
 /// Whether `a` and `b` are the same file (by any name: links are followed). False when
 /// either does not exist.
 pub fn same_file(a: &Path, b: &Path) -> bool {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::MetadataExt;
-        match (std::fs::metadata(a), std::fs::metadata(b)) {
-            (Ok(x), Ok(y)) => x.dev() == y.dev() && x.ino() == y.ino(),
-            _ => false,
-        }
-    }
-    #[cfg(not(unix))]
-    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
-        (Ok(x), Ok(y)) => x == y,
-        _ => false,
-    }
+    FileId::at(a).is_some_and(|x| Some(x) == FileId::at(b))
 }
 
 /// The folder a file is written in ("." for a bare file name).
@@ -335,6 +357,16 @@ pub fn check_output(path: &Path, extensions: &[&str]) -> Result<(), WriteError> 
             .extension()
             .and_then(|e| e.to_str())
             .map(str::to_ascii_lowercase);
+        // ".png" is a hidden file's name with no extension, not an extension alone.
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if ext.is_none()
+            && let Some(bare) = name.strip_prefix('.')
+            && extensions.contains(&bare.to_ascii_lowercase().as_str())
+        {
+            return Err(refused(format!(
+                "the file name is only the extension {name}: give it a name, e.g. out{name}"
+            )));
+        }
         if !ext.is_some_and(|e| extensions.contains(&e.as_str())) {
             let list: Vec<String> = extensions.iter().map(|e| format!(".{e}")).collect();
             return Err(refused(format!(
@@ -382,7 +414,7 @@ pub fn check_folder(folder: &Path) -> Result<(), String> {
         Err(e) => return Err(format!("folder {}: {e}", shown(folder))),
     }
     temp_in(folder, None)
-        .map(drop)
+        .map(|t| drop((temps::register(t.path()), t)))
         .map_err(|e| format!("cannot create files in {}: {e}", shown(folder)))
 }
 
@@ -415,6 +447,8 @@ fn temp_in(folder: &Path, like: Option<&Path>) -> io::Result<tempfile::NamedTemp
 pub struct Staged {
     file: tempfile::NamedTempFile,
     path: PathBuf,
+    /// Keeps the temporary file on the list removed on a signal (dropped after `file`).
+    _registered: temps::Registered,
 }
 
 /// Writes a file to a temporary file in `path`'s folder (through `write`, which may seek) and
@@ -434,6 +468,7 @@ pub fn stage(
             problem,
         });
     }
+    check_not_input(path)?;
     // An output that is a link is written where the link points; the link stays.
     let target = match std::fs::symlink_metadata(path) {
         Ok(m) if m.file_type().is_symlink() => std::fs::canonicalize(path).map_err(io)?,
@@ -441,6 +476,7 @@ pub fn stage(
     };
     let path = target.as_path();
     let file = temp_in(folder_of(path), Some(path)).map_err(io)?;
+    let registered = temps::register(file.path());
     let mut w = BufWriter::new(file.reopen().map_err(io)?);
     write(&mut w).map_err(io)?;
     let f = w.into_inner().map_err(|e| io(e.into_error()))?;
@@ -448,6 +484,7 @@ pub fn stage(
     Ok(Staged {
         file,
         path: path.to_path_buf(),
+        _registered: registered,
     })
 }
 

@@ -49,6 +49,32 @@ pub fn print(text: &str) -> Result<()> {
     }
 }
 
+/// Fails when standard output was closed (`barylab probe ... >&-`): what a command prints
+/// would be lost without a word. The standard library reopens a closed standard output on
+/// /dev/null for reading and writing before `main`; a shell's `> /dev/null` opens it for
+/// writing only, so the two are told apart by the access mode.
+pub fn stdout_open() -> Result<()> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let rdev = |p: &str| std::fs::metadata(p).map(|m| m.rdev()).ok();
+        // SAFETY: F_GETFL only reads descriptor 1's flags (-1 when it is not open).
+        let flags = unsafe { libc::fcntl(libc::STDOUT_FILENO, libc::F_GETFL) };
+        if flags == -1 {
+            bail!("standard output is closed: nothing could be printed");
+        }
+        let mode = flags & libc::O_ACCMODE;
+        let (rdev, null) = (rdev("/dev/stdout"), rdev("/dev/null"));
+        if rdev.is_some() && rdev == null && mode == libc::O_RDWR {
+            bail!(
+                "standard output is closed (the command was run with >&-): nothing could be \
+                 printed; send it to a file, or to /dev/null to discard it"
+            );
+        }
+    }
+    Ok(())
+}
+
 /// The exit code for an error, after printing it as one line (unless it is [`BrokenPipe`]).
 pub fn report(e: &anyhow::Error) -> ExitCode {
     if e.downcast_ref::<BrokenPipe>().is_some() {
@@ -80,8 +106,12 @@ pub fn check_output(path: &Path, extensions: &[&str]) -> Result<()> {
     Ok(())
 }
 
-/// Refuses to write `output` when it is one of `inputs` (the same file, by any name).
+/// Refuses to write `output` when it is a file this command read ([`files::check_not_input`])
+/// or one of `inputs` it will read (the same file, by any name).
 pub fn not_an_input(output: &Path, inputs: &[PathBuf]) -> Result<()> {
+    // Every file read so far (the same check runs again for every file written) ...
+    files::check_not_input(output)?;
+    // ... and those named that are read later.
     if let Some(input) = inputs.iter().find(|i| files::same_file(output, i)) {
         bail!(
             "cannot write {}: it is an input of this command ({}); choose another output file",
@@ -90,4 +120,35 @@ pub fn not_an_input(output: &Path, inputs: &[PathBuf]) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// A window system's error in plain words: the source file and line it quotes (`at
+/// /root/.cargo/.../mod.rs:765:`) removed, and a missing display said as such, with what to do.
+pub fn window_error(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    // " at PATH.rs:LINE:" (or ":LINE:COLUMN:") is a location in the library's source.
+    while let Some(i) = rest.find(" at ") {
+        let after = &rest[i + 4..];
+        let end = after.find(' ').unwrap_or(after.len());
+        let word = &after[..end];
+        out.push_str(&rest[..i]);
+        if word.contains(".rs:") {
+            if word.ends_with(':') {
+                out.push(':');
+            }
+            rest = &after[end..];
+        } else {
+            out.push_str(" at ");
+            rest = after;
+        }
+    }
+    out.push_str(rest);
+    if message.contains("DISPLAY") && message.contains("neither") {
+        out.push_str(
+            " (no display to open a window on: run barylab in a desktop session, or use its \
+             commands, such as barylab render, figure or probe; see barylab --help)",
+        );
+    }
+    out
 }

@@ -63,7 +63,8 @@ fn scene_messages_say_what_is_wrong_in_words() {
     };
     let e = fails(&["render", s(&write("null.json", "null")), "-o", s(&out)]);
     assert!(
-        e.contains("null.json:1:") && e.contains("a JSON object with `quad`"),
+        e.contains("null.json: is not a scene: a scene is a JSON object")
+            && e.ends_with("this file holds null\n"),
         "{e}"
     );
     assert!(!e.contains("struct") && !e.contains("Probe"), "{e}");

@@ -149,6 +149,8 @@ pub(super) fn render(args: &RenderArgs) -> Result<()> {
     output::not_an_input(&args.output, &inputs(&args.input.scene, &scene))?;
     settings.rasterizer = args.rasterizer.into();
     let mesh = scene.to_mesh();
+    let shown = barylab::files::shown(&args.input.scene);
+    super::work::check(&shown, &mesh, settings.width, settings.height)?;
     let workers = pool(args.threads)?;
     let start = Instant::now();
     let out = workers.install(|| raster::render(&mesh, &texture, &settings))?;
@@ -241,6 +243,13 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
     output::not_an_input(&args.output, &inputs(&args.input.scene, &scene))?;
     inside("--pixel", args.pixel, &args.input, &scene)?;
     inside("--hover", args.hover, &args.input, &scene)?;
+    let (w, h) = scene.size();
+    super::work::check(
+        &barylab::files::shown(&args.input.scene),
+        &scene.to_mesh(),
+        w,
+        h,
+    )?;
     // The figure draws the scene as it is: the options become the scene's own.
     barylab::app::edit::set_options(
         &mut scene,

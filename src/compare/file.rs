@@ -1,7 +1,6 @@
 //! Reading the image to compare: a regular file under the image size cap, its size checked
 //! before it is decoded, decoded as RGBA8.
 
-use std::io::Cursor;
 use std::path::Path;
 
 use super::Image;
@@ -26,16 +25,15 @@ pub fn read_image(
             &[("file", &name), ("error", &e.to_string())],
         )
     };
-    let reader = || {
-        image::ImageReader::new(Cursor::new(&bytes))
-            .with_guessed_format()
-            .map_err(|e| fail(&e))
-    };
-    let first = reader()?;
-    if first.format().is_none() {
-        return Err(fail(&lang.tr("compare.file.not_an_image")));
-    }
-    let (w, h) = reader()?.into_dimensions().map_err(|e| fail(&e))?;
+    // The same reading as a texture's: TGA by its extension, truncated PNG and JPEG files
+    // found, the size from the header.
+    let opened = crate::raster::texture::open_image(&bytes, path).map_err(|p| match p {
+        crate::raster::texture::ImageProblem::NotAnImage(_) => {
+            fail(&lang.tr("compare.file.not_an_image"))
+        }
+        other => fail(&other),
+    })?;
+    let (w, h) = opened.size;
     let max = crate::raster::project::MAX_IMAGE_SIZE;
     if w == 0 || h == 0 || w > max || h > max {
         return Err(fail(&lang.tr_with(
@@ -44,7 +42,12 @@ pub fn read_image(
         )));
     }
     check(w, h)?;
-    let decoded = first.decode().map_err(|e| fail(&e))?.to_rgba8();
+    crate::budget::check(
+        || format!("image {name} ({w}x{h})"),
+        crate::budget::image_decode_need(w, h),
+    )
+    .map_err(|e| e.to_string())?;
+    let decoded = opened.decode().map_err(|e| fail(&e))?;
     Ok(Image {
         width: w,
         height: h,

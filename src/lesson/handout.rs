@@ -17,28 +17,29 @@ use crate::scene::SceneError;
 #[derive(Debug, thiserror::Error)]
 pub enum HandoutError {
     /// A step's scene's texture could not be read.
-    #[error("step {step}: {source}")]
+    #[error("step {step}: {error}")]
     Scene {
         /// The step, from 1.
         step: usize,
-        /// What went wrong.
-        source: SceneError,
+        /// What went wrong (its message is this error's; not a separate source, so a
+        /// chain of messages does not print it twice).
+        error: SceneError,
     },
     /// A step's figure could not be drawn.
-    #[error("step {step}: {source}")]
+    #[error("step {step}: {error}")]
     Figure {
         /// The step, from 1.
         step: usize,
-        /// What went wrong.
-        source: FigureError,
+        /// What went wrong (part of this error's message).
+        error: FigureError,
     },
     /// The pinned pixel could not be probed.
-    #[error("step {step}: {source}")]
+    #[error("step {step}: {error}")]
     Probe {
         /// The step, from 1.
         step: usize,
-        /// What went wrong.
-        source: probe::ProbeError,
+        /// What went wrong (part of this error's message).
+        error: probe::ProbeError,
     },
     /// There is no such step.
     #[error("there is no step {step}: the lesson has steps 1 to {count}")]
@@ -73,7 +74,7 @@ pub fn texture_of(state: &StepState, step: usize) -> Result<Texture, HandoutErro
     state
         .scene
         .load_texture(dir)
-        .map_err(|source| HandoutError::Scene { step, source })
+        .map_err(|error| HandoutError::Scene { step, error })
 }
 
 /// The state step `number` (from 1) sets, or [`HandoutError::NoStep`].
@@ -100,9 +101,9 @@ pub fn step_figure(
     let texture = texture_of(&state, number)?;
     let mut o = state.figure_options();
     options(&mut o);
-    Figure::compose_in(&state.scene, &texture, &o, lang).map_err(|source| HandoutError::Figure {
+    Figure::compose_in(&state.scene, &texture, &o, lang).map_err(|error| HandoutError::Figure {
         step: number,
-        source,
+        error,
     })
 }
 
@@ -159,13 +160,13 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
         let state = step_state(lesson, number)?;
         let texture = texture_of(&state, number)?;
         let figure = Figure::compose_in(&state.scene, &texture, &state.figure_options(), lang)
-            .map_err(|source| HandoutError::Figure {
+            .map_err(|error| HandoutError::Figure {
                 step: number,
-                source,
+                error,
             })?;
-        let bytes = png::to_png(&figure).map_err(|source| HandoutError::Figure {
+        let bytes = png::to_png(&figure).map_err(|error| HandoutError::Figure {
             step: number,
-            source,
+            error,
         })?;
         let name = figure_name(number);
         let title = step.title.get(lang);
@@ -192,10 +193,10 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
         if let Some([x, y]) = state.pin {
             let settings = state.scene.settings();
             let trace =
-                probe::probe(&state.scene, &texture, &settings, (x, y)).map_err(|source| {
+                probe::probe(&state.scene, &texture, &settings, (x, y)).map_err(|error| {
                     HandoutError::Probe {
                         step: number,
-                        source,
+                        error,
                     }
                 })?;
             md.push_str(&format!(

@@ -308,3 +308,27 @@ impl ModelMesh {
         (lo, hi)
     }
 }
+
+/// The first line of an MTL library that tobj cannot read (its number from 1, and the line),
+/// found by bisection: a prefix of the text that fails to load fails with every line after it.
+pub(crate) fn first_bad_mtl_line(text: &[u8]) -> Option<(usize, &str)> {
+    let text = std::str::from_utf8(text).ok()?;
+    let ends: Vec<usize> = text
+        .match_indices('\n')
+        .map(|(i, _)| i + 1)
+        .chain(std::iter::once(text.len()))
+        .collect();
+    let fails =
+        |lines: usize| tobj::load_mtl_buf(&mut &text.as_bytes()[..ends[lines - 1]]).is_err();
+    // The smallest number of lines whose prefix fails (the whole text fails).
+    let (mut good, mut bad) = (0, ends.len());
+    if !fails(bad) {
+        return None;
+    }
+    while bad - good > 1 {
+        let mid = (good + bad) / 2;
+        if fails(mid) { bad = mid } else { good = mid }
+    }
+    let start = if bad == 1 { 0 } else { ends[bad - 2] };
+    Some((bad, text[start..ends[bad - 1]].trim_end()))
+}

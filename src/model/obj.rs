@@ -485,8 +485,22 @@ impl<'a> Obj<'a> {
     /// An `mtllib` line: reads the library (a regular file beside the OBJ, at most its cap)
     /// with tobj, its materials after those loaded before (a later name wins).
     fn load_mtl(&mut self, name: &Path) {
-        let loaded = match files::read_regular(&self.dir.join(name), FileKind::Material) {
-            Ok(text) => tobj::load_mtl_buf(&mut files::strip_bom(&text)),
+        let path = self.dir.join(name);
+        let loaded = match files::read_regular(&path, FileKind::Material) {
+            Ok(text) => {
+                let text = files::strip_bom(&text);
+                let loaded = tobj::load_mtl_buf(&mut &text[..]);
+                if loaded.is_err()
+                    && let Some((n, line)) = super::first_bad_mtl_line(text)
+                {
+                    self.mtl_reason = Some(format!(
+                        "{} line {n}: `{}` cannot be read",
+                        files::shown(&path),
+                        files::text(line.trim())
+                    ));
+                }
+                loaded
+            }
             Err(e) => {
                 self.mtl_reason = Some(e.to_string());
                 Err(E::OpenFileFailed)

@@ -12,6 +12,20 @@ impl Scene {
                 &format!("image size {w}x{h} is outside 1..={MAX_IMAGE_SIZE} pixels per side"),
             ));
         }
+        if self.texture_name().trim().is_empty() {
+            let builtins: Vec<&str> = crate::raster::texture::BuiltinTexture::ALL
+                .iter()
+                .map(|b| b.name())
+                .collect();
+            return Err(invalid(
+                path,
+                &format!(
+                    "field `texture` is empty: name an image file (relative to the scene file) \
+                     or a built-in texture ({})",
+                    builtins.join(", ")
+                ),
+            ));
+        }
         match self {
             Scene::World(s) => {
                 s.camera

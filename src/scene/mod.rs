@@ -203,6 +203,14 @@ impl Scene {
     /// in errors; a model path is relative to `dir`.
     fn parse(text: &str, path: &str, dir: &Path) -> Result<Self, SceneError> {
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        if let Some(held) = not_an_object(text) {
+            return Err(invalid(
+                path,
+                &format!(
+                    "is not a scene: a scene is a JSON object ({{ ... }}), this file holds {held}"
+                ),
+            ));
+        }
         let probe: FormProbe =
             serde_json::from_str(text).map_err(|e| parse_error(path, e, String::new()))?;
         let forms = [
@@ -486,6 +494,21 @@ impl Scene {
                 Ok((tex, note.into_iter().collect()))
             }
         }
+    }
+}
+
+/// What JSON text holds when it is not an object ("a JSON array", "nothing", ...), from its
+/// first character; `None` for an object (or text serde will name the problem of).
+fn not_an_object(text: &str) -> Option<&'static str> {
+    match text.trim_start().chars().next() {
+        None => Some("nothing (it is empty)"),
+        Some('{') => None,
+        Some('[') => Some("a JSON array ([ ... ])"),
+        Some('"') => Some("a JSON string"),
+        Some('-' | '0'..='9') => Some("a number"),
+        Some('t' | 'f') => Some("true or false"),
+        Some('n') => Some("null"),
+        Some(_) => None,
     }
 }
 

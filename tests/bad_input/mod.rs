@@ -103,3 +103,14 @@ pub fn temporary_files(dir: &Path) -> Vec<PathBuf> {
         })
         .collect()
 }
+
+/// Writes a lesson of one step showing the scene file `scene` (relative to the lesson) to
+/// `path`, with the same text in both languages.
+pub fn write_one_step_lesson(path: &Path, scene: &str) {
+    let both = |t: &str| serde_json::json!({"en": t, "zh": t});
+    let lesson = serde_json::json!({
+        "title": both("t"),
+        "steps": [{"title": both("one"), "text": both("x"), "try": both("y"), "scene": scene}]
+    });
+    std::fs::write(path, lesson.to_string()).expect("write lesson");
+}

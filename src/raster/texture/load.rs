@@ -19,6 +19,9 @@ pub enum TextureError {
         /// The decoder's message, on one line.
         message: String,
     },
+    /// Decoding it needs more memory than the limit (from its header, before decoding).
+    #[error(transparent)]
+    Memory(#[from] crate::budget::MemoryError),
     /// The file has 0 bytes, or the image has no pixels.
     #[error("texture {path} is empty (no pixels or 0 bytes)")]
     Empty {
@@ -100,21 +103,128 @@ impl Texture {
         }
         let decode_error = |message: String| TextureError::Decode {
             path: shown(path),
-            message: one_line(&message),
+            message,
         };
-        let mut reader = image::ImageReader::new(std::io::Cursor::new(&bytes[..]))
-            .with_guessed_format()
-            .map_err(|e| decode_error(e.to_string()))?;
-        // TGA has no signature to sniff: fall back on the file's extension.
-        if reader.format().is_none() {
-            reader.set_format(
-                image::ImageFormat::from_path(path).map_err(|e| decode_error(e.to_string()))?,
-            );
+        let opened = open_image(&bytes, path).map_err(|p| decode_error(p.to_string()))?;
+        let (w, h) = opened.size;
+        crate::budget::check(
+            || format!("decoding texture {} ({w}x{h})", shown(path)),
+            crate::budget::image_decode_need(w, h),
+        )?;
+        opened.decode().map_err(decode_error)
+    }
+}
+
+/// Why image bytes could not be opened, in plain words.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ImageProblem {
+    /// Neither the content nor (for TGA, which has no signature) the extension is of a format
+    /// barylab reads.
+    #[error("it is not an image: its content is {0}, not PNG, JPEG, BMP, TGA or WebP data")]
+    NotAnImage(&'static str),
+    /// The file is cut short or damaged, or its header cannot be read.
+    #[error("{0}")]
+    Damaged(String),
+}
+
+/// An image file whose format and size are known, not yet decoded ([`open_image`]).
+pub struct OpenedImage<'a> {
+    reader: image::ImageReader<std::io::Cursor<&'a [u8]>>,
+    /// The file's format.
+    pub format: image::ImageFormat,
+    /// Width and height from the header.
+    pub size: (u32, u32),
+}
+
+/// Opens the image in `bytes` (the file `path`): its format from its content, TGA by its
+/// extension; a PNG or JPEG without its end is truncated; the size from its header, before
+/// any pixel is decoded. Shared by textures and the images `compare` reads.
+pub fn open_image<'a>(bytes: &'a [u8], path: &Path) -> Result<OpenedImage<'a>, ImageProblem> {
+    let reader = || image::ImageReader::new(std::io::Cursor::new(bytes));
+    let sniffed = reader().with_guessed_format().ok().and_then(|r| r.format());
+    let format = match sniffed {
+        Some(f) => f,
+        // TGA has no signature to sniff: trust the extension for it alone.
+        None if image::ImageFormat::from_path(path).ok() == Some(image::ImageFormat::Tga) => {
+            image::ImageFormat::Tga
         }
-        if let Some(problem) = reader.format().and_then(|f| truncated(f, &bytes)) {
-            return Err(decode_error(problem.to_string()));
-        }
-        let img = reader.decode().map_err(|e| decode_error(e.to_string()))?;
+        None => return Err(ImageProblem::NotAnImage(content_kind(bytes))),
+    };
+    if let Some(problem) = truncated(format, bytes) {
+        return Err(ImageProblem::Damaged(problem.to_string()));
+    }
+    let mut header = reader();
+    header.set_format(format);
+    let size = header
+        .into_dimensions()
+        .map_err(|e| ImageProblem::Damaged(plain_error(&e, format)))?;
+    let mut reader = reader();
+    reader.set_format(format);
+    Ok(OpenedImage {
+        reader,
+        format,
+        size,
+    })
+}
+
+impl OpenedImage<'_> {
+    /// Decodes the pixels as RGBA8. The decoder may allocate up to the memory limit
+    /// ([`crate::budget::limit`]; the caller checked the image against it); its error in
+    /// plain words ([`plain_error`]).
+    pub fn decode(self) -> Result<image::RgbaImage, String> {
+        let format = self.format;
+        let mut reader = self.reader;
+        let mut limits = image::Limits::default();
+        limits.max_alloc = crate::budget::limit().ok().map(|l| l.bytes);
+        reader.limits(limits);
+        let img = reader.decode().map_err(|e| plain_error(&e, format))?;
         Ok(img.to_rgba8())
+    }
+}
+
+/// What bytes that are not an image hold, for the message: "text" or "binary data".
+fn content_kind(bytes: &[u8]) -> &'static str {
+    /// Bytes looked at.
+    const SAMPLE: usize = 512;
+    let sample = &bytes[..bytes.len().min(SAMPLE)];
+    let text = std::str::from_utf8(sample).is_ok_and(|t| {
+        t.chars()
+            .all(|c| !c.is_control() || c.is_ascii_whitespace())
+    });
+    if text { "text" } else { "binary data" }
+}
+
+/// A decoder's error in plain words, on one line: a damaged file, a truncated one, a feature
+/// the decoder lacks, or an image past its limits; never the decoder's internal records.
+pub fn plain_error(e: &image::ImageError, format: image::ImageFormat) -> String {
+    use image::ImageError as E;
+    let name = format!("{format:?}").to_uppercase();
+    match e {
+        E::Decoding(d) => {
+            let text = one_line(&d.to_string());
+            // Drop the decoder's prefix ("Format error decoding Png:") and any record it
+            // appends ("while decoding ChunkType { ... }").
+            let text = text.split_once(": ").map_or(text.as_str(), |(_, t)| t);
+            let text = text.split(" while decoding").next().unwrap_or(text).trim();
+            if text.contains("CRC error") {
+                format!(
+                    "the {name} file is damaged: a chunk's checksum (CRC) does not match its data"
+                )
+            } else {
+                format!("the {name} file is damaged ({text})")
+            }
+        }
+        E::IoError(io) if io.kind() == std::io::ErrorKind::UnexpectedEof => {
+            format!("the {name} file is truncated (it ends before its image data)")
+        }
+        E::Limits(_) => format!(
+            "the {name} image needs more memory to decode than the limit allows (see \
+             --memory-limit)"
+        ),
+        E::Unsupported(u) => format!(
+            "the {name} file uses a feature the decoder does not support ({})",
+            one_line(&u.to_string())
+        ),
+        other => one_line(&other.to_string()),
     }
 }

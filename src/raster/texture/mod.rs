@@ -11,7 +11,7 @@ mod builtin;
 mod load;
 mod mip;
 
-pub use load::TextureError;
+pub use load::{ImageProblem, OpenedImage, TextureError, open_image, plain_error};
 use mip::mip_chain;
 
 /// Texture minification/magnification filter.
