@@ -266,7 +266,7 @@ fn check_view_memory(
                 if renders == 1 { "" } else { "s" }
             )
         },
-        renders * crate::budget::render_need(w, h, buffers, vertices, triangles),
+        renders * crate::raster::footprint::render_need(w, h, buffers, vertices, triangles),
     )
 }
 
