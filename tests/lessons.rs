@@ -142,6 +142,16 @@ fn numbers_quoted_in_the_builtin_lesson_are_the_probes() {
     let d = t2.detail.as_ref().expect("detail");
     assert!(d.screen.rasterizer[2] < 0.0);
     quotes(2, d.screen.rasterizer[2]);
+    // Step 2: beyond corner A, two weights are negative and A's is above 1.
+    let state = lesson.state(1).expect("state");
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let corner = barylab::probe::probe(&state.scene, &texture, &state.scene.settings(), (20, 215))
+        .expect("probe");
+    let w = corner.detail.as_ref().expect("detail").screen.rasterizer;
+    assert!(w[0] > 1.0 && w[1] < 0.0 && w[2] < 0.0, "{w:?}");
+    for v in w {
+        quotes(2, v);
+    }
     // Step 11: W_P and a, b, c.
     let t11 = probe_step(11);
     let p = t11
