@@ -51,10 +51,29 @@ impl Fonts {
     fn install(&mut self, ctx: &egui::Context) -> bool {
         if !self.installed {
             self.installed = true;
+            add_symbols_font(ctx);
             self.cjk = !self.pretend_none && add_cjk_font(ctx);
         }
         self.cjk
     }
+}
+
+/// Adds [`crate::i18n::SYMBOLS_FONT`] to `ctx` as a fallback of the proportional and monospace
+/// families, after egui's own fonts (and before the CJK font, added after it): the floor
+/// brackets, arrows and other symbols that egui's Ubuntu Light lacks.
+pub fn add_symbols_font(ctx: &egui::Context) {
+    use egui::epaint::text::{FontInsert, FontPriority, InsertFontFamily};
+    ctx.add_font(FontInsert::new(
+        "barylab-symbols",
+        egui::FontData::from_static(crate::i18n::SYMBOLS_FONT),
+        [egui::FontFamily::Proportional, egui::FontFamily::Monospace]
+            .into_iter()
+            .map(|family| InsertFontFamily {
+                family,
+                priority: FontPriority::Lowest,
+            })
+            .collect(),
+    ));
 }
 
 /// Adds [`crate::i18n::cjk_font`] to `ctx` as the lowest-priority fallback of the proportional

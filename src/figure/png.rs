@@ -12,14 +12,16 @@ use super::text::FONT_BYTES;
 use super::{Background, Figure, FigureError};
 use crate::i18n::Lang;
 
-/// The fonts resvg may use: only the overlay font (no system fonts are scanned), and for
-/// Chinese labels the system's CJK font ([`crate::i18n::cjk_font`]) as well.
+/// The fonts resvg may use: only the overlay font and the bundled symbols font
+/// ([`crate::i18n::SYMBOLS_FONT`]; no system fonts are scanned), and for Chinese labels the
+/// system's CJK font ([`crate::i18n::cjk_font`]) as well.
 fn fonts(lang: Lang) -> Arc<usvg::fontdb::Database> {
     static DB: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
     static CJK: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
     let overlay_only = || {
         let mut db = usvg::fontdb::Database::new();
         db.load_font_data(FONT_BYTES.to_vec());
+        db.load_font_data(crate::i18n::SYMBOLS_FONT.to_vec());
         db.set_sans_serif_family(super::text::FONT_FAMILY);
         db
     };
