@@ -77,17 +77,26 @@ pub fn rasterize(figure: &Figure) -> Result<image::RgbaImage, FigureError> {
     // The document's width and height are the PNG's pixels and its viewBox the points: usvg
     // already maps points to pixels.
     resvg::render(&tree, Transform::identity(), &mut pixmap.as_mut());
-    let mut out = image::RgbaImage::new(w, h);
+    Ok(image_of(&pixmap))
+}
+
+/// A straight-alpha RGBA copy of a (premultiplied) pixmap.
+pub(super) fn image_of(pixmap: &Pixmap) -> image::RgbaImage {
+    let mut out = image::RgbaImage::new(pixmap.width(), pixmap.height());
     for (px, c) in out.pixels_mut().zip(pixmap.pixels()) {
         let c = c.demultiply();
         px.0 = [c.red(), c.green(), c.blue(), c.alpha()];
     }
-    Ok(out)
+    out
 }
 
 /// The figure as PNG file bytes.
 pub fn to_png(figure: &Figure) -> Result<Vec<u8>, FigureError> {
-    let image = rasterize(figure)?;
+    encode(&rasterize(figure)?)
+}
+
+/// An image as PNG file bytes.
+pub(super) fn encode(image: &image::RgbaImage) -> Result<Vec<u8>, FigureError> {
     let mut bytes = Vec::new();
     image
         .write_to(
