@@ -504,8 +504,8 @@ struct SceneOptions {
     #[arg(long)]
     wireframe: bool,
     /// Which triangle owns a pixel centre exactly on a shared edge: llvmpipe's rule (left and
-    /// bottom edges in image rows, as OpenGL on Mesa) or the top-left rule of Direct3D and
-    /// Vulkan (default: the scene's, else llvmpipe).
+    /// bottom edges in image rows, as OpenGL on Mesa) or the top-left rule of Direct3D (and most
+    /// Vulkan drivers) (default: the scene's, else llvmpipe).
     #[arg(long, value_name = "RULE")]
     tie_rule: Option<TieRuleArg>,
 }

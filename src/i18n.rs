@@ -147,4 +147,6 @@ impl Lang {
 
 mod font;
 
-pub use font::{CJK_FAMILIES, CjkFont, cjk_font};
+pub use font::{
+    CJK_FAMILIES, CjkFont, FontFace, SYMBOLS_FAMILY, SYMBOLS_FONT, app_font_faces, cjk_font,
+};

@@ -240,7 +240,7 @@ fn an_affine_render_is_explained_and_clicking_a_mismatch_pins_it() {
         "the Chinese verdict is in the strip"
     );
     assert!(
-        h.query_by_label_contains(&format!("已固定 ({}, {})：{zh}", p[0], p[1]))
+        h.query_by_label_contains(&format!("已钉住 ({}, {})：{zh}", p[0], p[1]))
             .is_some(),
         "the Chinese reason is in the strip"
     );

@@ -125,3 +125,29 @@ fn the_cli_draws_chinese_labels() {
     let svg = std::fs::read_to_string(&out_path).expect("svg");
     assert!(svg.contains("透视校正插值"), "{svg}");
 }
+
+/// The floor brackets of the lesson's texel formula, which egui's Ubuntu Light lacks, come from
+/// the bundled symbols font in both of the figures' text paths: the labels' glyph outlines and
+/// resvg's text (the PNG figures), in both languages.
+#[test]
+fn floor_brackets_have_real_glyphs_in_the_figures() {
+    use barylab::figure::text::{GlyphFont, glyph_outline, glyphs};
+    let g = glyphs("⌊u·W⌋", 20.0);
+    assert_eq!(g.len(), 5);
+    for k in [0, 4] {
+        assert_eq!(g[k].font, GlyphFont::Symbols, "glyph {k}: {:?}", g[k]);
+        assert_ne!(g[k].id, 0);
+        assert!(!glyph_outline(g[k].font, g[k].id).is_empty());
+    }
+    assert_eq!(g[1].font, GlyphFont::Overlay);
+    // The two brackets are different shapes, not the same box.
+    assert_ne!(
+        glyph_outline(g[0].font, g[0].id),
+        glyph_outline(g[4].font, g[4].id)
+    );
+    for lang in [Lang::En, Lang::Zh] {
+        let (a, b) = (draw("⌊⌊⌊⌊", lang), draw("⌋⌋⌋⌋", lang));
+        assert!(ink(&a) > 100 && ink(&b) > 100, "no ink in {lang:?}");
+        assert_ne!(a, b, "⌊ and ⌋ drew the same pixels in {lang:?}: boxes?");
+    }
+}

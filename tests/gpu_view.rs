@@ -132,7 +132,9 @@ fn the_tie_rule_is_chosen_in_the_controls_saved_in_the_scene_and_named_by_the_in
     assert!(scene.to_json().contains("\"tie_rule\": \"top_left\""));
     let text = pinned_text(&h);
     assert!(
-        text.contains("The tie rule (top-left, as Direct3D and Vulkan state it)"),
+        text.contains(
+            "The tie rule (top-left, as Direct3D states it and most Vulkan drivers follow)"
+        ),
         "{text}"
     );
     // A scene edit like any other: undo brings llvmpipe's rule back.

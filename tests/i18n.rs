@@ -1,6 +1,7 @@
 //! The catalogues `locales/en.yml` and `locales/zh.yml`: every key in one is in the other,
 //! with the same `%{name}` (and `{name}`) placeholders, and no entry is empty; the language
-//! type parses tags and follows the system locale.
+//! type parses tags and follows the system locale; every character that the catalogues, the
+//! built-in lesson and the probe show has a glyph in the app's fonts.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -236,4 +237,120 @@ fn figure_labels_match_the_catalogue() {
             "{lang}: {texts:?}"
         );
     }
+}
+
+/// Every text the app shows that this test can reach, with where it comes from: the built-in
+/// lesson's strings in both languages, every catalogue entry, and the probe's text for the
+/// default scene's pixel (400, 420) in both languages (line by line).
+fn shown_texts() -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let lesson = barylab::lesson::Lesson::builtin().expect("built-in lesson");
+    let mut both = |place: String, t: &barylab::lesson::text::Text| {
+        out.push((format!("{place} (en)"), t.en.clone()));
+        out.push((format!("{place} (zh)"), t.zh.clone()));
+    };
+    both("the lesson's title".into(), &lesson.title);
+    for (k, step) in lesson.steps.iter().enumerate() {
+        let n = k + 1;
+        both(format!("lesson step {n}, title"), &step.title);
+        if let Some(summary) = &step.summary {
+            both(format!("lesson step {n}, summary"), summary);
+        }
+        both(format!("lesson step {n}, text"), &step.text);
+        both(format!("lesson step {n}, try"), &step.try_this);
+    }
+    for name in ["en", "zh"] {
+        for (key, text) in catalogue(name) {
+            out.push((format!("locales/{name}.yml, {key}"), text));
+        }
+    }
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
+    let scene = barylab::Scene::load(&dir.join("default.json")).expect("scene");
+    let texture = scene.load_texture(&dir).expect("texture");
+    let trace =
+        barylab::probe::probe(&scene, &texture, &scene.settings(), (400, 420)).expect("probe");
+    for lang in [Lang::En, Lang::Zh] {
+        let text =
+            barylab::probe::format::write_in(&trace, barylab::probe::format::Format::Text, lang);
+        for (k, line) in text.lines().enumerate() {
+            out.push((
+                format!("the probe's text ({}), line {}", lang.code(), k + 1),
+                line.to_string(),
+            ));
+        }
+    }
+    out
+}
+
+/// The characters of `texts` that no face of `faces` has, each with the places it occurs in
+/// (control characters such as line breaks are not drawn and are skipped).
+fn missing_glyphs(
+    texts: &[(String, String)],
+    faces: &[barylab::i18n::FontFace],
+) -> BTreeMap<char, Vec<String>> {
+    let parsed: Vec<ttf_parser::Face> = faces
+        .iter()
+        .map(|f| ttf_parser::Face::parse(f.data.as_slice(), f.index).expect("a font the app uses"))
+        .collect();
+    let mut missing: BTreeMap<char, Vec<String>> = BTreeMap::new();
+    for (place, text) in texts {
+        for c in text.chars() {
+            if c.is_control() || parsed.iter().any(|f| f.glyph_index(c).is_some()) {
+                continue;
+            }
+            let places = missing.entry(c).or_default();
+            if !places.contains(place) {
+                places.push(place.clone());
+            }
+        }
+    }
+    missing
+}
+
+#[test]
+fn every_character_shown_has_a_glyph_in_the_apps_fonts() {
+    let faces = barylab::i18n::app_font_faces();
+    if barylab::i18n::cjk_font().is_none() {
+        assert!(
+            std::env::var("CI").as_deref() != Ok("true"),
+            "no CJK font found: CI needs fonts-noto-cjk"
+        );
+        eprintln!("no CJK font installed: the glyph check is skipped");
+        return;
+    }
+    let missing = missing_glyphs(&shown_texts(), &faces);
+    let names: Vec<&str> = faces.iter().map(|f| f.name.as_str()).collect();
+    let report: Vec<String> = missing
+        .iter()
+        .map(|(c, places)| {
+            format!(
+                "{c:?} (U+{:04X}) is in none of the app's fonts {names:?}: {}",
+                u32::from(*c),
+                places.join("; ")
+            )
+        })
+        .collect();
+    assert!(report.is_empty(), "{}", report.join("\n"));
+}
+
+#[test]
+fn the_glyph_check_names_the_character_and_where_it_is() {
+    let texts = vec![
+        ("step 7".to_string(), "texel (⌊u·W⌋, ⌊v·H⌋)".to_string()),
+        ("a label".to_string(), "a clef 𝄞".to_string()),
+    ];
+    // Without the symbols font egui's Ubuntu Light has no floor brackets.
+    let without_symbols: Vec<_> = barylab::i18n::app_font_faces()
+        .into_iter()
+        .filter(|f| f.name != barylab::i18n::SYMBOLS_FAMILY)
+        .collect();
+    let missing = missing_glyphs(&texts, &without_symbols);
+    assert_eq!(missing.get(&'⌊'), Some(&vec!["step 7".to_string()]));
+    assert_eq!(missing.get(&'⌋'), Some(&vec!["step 7".to_string()]));
+    // With it, only the clef (in no font) is left.
+    let missing = missing_glyphs(&texts, &barylab::i18n::app_font_faces());
+    assert_eq!(
+        missing.into_iter().collect::<Vec<_>>(),
+        [('𝄞', vec!["a label".to_string()])]
+    );
 }

@@ -144,6 +144,16 @@ fn numbers_quoted_in_the_builtin_lesson_are_the_probes() {
     let d = t2.detail.as_ref().expect("detail");
     assert!(d.screen.rasterizer[2] < 0.0);
     quotes(2, d.screen.rasterizer[2]);
+    // Step 2: beyond corner A, two weights are negative and A's is above 1.
+    let state = lesson.state(1).expect("state");
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let corner = barylab::probe::probe(&state.scene, &texture, &state.scene.settings(), (20, 215))
+        .expect("probe");
+    let w = corner.detail.as_ref().expect("detail").screen.rasterizer;
+    assert!(w[0] > 1.0 && w[1] < 0.0 && w[2] < 0.0, "{w:?}");
+    for v in w {
+        quotes(2, v);
+    }
     // Step 11: W_P and a, b, c.
     let t11 = probe_step(11);
     let p = t11
@@ -386,11 +396,7 @@ fn the_handout_has_every_step_its_figures_and_never_overwrites() {
             assert!(md.contains(&heading), "no heading for step {n}");
             let first_words: String = text::plain(step.title.get(lang)).chars().take(6).collect();
             assert!(md.contains(&first_words), "step {n}'s title");
-            let png = format!("step-{n:02}.png");
-            assert!(
-                md.contains(&format!("]({png})")),
-                "step {n}'s figure is linked"
-            );
+            let png = step_images(&md, n).into_iter().next().expect("a figure");
             let bytes = std::fs::read(out_dir.join(&png)).expect("figure exists");
             assert!(bytes.starts_with(b"\x89PNG"), "{png} is a PNG");
         }
@@ -422,7 +428,7 @@ fn the_handout_has_every_step_its_figures_and_never_overwrites() {
                 stderr(&out)
             );
             let html = std::fs::read_to_string(out_dir.join("handout.html")).expect("html");
-            assert_eq!(html.matches("<img").count(), lesson.steps.len());
+            assert_eq!(html.matches("<img").count(), md.matches("![").count());
             std::fs::remove_file(out_dir.join("handout.html")).expect("remove");
         }
         // Never over an existing file: a second run fails and leaves the files as they were.
@@ -441,6 +447,124 @@ fn the_handout_has_every_step_its_figures_and_never_overwrites() {
             before
         );
     }
+}
+
+/// The images step `n`'s section of a handout links to, in order.
+fn step_images(md: &str, n: usize) -> Vec<String> {
+    let start = md.find(&format!("\n## {n}. ")).expect("the step's heading");
+    let section = &md[start + 1..];
+    let end = section[1..].find("\n## ").map_or(section.len(), |e| e + 1);
+    section[..end]
+        .split("](")
+        .skip(1)
+        .filter_map(|rest| rest.split_once(')').map(|(name, _)| name.to_string()))
+        .filter(|name| name.ends_with(".png"))
+        .collect()
+}
+
+/// Every step's figure file is its own picture: steps that draw different pictures link
+/// different files, steps that draw the same picture link one file, and no two files of the
+/// handout are the same (each step's figure drawn again here, independently of the handout).
+#[test]
+fn handout_figures_are_distinct_and_shared_only_when_identical() {
+    use barylab::lesson::handout::{handout, step_figure};
+    let lesson = Lesson::builtin().expect("built-in lesson");
+    let files = handout(&lesson, Lang::En).expect("handout");
+    let md = String::from_utf8(files[0].bytes.clone()).expect("UTF-8");
+    for (i, a) in files.iter().enumerate() {
+        for b in &files[i + 1..] {
+            assert!(a.bytes != b.bytes, "{} and {} are the same", a.name, b.name);
+        }
+    }
+    let file = |name: &str| files.iter().find(|f| f.name == name).expect("linked file");
+    let mut pictures: Vec<(Vec<u8>, String)> = Vec::new();
+    for n in 1..=lesson.steps.len() {
+        let linked = step_images(&md, n).into_iter().next().expect("a figure");
+        let figure = step_figure(&lesson, n, Lang::En, |_| {}).expect("figure");
+        let bytes = barylab::figure::png::to_png(&figure).expect("png");
+        assert!(file(&linked).bytes == bytes, "step {n} links {linked}");
+        match pictures.iter().find(|(b, _)| *b == bytes) {
+            Some((_, earlier)) => assert_eq!(&linked, earlier, "step {n} repeats a picture"),
+            None => {
+                assert_eq!(linked, format!("step-{n:02}.png"));
+                pictures.push((bytes, linked));
+            }
+        }
+    }
+    assert_eq!(
+        files.len(),
+        1 + pictures.len() + md.matches("-plot.png)").count()
+    );
+}
+
+/// A step with a row plot has it in the handout: the app's lines along the pinned row (the
+/// same as a full render's row), drawn as a PNG; the w and the depth plots differ.
+#[test]
+fn handout_row_plots_are_the_apps() {
+    use barylab::lesson::handout::{PLOT_SCALE, handout, plot_name, step_state, texture_of};
+    use barylab::lesson::plot::{row_lines, row_plot};
+    let lesson = Lesson::builtin().expect("built-in lesson");
+    let files = handout(&lesson, Lang::Zh).expect("handout");
+    let md = String::from_utf8(files[0].bytes.clone()).expect("UTF-8");
+    let mut plots = Vec::new();
+    for n in 1..=lesson.steps.len() {
+        let state = step_state(&lesson, n).expect("state");
+        let linked = step_images(&md, n);
+        let Some(plot) = state.plot else {
+            assert_eq!(linked.len(), 1, "step {n} has no plot");
+            continue;
+        };
+        assert_eq!(linked, [format!("step-{n:02}.png"), plot_name(n)]);
+        let texture = texture_of(&state, n).expect("texture");
+        let pin = state.pin.expect("pinned");
+        let drawn = row_plot(&state.scene, &texture, pin, plot, Lang::Zh).expect("plot");
+        let full =
+            barylab::raster::render(&state.scene.to_mesh(), &texture, &state.scene.settings())
+                .expect("render");
+        let lines = row_lines(&full.frame, pin[1], plot);
+        assert_eq!(drawn.lines.len(), lines.len());
+        for ((_, a), (_, b)) in drawn.lines.iter().zip(&lines) {
+            assert!(a.len() > 100, "step {n}: {} points", a.len());
+            assert_eq!(a, b, "step {n}: the plot is not the row's values");
+        }
+        assert_eq!(drawn.marker, Some(f64::from(pin[0])));
+        let bytes = &files
+            .iter()
+            .find(|f| f.name == plot_name(n))
+            .expect("plot file")
+            .bytes;
+        let image = image::load_from_memory(bytes).expect("a PNG");
+        let size = barylab::figure::plot::PLOT_SIZE.map(|v| (v * PLOT_SCALE) as u32);
+        assert_eq!((image.width(), image.height()), (size[0], size[1]));
+        plots.push((plot, bytes.clone()));
+    }
+    assert_eq!(
+        plots.iter().map(|(p, _)| *p).collect::<Vec<_>>(),
+        [LessonPlot::WRow, LessonPlot::DepthRow]
+    );
+    assert!(plots[0].1 != plots[1].1);
+}
+
+/// The derivation's subsections of each step are numbered 1, 2, ... (the probe numbers them
+/// in its full derivation, of which a step shows some).
+#[test]
+fn handout_headings_are_numbered_from_one() {
+    let lesson = Lesson::builtin().expect("built-in lesson");
+    let files = barylab::lesson::handout::handout(&lesson, Lang::En).expect("handout");
+    let md = String::from_utf8(files[0].bytes.clone()).expect("UTF-8");
+    let mut steps = 0;
+    for (k, part) in md.split("\n## ").skip(1).enumerate() {
+        assert!(part.starts_with(&format!("{}. ", k + 1)), "step {}", k + 1);
+        steps += 1;
+        let numbers: Vec<String> = part
+            .lines()
+            .filter_map(|l| l.strip_prefix("#### "))
+            .map(|h| h.split_once(". ").expect("numbered").0.to_string())
+            .collect();
+        let expected: Vec<String> = (1..=numbers.len()).map(|i| i.to_string()).collect();
+        assert_eq!(numbers, expected, "step {}", k + 1);
+    }
+    assert_eq!(steps, lesson.steps.len());
 }
 
 mod app {

@@ -51,22 +51,41 @@ impl Fonts {
     fn install(&mut self, ctx: &egui::Context) -> bool {
         if !self.installed {
             self.installed = true;
+            add_symbols_font(ctx);
             self.cjk = !self.pretend_none && add_cjk_font(ctx);
         }
         self.cjk
     }
 }
 
+/// Adds [`crate::i18n::SYMBOLS_FONT`] to `ctx` as a fallback of the proportional and monospace
+/// families, after egui's own fonts (and before the CJK font, added after it): the floor
+/// brackets, arrows and other symbols that egui's Ubuntu Light lacks.
+pub fn add_symbols_font(ctx: &egui::Context) {
+    add_fallback_font(
+        ctx,
+        "barylab-symbols",
+        egui::FontData::from_static(crate::i18n::SYMBOLS_FONT),
+    );
+}
+
 /// Adds [`crate::i18n::cjk_font`] to `ctx` as the lowest-priority fallback of the proportional
 /// and monospace families. Returns false when the system has no font with Chinese glyphs.
 pub fn add_cjk_font(ctx: &egui::Context) -> bool {
-    use egui::epaint::text::{FontInsert, FontPriority, InsertFontFamily};
     let Some(font) = crate::i18n::cjk_font() else {
         return false;
     };
     let data = egui::FontData::from_blob(font.data.clone(), font.index);
+    add_fallback_font(ctx, "barylab-cjk", data);
+    true
+}
+
+/// Adds `data` to `ctx` as the lowest-priority fallback (so far) of the proportional and
+/// monospace families.
+fn add_fallback_font(ctx: &egui::Context, name: &str, data: egui::FontData) {
+    use egui::epaint::text::{FontInsert, FontPriority, InsertFontFamily};
     ctx.add_font(FontInsert::new(
-        "barylab-cjk",
+        name,
         data,
         [egui::FontFamily::Proportional, egui::FontFamily::Monospace]
             .into_iter()
@@ -76,7 +95,6 @@ pub fn add_cjk_font(ctx: &egui::Context) -> bool {
             })
             .collect(),
     ));
-    true
 }
 
 /// The notice shown (in English, which needs no extra font) when Chinese was asked for but no

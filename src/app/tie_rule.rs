@@ -7,7 +7,7 @@ use egui::Ui;
 use super::state::Command;
 
 /// The tie rule (which triangle owns a pixel centre exactly on a shared edge): llvmpipe's
-/// (OpenGL on Mesa, the default) or top-left (Direct3D, Vulkan). Saved in the scene.
+/// (OpenGL on Mesa, the default) or top-left (Direct3D, and most Vulkan drivers). Saved in the scene.
 pub fn tie_rule_ui(ui: &mut Ui, rule: crate::raster::setup::TieRule) -> Vec<Command> {
     use crate::raster::setup::TieRule;
     let lang = super::locale::lang(ui.ctx());

@@ -110,7 +110,7 @@ fn write_handout(lesson: &Lesson, dir: &Path, lang: Lang) -> Result<()> {
         s.commit_new()?;
     }
     print(&format!(
-        "handout: {} and {} figures -> {}\n",
+        "handout: {} and {} figures and plots -> {}\n",
         handout::MARKDOWN_NAME,
         files.len() - 1,
         shown(dir)

@@ -10,6 +10,7 @@
 //!   app paints it with egui, [`svg`] writes it as SVG).
 //! - [`text`]: the overlay font, text measurement and label placement (shared with the app).
 //! - [`svg`], [`png`]: the figure as an SVG document, and that document rasterized by resvg.
+//! - [`plot`]: a line plot (the handout's row plot) as SVG and PNG, without egui.
 //! - [`caption`]: the optional caption with the marked pixel's key numbers.
 //! - [`heatmap`]: the difference view's colours.
 //! - [`export`]: writing a figure's files (PNG, SVG, derivation, scene) under fresh names.
@@ -30,6 +31,7 @@ pub mod heatmap;
 mod marks;
 mod options;
 pub mod overlay;
+pub mod plot;
 pub mod png;
 pub mod svg;
 pub mod text;

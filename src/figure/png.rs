@@ -12,14 +12,16 @@ use super::text::FONT_BYTES;
 use super::{Background, Figure, FigureError};
 use crate::i18n::Lang;
 
-/// The fonts resvg may use: only the overlay font (no system fonts are scanned), and for
-/// Chinese labels the system's CJK font ([`crate::i18n::cjk_font`]) as well.
+/// The fonts resvg may use: only the overlay font and the bundled symbols font
+/// ([`crate::i18n::SYMBOLS_FONT`]; no system fonts are scanned), and for Chinese labels the
+/// system's CJK font ([`crate::i18n::cjk_font`]) as well.
 fn fonts(lang: Lang) -> Arc<usvg::fontdb::Database> {
     static DB: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
     static CJK: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
     let overlay_only = || {
         let mut db = usvg::fontdb::Database::new();
         db.load_font_data(FONT_BYTES.to_vec());
+        db.load_font_data(crate::i18n::SYMBOLS_FONT.to_vec());
         db.set_sans_serif_family(super::text::FONT_FAMILY);
         db
     };
@@ -75,17 +77,26 @@ pub fn rasterize(figure: &Figure) -> Result<image::RgbaImage, FigureError> {
     // The document's width and height are the PNG's pixels and its viewBox the points: usvg
     // already maps points to pixels.
     resvg::render(&tree, Transform::identity(), &mut pixmap.as_mut());
-    let mut out = image::RgbaImage::new(w, h);
+    Ok(image_of(&pixmap))
+}
+
+/// A straight-alpha RGBA copy of a (premultiplied) pixmap.
+pub(super) fn image_of(pixmap: &Pixmap) -> image::RgbaImage {
+    let mut out = image::RgbaImage::new(pixmap.width(), pixmap.height());
     for (px, c) in out.pixels_mut().zip(pixmap.pixels()) {
         let c = c.demultiply();
         px.0 = [c.red(), c.green(), c.blue(), c.alpha()];
     }
-    Ok(out)
+    out
 }
 
 /// The figure as PNG file bytes.
 pub fn to_png(figure: &Figure) -> Result<Vec<u8>, FigureError> {
-    let image = rasterize(figure)?;
+    encode(&rasterize(figure)?)
+}
+
+/// An image as PNG file bytes.
+pub(super) fn encode(image: &image::RgbaImage) -> Result<Vec<u8>, FigureError> {
     let mut bytes = Vec::new();
     image
         .write_to(

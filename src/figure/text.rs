@@ -29,8 +29,16 @@ fn font() -> Option<&'static FontRef<'static>> {
         .as_ref()
 }
 
-/// The system's CJK font ([`crate::i18n::cjk_font`]), for the characters the overlay font
-/// lacks (Chinese labels); SVG renderers fall back the same way.
+/// The bundled symbols font ([`crate::i18n::SYMBOLS_FONT`]), for the symbols the overlay font
+/// lacks (floor brackets, arrows), as the app falls back to it.
+fn symbols() -> Option<&'static FontRef<'static>> {
+    static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();
+    FONT.get_or_init(|| FontRef::try_from_slice(crate::i18n::SYMBOLS_FONT).ok())
+        .as_ref()
+}
+
+/// The system's CJK font ([`crate::i18n::cjk_font`]), for the characters the overlay and
+/// symbols fonts lack (Chinese labels); SVG renderers fall back the same way.
 fn cjk() -> Option<&'static FontRef<'static>> {
     static FONT: OnceLock<Option<FontRef<'static>>> = OnceLock::new();
     FONT.get_or_init(|| {
@@ -45,6 +53,9 @@ fn cjk() -> Option<&'static FontRef<'static>> {
 pub enum GlyphFont {
     /// The overlay font ([`FONT_BYTES`]).
     Overlay,
+    /// The bundled symbols font ([`crate::i18n::SYMBOLS_FONT`]), for the symbols the overlay
+    /// font lacks.
+    Symbols,
     /// The system's CJK font ([`crate::i18n::cjk_font`]), for what the overlay font lacks.
     Cjk,
 }
@@ -53,6 +64,7 @@ impl GlyphFont {
     fn font(self) -> Option<&'static FontRef<'static>> {
         match self {
             GlyphFont::Overlay => font(),
+            GlyphFont::Symbols => symbols(),
             GlyphFont::Cjk => cjk(),
         }
     }
@@ -73,8 +85,8 @@ pub struct GlyphAt {
 }
 
 /// `text` laid out on one line at font size `size` (points, the em size): each character's
-/// glyph from the overlay font (with kerning), or from the CJK font when the overlay font lacks
-/// it; and the line's advance width.
+/// glyph from the overlay font (with kerning), or when the overlay font lacks it from the symbols
+/// font, else from the CJK font; and the line's advance width.
 fn layout(text: &str, size: f32) -> Option<(Vec<GlyphAt>, f32)> {
     let font = font()?;
     // ab_glyph scales by the line height: this scale makes one em `size` points.
@@ -91,14 +103,20 @@ fn layout(text: &str, size: f32) -> Option<(Vec<GlyphAt>, f32)> {
     let mut previous = None;
     for c in text.chars() {
         let id = scaled.glyph_id(c);
+        let fallback = [GlyphFont::Symbols, GlyphFont::Cjk]
+            .into_iter()
+            .find_map(|k| {
+                k.font()
+                    .map(|f| (k, f))
+                    .filter(|(_, f)| f.glyph_id(c).0 != 0)
+            });
         if id.0 == 0
-            && let Some(cjk) = cjk()
-            && cjk.glyph_id(c).0 != 0
+            && let Some((kind, other)) = fallback
         {
-            let (s, per) = scaled_of(cjk);
-            let cid = cjk.glyph_id(c);
+            let (s, per) = scaled_of(other);
+            let cid = other.glyph_id(c);
             glyphs.push(GlyphAt {
-                font: GlyphFont::Cjk,
+                font: kind,
                 id: cid.0,
                 x,
                 per_unit: per,

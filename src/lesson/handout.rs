@@ -1,6 +1,8 @@
 //! A lesson as a printable handout: one Markdown file (ready for pandoc) with each step's
-//! title, text and "try this", its figure, and the pinned pixel's derivation from the probe,
-//! the figures as PNG files beside it. Nothing is written here: [`handout`] returns the files
+//! title, text and "try this", its figure, its row plot (when the step has one: the app's
+//! plot, drawn by [`crate::figure::plot`]) and the pinned pixel's derivation from the probe,
+//! the figures and plots as PNG files beside it. A step that draws the same figure as an
+//! earlier one shows that file again instead of a copy. Nothing is written here: [`handout`] returns the files
 //! and the command line writes them (all or nothing, never over an existing file).
 
 use std::path::Path;
@@ -32,6 +34,14 @@ pub enum HandoutError {
         step: usize,
         /// What went wrong (part of this error's message).
         error: FigureError,
+    },
+    /// A step's row plot could not be rendered.
+    #[error("step {step}: {source}")]
+    Plot {
+        /// The step, from 1.
+        step: usize,
+        /// What went wrong.
+        source: crate::raster::render::RenderError,
     },
     /// The pinned pixel could not be probed.
     #[error("step {step}: {error}")]
@@ -66,6 +76,11 @@ pub const MARKDOWN_NAME: &str = "handout.md";
 /// The figure file of step `number` (from 1): `step-01.png`, ...
 pub fn figure_name(number: usize) -> String {
     format!("step-{number:02}.png")
+}
+
+/// The row plot file of step `number` (from 1): `step-01-plot.png`, ...
+pub fn plot_name(number: usize) -> String {
+    format!("step-{number:02}-plot.png")
 }
 
 /// The texture a step's scene draws with.
@@ -108,7 +123,8 @@ pub fn step_figure(
 }
 
 /// The pinned pixel's derivation, only the sections the step opens in the inspector (all
-/// when it names none), with headings two levels down so they sit under the step's.
+/// when it names none), with headings two levels down so they sit under the step's, and the
+/// sections numbered from 1 (the probe numbers them in its full derivation).
 fn derivation(trace: &PixelTrace, state: &StepState, lang: Lang) -> String {
     let full = document_in(trace, lang);
     let detail = trace.detail.is_some();
@@ -131,12 +147,20 @@ fn derivation(trace: &PixelTrace, state: &StepState, lang: Lang) -> String {
     doc.to_markdown()
         .lines()
         .filter(|l| *l != "# ")
-        .map(|l| {
-            if l.starts_with('#') {
+        .scan(0, |section, l| {
+            Some(if let Some(heading) = l.strip_prefix("## ") {
+                *section += 1;
+                // "5. Screen-space weights" -> "1. Screen-space weights".
+                let title = heading
+                    .split_once(". ")
+                    .filter(|(n, _)| n.chars().all(|c| c.is_ascii_digit()))
+                    .map_or(heading, |(_, t)| t);
+                format!("#### {section}. {title}")
+            } else if l.starts_with('#') {
                 format!("##{l}")
             } else {
                 l.to_string()
-            }
+            })
         })
         .collect::<Vec<_>>()
         .join("\n")
@@ -144,7 +168,11 @@ fn derivation(trace: &PixelTrace, state: &StepState, lang: Lang) -> String {
         .to_string()
 }
 
-/// The handout of `lesson` in `lang`: [`MARKDOWN_NAME`] first, then one figure per step.
+/// PNG pixels per point of a handout's row plot (sharp in print).
+pub const PLOT_SCALE: f32 = 2.0;
+
+/// The handout of `lesson` in `lang`: [`MARKDOWN_NAME`] first, then the figures (one per
+/// distinct picture, named after the first step that draws it) and the row plots.
 pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutError> {
     let mut md = format!(
         "---\ntitle: \"{}\"\nlang: {}\n---\n\n",
@@ -168,7 +196,18 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
             step: number,
             error,
         })?;
-        let name = figure_name(number);
+        // The same picture as an earlier step's: show that file again.
+        let name = match files.iter().find(|f: &&HandoutFile| f.bytes == bytes) {
+            Some(earlier) => earlier.name.clone(),
+            None => {
+                let name = figure_name(number);
+                files.push(HandoutFile {
+                    name: name.clone(),
+                    bytes,
+                });
+                name
+            }
+        };
         let title = step.title.get(lang);
         md.push_str(&format!(
             "## {number}. {}\n\n",
@@ -185,6 +224,26 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
             "\n![{}]({name})\n\n",
             text::plain(title).replace(['[', ']'], "")
         ));
+        if let (Some(plot), Some(pin)) = (state.plot, state.pin) {
+            let lines = super::plot::row_plot(&state.scene, &texture, pin, plot, lang).map_err(
+                |source| HandoutError::Plot {
+                    step: number,
+                    source,
+                },
+            )?;
+            let bytes = lines
+                .to_png(lang, PLOT_SCALE)
+                .map_err(|source| HandoutError::Figure {
+                    step: number,
+                    source,
+                })?;
+            let name = plot_name(number);
+            md.push_str(&format!(
+                "![{}]({name})\n\n",
+                lines.title.replace(['[', ']'], "")
+            ));
+            files.push(HandoutFile { name, bytes });
+        }
         md.push_str(&format!(
             "**{}** {}\n",
             tr(lang, "lesson.try_this"),
@@ -206,7 +265,6 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
             ));
         }
         md.push('\n');
-        files.push(HandoutFile { name, bytes });
     }
     files.insert(
         0,

@@ -14,6 +14,7 @@
 pub mod builtin;
 pub mod handout;
 mod parse;
+pub mod plot;
 pub mod text;
 
 use std::path::{Path, PathBuf};

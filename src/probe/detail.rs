@@ -392,6 +392,7 @@ fn screen_weights(
     let mut max_difference: f64 = 0.0;
     let others = [
         explicit.map(|f| f.weights),
+        explicit.map(|f| f.slides),
         cross_product.map(|a| a.weights),
         gl_area.map(|a| a.weights),
         from_system,

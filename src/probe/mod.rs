@@ -9,8 +9,8 @@
 //! and shades with [`shade::shade`]. So [`PixelTrace::color`] is the rendered pixel.
 //!
 //! Beside those numbers the trace holds the same quantities computed the ways textbooks
-//! teach them ([`weights`]): screen-space weights by the explicit formula (GAMES101), by
-//! cross-product areas and by the OpenGL area form; the 1/w correction in the
+//! teach them ([`weights`]): screen-space weights by the explicit formula (from corner A, and
+//! as GAMES101's slides write it, from B and C), by cross-product areas and by the OpenGL area form; the 1/w correction in the
 //! r, s, t / W_P notation; the 4x4 system (Umetani's Applied Computer Graphics notes); and the 3D point where the ray through
 //! the pixel centre meets the triangle's plane. [`format`](mod@format) writes the trace as a worked
 //! example (text, Markdown, LaTeX); the trace itself serializes to JSON with the field names

@@ -22,7 +22,9 @@ pub fn cross2(u: DVec2, v: DVec2) -> f64 {
     u.x * v.y - u.y * v.x
 }
 
-/// The explicit formula (GAMES101), with its numerators and denominators.
+/// The explicit formula written from corner A (beta and gamma; alpha = 1 - beta - gamma), with
+/// its numerators and denominators, and GAMES101's form of the slides (alpha and beta from B
+/// and C).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct ExplicitFormula {
     /// `N_beta = (y_P - y_A)(x_C - x_A) - (x_P - x_A)(y_C - y_A)`, in px².
@@ -44,14 +46,21 @@ pub struct ExplicitFormula {
     pub gamma_numerator_factors: [f64; 4],
     /// Of `D_gamma`: `[y_C - y_A, x_B - x_A, x_C - x_A, y_B - y_A]`.
     pub gamma_denominator_factors: [f64; 4],
+    /// `[alpha, beta, gamma]` by GAMES101's slides (lecture 9), from B and C:
+    /// `alpha = (-(x - x_B)(y_C - y_B) + (y - y_B)(x_C - x_B)) / (-(x_A - x_B)(y_C - y_B) + (y_A - y_B)(x_C - x_B))`,
+    /// `beta = (-(x - x_C)(y_A - y_C) + (y - y_C)(x_A - x_C)) / (-(x_B - x_C)(y_A - y_C) + (y_B - y_C)(x_A - x_C))`,
+    /// `gamma = 1 - alpha - beta`.
+    pub slides: [f64; 3],
 }
 
-/// Barycentric weights of `p` in the triangle `v = [A, B, C]` by the explicit formula of
-/// GAMES101:
+/// Barycentric weights of `p` in the triangle `v = [A, B, C]` by the explicit formula written
+/// from corner A:
 ///
 /// `beta = ((y - y_A)(x_C - x_A) - (x - x_A)(y_C - y_A)) / ((y_B - y_A)(x_C - x_A) - (x_B - x_A)(y_C - y_A))`,
 /// `gamma = ((y - y_A)(x_B - x_A) - (x - x_A)(y_B - y_A)) / ((y_C - y_A)(x_B - x_A) - (x_C - x_A)(y_B - y_A))`,
-/// `alpha = 1 - beta - gamma`. `None` for a degenerate triangle.
+/// `alpha = 1 - beta - gamma`; and by GAMES101's slides ([`ExplicitFormula::slides`]), whose
+/// numerators are the 2D cross products `(C - B) x (P - B)` and `(A - C) x (P - C)`. `None`
+/// for a degenerate triangle.
 ///
 /// ```
 /// use barylab::probe::weights::explicit_formula;
@@ -62,6 +71,8 @@ pub struct ExplicitFormula {
 /// assert_eq!((f.beta_numerator, f.beta_denominator), (36.0, 64.0));
 /// assert_eq!((f.gamma_numerator, f.gamma_denominator), (-12.0, -64.0));
 /// assert_eq!(f.weights, [0.25, 0.5625, 0.1875]);
+/// // The slides, from B and C: alpha = -16 / -64, beta = -36 / -64.
+/// assert_eq!(f.slides, [0.25, 0.5625, 0.1875]);
 /// ```
 pub fn explicit_formula(p: DVec2, v: [DVec2; 3]) -> Option<ExplicitFormula> {
     let [a, b, c] = v;
@@ -82,6 +93,8 @@ pub fn explicit_formula(p: DVec2, v: [DVec2; 3]) -> Option<ExplicitFormula> {
     }
     let beta = beta_numerator / beta_denominator;
     let gamma = gamma_numerator / gamma_denominator;
+    let slides_alpha = cross2(c - b, p - b) / cross2(c - b, a - b);
+    let slides_beta = cross2(a - c, p - c) / cross2(a - c, b - c);
     Some(ExplicitFormula {
         beta_numerator,
         beta_denominator,
@@ -92,6 +105,7 @@ pub fn explicit_formula(p: DVec2, v: [DVec2; 3]) -> Option<ExplicitFormula> {
         beta_denominator_factors,
         gamma_numerator_factors,
         gamma_denominator_factors,
+        slides: [slides_alpha, slides_beta, 1.0 - slides_alpha - slides_beta],
     })
 }
 

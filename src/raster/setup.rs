@@ -11,8 +11,9 @@
 //! above); it is not covered on a top or right edge. Two triangles sharing an edge see it in
 //! opposite directions, so every sample on it belongs to exactly one of them. That is
 //! llvmpipe's rule under OpenGL ([`TieRule::Llvmpipe`], the default); [`TieRule::TopLeft`] is
-//! the top-left rule as Direct3D and Vulkan state it in their y-down coordinates (left and
-//! top edges own their samples).
+//! the top-left rule as Direct3D states it (and most Vulkan drivers follow) in y-down
+//! coordinates (left and top edges own their samples). Vulkan itself only requires that
+//! exactly one of two triangles sharing an edge covers a sample on it.
 //!
 //! The interpolation weights are set up separately, in `f64` from the unsnapped window
 //! positions ([`WeightPlanes`]), as llvmpipe sets up its interpolation from the float
@@ -69,8 +70,8 @@ pub enum TieRule {
     /// the top-left rule applied to OpenGL's window coordinates, whose y points up.)
     #[default]
     Llvmpipe,
-    /// The top-left rule as Direct3D and Vulkan state it in their y-down framebuffer
-    /// coordinates: left edges, and top edges (horizontal, interior below).
+    /// The top-left rule as Direct3D states it (and most Vulkan drivers follow) in y-down
+    /// framebuffer coordinates: left edges, and top edges (horizontal, interior below).
     TopLeft,
 }
 
@@ -98,7 +99,7 @@ impl TieRule {
                 "the llvmpipe rule (OpenGL on Mesa): centres on left and bottom edges are covered"
             }
             TieRule::TopLeft => {
-                "the top-left rule (Direct3D, Vulkan): centres on left and top edges are covered"
+                "the top-left rule (Direct3D, and most Vulkan drivers): centres on left and top edges are covered"
             }
         }
     }

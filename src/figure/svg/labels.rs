@@ -108,11 +108,12 @@ impl Glyphs {
 }
 
 /// The element id of a glyph's outline: `g0-N` for glyph N of the overlay font, `g1-N` of
-/// the CJK font.
+/// the CJK font, `g2-N` of the symbols font.
 fn glyph_id(font: text::GlyphFont, glyph: u16) -> String {
     let f = match font {
         text::GlyphFont::Overlay => 0,
         text::GlyphFont::Cjk => 1,
+        text::GlyphFont::Symbols => 2,
     };
     format!("g{f}-{glyph}")
 }

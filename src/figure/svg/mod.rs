@@ -58,11 +58,15 @@ pub fn to_svg(figure: &Figure) -> Result<String, FigureError> {
     document(figure, Layers::ALL)
 }
 
-/// A `font-family` list for SVG text in `lang`: the overlay font, then (for Chinese) the CJK
+/// A `font-family` list for SVG text in `lang`: the overlay font, the symbols font
+/// ([`crate::i18n::SYMBOLS_FAMILY`]), then (for Chinese) the CJK
 /// families a viewer may have ([`crate::i18n::CJK_FAMILIES`]), then `sans-serif`. (The
 /// figures themselves draw their labels as glyph outlines and need no font.)
 pub fn font_families(lang: crate::i18n::Lang) -> String {
-    let mut families = vec![FONT_FAMILY.to_string()];
+    let mut families = vec![
+        FONT_FAMILY.to_string(),
+        format!("'{}'", crate::i18n::SYMBOLS_FAMILY),
+    ];
     if lang != crate::i18n::Lang::En {
         if let Some(found) = crate::i18n::cjk_font() {
             families.push(format!("'{}'", found.family));

@@ -26,14 +26,16 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
         {
             b.para(vec![
                 t(tr!(b, "probe.color.wireframe_before")),
-                m1(num(dist)),
+                // An operand's digits, so that a distance just under the width does not
+                // print as the width itself.
+                m1(M::Operand(dist)),
                 t(tr!(
                     b,
                     "probe.color.wireframe_after",
                     width = fmt_number(width),
                     halo = fmt_number(halo),
                     line = if sh.wire {
-                        tr!(b, "probe.color.line_pixel")
+                        tr!(b, "probe.color.line_pixel", width = fmt_number(width))
                     } else if sh.halo {
                         tr!(b, "probe.color.halo_pixel")
                     } else {

@@ -25,7 +25,13 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
 
     // 1. Explicit formula.
     if let Some(f) = &sw.explicit {
-        b.text(tr!(b, "probe.screen.explicit"));
+        b.text(tr!(
+            b,
+            "probe.screen.explicit",
+            a = n[0].clone(),
+            ca = format!("{}{}", n[2], n[0]),
+            ab = format!("{}{}", n[0], n[1])
+        ));
         // (y_P - y_A)(x_C - x_A) - (x_P - x_A)(y_C - y_A)
         let form = |u: usize| {
             vec![
@@ -110,6 +116,49 @@ pub(super) fn screen_section(b: &mut Builder, trace: &PixelTrace, d: &TriangleTr
             num(f.weights[2]),
             EQ,
             num(f.weights[0]),
+        ]);
+        // GAMES101's slides: alpha from the edge BC, beta from the edge CA, each
+        // -(x_Q - x_U)(y_V - y_U) + (y_Q - y_U)(x_V - x_U) at Q = P over the same at Q = the
+        // opposite corner.
+        b.text(tr!(
+            b,
+            "probe.screen.slides",
+            bc = format!("{}{}", n[1], n[2]),
+            ca = format!("{}{}", n[2], n[0])
+        ));
+        let line = |q: Option<usize>, u: usize, v: usize| {
+            let (qx, qy) = match q {
+                Some(k) => (xs(k), ys(k)),
+                None => (sym("x_P"), sym("y_P")),
+            };
+            vec![
+                MINUS,
+                grp(vec![qx, MINUS, xs(u)]),
+                grp(vec![ys(v), MINUS, ys(u)]),
+                PLUS,
+                grp(vec![qy, MINUS, ys(u)]),
+                grp(vec![xs(v), MINUS, xs(u)]),
+            ]
+        };
+        for (k, u, v, name) in [(0, 1, 2, "alpha"), (1, 2, 0, "beta")] {
+            b.eq(vec![
+                sym(name),
+                EQ,
+                frac(line(None, u, v), line(Some(k), u, v)),
+                EQ,
+                num(f.slides[k]),
+            ]);
+        }
+        b.eq(vec![
+            sym("gamma"),
+            EQ,
+            int(1),
+            MINUS,
+            sym("alpha"),
+            MINUS,
+            sym("beta"),
+            EQ,
+            num(f.slides[2]),
         ]);
     }
 
