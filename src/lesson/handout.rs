@@ -233,9 +233,9 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
             )?;
             let bytes = lines
                 .to_png(lang, PLOT_SCALE)
-                .map_err(|source| HandoutError::Figure {
+                .map_err(|error| HandoutError::Figure {
                     step: number,
-                    source,
+                    error,
                 })?;
             let name = plot_name(number);
             md.push_str(&format!(
