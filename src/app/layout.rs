@@ -176,7 +176,8 @@ impl BaryApp {
             .map(|(p, _)| (p, self.row_plot(texture)));
         let lang = self.lang();
         let mut plot_hover = None;
-        if let Some(width) = beside_width(rect, aspect, compare, framing) {
+        let window = ui.ctx().content_rect();
+        if let Some(width) = beside_width(rect, aspect, compare, framing, window) {
             self.canvas.avoid.clear();
             let input = self.card_input(present::card_text_for_width(width));
             egui::Panel::right("present-card")
@@ -505,6 +506,7 @@ fn beside_width(
     aspect: f32,
     compare: crate::figure::Compare,
     framing: Framing,
+    window: egui::Rect,
 ) -> Option<f32> {
     let views = if compare == crate::figure::Compare::SideBySide {
         2.0
@@ -519,8 +521,18 @@ fn beside_width(
     let image = views * height.max(0.0) * aspect + 2.0 * margin;
     let free = rect.width() - image;
     let least = present::card_width_for_text(BESIDE_MIN_TEXT);
-    (free >= least).then(|| free.min(BESIDE_MAX_SHARE * rect.width()).max(least))
+    if free >= least {
+        return Some(free.min(BESIDE_MAX_SHARE * rect.width()).max(least));
+    }
+    // Not quite: the picture may narrow to make the column, if it keeps BESIDE_KEEP of the
+    // window (a wide screen: the card beside hides nothing).
+    let width = (rect.width() - least - 2.0 * margin) / views;
+    let shown = views * width.max(0.0) * (width.max(0.0) / aspect).min(height.max(0.0));
+    (shown >= BESIDE_KEEP * window.area()).then_some(least)
 }
+
+/// The share of the window the picture keeps when it narrows for the card beside it.
+const BESIDE_KEEP: f32 = 0.5;
 
 /// An open side panel's first row: its name and a button that folds it to a strip (so a panel
 /// opened on a small window, where the canvas gave way, is as easily put away).

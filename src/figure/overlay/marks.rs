@@ -53,7 +53,7 @@ pub(super) fn triangle_shapes(
 /// Colour of the marked pixel's triangle outline.
 const TRIANGLE_OUTLINE: Rgba = [255, 255, 255, 230];
 
-/// Whether `shape` is the marked pixel's triangle outline (drawn by [`triangle_shapes`]).
+/// Whether `shape` is the marked pixel's triangle outline (drawn with its sub-triangles).
 pub fn is_triangle_outline(shape: &Shape) -> bool {
     matches!(shape, Shape::Polygon { fill: [_, _, _, 0], stroke: Some(s), dashed: false, points }
         if s.color == TRIANGLE_OUTLINE && points.len() == 3)
