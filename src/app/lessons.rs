@@ -359,7 +359,7 @@ pub fn lesson_panel_ui(
                 leave(ui, &mut out);
                 reset(ui, &mut out);
             } else {
-                ui.menu_button("☰", |ui| {
+                ui.menu_button(tr(lang, "lesson.more"), |ui| {
                     reset(ui, &mut out);
                     leave(ui, &mut out);
                 });
@@ -529,7 +529,7 @@ pub fn lesson_strip_ui(
         ui.add(
             egui::Label::new(
                 RichText::new(first)
-                    .size(size * 0.9)
+                    .size(size * 0.8)
                     .color(egui::Color32::LIGHT_GRAY),
             )
             .wrap(),
@@ -647,7 +647,7 @@ impl BaryApp {
             .frame(
                 egui::Frame::new()
                     .fill(super::present::CARD_FILL)
-                    .inner_margin(egui::Margin::same(10)),
+                    .inner_margin(egui::Margin::symmetric(10, 6)),
             )
             .resizable(false)
             .show(ui, |ui| {
