@@ -64,13 +64,10 @@ const INK: Color32 = Color32::WHITE;
 const DIM: Color32 = Color32::from_rgb(170, 180, 200);
 const ACCENT: Color32 = Color32::from_rgb(255, 214, 90);
 
-/// The text size at which the card's widest line fills a card `width` points wide.
-///
-/// ```
-/// use barylab::app::present::{card_text_for_width, PANEL_MARGINS};
-/// // 31 characters of 0.62 text heights: 20 points of text need 408 points of card.
-/// assert!((card_text_for_width(31.0 * 0.62 * 20.0 + PANEL_MARGINS) - 20.0).abs() < 1e-3);
-/// ```
+/// The text size at which the card's widest line fills a card `width` points wide:
+/// `(width - PANEL_MARGINS) / (CARD_EMS * MONO_ADVANCE)` within [`CARD_TEXT_RANGE`] (31
+/// characters of 0.62 text heights: 20 points of text need 31 x 0.62 x 20 + 24 = 408.4 points
+/// of card; the unit test below checks it both ways).
 pub fn card_text_for_width(width: f32) -> f32 {
     ((width - PANEL_MARGINS) / (CARD_EMS * MONO_ADVANCE))
         .clamp(CARD_TEXT_RANGE.0, CARD_TEXT_RANGE.1)
