@@ -469,7 +469,7 @@ pub(crate) fn canvas_ui(
         }
         if input.framing.title_strip == 0.0 {
             paint::drop_titles(&mut shapes);
-        } else if let Some(w) = flat_w(&handles)
+        } else if let Some(w) = crate::figure::common_w(handles.iter().map(|h| h.w))
             && compare == Compare::Single
             && gpu.is_none()
         {
@@ -514,19 +514,6 @@ pub(crate) fn canvas_ui(
     }
     out
 }
-
-/// The corners' common w when every handle has the same (within [`FLAT_W_TOLERANCE`]).
-fn flat_w(handles: &[HandleMark]) -> Option<f64> {
-    let first = handles.first()?.w;
-    handles
-        .iter()
-        .all(|h| (h.w - first).abs() <= FLAT_W_TOLERANCE * first.abs())
-        .then_some(first)
-}
-
-/// Relative difference of w below which the corners count as at one distance: far below the
-/// two decimals the labels show.
-const FLAT_W_TOLERANCE: f64 = 1e-9;
 
 /// Model scenes: drag orbits the camera about its target, Shift+drag or a right/middle drag
 /// pans, scrolling zooms. `scale` is points per rendered pixel.

@@ -190,15 +190,9 @@ impl BaryApp {
                 .exact_size(width)
                 .show(ui, |ui| {
                     present::card_ui(ui, &input);
-                    if let Some((p, lines)) = plot {
+                    if let Some(plot) = plot {
                         ui.add_space(12.0);
-                        out.extend(command::all(super::plots::plot_ui(
-                            ui,
-                            p,
-                            lines,
-                            lang,
-                            &mut plot_hover,
-                        )));
+                        out.extend(present_plot(ui, plot, lang, &mut plot_hover));
                     }
                 });
             self.lessons.plot_hover = plot_hover;
@@ -258,13 +252,7 @@ impl BaryApp {
                         .show(ui, |ui| {
                             ui.allocate_ui(plot_size - egui::vec2(20.0, 20.0), |ui| {
                                 ui.set_min_size(plot_size - egui::vec2(20.0, 20.0));
-                                out.extend(command::all(super::plots::plot_ui(
-                                    ui,
-                                    p,
-                                    lines,
-                                    lang,
-                                    &mut plot_hover,
-                                )));
+                                out.extend(present_plot(ui, (p, lines), lang, &mut plot_hover));
                             });
                         });
                 });
@@ -434,6 +422,19 @@ impl BaryApp {
         scored.sort_by_key(|(s, _)| *s);
         scored.into_iter().map(|(_, c)| c).collect()
     }
+}
+
+/// Presentation mode's row plot (beside or over the picture), its commands.
+fn present_plot(
+    ui: &mut egui::Ui,
+    (plot, lines): (
+        crate::lesson::LessonPlot,
+        Option<(u32, super::plots::PlotLines)>,
+    ),
+    lang: crate::i18n::Lang,
+    hovered_column: &mut Option<u32>,
+) -> Vec<AppCommand> {
+    command::all(super::plots::plot_ui(ui, plot, lines, lang, hovered_column)).collect()
 }
 
 /// The plot over the picture: its share of the canvas's width and height.

@@ -50,9 +50,6 @@ const SMALL_SHARE: f32 = 0.7;
 const NUMBER_EMS: f32 = 7.5;
 /// Characters of the vertex-name column.
 const NAME_EMS: f32 = 2.5;
-/// Relative difference of 1/w below which the corners count as at one distance (a flat
-/// triangle facing the camera): far below what four digits show.
-const FLAT_TOLERANCE: f64 = 1e-9;
 /// Significant digits on the card: enough to see the difference, few enough to read.
 const DIGITS: i32 = 4;
 
@@ -163,18 +160,11 @@ pub fn card_ui(ui: &mut Ui, input: &CardInput<'_>) {
 fn pixel_ui(ui: &mut Ui, r: &PixelReport, how: &str, size: f32, lang: crate::i18n::Lang) {
     // Every w equal (a flat triangle facing the camera): both modes agree, and the card says
     // so instead of naming one.
-    let flat = r.trace.detail.as_ref().and_then(|d| {
-        let w = d
-            .raster
-            .vertices
-            .iter()
-            .map(|v| v.inv_w)
-            .collect::<Vec<_>>();
-        let first = *w.first()?;
-        w.iter()
-            .all(|x| (x - first).abs() <= FLAT_TOLERANCE * first.abs())
-            .then(|| 1.0 / first)
-    });
+    let flat = r
+        .trace
+        .detail
+        .as_ref()
+        .and_then(|d| crate::figure::common_w(d.raster.vertices.iter().map(|v| 1.0 / v.inv_w)));
     let mode = match (flat, r.mode) {
         (Some(w), _) => lang.tr_with("app.present.flat", &[("w", &fmt_digits(w, DIGITS))]),
         (None, Interpolation::Affine) => lang.tr("app.present.affine"),

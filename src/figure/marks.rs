@@ -74,3 +74,24 @@ pub fn pixel_mark(trace: &PixelTrace) -> PixelMark {
         triangle: triangle_mark(trace),
     }
 }
+
+/// The common w of `ws` when every one is the same (within [`FLAT_W_TOLERANCE`], relative):
+/// a flat triangle or quad facing the camera, where affine and perspective-correct
+/// interpolation agree. `None` for no values or differing ones.
+///
+/// ```
+/// use barylab::figure::common_w;
+/// assert_eq!(common_w([2.4, 2.4, 2.4]), Some(2.4));
+/// assert_eq!(common_w([1.0, 6.0]), None);
+/// assert_eq!(common_w([]), None);
+/// ```
+pub fn common_w(ws: impl IntoIterator<Item = f64>) -> Option<f64> {
+    let mut ws = ws.into_iter();
+    let first = ws.next()?;
+    ws.all(|w| (w - first).abs() <= FLAT_W_TOLERANCE * first.abs())
+        .then_some(first)
+}
+
+/// Relative difference of w below which corners count as at one distance: far below the
+/// digits any label or card shows.
+pub const FLAT_W_TOLERANCE: f64 = 1e-9;

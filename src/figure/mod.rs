@@ -38,7 +38,10 @@ pub mod text;
 
 pub use compare::{Compare, ViewContent, modes_for, view_contents, wipe_column, wipe_pixels};
 pub use compose::{Figure, FigureError, FigureView};
-pub use marks::{MIN_HANDLE_W, VertexOnScreen, pixel_mark, triangle_mark, vertices_on_screen};
+pub use marks::{
+    FLAT_W_TOLERANCE, MIN_HANDLE_W, VertexOnScreen, common_w, pixel_mark, triangle_mark,
+    vertices_on_screen,
+};
 pub use options::{
     Background, FIGURE_MARGIN, FigureOptions, MAX_FIGURE_SIZE, OVERLAY_SCALE_RANGE, SCALES,
     SIDE_BY_SIDE_GAP, layout_points,
