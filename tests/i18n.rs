@@ -204,6 +204,7 @@ fn figure_labels_match_the_catalogue() {
         handles,
         hover: None,
         pin: None,
+        clipped: None,
         sub_areas: false,
         sub_area_fill: true,
         wipe: None,

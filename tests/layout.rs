@@ -338,3 +338,31 @@ fn on_a_projector_at_text_size_one_and_a_half_every_panel_opens_and_the_lesson_s
         }
     }
 }
+
+#[test]
+fn presenting_magnifies_the_pinned_pixel_where_a_corner_is_free_and_m_hides_it() {
+    // A wide screen: the magnifier sits in the card's column.
+    let options = AppOptions {
+        present: true,
+        pin: Some([400, 420]),
+        ..AppOptions::default()
+    };
+    let mut h = harness([1920.0, 1080.0], options);
+    settle(&mut h);
+    assert!(
+        h.query_by_label_contains("Pixel 400, 420 enlarged").is_some(),
+        "the magnifier names the pinned pixel"
+    );
+    h.key_press(egui::Key::M);
+    settle(&mut h);
+    assert!(!h.state().state().view.show_magnifier);
+    assert!(h.query_by_label_contains("enlarged").is_none());
+    // Nothing pinned: no magnifier.
+    let options = AppOptions {
+        present: true,
+        ..AppOptions::default()
+    };
+    let mut h = harness([1920.0, 1080.0], options);
+    settle(&mut h);
+    assert!(h.query_by_label_contains("enlarged").is_none());
+}

@@ -174,6 +174,39 @@ fn numbers_quoted_in_the_builtin_lesson_are_the_probes() {
             .and_then(|d| d.attribute.clone())
             .expect("uv")
     };
+    // Step 16: the near-plane cut on edge AB (z + w changes sign), K1's weights, and the
+    // pinned pixel in the fan triangle K1 C K2 that the text names.
+    let t16 = probe_step(16);
+    let d = t16.detail.as_ref().expect("detail");
+    let [a, b] = [0, 1].map(|i| d.vertices[i].clip);
+    let (za, zb) = (a[2] + a[3], b[2] + b[3]);
+    assert!(
+        za < 0.0 && zb > 0.0,
+        "A is behind the near plane, B in front"
+    );
+    let k = za / (za - zb);
+    for v in [a[3], za, -za, zb, k, 1.0 - k] {
+        quotes(16, v);
+    }
+    let c = d.clipping.as_ref().expect("the triangle is clipped");
+    let fan: Vec<&str> = c
+        .fan_triangle
+        .iter()
+        .map(|&i| c.polygon[i].name.as_str())
+        .collect();
+    assert_eq!(fan, ["K1", "C", "K2"]);
+    assert!((f64::from(c.polygon[0].source_weights[1]) - k).abs() < 1e-6);
+    // The picture frames the cut: K1 and K2 lie inside the image, on one row (the floor meets
+    // the near plane along a line parallel to the image rows: the camera does not roll).
+    let mark = barylab::figure::clip_mark(&t16).expect("a clip mark");
+    let names: Vec<&str> = mark.corners.iter().map(|k| k.0.as_str()).collect();
+    assert_eq!(names, ["K1", "B", "C", "K2"]);
+    let [w, h] = t16.image_size.map(f64::from);
+    for (name, p, made) in &mark.corners {
+        assert!(p.x > 0.0 && p.x < w && p.y > 0.0 && p.y < h, "{name} at {p}");
+        assert_eq!(*made, name.starts_with('K'));
+    }
+    assert!((mark.corners[0].1.y - mark.corners[3].1.y).abs() < 1e-9);
     let uv9 = attribute(&t9).uv_affine;
     let uv12 = attribute(&t12).uv_perspective;
     assert_eq!(fmt(f64::from(uv9[0])), fmt(f64::from(uv12[0])));

@@ -105,6 +105,18 @@ pub struct CanvasState {
 }
 
 impl CanvasState {
+    /// The texture and image size of the view that shows `content`, else of the first view
+    /// (the magnifier enlarges what the canvas shows).
+    pub fn view_texture(&self, content: ViewContent) -> Option<(egui::TextureId, [u32; 2])> {
+        let out = self.output.as_ref()?;
+        let i = self
+            .views
+            .iter()
+            .position(|v| v.content == content)
+            .unwrap_or(0);
+        self.textures.get(i).map(|t| (t.id(), out.size))
+    }
+
     /// Renders if anything the image depends on changed. Returns whether it rendered.
     pub fn update(
         &mut self,
@@ -446,6 +458,10 @@ pub(crate) fn canvas_ui(
             },
             hover: input.hover_report.map(PixelReport::mark),
             pin: input.pin_report.map(PixelReport::mark),
+            clipped: input
+                .pin_report
+                .or(input.hover_report)
+                .and_then(|r| crate::figure::clip_mark(&r.trace)),
             sub_areas: view_settings.show_sub_areas,
             sub_area_fill: state.options().shading != crate::raster::Shading::Texture,
             wipe: (view.content == ViewContent::Wipe && gpu != Some(false)).then_some((

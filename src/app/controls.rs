@@ -262,6 +262,14 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         &mut out,
         Command::SetShowSubAreas,
     );
+    checkbox(
+        ui,
+        view.show_magnifier,
+        &lang.tr("app.controls.magnifier"),
+        &lang.tr("app.controls.tip.magnifier"),
+        &mut out,
+        Command::SetShowMagnifier,
+    );
 
     section(ui, &lang.tr("app.controls.presets"));
     ui.horizontal_wrapped(|ui| {

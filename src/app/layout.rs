@@ -9,7 +9,7 @@ use super::canvas_layout::Framing;
 use super::command::{self, AppCommand};
 use super::side_panels::{self, Fit};
 use super::textures::texture_key;
-use super::{BaryApp, compare_image, controls, gpu_view, inspector, present, state};
+use super::{BaryApp, compare_image, controls, gpu_view, inspector, magnifier, present, state};
 use crate::figure::ViewContent;
 use crate::raster::Texture;
 
@@ -176,6 +176,7 @@ impl BaryApp {
             .map(|(p, _)| (p, self.row_plot(texture)));
         let lang = self.lang();
         let mut plot_hover = None;
+        let magnifier = self.magnifier_input(24.0);
         let window = ui.ctx().content_rect();
         if let Some(width) = beside_width(rect, aspect, compare, framing, window) {
             self.canvas.avoid.clear();
@@ -190,6 +191,16 @@ impl BaryApp {
                 .exact_size(width)
                 .show(ui, |ui| {
                     present::card_ui(ui, &input);
+                    if let Some(m) = &magnifier {
+                        ui.add_space(12.0);
+                        let share = if plot.is_some() { 0.5 } else { 1.0 };
+                        let side = ui.available_width().min(
+                            share * ui.available_height() - magnifier::title_height(m.text_size),
+                        );
+                        if side >= magnifier::MIN_SIDE {
+                            magnifier::magnifier_ui(ui, side, m);
+                        }
+                    }
                     if let Some(plot) = plot {
                         ui.add_space(12.0);
                         out.extend(present_plot(ui, plot, lang, &mut plot_hover));
@@ -214,6 +225,10 @@ impl BaryApp {
                 .exact_size(height)
                 .show(ui, |ui| present::card_ui(ui, &input));
             self.canvas_panel(ui, texture, framing, out);
+            if let Some(m) = magnifier {
+                let area = self.canvas.area.unwrap_or(rect);
+                self.magnifier_over(ui, area, &[], m);
+            }
             return;
         }
         self.canvas_panel(ui, texture, framing, out);
@@ -237,7 +252,7 @@ impl BaryApp {
         );
         let plot_at = plot
             .is_some()
-            .then(|| self.emptiest_corner_except(area, plot_size, corner))
+            .then(|| self.emptiest_corner_except(area, plot_size, &[corner]))
             .flatten();
         if let (Some((p, lines)), Some(at)) = (plot, plot_at) {
             self.canvas.avoid.push(at);
@@ -258,6 +273,11 @@ impl BaryApp {
                 });
         }
         self.lessons.plot_hover = plot_hover;
+        if let Some(mut m) = magnifier {
+            m.text_size = size;
+            let taken: Vec<egui::Rect> = self.canvas.avoid.clone();
+            self.magnifier_over(ui, area, &taken, m);
+        }
         let input = self.card_input(size);
         egui::Area::new(egui::Id::unique("present-card-over"))
             .order(egui::Order::Foreground)
@@ -272,6 +292,55 @@ impl BaryApp {
                         ui.set_width(width - present::PANEL_MARGINS);
                         present::card_ui(ui, &input);
                     });
+            });
+    }
+
+    /// The magnifier's contents, when it is on and a pixel is pinned; its title `text_size`
+    /// points.
+    fn magnifier_input(&self, text_size: f32) -> Option<magnifier::MagnifierInput> {
+        if !self.state.view.show_magnifier {
+            return None;
+        }
+        let pin = self.reports.pin.as_ref()?;
+        let content = ViewContent::Mode(self.state.options().mode);
+        Some(magnifier::MagnifierInput {
+            texture: self.canvas.view_texture(content)?,
+            pixel: pin.pixel,
+            triangle: pin.triangle(),
+            lang: self.lang(),
+            text_size,
+        })
+    }
+
+    /// The magnifier over the picture, in a free corner of the canvas `area` clear of the
+    /// boxes `taken` (the card, the plot); left out when no corner is free (it would hide a
+    /// mark or much of the picture).
+    fn magnifier_over(
+        &mut self,
+        ui: &egui::Ui,
+        area: egui::Rect,
+        taken: &[egui::Rect],
+        m: magnifier::MagnifierInput,
+    ) {
+        let side =
+            (magnifier::OVER_SHARE * area.width().min(area.height())).max(magnifier::MIN_SIDE);
+        let margin = 10.0;
+        let size = egui::vec2(side, side + magnifier::title_height(m.text_size))
+            + egui::Vec2::splat(2.0 * margin);
+        let Some(at) = self.free_corner(area, size, taken) else {
+            return;
+        };
+        self.canvas.avoid.push(at);
+        egui::Area::new(egui::Id::unique("present-magnifier"))
+            .order(egui::Order::Foreground)
+            .fixed_pos(at.min)
+            .interactable(false)
+            .show(ui.ctx(), |ui| {
+                egui::Frame::new()
+                    .fill(present::CARD_FILL_OVER)
+                    .corner_radius(6)
+                    .inner_margin(egui::Margin::same(margin as i8))
+                    .show(ui, |ui| magnifier::magnifier_ui(ui, side, &m));
             });
     }
 
@@ -307,121 +376,6 @@ impl BaryApp {
         self.last_preset
             .map(|p| super::controls::preset_name(p, lang))
     }
-
-    /// The emptiest corner (as [`Self::emptiest_corner`]) for a box of `size` that does not
-    /// overlap `taken`, if there is one.
-    fn emptiest_corner_except(
-        &self,
-        area: egui::Rect,
-        size: egui::Vec2,
-        taken: egui::Rect,
-    ) -> Option<egui::Rect> {
-        self.corners_by_emptiness(area, size)
-            .into_iter()
-            .find(|c| !c.intersects(taken))
-    }
-
-    /// The corner of the canvas `area` where a card of `size` hides least of the picture:
-    /// fewest covered pixels under it (sampled on a grid), never over the pinned pixel, in
-    /// the order top right, top left, bottom right, bottom left on a tie. It depends on the
-    /// render and the pin only (not on the hovered pixel), so the card does not jump about.
-    fn emptiest_corner(&self, area: egui::Rect, size: egui::Vec2) -> egui::Rect {
-        self.corners_by_emptiness(area, size)[0]
-    }
-
-    /// The four corners for a box of `size` in the canvas `area`, the emptiest first (see
-    /// [`Self::emptiest_corner`]).
-    fn corners_by_emptiness(&self, area: egui::Rect, size: egui::Vec2) -> Vec<egui::Rect> {
-        let corners = [
-            egui::Rect::from_min_size(egui::pos2(area.max.x - size.x, area.min.y), size),
-            egui::Rect::from_min_size(area.min, size),
-            egui::Rect::from_min_size(area.max - size, size),
-            egui::Rect::from_min_size(egui::pos2(area.min.x, area.max.y - size.y), size),
-        ];
-        let Some(output) = &self.canvas.output else {
-            return corners.to_vec();
-        };
-        let pinned = self.state.view.pinned;
-        let vertices = crate::figure::vertices_on_screen(&output.scene, output.viewport());
-        let score = |card: &egui::Rect| -> u32 {
-            let mut covered = 0;
-            for view in &self.canvas.views {
-                // The handles with their w labels, the title strip and the colour bar count
-                // as picture too.
-                for v in vertices.iter().filter_map(|v| v.window) {
-                    let at = view.transform.to_screen(v);
-                    let label = egui::Rect::from_center_size(at, LABELLED_HANDLE);
-                    if label.intersects(*card) {
-                        covered += MARK_PENALTY;
-                    }
-                }
-                let title = egui::Rect::from_min_max(
-                    egui::pos2(view.rect.min.x, view.area.min.y),
-                    egui::pos2(view.rect.max.x, view.rect.min.y),
-                );
-                if title.height() > 1.0 && title.intersects(*card) {
-                    covered += MARK_PENALTY;
-                }
-                if view.content == ViewContent::Difference {
-                    let bar = egui::Rect::from_min_max(
-                        egui::pos2(view.rect.max.x, view.rect.min.y),
-                        egui::pos2(
-                            view.rect.max.x + crate::figure::overlay::COLOR_BAR_ROOM,
-                            view.rect.max.y,
-                        ),
-                    );
-                    if bar.intersects(*card) {
-                        covered += 2 * MARK_PENALTY;
-                    }
-                }
-                let mode = match view.content {
-                    ViewContent::Mode(m) => m,
-                    _ => self.state.options().mode,
-                };
-                let Some(render) = output.render(mode) else {
-                    continue;
-                };
-                let frame = &render.frame;
-                let part = card.intersect(view.rect);
-                if !part.is_positive() {
-                    continue;
-                }
-                if let Some([px, py]) = pinned {
-                    let centre = view
-                        .transform
-                        .to_screen(glam::DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
-                    if part.expand(8.0).contains(centre) {
-                        covered += PIN_PENALTY;
-                    }
-                }
-                let steps = CORNER_SAMPLES as f32;
-                for j in 0..CORNER_SAMPLES {
-                    for i in 0..CORNER_SAMPLES {
-                        let p = part.min
-                            + egui::vec2(
-                                (i as f32 + 0.5) / steps * part.width(),
-                                (j as f32 + 0.5) / steps * part.height(),
-                            );
-                        let c = view.transform.to_canvas(p);
-                        let (x, y) = (c.x.floor(), c.y.floor());
-                        if x < 0.0 || y < 0.0 {
-                            continue;
-                        }
-                        let (x, y) = (x as usize, y as usize);
-                        let width = frame.width as usize;
-                        if x < width && frame.depth.get(y * width + x).is_some_and(|d| *d < 1.0) {
-                            covered += 1;
-                        }
-                    }
-                }
-            }
-            covered
-        };
-        // A stable sort: on a tie the order above.
-        let mut scored: Vec<(u32, egui::Rect)> = corners.iter().map(|c| (score(c), *c)).collect();
-        scored.sort_by_key(|(s, _)| *s);
-        scored.into_iter().map(|(_, c)| c).collect()
-    }
 }
 
 /// Presentation mode's row plot (beside or over the picture), its commands.
@@ -439,22 +393,12 @@ fn present_plot(
 
 /// The plot over the picture: its share of the canvas's width and height.
 const PLOT_OVER_SHARE: [f32; 2] = [0.46, 0.4];
-/// Points: the box around a handle where its letter and w label go.
-const LABELLED_HANDLE: egui::Vec2 = egui::vec2(150.0, 80.0);
-/// A corner over a handle's label, a title or the colour bar counts as this many covered
-/// samples.
-const MARK_PENALTY: u32 = 40;
 /// Points: the largest text of a card over the picture (on a large screen a larger card would
 /// hide more of it than the room needs to read it).
 const OVER_MAX_TEXT: f32 = 26.0;
 
 /// The card over the picture takes this share of the canvas's width.
 const OVER_CARD_SHARE: f32 = 0.42;
-/// Samples per side of the grid that measures how much of the picture a card would hide.
-const CORNER_SAMPLES: usize = 12;
-/// A corner over the pinned pixel counts as this many covered samples (more than a whole
-/// grid: it is never chosen while another corner is free of the pin).
-const PIN_PENALTY: u32 = 1000;
 /// The smallest text size (points) of a card beside the picture: narrower than that, the card
 /// goes over the picture instead.
 const BESIDE_MIN_TEXT: f32 = 16.0;

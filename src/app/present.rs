@@ -11,7 +11,7 @@ use egui::{Color32, RichText, Ui};
 
 use super::pixel::PixelReport;
 use crate::figure::overlay::{CLIP_POINT, vertex_color};
-use crate::probe::format::fmt_digits;
+use crate::probe::format::{fmt_column, fmt_digits};
 use crate::raster::Interpolation;
 
 /// What the card shows.
@@ -110,14 +110,14 @@ fn big(s: impl Into<String>, size: f32) -> RichText {
 }
 
 fn num(x: f64) -> String {
-    fmt_digits(x, DIGITS)
+    fmt_column(x, DIGITS)
 }
 
 fn pair(uv: [f32; 2]) -> String {
     format!(
         "({}, {})",
-        fmt_digits(f64::from(uv[0]), DIGITS),
-        fmt_digits(f64::from(uv[1]), DIGITS)
+        fmt_column(f64::from(uv[0]), DIGITS),
+        fmt_column(f64::from(uv[1]), DIGITS)
     )
 }
 

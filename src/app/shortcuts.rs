@@ -60,6 +60,9 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if key(Key::G) {
             state(Command::SetShowGrid(!view.show_grid));
         }
+        if key(Key::M) {
+            state(Command::SetShowMagnifier(!view.show_magnifier));
+        }
         if key(Key::H) {
             state(Command::SetShowHandles(!view.show_handles));
         }

@@ -37,6 +37,8 @@ pub struct ViewSettings {
     pub show_handles: bool,
     /// Draw the hovered or pinned pixel's sub-triangles (its barycentric areas).
     pub show_sub_areas: bool,
+    /// In presentation mode, show the pinned pixel and its neighbours enlarged.
+    pub show_magnifier: bool,
     /// Show the Controls side panel.
     pub show_controls: bool,
     /// Show the Inspector side panel.
@@ -68,6 +70,7 @@ impl Default for ViewSettings {
             show_grid: true,
             show_handles: true,
             show_sub_areas: false,
+            show_magnifier: true,
             show_controls: true,
             show_inspector: true,
             pinned: None,
@@ -177,6 +180,8 @@ pub enum Command {
     SetShowHandles(bool),
     /// Draw the sub-triangles of the hovered or pinned pixel, or not.
     SetShowSubAreas(bool),
+    /// Show the magnifier in presentation mode, or not.
+    SetShowMagnifier(bool),
     /// Show the Controls panel, or not.
     SetShowControls(bool),
     /// Show the Inspector panel, or not.
@@ -352,6 +357,7 @@ impl AppState {
             Command::SetShowGrid(b) => self.view.show_grid = b,
             Command::SetShowHandles(b) => self.view.show_handles = b,
             Command::SetShowSubAreas(b) => self.view.show_sub_areas = b,
+            Command::SetShowMagnifier(b) => self.view.show_magnifier = b,
             Command::SetShowControls(b) => self.view.show_controls = b,
             Command::SetShowInspector(b) => self.view.show_inspector = b,
             Command::SetUiScale(s) => {

@@ -8,8 +8,8 @@ use super::options::WHITE;
 use super::overlay::{self, HandleMark, Overlay, OverlayInput};
 use super::{
     Background, Compare, FigureOptions, MAX_FIGURE_SIZE, OVERLAY_SCALE_RANGE, SCALES, ViewContent,
-    heatmap, layout_points, modes_for, pixel_mark, text, vertices_on_screen, view_contents,
-    wipe_column, wipe_pixels,
+    clip_mark, heatmap, layout_points, modes_for, pixel_mark, text, vertices_on_screen,
+    view_contents, wipe_column, wipe_pixels,
 };
 use crate::probe::{PixelTrace, ProbeError, Prober};
 use crate::raster::project::Viewport;
@@ -313,6 +313,7 @@ impl Figure {
                 handles: handles.clone(),
                 hover: hovered.as_ref().map(pixel_mark),
                 pin: pinned.as_ref().map(pixel_mark),
+                clipped: pinned.as_ref().or(hovered.as_ref()).and_then(clip_mark),
                 sub_areas: o.show_sub_areas,
                 sub_area_fill: settings.shading != crate::raster::Shading::Texture,
                 wipe: (content == ViewContent::Wipe).then_some((

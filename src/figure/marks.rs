@@ -3,7 +3,7 @@
 
 use glam::{DVec2, DVec4};
 
-use super::overlay::{PixelMark, TriangleMark};
+use super::overlay::{ClipMark, PixelMark, TriangleMark};
 use crate::probe::PixelTrace;
 use crate::raster::project::{Viewport, ndc_from_clip, window_from_ndc};
 use crate::scene::Scene;
@@ -64,6 +64,28 @@ pub fn triangle_mark(trace: &PixelTrace) -> Option<TriangleMark> {
                 .map(|vt| vt.index as usize)
         }),
         weights: d.screen.rasterizer,
+    })
+}
+
+/// The polygon the clipper left of the traced pixel's triangle, in window coordinates (the
+/// viewport transform of each corner's clip position), when the clipper cut it.
+pub fn clip_mark(trace: &PixelTrace) -> Option<ClipMark> {
+    let c = trace.detail.as_ref()?.clipping.as_ref()?;
+    let viewport = Viewport {
+        width: trace.image_size[0],
+        height: trace.image_size[1],
+    };
+    let corners = c
+        .polygon
+        .iter()
+        .map(|v| {
+            let window = window_from_ndc(ndc_from_clip(DVec4::from(v.clip)), viewport);
+            (v.name.clone(), window.truncate(), v.source_vertex.is_none())
+        })
+        .collect();
+    Some(ClipMark {
+        corners,
+        fan: c.fan_triangle,
     })
 }
 

@@ -39,7 +39,7 @@ pub mod text;
 pub use compare::{Compare, ViewContent, modes_for, view_contents, wipe_column, wipe_pixels};
 pub use compose::{Figure, FigureError, FigureView};
 pub use marks::{
-    FLAT_W_TOLERANCE, MIN_HANDLE_W, VertexOnScreen, common_w, pixel_mark, triangle_mark,
+    FLAT_W_TOLERANCE, MIN_HANDLE_W, VertexOnScreen, clip_mark, common_w, pixel_mark, triangle_mark,
     vertices_on_screen,
 };
 pub use options::{

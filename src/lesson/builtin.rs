@@ -11,12 +11,16 @@ pub const SCENE_PREFIX: &str = "builtin:";
 pub const LESSON: &str = include_str!("../../assets/lessons/interpolation.json");
 
 /// The scenes of `assets/scenes/` that need no other file (built-in textures only), by name.
-pub const SCENES: [(&str, &str); 11] = [
+pub const SCENES: [(&str, &str); 12] = [
     ("default", include_str!("../../assets/scenes/default.json")),
     ("front", include_str!("../../assets/scenes/front.json")),
     (
         "corner-behind",
         include_str!("../../assets/scenes/corner-behind.json"),
+    ),
+    (
+        "near-cut",
+        include_str!("../../assets/scenes/near-cut.json"),
     ),
     (
         "rgbw-2x2",

@@ -40,6 +40,17 @@ pub struct PixelMark {
     pub triangle: Option<TriangleMark>,
 }
 
+/// The polygon the clipper left of a marked pixel's triangle: its corners in order, with
+/// their names (a source letter, or K1, K2, ... for a point the clipper made) and unsnapped
+/// window positions, and the fan triangle the pixel lies in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipMark {
+    /// The corners: name, window position, whether the clipper made it.
+    pub corners: Vec<(String, DVec2, bool)>,
+    /// Polygon indices of the fan triangle the pixel's weights refer to.
+    pub fan: [usize; 3],
+}
+
 /// What the overlay of one view shows.
 #[derive(Clone, Debug, PartialEq)]
 pub struct OverlayInput {
@@ -59,6 +70,9 @@ pub struct OverlayInput {
     pub hover: Option<PixelMark>,
     /// The pinned pixel (marker, triangle, sub-triangles).
     pub pin: Option<PixelMark>,
+    /// The clipped polygon of the marked pixel's triangle (the pinned one's, else the
+    /// hovered one's), when the clipper cut it.
+    pub clipped: Option<ClipMark>,
     /// Draw the marked pixel's sub-triangles.
     pub sub_areas: bool,
     /// Fill the sub-triangles (tinted); off, they are outlines only, so a texture under them

@@ -5,8 +5,8 @@
 use glam::DVec2;
 
 use super::{
-    Anchor, CLIP_POINT, HANDLE_RADIUS, HandleMark, LABEL_BG, NEGATIVE, Rgba, SHADOW,
-    SUB_AREA_ALPHA, Shape, Stroke, TEXT_LABEL, TEXT_SMALL, TriangleMark, centre_of, text,
+    Anchor, CLIP_POINT, ClipMark, HANDLE_RADIUS, HandleMark, LABEL_BG, LABEL_TEXT, NEGATIVE, Rgba,
+    SHADOW, SUB_AREA_ALPHA, Shape, Stroke, TEXT_LABEL, TEXT_SMALL, TriangleMark, centre_of, text,
     vertex_color, vertex_name, with_alpha,
 };
 
@@ -48,6 +48,59 @@ pub(super) fn triangle_shapes(
         stroke: Some(Stroke::new(3.0, TRIANGLE_OUTLINE)),
         dashed: false,
     });
+}
+
+/// The clipped polygon: its outline and the fan's inner edges dashed, and each corner the
+/// clipper made marked and named (K1, K2, ...), its label on the side away from the
+/// polygon's centre.
+pub(super) fn clip_shapes(shapes: &mut Vec<Shape>, c: &ClipMark) {
+    let n = c.corners.len();
+    if n < 3 {
+        return;
+    }
+    let points: Vec<DVec2> = c.corners.iter().map(|(_, p, _)| *p).collect();
+    for (width, color) in [(4.0, SHADOW), (2.0, CLIP_POINT)] {
+        shapes.push(Shape::Polygon {
+            points: points.clone(),
+            fill: [0, 0, 0, 0],
+            stroke: Some(Stroke::new(width, color)),
+            dashed: true,
+        });
+    }
+    // The fan from corner 0: its inner edges 0-2, 0-3, ..., 0-(n-2).
+    for k in 2..n - 1 {
+        shapes.push(Shape::Line {
+            points: vec![points[0], points[k]],
+            stroke: Stroke::new(1.5, CLIP_POINT),
+            dashed: true,
+        });
+    }
+    let centre = points.iter().sum::<DVec2>() / n as f64;
+    for (name, p, made) in &c.corners {
+        if !made {
+            continue;
+        }
+        shapes.push(Shape::Circle {
+            centre: *p,
+            radius: 6.0,
+            fill: CLIP_POINT,
+            stroke: Some(Stroke::new(2.0, SHADOW)),
+        });
+        let below = p.y >= centre.y;
+        shapes.push(Shape::Text {
+            at: *p,
+            offset: [0.0, if below { 10.0 } else { -10.0 }],
+            anchor: if below {
+                Anchor::CenterTop
+            } else {
+                Anchor::CenterBottom
+            },
+            text: name.clone(),
+            size: TEXT_LABEL,
+            color: LABEL_TEXT,
+            background: Some(LABEL_BG),
+        });
+    }
 }
 
 /// Colour of the marked pixel's triangle outline.

@@ -14,13 +14,15 @@ use crate::i18n::{Lang, tr};
 use crate::raster::Interpolation;
 
 mod inputs;
+mod magnifier;
 mod marks;
 mod shape;
 mod style;
 
-pub use inputs::{HandleMark, OverlayInput, PixelMark, TriangleMark};
+pub use inputs::{ClipMark, HandleMark, OverlayInput, PixelMark, TriangleMark};
+pub use magnifier::{MAGNIFIER_RADIUS, magnified_rect, magnifier};
 pub use marks::{SCIENTIFIC_W, behind_camera_note, format_w, is_triangle_outline, span_shapes};
-use marks::{behind_note, handle_shapes, pixel_marker, triangle_shapes};
+use marks::{behind_note, clip_shapes, handle_shapes, pixel_marker, triangle_shapes};
 pub use shape::{Anchor, Overlay, Shape, Stroke};
 pub use style::*;
 
@@ -172,6 +174,9 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
         let sub_areas = input.sub_areas.then_some(input.sub_area_fill);
         triangle_shapes(&mut shapes, &t, centre_of(mark.pixel), sub_areas);
     }
+    if let Some(c) = &input.clipped {
+        clip_shapes(&mut shapes, c);
+    }
     if let Some(pin) = input.pin {
         pixel_marker(&mut shapes, pin.pixel, PIN, wf, hf, false);
     }
@@ -250,6 +255,7 @@ mod tests {
             }],
             hover: None,
             pin: None,
+            clipped: None,
             sub_areas: true,
             sub_area_fill: true,
             wipe: None,

@@ -21,7 +21,7 @@ mod tests;
 mod text;
 
 pub use model::{Document, Inline, Item, M, Op, Section};
-pub use numbers::{OPERAND_DIGITS, SIGNIFICANT_DIGITS, fmt_digits, fmt_number};
+pub use numbers::{OPERAND_DIGITS, SIGNIFICANT_DIGITS, fmt_column, fmt_digits, fmt_number};
 pub use sections::{document, document_in, filter_name, mode_name, shading_name, wrap_name};
 
 use super::PixelTrace;

@@ -43,6 +43,41 @@ pub fn fmt_digits(x: f64, digits: i32) -> String {
     }
 }
 
+/// [`fmt_digits`] for a column of numbers: trailing zeros kept, so the digits line up
+/// (`0.2080` beside `0.3333`), except that a whole number stays whole (`1`, not `1.000`).
+///
+/// ```
+/// use barylab::probe::format::fmt_column;
+/// assert_eq!(fmt_column(0.208, 4), "0.2080");
+/// assert_eq!(fmt_column(0.015, 4), "0.01500");
+/// assert_eq!(fmt_column(1.0, 4), "1");
+/// assert_eq!(fmt_column(10.0, 4), "10");
+/// assert_eq!(fmt_column(-0.5, 4), "-0.5000");
+/// assert_eq!(fmt_column(0.0, 4), "0");
+/// assert_eq!(fmt_column(1.25e-9, 4), "1.25e-9");
+/// ```
+pub fn fmt_column(x: f64, digits: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return fmt_digits(x, digits);
+    }
+    let e = x.abs().log10().floor() as i32;
+    if !(-4..6).contains(&e) {
+        return fmt_digits(x, digits);
+    }
+    let decimals = (digits - 1 - e).max(0) as usize;
+    let s = format!("{x:.decimals$}");
+    match s.split_once('.') {
+        Some((whole, fraction)) if fraction.bytes().all(|b| b == b'0') => {
+            if whole == "-0" {
+                "0".into()
+            } else {
+                whole.into()
+            }
+        }
+        _ => s,
+    }
+}
+
 /// Mantissa and (for scientific notation) exponent of [`fmt_digits`].
 pub(super) fn split_number(x: f64, digits: i32) -> (String, Option<i32>) {
     if x == 0.0 {

@@ -1,0 +1,182 @@
+//! Where presentation mode puts a box over the picture (the card, the plot, the magnifier):
+//! the corner of the canvas that hides least of the scene.
+
+use super::BaryApp;
+use crate::figure::ViewContent;
+
+/// Points: the box around a handle where its letter and w label go.
+const LABELLED_HANDLE: egui::Vec2 = egui::vec2(150.0, 80.0);
+/// Points: the box at the image's bottom left where the note naming the corners behind the
+/// camera goes.
+const BEHIND_NOTE: egui::Vec2 = egui::vec2(420.0, 50.0);
+/// A corner over a handle's label, a title or the colour bar counts as this many covered
+/// samples.
+const MARK_PENALTY: u32 = 40;
+/// Samples per side of the grid that measures how much of the picture a card would hide.
+const CORNER_SAMPLES: usize = 12;
+/// A corner over the pinned pixel counts as this many covered samples (more than a whole
+/// grid: it is never chosen while another corner is free of the pin).
+const PIN_PENALTY: u32 = 1000;
+
+impl BaryApp {
+    /// The emptiest corner (as [`Self::emptiest_corner`]) for a box of `size` that overlaps
+    /// none of the boxes `taken`, if there is one.
+    pub(super) fn emptiest_corner_except(
+        &self,
+        area: egui::Rect,
+        size: egui::Vec2,
+        taken: &[egui::Rect],
+    ) -> Option<egui::Rect> {
+        self.corners_by_emptiness(area, size)
+            .into_iter()
+            .map(|(_, c)| c)
+            .find(|c| !taken.iter().any(|t| c.intersects(*t)))
+    }
+
+    /// The corner of the canvas `area` where a card of `size` hides least of the picture:
+    /// fewest covered pixels under it (sampled on a grid), never over the pinned pixel, in
+    /// the order top right, top left, bottom right, bottom left on a tie. It depends on the
+    /// render and the pin only (not on the hovered pixel), so the card does not jump about.
+    pub(super) fn emptiest_corner(&self, area: egui::Rect, size: egui::Vec2) -> egui::Rect {
+        self.corners_by_emptiness(area, size)[0].1
+    }
+
+    /// The four corners for a box of `size` in the canvas `area` with how much each hides
+    /// (covered samples plus penalties), the emptiest first (see [`Self::emptiest_corner`]).
+    fn corners_by_emptiness(&self, area: egui::Rect, size: egui::Vec2) -> Vec<(u32, egui::Rect)> {
+        let corners = [
+            egui::Rect::from_min_size(egui::pos2(area.max.x - size.x, area.min.y), size),
+            egui::Rect::from_min_size(area.min, size),
+            egui::Rect::from_min_size(area.max - size, size),
+            egui::Rect::from_min_size(egui::pos2(area.min.x, area.max.y - size.y), size),
+        ];
+        let Some(output) = &self.canvas.output else {
+            return corners.iter().map(|c| (0, *c)).collect();
+        };
+        let pinned = self.state.view.pinned;
+        let vertices = crate::figure::vertices_on_screen(&output.scene, output.viewport());
+        // The labelled points: the handles and the corners the clipper made (K1, K2, ...).
+        let clip = self
+            .reports
+            .pin
+            .as_ref()
+            .and_then(|r| crate::figure::clip_mark(&r.trace));
+        let marks: Vec<glam::DVec2> = vertices
+            .iter()
+            .filter_map(|v| v.window)
+            .chain(
+                clip.iter()
+                    .flat_map(|c| c.corners.iter().filter(|k| k.2).map(|k| k.1)),
+            )
+            .collect();
+        let behind = vertices.iter().any(|v| v.window.is_none());
+        let score = |card: &egui::Rect| -> u32 {
+            let mut covered = 0;
+            for view in &self.canvas.views {
+                // The handles with their w labels, the title strip and the colour bar count
+                // as picture too.
+                for v in &marks {
+                    let at = view.transform.to_screen(*v);
+                    let label = egui::Rect::from_center_size(at, LABELLED_HANDLE);
+                    if label.intersects(*card) {
+                        covered += MARK_PENALTY;
+                    }
+                }
+                // The note naming the corners behind the camera, at the image's bottom left.
+                let note = egui::Rect::from_min_max(
+                    egui::pos2(view.rect.min.x, view.rect.max.y - BEHIND_NOTE.y),
+                    egui::pos2(view.rect.min.x + BEHIND_NOTE.x, view.rect.max.y),
+                );
+                if behind && note.intersects(*card) {
+                    covered += MARK_PENALTY;
+                }
+                let title = egui::Rect::from_min_max(
+                    egui::pos2(view.rect.min.x, view.area.min.y),
+                    egui::pos2(view.rect.max.x, view.rect.min.y),
+                );
+                if title.height() > 1.0 && title.intersects(*card) {
+                    covered += MARK_PENALTY;
+                }
+                if view.content == ViewContent::Difference {
+                    let bar = egui::Rect::from_min_max(
+                        egui::pos2(view.rect.max.x, view.rect.min.y),
+                        egui::pos2(
+                            view.rect.max.x + crate::figure::overlay::COLOR_BAR_ROOM,
+                            view.rect.max.y,
+                        ),
+                    );
+                    if bar.intersects(*card) {
+                        covered += 2 * MARK_PENALTY;
+                    }
+                }
+                let mode = match view.content {
+                    ViewContent::Mode(m) => m,
+                    _ => self.state.options().mode,
+                };
+                let Some(render) = output.render(mode) else {
+                    continue;
+                };
+                let frame = &render.frame;
+                let part = card.intersect(view.rect);
+                if !part.is_positive() {
+                    continue;
+                }
+                if let Some([px, py]) = pinned {
+                    let centre = view
+                        .transform
+                        .to_screen(glam::DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
+                    if part.expand(8.0).contains(centre) {
+                        covered += PIN_PENALTY;
+                    }
+                }
+                let steps = CORNER_SAMPLES as f32;
+                for j in 0..CORNER_SAMPLES {
+                    for i in 0..CORNER_SAMPLES {
+                        let p = part.min
+                            + egui::vec2(
+                                (i as f32 + 0.5) / steps * part.width(),
+                                (j as f32 + 0.5) / steps * part.height(),
+                            );
+                        let c = view.transform.to_canvas(p);
+                        let (x, y) = (c.x.floor(), c.y.floor());
+                        if x < 0.0 || y < 0.0 {
+                            continue;
+                        }
+                        let (x, y) = (x as usize, y as usize);
+                        let width = frame.width as usize;
+                        if x < width && frame.depth.get(y * width + x).is_some_and(|d| *d < 1.0) {
+                            covered += 1;
+                        }
+                    }
+                }
+            }
+            covered
+        };
+        // A stable sort: on a tie the order above.
+        let mut scored: Vec<(u32, egui::Rect)> = corners.iter().map(|c| (score(c), *c)).collect();
+        scored.sort_by_key(|(s, _)| *s);
+        scored
+    }
+}
+
+impl BaryApp {
+    /// A corner for a box of `size` in the canvas `area` that overlaps none of `taken` and
+    /// hides no mark and at most a few samples of the picture ([`FREE_CORNER`]), if there is
+    /// one: for boxes the lecture can do without (the magnifier).
+    pub(super) fn free_corner(
+        &self,
+        area: egui::Rect,
+        size: egui::Vec2,
+        taken: &[egui::Rect],
+    ) -> Option<egui::Rect> {
+        self.corners_by_emptiness(area, size)
+            .into_iter()
+            .find(|(_, c)| !taken.iter().any(|t| c.intersects(*t)))
+            .filter(|(score, _)| *score <= FREE_CORNER)
+            .map(|(_, c)| c)
+    }
+}
+
+/// The most a box the lecture can do without may hide: this many covered samples of the
+/// [`CORNER_SAMPLES`]² grid (a tenth), and no mark.
+const FREE_CORNER: u32 = 14;
