@@ -350,7 +350,8 @@ fn presenting_magnifies_the_pinned_pixel_where_a_corner_is_free_and_m_hides_it()
     let mut h = harness([1920.0, 1080.0], options);
     settle(&mut h);
     assert!(
-        h.query_by_label_contains("Pixel 400, 420 enlarged").is_some(),
+        h.query_by_label_contains("Pixel 400, 420 enlarged")
+            .is_some(),
         "the magnifier names the pinned pixel"
     );
     h.key_press(egui::Key::M);

@@ -203,10 +203,22 @@ fn numbers_quoted_in_the_builtin_lesson_are_the_probes() {
     assert_eq!(names, ["K1", "B", "C", "K2"]);
     let [w, h] = t16.image_size.map(f64::from);
     for (name, p, made) in &mark.corners {
-        assert!(p.x > 0.0 && p.x < w && p.y > 0.0 && p.y < h, "{name} at {p}");
+        assert!(
+            p.x > 0.0 && p.x < w && p.y > 0.0 && p.y < h,
+            "{name} at {p}"
+        );
         assert_eq!(*made, name.starts_with('K'));
     }
     assert!((mark.corners[0].1.y - mark.corners[3].1.y).abs() < 1e-9);
+    // Step 17: the pinned pixel on the tetrahedron's face A B D (c = 0), its three weights.
+    let t17 = probe_step(17);
+    let d = t17.detail.as_ref().expect("covered");
+    let names: Vec<&str> = d.vertices.iter().map(|v| v.name.as_str()).collect();
+    assert_eq!(names, ["A", "B", "D"]);
+    let p = d.perspective.expect("perspective-correct");
+    for w in p.renderer_weights {
+        quotes(17, w);
+    }
     let uv9 = attribute(&t9).uv_affine;
     let uv12 = attribute(&t12).uv_perspective;
     assert_eq!(fmt(f64::from(uv9[0])), fmt(f64::from(uv12[0])));

@@ -255,7 +255,8 @@ fn table_ui(
     }
 }
 
-/// 1/W_P and W_P, the depth, uv both ways (the mode's in the accent colour).
+/// 1/W_P and W_P, the depth, uv both ways (the mode's in the accent colour) when the picture
+/// is textured.
 fn lines_ui(
     ui: &mut Ui,
     r: &PixelReport,
@@ -282,7 +283,9 @@ fn lines_ui(
             size,
         ));
     }
-    if let Some(a) = &d.attribute {
+    // uv only where a texture shows it (a vertex-colour or weights picture has none to read).
+    let textured = r.trace.settings.shading == crate::raster::Shading::Texture;
+    if let Some(a) = d.attribute.as_ref().filter(|_| textured) {
         let strong = |t: RichText, on: bool| if on { t.color(ACCENT) } else { t };
         ui.label(strong(
             big(

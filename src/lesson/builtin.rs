@@ -11,7 +11,7 @@ pub const SCENE_PREFIX: &str = "builtin:";
 pub const LESSON: &str = include_str!("../../assets/lessons/interpolation.json");
 
 /// The scenes of `assets/scenes/` that need no other file (built-in textures only), by name.
-pub const SCENES: [(&str, &str); 12] = [
+pub const SCENES: [(&str, &str); 13] = [
     ("default", include_str!("../../assets/scenes/default.json")),
     ("front", include_str!("../../assets/scenes/front.json")),
     (
@@ -21,6 +21,10 @@ pub const SCENES: [(&str, &str); 12] = [
     (
         "near-cut",
         include_str!("../../assets/scenes/near-cut.json"),
+    ),
+    (
+        "tetrahedron",
+        include_str!("../../assets/scenes/tetrahedron.json"),
     ),
     (
         "rgbw-2x2",
