@@ -180,7 +180,12 @@ impl BaryApp {
         let window = ui.ctx().content_rect();
         if let Some(width) = beside_width(rect, aspect, compare, framing, window) {
             self.canvas.avoid.clear();
-            let input = self.card_input(present::card_text_for_width(width));
+            let size = present::card_text_for_width(width);
+            let input = self.card_input(size);
+            let magnifier = magnifier.map(|m| magnifier::MagnifierInput {
+                text_size: size,
+                ..m
+            });
             egui::Panel::right("present-card")
                 .frame(
                     egui::Frame::new()
@@ -234,11 +239,7 @@ impl BaryApp {
         self.canvas_panel(ui, texture, framing, out);
         // Over the picture: as wide as a share of the canvas allows, in its emptiest corner.
         let area = self.canvas.area.unwrap_or(rect);
-        let size = present::card_text_for_width(
-            (OVER_CARD_SHARE * area.width())
-                .max(present::card_width_for_text(present::CARD_TEXT_RANGE.0)),
-        )
-        .min(OVER_MAX_TEXT);
+        let size = over_text(area.width());
         let width = present::card_width_for_text(size).min(area.width());
         let corner = self.emptiest_corner(
             area,
@@ -399,9 +400,19 @@ const OVER_MAX_TEXT: f32 = 26.0;
 
 /// The card over the picture takes this share of the canvas's width.
 const OVER_CARD_SHARE: f32 = 0.42;
-/// The smallest text size (points) of a card beside the picture: narrower than that, the card
-/// goes over the picture instead.
+/// The smallest text size (points) of a card beside the picture, unless a card over the
+/// picture would have smaller text still ([`over_text`]): narrower than that, the card goes
+/// over the picture instead.
 const BESIDE_MIN_TEXT: f32 = 16.0;
+
+/// The text size of the card over a canvas `width` points wide: a share of the width, within
+/// the card's range.
+fn over_text(width: f32) -> f32 {
+    present::card_text_for_width(
+        (OVER_CARD_SHARE * width).max(present::card_width_for_text(present::CARD_TEXT_RANGE.0)),
+    )
+    .min(OVER_MAX_TEXT)
+}
 /// The largest share of the window's width a card beside the picture takes.
 const BESIDE_MAX_SHARE: f32 = 0.36;
 
@@ -465,7 +476,9 @@ fn beside_width(
         - super::canvas_layout::HANDLE_MARGIN;
     let image = views * height.max(0.0) * aspect + 2.0 * margin;
     let free = rect.width() - image;
-    let least = present::card_width_for_text(BESIDE_MIN_TEXT);
+    // Beside is better than over whenever its text is no smaller than the card over the
+    // picture would have (a square picture leaves columns at both sides).
+    let least = present::card_width_for_text(BESIDE_MIN_TEXT.min(over_text(rect.width())));
     if free >= least {
         return Some(free.min(BESIDE_MAX_SHARE * rect.width()).max(least));
     }
@@ -473,11 +486,17 @@ fn beside_width(
     // window (a wide screen: the card beside hides nothing).
     let width = (rect.width() - least - 2.0 * margin) / views;
     let shown = views * width.max(0.0) * (width.max(0.0) / aspect).min(height.max(0.0));
-    (shown >= BESIDE_KEEP * window.area()).then_some(least)
+    // Or a narrow picture (a square one on a 4:3 projector) that keeps most of its size: the
+    // card beside it hides nothing, over it the card would hide a good part of it.
+    let full = height.max(0.0) * aspect;
+    let keeps = width.max(0.0).min(full) >= BESIDE_SHRINK * full;
+    (shown >= BESIDE_KEEP * window.area() || keeps).then_some(least)
 }
 
 /// The share of the window the picture keeps when it narrows for the card beside it.
 const BESIDE_KEEP: f32 = 0.5;
+/// Or the share of its own width a picture keeps when it narrows for the card beside it.
+const BESIDE_SHRINK: f32 = 0.8;
 
 /// An open side panel's first row: its name and a button that folds it to a strip (so a panel
 /// opened on a small window, where the canvas gave way, is as easily put away).
