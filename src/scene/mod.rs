@@ -463,6 +463,7 @@ impl Scene {
         };
         RenderSettings {
             rasterizer: Default::default(),
+            samples: Default::default(),
             tie_rule,
             width,
             height,
