@@ -363,3 +363,37 @@ fn the_grid_pattern_has_no_eight_samples() {
     .expect_err("grid of 8");
     assert!(err.to_string().contains("grid"), "{err}");
 }
+
+/// Depth is tested per sample, at each sample's own position, even when MSAA shades once:
+/// triangle 0's window depth grows as x / 12 across the image, triangle 1 (drawn after) is
+/// flat at 4.6 / 12. In pixel 4 the samples at x = 4.875 and 4.625 (1 and 3) see triangle 1
+/// nearer, those at 4.375 and 4.125 (0 and 2) triangle 0; at the centre (4.5) triangle 0 is.
+/// (Pixel (4, 1) lies in the quad half A B C, triangle 0.)
+#[test]
+fn depth_is_tested_at_every_sample() {
+    let mut m = mesh(
+        &[
+            (0.0, 0.0, 1.0),
+            (12.0, 0.0, 1.0),
+            (12.0, 10.0, 1.0),
+            (0.0, 10.0, 1.0),
+            (0.0, 0.0, 1.0),
+            (12.0, 0.0, 1.0),
+            (12.0, 10.0, 1.0),
+        ],
+        vec![[0, 1, 2], [0, 2, 3], [4, 5, 6]],
+    );
+    for (i, v) in m.vertices.iter_mut().enumerate() {
+        // Window depth d = (z_ndc + 1) / 2 with w = 1.
+        let d = if i < 4 {
+            v.clip.x * 0.5 + 0.5
+        } else {
+            4.6 / 12.0
+        };
+        v.clip.z = 2.0 * d - 1.0;
+    }
+    let s = with(count(SampleCount::Four, SamplePattern::Standard));
+    let (_, samples) = render_samples(&m, &white(), &s).expect("render");
+    let owners: Vec<u32> = samples.pixel(4, 1).iter().map(|v| v.triangle).collect();
+    assert_eq!(owners, [0, 2, 0, 2]);
+}
