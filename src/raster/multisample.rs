@@ -9,7 +9,7 @@
 //! written to every covered sample that passes the depth test, each with its own depth
 //! `sum l_i d_i` at the sample; under supersampling, or at the `sample` location, every
 //! covered sample interpolated and shaded at its own position. The render driver
-//! ([`render`](super::render)) sends a multisampled render here and a single-sample one to
+//! ([`render`](mod@super::render)) sends a multisampled render here and a single-sample one to
 //! the usual path, which stays as it was.
 
 use glam::{DVec2, I64Vec2};
