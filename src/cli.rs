@@ -5,6 +5,9 @@ use std::process::ExitCode;
 
 use anyhow::Result;
 use barylab::probe::format::Format;
+use barylab::raster::sample::{
+    Location, ProvokingVertex, SampleCount, SamplePattern, SampleSettings, ShadingRate,
+};
 use barylab::raster::{self, Filter, Interpolation, Shading};
 use barylab::scene::Scene;
 use clap::{Parser, Subcommand, ValueEnum};
@@ -508,6 +511,42 @@ struct SceneOptions {
     /// Vulkan drivers) (default: the scene's, else llvmpipe).
     #[arg(long, value_name = "RULE")]
     tie_rule: Option<TieRuleArg>,
+    /// Samples per pixel: 1, 4, 8 or 16 (default: the scene's, else 1).
+    #[arg(long, value_parser = parse_samples, value_name = "N")]
+    samples: Option<SampleCount>,
+    /// Where the samples lie: standard (the GL's positions) or grid (GAMES101's 2x2, or 4x4)
+    /// (default: the scene's, else standard).
+    #[arg(long, value_parser = parse_named::<SamplePattern>, value_name = "PATTERN")]
+    sample_pattern: Option<SamplePattern>,
+    /// msaa (one shading per pixel and triangle) or ssaa (every sample shaded) (default: the
+    /// scene's, else msaa).
+    #[arg(long, value_parser = parse_named::<ShadingRate>, value_name = "RATE")]
+    shading_rate: Option<ShadingRate>,
+    /// Where MSAA evaluates values: center, centroid or sample (default: the scene's, else
+    /// center).
+    #[arg(long, value_parser = parse_named::<Location>, value_name = "LOCATION")]
+    location: Option<Location>,
+    /// Every attribute flat: the provoking vertex's value.
+    #[arg(long)]
+    flat: bool,
+    /// The provoking vertex of --flat: last (OpenGL's default) or first (default: the
+    /// scene's, else last).
+    #[arg(long, value_parser = parse_named::<ProvokingVertex>, value_name = "VERTEX")]
+    provoking_vertex: Option<ProvokingVertex>,
+}
+
+impl SceneOptions {
+    /// The scene's samples with these options applied.
+    fn samples(&self, scene: &SampleSettings) -> SampleSettings {
+        SampleSettings {
+            count: self.samples.unwrap_or(scene.count),
+            pattern: self.sample_pattern.unwrap_or(scene.pattern),
+            rate: self.shading_rate.unwrap_or(scene.rate),
+            location: self.location.unwrap_or(scene.location),
+            flat: self.flat || scene.flat,
+            provoking: self.provoking_vertex.unwrap_or(scene.provoking),
+        }
+    }
 }
 
 /// Parses the arguments; usage errors are reported on one line (clap's first line).

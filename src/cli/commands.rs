@@ -30,11 +30,20 @@ pub(super) fn prepare(
     if let Some(rule) = o.tie_rule {
         scene.set_tie_rule(rule.into());
     }
+    let samples = o.samples(&scene.samples());
+    samples.check().map_err(anyhow::Error::msg)?;
+    scene.set_samples(samples);
     // What drawing it takes (the probe and the figure set up every triangle too), before the
     // texture is read.
     let (w, h) = scene.size();
     let (vertices, triangles) = scene.mesh_size();
-    barylab::raster::footprint::check_render(w, h, raster::Buffers::All, vertices, triangles)?;
+    barylab::raster::footprint::check_render_samples(
+        (w, h),
+        raster::Buffers::All,
+        &samples,
+        vertices,
+        triangles,
+    )?;
     let (texture, texture_notes) = scene.load_texture_noted(&base_dir)?;
     let mut settings = scene.settings();
     if let Some(m) = o.mode {

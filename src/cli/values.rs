@@ -19,6 +19,22 @@ impl From<TieRuleArg> for raster::setup::TieRule {
     }
 }
 
+/// `--samples N`: 1, 4, 8 or 16.
+pub(super) fn parse_samples(s: &str) -> Result<SampleCount, String> {
+    let n: u32 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number of samples: expected 1, 4, 8 or 16"))?;
+    SampleCount::try_from(n)
+}
+
+/// A value named as in scene files (`grid`, `ssaa`, `centroid`, `first`, ...), through the
+/// type's own serde names, so the command line and the scene file accept the same words.
+pub(super) fn parse_named<T: serde::de::DeserializeOwned>(s: &str) -> Result<T, String> {
+    serde_json::from_value(serde_json::Value::String(s.trim().to_string()))
+        .map_err(|e| e.to_string())
+}
+
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub(super) enum FormatArg {
     Text,

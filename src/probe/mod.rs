@@ -27,9 +27,11 @@
 
 mod detail;
 pub mod format;
+mod samples;
 mod trace;
 pub mod weights;
 
+pub use samples::{SampleShading, SampleTrace, TriangleSamples};
 pub use trace::*;
 
 use glam::{DMat4, DVec2, DVec3};
@@ -342,7 +344,12 @@ impl<'a> Prober<'a> {
             self.detail(&sampled, test, writes, window, ndc)
         });
 
+        let (samples, sample_shading) = self.samples(x, y).unzip();
+        // With samples, the pixel is their resolve.
+        let color = sample_shading.as_ref().map_or(color, |s| s.resolved);
         Ok(PixelTrace {
+            samples: samples.unwrap_or_default(),
+            sample_shading,
             pixel: [x, y],
             image_size: [width, height],
             settings: TraceSettings {

@@ -39,8 +39,17 @@ pub struct PixelTrace {
     /// The full derivation for the triangle that wrote the pixel or, for an uncovered pixel,
     /// the nearest drawn triangle (largest smallest weight). `None` if nothing was drawn.
     pub detail: Option<TriangleTrace>,
-    /// The final RGBA colour in the framebuffer: equal to the rendered image's pixel.
+    /// The final RGBA colour in the framebuffer: equal to the rendered image's pixel (with
+    /// samples, their resolve).
     pub color: [u8; 4],
+    /// The pixel's samples in index order, when the render has more than one per pixel or
+    /// `flat` attributes (empty, and absent from the JSON, otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub samples: Vec<super::SampleTrace>,
+    /// What decided the samples: the rate, the location, where each triangle was shaded,
+    /// the resolve (absent without samples).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sample_shading: Option<super::SampleShading>,
 }
 
 /// The render settings the trace was made with.

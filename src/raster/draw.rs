@@ -103,6 +103,36 @@ pub(super) fn draw_scanline_lanes(
     lanes.scanline_triangle(tri, rows, &mut target);
 }
 
+/// Writes a fragment that passed the depth test at index `i` of a band into the per-pixel
+/// buffers the band has beyond colour and depth: the texel difference of its two uvs (for a
+/// texture of `texels` texels), the triangle and both uvs, the facing, both weights and 1/w.
+pub(super) fn write_buffers(
+    band: &mut RowBand<'_>,
+    i: usize,
+    (setup, source): (&TriangleSetup, u32),
+    frag: &Fragment,
+    texels: (u32, u32),
+) {
+    if !band.texel_difference.is_empty() {
+        band.texel_difference[i] = texel_difference(
+            frag.affine.uv().to_array(),
+            frag.correct.uv().to_array(),
+            texels,
+        );
+    }
+    if !band.uv_affine.is_empty() {
+        band.triangle[i] = source;
+        band.uv_affine[i] = frag.affine.uv().to_array();
+        band.uv_perspective[i] = frag.correct.uv().to_array();
+    }
+    if band.has_aovs() {
+        band.facing[i] = setup.facing;
+        band.weights_screen[i] = frag.affine.bary();
+        band.weights_perspective[i] = frag.correct.bary();
+        band.inv_w[i] = frag.inv_w as f32;
+    }
+}
+
 /// Visits every covered pixel centre of one set-up triangle within a band, depth-tests and
 /// writes it; where the band has no per-pixel buffers beyond the uv or texel-difference ones,
 /// the lanes draw at the vector level `vector`.
@@ -144,24 +174,7 @@ pub(super) fn rasterize(
         if !diffs {
             band.color[i] = shade(&frag, texture, params, &wire);
         }
-        if diffs {
-            band.texel_difference[i] = texel_difference(
-                frag.affine.uv().to_array(),
-                frag.correct.uv().to_array(),
-                texels,
-            );
-        }
-        if uvs {
-            band.triangle[i] = source;
-            band.uv_affine[i] = frag.affine.uv().to_array();
-            band.uv_perspective[i] = frag.correct.uv().to_array();
-        }
-        if aovs {
-            band.facing[i] = setup.facing;
-            band.weights_screen[i] = frag.affine.bary();
-            band.weights_perspective[i] = frag.correct.bary();
-            band.inv_w[i] = frag.inv_w as f32;
-        }
+        write_buffers(band, i, (setup, source), &frag, texels);
     };
     let lane_shading = lane_shading(params);
     if !aovs {

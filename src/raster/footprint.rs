@@ -6,7 +6,9 @@
 use super::fast::{ProjectedVertex, Slot};
 use super::framebuffer::Buffers;
 use super::mesh::MeshVertex;
+use super::multisample::SampleValue;
 use super::prepare::PreparedTriangle;
+use super::sample::SampleSettings;
 use super::setup::TriangleSetup;
 use crate::budget;
 
@@ -40,7 +42,18 @@ pub fn render_need(
         + triangles as u64 * (per_triangle + size_of::<[u32; 3]>() as u64)
 }
 
-/// Checks a render before it starts; `what` is named in the message.
+/// What the samples of a render add: `width * height * n` sample values ([`SampleValue`])
+/// for `n` samples a pixel when the sample path draws; nothing otherwise (the single-sample
+/// path keeps none).
+pub fn sample_need(width: u32, height: u32, samples: &SampleSettings) -> u64 {
+    if !samples.uses_sample_path() {
+        return 0;
+    }
+    let n = samples.count.get() as u64;
+    u64::from(width) * u64::from(height) * n * size_of::<SampleValue>() as u64
+}
+
+/// Checks a single-sample render before it starts; `what` is named in the message.
 pub fn check_render(
     width: u32,
     height: u32,
@@ -48,12 +61,37 @@ pub fn check_render(
     vertices: usize,
     triangles: usize,
 ) -> Result<(), budget::MemoryError> {
+    check_render_samples(
+        (width, height),
+        buffers,
+        &SampleSettings::default(),
+        vertices,
+        triangles,
+    )
+}
+
+/// Checks a render with these sample settings before it starts: [`render_need`] plus
+/// [`sample_need`].
+pub fn check_render_samples(
+    (width, height): (u32, u32),
+    buffers: Buffers,
+    samples: &SampleSettings,
+    vertices: usize,
+    triangles: usize,
+) -> Result<(), budget::MemoryError> {
     budget::check(
         || {
             let t = if triangles == 1 { "" } else { "s" };
-            format!("a {width}x{height} render of {triangles} triangle{t}")
+            let n = samples.count.get();
+            let s = if n == 1 {
+                String::new()
+            } else {
+                format!(" with {n} samples a pixel")
+            };
+            format!("a {width}x{height} render of {triangles} triangle{t}{s}")
         },
-        render_need(width, height, buffers, vertices, triangles),
+        render_need(width, height, buffers, vertices, triangles)
+            + sample_need(width, height, samples),
     )
 }
 

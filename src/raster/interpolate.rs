@@ -66,6 +66,16 @@ pub struct Fragment {
 }
 
 impl Fragment {
+    /// The fragment with every attribute `flat`: both attribute sets take the provoking
+    /// vertex's values, exactly (no interpolation; the wireframe's edge weights stay).
+    pub fn flat(self, provoking: &Varyings) -> Self {
+        Self {
+            affine: *provoking,
+            correct: *provoking,
+            ..self
+        }
+    }
+
     /// The attributes the given mode uses.
     pub fn varyings(&self, mode: Interpolation) -> &Varyings {
         match mode {
@@ -110,13 +120,20 @@ pub fn fragment_from_weights(
         edges,
         screen: l,
         perspective: p,
-        depth: l[0] * setup.v[0].depth + l[1] * setup.v[1].depth + l[2] * setup.v[2].depth,
+        depth: depth_at(setup, &l),
         inv_w: l[0] * inv_w[0] + l[1] * inv_w[1] + l[2] * inv_w[2],
         affine: Varyings::weighted(&l, &noperspective),
         edge_weights: edge_weights(setup, &l),
         correct: Varyings::weighted(&p, &vars),
         lod: 0.0,
     })
+}
+
+/// Window depth z/w at screen weights `l`, linear on screen: `sum l_i d_i` (the depth of a
+/// fragment, and of each sample under multisampling).
+#[inline]
+pub fn depth_at(setup: &TriangleSetup, l: &[f64; 3]) -> f64 {
+    l[0] * setup.v[0].depth + l[1] * setup.v[1].depth + l[2] * setup.v[2].depth
 }
 
 /// [`Fragment::edge_weights`]: `sum_k l_k b_k` with `b_k` the source weights (`smooth`) of

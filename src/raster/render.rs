@@ -14,9 +14,10 @@
 use super::bands::bin_rows;
 use super::draw::rasterize;
 use super::fast::FastMesh;
-use super::footprint::check_render;
+use super::footprint::check_render_samples;
 use super::framebuffer::{Buffers, Framebuffer, RowBand};
 use super::lanes::VectorLevel;
+use super::multisample::{SampleBuffer, SampleContext, draw_frame};
 use super::shade::{ShadeParams, Shading, depth_range};
 use super::texture::Texture;
 
@@ -43,6 +44,9 @@ pub fn render(
     texture: &Texture,
     settings: &RenderSettings,
 ) -> Result<Render, RenderError> {
+    if settings.samples.uses_sample_path() {
+        return render_samples(mesh, texture, settings).map(|(render, _)| render);
+    }
     check_budget(mesh, settings, Buffers::All)?;
     let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
@@ -60,6 +64,57 @@ pub fn render(
     Ok(Render { frame, triangles })
 }
 
+/// Renders with every buffer and keeps every sample: the resolved image (each pixel the
+/// average of its samples; depth and the per-pixel buffers sample 0's) and the samples
+/// themselves ([`multisample`](super::multisample)). [`render`] draws a multisampled scene
+/// through here; with one sample it gives [`render`]'s single-sample image too.
+pub fn render_samples(
+    mesh: &ClipMesh,
+    texture: &Texture,
+    settings: &RenderSettings,
+) -> Result<(Render, SampleBuffer), RenderError> {
+    check_budget(mesh, settings, Buffers::All)?;
+    let triangles = prepare_triangles(mesh, settings)?;
+    let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All);
+    frame.resize(settings.width, settings.height, Buffers::All);
+    let samples = draw_samples(
+        mesh,
+        &triangles,
+        texture,
+        settings,
+        &mut frame,
+        ROWS_PER_BAND,
+    );
+    Ok((Render { frame, triangles }, samples))
+}
+
+/// The multisample drawing of prepared triangles into a sized `frame`, cleared first.
+fn draw_samples(
+    mesh: &ClipMesh,
+    triangles: &[PreparedTriangle],
+    texture: &Texture,
+    settings: &RenderSettings,
+    frame: &mut Framebuffer,
+    rows_per_band: u32,
+) -> SampleBuffer {
+    let params = shade_params(settings, triangles);
+    let offsets = settings.samples.offsets();
+    let ctx = SampleContext {
+        offsets: &offsets,
+        samples: settings.samples,
+        texture,
+        params: &params,
+    };
+    frame.clear(settings.background);
+    draw_frame(
+        (mesh, triangles),
+        &ctx,
+        frame,
+        rows_per_band,
+        settings.background,
+    )
+}
+
 /// Row `y` of [`render`]'s image, every buffer, as a framebuffer one row high: the same
 /// values (the same triangles in the same order, the same per-pixel code), for a plot of one
 /// row (the app's row plot) without rendering the other rows. A row outside the image is
@@ -75,6 +130,11 @@ pub fn render_row(
         ..*settings
     };
     check_budget(mesh, &row_settings, Buffers::All)?;
+    if settings.samples.uses_sample_path() {
+        // Every row, then the one asked for (a multisampled row plot is rare and small).
+        let (full, _) = render_samples(mesh, texture, settings)?;
+        return Ok(one_row(&full.frame, y, settings.background));
+    }
     let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
     let mut frame = Framebuffer::with_buffers(settings.width, 1, settings.background, Buffers::All);
@@ -134,6 +194,20 @@ pub fn render_into_at(
 ) -> Result<(), RenderError> {
     check_budget(mesh, settings, buffers)?;
     settings.check_size()?;
+    if settings.samples.uses_sample_path() {
+        // More than one sample per pixel: the multisample path, not the lanes.
+        let triangles = prepare_triangles(mesh, settings)?;
+        frame.resize(settings.width, settings.height, buffers);
+        draw_samples(
+            mesh,
+            &triangles,
+            texture,
+            settings,
+            frame,
+            FAST_ROWS_PER_BAND,
+        );
+        return Ok(());
+    }
     let prepared = FastMesh::prepare(mesh, settings.viewport(), settings.tie_rule);
     let mut params = shade_params(settings, &[]);
     // Only depth shading reads the range (a pass over every triangle).
@@ -160,14 +234,15 @@ fn check_budget(
     buffers: Buffers,
 ) -> Result<(), RenderError> {
     if settings.check_size().is_ok() {
-        check_render(
-            settings.width,
-            settings.height,
+        check_render_samples(
+            (settings.width, settings.height),
             buffers,
+            &settings.samples,
             mesh.vertices.len(),
             mesh.triangles.len(),
         )?;
     }
+    settings.samples.check().map_err(RenderError::BadSamples)?;
     Ok(())
 }
 
@@ -187,6 +262,27 @@ pub fn shade_params(settings: &RenderSettings, triangles: &[PreparedTriangle]) -
                 .flat_map(|s| s.v.iter().map(|v| v.depth)),
         ),
     }
+}
+
+/// Row `y` of `frame` as a frame one row high with every buffer (clear outside the image).
+fn one_row(frame: &Framebuffer, y: u32, background: [u8; 4]) -> Framebuffer {
+    let mut row = Framebuffer::with_buffers(frame.width, 1, background, Buffers::All);
+    if y < frame.height {
+        let r = frame.index(0, y)..frame.index(0, y) + frame.width as usize;
+        row.color.copy_from_slice(&frame.color[r.clone()]);
+        row.depth.copy_from_slice(&frame.depth[r.clone()]);
+        row.triangle.copy_from_slice(&frame.triangle[r.clone()]);
+        row.facing.copy_from_slice(&frame.facing[r.clone()]);
+        row.weights_screen
+            .copy_from_slice(&frame.weights_screen[r.clone()]);
+        row.weights_perspective
+            .copy_from_slice(&frame.weights_perspective[r.clone()]);
+        row.uv_affine.copy_from_slice(&frame.uv_affine[r.clone()]);
+        row.uv_perspective
+            .copy_from_slice(&frame.uv_perspective[r.clone()]);
+        row.inv_w.copy_from_slice(&frame.inv_w[r]);
+    }
+    row
 }
 
 /// Rows of the image each parallel task rasterizes. Every band draws the triangles that reach

@@ -1,9 +1,10 @@
-//! What a render is asked for: the image size, interpolation, texture, shading, rasterizer and
-//! tie rule ([`RenderSettings`]), and the errors that stop a render as a whole
+//! What a render is asked for: the image size, interpolation, texture, shading, rasterizer,
+//! tie rule and samples ([`RenderSettings`]), and the errors that stop a render as a whole
 //! ([`RenderError`]). Every stage's driver reads these; they depend on no driver.
 
 use super::interpolate::Interpolation;
 use super::project::{MAX_IMAGE_SIZE, Viewport};
+use super::sample::SampleSettings;
 use super::setup::TieRule;
 use super::shade::Shading;
 use super::texture::{Filter, Wrap};
@@ -46,6 +47,9 @@ pub struct RenderSettings {
     pub rasterizer: Rasterizer,
     /// Which triangle owns a pixel centre exactly on a shared edge.
     pub tie_rule: TieRule,
+    /// Samples per pixel, their pattern, the shading rate and the interpolation qualifiers
+    /// (the default: one sample at the centre, as GL without multisampling).
+    pub samples: SampleSettings,
 }
 
 /// The default background: a dark slate grey, opaque.
@@ -64,6 +68,7 @@ impl Default for RenderSettings {
             background: DEFAULT_BACKGROUND,
             rasterizer: Rasterizer::EdgeFunction,
             tie_rule: TieRule::Llvmpipe,
+            samples: SampleSettings::default(),
         }
     }
 }
@@ -103,6 +108,9 @@ pub enum RenderError {
         /// The height asked for.
         height: u32,
     },
+    /// The sample settings have no positions (the grid pattern with 8 samples).
+    #[error("{0}")]
+    BadSamples(String),
     /// The buffers would need more memory than the budget allows.
     #[error(transparent)]
     Memory(#[from] crate::budget::MemoryError),

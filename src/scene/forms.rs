@@ -1,6 +1,12 @@
 //! The three forms of a scene file: a world quad, raw clip-space vertices, an OBJ model.
 
 use super::*;
+use crate::raster::sample::{Location, ProvokingVertex, SampleCount, SamplePattern, ShadingRate};
+
+/// Whether a field holds its default (scene files leave such fields out).
+fn is_default<T: Default + PartialEq>(v: &T) -> bool {
+    *v == T::default()
+}
 
 /// Corner of the quad in the world form.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -79,6 +85,24 @@ pub struct WorldScene {
     /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
     #[serde(default, skip_serializing_if = "TieRule::is_default")]
     pub tie_rule: TieRule,
+    /// Samples per pixel: 1 (the default), 4, 8 or 16.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub samples: SampleCount,
+    /// Where the samples lie: `standard` (the GL's, the default) or `grid`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub sample_pattern: SamplePattern,
+    /// `msaa` (one shading per pixel and triangle, the default) or `ssaa` (every sample).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub shading_rate: ShadingRate,
+    /// Where MSAA evaluates values: `center` (the default), `centroid` or `sample`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub location: Location,
+    /// Every attribute `flat`: the provoking vertex's value (default false).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub flat: bool,
+    /// The provoking vertex of `flat`: `last` (OpenGL's default) or `first`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub provoking_vertex: ProvokingVertex,
 }
 
 /// A vertex of the raw clip-space form.
@@ -141,6 +165,24 @@ pub struct ClipScene {
     /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
     #[serde(default, skip_serializing_if = "TieRule::is_default")]
     pub tie_rule: TieRule,
+    /// Samples per pixel: 1 (the default), 4, 8 or 16.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub samples: SampleCount,
+    /// Where the samples lie: `standard` (the GL's, the default) or `grid`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub sample_pattern: SamplePattern,
+    /// `msaa` (one shading per pixel and triangle, the default) or `ssaa` (every sample).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub shading_rate: ShadingRate,
+    /// Where MSAA evaluates values: `center` (the default), `centroid` or `sample`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub location: Location,
+    /// Every attribute `flat`: the provoking vertex's value (default false).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub flat: bool,
+    /// The provoking vertex of `flat`: `last` (OpenGL's default) or `first`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub provoking_vertex: ProvokingVertex,
 }
 
 /// The model form: an OBJ file seen by a camera.
@@ -181,6 +223,24 @@ pub struct ModelScene {
     /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
     #[serde(default, skip_serializing_if = "TieRule::is_default")]
     pub tie_rule: TieRule,
+    /// Samples per pixel: 1 (the default), 4, 8 or 16.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub samples: SampleCount,
+    /// Where the samples lie: `standard` (the GL's, the default) or `grid`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub sample_pattern: SamplePattern,
+    /// `msaa` (one shading per pixel and triangle, the default) or `ssaa` (every sample).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub shading_rate: ShadingRate,
+    /// Where MSAA evaluates values: `center` (the default), `centroid` or `sample`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub location: Location,
+    /// Every attribute `flat`: the provoking vertex's value (default false).
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub flat: bool,
+    /// The provoking vertex of `flat`: `last` (OpenGL's default) or `first`.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub provoking_vertex: ProvokingVertex,
     /// The loaded model (filled when the scene is loaded).
     #[serde(skip)]
     pub mesh: Arc<ModelMesh>,
@@ -202,6 +262,12 @@ impl ModelScene {
             wireframe: false,
             background: DEFAULT_BACKGROUND,
             tie_rule: TieRule::default(),
+            samples: SampleCount::default(),
+            sample_pattern: SamplePattern::default(),
+            shading_rate: ShadingRate::default(),
+            location: Location::default(),
+            flat: false,
+            provoking_vertex: ProvokingVertex::default(),
             mesh: Arc::new(ModelMesh::load(model_path)?),
         })
     }

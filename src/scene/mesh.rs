@@ -12,6 +12,7 @@ impl Scene {
                 &format!("image size {w}x{h} is outside 1..={MAX_IMAGE_SIZE} pixels per side"),
             ));
         }
+        self.check_samples(path)?;
         if self.texture_name().trim().is_empty() {
             let builtins: Vec<&str> = crate::raster::texture::BuiltinTexture::ALL
                 .iter()

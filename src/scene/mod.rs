@@ -30,6 +30,7 @@ use json::{parse_error, strict};
 mod forms;
 pub(crate) mod json;
 mod mesh;
+mod samples;
 
 use forms::default_texture;
 pub use forms::{ClipScene, ClipSceneVertex, Corner, ModelScene, Tilt, WorldScene};
@@ -302,6 +303,12 @@ impl Scene {
             wireframe: false,
             background: DEFAULT_BACKGROUND,
             tie_rule: TieRule::default(),
+            samples: Default::default(),
+            sample_pattern: Default::default(),
+            shading_rate: Default::default(),
+            location: Default::default(),
+            flat: false,
+            provoking_vertex: Default::default(),
         })
     }
 
@@ -463,6 +470,7 @@ impl Scene {
         };
         RenderSettings {
             rasterizer: Default::default(),
+            samples: self.samples(),
             tie_rule,
             width,
             height,

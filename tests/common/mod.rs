@@ -36,6 +36,7 @@ pub fn settings(width: u32, height: u32) -> RenderSettings {
         background: [0, 0, 0, 0],
         rasterizer: Default::default(),
         tie_rule: Default::default(),
+        samples: Default::default(),
     }
 }
 

@@ -11,6 +11,7 @@ mod depth;
 mod perspective;
 mod point;
 mod sample;
+mod samples;
 mod screen;
 mod settings;
 mod system;
@@ -228,6 +229,7 @@ pub fn document_in(trace: &PixelTrace, lang: Lang) -> Document {
     settings::settings_section(&mut b, trace);
     sample::sample_section(&mut b, trace);
     coverage::coverage_section(&mut b, trace);
+    samples::samples_section(&mut b, trace);
     if let Some(d) = &trace.detail {
         vertices::vertices_section(&mut b, trace, d);
         if d.clipping.is_some() {
