@@ -258,3 +258,30 @@ fn the_default_memory_limit_respects_the_address_space_limit() {
     ]));
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+#[test]
+fn a_refused_allocation_is_a_message_not_an_abort() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("o.png");
+    // The limit set by hand lets the 15 GiB render past the estimate; the system's 2 GiB
+    // address space refuses its first 1 GiB buffer past what the process holds. It aborted
+    // (exit 134, "memory allocation of ... failed") before.
+    let o = within_deadline(under_address_limit(2 << 30).args([
+        "render",
+        &scene("default.json"),
+        "--size",
+        "16384x16384",
+        "-o",
+        s(&out),
+        "--memory-limit",
+        "64G",
+    ]));
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.starts_with("error: cannot allocate 1.0 GiB for the 16384x16384 ")
+            && err.contains("buffer: the system refused the memory"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}

@@ -46,8 +46,8 @@ pub fn render(
     check_budget(mesh, settings, Buffers::All)?;
     let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
-    let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All);
-    frame.resize(settings.width, settings.height, Buffers::All);
+    let mut frame = Framebuffer::empty();
+    frame.resize(settings.width, settings.height, Buffers::All)?;
     rasterize_bands(
         &triangles,
         texture,
@@ -77,7 +77,8 @@ pub fn render_row(
     check_budget(mesh, &row_settings, Buffers::All)?;
     let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
-    let mut frame = Framebuffer::with_buffers(settings.width, 1, settings.background, Buffers::All);
+    let mut frame =
+        Framebuffer::with_buffers(settings.width, 1, settings.background, Buffers::All)?;
     let mut bands = RowBand::split(&mut frame, 1);
     if let Some(band) = bands.first_mut() {
         band.clear(settings.background);
@@ -140,7 +141,7 @@ pub fn render_into_at(
     if settings.shading == Shading::Depth {
         params.depth_range = prepared.depth_range();
     }
-    frame.resize(settings.width, settings.height, buffers);
+    frame.resize(settings.width, settings.height, buffers)?;
     prepared.rasterize(
         texture,
         &params,
@@ -273,7 +274,7 @@ mod tests {
                 .num_threads(threads)
                 .build()
                 .expect("thread pool");
-            let mut frame = Framebuffer::new(203, 157, settings.background);
+            let mut frame = Framebuffer::new(203, 157, settings.background).expect("small frame");
             pool.install(|| {
                 rasterize_bands(
                     &triangles,
