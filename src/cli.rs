@@ -10,6 +10,7 @@ use barylab::scene::Scene;
 use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::output::{self, note, print};
+use crate::progress_line::ProgressLine;
 
 mod commands;
 mod compare;
@@ -556,6 +557,15 @@ pub fn main() -> ExitCode {
     if let Some(bytes) = cli.memory_limit {
         barylab::budget::set_limit(bytes);
     }
+    // Long work shows a progress line on a terminal's standard error.
+    let progress = match &cli.command {
+        Some(Command::Render(_)) => ProgressLine::start("render"),
+        Some(Command::Bench(_)) => ProgressLine::start("bench"),
+        Some(Command::Figure(_)) => ProgressLine::start("figure"),
+        Some(Command::Compare(_)) => ProgressLine::start("compare"),
+        Some(Command::Lesson(_)) => ProgressLine::start("lesson"),
+        _ => None,
+    };
     let result = match cli.command {
         None => app(&cli),
         Some(Command::Render(args)) => commands::render(&args),
@@ -567,6 +577,7 @@ pub fn main() -> ExitCode {
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };
+    drop(progress);
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => output::report(&e),

@@ -11,7 +11,7 @@
 //! `fast.rs`'s, the bins `bands.rs`'s and the memory estimate
 //! [`footprint`](super::footprint)'s; none of them calls back into it.
 
-use super::bands::bin_rows;
+use super::bands::{RowsDrawn, bin_rows};
 use super::draw::rasterize;
 use super::fast::FastMesh;
 use super::footprint::check_render;
@@ -229,8 +229,10 @@ pub fn rasterize_bands(
                 .map(move |(si, s)| (ti as u32, si as u32, s.bounds.y0, s.bounds.y1))
         }),
     );
+    crate::progress::render_started(frame.height);
     let bands = RowBand::split(frame, rows_per_band);
     bands.into_par_iter().zip(bins).for_each(|(mut band, bin)| {
+        let _drawn = RowsDrawn(band.rows);
         if let Some(background) = clear {
             band.clear(background);
         }
