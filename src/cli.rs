@@ -584,24 +584,73 @@ pub fn main() -> ExitCode {
     }
 }
 
+/// The lesson of `--lesson` at `--step` (1-based; the first step without it), 0-based.
+fn open_lesson(
+    path: &std::path::Path,
+    step: Option<usize>,
+) -> Result<(barylab::lesson::Lesson, usize)> {
+    let lesson = barylab::lesson::Lesson::open(path)?;
+    let count = lesson.steps.len();
+    let step = step.unwrap_or(1);
+    if step == 0 || step > count {
+        anyhow::bail!(
+            "{}: --step {step}: the lesson has steps 1 to {count}",
+            lesson.shown_path()
+        );
+    }
+    Ok((lesson, step - 1))
+}
+
 /// Opens the app.
 fn app(cli: &Cli) -> Result<()> {
     if let Some(shot) = &cli.screenshot {
         output::check_output(shot, &["png"])?;
     }
     let system_lang = barylab::i18n::Lang::detect();
-    let opened = match &cli.scene {
-        Some(path) => {
-            let lang = cli.lang.unwrap_or(system_lang);
-            let opened = barylab::app::files::open(path, &Scene::default_scene(), lang)
-                .map_err(anyhow::Error::msg)?;
-            for n in &opened.notes {
-                note!("note: {n}");
-            }
-            Some(opened)
+    let lang = cli.lang.unwrap_or(system_lang);
+    // A file that cannot be opened stops a screenshot run (it must show what was asked for);
+    // the window starts on the default scene with the message instead, printed here too (a
+    // teacher who started the app from a file manager sees it in the window).
+    let mut startup_errors: Vec<String> = Vec::new();
+    let mut started = |e: anyhow::Error| -> Result<()> {
+        if cli.screenshot.is_some() {
+            return Err(e);
         }
+        note!("error: {}", output::one_line(&format!("{e:#}")));
+        startup_errors.push(format!("{e:#}"));
+        Ok(())
+    };
+    let opened = match &cli.scene {
+        Some(path) => match barylab::app::files::open(path, &Scene::default_scene(), lang) {
+            Ok(opened) => {
+                for n in &opened.notes {
+                    note!("note: {n}");
+                }
+                Some(opened)
+            }
+            Err(e) => {
+                started(anyhow::Error::msg(e))?;
+                None
+            }
+        },
         None => None,
     };
+    let lesson = match &cli.lesson {
+        Some(path) => match open_lesson(path, cli.step) {
+            Ok(lesson) => Some(lesson),
+            Err(e) => {
+                started(e)?;
+                None
+            }
+        },
+        None => None,
+    };
+    if let Some(path) = &cli.compare_image
+        && let Err(e) = barylab::app::compare_image::read_image(path, lang)
+    {
+        // The window shows it when it reads the image.
+        note!("error: {}", output::one_line(&e));
+    }
     let options = barylab::app::AppOptions {
         opened,
         scene: None,
@@ -615,21 +664,8 @@ fn app(cli: &Cli) -> Result<()> {
         system_lang,
         no_cjk_font: false,
         text_size: cli.text_size,
-        lesson: match &cli.lesson {
-            Some(path) => {
-                let lesson = barylab::lesson::Lesson::open(path)?;
-                let count = lesson.steps.len();
-                let step = cli.step.unwrap_or(1);
-                if step == 0 || step > count {
-                    anyhow::bail!(
-                        "{}: --step {step}: the lesson has steps 1 to {count}",
-                        lesson.shown_path()
-                    );
-                }
-                Some((lesson, step - 1))
-            }
-            None => None,
-        },
+        lesson,
+        startup_error: (!startup_errors.is_empty()).then(|| startup_errors.join("; ")),
         compare: cli.compare,
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,
