@@ -20,5 +20,8 @@ fn a_start_up_error_is_shown_over_the_default_scene() {
     );
     assert_eq!(h.state().message(), Some(e));
     assert_eq!(h.state().state().scene, Scene::default_scene());
-    assert!(h.state().canvas().output.is_some(), "the default scene is drawn");
+    assert!(
+        h.state().canvas().output.is_some(),
+        "the default scene is drawn"
+    );
 }

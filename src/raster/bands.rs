@@ -27,6 +27,15 @@ pub(super) fn bin_rows(
     }
 }
 
+/// Counts a band's rows as drawn ([`crate::progress`]) when the band is done.
+pub(super) struct RowsDrawn(pub(super) u32);
+
+impl Drop for RowsDrawn {
+    fn drop(&mut self) {
+        crate::progress::rows_drawn(self.0);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -45,14 +54,5 @@ mod tests {
             bins,
             vec![vec![(0, 0), (1, 0)], vec![(1, 0), (2, 1)], vec![(2, 1)]]
         );
-    }
-}
-
-/// Counts a band's rows as drawn ([`crate::progress`]) when the band is done.
-pub(super) struct RowsDrawn(pub(super) u32);
-
-impl Drop for RowsDrawn {
-    fn drop(&mut self) {
-        crate::progress::rows_drawn(self.0);
     }
 }
