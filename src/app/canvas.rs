@@ -102,7 +102,7 @@ pub struct CanvasState {
     /// What lies over the canvas (presentation mode's card, as placed last frame): labels
     /// keep clear of it where they can.
     pub avoid: Vec<Rect>,
-    /// The vertices whose handles were drawn last frame (at most [`MAX_HANDLES`] of them,
+    /// The vertices whose handles were drawn last frame (every one of a scene of at most 32,
     /// else only the pinned and hovered triangles' corners).
     pub handles: Vec<usize>,
 }
