@@ -32,7 +32,7 @@ fn matrix(c: &mut Criterion, name: &str, scene: &Scene) {
                 };
                 // Colour and depth into a reused framebuffer: what the app and `barylab bench`
                 // draw.
-                let mut frame = Framebuffer::new(0, 0, settings.background);
+                let mut frame = Framebuffer::empty();
                 group.bench_function(format!("{rasterizer:?}-{filter:?}-{mode:?}"), |b| {
                     b.iter(|| {
                         render_into(&mut frame, &mesh, &texture, &settings, Buffers::ColorDepth)
@@ -101,7 +101,7 @@ fn bench_small_triangles(c: &mut Criterion) {
             rasterizer,
             ..RenderSettings::default()
         };
-        let mut frame = Framebuffer::new(0, 0, settings.background);
+        let mut frame = Framebuffer::empty();
         group.bench_function(format!("{rasterizer:?}"), |b| {
             b.iter(|| {
                 render_into(&mut frame, &mesh, &texture, &settings, Buffers::ColorDepth)

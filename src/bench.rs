@@ -310,7 +310,7 @@ pub fn run_view(
     check_view_memory(mesh, &settings, view)?;
     let mut times = Vec::with_capacity(frames as usize);
     let mut images = ViewFrames {
-        images: [0, 1].map(|_| raster::Framebuffer::new(0, 0, settings.background)),
+        images: [0, 1].map(|_| raster::Framebuffer::empty()),
         heatmap: heatmap::Heatmap::default(),
     };
     for _ in 0..frames {

@@ -80,8 +80,12 @@ pub enum MemoryError {
         /// The variable's value, as shown in messages.
         value: String,
     },
-    /// The allocator refused the memory although the estimate was within the limit.
-    #[error("cannot allocate memory for {what} ({need})")]
+    /// The allocator refused the memory although the estimate was within the limit (the
+    /// system's own limits, `ulimit -v`, or the memory free now).
+    #[error(
+        "cannot allocate {need} for {what}: the system refused the memory; \
+         draw it smaller, or free memory and try again"
+    )]
     Allocation {
         /// What the memory was for.
         what: String,
@@ -283,12 +287,61 @@ pub fn check(what: impl FnOnce() -> String, need: u64) -> Result<(), MemoryError
 /// A vector of `n` elements' capacity, or an error naming `what` when the memory cannot be had.
 pub fn try_vec<T>(n: usize, what: &str) -> Result<Vec<T>, MemoryError> {
     let mut v = Vec::new();
-    v.try_reserve_exact(n)
-        .map_err(|_| MemoryError::Allocation {
-            what: what.to_string(),
-            need: bytes((n as u64).saturating_mul(size_of::<T>() as u64)),
-        })?;
+    reserve(&mut v, n, || what.to_string())?;
     Ok(v)
+}
+
+/// Makes `v` hold `n` elements, the new ones `value`, asking for the memory it lacks
+/// fallibly: when the system refuses it, an error naming `what` ("the 1024x768 colour
+/// buffer") and the size, never an abort. Shrinking keeps the memory for reuse.
+pub fn try_resize<T: Clone>(
+    v: &mut Vec<T>,
+    n: usize,
+    value: T,
+    what: impl FnOnce() -> String,
+) -> Result<(), MemoryError> {
+    reserve(v, n.saturating_sub(v.len()), what)?;
+    v.resize(n, value);
+    Ok(())
+}
+
+/// A `width` x `height` RGBA image of `background`, its pixels allocated fallibly (an error
+/// naming `what` when the system refuses them).
+pub fn try_image(
+    width: u32,
+    height: u32,
+    background: [u8; 4],
+    what: impl FnOnce() -> String,
+) -> Result<image::RgbaImage, MemoryError> {
+    let n = (width as usize)
+        .saturating_mul(height as usize)
+        .saturating_mul(4);
+    let mut data = Vec::new();
+    reserve(&mut data, n, what)?;
+    data.resize(n, 0);
+    for px in data.chunks_exact_mut(4) {
+        px.copy_from_slice(&background);
+    }
+    image::RgbaImage::from_raw(width, height, data).ok_or_else(|| MemoryError::Allocation {
+        what: format!("a {width}x{height} image"),
+        need: bytes(n as u64),
+    })
+}
+
+/// Reserves room for `extra` more elements in `v`, or the [`MemoryError::Allocation`] of
+/// `what`.
+fn reserve<T>(
+    v: &mut Vec<T>,
+    extra: usize,
+    what: impl FnOnce() -> String,
+) -> Result<(), MemoryError> {
+    v.try_reserve_exact(extra)
+        .map_err(|_| MemoryError::Allocation {
+            what: what(),
+            need: bytes(
+                (v.len().saturating_add(extra) as u64).saturating_mul(size_of::<T>() as u64),
+            ),
+        })
 }
 
 #[cfg(test)]
@@ -304,5 +357,24 @@ mod tests {
         assert_eq!(parse_size("-5"), None);
         assert_eq!(parse_size("lots"), None);
         assert_eq!(parse_size("0"), None);
+    }
+
+    #[test]
+    fn a_refused_allocation_names_what_and_how_much() {
+        let mut v = vec![1u64; 3];
+        let e = try_resize(&mut v, usize::MAX / 16, 0, || "the test buffer".into())
+            .expect_err("no room for 2^60 elements");
+        assert_eq!(
+            e,
+            MemoryError::Allocation {
+                what: "the test buffer".into(),
+                need: bytes((usize::MAX / 16) as u64 * 8),
+            }
+        );
+        assert_eq!(v, [1, 1, 1], "the vector is left as it was");
+        try_resize(&mut v, 5, 7, || "the test buffer".into()).expect("5 elements");
+        assert_eq!(v, [1, 1, 1, 7, 7]);
+        let img = try_image(2, 1, [1, 2, 3, 4], || "an image".into()).expect("2 pixels");
+        assert_eq!(img.as_raw(), &[1, 2, 3, 4, 1, 2, 3, 4]);
     }
 }

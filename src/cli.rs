@@ -13,6 +13,7 @@ use barylab::scene::Scene;
 use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::output::{self, note, print};
+use crate::progress_line::ProgressLine;
 
 mod commands;
 mod compare;
@@ -595,6 +596,15 @@ pub fn main() -> ExitCode {
     if let Some(bytes) = cli.memory_limit {
         barylab::budget::set_limit(bytes);
     }
+    // Long work shows a progress line on a terminal's standard error.
+    let progress = match &cli.command {
+        Some(Command::Render(_)) => ProgressLine::start("render"),
+        Some(Command::Bench(_)) => ProgressLine::start("bench"),
+        Some(Command::Figure(_)) => ProgressLine::start("figure"),
+        Some(Command::Compare(_)) => ProgressLine::start("compare"),
+        Some(Command::Lesson(_)) => ProgressLine::start("lesson"),
+        _ => None,
+    };
     let result = match cli.command {
         None => app(&cli),
         Some(Command::Render(args)) => commands::render(&args),
@@ -606,10 +616,28 @@ pub fn main() -> ExitCode {
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };
+    drop(progress);
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => output::report(&e),
     }
+}
+
+/// The lesson of `--lesson` at `--step` (1-based; the first step without it), 0-based.
+fn open_lesson(
+    path: &std::path::Path,
+    step: Option<usize>,
+) -> Result<(barylab::lesson::Lesson, usize)> {
+    let lesson = barylab::lesson::Lesson::open(path)?;
+    let count = lesson.steps.len();
+    let step = step.unwrap_or(1);
+    if step == 0 || step > count {
+        anyhow::bail!(
+            "{}: --step {step}: the lesson has steps 1 to {count}",
+            lesson.shown_path()
+        );
+    }
+    Ok((lesson, step - 1))
 }
 
 /// Opens the app.
@@ -618,18 +646,50 @@ fn app(cli: &Cli) -> Result<()> {
         output::check_output(shot, &["png"])?;
     }
     let system_lang = barylab::i18n::Lang::detect();
-    let opened = match &cli.scene {
-        Some(path) => {
-            let lang = cli.lang.unwrap_or(system_lang);
-            let opened = barylab::app::files::open(path, &Scene::default_scene(), lang)
-                .map_err(anyhow::Error::msg)?;
-            for n in &opened.notes {
-                note!("note: {n}");
-            }
-            Some(opened)
+    let lang = cli.lang.unwrap_or(system_lang);
+    // A file that cannot be opened stops a screenshot run (it must show what was asked for);
+    // the window starts on the default scene with the message instead, printed here too (a
+    // teacher who started the app from a file manager sees it in the window).
+    let mut startup_errors: Vec<String> = Vec::new();
+    let mut started = |e: anyhow::Error| -> Result<()> {
+        if cli.screenshot.is_some() {
+            return Err(e);
         }
+        note!("error: {}", output::one_line(&format!("{e:#}")));
+        startup_errors.push(format!("{e:#}"));
+        Ok(())
+    };
+    let opened = match &cli.scene {
+        Some(path) => match barylab::app::files::open(path, &Scene::default_scene(), lang) {
+            Ok(opened) => {
+                for n in &opened.notes {
+                    note!("note: {n}");
+                }
+                Some(opened)
+            }
+            Err(e) => {
+                started(anyhow::Error::msg(e))?;
+                None
+            }
+        },
         None => None,
     };
+    let lesson = match &cli.lesson {
+        Some(path) => match open_lesson(path, cli.step) {
+            Ok(lesson) => Some(lesson),
+            Err(e) => {
+                started(e)?;
+                None
+            }
+        },
+        None => None,
+    };
+    if let Some(path) = &cli.compare_image
+        && let Err(e) = barylab::app::compare_image::read_image(path, lang)
+    {
+        // The window shows it when it reads the image.
+        note!("error: {}", output::one_line(&e));
+    }
     let options = barylab::app::AppOptions {
         opened,
         scene: None,
@@ -643,21 +703,8 @@ fn app(cli: &Cli) -> Result<()> {
         system_lang,
         no_cjk_font: false,
         text_size: cli.text_size,
-        lesson: match &cli.lesson {
-            Some(path) => {
-                let lesson = barylab::lesson::Lesson::open(path)?;
-                let count = lesson.steps.len();
-                let step = cli.step.unwrap_or(1);
-                if step == 0 || step > count {
-                    anyhow::bail!(
-                        "{}: --step {step}: the lesson has steps 1 to {count}",
-                        lesson.shown_path()
-                    );
-                }
-                Some((lesson, step - 1))
-            }
-            None => None,
-        },
+        lesson,
+        startup_error: (!startup_errors.is_empty()).then(|| startup_errors.join("; ")),
         compare: cli.compare,
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,

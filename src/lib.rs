@@ -66,6 +66,7 @@ pub mod i18n;
 pub mod lesson;
 pub mod model;
 pub mod probe;
+pub mod progress;
 pub mod raster;
 pub mod scene;
 

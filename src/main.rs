@@ -2,6 +2,7 @@
 
 mod cli;
 mod output;
+mod progress_line;
 
 /// mimalloc keeps freed pages for reuse: a frame of a dense mesh allocates its set-up
 /// triangles anew, and with the system allocator every frame paid the page faults of fresh

@@ -33,6 +33,7 @@ pub struct Differs(pub String);
 macro_rules! note {
     ($($arg:tt)*) => {{
         use std::io::Write as _;
+        $crate::progress_line::clear();
         let _ = writeln!(std::io::stderr().lock(), $($arg)*);
     }};
 }
@@ -41,6 +42,7 @@ pub(crate) use note;
 /// Writes `text` to standard output. A closed pipe becomes [`BrokenPipe`]; other failures
 /// (a full disk behind `>`) an error that says so.
 pub fn print(text: &str) -> Result<()> {
+    crate::progress_line::clear();
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         Ok(()) => Ok(()),

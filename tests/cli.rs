@@ -46,7 +46,7 @@ fn render_writes_the_same_pixels_as_the_library() {
     let sc = Scene::default_scene();
     let tex = sc.load_texture(Path::new(".")).expect("texture");
     let r = render(&sc.to_mesh(), &tex, &sc.settings()).expect("render");
-    assert_eq!(img, r.frame.to_image());
+    assert_eq!(img, r.frame.to_image().expect("image"));
 }
 
 #[test]

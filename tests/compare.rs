@@ -45,7 +45,11 @@ fn make_image(
     let mesh = mesh_change(scene.to_mesh(), &settings);
     let out = render(&mesh, &texture, &settings).expect("render");
     let file = dir.join(file);
-    out.frame.to_image().save(&file).expect("save");
+    out.frame
+        .to_image()
+        .expect("image")
+        .save(&file)
+        .expect("save");
     file
 }
 

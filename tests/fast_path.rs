@@ -60,7 +60,7 @@ fn textures() -> Vec<(&'static str, Texture)> {
 fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, what: &str) {
     let reference = render(mesh, tex, s).expect("render").frame;
     // A reused framebuffer of another size and content: fully reset by render_into.
-    let mut frame = Framebuffer::new(3, 5, [1, 2, 3, 4]);
+    let mut frame = Framebuffer::new(3, 5, [1, 2, 3, 4]).expect("small frame");
     for vector in [
         VectorLevel::Avx512,
         VectorLevel::Avx2,
@@ -132,14 +132,14 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
 /// Covered exactly where the reference is covered; colours equal but for rounding.
 fn assert_scanline_close(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, what: &str) {
     let reference = render(mesh, tex, s).expect("render").frame;
-    let mut frame = Framebuffer::new(0, 0, s.background);
+    let mut frame = Framebuffer::empty();
     let scan = RenderSettings {
         rasterizer: Rasterizer::Scanline,
         ..*s
     };
     // Every build of the scanline lanes does the same arithmetic: the portable code's image
     // is the vector code's, bit for bit (short spans gathered into chunks included).
-    let mut portable = Framebuffer::new(0, 0, s.background);
+    let mut portable = Framebuffer::empty();
     fast(mesh, tex, &scan, &mut portable, VectorLevel::Portable);
     for vector in [
         VectorLevel::Avx512,

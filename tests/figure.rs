@@ -72,7 +72,7 @@ fn png_size_follows_the_scale_and_the_raster_is_a_real_re_render() {
         hi.set_size(200 * scale, 150 * scale);
         let direct = raster::render(&hi.to_mesh(), &texture, &on_white(&hi)).expect("render");
         assert!(
-            fig.views[0].raster == direct.frame.to_image(),
+            fig.views[0].raster == direct.frame.to_image().expect("image"),
             "scale {scale}"
         );
         // The PNG holds that raster where no overlay covers it: the top-left image corner
@@ -82,7 +82,7 @@ fn png_size_follows_the_scale_and_the_raster_is_a_real_re_render() {
         for (x, y) in [(0, 0), (3 * scale, 2 * scale)] {
             assert_eq!(
                 image.get_pixel(o[0] + x, o[1] + y),
-                direct.frame.to_image().get_pixel(x, y),
+                direct.frame.to_image().expect("image").get_pixel(x, y),
                 "scale {scale}"
             );
         }

@@ -134,28 +134,35 @@ fn projector_windows_keep_a_large_image_with_and_without_presentation_mode() {
 }
 
 #[test]
-fn a_bad_scene_file_is_reported_in_one_line_without_opening_a_window() {
+/// The app starts on the default scene with the error in its window (and on stderr, first):
+/// without a display, the window then cannot open, which a second line says.
+fn a_bad_scene_file_is_reported_first_in_one_line() {
     let dir = tempfile::tempdir().expect("temp dir");
     let bad = dir.path().join("bad.json");
     std::fs::write(&bad, "{ \"quad\": 3 }").expect("write");
     let out = Command::new(env!("CARGO_BIN_EXE_barylab"))
         .arg(&bad)
-        // No display: the error must come before any window is needed.
+        // No display: the error comes before any window is needed.
         .env_remove("DISPLAY")
         .env_remove("WAYLAND_DISPLAY")
         .output()
         .expect("run barylab");
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(err.lines().count(), 1, "{err}");
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 2, "{err}");
     assert!(
-        err.starts_with("error: ") && err.contains("bad.json"),
+        lines[0].starts_with("error: ") && lines[0].contains("bad.json"),
+        "{err}"
+    );
+    assert!(
+        lines[1].starts_with("error: cannot open the window"),
         "{err}"
     );
 }
 
 #[test]
-fn bad_models_and_images_are_reported_in_one_line_without_opening_a_window() {
+fn bad_models_and_images_are_reported_first_in_one_line() {
     let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
     for (file, needle) in [
         ("garbage.obj", "not a readable text OBJ"),
@@ -171,9 +178,14 @@ fn bad_models_and_images_are_reported_in_one_line_without_opening_a_window() {
             .expect("run barylab");
         assert!(!out.status.success(), "{file}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(err.lines().count(), 1, "{err}");
+        let lines: Vec<&str> = err.lines().collect();
+        assert_eq!(lines.len(), 2, "{err}");
         assert!(
-            err.starts_with("error: ") && err.contains(file) && err.contains(needle),
+            lines[0].starts_with("error: ") && lines[0].contains(file) && lines[0].contains(needle),
+            "{err}"
+        );
+        assert!(
+            lines[1].starts_with("error: cannot open the window"),
             "{err}"
         );
     }

@@ -258,3 +258,88 @@ fn the_default_memory_limit_respects_the_address_space_limit() {
     ]));
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+#[test]
+fn a_refused_allocation_is_a_message_not_an_abort() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("o.png");
+    // The limit set by hand lets the 15 GiB render past the estimate; the system's 2 GiB
+    // address space refuses its first 1 GiB buffer past what the process holds. It aborted
+    // (exit 134, "memory allocation of ... failed") before.
+    let o = within_deadline(under_address_limit(2 << 30).args([
+        "render",
+        &scene("default.json"),
+        "--size",
+        "16384x16384",
+        "-o",
+        s(&out),
+        "--memory-limit",
+        "64G",
+    ]));
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.starts_with("error: cannot allocate 1.0 GiB for the 16384x16384 ")
+            && err.contains("buffer: the system refused the memory"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}
+
+/// A render long enough for the progress line (past half a second: 16 million pixels of
+/// every buffer), into `out`.
+fn long_render(out: &Path) -> Vec<String> {
+    [
+        "render",
+        &scene("default.json"),
+        "--size",
+        "4096x4096",
+        "-o",
+        s(out),
+    ]
+    .map(String::from)
+    .to_vec()
+}
+
+#[test]
+fn the_progress_line_is_for_a_terminal_only() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("o.png");
+    // Standard error piped (a log, a script): not a byte of progress.
+    let o = within_deadline(bin().args(long_render(&out)));
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stderr(&o), "");
+    // On a terminal (script(1) gives the command one), the line is drawn in place, a few
+    // times a second at most, and cleared before the result is printed.
+    let Ok(script) = which("script") else {
+        return;
+    };
+    let command = format!(
+        "BARYLAB_MEMORY_LIMIT=4G {} {}",
+        env!("CARGO_BIN_EXE_barylab"),
+        long_render(&out).join(" ")
+    );
+    let start = Instant::now();
+    let o = within_deadline(Command::new(script).args(["-qec", &command, "/dev/null"]));
+    let seconds = start.elapsed().as_secs_f64();
+    let text = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(o.status.success(), "{text}");
+    let updates = text.matches("\r\x1b[2Kbarylab render: ").count();
+    assert!(updates >= 1, "{text:?}");
+    assert!(
+        updates as f64 <= seconds * 4.0 + 1.0,
+        "{updates} in {seconds} s"
+    );
+    assert!(text.contains("\r\x1b[2Krendered 4096x4096"), "{text:?}");
+}
+
+/// The path of a program on `PATH`.
+fn which(name: &str) -> Result<PathBuf, ()> {
+    std::env::var_os("PATH")
+        .and_then(|paths| {
+            std::env::split_paths(&paths)
+                .map(|d| d.join(name))
+                .find(|p| p.is_file())
+        })
+        .ok_or(())
+}

@@ -102,6 +102,9 @@ pub struct CanvasState {
     /// What lies over the canvas (presentation mode's card, as placed last frame): labels
     /// keep clear of it where they can.
     pub avoid: Vec<Rect>,
+    /// The vertices whose handles were drawn last frame (every one of a scene of at most 32,
+    /// else only the pinned and hovered triangles' corners).
+    pub handles: Vec<usize>,
 }
 
 impl CanvasState {
@@ -209,6 +212,34 @@ pub(crate) struct CanvasInput<'a> {
     pub mark_scale: f32,
 }
 
+/// Most vertices whose handles and labels the canvas draws. A denser scene shows only the
+/// corners of the pinned and the hovered pixel's triangles: a label on every vertex of a mesh
+/// is unreadable, and each handle costs a widget and a text layout every frame (a 5,000
+/// triangle mesh took 42 s to its first frame with one for each).
+pub(crate) const MAX_HANDLES: usize = 32;
+
+/// The vertices whose handles are drawn: all `count` when there are at most [`MAX_HANDLES`],
+/// else the mesh corners of the triangles of `marks` (the pinned and hovered pixels), in
+/// order, each once.
+fn handle_indices(count: usize, marks: [Option<overlay::PixelMark>; 2]) -> Vec<usize> {
+    if count <= MAX_HANDLES {
+        return (0..count).collect();
+    }
+    let mut shown: Vec<usize> = Vec::new();
+    for k in marks
+        .iter()
+        .flatten()
+        .filter_map(|m| m.triangle)
+        .flat_map(|t| t.mesh_indices)
+        .flatten()
+    {
+        if k < count && !shown.contains(&k) {
+            shown.push(k);
+        }
+    }
+    shown
+}
+
 /// The canvas panel. It renders and uploads what changed, and keeps its own widget state
 /// (views, hovered pixel, drag) in `canvas`; every change to the app is a returned command.
 pub(crate) fn canvas_ui(
@@ -277,6 +308,13 @@ pub(crate) fn canvas_ui(
     };
     let viewport = output.viewport();
     let vertices = vertices_on_screen(&state.scene, viewport);
+    let marks = [input.pin_report, input.hover_report].map(|r| r.map(PixelReport::mark));
+    let shown = if view_settings.show_handles {
+        handle_indices(vertices.len(), marks)
+    } else {
+        Vec::new()
+    };
+    canvas.handles.clone_from(&shown);
     let painter = ui.painter().clone();
     let base_id = Id::unique("canvas");
     let mut hover = None;
@@ -348,9 +386,9 @@ pub(crate) fn canvas_ui(
         }
 
         // Handles.
-        if view_settings.show_handles {
-            for (k, v) in vertices.iter().enumerate() {
-                let Some(win) = v.window else {
+        {
+            for &k in &shown {
+                let Some(win) = vertices.get(k).and_then(|v| v.window) else {
                     continue;
                 };
                 let centre = t.to_screen(win);
@@ -428,9 +466,9 @@ pub(crate) fn canvas_ui(
     canvas.hover = hover;
 
     // Overlays.
-    let handles: Vec<HandleMark> = vertices
+    let handles: Vec<HandleMark> = shown
         .iter()
-        .enumerate()
+        .filter_map(|&k| Some((k, vertices.get(k)?)))
         .map(|(k, v): (usize, &VertexOnScreen)| HandleMark {
             index: k,
             window: v.window,
@@ -451,11 +489,7 @@ pub(crate) fn canvas_ui(
                 _ => None,
             },
             show_grid: view_settings.show_grid,
-            handles: if view_settings.show_handles {
-                handles.clone()
-            } else {
-                Vec::new()
-            },
+            handles: handles.clone(),
             hover: input.hover_report.map(PixelReport::mark),
             pin: input.pin_report.map(PixelReport::mark),
             clipped: input
@@ -485,7 +519,7 @@ pub(crate) fn canvas_ui(
         }
         if input.framing.title_strip == 0.0 {
             paint::drop_titles(&mut shapes);
-        } else if let Some(w) = crate::figure::common_w(handles.iter().map(|h| h.w))
+        } else if let Some(w) = crate::figure::common_w(vertices.iter().map(VertexOnScreen::w))
             && compare == Compare::Single
             && gpu.is_none()
         {

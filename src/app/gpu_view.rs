@@ -237,7 +237,7 @@ impl GpuView {
         let (settings, output, notes) = gpu_settings(out.scene.settings(), mode);
         let mesh = mesh_at_f32(&out.scene.to_mesh());
         // Colour, depth and the owning triangle (the fast path draws them).
-        let mut f = crate::raster::Framebuffer::new(0, 0, settings.background);
+        let mut f = crate::raster::Framebuffer::empty();
         let buffers = crate::raster::Buffers::ColorDepthUv;
         crate::raster::render_into(&mut f, &mesh, texture, &settings, buffers)
             .map_err(|e| Unavailable::Gl(e.to_string()))?;

@@ -256,6 +256,9 @@ impl BaryApp {
         if let Some(p) = options.pin {
             app.push(state::Command::Pin(Some(p)));
         }
+        if let Some(e) = options.startup_error {
+            app.set_error(e);
+        }
         app
     }
 

@@ -41,4 +41,8 @@ pub struct AppOptions {
     pub compare_image: Option<PathBuf>,
     /// With `compare_image`: the image's background colour (`--compare-background`).
     pub compare_background: Option<[u8; 3]>,
+    /// Why a file named on the command line (a scene, model, texture or lesson) could not be
+    /// opened: shown in the window as an error while the app starts on the default (or
+    /// saved) scene; the command line printed it to standard error too.
+    pub startup_error: Option<String>,
 }

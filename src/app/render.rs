@@ -152,10 +152,7 @@ impl RenderCache {
                 rasterizer: key.rasterizer,
                 ..base
             };
-            let mut frame = self
-                .spare
-                .take()
-                .unwrap_or_else(|| Framebuffer::new(0, 0, base.background));
+            let mut frame = self.spare.take().unwrap_or_else(Framebuffer::empty);
             crate::raster::render_into(&mut frame, &mesh, texture, &settings, buffers)
                 .map_err(|e| e.to_string())?;
             // The canvas keeps the image only: the inspector probes the scene itself.

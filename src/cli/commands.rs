@@ -166,9 +166,9 @@ pub(super) fn render(args: &RenderArgs) -> Result<()> {
     let ms = start.elapsed().as_secs_f64() * 1e3;
     // All files are written beside their places first and moved in together: a failure
     // leaves every earlier file as it was.
+    let image = out.frame.to_image()?;
     let png = barylab::files::stage(&args.output, |w| {
-        out.frame
-            .to_image()
+        image
             .write_to(w, image::ImageFormat::Png)
             .map_err(std::io::Error::other)
     })?;

@@ -36,7 +36,7 @@ pub fn render_for_comparison(
     texture: &Texture,
     settings: &RenderSettings,
 ) -> Result<crate::raster::render::Render, String> {
-    let mut frame = crate::raster::Framebuffer::new(0, 0, settings.background);
+    let mut frame = crate::raster::Framebuffer::empty();
     let buffers = crate::raster::Buffers::ColorDepthUv;
     crate::raster::render_into(&mut frame, mesh, texture, settings, buffers)
         .map_err(|e| e.to_string())?;

@@ -381,7 +381,10 @@ fn upscaled(
         )));
     }
     let f = factor.max(1);
-    Ok(image::RgbaImage::from_fn(w * f, h * f, |x, y| {
-        image::Rgba(pixels[((y / f) * w + x / f) as usize])
-    }))
+    let (uw, uh) = (w * f, h * f);
+    let mut out = crate::budget::try_image(uw, uh, [0; 4], || format!("the {uw}x{uh} view image"))?;
+    for (x, y, px) in out.enumerate_pixels_mut() {
+        *px = image::Rgba(pixels[((y / f) * w + x / f) as usize]);
+    }
+    Ok(out)
 }

@@ -399,7 +399,7 @@ mod tests {
             assert_eq!(h.pixels[i], expected, "pixel {i}");
         }
         // A render that keeps only the texel difference gives the same heatmap.
-        let mut fast = crate::raster::Framebuffer::new(0, 0, [0; 4]);
+        let mut fast = crate::raster::Framebuffer::empty();
         let buffers = crate::raster::Buffers::DepthDifference;
         let mesh = floor.to_mesh();
         crate::raster::render_into(&mut fast, &mesh, &texture, &floor.settings(), buffers)

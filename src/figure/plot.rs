@@ -3,7 +3,7 @@
 //! rasterized by resvg with the figures' fonts. The legend and the axes sit outside the
 //! plotting area, so no line is hidden.
 
-use resvg::tiny_skia::{self, Pixmap, Transform};
+use resvg::tiny_skia::{self, Transform};
 use resvg::usvg;
 
 use super::FigureError;
@@ -194,14 +194,13 @@ impl LinePlot {
         let tree = usvg::Tree::from_str(&svg, &svg_options_in(lang))
             .map_err(|e| FigureError::Draw(format!("plot SVG: {e}")))?;
         let [w, h] = PLOT_SIZE.map(|v| (v * scale).round() as u32);
-        let mut pixmap =
-            Pixmap::new(w, h).ok_or_else(|| FigureError::Draw(format!("no {w}x{h} image")))?;
+        let mut pixmap = super::png::canvas(w, h, "plot canvas")?;
         pixmap.fill(tiny_skia::Color::WHITE);
         resvg::render(
             &tree,
             Transform::from_scale(scale, scale),
             &mut pixmap.as_mut(),
         );
-        super::png::encode(&super::png::image_of(&pixmap))
+        super::png::encode(&super::png::image_of(&pixmap)?)
     }
 }

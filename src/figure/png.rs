@@ -55,8 +55,7 @@ pub fn svg_options_in(lang: Lang) -> usvg::Options<'static> {
 /// The figure as an RGBA image of [`Figure::pixel_dimensions`].
 pub fn rasterize(figure: &Figure) -> Result<image::RgbaImage, FigureError> {
     let [w, h] = figure.pixel_dimensions();
-    let mut pixmap =
-        Pixmap::new(w, h).ok_or_else(|| FigureError::Draw(format!("no {w}x{h} image")))?;
+    let mut pixmap = canvas(w, h, "figure canvas")?;
     if figure.background == Background::White {
         pixmap.fill(tiny_skia::Color::WHITE);
     }
@@ -77,17 +76,29 @@ pub fn rasterize(figure: &Figure) -> Result<image::RgbaImage, FigureError> {
     // The document's width and height are the PNG's pixels and its viewBox the points: usvg
     // already maps points to pixels.
     resvg::render(&tree, Transform::identity(), &mut pixmap.as_mut());
-    Ok(image_of(&pixmap))
+    image_of(&pixmap)
 }
 
-/// A straight-alpha RGBA copy of a (premultiplied) pixmap.
-pub(super) fn image_of(pixmap: &Pixmap) -> image::RgbaImage {
-    let mut out = image::RgbaImage::new(pixmap.width(), pixmap.height());
+/// A transparent `w` x `h` pixmap, its memory asked for fallibly: an error naming the
+/// `what` ("figure canvas") and its size when the system refuses it, never an abort.
+pub(super) fn canvas(w: u32, h: u32, what: &str) -> Result<Pixmap, FigureError> {
+    let no_image = || FigureError::Draw(format!("no {w}x{h} image"));
+    let size = tiny_skia::IntSize::from_wh(w, h).ok_or_else(no_image)?;
+    let n = (w as usize).saturating_mul(h as usize).saturating_mul(4);
+    let mut data = crate::budget::try_vec::<u8>(n, &format!("the {w}x{h} {what}"))?;
+    data.resize(n, 0);
+    Pixmap::from_vec(data, size).ok_or_else(no_image)
+}
+
+/// A straight-alpha RGBA copy of a (premultiplied) pixmap (its memory asked for fallibly).
+pub(super) fn image_of(pixmap: &Pixmap) -> Result<image::RgbaImage, FigureError> {
+    let (w, h) = (pixmap.width(), pixmap.height());
+    let mut out = crate::budget::try_image(w, h, [0; 4], || format!("the {w}x{h} figure image"))?;
     for (px, c) in out.pixels_mut().zip(pixmap.pixels()) {
         let c = c.demultiply();
         px.0 = [c.red(), c.green(), c.blue(), c.alpha()];
     }
-    out
+    Ok(out)
 }
 
 /// The figure as PNG file bytes.
@@ -110,7 +121,7 @@ pub(super) fn encode(image: &image::RgbaImage) -> Result<Vec<u8>, FigureError> {
 /// A premultiplied copy of a straight-alpha RGBA image.
 fn pixmap_of(image: &image::RgbaImage) -> Result<Pixmap, FigureError> {
     let (w, h) = image.dimensions();
-    let mut p = Pixmap::new(w, h).ok_or_else(|| FigureError::Draw(format!("no {w}x{h} image")))?;
+    let mut p = canvas(w, h, "view image")?;
     for (dst, src) in p.pixels_mut().iter_mut().zip(image.pixels()) {
         let [r, g, b, a] = src.0;
         *dst = tiny_skia::ColorU8::from_rgba(r, g, b, a).premultiply();

@@ -9,6 +9,7 @@ pub mod check;
 mod compare;
 mod context;
 mod scene;
+pub mod status;
 pub mod view;
 
 pub use compare::*;
@@ -311,9 +312,28 @@ impl Gpu {
                 glow::RENDERBUFFER,
                 Some(depth),
             );
+            let gl_error = gl.get_error();
             let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
             if status != glow::FRAMEBUFFER_COMPLETE {
-                return Err(format!("framebuffer incomplete (status {status:#x})"));
+                let max_size = gl.get_parameter_i32(glow::MAX_RENDERBUFFER_SIZE).max(0) as u32;
+                gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+                gl.delete_framebuffer(fbo);
+                gl.delete_renderbuffer(color);
+                gl.delete_renderbuffer(depth);
+                let (name, bytes) = if format == glow::RGBA32F {
+                    ("RGBA32F", 16)
+                } else {
+                    ("RGBA8", 4)
+                };
+                return Err(status::incomplete(
+                    status,
+                    w.max(0) as u32,
+                    h.max(0) as u32,
+                    name,
+                    bytes,
+                    max_size,
+                    gl_error,
+                ));
             }
             Ok((fbo, [color, depth]))
         }

@@ -1,7 +1,7 @@
 //! Binning for parallel rasterization: which set-up triangles reach each band of image rows
 //! ([`bin_rows`]). Each band ([`RowBand`](super::framebuffer::RowBand)) is one rayon task of
 //! the full render and of the fast path, and visits only the triangles of its bin, in
-//! submission order.
+//! submission order. [`RowsDrawn`] counts a band's rows for the progress display.
 
 /// The triangles that reach each band of `rows_per_band` rows of an image `height` rows high:
 /// every `(triangle, setup, first row, last row)` of `spans`, in order, is added as
@@ -24,6 +24,15 @@ pub(super) fn bin_rows(
         for bin in bins.iter_mut().take(last + 1).skip(first) {
             bin.push((ti, si));
         }
+    }
+}
+
+/// Counts a band's rows as drawn ([`crate::progress`]) when the band is done.
+pub(super) struct RowsDrawn(pub(super) u32);
+
+impl Drop for RowsDrawn {
+    fn drop(&mut self) {
+        crate::progress::rows_drawn(self.0);
     }
 }
 

@@ -20,7 +20,7 @@
 
 use glam::{DVec2, I64Vec2, IVec2 as I32Vec2};
 
-use super::bands::bin_rows;
+use super::bands::{RowsDrawn, bin_rows};
 use super::clip::{ClipPlane, planes};
 use super::draw::{draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply};
 use super::framebuffer::{Framebuffer, RowBand};
@@ -363,6 +363,7 @@ impl<'m> FastMesh<'m> {
         use rayon::prelude::*;
         let rows_per_band = rows_per_band.max(1);
         let bins = self.bins(frame.height, rows_per_band);
+        crate::progress::render_started(frame.height);
         let bands = RowBand::split(frame, rows_per_band);
         // Whole triangles go straight to the lanes when they can draw them.
         let shading = lane_shading(params);
@@ -370,6 +371,7 @@ impl<'m> FastMesh<'m> {
             .into_par_iter()
             .zip(&bins)
             .for_each(|(mut band, bin)| {
+                let _drawn = RowsDrawn(band.rows);
                 band.clear(background);
                 // Both uvs, for the uv buffers or the texel difference.
                 let uvs = !band.uv_affine.is_empty() || !band.texel_difference.is_empty();

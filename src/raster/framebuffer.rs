@@ -2,6 +2,7 @@
 //! inspector and the AOV export read.
 
 use super::setup::Facing;
+use crate::budget::{self, MemoryError};
 
 /// Marks a pixel no triangle covers in [`Framebuffer::triangle`].
 pub const NO_TRIANGLE: u32 = u32::MAX;
@@ -80,6 +81,22 @@ impl Buffer {
         Buffer::InvW,
         Buffer::TexelDifference,
     ];
+
+    /// The buffer's name in messages ("colour buffer").
+    pub const fn name(self) -> &'static str {
+        match self {
+            Buffer::Color => "colour buffer",
+            Buffer::Depth => "depth buffer",
+            Buffer::Triangle => "triangle id buffer",
+            Buffer::Facing => "facing buffer",
+            Buffer::WeightsScreen => "screen weights buffer",
+            Buffer::WeightsPerspective => "perspective weights buffer",
+            Buffer::UvAffine => "affine uv buffer",
+            Buffer::UvPerspective => "perspective uv buffer",
+            Buffer::InvW => "1/w buffer",
+            Buffer::TexelDifference => "texel difference buffer",
+        }
+    }
 
     /// Bytes one pixel of this buffer takes (the size of its element type).
     pub const fn bytes_per_pixel(self) -> u64 {
@@ -173,14 +190,11 @@ pub struct Framebuffer {
 }
 
 impl Framebuffer {
-    /// A cleared framebuffer with every buffer.
-    pub fn new(width: u32, height: u32, background: [u8; 4]) -> Self {
-        Self::with_buffers(width, height, background, Buffers::All)
-    }
-
-    /// A cleared framebuffer with the given buffers.
-    pub fn with_buffers(width: u32, height: u32, background: [u8; 4], buffers: Buffers) -> Self {
-        let mut frame = Self {
+    /// A framebuffer of no pixels (nothing allocated): what [`render_into`] resizes.
+    ///
+    /// [`render_into`]: super::render::render_into
+    pub fn empty() -> Self {
+        Self {
             width: 0,
             height: 0,
             color: Vec::new(),
@@ -193,35 +207,111 @@ impl Framebuffer {
             uv_perspective: Vec::new(),
             inv_w: Vec::new(),
             texel_difference: Vec::new(),
-        };
-        frame.resize(width, height, buffers);
+        }
+    }
+
+    /// A cleared framebuffer with every buffer, or the error of a buffer the system refuses
+    /// ([`Framebuffer::resize`]).
+    pub fn new(width: u32, height: u32, background: [u8; 4]) -> Result<Self, MemoryError> {
+        Self::with_buffers(width, height, background, Buffers::All)
+    }
+
+    /// A cleared framebuffer with the given buffers, or the error of a buffer the system
+    /// refuses ([`Framebuffer::resize`]).
+    pub fn with_buffers(
+        width: u32,
+        height: u32,
+        background: [u8; 4],
+        buffers: Buffers,
+    ) -> Result<Self, MemoryError> {
+        let mut frame = Self::empty();
+        frame.resize(width, height, buffers)?;
         frame.clear(background);
-        frame
+        Ok(frame)
     }
 
     /// Gives the framebuffer `width` x `height` pixels of the buffers `buffers` has
     /// ([`Buffers::has`]) and empties the others, reusing the memory it holds. The pixels'
     /// contents are not cleared: renders clear them band by band ([`Framebuffer::clear`]
-    /// clears the whole frame).
-    pub fn resize(&mut self, width: u32, height: u32, buffers: Buffers) {
+    /// clears the whole frame). Every buffer's memory is asked for fallibly: a buffer the
+    /// system refuses is an error naming it and its size ("cannot allocate 1.0 GiB for the
+    /// 16384x16384 colour buffer"), never an abort; the frame then has no pixels.
+    pub fn resize(&mut self, width: u32, height: u32, buffers: Buffers) -> Result<(), MemoryError> {
+        let done = self.resize_buffers(width, height, buffers);
+        if done.is_err() {
+            *self = Self::empty();
+        }
+        done
+    }
+
+    /// [`Framebuffer::resize`]'s work, stopping at the first buffer refused.
+    fn resize_buffers(
+        &mut self,
+        width: u32,
+        height: u32,
+        buffers: Buffers,
+    ) -> Result<(), MemoryError> {
         let n = width as usize * height as usize;
         let len = |b: Buffer| if buffers.has(b) { n } else { 0 };
+        let what = |b: Buffer| move || format!("the {width}x{height} {}", b.name());
+        use budget::try_resize as fit;
         self.width = width;
         self.height = height;
-        self.color.resize(len(Buffer::Color), [0; 4]);
-        self.depth.resize(len(Buffer::Depth), 1.0);
-        self.triangle.resize(len(Buffer::Triangle), NO_TRIANGLE);
-        self.facing.resize(len(Buffer::Facing), Facing::Front);
-        self.weights_screen
-            .resize(len(Buffer::WeightsScreen), [0.0; 3]);
-        self.weights_perspective
-            .resize(len(Buffer::WeightsPerspective), [0.0; 3]);
-        self.uv_affine.resize(len(Buffer::UvAffine), [0.0; 2]);
-        self.uv_perspective
-            .resize(len(Buffer::UvPerspective), [0.0; 2]);
-        self.inv_w.resize(len(Buffer::InvW), 0.0);
-        self.texel_difference
-            .resize(len(Buffer::TexelDifference), f32::NAN);
+        fit(
+            &mut self.color,
+            len(Buffer::Color),
+            [0; 4],
+            what(Buffer::Color),
+        )?;
+        fit(
+            &mut self.depth,
+            len(Buffer::Depth),
+            1.0,
+            what(Buffer::Depth),
+        )?;
+        let triangle = len(Buffer::Triangle);
+        fit(
+            &mut self.triangle,
+            triangle,
+            NO_TRIANGLE,
+            what(Buffer::Triangle),
+        )?;
+        let facing = len(Buffer::Facing);
+        fit(
+            &mut self.facing,
+            facing,
+            Facing::Front,
+            what(Buffer::Facing),
+        )?;
+        let (ws, wp) = (len(Buffer::WeightsScreen), len(Buffer::WeightsPerspective));
+        fit(
+            &mut self.weights_screen,
+            ws,
+            [0.0; 3],
+            what(Buffer::WeightsScreen),
+        )?;
+        fit(
+            &mut self.weights_perspective,
+            wp,
+            [0.0; 3],
+            what(Buffer::WeightsPerspective),
+        )?;
+        let (ua, up) = (len(Buffer::UvAffine), len(Buffer::UvPerspective));
+        fit(&mut self.uv_affine, ua, [0.0; 2], what(Buffer::UvAffine))?;
+        fit(
+            &mut self.uv_perspective,
+            up,
+            [0.0; 2],
+            what(Buffer::UvPerspective),
+        )?;
+        fit(&mut self.inv_w, len(Buffer::InvW), 0.0, what(Buffer::InvW))?;
+        let td = len(Buffer::TexelDifference);
+        fit(
+            &mut self.texel_difference,
+            td,
+            f32::NAN,
+            what(Buffer::TexelDifference),
+        )
     }
 
     /// Clears every pixel of every buffer: colour to `background`, depth to 1 (the far
@@ -284,13 +374,15 @@ impl Framebuffer {
         }
     }
 
-    /// The colour buffer as an image.
-    pub fn to_image(&self) -> image::RgbaImage {
-        let mut img = image::RgbaImage::new(self.width, self.height);
+    /// The colour buffer as an image (its memory asked for fallibly: an error naming the
+    /// image when the system refuses it).
+    pub fn to_image(&self) -> Result<image::RgbaImage, MemoryError> {
+        let (w, h) = (self.width, self.height);
+        let mut img = budget::try_image(w, h, [0; 4], || format!("the {w}x{h} output image"))?;
         for (px, c) in img.pixels_mut().zip(&self.color) {
             px.0 = *c;
         }
-        img
+        Ok(img)
     }
 }
 
@@ -436,7 +528,7 @@ mod tests {
             Buffers::DepthDifference,
         ];
         for set in sets {
-            let mut frame = Framebuffer::with_buffers(3, 2, [9; 4], set);
+            let mut frame = Framebuffer::with_buffers(3, 2, [9; 4], set).expect("6 pixels");
             assert_eq!(frame.buffers(), set);
             for b in Buffer::ALL {
                 let want = if set.has(b) { 6 } else { 0 };
@@ -445,7 +537,7 @@ mod tests {
             assert!(frame.color.iter().all(|&c| c == [9; 4]));
             assert!(frame.texel_difference.iter().all(|d| d.is_nan()));
             for other in sets {
-                frame.resize(5, 1, other);
+                frame.resize(5, 1, other).expect("5 pixels");
                 assert_eq!(frame.buffers(), other, "{set:?} -> {other:?}");
             }
         }

@@ -11,7 +11,7 @@
 //! `fast.rs`'s, the bins `bands.rs`'s and the memory estimate
 //! [`footprint`](super::footprint)'s; none of them calls back into it.
 
-use super::bands::bin_rows;
+use super::bands::{RowsDrawn, bin_rows};
 use super::draw::rasterize;
 use super::fast::FastMesh;
 use super::footprint::check_render_samples;
@@ -50,8 +50,8 @@ pub fn render(
     check_budget(mesh, settings, Buffers::All)?;
     let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
-    let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All);
-    frame.resize(settings.width, settings.height, Buffers::All);
+    let mut frame = Framebuffer::empty();
+    frame.resize(settings.width, settings.height, Buffers::All)?;
     rasterize_bands(
         &triangles,
         texture,
@@ -137,7 +137,8 @@ pub fn render_row(
     }
     let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
-    let mut frame = Framebuffer::with_buffers(settings.width, 1, settings.background, Buffers::All);
+    let mut frame =
+        Framebuffer::with_buffers(settings.width, 1, settings.background, Buffers::All)?;
     let mut bands = RowBand::split(&mut frame, 1);
     if let Some(band) = bands.first_mut() {
         band.clear(settings.background);
@@ -214,7 +215,7 @@ pub fn render_into_at(
     if settings.shading == Shading::Depth {
         params.depth_range = prepared.depth_range();
     }
-    frame.resize(settings.width, settings.height, buffers);
+    frame.resize(settings.width, settings.height, buffers)?;
     prepared.rasterize(
         texture,
         &params,
@@ -324,8 +325,10 @@ pub fn rasterize_bands(
                 .map(move |(si, s)| (ti as u32, si as u32, s.bounds.y0, s.bounds.y1))
         }),
     );
+    crate::progress::render_started(frame.height);
     let bands = RowBand::split(frame, rows_per_band);
     bands.into_par_iter().zip(bins).for_each(|(mut band, bin)| {
+        let _drawn = RowsDrawn(band.rows);
         if let Some(background) = clear {
             band.clear(background);
         }
@@ -369,7 +372,7 @@ mod tests {
                 .num_threads(threads)
                 .build()
                 .expect("thread pool");
-            let mut frame = Framebuffer::new(203, 157, settings.background);
+            let mut frame = Framebuffer::new(203, 157, settings.background).expect("small frame");
             pool.install(|| {
                 rasterize_bands(
                     &triangles,

@@ -57,7 +57,7 @@ pub fn draw(mesh: &ClipMesh, width: u32, height: u32) -> Render {
             full.frame.triangle == reference.frame.triangle,
             "{rasterizer:?}: coverage or owning triangle differs"
         );
-        let mut fast = Framebuffer::new(0, 0, s.background);
+        let mut fast = Framebuffer::empty();
         render_into(&mut fast, mesh, &tex, &s, Buffers::ColorDepth).expect("render");
         for y in 0..height {
             for x in 0..width {

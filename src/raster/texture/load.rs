@@ -76,7 +76,7 @@ impl Texture {
         let img = Self::decode(path)?;
         let (w, h) = img.dimensions();
         if w.max(h) <= MAX_TEXTURE_SIZE {
-            let tex = Self::from_image(&img).ok_or(TextureError::Empty {
+            let tex = Self::try_from_image(&img)?.ok_or(TextureError::Empty {
                 path: crate::files::shown(path),
             })?;
             return Ok((tex, None));
@@ -85,7 +85,7 @@ impl Texture {
         let nw = ((f64::from(w) * scale).round() as u32).max(1);
         let nh = ((f64::from(h) * scale).round() as u32).max(1);
         let small = image::imageops::resize(&img, nw, nh, image::imageops::FilterType::Triangle);
-        let tex = Self::from_image(&small).ok_or(TextureError::Empty {
+        let tex = Self::try_from_image(&small)?.ok_or(TextureError::Empty {
             path: crate::files::shown(path),
         })?;
         let note = format!(
@@ -178,8 +178,23 @@ impl OpenedImage<'_> {
         limits.max_alloc = crate::budget::limit().ok().map(|l| l.bytes);
         reader.limits(limits);
         let img = reader.decode().map_err(|e| plain_error(&e, format))?;
-        Ok(img.to_rgba8())
+        rgba8(img).map_err(|e| e.to_string())
     }
+}
+
+/// The decoded image as RGBA8: itself when it is RGBA8 already, else a copy whose memory is
+/// asked for fallibly (an error naming it when the system refuses it, never an abort).
+fn rgba8(img: image::DynamicImage) -> Result<image::RgbaImage, crate::budget::MemoryError> {
+    use image::GenericImageView;
+    if let image::DynamicImage::ImageRgba8(rgba) = img {
+        return Ok(rgba);
+    }
+    let (w, h) = img.dimensions();
+    let mut out = crate::budget::try_image(w, h, [0; 4], || format!("the {w}x{h} decoded image"))?;
+    for (x, y, px) in out.enumerate_pixels_mut() {
+        *px = img.get_pixel(x, y);
+    }
+    Ok(out)
 }
 
 /// What bytes that are not an image hold, for the message: "text" or "binary data".

@@ -300,6 +300,17 @@ pub(crate) fn fast_floor(x: f32) -> f32 {
     if t > x { t - 1.0 } else { t }
 }
 
+/// An image's pixels (row 0 at the top) as texels (row 0 at the bottom), appended to `texels`
+/// (empty, its room reserved by the caller).
+fn flipped_texels(img: &image::RgbaImage, mut texels: Vec<[u8; 4]>) -> Vec<[u8; 4]> {
+    let w = img.width() as usize;
+    texels.reserve_exact(img.pixels().len());
+    for row in img.as_raw().chunks_exact(w.max(1) * 4).rev() {
+        texels.extend(row.chunks_exact(4).map(|p| [p[0], p[1], p[2], p[3]]));
+    }
+    texels
+}
+
 impl Texture {
     fn new_with_mips(width: u32, height: u32, texels: Vec<[u8; 4]>) -> Self {
         let mips = mip_chain(width, height, &texels);
@@ -348,14 +359,18 @@ impl Texture {
 
     /// A texture from an image whose row 0 is the top (as image files store it).
     pub fn from_image(img: &image::RgbaImage) -> Option<Self> {
+        Self::from_texels(img.width(), img.height(), flipped_texels(img, Vec::new()))
+    }
+
+    /// [`Texture::from_image`] with the texels' memory asked for fallibly (`None` for an
+    /// image of no pixels).
+    pub fn try_from_image(
+        img: &image::RgbaImage,
+    ) -> Result<Option<Self>, crate::budget::MemoryError> {
         let (w, h) = img.dimensions();
-        let mut texels = Vec::with_capacity(w as usize * h as usize);
-        for row in (0..h).rev() {
-            for col in 0..w {
-                texels.push(img.get_pixel(col, row).0);
-            }
-        }
-        Self::from_texels(w, h, texels)
+        let room =
+            crate::budget::try_vec(w as usize * h as usize, &format!("the {w}x{h} texture"))?;
+        Ok(Self::from_texels(w, h, flipped_texels(img, room)))
     }
 
     /// The texels as an image with row 0 at the top, for display and export.
