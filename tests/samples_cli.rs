@@ -114,7 +114,7 @@ fn render_with_samples_writes_the_resolved_image() {
     let tex = s.load_texture(dir.path()).expect("texture");
     let r = render(&s.to_mesh(), &tex, &s.settings()).expect("render");
     assert!(
-        png == r.frame.to_image(),
+        png == r.frame.to_image().expect("image"),
         "the PNG is not the library's resolve"
     );
     // And it is anti-aliased: some pixel is neither background nor the single-sample one.

@@ -75,8 +75,8 @@ pub fn render_samples(
 ) -> Result<(Render, SampleBuffer), RenderError> {
     check_budget(mesh, settings, Buffers::All)?;
     let triangles = prepare_triangles(mesh, settings)?;
-    let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All);
-    frame.resize(settings.width, settings.height, Buffers::All);
+    let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All)?;
+    frame.resize(settings.width, settings.height, Buffers::All)?;
     let samples = draw_samples(
         mesh,
         &triangles,
@@ -133,7 +133,7 @@ pub fn render_row(
     if settings.samples.uses_sample_path() {
         // Every row, then the one asked for (a multisampled row plot is rare and small).
         let (full, _) = render_samples(mesh, texture, settings)?;
-        return Ok(one_row(&full.frame, y, settings.background));
+        return one_row(&full.frame, y, settings.background);
     }
     let triangles = prepare_triangles(mesh, settings)?;
     let params = shade_params(settings, &triangles);
@@ -198,7 +198,7 @@ pub fn render_into_at(
     if settings.samples.uses_sample_path() {
         // More than one sample per pixel: the multisample path, not the lanes.
         let triangles = prepare_triangles(mesh, settings)?;
-        frame.resize(settings.width, settings.height, buffers);
+        frame.resize(settings.width, settings.height, buffers)?;
         draw_samples(
             mesh,
             &triangles,
@@ -266,8 +266,8 @@ pub fn shade_params(settings: &RenderSettings, triangles: &[PreparedTriangle]) -
 }
 
 /// Row `y` of `frame` as a frame one row high with every buffer (clear outside the image).
-fn one_row(frame: &Framebuffer, y: u32, background: [u8; 4]) -> Framebuffer {
-    let mut row = Framebuffer::with_buffers(frame.width, 1, background, Buffers::All);
+fn one_row(frame: &Framebuffer, y: u32, background: [u8; 4]) -> Result<Framebuffer, RenderError> {
+    let mut row = Framebuffer::with_buffers(frame.width, 1, background, Buffers::All)?;
     if y < frame.height {
         let r = frame.index(0, y)..frame.index(0, y) + frame.width as usize;
         row.color.copy_from_slice(&frame.color[r.clone()]);
@@ -283,7 +283,7 @@ fn one_row(frame: &Framebuffer, y: u32, background: [u8; 4]) -> Framebuffer {
             .copy_from_slice(&frame.uv_perspective[r.clone()]);
         row.inv_w.copy_from_slice(&frame.inv_w[r]);
     }
-    row
+    Ok(row)
 }
 
 /// Rows of the image each parallel task rasterizes. Every band draws the triangles that reach
