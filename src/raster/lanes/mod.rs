@@ -36,14 +36,15 @@
 //!   the row's lanes would hold.
 //!
 //! Three builds of the same arithmetic, chosen at run time ([`VectorLevel`]) once per band of
-//! triangles ([`Lanes`]): AVX2 intrinsics
-//! (`avx2.rs`), compiled a second time for AVX-512 when the CPU has it (32 registers, mask
-//! registers; row chunks of texture shading in one 512-bit register, `avx2/wide.rs`; bilinear
-//! texture lookups of two chunks, sixteen pixels, at once, and the scanline lanes' long texture
-//! spans sixteen pixels at a time, `avx512.rs`), and portable lane code (plain arrays, compiled
-//! with AVX2 enabled where available). No fused multiply-add is used anywhere, so
-//! every build rounds identically; `tests/fast_path.rs` compares them all with the full
-//! render.
+//! triangles ([`Lanes`]), in folders named for the instructions they need: AVX2 intrinsics
+//! (`avx2/`: the lane paths, the AVX2 texture sampler `avx2/sampler.rs`), the same code compiled
+//! a second time for AVX-512 when the CPU has it (`avx512/`: the entries, 32 registers and mask
+//! registers; row chunks of texture shading in one 512-bit register, `avx512/wide.rs`; bilinear
+//! texture lookups of two chunks, sixteen pixels, at once, the scanline lanes' long texture spans
+//! sixteen pixels at a time, the scattered writes of gathered chunks, `avx512/scatter.rs`), and
+//! portable lane code (plain arrays, compiled with AVX2 enabled where available). No fused
+//! multiply-add is used anywhere, so every build rounds identically; `tests/fast_path.rs`
+//! compares them all with the full render.
 
 // Lane code indexes several parallel arrays by the lane number; iterators would hide that.
 #![allow(clippy::needless_range_loop)]
@@ -83,8 +84,6 @@ pub use triangle::{LaneTriangle, LaneVertices};
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
-#[cfg(target_arch = "x86_64")]
-mod avx2_sampler;
 #[cfg(target_arch = "x86_64")]
 mod avx512;
 
@@ -205,8 +204,9 @@ pub struct UvTarget<'a> {
     pub uv_perspective: &'a mut [[f32; 2]],
 }
 
-/// What the lanes shade: texture (nearest or bilinear), vertex colour, barycentric weights or
-/// depth ([`LaneColor`]), with the wireframe overlay on the edge-function path.
+/// What the lanes shade ([`LaneColor`]): texture (nearest or bilinear), vertex colour,
+/// barycentric weights, depth, the normal as colour or Lambert, with the wireframe overlay on
+/// the edge-function path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LaneShading {
     /// Affine or perspective-correct interpolation.

@@ -20,7 +20,7 @@ pub struct Lanes<'t> {
     shading: LaneShading,
     build: Build,
     #[cfg(target_arch = "x86_64")]
-    sampler: Option<avx2_sampler::VecSampler<'t>>,
+    sampler: Option<avx2::sampler::VecSampler<'t>>,
     /// AVX-512 texture lookups allowed and present.
     wide: bool,
 }
@@ -31,7 +31,7 @@ impl<'t> Lanes<'t> {
         #[cfg(target_arch = "x86_64")]
         {
             if vector.avx2() {
-                let sampler = avx2_sampler::VecSampler::new(texture, &shading);
+                let sampler = avx2::sampler::VecSampler::new(texture, &shading);
                 let build = if shading.color != LaneColor::Texture || sampler.is_some() {
                     Build::Avx2
                 } else {
@@ -76,16 +76,15 @@ impl<'t> Lanes<'t> {
         let fallback = &mut |_, _, _| {};
         match self.build {
             #[cfg(target_arch = "x86_64")]
-            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build).
+            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build), and AVX-512
+            // F, BW, VL and DQ when `wide` (`VectorLevel::avx512`).
             Build::Avx2 => unsafe {
-                avx2::edge_triangle(
-                    tri,
-                    rows,
-                    self.sampler.as_ref(),
-                    self.wide,
-                    &self.shading,
-                    target,
-                )
+                let sampler = self.sampler.as_ref();
+                if self.wide {
+                    avx512::edge_triangle(tri, rows, sampler, &self.shading, target)
+                } else {
+                    avx2::edge_triangle(tri, rows, sampler, &self.shading, target)
+                }
             },
             #[cfg(target_arch = "x86_64")]
             // SAFETY: as above.
@@ -102,9 +101,14 @@ impl<'t> Lanes<'t> {
         let (texture, shading) = (self.texture, self.shading);
         match (self.build, &self.sampler) {
             #[cfg(target_arch = "x86_64")]
-            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build).
+            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build), and AVX-512
+            // F, BW, VL and DQ when `wide` (`VectorLevel::avx512`).
             (Build::Avx2, sampler) if sampler.is_some() || shading.color != LaneColor::Texture => unsafe {
-                avx2::scanline_triangle(tri, rows, sampler.as_ref(), self.wide, &shading, target)
+                if self.wide {
+                    avx512::scanline_triangle(tri, rows, sampler.as_ref(), &shading, target)
+                } else {
+                    avx2::scanline_triangle(tri, rows, sampler.as_ref(), &shading, target)
+                }
             },
             #[cfg(target_arch = "x86_64")]
             // SAFETY: as above.
