@@ -2,7 +2,8 @@
 //! the portable lane code in the parent module (and so as the per-pixel renderer), eight
 //! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
 //! is a mask or a clamp on both axes; tests check the two agree bit for bit. The bodies are
-//! generic over `WIDE`: `avx512/` compiles them again for AVX-512.
+//! generic over `WIDE`: the subfolder `avx512/` (code that needs AVX-512 as well) compiles them
+//! again for AVX-512.
 //! The texture lookups are in `texture.rs` (through the sampler of `sampler.rs`), the writes
 //! of a chunk in `write.rs`, the non-texture colours in `shade.rs`, the gathering of sparse
 //! rows in `sparse.rs` and the scanline lanes in `scanline.rs`.
@@ -21,6 +22,7 @@ use crate::raster::shade::{
 };
 use crate::raster::texture::Filter;
 
+pub(in crate::raster::lanes) mod avx512;
 pub(super) mod sampler;
 mod scanline;
 mod shade;
@@ -33,7 +35,7 @@ use shade::channel_colors;
 pub(in crate::raster::lanes) use texture::Lookups;
 pub(in crate::raster::lanes) use write::{finish, mask_from_bits};
 
-use super::avx512::wide;
+use avx512::wide;
 use sampler::{VecSampler, sample};
 
 /// A chunk of eight pixels whose colours are still to be looked up.

@@ -5,7 +5,8 @@
 
 use std::arch::x86_64::*;
 
-use super::super::{LaneShading, LaneWrap};
+use super::super::LaneShading;
+use super::super::sampler::LaneWrap;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
 /// A wrap mode the vector path can apply: `Mask(size - 1)` or `Clamp(size - 1)`.

@@ -8,7 +8,7 @@ mod spans;
 use spans::draw_spans;
 
 /// The scanline lane path (see the parent module). The same body is compiled for AVX-512 in
-/// `avx512/` ([`scanline_triangle_body`]).
+/// `avx512/` (the subfolder; [`scanline_triangle_body`]).
 #[target_feature(enable = "avx2")]
 pub(in crate::raster::lanes) fn scanline_triangle(
     tri: &LaneTriangle,
@@ -90,14 +90,7 @@ pub(in crate::raster::lanes) unsafe fn scanline_triangle_body<const WIDE: bool>(
                 // (The function's unsafe block covers this: `WIDE` is set only when the CPU
                 // has AVX-512 F, BW, VL and DQ, `VectorLevel::avx512`; `x0..=x1` is the row's
                 // exact span, inside the triangle's bounds and so inside the image.)
-                super::super::avx512::wide_span(
-                    &lanes,
-                    &step,
-                    (row, x0, x1),
-                    mode,
-                    sampler,
-                    target,
-                );
+                super::avx512::wide_span(&lanes, &step, (row, x0, x1), mode, sampler, target);
                 continue;
             }
             let load = |f: fn(&Stepped) -> f64, h: usize| {

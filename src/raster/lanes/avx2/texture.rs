@@ -50,7 +50,7 @@ impl Lookups {
                 // SAFETY: `wide` is set only when the CPU has AVX-512 F, BW, VL and DQ
                 // (`VectorLevel::avx512`).
                 let (a, b) = unsafe {
-                    super::super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
+                    super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
                 // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
                 // band's row inside the image (`finish`'s conditions; every chunk is made so).

@@ -42,13 +42,9 @@ pub(in crate::raster::lanes) unsafe fn finish<const WIDE: bool>(
         let pass = match chunk.lanes {
             // (The function's unsafe block covers this: `WIDE` is set only when the CPU has
             // AVX-512 F, BW, VL and DQ.)
-            Some(at) if WIDE => super::super::avx512::scatter::write_scatter(
-                target,
-                at,
-                chunk.valid,
-                chunk.depth,
-                rgba,
-            ),
+            Some(at) if WIDE => {
+                super::avx512::scatter::write_scatter(target, at, chunk.valid, chunk.depth, rgba)
+            }
             Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
             None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
         };

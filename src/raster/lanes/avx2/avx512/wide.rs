@@ -8,9 +8,9 @@
 
 use std::arch::x86_64::*;
 
-use super::super::avx2::sampler::VecSampler;
-use super::super::avx2::{Lookups, Pending, Where, finish, mask_from_bits};
-use super::super::{Constants, LaneColor, Target};
+use super::super::super::{Constants, LaneColor, Target};
+use super::super::sampler::VecSampler;
+use super::super::{Lookups, Pending, Where, finish, mask_from_bits};
 use crate::raster::interpolate::Interpolation;
 use crate::raster::setup::WeightPlanes;
 

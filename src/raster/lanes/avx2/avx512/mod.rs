@@ -10,16 +10,16 @@ use std::arch::x86_64::*;
 pub(super) mod scatter;
 pub(super) mod wide;
 
-use super::avx2;
-use super::avx2::sampler::{VecSampler, VecWrap};
-use super::{LANES, LaneShading, LaneTriangle, Stepped, Target};
+use super as avx2;
+use super::super::{LANES, LaneShading, LaneTriangle, Stepped, Target};
+use super::sampler::{VecSampler, VecWrap};
 use crate::raster::interpolate::Interpolation;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD};
 
 /// The edge-function lanes of `avx2/` compiled for AVX-512 (32 vector registers, mask
 /// registers; row chunks in one 512-bit register, [`wide`]; lookups of sixteen pixels).
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
-pub(super) fn edge_triangle(
+pub(in crate::raster::lanes) fn edge_triangle(
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: Option<&VecSampler<'_>>,
@@ -33,7 +33,7 @@ pub(super) fn edge_triangle(
 /// The scanline lanes of `avx2/` compiled for AVX-512 (long texture spans sixteen pixels at a
 /// time, [`span16`]).
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
-pub(super) fn scanline_triangle(
+pub(in crate::raster::lanes) fn scanline_triangle(
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: Option<&VecSampler<'_>>,
@@ -563,7 +563,7 @@ mod tests {
                     // SAFETY: the CPU has AVX2 (checked above); 8 lanes in and out.
                     unsafe {
                         let x = _mm256_loadu_ps(xs[8 * h..].as_ptr());
-                        let v = super::super::avx2::sampler::byte_from_sum(x);
+                        let v = super::super::sampler::byte_from_sum(x);
                         _mm256_storeu_si256(out[8 * h..].as_mut_ptr().cast(), v);
                     }
                 }

@@ -3,8 +3,8 @@
 
 use std::arch::x86_64::*;
 
-use super::super::Target;
-use super::super::avx2::sparse;
+use super::super::super::Target;
+use super::super::sparse;
 
 /// [`sparse::write`] with AVX-512: the stored depths of the `ok` lanes gathered, compared with
 /// [`depth_passes`](crate::raster::framebuffer::depth_passes)'s test (`<`, false for NaN), and the passing lanes' depth and colour
