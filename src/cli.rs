@@ -445,6 +445,9 @@ struct BenchArgs {
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 enum VectorArg {
+    /// The scalar lane code (the reference).
+    Scalar,
+    /// Portable SIMD lanes (SSE2/SSE4.1 on x86_64, NEON on aarch64).
     Portable,
     Avx2,
     Avx512,
@@ -453,6 +456,7 @@ enum VectorArg {
 impl From<VectorArg> for raster::lanes::VectorLevel {
     fn from(v: VectorArg) -> Self {
         match v {
+            VectorArg::Scalar => raster::lanes::VectorLevel::Scalar,
             VectorArg::Portable => raster::lanes::VectorLevel::Portable,
             VectorArg::Avx2 => raster::lanes::VectorLevel::Avx2,
             VectorArg::Avx512 => raster::lanes::VectorLevel::Avx512,

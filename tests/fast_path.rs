@@ -1,9 +1,9 @@
 //! The colour-and-depth fast path (`render_into` with `Buffers::ColorDepth`, the lane code in
 //! `raster::lanes`) against the per-pixel renderer with every buffer (`render`):
 //! - edge functions: colour and depth bit for bit, with the AVX2 intrinsics and with the
-//!   portable lanes, for every filter, wrap, mode and shading;
+//!   portable SIMD lanes and the scalar lanes, for every filter, wrap, mode and shading;
 //! - scanline: identical coverage, colours equal up to rounding, every shading; every vector
-//!   build of the scanline lanes bit for bit as the portable one.
+//!   build of the scanline lanes bit for bit as the scalar one.
 
 mod common;
 
@@ -61,11 +61,7 @@ fn assert_edge_identical(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
     let reference = render(mesh, tex, s).expect("render").frame;
     // A reused framebuffer of another size and content: fully reset by render_into.
     let mut frame = Framebuffer::new(3, 5, [1, 2, 3, 4]).expect("small frame");
-    for vector in [
-        VectorLevel::Avx512,
-        VectorLevel::Avx2,
-        VectorLevel::Portable,
-    ] {
+    for vector in VectorLevel::ALL {
         fast(mesh, tex, s, &mut frame, vector);
         assert_eq!(
             (frame.width, frame.height),
@@ -137,19 +133,15 @@ fn assert_scanline_close(mesh: &ClipMesh, tex: &Texture, s: &RenderSettings, wha
         rasterizer: Rasterizer::Scanline,
         ..*s
     };
-    // Every build of the scanline lanes does the same arithmetic: the portable code's image
+    // Every build of the scanline lanes does the same arithmetic: the scalar code's image
     // is the vector code's, bit for bit (short spans gathered into chunks included).
-    let mut portable = Framebuffer::empty();
-    fast(mesh, tex, &scan, &mut portable, VectorLevel::Portable);
-    for vector in [
-        VectorLevel::Avx512,
-        VectorLevel::Avx2,
-        VectorLevel::Portable,
-    ] {
+    let mut scalar = Framebuffer::empty();
+    fast(mesh, tex, &scan, &mut scalar, VectorLevel::Scalar);
+    for vector in VectorLevel::ALL {
         fast(mesh, tex, &scan, &mut frame, vector);
         assert!(
-            frame.color == portable.color && frame.depth == portable.depth,
-            "{what}, vector level {vector:?}: the scanline lanes differ from the portable build"
+            frame.color == scalar.color && frame.depth == scalar.depth,
+            "{what}, vector level {vector:?}: the scanline lanes differ from the scalar build"
         );
         let mut differing = 0;
         for i in 0..reference.color.len() {

@@ -58,6 +58,10 @@ struct Args {
     /// minute, and interleaved rounds give both renderers the same chances.
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=100))]
     rounds: u32,
+    /// With `--markdown`: the lanes' vector levels to time barylab at, each in every round and
+    /// in a table of its own (`--vector scalar,portable,avx2,avx512`); default: the best.
+    #[arg(long, value_delimiter = ',')]
+    vector: Vec<String>,
     /// Compare llvmpipe's images with barylab's on several scenes; print a Markdown table.
     #[arg(long)]
     conformance: bool,
@@ -147,6 +151,13 @@ fn parent(args: &Args) -> Result<(), String> {
         let lp = gl::Gpu::new()?;
         renderer.push_str(lp.renderer());
     }
+    // barylab's records per vector level (`None`: the default level).
+    let levels: Vec<Option<&str>> = if args.vector.is_empty() {
+        vec![None]
+    } else {
+        args.vector.iter().map(|v| Some(v.as_str())).collect()
+    };
+    let mut barylab: Vec<Vec<BenchRecord>> = vec![Vec::new(); levels.len()];
     for _ in 0..args.rounds {
         let mut round = Vec::new();
         for threads in barylab::bench::thread_counts(barylab::bench::available_cores()) {
@@ -165,19 +176,24 @@ fn parent(args: &Args) -> Result<(), String> {
             }
             round.extend(run_json(&mut cmd, "llvmpipe child")?);
         }
-        if args.markdown {
-            let mut cmd = Command::new(env!("CARGO_BIN_EXE_barylab"));
-            cmd.arg("bench")
-                .arg(&path)
-                .arg("--frames")
-                .arg(args.frames.to_string())
-                .arg("--json");
-            if let Some((w, h)) = args.size {
-                cmd.arg("--size").arg(format!("{w}x{h}"));
-            }
-            round.extend(run_json(&mut cmd, "barylab bench")?);
-        }
         keep_best(&mut records, round);
+        if args.markdown {
+            for (level, best) in levels.iter().zip(barylab.iter_mut()) {
+                let mut cmd = Command::new(env!("CARGO_BIN_EXE_barylab"));
+                cmd.arg("bench")
+                    .arg(&path)
+                    .arg("--frames")
+                    .arg(args.frames.to_string())
+                    .arg("--json");
+                if let Some((w, h)) = args.size {
+                    cmd.arg("--size").arg(format!("{w}x{h}"));
+                }
+                if let Some(level) = level {
+                    cmd.arg("--vector").arg(level);
+                }
+                keep_best(best, run_json(&mut cmd, "barylab bench")?);
+            }
+        }
     }
     if !args.markdown {
         println!(
@@ -186,10 +202,18 @@ fn parent(args: &Args) -> Result<(), String> {
         );
         return Ok(());
     }
-    print!(
-        "{}",
-        markdown(&records, &path, &renderer, args.frames, args.rounds)
-    );
+    for (level, best) in levels.iter().zip(barylab) {
+        if let Some(level) = level {
+            println!("Vector level `{level}`:\n");
+        }
+        let mut all = records.clone();
+        all.extend(best);
+        print!(
+            "{}",
+            markdown(&all, &path, &renderer, args.frames, args.rounds)
+        );
+        println!();
+    }
     Ok(())
 }
 

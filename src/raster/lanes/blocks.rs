@@ -63,7 +63,9 @@ impl EdgePlanes {
     /// The three edge values at pixel (col, row).
     #[inline]
     pub fn at(&self, row: i64, col: i64) -> [i64; 3] {
-        [0, 1, 2].map(|i| self.a[i] * col + self.b[i] * row + self.c[i])
+        // Written out: `[0, 1, 2].map` was left as a call in some builds.
+        let e = |i: usize| self.a[i] * col + self.b[i] * row + self.c[i];
+        [e(0), e(1), e(2)]
     }
 
     /// Whether every edge value over the columns `x0..=x1 + LANES` and rows `y0..=y1` is

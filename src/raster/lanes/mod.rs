@@ -35,15 +35,20 @@
 //!   at most four pixels are gathered into chunks of eight in the AVX2 build, with the values
 //!   the row's lanes would hold.
 //!
-//! Three builds of the same arithmetic, chosen at run time ([`VectorLevel`]) once per band of
-//! triangles ([`Lanes`]): AVX2 intrinsics
-//! (`avx2.rs`), compiled a second time for AVX-512 when the CPU has it (32 registers, mask
-//! registers; row chunks of texture shading in one 512-bit register, `avx2/wide.rs`; bilinear
-//! texture lookups of two chunks, sixteen pixels, at once, and the scanline lanes' long texture
-//! spans sixteen pixels at a time, `avx512.rs`), and portable lane code (plain arrays, compiled
-//! with AVX2 enabled where available). No fused multiply-add is used anywhere, so
-//! every build rounds identically; `tests/fast_path.rs` compares them all with the full
-//! render.
+//! Four builds of the same arithmetic, chosen at run time ([`VectorLevel`]) once per band of
+//! triangles ([`Lanes`]): the scalar lane code here (plain loops, lane by lane: the reference
+//! the others mirror); the portable SIMD lanes (`portable/`: the same operations over fixed
+//! arrays of eight lanes, which the compiler turns into SSE2 or SSE4.1 on x86_64 and NEON on
+//! aarch64, for texture shading into colour and depth); and, in folders named for the
+//! instructions they need, AVX2 intrinsics (`avx2/`: the lane paths, the AVX2 texture sampler
+//! `avx2/sampler.rs`) and, in its subfolder (AVX-512 code needs AVX2 too, and uses the AVX2
+//! code: a child, so the two import one way), the same code compiled a second time for AVX-512
+//! when the CPU has it (`avx2/avx512/`: the entries, 32 registers and mask registers; row chunks of texture shading in
+//! one 512-bit register, `avx2/avx512/wide.rs`; bilinear texture lookups of two chunks, sixteen
+//! pixels, at once, the scanline lanes' long texture spans sixteen pixels at a time, the
+//! scattered writes of gathered chunks, `avx2/avx512/scatter.rs`). No fused multiply-add is used
+//! anywhere, so every build rounds identically; `tests/fast_path.rs` compares them all with
+//! the full render.
 
 // Lane code indexes several parallel arrays by the lane number; iterators would hide that.
 #![allow(clippy::needless_range_loop)]
@@ -68,6 +73,7 @@ use super::varying::Varyings;
 
 mod blocks;
 mod paths;
+mod portable;
 mod sampler;
 mod scanline;
 mod triangle;
@@ -75,7 +81,7 @@ mod triangle;
 pub use blocks::EdgePlanes;
 use blocks::{Block, classify};
 pub use paths::Lanes;
-use sampler::{LaneWrap, Sampler};
+use sampler::Sampler;
 use scanline::Stepped;
 pub use scanline::scanline_triangle;
 use triangle::{CHANNELS, Constants};
@@ -83,20 +89,19 @@ pub use triangle::{LaneTriangle, LaneVertices};
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
-#[cfg(target_arch = "x86_64")]
-mod avx2_sampler;
-#[cfg(target_arch = "x86_64")]
-mod avx512;
 
 /// The instruction sets the lane paths may use (each also needs the CPU to have it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum VectorLevel {
-    /// The portable lane code only.
-    Portable = 0,
+    /// The scalar lane code only: the reference the other levels mirror, lane by lane.
+    Scalar = 0,
+    /// The portable SIMD lanes (`portable/`: SSE2 or SSE4.1 on x86_64, NEON on aarch64) for
+    /// texture shading into colour and depth; the scalar lane code for the rest.
+    Portable = 1,
     /// AVX2 intrinsics.
-    Avx2 = 1,
+    Avx2 = 2,
     /// AVX2, with texture lookups of sixteen pixels at once in AVX-512.
-    Avx512 = 2,
+    Avx512 = 3,
 }
 
 /// The level [`render_into`](super::render::render_into) draws at: all by default; the
@@ -111,12 +116,21 @@ pub fn set_vector_level(level: VectorLevel) {
 }
 
 impl VectorLevel {
+    /// Every level, from the scalar reference up.
+    pub const ALL: [VectorLevel; 4] = [
+        VectorLevel::Scalar,
+        VectorLevel::Portable,
+        VectorLevel::Avx2,
+        VectorLevel::Avx512,
+    ];
+
     /// The level [`render_into`](super::render::render_into) draws at (see
     /// [`set_vector_level`]).
     pub fn current() -> Self {
         match VECTOR_LEVEL.load(Ordering::Relaxed) {
-            0 => VectorLevel::Portable,
-            1 => VectorLevel::Avx2,
+            0 => VectorLevel::Scalar,
+            1 => VectorLevel::Portable,
+            2 => VectorLevel::Avx2,
             _ => VectorLevel::Avx512,
         }
     }
@@ -205,8 +219,9 @@ pub struct UvTarget<'a> {
     pub uv_perspective: &'a mut [[f32; 2]],
 }
 
-/// What the lanes shade: texture (nearest or bilinear), vertex colour, barycentric weights or
-/// depth ([`LaneColor`]), with the wireframe overlay on the edge-function path.
+/// What the lanes shade ([`LaneColor`]): texture (nearest or bilinear), vertex colour,
+/// barycentric weights, depth, the normal as colour or Lambert, with the wireframe overlay on
+/// the edge-function path.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LaneShading {
     /// Affine or perspective-correct interpolation.

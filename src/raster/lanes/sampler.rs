@@ -51,6 +51,9 @@ pub(super) struct Sampler<'a> {
     pub(super) size: (f32, f32),
     pub(super) wrap: (LaneWrap, LaneWrap),
     pub(super) filter: Filter,
+    /// Every texel's alpha is 255 ([`Texture::is_opaque`]; read by the portable lanes,
+    /// which then skip the alpha sum of bilinear filtering, whose result is 255).
+    pub(super) opaque: bool,
 }
 
 impl<'a> Sampler<'a> {
@@ -62,6 +65,7 @@ impl<'a> Sampler<'a> {
             size: (w as f32, h as f32),
             wrap: (LaneWrap::new(w, wrap), LaneWrap::new(h, wrap)),
             filter,
+            opaque: texture.is_opaque(),
         }
     }
 

@@ -7,39 +7,10 @@ mod spans;
 
 use spans::draw_spans;
 
-/// The scanline lane path (see the parent module). With `wide` (the CPU has AVX-512 F, BW, VL
-/// and DQ) the same code is compiled for AVX-512, as `edge_triangle`.
+/// The scanline lane path (see the parent module). The same body is compiled for AVX-512 in
+/// `avx512/` (the subfolder; [`scanline_triangle_body`]).
 #[target_feature(enable = "avx2")]
 pub(in crate::raster::lanes) fn scanline_triangle(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: Option<&VecSampler<'_>>,
-    wide: bool,
-    shading: &LaneShading,
-    target: &mut Target<'_>,
-) {
-    if wide {
-        // SAFETY: `wide` is set only when the CPU has these features (`VectorLevel::avx512`).
-        unsafe { scanline_triangle_512(tri, rows, sampler, shading, target) }
-    } else {
-        scanline_triangle_256(tri, rows, sampler, shading, target)
-    }
-}
-
-#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
-fn scanline_triangle_512(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: Option<&VecSampler<'_>>,
-    shading: &LaneShading,
-    target: &mut Target<'_>,
-) {
-    // SAFETY: this function's features.
-    unsafe { scanline_triangle_body::<true>(tri, rows, sampler, shading, target) }
-}
-
-#[target_feature(enable = "avx2")]
-fn scanline_triangle_256(
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: Option<&VecSampler<'_>>,
@@ -50,12 +21,13 @@ fn scanline_triangle_256(
     unsafe { scanline_triangle_body::<false>(tri, rows, sampler, shading, target) }
 }
 
-/// The body of both entries, inlined into each (so compiled for each one's instruction set).
+/// The body of both entries (this module's and `avx512::scanline_triangle`), inlined into
+/// each (so compiled for each one's instruction set).
 ///
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
 #[inline(always)]
-unsafe fn scanline_triangle_body<const WIDE: bool>(
+pub(in crate::raster::lanes) unsafe fn scanline_triangle_body<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,
@@ -118,7 +90,7 @@ unsafe fn scanline_triangle_body<const WIDE: bool>(
                 // (The function's unsafe block covers this: `WIDE` is set only when the CPU
                 // has AVX-512 F, BW, VL and DQ, `VectorLevel::avx512`; `x0..=x1` is the row's
                 // exact span, inside the triangle's bounds and so inside the image.)
-                wide_span(&lanes, &step, (row, x0, x1), mode, sampler, target);
+                super::avx512::wide_span(&lanes, &step, (row, x0, x1), mode, sampler, target);
                 continue;
             }
             let load = |f: fn(&Stepped) -> f64, h: usize| {
@@ -345,51 +317,6 @@ fn colour_span<const WIDE: bool>(
             }
         }
     }
-}
-
-/// The chunks of one span of texture shading with AVX-512 (into a band without uv or
-/// difference buffers, as every scanline band is): the `f64` values of the span's first eight
-/// pixels in one register each, and their increments over eight pixels, for
-/// [`avx512::span16`](super::super::avx512::span16), which draws the span sixteen pixels at a
-/// time with the operations of [`stepped_chunk`], lane for lane, so the same values.
-///
-/// # Safety
-/// The CPU has AVX2 and AVX-512 F, BW, VL and DQ, and columns `x0..=x1` of the band row
-/// whose first pixel is buffer index `row` are inside the target's buffers.
-#[inline]
-#[target_feature(enable = "avx2,avx512f,avx512dq")]
-unsafe fn wide_span(
-    lanes: &[Stepped; LANES],
-    step: &Stepped,
-    (row, x0, x1): (usize, u32, u32),
-    mode: Interpolation,
-    sampler: &VecSampler<'_>,
-    target: &mut Target<'_>,
-) {
-    debug_assert!(target.uv.is_none() && target.difference.is_none());
-    let load = |f: fn(&Stepped) -> f64| {
-        _mm512_setr_pd(
-            f(&lanes[0]),
-            f(&lanes[1]),
-            f(&lanes[2]),
-            f(&lanes[3]),
-            f(&lanes[4]),
-            f(&lanes[5]),
-            f(&lanes[6]),
-            f(&lanes[7]),
-        )
-    };
-    let vals = [
-        load(|s| s.u),
-        load(|s| s.v),
-        load(|s| s.inv_w),
-        load(|s| s.depth),
-    ];
-    let n = LANES as f64;
-    let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm512_set1_pd(x));
-    // SAFETY: as the function's: the CPU features, and the span `x0..=x1` of the band's row
-    // `row` lies inside the image (`span16`'s conditions).
-    unsafe { super::super::avx512::span16(vals, step8, (row, x0, x1), mode, sampler, target) };
 }
 
 /// uv, depth and the lanes to write of one chunk of the scanline lanes from its stepped

@@ -7,13 +7,13 @@ use super::*;
 /// Texture lookups of chunks: one at a time with AVX2, or two at a time with AVX-512. The
 /// sampler is passed to each call, not kept: a reference parameter tells the compiler that
 /// the pixel writes do not change it, so its filter and wrap are decided once per loop.
-pub(super) struct Lookups {
+pub(in crate::raster::lanes) struct Lookups {
     wide: bool,
     pending: Option<Pending>,
 }
 
 impl Lookups {
-    pub(super) fn new(sampler: Option<&VecSampler<'_>>, wide: bool) -> Self {
+    pub(in crate::raster::lanes) fn new(sampler: Option<&VecSampler<'_>>, wide: bool) -> Self {
         Self {
             // Measured: pairs pay for bilinear filtering (four lookups), not for nearest.
             wide: wide && sampler.is_some_and(|s| s.filter != Filter::Nearest),
@@ -30,7 +30,7 @@ impl Lookups {
     /// (a call boundary between its gathers costs up to half the speed).
     #[inline]
     #[target_feature(enable = "avx2")]
-    pub(super) fn push<const SITE: u8, const WIDE: bool>(
+    pub(in crate::raster::lanes) fn push<const SITE: u8, const WIDE: bool>(
         &mut self,
         sampler: &VecSampler<'_>,
         target: &mut Target<'_>,
@@ -50,7 +50,7 @@ impl Lookups {
                 // SAFETY: `wide` is set only when the CPU has AVX-512 F, BW, VL and DQ
                 // (`VectorLevel::avx512`).
                 let (a, b) = unsafe {
-                    super::super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
+                    super::avx512::sample16(sampler, (first.u, first.v), (chunk.u, chunk.v))
                 };
                 // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
                 // band's row inside the image (`finish`'s conditions; every chunk is made so).
@@ -64,7 +64,11 @@ impl Lookups {
 
     /// Shades and writes a chunk still waiting for a partner.
     #[target_feature(enable = "avx2")]
-    pub(super) fn flush(&mut self, sampler: Option<&VecSampler<'_>>, target: &mut Target<'_>) {
+    pub(in crate::raster::lanes) fn flush(
+        &mut self,
+        sampler: Option<&VecSampler<'_>>,
+        target: &mut Target<'_>,
+    ) {
         if let (Some(chunk), Some(sampler)) = (self.pending.take(), sampler) {
             let rgba = sample::<{ u8::MAX }, false>(sampler, chunk.u, chunk.v);
             // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the

@@ -10,13 +10,13 @@ use super::*;
 ///
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE` (gathered chunks are then
-/// written with scatters, `sparse::write_scatter`). Every lane of `chunk.valid` is a pixel
+/// written with scatters, `avx512::scatter::write_scatter`). Every lane of `chunk.valid` is a pixel
 /// of the target band's row inside the image: for a row chunk, buffer indices
 /// `chunk.index + k` below the length of the colour and depth buffers (and of the uv or
 /// difference buffers the target has), as [`write`], [`store_uv`] and [`store_difference`]
 /// require.
 #[inline(always)]
-pub(super) unsafe fn finish<const WIDE: bool>(
+pub(in crate::raster::lanes) unsafe fn finish<const WIDE: bool>(
     target: &mut Target<'_>,
     chunk: &Pending,
     mut rgba: __m256i,
@@ -42,7 +42,9 @@ pub(super) unsafe fn finish<const WIDE: bool>(
         let pass = match chunk.lanes {
             // (The function's unsafe block covers this: `WIDE` is set only when the CPU has
             // AVX-512 F, BW, VL and DQ.)
-            Some(at) if WIDE => sparse::write_scatter(target, at, chunk.valid, chunk.depth, rgba),
+            Some(at) if WIDE => {
+                super::avx512::scatter::write_scatter(target, at, chunk.valid, chunk.depth, rgba)
+            }
             Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
             None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
         };
@@ -193,7 +195,7 @@ unsafe fn write(
 /// An eight-lane mask from the low eight bits of `bits`.
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(super) fn mask_from_bits(bits: i32) -> __m256i {
+pub(in crate::raster::lanes) fn mask_from_bits(bits: i32) -> __m256i {
     let b = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
     _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(bits), b), b)
 }

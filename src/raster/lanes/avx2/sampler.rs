@@ -1,11 +1,12 @@
 //! The texture sampler of the x86 lanes: wrap, gather, bilinear weights and bytes of eight
 //! lanes with AVX2 ([`VecSampler`], [`sample`]). The AVX2 lanes (`avx2/`) look up one chunk
-//! of eight pixels at a time with it, the AVX-512 lanes (`avx512.rs`) two; it needs AVX2 only,
+//! of eight pixels at a time with it, the AVX-512 lanes (`avx512/`) two; it needs AVX2 only,
 //! and uses neither of them.
 
 use std::arch::x86_64::*;
 
-use super::{LaneShading, LaneWrap};
+use super::super::LaneShading;
+use super::super::sampler::LaneWrap;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
 /// A wrap mode the vector path can apply: `Mask(size - 1)` or `Clamp(size - 1)`.

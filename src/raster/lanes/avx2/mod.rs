@@ -1,10 +1,12 @@
 //! The lane paths written with AVX2 intrinsics: the same operations in the same order as
 //! the portable lane code in the parent module (and so as the per-pixel renderer), eight
 //! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
-//! is a mask or a clamp on both axes; tests check the two agree bit for bit.
-//! The texture lookups are in `avx2/texture.rs` (through the sampler of `avx2_sampler.rs`), the writes of a chunk in `avx2/write.rs`, the
-//! non-texture colours in `avx2/shade.rs`, the gathering of sparse rows in `avx2/sparse.rs`
-//! and the scanline lanes in `avx2/scanline.rs`.
+//! is a mask or a clamp on both axes; tests check the two agree bit for bit. The bodies are
+//! generic over `WIDE`: the subfolder `avx512/` (code that needs AVX-512 as well) compiles them
+//! again for AVX-512.
+//! The texture lookups are in `texture.rs` (through the sampler of `sampler.rs`), the writes
+//! of a chunk in `write.rs`, the non-texture colours in `shade.rs`, the gathering of sparse
+//! rows in `sparse.rs` and the scanline lanes in `scanline.rs`.
 
 use std::arch::x86_64::*;
 
@@ -20,36 +22,38 @@ use crate::raster::shade::{
 };
 use crate::raster::texture::Filter;
 
+pub(in crate::raster::lanes) mod avx512;
+pub(super) mod sampler;
 mod scanline;
 mod shade;
-mod sparse;
+pub(in crate::raster::lanes) mod sparse;
 mod texture;
-mod wide;
 mod write;
 
-pub(super) use scanline::scanline_triangle;
+pub(in crate::raster::lanes) use scanline::{scanline_triangle, scanline_triangle_body};
 use shade::channel_colors;
-use texture::Lookups;
-use write::{finish, mask_from_bits};
+pub(in crate::raster::lanes) use texture::Lookups;
+pub(in crate::raster::lanes) use write::{finish, mask_from_bits};
 
-use super::avx2_sampler::{VecSampler, sample};
+use avx512::wide;
+use sampler::{VecSampler, sample};
 
 /// A chunk of eight pixels whose colours are still to be looked up.
-struct Pending {
-    u: __m256,
-    v: __m256,
-    depth: __m256,
+pub(in crate::raster::lanes) struct Pending {
+    pub(in crate::raster::lanes) u: __m256,
+    pub(in crate::raster::lanes) v: __m256,
+    pub(in crate::raster::lanes) depth: __m256,
     /// Lanes to write.
-    valid: __m256i,
+    pub(in crate::raster::lanes) valid: __m256i,
     /// Lanes on a wireframe line.
-    wire: i32,
+    pub(in crate::raster::lanes) wire: i32,
     /// Lanes in the wireframe's halo (the line wins where both are set).
-    halo: i32,
+    pub(in crate::raster::lanes) halo: i32,
     /// Buffer index of lane 0 (a row chunk: eight pixels side by side).
-    index: usize,
+    pub(in crate::raster::lanes) index: usize,
     /// Buffer index of each lane instead, for a chunk gathered from several rows
     /// ([`sparse`]).
-    lanes: Option<__m256i>,
+    pub(in crate::raster::lanes) lanes: Option<__m256i>,
 }
 
 /// Two halves of four `f64` lanes converted to eight `f32` lanes.
@@ -182,39 +186,9 @@ struct Four {
 }
 
 /// The edge-function lane path (see the parent module): every [`LaneColor`], with the
-/// wireframe. With `wide` (the CPU has AVX-512 F, BW, VL and DQ) the same code is compiled for
-/// AVX-512, which gives it twice the vector registers.
+/// wireframe. The same body is compiled for AVX-512 in `avx512/` ([`edge_triangle_body`]).
 #[target_feature(enable = "avx2")]
 pub(super) fn edge_triangle(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: Option<&VecSampler<'_>>,
-    wide: bool,
-    shading: &LaneShading,
-    target: &mut Target<'_>,
-) {
-    if wide {
-        // SAFETY: `wide` is set only when the CPU has these features (`VectorLevel::avx512`).
-        unsafe { edge_triangle_512(tri, rows, sampler, shading, target) }
-    } else {
-        edge_triangle_256(tri, rows, sampler, shading, target)
-    }
-}
-
-#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
-fn edge_triangle_512(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: Option<&VecSampler<'_>>,
-    shading: &LaneShading,
-    target: &mut Target<'_>,
-) {
-    // SAFETY: this function's features.
-    unsafe { edge_triangle_body::<true>(tri, rows, sampler, shading, target) }
-}
-
-#[target_feature(enable = "avx2")]
-fn edge_triangle_256(
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: Option<&VecSampler<'_>>,
@@ -225,12 +199,13 @@ fn edge_triangle_256(
     unsafe { edge_triangle_body::<false>(tri, rows, sampler, shading, target) }
 }
 
-/// The body of both entries, inlined into each (so compiled for each one's instruction set).
+/// The body of both entries (this module's and `avx512::edge_triangle`), inlined into each
+/// (so compiled for each one's instruction set).
 ///
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
 #[inline(always)]
-unsafe fn edge_triangle_body<const WIDE: bool>(
+pub(in crate::raster::lanes) unsafe fn edge_triangle_body<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,
@@ -512,7 +487,7 @@ fn passing(e: &[__m256d; 3], t: &[__m256d; 3]) -> i32 {
 
 /// Where a chunk's lanes are in the band's buffers.
 #[derive(Clone, Copy)]
-enum Where {
+pub(in crate::raster::lanes) enum Where {
     /// Eight pixels side by side from this buffer index.
     Row(usize),
     /// Each lane at its own buffer index ([`sparse`]).
@@ -522,7 +497,7 @@ enum Where {
 impl Where {
     /// [`Pending::index`] and [`Pending::lanes`].
     #[inline]
-    fn parts(self) -> (usize, Option<__m256i>) {
+    pub(in crate::raster::lanes) fn parts(self) -> (usize, Option<__m256i>) {
         match self {
             Where::Row(i) => (i, None),
             Where::Lanes(l) => (0, Some(l)),

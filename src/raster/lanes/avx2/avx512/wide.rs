@@ -6,13 +6,19 @@
 //! (gathered chunks keep the halves: measured slower on the dense meshes, more code for no
 //! gain); the rest takes the two halves of four lanes.
 
-use super::*;
+use std::arch::x86_64::*;
+
+use super::super::super::{Constants, LaneColor, Target};
+use super::super::sampler::VecSampler;
+use super::super::{Lookups, Pending, Where, finish, mask_from_bits};
+use crate::raster::interpolate::Interpolation;
+use crate::raster::setup::WeightPlanes;
 
 /// Whether [`texture_chunk`] can draw a triangle's row chunks: texture shading without the
 /// wireframe or any extra buffer, or the difference view's buffers (which shade nothing, so
 /// neither colour nor wireframe matters there).
 #[inline]
-pub(super) fn applies(
+pub(in crate::raster::lanes) fn applies(
     consts: &Constants,
     color: LaneColor,
     sampler: Option<&VecSampler<'_>>,
@@ -45,7 +51,11 @@ fn dot3(w: &[__m512d; 3], x: [f64; 3]) -> __m512d {
 /// from the row terms `row`: `weights4`'s operations.
 #[inline]
 #[target_feature(enable = "avx512f")]
-pub(super) fn row_weights(w: &WeightPlanes, row: &[f64; 3], px: f64) -> [__m512d; 3] {
+pub(in crate::raster::lanes) fn row_weights(
+    w: &WeightPlanes,
+    row: &[f64; 3],
+    px: f64,
+) -> [__m512d; 3] {
     let x = _mm512_add_pd(
         _mm512_set1_pd(px),
         _mm512_setr_pd(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0),
@@ -67,7 +77,7 @@ pub(super) fn row_weights(w: &WeightPlanes, row: &[f64; 3], px: f64) -> [__m512d
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2,avx512f,avx512dq")]
-pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
+pub(in crate::raster::lanes) fn texture_chunk<const SITE: u8, const WIDE: bool>(
     l: [__m512d; 3],
     consts: &Constants,
     covered: i32,
@@ -131,7 +141,7 @@ pub(super) fn texture_chunk<const SITE: u8, const WIDE: bool>(
 /// Whether [`texture_pair`] can draw a triangle's rows: texture shading without the wireframe
 /// or any extra buffer (not the difference view's).
 #[inline]
-pub(super) fn pairs_apply(
+pub(in crate::raster::lanes) fn pairs_apply(
     consts: &Constants,
     color: LaneColor,
     sampler: Option<&VecSampler<'_>>,
@@ -148,7 +158,7 @@ pub(super) fn pairs_apply(
 /// # Safety
 /// The CPU has AVX2 and AVX-512 F, BW, VL and DQ.
 #[inline(always)]
-pub(super) unsafe fn inside_block(
+pub(in crate::raster::lanes) unsafe fn inside_block(
     consts: &Constants,
     (bx, in_row): (u32, i32),
     (by, by_end): (u32, u32),
@@ -185,7 +195,7 @@ pub(super) unsafe fn inside_block(
 /// [`pairs_apply`] must hold.
 #[inline]
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
-pub(super) fn texture_pair(
+pub(in crate::raster::lanes) fn texture_pair(
     l: [[__m512d; 3]; 2],
     consts: &Constants,
     covered: [i32; 2],
@@ -225,7 +235,7 @@ pub(super) fn texture_pair(
     if ok == 0 {
         return;
     }
-    use super::super::avx512::{join, sample16_packed, write_rows};
+    use super::{join, sample16_packed, write_rows};
     let rgba = sample16_packed(sampler, join(u[0], u[1]), join(v[0], v[1]));
     write_rows(target, index, ok, join(depth[0], depth[1]), rgba);
 }

@@ -1,15 +1,48 @@
-//! The texture lookup of the AVX2 lane paths for sixteen pixels at once (two eight-pixel
-//! chunks), with AVX-512: the same operations in the same order as `avx2::sample`, so the
-//! same bytes; used when the CPU has AVX-512 F, BW, VL and DQ. The scanline lanes' long spans
-//! of texture shading are drawn here sixteen pixels at a time ([`span16`]), and the
-//! edge-function lanes' row pairs are written here ([`write_rows`]).
+//! The lane code that needs AVX-512 (F, BW, VL and DQ; used when the CPU has them): the
+//! entries that compile the `avx2/` bodies for AVX-512, the texture lookup of sixteen pixels
+//! at once (two eight-pixel chunks) with the same operations in the same order as
+//! `avx2::sample`, so the same bytes; the scanline lanes' long spans of texture shading
+//! sixteen pixels at a time ([`span16`]), the edge-function lanes' row pairs' writes
+//! ([`write_rows`]), the row chunks of `wide.rs` and the scattered writes of `scatter.rs`.
 
 use std::arch::x86_64::*;
 
-use super::Target;
-use super::avx2_sampler::{VecSampler, VecWrap};
+pub(super) mod scatter;
+pub(super) mod wide;
+
+use super as avx2;
+use super::super::{LANES, LaneShading, LaneTriangle, Stepped, Target};
+use super::sampler::{VecSampler, VecWrap};
 use crate::raster::interpolate::Interpolation;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD};
+
+/// The edge-function lanes of `avx2/` compiled for AVX-512 (32 vector registers, mask
+/// registers; row chunks in one 512-bit register, [`wide`]; lookups of sixteen pixels).
+#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
+pub(in crate::raster::lanes) fn edge_triangle(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: this function's features.
+    unsafe { avx2::edge_triangle_body::<true>(tri, rows, sampler, shading, target) }
+}
+
+/// The scanline lanes of `avx2/` compiled for AVX-512 (long texture spans sixteen pixels at a
+/// time, [`span16`]).
+#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
+pub(in crate::raster::lanes) fn scanline_triangle(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: this function's features.
+    unsafe { avx2::scanline_triangle_body::<true>(tri, rows, sampler, shading, target) }
+}
 
 /// `(floor(clamp(x)) as i32, floor(clamp(x)))` with NaN giving index 0, as `texel_floor`.
 #[inline]
@@ -288,6 +321,51 @@ pub(super) fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m51
     }
 }
 
+/// The chunks of one span of texture shading with AVX-512 (into a band without uv or
+/// difference buffers, as every scanline band is): the `f64` values of the span's first eight
+/// pixels in one register each, and their increments over eight pixels, for
+/// [`span16`], which draws the span sixteen pixels at a
+/// time with the operations of `avx2::scanline`'s `stepped_chunk`, lane for lane, so the same values.
+///
+/// # Safety
+/// The CPU has AVX2 and AVX-512 F, BW, VL and DQ, and columns `x0..=x1` of the band row
+/// whose first pixel is buffer index `row` are inside the target's buffers.
+#[inline]
+#[target_feature(enable = "avx2,avx512f,avx512dq")]
+pub(in crate::raster::lanes) unsafe fn wide_span(
+    lanes: &[Stepped; LANES],
+    step: &Stepped,
+    (row, x0, x1): (usize, u32, u32),
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    target: &mut Target<'_>,
+) {
+    debug_assert!(target.uv.is_none() && target.difference.is_none());
+    let load = |f: fn(&Stepped) -> f64| {
+        _mm512_setr_pd(
+            f(&lanes[0]),
+            f(&lanes[1]),
+            f(&lanes[2]),
+            f(&lanes[3]),
+            f(&lanes[4]),
+            f(&lanes[5]),
+            f(&lanes[6]),
+            f(&lanes[7]),
+        )
+    };
+    let vals = [
+        load(|s| s.u),
+        load(|s| s.v),
+        load(|s| s.inv_w),
+        load(|s| s.depth),
+    ];
+    let n = LANES as f64;
+    let step8 = [step.u * n, step.v * n, step.inv_w * n, step.depth * n].map(|x| _mm512_set1_pd(x));
+    // SAFETY: as the function's: the CPU features, and the span `x0..=x1` of the band's row
+    // `row` lies inside the image (`span16`'s conditions).
+    unsafe { span16(vals, step8, (row, x0, x1), mode, sampler, target) };
+}
+
 /// The chunks of one span of texture shading (nearest or bilinear) in the scanline lanes,
 /// sixteen pixels at a time, into a band without uv or difference buffers.
 ///
@@ -485,7 +563,7 @@ mod tests {
                     // SAFETY: the CPU has AVX2 (checked above); 8 lanes in and out.
                     unsafe {
                         let x = _mm256_loadu_ps(xs[8 * h..].as_ptr());
-                        let v = super::super::avx2_sampler::byte_from_sum(x);
+                        let v = super::super::sampler::byte_from_sum(x);
                         _mm256_storeu_si256(out[8 * h..].as_mut_ptr().cast(), v);
                     }
                 }

@@ -1,0 +1,266 @@
+//! The portable SIMD lanes: texture shading (nearest or bilinear) of both rasterizers into
+//! colour and depth, written once in plain Rust over fixed arrays of eight lanes, one
+//! operation at a time over all lanes ([`each`]), so that the compiler maps each operation to
+//! vector instructions: SSE2 on any x86_64 (SSE4.1 where the CPU has it: the same source
+//! compiled a second time, `edge_triangle_sse41`), NEON on aarch64. No intrinsics, no
+//! dependency; one `unsafe` conversion (`sampler::trunc`, whose range is checked first).
+//!
+//! The operations and their order are the scalar lane code's (the parent module), so the
+//! pixels are the same bit for bit (`tests/fast_path.rs` runs every test at this level too);
+//! the AVX2 intrinsics (`avx2/`) mirror the same code. Other cases (other shadings, the
+//! wireframe, the uv and difference buffers) go to the scalar lane code.
+
+use super::*;
+
+mod sampler;
+
+type I32s = [i32; LANES];
+/// Packed RGBA8 colours of eight lanes, red in the low byte.
+type Rgba = [u32; LANES];
+
+/// `[f(0), f(1), ..., f(7)]`: one operation over the eight lanes. (A loop, not
+/// `array::from_fn`: that was left as a call, compiled without the caller's SSE4.1.)
+#[inline(always)]
+fn each<T: Copy + Default>(mut f: impl FnMut(usize) -> T) -> [T; LANES] {
+    let mut out = [T::default(); LANES];
+    for (k, o) in out.iter_mut().enumerate() {
+        *o = f(k);
+    }
+    out
+}
+
+/// `[f(0), f(1), f(2)]`: one operation per edge or vertex (written out: `[0, 1, 2].map` was
+/// left as calls).
+#[inline(always)]
+fn three<T>(mut f: impl FnMut(usize) -> T) -> [T; 3] {
+    [f(0), f(1), f(2)]
+}
+
+/// Whether the portable lanes draw a triangle made for `shading` into `target`: texture
+/// shading without the wireframe, into colour and depth only.
+pub(super) fn applies(shading: &LaneShading, target: &Target<'_>) -> bool {
+    shading.color == LaneColor::Texture
+        && !shading.wireframe
+        && target.uv.is_none()
+        && target.difference.is_none()
+}
+
+/// The edge-function lanes of [`edge_triangle_impl`](super::edge_triangle_impl) for texture
+/// shading ([`applies`] must hold), compiled for the baseline of the target (SSE2 on x86_64,
+/// NEON on aarch64).
+pub(super) fn edge_triangle(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: &Sampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    edge_body(tri, rows, sampler, mode, target);
+}
+
+/// [`edge_triangle`] compiled with SSE4.1 (rounding, blends, 32-bit minimum and maximum).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "sse4.1")]
+pub(super) fn edge_triangle_sse41(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: &Sampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    edge_body(tri, rows, sampler, mode, target);
+}
+
+/// The scanline lanes of [`scanline_triangle_impl`](super::scanline::scanline_triangle_impl)
+/// for texture shading ([`applies`] must hold), compiled for the baseline of the target.
+pub(super) fn scanline_triangle(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: &Sampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    scanline_body(tri, rows, sampler, mode, target);
+}
+
+/// [`scanline_triangle`] compiled with SSE4.1.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "sse4.1")]
+pub(super) fn scanline_triangle_sse41(
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: &Sampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    scanline_body(tri, rows, sampler, mode, target);
+}
+
+/// The edge-function lanes: blocks rejected, accepted or tested as in the scalar lane code,
+/// then per row chunk the scalar code's operations, lane by lane: the edge values, the
+/// screen weights ([`row_weights`]), `interpolate::fragment`'s uv and depth ([`from_weights`]),
+/// the texture lookup, the depth test and the write.
+#[inline(always)]
+fn edge_body(
+    tri: &LaneTriangle,
+    (y_start, y_end): (u32, u32),
+    sampler: &Sampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    let planes = &tri.planes;
+    let consts = &tri.consts;
+    let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
+    let a = three(|i| planes.a[i] as f64);
+    let t = three(|i| planes.t[i] as f64);
+    let mut by = y_start;
+    while by <= y_end {
+        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
+        let mut bx = x0;
+        while bx <= x1 {
+            let bx_end = bx + LANES as u32 - 1;
+            let block = classify(
+                planes,
+                (i64::from(bx), i64::from(bx_end)),
+                (i64::from(by), i64::from(by_end)),
+            );
+            if block != Block::Outside {
+                let lanes_in = (x1 - bx + 1).min(LANES as u32) as usize;
+                for y in by..=by_end {
+                    let covered: Mask = if block == Block::Inside {
+                        each(|k| k < lanes_in)
+                    } else {
+                        let base = planes.at(i64::from(y), i64::from(bx));
+                        let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
+                        each(|k| {
+                            k < lanes_in && e[0][k] >= t[0] && e[1][k] >= t[1] && e[2][k] >= t[2]
+                        })
+                    };
+                    if !covered.iter().any(|&c| c) {
+                        continue;
+                    }
+                    let (u, v, depth, ok) =
+                        from_weights(&row_weights(&consts.weights, bx, y), consts, mode);
+                    let ok = each(|k| ok[k] && covered[k]);
+                    let rgba = sampler.sample_packed(&u, &v);
+                    write(target, bx, y, &ok, &depth, &rgba);
+                }
+            }
+            bx += LANES as u32;
+        }
+        by = by_end + 1;
+    }
+}
+
+/// [`super::row_weights`], one operation over all lanes at a time.
+#[inline(always)]
+fn row_weights(w: &WeightPlanes, x: u32, y: u32) -> [F64s; 3] {
+    let py = f64::from(y) + 0.5;
+    let px: F64s = each(|k| (f64::from(x) + OFFSETS[k]) + 0.5);
+    three(|i| {
+        let row = w.row_term(i, py);
+        each(|k| w.weight(i, row, px[k]))
+    })
+}
+
+/// uv, depth and validity of eight samples from their screen weights, as [`super::from_weights`]
+/// computes them for texture shading: `q_i = l_i / w_i`, valid where `sum q` is positive and
+/// finite, `uv = sum w_i uv_i` with the mode's weights, `depth = sum l_i d_i`.
+#[inline(always)]
+fn from_weights(l: &[F64s; 3], c: &Constants, mode: Interpolation) -> (F32s, F32s, F32s, Mask) {
+    let q = three(|i| each(|k| l[i][k] * c.inv_w[i]));
+    let sum: F64s = each(|k| q[0][k] + q[1][k] + q[2][k]);
+    let ok = each(|k| sum[k] > 0.0 && sum[k] < f64::INFINITY);
+    let w = match mode {
+        Interpolation::Perspective => {
+            let inv: F64s = each(|k| 1.0 / sum[k]);
+            three(|i| each(|k| q[i][k] * inv[k]))
+        }
+        Interpolation::Affine => *l,
+    };
+    let dot = |w: &[F64s; 3], x: &[f64; 3]| -> F32s {
+        each(|k| (w[0][k] * x[0] + w[1][k] * x[1] + w[2][k] * x[2]) as f32)
+    };
+    (dot(&w, &c.u), dot(&w, &c.v), dot(l, &c.depth), ok)
+}
+
+/// The scanline lanes: the scalar code's spans, start values and single steps (the same
+/// [`Stepped`] values), carried as eight lanes per quantity, advanced by eight increments per
+/// chunk.
+#[inline(always)]
+fn scanline_body(
+    tri: &LaneTriangle,
+    (y_start, y_end): (u32, u32),
+    sampler: &Sampler<'_>,
+    mode: Interpolation,
+    target: &mut Target<'_>,
+) {
+    let consts = &tri.consts;
+    let step = Stepped::row_step(consts, mode);
+    let n = LANES as f64;
+    let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
+    for y in y_start..=y_end {
+        let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
+            continue;
+        };
+        let lanes = Stepped::lanes(Stepped::span_start(consts, mode, x0, y), &step);
+        let mut u: F64s = each(|k| lanes[k].u);
+        let mut v: F64s = each(|k| lanes[k].v);
+        let mut inv_w: F64s = each(|k| lanes[k].inv_w);
+        let mut depth: F64s = each(|k| lanes[k].depth);
+        let mut x = x0;
+        while x <= x1 {
+            let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
+            let ok = each(|k| k < lanes_in && inv_w[k] > 0.0 && inv_w[k] < f64::INFINITY);
+            let (uf, vf) = match mode {
+                Interpolation::Perspective => {
+                    let w: F64s = each(|k| 1.0 / inv_w[k]);
+                    (
+                        each(|k| (u[k] * w[k]) as f32),
+                        each(|k| (v[k] * w[k]) as f32),
+                    )
+                }
+                Interpolation::Affine => (each(|k| u[k] as f32), each(|k| v[k] as f32)),
+            };
+            let d: F32s = each(|k| depth[k] as f32);
+            let rgba = sampler.sample_packed(&uf, &vf);
+            write(target, x, y, &ok, &d, &rgba);
+            u = each(|k| u[k] + su);
+            v = each(|k| v[k] + sv);
+            inv_w = each(|k| inv_w[k] + sw);
+            depth = each(|k| depth[k] + sd);
+            x += LANES as u32;
+        }
+    }
+}
+
+/// Depth-tests and writes the lanes of `ok` of one row chunk from column `x` of row `y`
+/// ([`depth_passes`]: an ordered less-than), as the scalar [`write`](super::write) does
+/// for colour and depth. Eight lanes inside the row are read and written whole, with the
+/// failing lanes keeping their values (the band's rows belong to this thread only).
+#[inline(always)]
+fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask, depth: &F32s, rgba: &Rgba) {
+    let i = (y - target.y0) as usize * target.width as usize + x as usize;
+    let colors: [[u8; 4]; LANES] = each(|k| rgba[k].to_le_bytes());
+    if ok.iter().all(|&o| o)
+        && let Some((d, _)) = target
+            .depth
+            .get_mut(i..)
+            .and_then(|s| s.split_first_chunk_mut::<LANES>())
+        && let Some((c, _)) = target
+            .color
+            .get_mut(i..)
+            .and_then(|s| s.split_first_chunk_mut::<LANES>())
+    {
+        let pass: Mask = each(|k| depth_passes(depth[k], d[k]));
+        *d = each(|k| if pass[k] { depth[k] } else { d[k] });
+        *c = each(|k| if pass[k] { colors[k] } else { c[k] });
+        return;
+    }
+    for k in 0..LANES {
+        if ok[k] && depth_passes(depth[k], target.depth[i + k]) {
+            target.depth[i + k] = depth[k];
+            target.color[i + k] = colors[k];
+        }
+    }
+}

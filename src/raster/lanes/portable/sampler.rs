@@ -1,0 +1,171 @@
+//! Texture lookups of the portable lanes: the scalar [`Sampler`]'s operations, one operation
+//! at a time over all eight lanes (so the compiler turns each into vector instructions), in
+//! the AVX2 sampler's order (`avx2/sampler.rs`): `floor` by truncation, the rounding to a byte
+//! by `trunc` and a comparison with 1/2.
+
+use super::super::sampler::{LaneWrap, Sampler};
+use super::super::texture::Filter;
+use super::{F32s, I32s, LANES, Rgba, each};
+use crate::raster::texture::MAX_TEXEL_COORD;
+
+/// `x as i32` for an `x` already clamped to +-[`MAX_TEXEL_COORD`] or NaN: NaN gives 0 (as
+/// `as i32`), the rest is truncated. (`as i32` saturates, which the compiler does lane by
+/// lane; this is one vector conversion.)
+#[inline(always)]
+fn trunc(x: f32) -> i32 {
+    let x = if x.is_nan() { 0.0 } else { x };
+    debug_assert!(x.abs() <= MAX_TEXEL_COORD);
+    // SAFETY: `x` is finite and within +-1e9 (clamped by the caller, NaN replaced above), so
+    // its truncation fits an `i32`.
+    unsafe { x.to_int_unchecked::<i32>() }
+}
+
+/// `(floor(clamp(x)) as i32, floor(clamp(x)))` per lane, as `texture::texel_floor` and the
+/// floor inside `texture::bilinear_fraction`: the coordinate clamped to
+/// +-[`MAX_TEXEL_COORD`], truncated (`as i32`: NaN gives 0), one less where the truncation is
+/// above it. NaN gives index 0, as `texel_floor`.
+#[inline(always)]
+fn floor_coord(x: &F32s) -> (I32s, F32s) {
+    let floor = each(|k| {
+        let xc = x[k].clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD);
+        let t = trunc(xc) as f32;
+        if t > xc { t - 1.0 } else { t }
+    });
+    (each(|k| trunc(floor[k])), floor)
+}
+
+/// `texture::bilinear_fraction` per lane: `clamp(x - floor, 0, 1)` where `x` is finite,
+/// else 0.
+#[inline(always)]
+fn fraction(x: &F32s, floor: &F32s) -> F32s {
+    each(|k| {
+        let t = (x[k] - floor[k]).clamp(0.0, 1.0);
+        if x[k].is_finite() { t } else { 0.0 }
+    })
+}
+
+/// A wrap mode applied to eight texel indices along one axis ([`LaneWrap::apply`]): the mode
+/// is matched once, then applied to every lane.
+#[inline(always)]
+fn wrap(i: &I32s, w: LaneWrap) -> [usize; LANES] {
+    match w {
+        LaneWrap::Mask(m) => each(|k| (i[k] & m) as usize),
+        LaneWrap::Clamp(hi) => each(|k| i[k].clamp(0, hi) as usize),
+        LaneWrap::General(..) => each(|k| w.apply(i[k])),
+    }
+}
+
+/// `texture::byte_from_sum` per lane: NaN gives 0, else `clamp(x, 0, 255)` rounded half away
+/// from zero, as `trunc(x)` plus one where the rest is at least 1/2.
+#[inline(always)]
+pub(super) fn byte_from_sum(y: &F32s) -> I32s {
+    each(|k| {
+        let y = y[k].clamp(0.0, 255.0);
+        let t = trunc(y);
+        t + i32::from(y - t as f32 >= 0.5)
+    })
+}
+
+/// Channel `c` (0 = red) of eight packed texels, as `f32` in 0..255.
+#[inline(always)]
+fn channel(t: &Rgba, c: u32) -> F32s {
+    each(|k| ((t[k] >> (8 * c)) & 0xff) as f32)
+}
+
+/// `sum_k weight_k * channel_k`, left to right, rounded to a byte.
+#[inline(always)]
+fn weighted(w: &[F32s; 4], t: &[Rgba; 4], c: u32) -> I32s {
+    let mut sum = each(|k| w[0][k] * channel(&t[0], c)[k]);
+    for n in 1..4 {
+        let ch = channel(&t[n], c);
+        sum = each(|k| sum[k] + w[n][k] * ch[k]);
+    }
+    byte_from_sum(&sum)
+}
+
+impl Sampler<'_> {
+    /// The packed texels (red in the low byte) at wrapped indices.
+    #[inline(always)]
+    fn fetch(&self, i: &[usize; LANES], j: &[usize; LANES]) -> Rgba {
+        each(|k| u32::from_le_bytes(self.texel(i[k], j[k])))
+    }
+
+    /// The packed RGBA8 colours (red in the low byte) at eight uv, as [`Sampler::sample`]
+    /// gives them.
+    #[inline(always)]
+    pub(super) fn sample_packed(&self, u: &F32s, v: &F32s) -> Rgba {
+        let (w, h) = self.size;
+        match self.filter {
+            // One texel of weight 1: the colour is the texel (see the parent module).
+            Filter::Nearest => {
+                let i = wrap(&floor_coord(&each(|k| u[k] * w)).0, self.wrap.0);
+                let j = wrap(&floor_coord(&each(|k| v[k] * h)).0, self.wrap.1);
+                self.fetch(&i, &j)
+            }
+            _ => {
+                let x = each(|k| u[k] * w - 0.5);
+                let y = each(|k| v[k] * h - 0.5);
+                let (i0, fx) = floor_coord(&x);
+                let (j0, fy) = floor_coord(&y);
+                let (a, b) = (fraction(&x, &fx), fraction(&y, &fy));
+                let (ia, ib) = (
+                    wrap(&i0, self.wrap.0),
+                    wrap(&each(|k| i0[k] + 1), self.wrap.0),
+                );
+                let (ja, jb) = (
+                    wrap(&j0, self.wrap.1),
+                    wrap(&each(|k| j0[k] + 1), self.wrap.1),
+                );
+                let texels = [
+                    self.fetch(&ia, &ja),
+                    self.fetch(&ib, &ja),
+                    self.fetch(&ia, &jb),
+                    self.fetch(&ib, &jb),
+                ];
+                // `texture::bilinear_weights`, per lane.
+                let (oa, ob) = (each(|k| 1.0 - a[k]), each(|k| 1.0 - b[k]));
+                let weights = [
+                    each(|k| oa[k] * ob[k]),
+                    each(|k| a[k] * ob[k]),
+                    each(|k| oa[k] * b[k]),
+                    each(|k| a[k] * b[k]),
+                ];
+                let r = weighted(&weights, &texels, 0);
+                let g = weighted(&weights, &texels, 1);
+                let b = weighted(&weights, &texels, 2);
+                // An opaque texture's alpha sum is 255 (see `VecSampler::opaque`).
+                let a = if self.opaque {
+                    [255; LANES]
+                } else {
+                    weighted(&weights, &texels, 3)
+                };
+                each(|k| (r[k] | g[k] << 8 | b[k] << 16 | a[k] << 24) as u32)
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::raster::texture::byte_from_sum;
+
+    /// Every float from 0 to 255.001 (the range of a bilinear sum) rounds to the byte the
+    /// scalar code gives.
+    #[test]
+    fn every_bilinear_sum_rounds_as_the_scalar_code() {
+        let last = 255.001f32.to_bits();
+        let mut wrong = Vec::new();
+        let mut bits = 0u32;
+        while bits <= last && wrong.len() < 10 {
+            let xs: super::F32s =
+                std::array::from_fn(|k| f32::from_bits((bits + k as u32).min(last)));
+            for (x, got) in xs.iter().zip(super::byte_from_sum(&xs)) {
+                if got != i32::from(byte_from_sum(*x)) {
+                    wrong.push((*x, got));
+                }
+            }
+            bits += super::LANES as u32;
+        }
+        assert!(wrong.is_empty(), "rounded differently: {wrong:?}");
+    }
+}
