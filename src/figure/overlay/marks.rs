@@ -52,8 +52,9 @@ pub(super) fn triangle_shapes(
 
 /// The clipped polygon: its outline and the fan's inner edges dashed, and each corner the
 /// clipper made marked and named (K1, K2, ...), its label on the side away from the
-/// polygon's centre.
-pub(super) fn clip_shapes(shapes: &mut Vec<Shape>, c: &ClipMark) {
+/// polygon's centre; a corner outside the `w x h` image gets no mark (a label pushed inside
+/// would name the wrong place).
+pub(super) fn clip_shapes(shapes: &mut Vec<Shape>, c: &ClipMark, w: f64, h: f64) {
     let n = c.corners.len();
     if n < 3 {
         return;
@@ -77,7 +78,8 @@ pub(super) fn clip_shapes(shapes: &mut Vec<Shape>, c: &ClipMark) {
     }
     let centre = points.iter().sum::<DVec2>() / n as f64;
     for (name, p, made) in &c.corners {
-        if !made {
+        let inside = (0.0..=w).contains(&p.x) && (0.0..=h).contains(&p.y);
+        if !made || !inside {
             continue;
         }
         shapes.push(Shape::Circle {

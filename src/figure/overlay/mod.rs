@@ -175,7 +175,7 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
         triangle_shapes(&mut shapes, &t, centre_of(mark.pixel), sub_areas);
     }
     if let Some(c) = &input.clipped {
-        clip_shapes(&mut shapes, c);
+        clip_shapes(&mut shapes, c, wf, hf);
     }
     if let Some(pin) = input.pin {
         pixel_marker(&mut shapes, pin.pixel, PIN, wf, hf, false);
