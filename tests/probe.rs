@@ -113,9 +113,11 @@ scene_tests! {
     games101_a2: "games101-a2.json",
     games101_a3_spot: "games101-a3-spot.json",
     games101_pitfall: "games101-pitfall.json",
+    near_cut: "near-cut.json",
     orthographic: "orthographic.json",
     seed001_2x2: "rgbw-2x2.json",
     rgb_triangle: "rgb-triangle.json",
+    tetrahedron: "tetrahedron.json",
     vertex_colors: "vertex-colors.json",
 }
 
