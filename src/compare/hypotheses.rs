@@ -5,9 +5,11 @@
 use serde::Serialize;
 
 use super::reason::Reason;
+use super::sampling::Sampled;
 use super::verdict::{Kind, Verdict};
 use super::{CoverageBy, Image, Reference, Rendered, classify, uv_gap_texels};
 use crate::i18n::Lang;
+use crate::raster::sample::SampleCount;
 use crate::raster::setup::TieRule;
 use crate::raster::{Framebuffer, Interpolation, Texture};
 
@@ -97,13 +99,7 @@ pub fn try_all(
         TieRule::TopLeft => TieRule::Llvmpipe,
     };
     let mut tried = Vec::new();
-    let mut add = |kind, image: Rendered| {
-        let mask: Vec<bool> = theirs
-            .pixels
-            .iter()
-            .enumerate()
-            .map(|(k, &p)| classify(p, &image, k, by, tolerance).is_some())
-            .collect();
+    let mut push = |kind, mask: Vec<bool>| {
         tried.push(Tried {
             kind,
             differing: mask.iter().filter(|&&d| d).count(),
@@ -111,6 +107,15 @@ pub fn try_all(
             other_mode,
             other_rule,
         });
+    };
+    let mut add = |kind, image: Rendered| {
+        let mask = theirs
+            .pixels
+            .iter()
+            .enumerate()
+            .map(|(k, &p)| classify(p, &image, k, by, tolerance).is_some())
+            .collect();
+        push(kind, mask);
     };
     add(Kind::YFlipped, remap(&|x, y| (h - 1 - y) * w + x));
     add(
@@ -143,6 +148,27 @@ pub fn try_all(
             s.mode,
         )?,
     );
+    if s.samples.count != SampleCount::One {
+        let one = crate::raster::RenderSettings {
+            samples: crate::raster::sample::SampleSettings {
+                count: SampleCount::One,
+                ..s.samples
+            },
+            ..*s
+        };
+        let single = super::render_for_comparison(reference.mesh, reference.texture, &one)
+            .map(|r| Rendered::of(&r.frame))?;
+        let sampled = Sampled {
+            ours: &ours,
+            single: &single,
+            width: w,
+        };
+        // Added after the others and in this order: among equal counts the first one wins,
+        // and "all differences on edges" is the least specific.
+        for kind in [Kind::BlackEdges, Kind::NoAntiAliasing, Kind::EdgesOnly] {
+            push(kind, sampled.mask(kind, theirs, by, tolerance));
+        }
+    }
     tried.sort_by_key(|t| t.differing);
     Ok(tried)
 }

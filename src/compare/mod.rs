@@ -4,13 +4,15 @@
 //! Coverage of the other image comes from its alpha (at least half opaque is covered) or from
 //! a background colour (anything else is covered). Each differing pixel gets a one-line
 //! reason ([`reason::Reason`]) from the probe ([`diagnose`]); whole-image explanations (y flipped, rotated, affine
-//! interpolation, pixel centres at integer coordinates) are tried by rendering or
+//! interpolation, pixel centres at integer coordinates; against a multisampled reference: black
+//! edges, no anti-aliasing, differences only on edges) are tried by rendering or
 //! transforming barylab's image that way and counting what still differs ([`hypotheses`]).
 
 pub mod diagnose;
 mod file;
 pub mod hypotheses;
 pub mod reason;
+pub mod sampling;
 pub mod verdict;
 
 pub use file::read_image;

@@ -28,6 +28,14 @@ pub enum Kind {
     /// Samples at integer pixel coordinates in y-up rows (row 0 at the bottom, then written
     /// out top row first, as a framework with y up does).
     IntegerCentresYUp,
+    /// Against a multisampled reference: edge pixels between triangles darker than the
+    /// triangles on both sides (GAMES101 A2's supersampling bug: colour or depth kept per
+    /// pixel while coverage is per sample), the rest agreeing.
+    BlackEdges,
+    /// Against a multisampled reference: the image is barylab's single-sample render.
+    NoAntiAliasing,
+    /// Against a multisampled reference: every difference sits on a triangle edge.
+    EdgesOnly,
 }
 
 /// A whole-image explanation as a verdict: which one, what it leaves differing, and what it
@@ -60,6 +68,9 @@ impl Verdict {
             ),
             Kind::IntegerCentresYDown => lang.tr("compare.describe.integer_y_down"),
             Kind::IntegerCentresYUp => lang.tr("compare.describe.integer_y_up"),
+            Kind::BlackEdges => lang.tr("compare.describe.black_edges"),
+            Kind::NoAntiAliasing => lang.tr("compare.describe.no_anti_aliasing"),
+            Kind::EdgesOnly => lang.tr("compare.describe.edges_only"),
         }
     }
 
@@ -77,6 +88,9 @@ impl Verdict {
             Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => {
                 lang.tr("compare.looks.integer_centres")
             }
+            Kind::BlackEdges => lang.tr("compare.looks.black_edges"),
+            Kind::NoAntiAliasing => lang.tr("compare.looks.no_anti_aliasing"),
+            Kind::EdgesOnly => lang.tr("compare.looks.edges_only"),
         }
     }
 
@@ -101,6 +115,9 @@ impl Verdict {
             Kind::OtherMode => "compare.short.other_mode",
             Kind::OtherTieRule => "compare.short.other_tie_rule",
             Kind::IntegerCentresYDown | Kind::IntegerCentresYUp => "compare.short.integer_centres",
+            Kind::BlackEdges => "compare.short.black_edges",
+            Kind::NoAntiAliasing => "compare.short.no_anti_aliasing",
+            Kind::EdgesOnly => "compare.short.edges_only",
         })
     }
 }
