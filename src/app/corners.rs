@@ -55,15 +55,18 @@ impl BaryApp {
         };
         let pinned = self.state.view.pinned;
         let vertices = crate::figure::vertices_on_screen(&output.scene, output.viewport());
-        // The labelled points: the handles and the corners the clipper made (K1, K2, ...).
+        // The labelled points: the handles drawn (a dense mesh shows few) and the corners the
+        // clipper made (K1, K2, ...).
         let clip = self
             .reports
             .pin
             .as_ref()
             .and_then(|r| crate::figure::clip_mark(&r.trace));
-        let marks: Vec<glam::DVec2> = vertices
+        let marks: Vec<glam::DVec2> = self
+            .canvas
+            .handles
             .iter()
-            .filter_map(|v| v.window)
+            .filter_map(|&k| vertices.get(k)?.window)
             .chain(
                 clip.iter()
                     .flat_map(|c| c.corners.iter().filter(|k| k.2).map(|k| k.1)),

@@ -176,16 +176,12 @@ impl BaryApp {
             .map(|(p, _)| (p, self.row_plot(texture)));
         let lang = self.lang();
         let mut plot_hover = None;
-        let magnifier = self.magnifier_input(24.0);
         let window = ui.ctx().content_rect();
         if let Some(width) = beside_width(rect, aspect, compare, framing, window) {
             self.canvas.avoid.clear();
             let size = present::card_text_for_width(width);
             let input = self.card_input(size);
-            let magnifier = magnifier.map(|m| magnifier::MagnifierInput {
-                text_size: size,
-                ..m
-            });
+            let magnifier = self.magnifier_input(size);
             egui::Panel::right("present-card")
                 .frame(
                     egui::Frame::new()
@@ -230,7 +226,7 @@ impl BaryApp {
                 .exact_size(height)
                 .show(ui, |ui| present::card_ui(ui, &input));
             self.canvas_panel(ui, texture, framing, out);
-            if let Some(m) = magnifier {
+            if let Some(m) = self.magnifier_input(size) {
                 let area = self.canvas.area.unwrap_or(rect);
                 self.magnifier_over(ui, area, &[], m);
             }
@@ -274,8 +270,7 @@ impl BaryApp {
                 });
         }
         self.lessons.plot_hover = plot_hover;
-        if let Some(mut m) = magnifier {
-            m.text_size = size;
+        if let Some(m) = self.magnifier_input(size) {
             let taken: Vec<egui::Rect> = self.canvas.avoid.clone();
             self.magnifier_over(ui, area, &taken, m);
         }
