@@ -25,6 +25,8 @@ pub(crate) const SIDE_BY_SIDE_GAP: f32 = crate::figure::SIDE_BY_SIDE_GAP as f32;
 pub const WHOLE_PIXELS_FROM: f32 = 2.0;
 /// Points: extra grab radius around a handle.
 const HANDLE_GRAB_SLACK: f32 = 6.0;
+/// Points: the side of the square around the pinned pixel's marker that labels keep clear of.
+const PIN_CLEARANCE: f32 = 24.0;
 /// Points: half-width of the wipe line's grab area.
 const WIPE_GRAB: f32 = 10.0;
 /// w factor per point of vertical Shift+drag: 100 points up doubles w roughly (e^0.7).
@@ -240,6 +242,36 @@ fn handle_indices(count: usize, marks: [Option<overlay::PixelMark>; 2]) -> Vec<u
     shown
 }
 
+/// The views of a canvas `lay`out, their transforms mapping pixels of an image `image_width`
+/// pixels wide (the render shown, which may be of another size than the layout's) to the
+/// screen; what each shows as the canvas draws it (`gpu`: the GPU view is on).
+pub(crate) fn views_of(
+    lay: &super::canvas_layout::Layout,
+    state: &AppState,
+    gpu: bool,
+    image_width: u32,
+) -> Vec<View> {
+    let compare = state.view.compare;
+    lay.views
+        .iter()
+        .zip(&lay.areas)
+        .map(|(&(rect, content), &area)| View {
+            rect,
+            area,
+            transform: CanvasTransform {
+                origin: rect.min,
+                scale: lay.scale * lay.size[0] as f32 / image_width.max(1) as f32,
+            },
+            content: match content {
+                ViewContent::Mode(_) if compare == Compare::Single || gpu => {
+                    ViewContent::Mode(state.options().mode)
+                }
+                c => c,
+            },
+        })
+        .collect()
+}
+
 /// The canvas panel. It renders and uploads what changed, and keeps its own widget state
 /// (views, hovered pixel, drag) in `canvas`; every change to the app is a returned command.
 pub(crate) fn canvas_ui(
@@ -264,7 +296,7 @@ pub(crate) fn canvas_ui(
         Sizing::Fixed([scene_w, scene_h])
     };
     let lay = layout(available, view_settings.compare, sizing, ppp, input.framing);
-    let (size, scale) = (lay.size, lay.scale);
+    let size = lay.size;
     canvas.pixel_size = lay.pixel_size(ppp);
     let compare = gpu_view::render_compare(input.gpu, view_settings.compare);
     canvas.update(
@@ -274,27 +306,7 @@ pub(crate) fn canvas_ui(
         input.texture,
         input.texture_key.clone(),
     );
-    canvas.views = lay
-        .views
-        .iter()
-        .zip(&lay.areas)
-        .map(|(&(rect, content), &area)| View {
-            rect,
-            area,
-            transform: CanvasTransform {
-                origin: rect.min,
-                scale,
-            },
-            content: match content {
-                ViewContent::Mode(_)
-                    if view_settings.compare == Compare::Single || input.gpu.is_some() =>
-                {
-                    ViewContent::Mode(state.options().mode)
-                }
-                c => c,
-            },
-        })
-        .collect();
+    canvas.views = views_of(&lay, state, input.gpu.is_some(), lay.size[0]);
     let (compare, wipe) = (view_settings.compare, view_settings.wipe);
     canvas.upload(ui.ctx(), compare, wipe, input.gpu);
     let Some(output) = &canvas.output else {
@@ -553,14 +565,16 @@ pub(crate) fn canvas_ui(
             view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
             view.rect.max + egui::vec2(2.0, 2.0),
         );
-        paint::paint(
-            &painter,
-            clip,
-            image,
-            view.transform,
-            &shapes,
-            &canvas.avoid,
-        );
+        // Labels keep clear of the pinned pixel's marker too (the pixel the lesson talks
+        // about).
+        let mut avoid = canvas.avoid.clone();
+        if let Some([px, py]) = view_settings.pinned {
+            let at = view
+                .transform
+                .to_screen(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
+            avoid.push(Rect::from_center_size(at, egui::Vec2::splat(PIN_CLEARANCE)));
+        }
+        paint::paint(&painter, clip, image, view.transform, &shapes, &avoid);
     }
     out
 }

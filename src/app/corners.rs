@@ -2,6 +2,7 @@
 //! the corner of the canvas that hides least of the scene.
 
 use super::BaryApp;
+use super::canvas::View;
 use crate::figure::ViewContent;
 
 /// Points: the box around a handle where its letter and w label go.
@@ -19,31 +20,23 @@ const CORNER_SAMPLES: usize = 12;
 const PIN_PENALTY: u32 = 1000;
 
 impl BaryApp {
-    /// The emptiest corner (as [`Self::emptiest_corner`]) for a box of `size` that overlaps
-    /// none of the boxes `taken`, if there is one.
-    pub(super) fn emptiest_corner_except(
-        &self,
-        area: egui::Rect,
-        size: egui::Vec2,
-        taken: &[egui::Rect],
-    ) -> Option<egui::Rect> {
-        self.corners_by_emptiness(area, size)
-            .into_iter()
-            .map(|(_, c)| c)
-            .find(|c| !taken.iter().any(|t| c.intersects(*t)))
-    }
-
     /// The corner of the canvas `area` where a card of `size` hides least of the picture:
     /// fewest covered pixels under it (sampled on a grid), never over the pinned pixel, in
     /// the order top right, top left, bottom right, bottom left on a tie. It depends on the
     /// render and the pin only (not on the hovered pixel), so the card does not jump about.
     pub(super) fn emptiest_corner(&self, area: egui::Rect, size: egui::Vec2) -> egui::Rect {
-        self.corners_by_emptiness(area, size)[0].1
+        self.corners_by_emptiness(area, size, &self.canvas.views)[0].1
     }
 
     /// The four corners for a box of `size` in the canvas `area` with how much each hides
-    /// (covered samples plus penalties), the emptiest first (see [`Self::emptiest_corner`]).
-    fn corners_by_emptiness(&self, area: egui::Rect, size: egui::Vec2) -> Vec<(u32, egui::Rect)> {
+    /// (covered samples plus penalties) of the canvas's `views` (as drawn, or as a layout
+    /// being considered would draw them), the emptiest first (see [`Self::emptiest_corner`]).
+    fn corners_by_emptiness(
+        &self,
+        area: egui::Rect,
+        size: egui::Vec2,
+        views: &[View],
+    ) -> Vec<(u32, egui::Rect)> {
         let corners = [
             egui::Rect::from_min_size(egui::pos2(area.max.x - size.x, area.min.y), size),
             egui::Rect::from_min_size(area.min, size),
@@ -75,7 +68,7 @@ impl BaryApp {
         let behind = vertices.iter().any(|v| v.window.is_none());
         let score = |card: &egui::Rect| -> u32 {
             let mut covered = 0;
-            for view in &self.canvas.views {
+            for view in views {
                 // The handles with their w labels, the title strip and the colour bar count
                 // as picture too.
                 for v in &marks {
@@ -172,10 +165,23 @@ impl BaryApp {
         size: egui::Vec2,
         taken: &[egui::Rect],
     ) -> Option<egui::Rect> {
-        self.corners_by_emptiness(area, size)
+        self.free_corner_in(area, size, taken, &self.canvas.views, FREE_CORNER)
+    }
+
+    /// A corner for a box of `size` in the canvas `area` clear of `taken` that hides no mark
+    /// and at most `most` samples of the `views` (as a layout being considered draws them).
+    pub(super) fn free_corner_in(
+        &self,
+        area: egui::Rect,
+        size: egui::Vec2,
+        taken: &[egui::Rect],
+        views: &[View],
+        most: u32,
+    ) -> Option<egui::Rect> {
+        self.corners_by_emptiness(area, size, views)
             .into_iter()
             .find(|(_, c)| !taken.iter().any(|t| c.intersects(*t)))
-            .filter(|(score, _)| *score <= FREE_CORNER)
+            .filter(|(score, _)| *score <= most)
             .map(|(_, c)| c)
     }
 }
@@ -183,3 +189,7 @@ impl BaryApp {
 /// The most a box the lecture can do without may hide: this many covered samples of the
 /// [`CORNER_SAMPLES`]² grid (a tenth), and no mark.
 const FREE_CORNER: u32 = 14;
+/// The most the card over the picture may hide of the [`CORNER_SAMPLES`]² grid (a fifth,
+/// where the scene's empty corner is not quite the card's shape) and no mark; else the
+/// picture makes room for the card beside it.
+pub(super) const FREE_CARD: u32 = 29;

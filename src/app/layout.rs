@@ -141,7 +141,10 @@ impl BaryApp {
                 pin_report: self.reports.pin.as_ref(),
                 gpu,
                 framing,
-                mark_scale: if self.presenting {
+                // Two images side by side are each too small for the larger marks.
+                mark_scale: if self.presenting
+                    && self.state.view.compare != crate::figure::Compare::SideBySide
+                {
                     PRESENT_MARK_SCALE
                 } else {
                     1.0
@@ -151,71 +154,56 @@ impl BaryApp {
         });
     }
 
-    /// Presentation mode: the canvas as large as the window allows, the card beside it where a
-    /// column is to spare (wide screens), else over it in the corner the scene leaves most
-    /// empty.
+    /// Presentation mode: the canvas as large as the window allows; the row plot (if any) in a
+    /// band under it; the card beside it where a column is to spare (wide screens), under two
+    /// images side by side, over the picture in a corner that hides none of it, else in a
+    /// narrow column the picture makes room for.
     pub(super) fn presentation(
         &mut self,
         ui: &mut egui::Ui,
         texture: &Arc<Texture>,
         out: &mut Vec<AppCommand>,
     ) {
-        let rect = ui.available_rect_before_wrap();
         let spacing = ui.spacing().item_spacing.y;
         let full = self.reports.hover.is_some() || self.reports.pin.is_some();
         let compare = self.state.view.compare;
         let framing = Framing::presenting(compare);
         let (w, h) = self.state.scene.size();
         let aspect = w.max(1) as f32 / h.max(1) as f32;
-        // The pinned row's plot, shown large beside or over the picture too.
-        let plot = self
-            .state
-            .view
-            .plot
-            .zip(self.state.view.pinned)
-            .map(|(p, _)| (p, self.row_plot(texture)));
         let lang = self.lang();
-        let mut plot_hover = None;
-        let window = ui.ctx().content_rect();
-        if let Some(width) = beside_width(rect, aspect, compare, framing, window) {
-            self.canvas.avoid.clear();
-            let size = present::card_text_for_width(width);
-            let input = self.card_input(size);
-            let magnifier = self.magnifier_input(size);
-            egui::Panel::right("present-card")
+        // The pinned row's plot: a band as wide as the window under the picture (over it or in
+        // the card's column it would hide the picture or be too small to read).
+        if let Some(p) = self.state.view.plot.zip(self.state.view.pinned) {
+            let lines = self.row_plot(texture);
+            let band = (PLOT_BAND_SHARE * ui.available_rect_before_wrap().height()).round();
+            let mut plot_hover = None;
+            egui::Panel::bottom("present-plot-below")
                 .frame(
                     egui::Frame::new()
                         .fill(present::CARD_FILL)
-                        .inner_margin(egui::Margin::same(12)),
+                        .inner_margin(egui::Margin::same(10)),
                 )
                 .resizable(false)
-                .exact_size(width)
+                .exact_size(band)
                 .show(ui, |ui| {
-                    present::card_ui(ui, &input);
-                    if let Some(m) = &magnifier {
-                        ui.add_space(12.0);
-                        let share = if plot.is_some() { 0.5 } else { 1.0 };
-                        let side = ui.available_width().min(
-                            share * ui.available_height() - magnifier::title_height(m.text_size),
-                        );
-                        if side >= magnifier::MIN_SIDE {
-                            magnifier::magnifier_ui(ui, side, m);
-                        }
-                    }
-                    if let Some(plot) = plot {
-                        ui.add_space(12.0);
-                        out.extend(present_plot(ui, plot, lang, &mut plot_hover));
-                    }
+                    out.extend(present_plot(ui, (p.0, lines), lang, &mut plot_hover));
                 });
             self.lessons.plot_hover = plot_hover;
-            self.canvas_panel(ui, texture, framing, out);
+        } else {
+            self.lessons.plot_hover = None;
+        }
+        let rect = ui.available_rect_before_wrap();
+        let window = ui.ctx().content_rect();
+        if let Some(width) = beside_width(rect, aspect, compare, framing, window) {
+            let size = present::card_text_for_width(width);
+            self.card_column(ui, width, size, false, texture, framing, out);
             return;
         }
         if let Some(height) = below_height(rect, aspect, compare, framing, spacing) {
             let size =
                 present::card_text_for_width(rect.width() / 2.0).min(below_text(height, spacing));
             self.canvas.avoid.clear();
-            let input = self.card_input(size);
+            let input = self.card_input(size, false);
             egui::Panel::bottom("present-card-below")
                 .frame(
                     egui::Frame::new()
@@ -232,49 +220,33 @@ impl BaryApp {
             }
             return;
         }
+        // Over the picture, in a corner where it hides no mark and little of the scene, as
+        // the picture would be drawn at its largest (not as it is drawn now: the choice must
+        // not depend on itself); the small card without a pixel in the emptiest corner.
+        let over_area = rect.shrink(side_panels::CANVAS_MARGIN);
+        let size = over_text(over_area.width());
+        let width = present::card_width_for_text(size).min(over_area.width());
+        let card = egui::vec2(width, present::card_height(size, full, spacing));
+        let corner = if full {
+            let views = self.views_at_largest(over_area, framing, ui.ctx().pixels_per_point());
+            self.free_corner_in(over_area, card, &[], &views, super::corners::FREE_CARD)
+        } else {
+            Some(self.emptiest_corner(self.canvas.area.unwrap_or(over_area), card))
+        };
+        let Some(corner) = corner else {
+            let size = narrow_text(rect, spacing);
+            let width = present::card_width_narrow(size);
+            self.card_column(ui, width, size, true, texture, framing, out);
+            return;
+        };
         self.canvas_panel(ui, texture, framing, out);
-        // Over the picture: as wide as a share of the canvas allows, in its emptiest corner.
-        let area = self.canvas.area.unwrap_or(rect);
-        let size = over_text(area.width());
-        let width = present::card_width_for_text(size).min(area.width());
-        let corner = self.emptiest_corner(
-            area,
-            egui::vec2(width, present::card_height(size, full, spacing)),
-        );
         self.canvas.avoid = vec![corner];
-        // The plot in another corner, clear of the card.
-        let plot_size = egui::vec2(
-            PLOT_OVER_SHARE[0] * area.width(),
-            PLOT_OVER_SHARE[1] * area.height(),
-        );
-        let plot_at = plot
-            .is_some()
-            .then(|| self.emptiest_corner_except(area, plot_size, &[corner]))
-            .flatten();
-        if let (Some((p, lines)), Some(at)) = (plot, plot_at) {
-            self.canvas.avoid.push(at);
-            egui::Area::new(egui::Id::unique("present-plot-over"))
-                .order(egui::Order::Foreground)
-                .fixed_pos(at.min)
-                .show(ui.ctx(), |ui| {
-                    egui::Frame::new()
-                        .fill(present::CARD_FILL_OVER)
-                        .corner_radius(6)
-                        .inner_margin(egui::Margin::same(10))
-                        .show(ui, |ui| {
-                            ui.allocate_ui(plot_size - egui::vec2(20.0, 20.0), |ui| {
-                                ui.set_min_size(plot_size - egui::vec2(20.0, 20.0));
-                                out.extend(present_plot(ui, (p, lines), lang, &mut plot_hover));
-                            });
-                        });
-                });
-        }
-        self.lessons.plot_hover = plot_hover;
+        let area = self.canvas.area.unwrap_or(over_area);
         if let Some(m) = self.magnifier_input(size) {
             let taken: Vec<egui::Rect> = self.canvas.avoid.clone();
             self.magnifier_over(ui, area, &taken, m);
         }
-        let input = self.card_input(size);
+        let input = self.card_input(size, false);
         egui::Area::new(egui::Id::unique("present-card-over"))
             .order(egui::Order::Foreground)
             .fixed_pos(corner.min)
@@ -289,6 +261,72 @@ impl BaryApp {
                         present::card_ui(ui, &input);
                     });
             });
+    }
+
+    /// The card in a column `width` points wide right of the canvas (text `size`, `narrow`:
+    /// the narrow card), the magnifier under it where there is room.
+    #[allow(clippy::too_many_arguments)]
+    fn card_column(
+        &mut self,
+        ui: &mut egui::Ui,
+        width: f32,
+        size: f32,
+        narrow: bool,
+        texture: &Arc<Texture>,
+        framing: Framing,
+        out: &mut Vec<AppCommand>,
+    ) {
+        self.canvas.avoid.clear();
+        let input = self.card_input(size, narrow);
+        let magnifier = self.magnifier_input(size);
+        egui::Panel::right("present-card")
+            .frame(
+                egui::Frame::new()
+                    .fill(present::CARD_FILL)
+                    .inner_margin(egui::Margin::same(12)),
+            )
+            .resizable(false)
+            .exact_size(width)
+            .show(ui, |ui| {
+                present::card_ui(ui, &input);
+                if let Some(m) = &magnifier {
+                    ui.add_space(12.0);
+                    let side = ui
+                        .available_width()
+                        .min(ui.available_height() - magnifier::title_height(m.text_size));
+                    if side >= magnifier::MIN_SIDE {
+                        magnifier::magnifier_ui(ui, side, m);
+                    }
+                }
+            });
+        self.canvas_panel(ui, texture, framing, out);
+    }
+
+    /// The canvas's views as it would draw them in `area` at their largest (presentation
+    /// mode's card over the picture), mapping the pixels of the render shown now.
+    fn views_at_largest(
+        &self,
+        area: egui::Rect,
+        framing: Framing,
+        pixels_per_point: f32,
+    ) -> Vec<super::canvas::View> {
+        let Some(output) = &self.canvas.output else {
+            return Vec::new();
+        };
+        let (w, h) = self.state.scene.size();
+        let view = &self.state.view;
+        let sizing = if view.fit_window {
+            super::canvas_layout::Sizing::Fit {
+                aspect: w as f32 / h as f32,
+                pixel_size: view.pixel_size,
+            }
+        } else {
+            super::canvas_layout::Sizing::Fixed([w, h])
+        };
+        let lay =
+            super::canvas_layout::layout(area, view.compare, sizing, pixels_per_point, framing);
+        let gpu = compare_image::other_view(self.compare_image.as_ref(), view.gpu, &self.gpu_view);
+        super::canvas::views_of(&lay, &self.state, gpu.is_some(), output.size[0])
     }
 
     /// The magnifier's contents, when it is on and a pixel is pinned; its title `text_size`
@@ -341,8 +379,10 @@ impl BaryApp {
     }
 
     /// The card's contents at text `size`.
-    fn card_input(&self, size: f32) -> present::CardInput<'_> {
+    fn card_input(&self, size: f32, narrow: bool) -> present::CardInput<'_> {
         present::CardInput {
+            narrow,
+            compare: self.state.view.compare != crate::figure::Compare::Single,
             hovered: self.reports.hover.as_ref(),
             pinned: self.reports.pin.as_ref(),
             context: self.present_context(),
@@ -384,11 +424,19 @@ fn present_plot(
     lang: crate::i18n::Lang,
     hovered_column: &mut Option<u32>,
 ) -> Vec<AppCommand> {
-    command::all(super::plots::plot_ui(ui, plot, lines, lang, hovered_column)).collect()
+    command::all(super::plots::plot_ui(
+        ui,
+        plot,
+        lines,
+        lang,
+        hovered_column,
+        true,
+    ))
+    .collect()
 }
 
-/// The plot over the picture: its share of the canvas's width and height.
-const PLOT_OVER_SHARE: [f32; 2] = [0.46, 0.4];
+/// The share of the canvas's height the row plot's band under the picture takes.
+const PLOT_BAND_SHARE: f32 = 0.34;
 /// Points: the largest text of a card over the picture (on a large screen a larger card would
 /// hide more of it than the room needs to read it).
 const OVER_MAX_TEXT: f32 = 26.0;
@@ -437,9 +485,26 @@ fn below_height(
 }
 
 /// The largest share of the canvas's height a card under two images takes from them.
-const BELOW_MAX_SHARE: f32 = 0.3;
+const BELOW_MAX_SHARE: f32 = 0.38;
 /// The smallest text size (points) of a card under two images.
 const BELOW_MIN_TEXT: f32 = 13.0;
+
+/// The narrow card's column takes this share of the canvas's width.
+const NARROW_SHARE: f32 = 0.32;
+/// The smallest text size (points) of the narrow card.
+const NARROW_MIN_TEXT: f32 = 12.0;
+
+/// The text size of the narrow card beside the picture in the canvas `rect`: its column a
+/// share of the width, its height within the canvas's.
+fn narrow_text(rect: egui::Rect, spacing: f32) -> f32 {
+    let for_width = (NARROW_SHARE * rect.width() - present::PANEL_MARGINS)
+        / (present::card_width_narrow(1.0) - present::PANEL_MARGINS);
+    let mut size = for_width.clamp(NARROW_MIN_TEXT, OVER_MAX_TEXT);
+    while size > NARROW_MIN_TEXT && present::card_height_narrow(size, spacing) > rect.height() {
+        size -= 0.5;
+    }
+    size
+}
 
 /// The largest text size whose wide card fits `height` points.
 fn below_text(height: f32, spacing: f32) -> f32 {

@@ -424,7 +424,7 @@ pub fn lesson_panel_ui(
                                 egui::vec2(ui.available_width(), PLOT_BELOW_HEIGHT),
                                 |ui| {
                                     plot_out.extend(
-                                        plot_ui(ui, p, lines, lang, hovered_column)
+                                        plot_ui(ui, p, lines, lang, hovered_column, false)
                                             .into_iter()
                                             .map(Into::into),
                                     );
@@ -443,7 +443,7 @@ pub fn lesson_panel_ui(
                     ui.set_max_width(ui.available_width() - 8.0);
                     ui.set_max_height(height);
                     plot_out.extend(
-                        plot_ui(ui, p, lines, lang, hovered_column)
+                        plot_ui(ui, p, lines, lang, hovered_column, false)
                             .into_iter()
                             .map(Into::into),
                     );

@@ -18,15 +18,37 @@ use crate::raster::{Framebuffer, Interpolation, Texture};
 pub use crate::lesson::plot::{PlotLines, row_lines, title_key};
 
 /// The plot window's contents: a choice of plot, then the plot with the pinned column marked.
+/// `one_row`: only the legend above the plot, no choice (a short band: presentation mode).
 pub fn plot_ui(
     ui: &mut egui::Ui,
     plot: LessonPlot,
     lines: Option<(u32, PlotLines)>,
     lang: Lang,
     hovered_column: &mut Option<u32>,
+    one_row: bool,
 ) -> Vec<Command> {
     let mut out = Vec::new();
-    ui.horizontal(|ui| {
+    // Never wider than the room given (a long legend must not widen the plot past it).
+    let width = ui.available_width().max(120.0);
+    ui.set_max_width(width);
+    let legend = |ui: &mut egui::Ui, lines: &PlotLines| {
+        for (k, (key, _)) in lines.iter().enumerate() {
+            ui.label(RichText::new("━━").color(line_color(k)).strong());
+            ui.label(tr(lang, key));
+            ui.add_space(8.0);
+        }
+    };
+    ui.horizontal_wrapped(|ui| {
+        // One row (a band under the picture): the legend (it names the lines), no choice.
+        if one_row {
+            match &lines {
+                Some((_, lines)) => legend(ui, lines),
+                None => {
+                    ui.label(RichText::new(tr(lang, title_key(plot))).strong());
+                }
+            }
+            return;
+        }
         let label = ui.label(tr(lang, "lesson.plot_kind"));
         egui::ComboBox::from_id_salt("row-plot-kind")
             .selected_text(tr(lang, title_key(plot)))
@@ -51,20 +73,16 @@ pub fn plot_ui(
     };
     // The legend above the plot, in the lines' colours (egui_plot's legend lies over the
     // lines it names).
-    ui.horizontal_wrapped(|ui| {
-        for (k, (key, _)) in lines.iter().enumerate() {
-            ui.label(RichText::new("━━").color(line_color(k)).strong());
-            ui.label(tr(lang, key));
-            ui.add_space(8.0);
-        }
-    });
+    if !one_row {
+        ui.horizontal_wrapped(|ui| legend(ui, &lines));
+    }
     let shown = Plot::new(("row-plot", plot as u8))
         .x_axis_label(tr(lang, crate::lesson::plot::X_LABEL_KEY))
         .show_axes([true, true])
         // Never taller than the room left (a plot that overflowed its panel would push the
         // panel's first row, the lesson's Previous / Next, out of sight).
         .height((ui.available_height() - 8.0).max(PLOT_MIN_HEIGHT))
-        .width(ui.available_width().max(120.0))
+        .width(width)
         .show(ui, |p| {
             for (k, (key, points)) in lines.into_iter().enumerate() {
                 p.line(
@@ -158,7 +176,7 @@ impl BaryApp {
             .show(ctx, |ui| {
                 let mut column = None;
                 out.extend(
-                    plot_ui(ui, plot, lines, lang, &mut column)
+                    plot_ui(ui, plot, lines, lang, &mut column, false)
                         .into_iter()
                         .map(Into::into),
                 );

@@ -26,11 +26,17 @@ pub struct CardInput<'a> {
     pub keys_hint: Option<String>,
     /// Text size of the numbers, in points.
     pub size: f32,
+    /// The narrow card of a column beside the picture ([`card_width_narrow`]): the lines
+    /// broken where the full card has them side by side.
+    pub narrow: bool,
+    /// The canvas compares the two modes (side by side, wipe, difference): the card names
+    /// no mode, unless every w is equal (then the two agree and it says so).
+    pub compare: bool,
 }
 
 /// Characters (monospace) of the card's widest line: the weights table, `1/W_P = … W_P = …`
-/// and `uv perspective (…, …)`.
-const CARD_EMS: f32 = 31.0;
+/// and `uv perspective (…, …)` (with a number of seven characters, such as 0.03510).
+const CARD_EMS: f32 = 32.0;
 /// Width of a monospace character, in text heights.
 const MONO_ADVANCE: f32 = 0.62;
 /// The smallest and largest text size of the card's numbers, in points.
@@ -42,6 +48,11 @@ const ROW: f32 = 1.3;
 /// Rows of a card with a pixel: the pixel, the context, the mode, the table's header and
 /// three rows, 1/W_P and W_P, depth, uv both ways.
 const FULL_ROWS: f32 = 11.0;
+/// Characters (monospace) of the narrow card's widest line: the weights table.
+const NARROW_EMS: f32 = 25.5;
+/// Rows of a narrow card with a pixel: the pixel, the mode, the table's header and three
+/// rows, 1/W_P, W_P, depth, and uv both ways with its name on a line of its own.
+const NARROW_ROWS: f32 = 13.0;
 /// Rows of a card without a pixel: the context and the invitation to hover.
 const COMPACT_ROWS: f32 = 2.0;
 /// The context line's and the line of keys' size, as a share of the numbers' size.
@@ -62,8 +73,8 @@ const DIM: Color32 = Color32::from_rgb(170, 180, 200);
 const ACCENT: Color32 = Color32::from_rgb(255, 214, 90);
 
 /// The text size at which the card's widest line fills a card `width` points wide:
-/// `(width - PANEL_MARGINS) / (CARD_EMS * MONO_ADVANCE)` within [`CARD_TEXT_RANGE`] (31
-/// characters of 0.62 text heights: 20 points of text need 31 x 0.62 x 20 + 24 = 408.4 points
+/// `(width - PANEL_MARGINS) / (CARD_EMS * MONO_ADVANCE)` within [`CARD_TEXT_RANGE`] (32
+/// characters of 0.62 text heights: 20 points of text need 32 x 0.62 x 20 + 24 = 420.8 points
 /// of card; the unit test below checks it both ways).
 pub fn card_text_for_width(width: f32) -> f32 {
     ((width - PANEL_MARGINS) / (CARD_EMS * MONO_ADVANCE))
@@ -73,6 +84,19 @@ pub fn card_text_for_width(width: f32) -> f32 {
 /// The card's width for text `size` (the inverse of [`card_text_for_width`]).
 pub fn card_width_for_text(size: f32) -> f32 {
     size * CARD_EMS * MONO_ADVANCE + PANEL_MARGINS
+}
+
+/// The width of a narrow card (a column beside the picture) at text `size`.
+pub fn card_width_narrow(size: f32) -> f32 {
+    size * NARROW_EMS * MONO_ADVANCE + PANEL_MARGINS
+}
+
+/// The height in points of a narrow card with a pixel at text `size`.
+pub fn card_height_narrow(size: f32, spacing: f32) -> f32 {
+    let spacing = card_spacing(spacing, size);
+    NARROW_ROWS * (ROW * size + spacing)
+        + 2.0 * (ROW * SMALL_SHARE * size + spacing)
+        + PANEL_MARGINS
 }
 
 /// The card's height in points at text `size`, with a pixel to show (`full`) or without.
@@ -96,8 +120,8 @@ fn card_spacing(spacing: f32, size: f32) -> f32 {
     spacing.min(0.15 * size)
 }
 
-/// Rows of a wide card: the pixel, the mode, the table's header and three rows.
-const WIDE_ROWS: f32 = 6.0;
+/// Rows of a wide card: the pixel with the mode, the table's header and three rows.
+const WIDE_ROWS: f32 = 5.0;
 
 /// Text size of presentation mode's other large print (the lesson strip's title) for a
 /// window `height` points high: 20 at 768, larger on a larger screen.
@@ -142,7 +166,7 @@ pub fn card_ui(ui: &mut Ui, input: &CardInput<'_>) {
         );
     }
     match &focus {
-        Some((r, how)) => pixel_ui(ui, r, how, size, lang),
+        Some((r, how)) => pixel_ui(ui, r, how, input, lang),
         None => {
             ui.add(
                 egui::Label::new(big(lang.tr("app.present.no_pixel"), size).color(ACCENT)).wrap(),
@@ -157,51 +181,63 @@ pub fn card_ui(ui: &mut Ui, input: &CardInput<'_>) {
 
 /// The pixel's lines: which pixel and mode, the weights table (rows in the vertex colours),
 /// 1/W_P and W_P, the depth, uv both ways.
-fn pixel_ui(ui: &mut Ui, r: &PixelReport, how: &str, size: f32, lang: crate::i18n::Lang) {
+fn pixel_ui(
+    ui: &mut Ui,
+    r: &PixelReport,
+    how: &str,
+    input: &CardInput<'_>,
+    lang: crate::i18n::Lang,
+) {
+    let size = input.size;
     // Every w equal (a flat triangle facing the camera): both modes agree, and the card says
-    // so instead of naming one.
+    // so instead of naming one. A comparison shows both modes: no name.
     let flat = r
         .trace
         .detail
         .as_ref()
         .and_then(|d| crate::figure::common_w(d.raster.vertices.iter().map(|v| 1.0 / v.inv_w)));
     let mode = match (flat, r.mode) {
-        (Some(w), _) => lang.tr_with("app.present.flat", &[("w", &fmt_digits(w, DIGITS))]),
-        (None, Interpolation::Affine) => lang.tr("app.present.affine"),
-        (None, Interpolation::Perspective) => lang.tr("app.present.perspective"),
+        (Some(w), _) => Some(lang.tr_with("app.present.flat", &[("w", &fmt_digits(w, DIGITS))])),
+        _ if input.compare => None,
+        (None, Interpolation::Affine) => Some(lang.tr("app.present.affine")),
+        (None, Interpolation::Perspective) => Some(lang.tr("app.present.perspective")),
     };
-    ui.add(
-        egui::Label::new(
-            big(
-                format!(
-                    "{} {}, {} ({how})",
-                    &lang.tr("app.present.pixel"),
-                    r.pixel[0],
-                    r.pixel[1]
-                ),
-                size,
-            )
-            .color(ACCENT)
-            .strong(),
-        )
-        .wrap_mode(egui::TextWrapMode::Truncate),
+    // Two columns (the table, then the other lines) where the card is wide enough, else one.
+    let wide = !input.narrow && ui.available_width() >= 2.0 * CARD_EMS * MONO_ADVANCE * size + size;
+    let pixel = format!(
+        "{} {}, {} ({how})",
+        &lang.tr("app.present.pixel"),
+        r.pixel[0],
+        r.pixel[1]
     );
-    ui.label(big(mode, size).color(ACCENT));
+    let line = |ui: &mut Ui, text: String, strong: bool| {
+        let t = big(text, size).color(ACCENT);
+        ui.add(
+            egui::Label::new(if strong { t.strong() } else { t })
+                .wrap_mode(egui::TextWrapMode::Truncate),
+        );
+    };
+    match mode {
+        Some(m) if wide => line(ui, format!("{pixel} · {m}"), true),
+        Some(m) => {
+            line(ui, pixel, true);
+            line(ui, m, false);
+        }
+        None => line(ui, pixel, true),
+    }
     let Some(d) = &r.trace.detail else {
         ui.add(egui::Label::new(big(lang.tr("app.present.not_covered"), size)).wrap());
         return;
     };
-    // Two columns (the table, then the other lines) where the card is wide enough, else one.
-    let wide = ui.available_width() >= 2.0 * CARD_EMS * MONO_ADVANCE * size + size;
     if wide {
         ui.horizontal_top(|ui| {
             ui.vertical(|ui| table_ui(ui, r, d, size, lang));
             ui.add_space(size);
-            ui.vertical(|ui| lines_ui(ui, r, d, size, lang));
+            ui.vertical(|ui| lines_ui(ui, r, d, size, false, lang));
         });
     } else {
         table_ui(ui, r, d, size, lang);
-        lines_ui(ui, r, d, size, lang);
+        lines_ui(ui, r, d, size, input.narrow, lang);
     }
 }
 
@@ -256,26 +292,25 @@ fn table_ui(
 }
 
 /// 1/W_P and W_P, the depth, uv both ways (the mode's in the accent colour) when the picture
-/// is textured.
+/// is textured; `narrow`: a line each, and uv's name on a line of its own.
 fn lines_ui(
     ui: &mut Ui,
     r: &PixelReport,
     d: &crate::probe::TriangleTrace,
     size: f32,
+    narrow: bool,
     lang: crate::i18n::Lang,
 ) {
     let correction = d.perspective.map(|p| p.correction);
     if let Some(c) = correction {
-        ui.label(big(
-            format!(
-                "{} = {}  {} = {}",
-                &lang.tr("app.present.inv_w_p"),
-                num(c.inv_w_p),
-                &lang.tr("app.present.w_p"),
-                num(c.w_p)
-            ),
-            size,
-        ));
+        let inv = format!("{} = {}", &lang.tr("app.present.inv_w_p"), num(c.inv_w_p));
+        let w = format!("{} = {}", &lang.tr("app.present.w_p"), num(c.w_p));
+        if narrow {
+            ui.label(big(inv, size));
+            ui.label(big(w, size));
+        } else {
+            ui.label(big(format!("{inv}  {w}"), size));
+        }
     }
     if let Some(depth) = &d.depth {
         ui.label(big(
@@ -287,28 +322,25 @@ fn lines_ui(
     let textured = r.trace.settings.shading == crate::raster::Shading::Texture;
     if let Some(a) = d.attribute.as_ref().filter(|_| textured) {
         let strong = |t: RichText, on: bool| if on { t.color(ACCENT) } else { t };
-        ui.label(strong(
-            big(
-                format!(
-                    "{} {}",
-                    &lang.tr("app.present.uv_affine"),
-                    pair(a.uv_affine)
-                ),
-                size,
+        for (name, uv, mode) in [
+            ("app.present.uv_affine", a.uv_affine, Interpolation::Affine),
+            (
+                "app.present.uv_perspective",
+                a.uv_perspective,
+                Interpolation::Perspective,
             ),
-            r.mode == Interpolation::Affine,
-        ));
-        ui.label(strong(
-            big(
-                format!(
-                    "{} {}",
-                    &lang.tr("app.present.uv_perspective"),
-                    pair(a.uv_perspective)
-                ),
-                size,
-            ),
-            r.mode == Interpolation::Perspective,
-        ));
+        ] {
+            let on = r.mode == mode;
+            if narrow {
+                ui.label(strong(big(lang.tr(name), size), on));
+                ui.label(strong(big(format!("  {}", pair(uv)), size), on));
+            } else {
+                ui.label(strong(
+                    big(format!("{} {}", &lang.tr(name), pair(uv)), size),
+                    on,
+                ));
+            }
+        }
     }
 }
 
