@@ -407,3 +407,33 @@ fn presenting_magnifies_the_pinned_pixel_where_a_corner_is_free_and_m_hides_it()
     settle(&mut h);
     assert!(h.query_by_label_contains("enlarged").is_none());
 }
+
+#[test]
+fn s_steps_along_the_scanline_span_only_with_the_scanline_rasterizer() {
+    let lesson = barylab::lesson::Lesson::builtin().expect("built-in lesson");
+    let options = AppOptions {
+        present: true,
+        lesson: Some((lesson.clone(), 0)),
+        ..AppOptions::default()
+    };
+    let mut h = harness([1024.0, 768.0], options);
+    settle(&mut h);
+    // Step 1 uses edge functions: S does nothing.
+    h.key_press(egui::Key::S);
+    settle(&mut h);
+    assert!(!h.state().canvas().span_play);
+    // Step 6 uses the scanline rasterizer: S starts the stepping, S again stops it.
+    let six = lesson
+        .steps
+        .iter()
+        .position(|s| s.rasterizer == barylab::raster::render::Rasterizer::Scanline)
+        .expect("a scanline step");
+    h.state_mut().enter_lesson(lesson.clone(), six);
+    settle(&mut h);
+    h.key_press(egui::Key::S);
+    h.step();
+    assert!(h.state().canvas().span_play);
+    h.key_press(egui::Key::S);
+    h.step();
+    assert!(!h.state().canvas().span_play);
+}

@@ -27,6 +27,10 @@ pub const WHOLE_PIXELS_FROM: f32 = 2.0;
 const HANDLE_GRAB_SLACK: f32 = 6.0;
 /// Points: the side of the square around the pinned pixel's marker that labels keep clear of.
 const PIN_CLEARANCE: f32 = 24.0;
+/// Seconds per pixel while stepping along the scanline span.
+const SPAN_STEP_SECONDS: f64 = 0.12;
+/// Steps the stepping rests on the span's last pixel before it starts again.
+const SPAN_PAUSE_STEPS: u32 = 8;
 /// Points: half-width of the wipe line's grab area.
 const WIPE_GRAB: f32 = 10.0;
 /// w factor per point of vertical Shift+drag: 100 points up doubles w roughly (e^0.7).
@@ -107,6 +111,10 @@ pub struct CanvasState {
     /// The vertices whose handles were drawn last frame (every one of a scene of at most 32,
     /// else only the pinned and hovered triangles' corners).
     pub handles: Vec<usize>,
+    /// The scanline rasterizer steps along the pinned row's span (S starts and stops it).
+    pub span_play: bool,
+    /// When the stepping along the span started (egui's clock, seconds).
+    span_started: Option<f64>,
 }
 
 impl CanvasState {
@@ -490,6 +498,20 @@ pub(crate) fn canvas_ui(
         .collect();
     // The GPU view: Some(whether it has a GPU image).
     let gpu = input.gpu.map(|g| g.result.is_some());
+    // Steps taken along the scanline span since the stepping started (S).
+    let span_elapsed = if canvas.span_play
+        && view_settings.rasterizer == crate::raster::render::Rasterizer::Scanline
+        && view_settings.pinned.is_some()
+    {
+        let now = ui.input(|i| i.time);
+        let start = *canvas.span_started.get_or_insert(now);
+        ui.ctx()
+            .request_repaint_after(std::time::Duration::from_secs_f64(SPAN_STEP_SECONDS));
+        Some(((now - start) / SPAN_STEP_SECONDS).max(0.0) as u32)
+    } else {
+        canvas.span_started = None;
+        None
+    };
     for (vi, view) in canvas.views.iter().enumerate() {
         let input_overlay = OverlayInput {
             size,
@@ -559,6 +581,18 @@ pub(crate) fn canvas_ui(
                 .rposition(|s| matches!(s, overlay::Shape::Polygon { .. }))
                 .map_or(0, |i| i + 1);
             shapes.shapes.splice(at..at, span);
+            // Stepping: one pixel of the span after another, as the rasterizer visits them;
+            // after the last pixel a pause, then from the start again.
+            if let Some(elapsed) = span_elapsed
+                && let Some((_, count)) = overlay::span_step_shapes(&t, pin.pixel[1], 0)
+                && let Some((trail, _)) = overlay::span_step_shapes(
+                    &t,
+                    pin.pixel[1],
+                    elapsed % (count + SPAN_PAUSE_STEPS),
+                )
+            {
+                shapes.shapes.splice(at..at, trail);
+            }
         }
         paint::scale_marks(&mut shapes, input.mark_scale);
         let image = Rect::from_min_max(

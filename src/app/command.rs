@@ -31,6 +31,8 @@ pub enum AppCommand {
     Redo,
     /// The Lessons panel, menu and keys (applied by `BaryApp::apply_lesson`).
     Lesson(LessonCommand),
+    /// Start or stop stepping along the pinned row's scanline span (S).
+    ToggleSpanStepping,
 }
 
 impl From<Command> for AppCommand {

@@ -590,6 +590,7 @@ impl BaryApp {
             }
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
+            AppCommand::ToggleSpanStepping => self.canvas.span_play = !self.canvas.span_play,
             AppCommand::SetPresenting(on) => self.presenting = on,
             AppCommand::SetLang(lang) => self.set_lang(lang),
             AppCommand::Undo => {

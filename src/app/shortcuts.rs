@@ -66,6 +66,10 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if key(Key::H) {
             state(Command::SetShowHandles(!view.show_handles));
         }
+        // S: step along the pinned row's span (the scanline rasterizer's order).
+        if view.rasterizer == crate::raster::render::Rasterizer::Scanline && key(Key::S) {
+            extra.push(AppCommand::ToggleSpanStepping);
+        }
         // [ and ]: the pixel size when the image fits the window, else the image size.
         let (w, h) = input.state.scene.size();
         if key(Key::OpenBracket) {

@@ -258,17 +258,7 @@ pub(super) fn behind_note(handles: &[HandleMark], behind: &str) -> Option<String
 /// ```
 pub fn span_shapes(t: &TriangleMark, row: u32) -> Option<Vec<Shape>> {
     let y = f64::from(row) + 0.5;
-    let mut xs: Vec<f64> = Vec::with_capacity(3);
-    for i in 0..3 {
-        let (a, b) = (t.vertices[i], t.vertices[(i + 1) % 3]);
-        if (a.y - y) * (b.y - y) > 0.0 || a.y == b.y {
-            continue;
-        }
-        let k = (y - a.y) / (b.y - a.y);
-        xs.push(a.x + k * (b.x - a.x));
-    }
-    let lo = xs.iter().copied().reduce(f64::min)?;
-    let hi = xs.iter().copied().reduce(f64::max)?;
+    let (lo, hi) = span_ends(t, row)?;
     let (l, r) = (DVec2::new(lo, y), DVec2::new(hi, y));
     let mut shapes = vec![
         Shape::Line {
@@ -292,6 +282,84 @@ pub fn span_shapes(t: &TriangleMark, row: u32) -> Option<Vec<Shape>> {
     }
     Some(shapes)
 }
+
+/// The scanline rasterizer stepping along the pinned row's span: the pixels it has visited
+/// (a trail) and the one it is at (outlined), at `step` (0 = the first pixel whose centre lies
+/// in the span, `lo <= x + 0.5 < hi`; steps past the last pixel stay on it). `None` when
+/// the row crosses no pixel centre inside the triangle. Returns the shapes and the span's
+/// pixel count.
+///
+/// ```
+/// use barylab::figure::overlay::{Shape, TriangleMark, span_step_shapes};
+/// use glam::DVec2;
+/// // Row 0's centre line y = 0.5 meets the edges C A and B C at x = 3 - 1.8 (8.5 / 9) = 1.3
+/// // and x = 4.8 - 1.8 (0.5 / 9) = 4.7: the centres 1.5, 2.5, 3.5 and 4.5 lie in the span.
+/// let t = TriangleMark {
+///     vertices: [DVec2::new(1.2, 0.0), DVec2::new(4.8, 0.0), DVec2::new(3.0, 9.0)],
+///     mesh_indices: [Some(0), Some(1), Some(2)],
+///     weights: [1.0 / 3.0; 3],
+/// };
+/// let (shapes, count) = span_step_shapes(&t, 0, 1).expect("a span");
+/// assert_eq!(count, 4);
+/// // Step 1 is at the second pixel, x from 2 to 3.
+/// let Shape::Polygon { points, .. } = &shapes[1] else { panic!("the outlined pixel") };
+/// assert_eq!((points[0].x, points[1].x), (2.0, 3.0));
+/// ```
+pub fn span_step_shapes(t: &TriangleMark, row: u32, step: u32) -> Option<(Vec<Shape>, u32)> {
+    let (lo, hi) = span_ends(t, row)?;
+    // The first and last pixel whose centre x + 0.5 lies in [lo, hi).
+    let first = (lo - 0.5).ceil();
+    let last = (hi - 0.5).ceil() - 1.0;
+    if !(first.is_finite() && last >= first) {
+        return None;
+    }
+    let count = (last - first) as u32 + 1;
+    let at = first + f64::from(step.min(count - 1));
+    let y = f64::from(row);
+    let square = |x0: f64, x1: f64| {
+        vec![
+            DVec2::new(x0, y),
+            DVec2::new(x1, y),
+            DVec2::new(x1, y + 1.0),
+            DVec2::new(x0, y + 1.0),
+        ]
+    };
+    let shapes = vec![
+        Shape::Polygon {
+            points: square(first, at + 1.0),
+            fill: SPAN_TRAIL,
+            stroke: None,
+            dashed: false,
+        },
+        Shape::Polygon {
+            points: square(at, at + 1.0),
+            fill: [0, 0, 0, 0],
+            stroke: Some(Stroke::new(3.0, SPAN)),
+            dashed: false,
+        },
+    ];
+    Some((shapes, count))
+}
+
+/// Where the pixel row `row`'s centre line (y = row + 0.5) enters and leaves the triangle.
+fn span_ends(t: &TriangleMark, row: u32) -> Option<(f64, f64)> {
+    let y = f64::from(row) + 0.5;
+    let mut xs: Vec<f64> = Vec::with_capacity(3);
+    for i in 0..3 {
+        let (a, b) = (t.vertices[i], t.vertices[(i + 1) % 3]);
+        if (a.y - y) * (b.y - y) > 0.0 || a.y == b.y {
+            continue;
+        }
+        let k = (y - a.y) / (b.y - a.y);
+        xs.push(a.x + k * (b.x - a.x));
+    }
+    let lo = xs.iter().copied().reduce(f64::min)?;
+    let hi = xs.iter().copied().reduce(f64::max)?;
+    Some((lo, hi))
+}
+
+/// The visited pixels' tint while stepping along the span.
+const SPAN_TRAIL: Rgba = [255, 230, 80, 90];
 
 /// Colour of the scanline span and its edge crossings.
 const SPAN: Rgba = [255, 230, 80, 255];

@@ -21,7 +21,9 @@ mod style;
 
 pub use inputs::{ClipMark, HandleMark, OverlayInput, PixelMark, TriangleMark};
 pub use magnifier::{MAGNIFIER_RADIUS, magnified_rect, magnifier};
-pub use marks::{SCIENTIFIC_W, behind_camera_note, format_w, is_triangle_outline, span_shapes};
+pub use marks::{
+    SCIENTIFIC_W, behind_camera_note, format_w, is_triangle_outline, span_shapes, span_step_shapes,
+};
 use marks::{behind_note, clip_shapes, handle_shapes, pixel_marker, triangle_shapes};
 pub use shape::{Anchor, Overlay, Shape, Stroke};
 pub use style::*;
