@@ -47,31 +47,14 @@ impl BaryApp {
             return corners.iter().map(|c| (0, *c)).collect();
         };
         let pinned = self.state.view.pinned;
-        let vertices = crate::figure::vertices_on_screen(&output.scene, output.viewport());
-        // The labelled points: the handles drawn (a dense mesh shows few) and the corners the
-        // clipper made (K1, K2, ...).
-        let clip = self
-            .reports
-            .pin
-            .as_ref()
-            .and_then(|r| crate::figure::clip_mark(&r.trace));
-        let marks: Vec<glam::DVec2> = self
-            .canvas
-            .handles
-            .iter()
-            .filter_map(|&k| vertices.get(k)?.window)
-            .chain(
-                clip.iter()
-                    .flat_map(|c| c.corners.iter().filter(|k| k.2).map(|k| k.1)),
-            )
-            .collect();
-        let behind = vertices.iter().any(|v| v.window.is_none());
+        let (marks, behind) = self.corner_marks(output);
+        let marks = &marks;
         let score = |card: &egui::Rect| -> u32 {
             let mut covered = 0;
             for view in views {
                 // The handles with their w labels, the title strip and the colour bar count
                 // as picture too.
-                for v in &marks {
+                for v in marks.iter() {
                     let at = view.transform.to_screen(*v);
                     let label = egui::Rect::from_center_size(at, LABELLED_HANDLE);
                     if label.intersects(*card) {
@@ -193,3 +176,50 @@ const FREE_CORNER: u32 = 14;
 /// where the scene's empty corner is not quite the card's shape) and no mark; else the
 /// picture makes room for the card beside it.
 pub(super) const FREE_CARD: u32 = 29;
+
+/// The drawn handles' points in the render's pixels, and whether a vertex is behind the
+/// camera: kept for the render and the handles they were found for (every vertex of the scene
+/// is projected to find them, up to three times a frame otherwise).
+#[derive(Default)]
+pub(super) struct MarkCache {
+    key: Option<(u64, Vec<usize>)>,
+    handles: Vec<glam::DVec2>,
+    behind: bool,
+}
+
+impl BaryApp {
+    /// The points a box over the picture must not hide (the drawn handles, the clipper's
+    /// labelled corners K1, K2, ... from the pinned pixel's trace) in the render's pixels, and
+    /// whether a vertex is behind the camera.
+    fn corner_marks(&self, output: &super::render::CanvasOutput) -> (Vec<glam::DVec2>, bool) {
+        let key = (output.generation, self.canvas.handles.clone());
+        let mut cache = self.corner_marks.borrow_mut();
+        if cache.key.as_ref() != Some(&key) {
+            let vertices = crate::figure::vertices_on_screen(&output.scene, output.viewport());
+            *cache = MarkCache {
+                handles: key
+                    .1
+                    .iter()
+                    .filter_map(|&k| vertices.get(k)?.window)
+                    .collect(),
+                behind: vertices.iter().any(|v| v.window.is_none()),
+                key: Some(key),
+            };
+        }
+        let clip = self
+            .reports
+            .pin
+            .as_ref()
+            .and_then(|r| crate::figure::clip_mark(&r.trace));
+        let marks = cache
+            .handles
+            .iter()
+            .copied()
+            .chain(
+                clip.iter()
+                    .flat_map(|c| c.corners.iter().filter(|k| k.2).map(|k| k.1)),
+            )
+            .collect();
+        (marks, cache.behind)
+    }
+}

@@ -143,6 +143,8 @@ pub struct BaryApp {
     presenting: bool,
     /// The preset loaded last (Page Down / Page Up step on from it).
     last_preset: Option<presets::Preset>,
+    /// What presentation mode's boxes must not hide, for the render shown.
+    corner_marks: std::cell::RefCell<corners::MarkCache>,
     /// The side panel asked for last: it gets the room when both do not fit.
     panel_first: Side,
     /// The side panel the user opened, which opens even where the canvas's share leaves no
@@ -231,6 +233,7 @@ impl BaryApp {
             export: ExportPanel::new(export_settings),
             presenting: options.present,
             last_preset: None,
+            corner_marks: Default::default(),
             panel_first: Side::default(),
             panel_forced: None,
             history: history::History::default(),
