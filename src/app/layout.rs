@@ -222,12 +222,14 @@ impl BaryApp {
         }
         // Over the picture, in a corner where it hides no mark and little of the scene, as
         // the picture would be drawn at its largest (not as it is drawn now: the choice must
-        // not depend on itself); the small card without a pixel in the emptiest corner.
+        // not depend on itself); without a pin, in the emptiest corner.
         let over_area = rect.shrink(side_panels::CANVAS_MARGIN);
         let size = over_text(over_area.width());
         let width = present::card_width_for_text(size).min(over_area.width());
         let card = egui::vec2(width, present::card_height(size, full, spacing));
-        let corner = if full {
+        // The layout follows the pin only: a hovered pixel fills the card where it is (a
+        // picture that made room when the pointer entered it would move under the pointer).
+        let corner = if self.state.view.pinned.is_some() {
             let views = self.views_at_largest(over_area, framing, ui.ctx().pixels_per_point());
             self.free_corner_in(over_area, card, &[], &views, super::corners::FREE_CARD)
         } else {
