@@ -62,8 +62,8 @@ pub(in crate::raster::lanes) unsafe fn finish<const WIDE: bool>(
 /// square root (IEEE `f32` operations, so bit for bit the scalar values).
 ///
 /// # Safety
-/// Every lane `k` enabled in `pass` has `index + k < d.out.len()` (the masked store writes
-/// those elements and no other; checked only in debug builds).
+/// The CPU has AVX2. Every lane `k` enabled in `pass` has `index + k < d.out.len()` (the
+/// masked store writes those elements and no other; checked, a panic otherwise).
 #[inline]
 #[target_feature(enable = "avx2")]
 unsafe fn store_difference(
@@ -72,7 +72,10 @@ unsafe fn store_difference(
     pass: __m256i,
     both: &[__m256; 4],
 ) {
-    debug_assert!(index < d.out.len());
+    assert!(
+        lanes_end(index, pass) <= d.out.len(),
+        "difference lanes past the band"
+    );
     let du = _mm256_mul_ps(_mm256_sub_ps(both[0], both[2]), _mm256_set1_ps(d.size[0]));
     let dv = _mm256_mul_ps(_mm256_sub_ps(both[1], both[3]), _mm256_set1_ps(d.size[1]));
     let len = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(du, du), _mm256_mul_ps(dv, dv)));
@@ -86,9 +89,9 @@ unsafe fn store_difference(
 /// as `write` stores the colour.
 ///
 /// # Safety
-/// Every lane `k` enabled in `pass` has `index + k` below the length of `uv.triangle`,
-/// `uv.uv_affine` and `uv.uv_perspective` (the masked stores write those elements and no
-/// other; checked only in debug builds).
+/// The CPU has AVX2. Every lane `k` enabled in `pass` has `index + k` below the length of
+/// `uv.triangle`, `uv.uv_affine` and `uv.uv_perspective` (the masked stores write those
+/// elements and no other; checked, a panic otherwise).
 #[inline]
 #[target_feature(enable = "avx2")]
 unsafe fn store_uv(
@@ -97,10 +100,11 @@ unsafe fn store_uv(
     pass: __m256i,
     both: &[__m256; 4],
 ) {
-    debug_assert!(
-        index < uv.triangle.len()
+    assert!(
+        lanes_end(index, pass) <= uv.triangle.len()
             && uv.triangle.len() == uv.uv_affine.len()
-            && uv.triangle.len() == uv.uv_perspective.len()
+            && uv.triangle.len() == uv.uv_perspective.len(),
+        "uv lanes past the band"
     );
     // Lane k's mask for both halves of its pair: (m0 m0 m1 m1 m2 m2 m3 m3), (m4 m4 ... m7 m7).
     let m_lo = _mm256_unpacklo_epi32(pass, pass);
@@ -142,9 +146,9 @@ unsafe fn store_uv(
 /// outside `ok` are neither read nor written. Returns the lanes that passed.
 ///
 /// # Safety
-/// Every lane `k` enabled in `ok` has `index + k` below the length of `target.depth` and
-/// `target.color`; when all eight are enabled, all eight elements are read and written
-/// (checked only in debug builds).
+/// The CPU has AVX2. Every lane `k` enabled in `ok` has `index + k` below the length of
+/// `target.depth` and `target.color`; when all eight are enabled, all eight elements are read
+/// and written (checked, a panic otherwise).
 #[inline]
 #[target_feature(enable = "avx2")]
 unsafe fn write(
@@ -154,7 +158,10 @@ unsafe fn write(
     depth: __m256,
     rgba: __m256i,
 ) -> __m256i {
-    debug_assert!(index < target.depth.len() && target.depth.len() == target.color.len());
+    assert!(
+        lanes_end(index, ok) <= target.depth.len() && target.depth.len() == target.color.len(),
+        "colour lanes past the band"
+    );
     // SAFETY: the function's condition: every lane enabled in `ok` indexes both slices;
     // masked loads and stores touch no other lane.
     unsafe {
@@ -190,6 +197,15 @@ unsafe fn write(
         }
         pass
     }
+}
+
+/// One past the last buffer index the lanes enabled in `mask` touch, from buffer index
+/// `index` (`index` itself when none is): the bound the masked stores are checked against.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn lanes_end(index: usize, mask: __m256i) -> usize {
+    let bits = _mm256_movemask_ps(_mm256_castsi256_ps(mask)) as u32;
+    index + (u32::BITS - bits.leading_zeros()) as usize
 }
 
 /// An eight-lane mask from the low eight bits of `bits`.

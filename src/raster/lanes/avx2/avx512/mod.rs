@@ -442,14 +442,17 @@ pub(super) unsafe fn span16(
 /// a band without uv or difference buffers; other lanes are neither read nor written.
 ///
 /// # Safety
-/// Every lane `k` enabled in `ok` has `index + k` below the length of `target.depth` and
-/// `target.color` (checked only in debug builds).
+/// The CPU has AVX-512 F. Every lane `k` enabled in `ok` has `index + k` below the length of
+/// `target.depth` and `target.color` (checked, a panic otherwise).
 #[inline]
 #[target_feature(enable = "avx512f")]
 unsafe fn write16(target: &mut Target<'_>, index: usize, ok: u16, depth: __m512, rgba: __m512i) {
     debug_assert!(target.uv.is_none() && target.difference.is_none());
     let end = index + (16 - ok.leading_zeros()) as usize;
-    debug_assert!(end <= target.depth.len() && target.depth.len() == target.color.len());
+    assert!(
+        end <= target.depth.len() && target.depth.len() == target.color.len(),
+        "colour lanes past the band"
+    );
     // SAFETY: the function's condition: every lane enabled in `ok` indexes both slices;
     // masked loads and stores touch no other lane.
     unsafe {
@@ -488,7 +491,10 @@ pub(super) fn write_rows(
             continue;
         }
         let end = index[h] + (8 - k.leading_zeros()) as usize;
-        debug_assert!(end <= target.depth.len() && target.depth.len() == target.color.len());
+        assert!(
+            end <= target.depth.len() && target.depth.len() == target.color.len(),
+            "colour lanes past the band"
+        );
         // SAFETY: the caller's `ok` enables only pixels of the row inside the band, so every
         // accessed element `index[h] + k` is in both slices; masked loads and stores touch no
         // other lane.
