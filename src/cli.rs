@@ -505,6 +505,10 @@ struct SceneOptions {
     /// Texture filter (default: the scene's); trilinear uses mipmaps.
     #[arg(long)]
     filter: Option<FilterArg>,
+    /// The largest anisotropy of trilinear filtering: 1 (off) to 16 (default: the scene's,
+    /// else 1).
+    #[arg(long, value_parser = parse_anisotropy, value_name = "N")]
+    anisotropy: Option<barylab::raster::texture::MaxAnisotropy>,
     /// What the colour shows (default: the scene's).
     #[arg(long)]
     shading: Option<ShadingArg>,

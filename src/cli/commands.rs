@@ -52,6 +52,9 @@ pub(super) fn prepare(
     if let Some(f) = o.filter {
         settings.filter = f.into();
     }
+    if let Some(a) = o.anisotropy {
+        settings.max_anisotropy = a;
+    }
     if let Some(s) = o.shading {
         settings.shading = s.into();
     }

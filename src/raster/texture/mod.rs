@@ -7,10 +7,12 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
+mod anisotropic;
 mod builtin;
 mod load;
 mod mip;
 
+pub use anisotropic::{Anisotropic, MAX_ANISOTROPY, MaxAnisotropy, footprint_axes};
 pub use load::{ImageProblem, OpenedImage, TextureError, open_image, plain_error};
 use mip::mip_chain;
 
@@ -103,7 +105,8 @@ struct Level {
 }
 
 /// Level of detail from the uv derivatives across a pixel (OpenGL 4.6 eq. 8.7 - 8.9):
-/// `lambda = log2(max(|(du/dx W, dv/dx H)|, |(du/dy W, dv/dy H)|))`. Derivatives that are
+/// `lambda = log2(rho)`, `rho = max(Px, Py)` with the footprint's sides
+/// `Px = |(du/dx W, dv/dx H)|`, `Py = |(du/dy W, dv/dy H)|` ([`footprint_axes`]). Derivatives that are
 /// not finite give 0 (the base level).
 ///
 /// ```
@@ -115,9 +118,8 @@ struct Level {
 /// assert_eq!(lod(Vec2::new(0.5 / 256.0, 0.0), Vec2::ZERO, 256, 256), -1.0);
 /// ```
 pub fn lod(duv_dx: Vec2, duv_dy: Vec2, width: u32, height: u32) -> f32 {
-    let size = Vec2::new(width as f32, height as f32);
-    let rho = (duv_dx * size).length().max((duv_dy * size).length());
-    let l = rho.log2();
+    let [px, py] = footprint_axes(duv_dx, duv_dy, width, height);
+    let l = px.max(py).log2();
     if l.is_finite() { l } else { 0.0 }
 }
 
