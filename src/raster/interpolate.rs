@@ -157,7 +157,10 @@ pub fn uv_at(setup: &TriangleSetup, x: u32, y: u32, mode: Interpolation) -> Opti
 
 /// Which pixels of the 2x2 quad the uv derivatives come from (GLSL `dFdxCoarse` /
 /// `dFdxFine`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
 pub enum Derivatives {
     /// One pair for the whole quad, from its first row and first column (what GPUs use for
     /// implicit texture derivatives, llvmpipe included; the renderer's).

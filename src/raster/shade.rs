@@ -275,6 +275,21 @@ impl ShadeParams {
     }
 }
 
+/// The texture's colour at `uv` for fragment `frag` (its level of detail and derivatives,
+/// [`texture_footprint`]): anisotropic when [`ShadeParams::anisotropy`] says so, else the
+/// filter's lookup.
+pub fn texture_color(
+    texture: &Texture,
+    uv: glam::Vec2,
+    frag: &Fragment,
+    p: &ShadeParams,
+) -> [u8; 4] {
+    match p.anisotropy() {
+        Some(max) => texture.sample_anisotropic_rgba8(uv, p.wrap, frag.duv, max),
+        None => texture.sample_rgba8(uv, p.filter, p.wrap, frag.lod),
+    }
+}
+
 /// Sets what a texture lookup at pixel (x, y) needs beyond the uv: with trilinear filtering
 /// the level of detail of its 2x2 quad ([`interpolate::quad_lod`]'s, from coarse
 /// derivatives), and with anisotropic filtering the derivatives too. The renderer (one sample
@@ -351,10 +366,7 @@ pub fn shade(
     let v = frag.varyings(p.mode);
     let bary = v.bary();
     match p.shading {
-        Shading::Texture => match p.anisotropy() {
-            Some(max) => texture.sample_anisotropic_rgba8(v.uv(), p.wrap, frag.duv, max),
-            None => texture.sample_rgba8(v.uv(), p.filter, p.wrap, frag.lod),
-        },
+        Shading::Texture => texture_color(texture, v.uv(), frag, p),
         Shading::VertexColor => {
             let c = v.color();
             [unorm8(c.x), unorm8(c.y), unorm8(c.z), 255]

@@ -469,7 +469,15 @@ impl Texture {
     /// The mipmap levels trilinear filtering reads at `lambda`: `(d, None)` for level `d`
     /// alone, `(d, Some(f))` for levels `d` and `d + 1` weighted `1 - f` and `f`. `lambda <= 0`
     /// (or not finite) gives level 0; it is clamped to the last level.
-    fn trilinear_levels(&self, lambda: f32) -> (u32, Option<f32>) {
+    ///
+    /// ```
+    /// use barylab::raster::texture::Texture;
+    /// let t = Texture::from_texels(4, 4, vec![[0; 4]; 16]).unwrap();
+    /// assert_eq!(t.trilinear_levels(-0.5), (0, None));
+    /// assert_eq!(t.trilinear_levels(1.25), (1, Some(0.25)));
+    /// assert_eq!(t.trilinear_levels(7.0), (2, None));
+    /// ```
+    pub fn trilinear_levels(&self, lambda: f32) -> (u32, Option<f32>) {
         let last = self.levels() - 1;
         let lambda = if lambda.is_finite() { lambda } else { 0.0 };
         if lambda <= 0.0 || last == 0 {
