@@ -41,7 +41,7 @@ pub const LEVEL_COLOURS: [[u8; 3]; 10] = [
 /// assert_eq!(level_colour(20.0, 3), LEVEL_COLOURS[3]);
 /// ```
 pub fn level_colour(lambda: f32, last: u32) -> [u8; 3] {
-    if !(lambda > 0.0) {
+    if lambda.is_nan() || lambda <= 0.0 {
         return MAGNIFIED;
     }
     let level = (lambda.floor() as u32).min(last);
