@@ -20,6 +20,7 @@ mod compare;
 #[cfg(feature = "gpu")]
 mod gpu_check;
 mod lesson;
+mod texture_figure;
 mod values;
 mod work;
 
@@ -350,9 +351,21 @@ struct FigureArgs {
     /// perspective-correct, as its derivation gives them.
     #[arg(long)]
     caption: bool,
+    /// What the figure shows: the rendered image (default); the pinned pixel's texture
+    /// lookup in texture space (texels, taps and weights, footprint, mipmap levels,
+    /// anisotropic probes; needs --pixel); or every pixel's mipmap level (lod).
+    #[arg(long, default_value = "image")]
+    view: FigureViewArg,
     /// Output file: .png or .svg.
     #[arg(short, long)]
     output: PathBuf,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+enum FigureViewArg {
+    Image,
+    Texture,
+    Lod,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -478,6 +491,10 @@ struct ProbeArgs {
     /// LC_ALL, LC_MESSAGES, LANG). Formulas are the same in every language; LaTeX stays English.
     #[arg(long, default_value = "en", value_parser = parse_lang)]
     lang: barylab::i18n::Lang,
+    /// The derivatives the level-of-detail derivation uses (trilinear filtering): coarse (one
+    /// pair per 2x2 quad, as the renderer and GPUs) or fine (the pixel's own row and column).
+    #[arg(long, default_value = "coarse", value_parser = parse_named::<barylab::raster::interpolate::Derivatives>, value_name = "KIND")]
+    derivatives: barylab::raster::interpolate::Derivatives,
 }
 
 /// `--lang`: a language tag, or `auto` for the system locale.
@@ -505,6 +522,10 @@ struct SceneOptions {
     /// Texture filter (default: the scene's); trilinear uses mipmaps.
     #[arg(long)]
     filter: Option<FilterArg>,
+    /// The largest anisotropy of trilinear filtering: 1 (off) to 16 (default: the scene's,
+    /// else 1).
+    #[arg(long, value_parser = parse_anisotropy, value_name = "N")]
+    anisotropy: Option<barylab::raster::texture::MaxAnisotropy>,
     /// What the colour shows (default: the scene's).
     #[arg(long)]
     shading: Option<ShadingArg>,

@@ -245,20 +245,24 @@ fn figure_labels_match_the_catalogue() {
 /// default scene's pixel (400, 420) in both languages (line by line).
 fn shown_texts() -> Vec<(String, String)> {
     let mut out = Vec::new();
-    let lesson = barylab::lesson::Lesson::builtin().expect("built-in lesson");
     let mut both = |place: String, t: &barylab::lesson::text::Text| {
         out.push((format!("{place} (en)"), t.en.clone()));
         out.push((format!("{place} (zh)"), t.zh.clone()));
     };
-    both("the lesson's title".into(), &lesson.title);
-    for (k, step) in lesson.steps.iter().enumerate() {
-        let n = k + 1;
-        both(format!("lesson step {n}, title"), &step.title);
-        if let Some(summary) = &step.summary {
-            both(format!("lesson step {n}, summary"), summary);
+    // Every built-in lesson.
+    for b in &barylab::lesson::builtin::LESSONS {
+        let lesson = barylab::lesson::Lesson::open(Path::new(b.name)).expect("built-in lesson");
+        let name = b.name;
+        both(format!("the {name} lesson's title"), &lesson.title);
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let n = k + 1;
+            both(format!("{name} lesson step {n}, title"), &step.title);
+            if let Some(summary) = &step.summary {
+                both(format!("{name} lesson step {n}, summary"), summary);
+            }
+            both(format!("{name} lesson step {n}, text"), &step.text);
+            both(format!("{name} lesson step {n}, try"), &step.try_this);
         }
-        both(format!("lesson step {n}, text"), &step.text);
-        both(format!("lesson step {n}, try"), &step.try_this);
     }
     for name in ["en", "zh"] {
         for (key, text) in catalogue(name) {

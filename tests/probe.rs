@@ -108,6 +108,8 @@ scene_tests! {
     corner_behind: "corner-behind.json",
     default: "default.json",
     far_checker: "far-checker.json",
+    far_checker_anisotropic: "far-checker-anisotropic.json",
+    checker_closeup: "checker-closeup.json",
     receding_wall: "receding-wall.json",
     front: "front.json",
     games101_a2: "games101-a2.json",

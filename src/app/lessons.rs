@@ -570,6 +570,16 @@ pub fn lessons_menu_ui(
             out.push(LessonCommand::OpenBuiltin);
             ui.close();
         }
+        // The other built-in lessons of the registry, by name.
+        for b in crate::lesson::builtin::LESSONS.iter().skip(1) {
+            if ui
+                .button(tr(lang, &format!("lesson.open_{}", b.name)))
+                .clicked()
+            {
+                out.push(LessonCommand::OpenFile(b.name.into()));
+                ui.close();
+            }
+        }
         if ui.button(tr(lang, "lesson.open_file")).clicked() {
             out.push(LessonCommand::OpenDialog);
             ui.close();

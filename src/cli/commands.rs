@@ -52,6 +52,9 @@ pub(super) fn prepare(
     if let Some(f) = o.filter {
         settings.filter = f.into();
     }
+    if let Some(a) = o.anisotropy {
+        settings.max_anisotropy = a;
+    }
     if let Some(s) = o.shading {
         settings.shading = s.into();
     }
@@ -229,7 +232,11 @@ pub(super) fn probe(args: &ProbeArgs) -> Result<()> {
     let (scene, texture, settings) = prepare(&args.input)?;
     inside("--pixel", Some(args.pixel), &args.input, &scene)?;
     let (x, y) = args.pixel;
-    let trace = barylab::probe::probe(&scene, &texture, &settings, (x, y))
+    let trace = barylab::probe::Prober::new(&scene, &texture, &settings)
+        .and_then(|mut p| {
+            p.set_derivatives(args.derivatives);
+            p.pixel(x, y)
+        })
         .with_context(|| barylab::files::shown(&args.input.scene))?;
     let format = args.format.into();
     if format == barylab::probe::format::Format::Latex && args.lang != barylab::i18n::Lang::En {
@@ -294,6 +301,10 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
             barylab::i18n::CJK_FAMILIES.join(", ")
         );
         lang = barylab::i18n::Lang::En;
+    }
+    scene.set_max_anisotropy(settings.max_anisotropy);
+    if args.view != super::FigureViewArg::Image {
+        return super::texture_figure::write(args, &scene, &texture, &settings, lang);
     }
     let fig = Figure::compose_in(&scene, &texture, &options, lang)
         .with_context(|| barylab::files::shown(&args.input.scene))?;

@@ -2,6 +2,7 @@
 //! pixels, fractions and views.
 
 use super::*;
+use barylab::raster::texture::{MAX_ANISOTROPY, MaxAnisotropy};
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
 pub(super) enum TieRuleArg {
@@ -26,6 +27,16 @@ pub(super) fn parse_samples(s: &str) -> Result<SampleCount, String> {
         .parse()
         .map_err(|_| format!("`{s}` is not a number of samples: expected 1, 4, 8 or 16"))?;
     SampleCount::try_from(n)
+}
+
+/// `--anisotropy N`: the largest anisotropy, 1 (off) to 16.
+pub(super) fn parse_anisotropy(s: &str) -> Result<MaxAnisotropy, String> {
+    let n: u32 = s.trim().parse().map_err(|_| {
+        format!(
+            "`{s}` is not a number: expected the largest anisotropy, 1 (off) to {MAX_ANISOTROPY}"
+        )
+    })?;
+    MaxAnisotropy::new(n)
 }
 
 /// A value named as in scene files (`grid`, `ssaa`, `centroid`, `first`, ...), through the

@@ -10,6 +10,8 @@
 //!   app paints it with egui, [`svg`] writes it as SVG).
 //! - [`text`]: the overlay font, text measurement and label placement (shared with the app).
 //! - [`svg`], [`png`]: the figure as an SVG document, and that document rasterized by resvg.
+//! - [`texture_view`], [`lod_view`]: the pinned pixel's lookup in texture space (texels,
+//!   taps and weights, footprint, anisotropic probes) and every pixel's mipmap level.
 //! - [`plot`]: a line plot (the handout's row plot) as SVG and PNG, without egui.
 //! - [`caption`]: the optional caption with the marked pixel's key numbers.
 //! - [`heatmap`]: the difference view's colours.
@@ -28,13 +30,16 @@ mod compare;
 mod compose;
 pub mod export;
 pub mod heatmap;
+pub mod lod_view;
 mod marks;
 mod options;
 pub mod overlay;
 pub mod plot;
 pub mod png;
+pub mod raster_svg;
 pub mod svg;
 pub mod text;
+pub mod texture_view;
 
 pub use compare::{Compare, ViewContent, modes_for, view_contents, wipe_column, wipe_pixels};
 pub use compose::{Figure, FigureError, FigureView};

@@ -119,7 +119,7 @@ pub(super) fn encode(image: &image::RgbaImage) -> Result<Vec<u8>, FigureError> {
 }
 
 /// A premultiplied copy of a straight-alpha RGBA image.
-fn pixmap_of(image: &image::RgbaImage) -> Result<Pixmap, FigureError> {
+pub(super) fn pixmap_of(image: &image::RgbaImage) -> Result<Pixmap, FigureError> {
     let (w, h) = image.dimensions();
     let mut p = canvas(w, h, "view image")?;
     for (dst, src) in p.pixels_mut().iter_mut().zip(image.pixels()) {

@@ -1,8 +1,52 @@
-//! The built-in lesson and the scenes compiled into the program, so `barylab lesson builtin`
-//! and the app's Lessons menu work on a machine without the `assets/` folder.
+//! The built-in lessons and the scenes compiled into the program, so `barylab lesson
+//! interpolation` (or `builtin`), `barylab lesson texture` and the app's Lessons menu work on
+//! a machine without the `assets/` folder. [`LESSONS`] is the registry: a lesson added there
+//! is opened by name everywhere.
 
-/// The name that opens the built-in lesson (`barylab lesson builtin`).
+/// The name that opens the first built-in lesson, interpolation (`barylab lesson builtin`).
 pub const NAME: &str = "builtin";
+
+/// A lesson compiled into the program.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BuiltinLesson {
+    /// The name that opens it (`barylab lesson NAME`).
+    pub name: &'static str,
+    /// Other names that open it.
+    pub aliases: &'static [&'static str],
+    /// Its JSON.
+    pub text: &'static str,
+}
+
+/// The built-in lessons, in the order the Lessons menu lists them.
+pub const LESSONS: [BuiltinLesson; 2] = [
+    BuiltinLesson {
+        name: "interpolation",
+        aliases: &[NAME],
+        text: LESSON,
+    },
+    BuiltinLesson {
+        name: "texture",
+        aliases: &[],
+        text: TEXTURE_LESSON,
+    },
+];
+
+/// The built-in lesson a name (or alias) opens.
+///
+/// ```
+/// use barylab::lesson::builtin::lesson;
+/// assert_eq!(lesson("builtin").map(|l| l.name), Some("interpolation"));
+/// assert_eq!(lesson("texture").map(|l| l.name), Some("texture"));
+/// assert!(lesson("lessons/my.json").is_none());
+/// ```
+pub fn lesson(name: &str) -> Option<&'static BuiltinLesson> {
+    LESSONS
+        .iter()
+        .find(|l| l.name == name || l.aliases.contains(&name))
+}
+
+/// The second built-in lesson, `assets/lessons/texture.json`: from uv to texel.
+pub const TEXTURE_LESSON: &str = include_str!("../../assets/lessons/texture.json");
 
 /// A lesson's scene reference that names a built-in scene: `"builtin:default"`.
 pub const SCENE_PREFIX: &str = "builtin:";
@@ -11,7 +55,7 @@ pub const SCENE_PREFIX: &str = "builtin:";
 pub const LESSON: &str = include_str!("../../assets/lessons/interpolation.json");
 
 /// The scenes of `assets/scenes/` that need no other file (built-in textures only), by name.
-pub const SCENES: [(&str, &str); 13] = [
+pub const SCENES: [(&str, &str); 15] = [
     ("default", include_str!("../../assets/scenes/default.json")),
     ("front", include_str!("../../assets/scenes/front.json")),
     (
@@ -41,6 +85,14 @@ pub const SCENES: [(&str, &str); 13] = [
     (
         "far-checker",
         include_str!("../../assets/scenes/far-checker.json"),
+    ),
+    (
+        "far-checker-anisotropic",
+        include_str!("../../assets/scenes/far-checker-anisotropic.json"),
+    ),
+    (
+        "checker-closeup",
+        include_str!("../../assets/scenes/checker-closeup.json"),
     ),
     (
         "clip-two-triangles",

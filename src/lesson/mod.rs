@@ -236,6 +236,8 @@ pub struct Lesson {
     pub steps: Vec<Step>,
     /// Where it was read from (`None`: built in).
     pub path: Option<PathBuf>,
+    /// The built-in lesson's name ([`builtin::LESSONS`]); `None` for a file.
+    pub builtin: Option<&'static str>,
 }
 
 /// Everything a step sets: what the app applies, and what its figure and handout show.
@@ -293,15 +295,15 @@ impl Lesson {
     /// The built-in lesson ([`builtin::LESSON`]): barycentric weights to perspective-correct
     /// interpolation, depth and clipping.
     pub fn builtin() -> Result<Lesson, LessonError> {
-        parse::parse_builtin()
+        parse::parse_builtin(&builtin::LESSONS[0])
     }
 
-    /// Reads a lesson file, or the built-in lesson for the name `builtin`.
+    /// Reads a lesson file, or the built-in lesson a name opens ([`builtin::lesson`]:
+    /// `interpolation` or `builtin`, `texture`).
     pub fn open(path: &Path) -> Result<Lesson, LessonError> {
-        if path == Path::new(builtin::NAME) {
-            Lesson::builtin()
-        } else {
-            load(path)
+        match path.to_str().and_then(builtin::lesson) {
+            Some(b) => parse::parse_builtin(b),
+            None => load(path),
         }
     }
 
@@ -346,7 +348,7 @@ impl Lesson {
     pub fn shown_path(&self) -> String {
         match &self.path {
             Some(p) => crate::files::shown(p),
-            None => builtin::NAME.to_string(),
+            None => self.builtin.unwrap_or(builtin::NAME).to_string(),
         }
     }
 

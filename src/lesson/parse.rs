@@ -266,6 +266,7 @@ fn parse(
         title: raw.title,
         steps: raw.steps,
         path: file,
+        builtin: None,
     };
     check(&lesson, text, path)?;
     Ok(lesson)
@@ -322,7 +323,9 @@ pub fn load(path: &Path) -> Result<Lesson, LessonError> {
     parse(text, &name, Origin::Folder(dir), Some(path.to_path_buf()))
 }
 
-/// Parses the built-in lesson.
-pub(super) fn parse_builtin() -> Result<Lesson, LessonError> {
-    parse(builtin::LESSON, builtin::NAME, Origin::Builtin, None)
+/// Parses a built-in lesson.
+pub(super) fn parse_builtin(lesson: &builtin::BuiltinLesson) -> Result<Lesson, LessonError> {
+    let mut l = parse(lesson.text, lesson.name, Origin::Builtin, None)?;
+    l.builtin = Some(lesson.name);
+    Ok(l)
 }

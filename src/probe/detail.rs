@@ -6,6 +6,7 @@
 
 use glam::{DVec2, DVec3, Vec2};
 
+use super::lod;
 use super::weights;
 use super::*;
 use crate::raster::clip::ClipVertex;
@@ -13,7 +14,7 @@ use crate::raster::interpolate::{Fragment, Interpolation};
 use crate::raster::project;
 use crate::raster::render;
 use crate::raster::setup::TriangleSetup;
-use crate::raster::shade::{self, Shading};
+use crate::raster::shade::{self, ShadeParams, Shading};
 use crate::raster::texture::{self, Filter};
 use crate::raster::varying::Varyings;
 
@@ -318,23 +319,29 @@ impl Prober<'_> {
         // As the filters compute them: `u W` in f32.
         let texel = |uv: Vec2| t.texel_coords(uv, 0).map(f64::from);
         let (filter, wrap) = (self.settings.filter, self.settings.wrap);
-        let lod_affine = self.lod(s, x, y, Interpolation::Affine);
-        let lod_perspective = self.lod(s, x, y, Interpolation::Perspective);
-        let taps = |uv: Vec2, lod: f32| {
-            t.taps_lod(uv, filter, wrap, lod)
-                .iter()
-                .map(|tap| TapTrace {
-                    level: tap.level,
-                    i: tap.i,
-                    j: tap.j,
-                    unwrapped: (filter == Filter::Nearest)
-                        .then(|| t.nearest_unwrapped(uv, tap.level)),
-                    weight: tap.weight,
-                    texel: t.texel_at(tap.level, tap.i, tap.j),
-                })
-                .collect()
+        // The fragment as the renderer shades it in each mode: its level of detail (and
+        // derivatives) from that mode's uv.
+        let footprint = |mode| {
+            let params = ShadeParams {
+                mode,
+                ..self.params
+            };
+            let mut f = *f;
+            shade::texture_footprint(&mut f, s, (x, y), &params, t);
+            (f, params)
         };
-        let sample = |uv: Vec2, lod: f32| t.sample_rgba8(uv, filter, wrap, lod);
+        let (frag_affine, params_affine) = footprint(Interpolation::Affine);
+        let (frag_perspective, params_perspective) = footprint(Interpolation::Perspective);
+        let (lod_affine, lod_perspective) = (frag_affine.lod, frag_perspective.lod);
+        let taps = |uv: Vec2, lod: f32| {
+            let mut taps = lod::tap_traces(t, &t.taps_lod(uv, filter, wrap, lod));
+            if filter == Filter::Nearest {
+                for tap in &mut taps {
+                    tap.unwrapped = Some(t.nearest_unwrapped(uv, tap.level));
+                }
+            }
+            taps
+        };
         let diff = DVec2::from_array(texture::texel_offset(
             uv_a.as_dvec2().to_array(),
             uv_p.as_dvec2().to_array(),
@@ -359,8 +366,14 @@ impl Prober<'_> {
             }),
             taps_affine: taps(uv_a, lod_affine),
             taps_perspective: taps(uv_p, lod_perspective),
-            color_affine: sample(uv_a, lod_affine),
-            color_perspective: sample(uv_p, lod_perspective),
+            color_affine: shade::texture_color(t, uv_a, &frag_affine, &params_affine),
+            color_perspective: shade::texture_color(
+                t,
+                uv_p,
+                &frag_perspective,
+                &params_perspective,
+            ),
+            lod: self.lod_trace(s, (x, y)),
             vertex_colors: s.v.map(|v| v.varyings.color().to_array()),
             vertex_color_affine: f.affine.color().to_array(),
             vertex_color_perspective: f.correct.color().to_array(),

@@ -27,10 +27,12 @@
 
 mod detail;
 pub mod format;
+mod lod;
 mod samples;
 mod trace;
 pub mod weights;
 
+pub use lod::{AnisotropicTrace, LevelChoice, LodTrace, ProbeTrace, QuadPixel};
 pub use samples::{SampleShading, SampleTrace, TriangleSamples};
 pub use trace::*;
 
@@ -38,12 +40,12 @@ use glam::{DMat4, DVec2, DVec3};
 
 use crate::raster::camera::{Camera, CameraChain};
 use crate::raster::framebuffer;
-use crate::raster::interpolate::{self, Fragment, Interpolation};
+use crate::raster::interpolate::{self, Derivatives, Fragment};
 use crate::raster::project::{self, SUBPIXEL, Viewport};
 use crate::raster::render::{self, ClipMesh, PreparedTriangle, RenderError, RenderSettings};
 use crate::raster::setup::{self, TriangleSetup};
 use crate::raster::shade::{self, ShadeParams};
-use crate::raster::texture::{Filter, Texture};
+use crate::raster::texture::Texture;
 use crate::scene::{Scene, vertex_name};
 
 /// Errors of the probe.
@@ -118,6 +120,7 @@ pub struct Prober<'a> {
     settings: RenderSettings,
     triangles: Vec<PreparedTriangle>,
     params: ShadeParams,
+    derivatives: Derivatives,
 }
 
 /// The texture a [`Prober`] samples: borrowed, or shared so the prober can be kept (the app
@@ -157,6 +160,12 @@ impl<'a> Prober<'a> {
         settings: &RenderSettings,
     ) -> Result<Self, ProbeError> {
         Self::build(scene, TextureRef::Borrowed(texture), settings)
+    }
+
+    /// Which derivatives the level-of-detail derivation uses ([`LodTrace`]): coarse (the
+    /// default, what the renderer uses) or fine.
+    pub fn set_derivatives(&mut self, kind: Derivatives) {
+        self.derivatives = kind;
     }
 
     /// The settings the prober traces with.
@@ -200,6 +209,7 @@ impl<'a> Prober<'a> {
             settings: *settings,
             triangles,
             params,
+            derivatives: Derivatives::Coarse,
         })
     }
 
@@ -217,16 +227,6 @@ impl<'a> Prober<'a> {
                     .unwrap_or_else(|| format!("V{i}"))
             }),
             None => [String::new(), String::new(), String::new()],
-        }
-    }
-
-    /// The texture level of detail the renderer gives a fragment at (x, y): from its 2x2
-    /// quad with trilinear filtering ([`interpolate::quad_lod`]), else 0.
-    fn lod(&self, s: &TriangleSetup, x: u32, y: u32, mode: Interpolation) -> f32 {
-        if self.params.filter == Filter::Trilinear {
-            interpolate::quad_lod(s, x, y, mode, self.texture.width(), self.texture.height())
-        } else {
-            0.0
         }
     }
 
@@ -357,6 +357,7 @@ impl<'a> Prober<'a> {
                 shading: self.settings.shading,
                 filter: self.settings.filter,
                 wrap: self.settings.wrap,
+                max_anisotropy: self.settings.max_anisotropy.get(),
                 wireframe: self.settings.wireframe,
                 background: self.settings.background,
             },
@@ -384,7 +385,7 @@ impl<'a> Prober<'a> {
         let s = &self.triangles[ti].setups[si];
         let weights = s.weights.at_pixel(x, y);
         let frag = interpolate::fragment_from_weights(s, edges, weights).map(|mut f| {
-            f.lod = self.lod(s, x, y, self.settings.mode);
+            shade::texture_footprint(&mut f, s, (x, y), &self.params, &self.texture);
             f
         });
         Sampled {

@@ -63,6 +63,8 @@ pub struct TraceSettings {
     pub filter: Filter,
     /// Texture wrap mode.
     pub wrap: Wrap,
+    /// The largest anisotropy (above 1 with trilinear: anisotropic filtering).
+    pub max_anisotropy: u32,
     /// Whether the source triangles' edges are drawn as lines.
     pub wireframe: bool,
     /// Background RGBA, the colour of pixels no triangle covers.
@@ -454,6 +456,9 @@ pub struct AttributeTrace {
     pub color_affine: [u8; 4],
     /// The filtered texture colour with the perspective-correct uv, 8-bit RGBA.
     pub color_perspective: [u8; 4],
+    /// Trilinear filtering only: the level of detail derived step by step with the scene's
+    /// mode's uv (and the anisotropic probes).
+    pub lod: Option<super::LodTrace>,
     /// Vertex colours of the rasterized vertices, and the colour interpolated each way.
     pub vertex_colors: [[f32; 3]; 3],
     /// Vertex colour interpolated with the screen weights r, s, t (the renderer's, f32).

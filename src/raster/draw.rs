@@ -9,7 +9,7 @@ use super::interpolate::{self, Fragment};
 use super::lanes::{self, DifferenceTarget, LaneShading, Target, UvTarget, VectorLevel};
 use super::settings::Rasterizer;
 use super::setup::{TriangleSetup, sample_point};
-use super::shade::{ShadeParams, Shading, shade};
+use super::shade::{ShadeParams, Shading, shade, texture_footprint};
 use super::texture::{Filter, Texture, texel_difference};
 
 /// What the lanes can draw of these shading parameters (into colour and depth, and into the
@@ -160,10 +160,7 @@ pub(super) fn rasterize(
     // Depth test, buffers and shading: the same for both rasterizers.
     let write = |band: &mut RowBand<'_>, x: u32, y: u32, frag: &Fragment| {
         let mut frag = *frag;
-        if params.filter == Filter::Trilinear {
-            frag.lod =
-                interpolate::quad_lod(setup, x, y, params.mode, texture.width(), texture.height());
-        }
+        texture_footprint(&mut frag, setup, (x, y), params, texture);
         let i = (y - band.y0) as usize * band.width as usize + x as usize;
         let depth = frag.depth as f32;
         if !depth_passes(depth, band.depth[i]) {

@@ -63,6 +63,9 @@ pub struct Fragment {
     pub edge_weights: [f32; 3],
     /// Texture level of detail (see [`quad_lod`]); 0 unless trilinear filtering asked for it.
     pub lod: f32,
+    /// The uv derivatives `[duv/dx, duv/dy]` across the pixel's 2x2 quad
+    /// ([`quad_derivatives`]); zero unless anisotropic filtering asked for them.
+    pub duv: [Vec2; 2],
 }
 
 impl Fragment {
@@ -126,6 +129,7 @@ pub fn fragment_from_weights(
         edge_weights: edge_weights(setup, &l),
         correct: Varyings::weighted(&p, &vars),
         lod: 0.0,
+        duv: [Vec2::ZERO; 2],
     })
 }
 
@@ -151,10 +155,48 @@ pub fn uv_at(setup: &TriangleSetup, x: u32, y: u32, mode: Interpolation) -> Opti
     Some(fragment(setup, x, y)?.varyings(mode).uv())
 }
 
-/// Texture level of detail at pixel (x, y), from uv differences across its 2x2 quad with
-/// origin (x0, y0) = (x & !1, y & !1) (coarse derivatives, as GPUs compute them):
-/// `du/dx = uv(x0 + 1, y0) - uv(x0, y0)`, `du/dy = uv(x0, y0 + 1) - uv(x0, y0)`, then
-/// [`texture::lod`](super::texture::lod). 0 where the plane has no valid uv.
+/// Which pixels of the 2x2 quad the uv derivatives come from (GLSL `dFdxCoarse` /
+/// `dFdxFine`).
+#[derive(
+    Clone, Copy, Debug, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Derivatives {
+    /// One pair for the whole quad, from its first row and first column (what GPUs use for
+    /// implicit texture derivatives, llvmpipe included; the renderer's).
+    #[default]
+    Coarse,
+    /// Each pixel's own row (for d/dx) and own column (for d/dy) of the quad.
+    Fine,
+}
+
+/// The uv derivatives at pixel (x, y) from differences across its 2x2 quad with origin
+/// (x0, y0) = (x & !1, y & !1), every uv from the triangle's plane (extrapolated beyond its
+/// edges, as a GPU's helper invocations are):
+/// coarse `duv/dx = uv(x0 + 1, y0) - uv(x0, y0)`, `duv/dy = uv(x0, y0 + 1) - uv(x0, y0)`;
+/// fine `duv/dx = uv(x0 + 1, y) - uv(x0, y)`, `duv/dy = uv(x, y0 + 1) - uv(x, y0)`. `y` grows
+/// down the image (so `dv/dy` has the opposite sign of GL's window y; the lengths agree).
+/// `None` where the plane has no valid uv.
+pub fn quad_derivatives(
+    setup: &TriangleSetup,
+    (x, y): (u32, u32),
+    mode: Interpolation,
+    kind: Derivatives,
+) -> Option<[Vec2; 2]> {
+    let (x0, y0) = (x & !1, y & !1);
+    let (row, column) = match kind {
+        Derivatives::Coarse => (y0, x0),
+        Derivatives::Fine => (y, x),
+    };
+    let uv = |x, y| uv_at(setup, x, y, mode);
+    let dx = uv(x0 + 1, row)? - uv(x0, row)?;
+    let dy = uv(column, y0 + 1)? - uv(column, y0)?;
+    Some([dx, dy])
+}
+
+/// Texture level of detail at pixel (x, y) from its coarse derivatives
+/// ([`quad_derivatives`]) and [`texture::lod`](super::texture::lod); 0 where the plane has no
+/// valid uv.
 pub fn quad_lod(
     setup: &TriangleSetup,
     x: u32,
@@ -163,13 +205,8 @@ pub fn quad_lod(
     width: u32,
     height: u32,
 ) -> f32 {
-    let (x0, y0) = (x & !1, y & !1);
-    match (
-        uv_at(setup, x0, y0, mode),
-        uv_at(setup, x0 + 1, y0, mode),
-        uv_at(setup, x0, y0 + 1, mode),
-    ) {
-        (Some(o), Some(dx), Some(dy)) => super::texture::lod(dx - o, dy - o, width, height),
-        _ => 0.0,
+    match quad_derivatives(setup, (x, y), mode, Derivatives::Coarse) {
+        Some([dx, dy]) => super::texture::lod(dx, dy, width, height),
+        None => 0.0,
     }
 }

@@ -22,8 +22,8 @@ use super::prepare::{PreparedTriangle, source_vertices};
 use super::project::{SUBPIXEL, Viewport};
 use super::sample::{SampleSettings, centroid_sample, resolve, sample_at, window_position};
 use super::setup::{PixelBounds, TriangleSetup, sample_point};
-use super::shade::{ShadeParams, shade};
-use super::texture::{Filter, Texture};
+use super::shade::{ShadeParams, shade, texture_footprint};
+use super::texture::Texture;
 use super::varying::Varyings;
 
 /// What one sample holds: the colour, the depth, the source triangle that wrote it and the
@@ -152,10 +152,7 @@ pub fn draw_pixel(
     let texture = ctx.texture;
     let fragment = |p: I64Vec2| {
         let mut frag = fragment_at(setup, p, flat)?;
-        if params.filter == Filter::Trilinear {
-            frag.lod =
-                interpolate::quad_lod(setup, x, y, params.mode, texture.width(), texture.height());
-        }
+        texture_footprint(&mut frag, setup, (x, y), params, texture);
         Some(frag)
     };
     let shared = if ctx.samples.per_sample_shading() {

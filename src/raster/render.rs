@@ -256,6 +256,7 @@ pub fn shade_params(settings: &RenderSettings, triangles: &[PreparedTriangle]) -
         filter: settings.filter,
         wrap: settings.wrap,
         wireframe: settings.wireframe,
+        max_anisotropy: settings.max_anisotropy,
         depth_range: depth_range(
             triangles
                 .iter()

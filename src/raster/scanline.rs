@@ -158,6 +158,7 @@ impl Values {
             affine,
             correct,
             lod: 0.0,
+            duv: [glam::Vec2::ZERO; 2],
         })
     }
 }

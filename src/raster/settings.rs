@@ -7,7 +7,7 @@ use super::project::{MAX_IMAGE_SIZE, Viewport};
 use super::sample::SampleSettings;
 use super::setup::TieRule;
 use super::shade::Shading;
-use super::texture::{Filter, Wrap};
+use super::texture::{Filter, MaxAnisotropy, Wrap};
 
 /// Which rasterizer visits the covered pixels. Both give the same coverage and values equal
 /// up to floating-point rounding.
@@ -37,6 +37,9 @@ pub struct RenderSettings {
     pub filter: Filter,
     /// Texture wrap mode outside [0, 1].
     pub wrap: Wrap,
+    /// The sampler's largest anisotropy: 1 (off, the default) to 16; above 1, trilinear
+    /// filtering becomes anisotropic.
+    pub max_anisotropy: MaxAnisotropy,
     /// What a fragment's colour is made from.
     pub shading: Shading,
     /// Overlay the source triangles' edges.
@@ -63,6 +66,7 @@ impl Default for RenderSettings {
             mode: Interpolation::Perspective,
             filter: Filter::Bilinear,
             wrap: Wrap::Repeat,
+            max_anisotropy: MaxAnisotropy::default(),
             shading: Shading::Texture,
             wireframe: false,
             background: DEFAULT_BACKGROUND,

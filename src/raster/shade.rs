@@ -3,8 +3,9 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::interpolate::{Fragment, Interpolation};
-use super::texture::{Filter, Texture, Wrap};
+use super::interpolate::{self, Derivatives, Fragment, Interpolation};
+use super::setup::TriangleSetup;
+use super::texture::{Filter, MaxAnisotropy, Texture, Wrap, lod};
 
 /// What the colour of a covered pixel shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -261,6 +262,57 @@ pub struct ShadeParams {
     pub wireframe: bool,
     /// Window depths mapped to black and white in [`Shading::Depth`].
     pub depth_range: (f64, f64),
+    /// The sampler's largest anisotropy (anisotropic filtering when above 1 with trilinear).
+    pub max_anisotropy: MaxAnisotropy,
+}
+
+impl ShadeParams {
+    /// The largest anisotropy when texture lookups filter anisotropically: trilinear
+    /// filtering with `max_anisotropy` above 1.
+    pub fn anisotropy(&self) -> Option<MaxAnisotropy> {
+        (self.filter == Filter::Trilinear && self.max_anisotropy.is_on())
+            .then_some(self.max_anisotropy)
+    }
+}
+
+/// The texture's colour at `uv` for fragment `frag` (its level of detail and derivatives,
+/// [`texture_footprint`]): anisotropic when [`ShadeParams::anisotropy`] says so, else the
+/// filter's lookup.
+pub fn texture_color(
+    texture: &Texture,
+    uv: glam::Vec2,
+    frag: &Fragment,
+    p: &ShadeParams,
+) -> [u8; 4] {
+    match p.anisotropy() {
+        Some(max) => texture.sample_anisotropic_rgba8(uv, p.wrap, frag.duv, max),
+        None => texture.sample_rgba8(uv, p.filter, p.wrap, frag.lod),
+    }
+}
+
+/// Sets what a texture lookup at pixel (x, y) needs beyond the uv: with trilinear filtering
+/// the level of detail of its 2x2 quad ([`interpolate::quad_lod`]'s, from coarse
+/// derivatives), and with anisotropic filtering the derivatives too. The renderer (one sample
+/// or many) and the probe call this.
+pub fn texture_footprint(
+    frag: &mut Fragment,
+    setup: &TriangleSetup,
+    (x, y): (u32, u32),
+    p: &ShadeParams,
+    texture: &Texture,
+) {
+    if p.filter != Filter::Trilinear {
+        return;
+    }
+    let (w, h) = (texture.width(), texture.height());
+    match p.anisotropy() {
+        None => frag.lod = interpolate::quad_lod(setup, x, y, p.mode, w, h),
+        Some(_) => {
+            let duv = interpolate::quad_derivatives(setup, (x, y), p.mode, Derivatives::Coarse);
+            frag.duv = duv.unwrap_or([glam::Vec2::ZERO; 2]);
+            frag.lod = duv.map_or(0.0, |[dx, dy]| lod(dx, dy, w, h));
+        }
+    }
 }
 
 /// The depth range [`Shading::Depth`] maps to black and white: the smallest and largest of
@@ -314,7 +366,7 @@ pub fn shade(
     let v = frag.varyings(p.mode);
     let bary = v.bary();
     match p.shading {
-        Shading::Texture => texture.sample_rgba8(v.uv(), p.filter, p.wrap, frag.lod),
+        Shading::Texture => texture_color(texture, v.uv(), frag, p),
         Shading::VertexColor => {
             let c = v.color();
             [unorm8(c.x), unorm8(c.y), unorm8(c.z), 255]

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::raster::sample::{Location, ProvokingVertex, SampleCount, SamplePattern, ShadingRate};
+use crate::raster::texture::MaxAnisotropy;
 
 /// Whether a field holds its default (scene files leave such fields out).
 fn is_default<T: Default + PartialEq>(v: &T) -> bool {
@@ -70,6 +71,10 @@ pub struct WorldScene {
     /// Texture wrap mode outside [0, 1] (default repeat).
     #[serde(default)]
     pub wrap: Wrap,
+    /// The largest anisotropy of texture lookups: 1 (off, the default) to 16; above 1,
+    /// trilinear filtering becomes anisotropic.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub max_anisotropy: MaxAnisotropy,
     /// Interpolation: perspective-correct (default) or affine.
     #[serde(default)]
     pub mode: Interpolation,
@@ -150,6 +155,10 @@ pub struct ClipScene {
     /// Texture wrap mode outside [0, 1] (default repeat).
     #[serde(default)]
     pub wrap: Wrap,
+    /// The largest anisotropy of texture lookups: 1 (off, the default) to 16; above 1,
+    /// trilinear filtering becomes anisotropic.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub max_anisotropy: MaxAnisotropy,
     /// Interpolation: perspective-correct (default) or affine.
     #[serde(default)]
     pub mode: Interpolation,
@@ -208,6 +217,10 @@ pub struct ModelScene {
     /// Texture wrap mode outside [0, 1] (default repeat).
     #[serde(default)]
     pub wrap: Wrap,
+    /// The largest anisotropy of texture lookups: 1 (off, the default) to 16; above 1,
+    /// trilinear filtering becomes anisotropic.
+    #[serde(default, skip_serializing_if = "is_default")]
+    pub max_anisotropy: MaxAnisotropy,
     /// Interpolation: perspective-correct (default) or affine.
     #[serde(default)]
     pub mode: Interpolation,
@@ -257,6 +270,7 @@ impl ModelScene {
             texture: None,
             filter: Filter::default(),
             wrap: Wrap::default(),
+            max_anisotropy: MaxAnisotropy::default(),
             mode: Interpolation::default(),
             shading: None,
             wireframe: false,

@@ -22,6 +22,9 @@ fn bare_message(e: &serde_json::Error) -> String {
             break;
         }
     }
+    for int in ["u8", "u16", "u32", "u64"] {
+        s = s.replace(&format!("expected {int}"), "expected a whole number");
+    }
     s
 }
 

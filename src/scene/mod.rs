@@ -298,6 +298,7 @@ impl Scene {
             texture: default_texture(),
             filter: Filter::Bilinear,
             wrap: Wrap::Repeat,
+            max_anisotropy: Default::default(),
             mode: Interpolation::Perspective,
             shading: Shading::Texture,
             wireframe: false,
@@ -470,6 +471,7 @@ impl Scene {
         };
         RenderSettings {
             rasterizer: Default::default(),
+            max_anisotropy: self.max_anisotropy(),
             samples: self.samples(),
             tie_rule,
             width,

@@ -1,9 +1,11 @@
 //! A scene's samples and interpolation qualifiers (`samples`, `sample_pattern`,
 //! `shading_rate`, `location`, `flat`, `provoking_vertex`): read into
-//! [`SampleSettings`], set from the command line, checked.
+//! [`SampleSettings`], set from the command line, checked; and the sampler's
+//! `max_anisotropy`.
 
 use super::{Scene, SceneError, invalid};
 use crate::raster::sample::SampleSettings;
+use crate::raster::texture::MaxAnisotropy;
 
 /// The same six fields of every form, read or written.
 macro_rules! each_form {
@@ -39,6 +41,16 @@ impl Scene {
             s.flat = v.flat;
             s.provoking_vertex = v.provoking;
         })
+    }
+
+    /// The largest anisotropy of texture lookups (`max_anisotropy`).
+    pub fn max_anisotropy(&self) -> MaxAnisotropy {
+        each_form!(self, s => s.max_anisotropy)
+    }
+
+    /// Sets the largest anisotropy of texture lookups.
+    pub fn set_max_anisotropy(&mut self, max: MaxAnisotropy) {
+        each_form!(self, s => s.max_anisotropy = max)
     }
 
     /// Refuses a sample pattern the count has no positions for, naming the fields.

@@ -37,6 +37,7 @@ pub fn settings(width: u32, height: u32) -> RenderSettings {
         rasterizer: Default::default(),
         tie_rule: Default::default(),
         samples: Default::default(),
+        max_anisotropy: Default::default(),
     }
 }
 

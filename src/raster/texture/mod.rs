@@ -7,10 +7,12 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
+mod anisotropic;
 mod builtin;
 mod load;
 mod mip;
 
+pub use anisotropic::{Anisotropic, MAX_ANISOTROPY, MaxAnisotropy, footprint_axes};
 pub use load::{ImageProblem, OpenedImage, TextureError, open_image, plain_error};
 use mip::mip_chain;
 
@@ -103,7 +105,8 @@ struct Level {
 }
 
 /// Level of detail from the uv derivatives across a pixel (OpenGL 4.6 eq. 8.7 - 8.9):
-/// `lambda = log2(max(|(du/dx W, dv/dx H)|, |(du/dy W, dv/dy H)|))`. Derivatives that are
+/// `lambda = log2(rho)`, `rho = max(Px, Py)` with the footprint's sides
+/// `Px = |(du/dx W, dv/dx H)|`, `Py = |(du/dy W, dv/dy H)|` ([`footprint_axes`]). Derivatives that are
 /// not finite give 0 (the base level).
 ///
 /// ```
@@ -115,9 +118,8 @@ struct Level {
 /// assert_eq!(lod(Vec2::new(0.5 / 256.0, 0.0), Vec2::ZERO, 256, 256), -1.0);
 /// ```
 pub fn lod(duv_dx: Vec2, duv_dy: Vec2, width: u32, height: u32) -> f32 {
-    let size = Vec2::new(width as f32, height as f32);
-    let rho = (duv_dx * size).length().max((duv_dy * size).length());
-    let l = rho.log2();
+    let [px, py] = footprint_axes(duv_dx, duv_dy, width, height);
+    let l = px.max(py).log2();
     if l.is_finite() { l } else { 0.0 }
 }
 
@@ -467,7 +469,15 @@ impl Texture {
     /// The mipmap levels trilinear filtering reads at `lambda`: `(d, None)` for level `d`
     /// alone, `(d, Some(f))` for levels `d` and `d + 1` weighted `1 - f` and `f`. `lambda <= 0`
     /// (or not finite) gives level 0; it is clamped to the last level.
-    fn trilinear_levels(&self, lambda: f32) -> (u32, Option<f32>) {
+    ///
+    /// ```
+    /// use barylab::raster::texture::Texture;
+    /// let t = Texture::from_texels(4, 4, vec![[0; 4]; 16]).unwrap();
+    /// assert_eq!(t.trilinear_levels(-0.5), (0, None));
+    /// assert_eq!(t.trilinear_levels(1.25), (1, Some(0.25)));
+    /// assert_eq!(t.trilinear_levels(7.0), (2, None));
+    /// ```
+    pub fn trilinear_levels(&self, lambda: f32) -> (u32, Option<f32>) {
         let last = self.levels() - 1;
         let lambda = if lambda.is_finite() { lambda } else { 0.0 };
         if lambda <= 0.0 || last == 0 {

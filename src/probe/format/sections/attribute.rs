@@ -156,7 +156,6 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         num(a.texel_distance),
         txt(tr!(b, "probe.attribute.texels_unit")),
     ]);
-    let filter = trace.settings.filter;
     if let Some(tri) = &a.trilinear {
         b.para(vec![
             t(tr!(b, "probe.attribute.trilinear", levels = tri.levels)),
@@ -184,6 +183,29 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
             num(f64::from(tri.lod_perspective)),
         ]);
     }
+    let anisotropic = a.lod.as_ref().and_then(|l| l.anisotropic.as_ref());
+    if let Some(an) = anisotropic {
+        b.text(tr!(b, "probe.attribute.reads_anisotropic", max = an.max));
+        for (label, uv, color) in [
+            (&affine, a.uv_affine, a.color_affine),
+            (&perspective, a.uv_perspective, a.color_perspective),
+        ] {
+            b.eq(vec![txt(label.clone()), tup32(&uv), TO, txt(rgba(color))]);
+        }
+    } else {
+        filter_lines(b, trace, a, (&affine, &perspective));
+    }
+    vertex_colour_lines(b, a, &n, perspective);
+}
+
+/// The filter's texels and weights for both uvs.
+fn filter_lines(
+    b: &mut Builder,
+    trace: &PixelTrace,
+    a: &AttributeTrace,
+    (affine, perspective): (&str, &str),
+) {
+    let filter = trace.settings.filter;
     let what = match filter {
         Filter::Nearest => tr!(b, "probe.attribute.reads_nearest"),
         Filter::Bilinear => tr!(b, "probe.attribute.reads_bilinear"),
@@ -198,7 +220,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
     let rule = wrap_rule(b, trace.settings.wrap, a);
     b.eq(taps_line(
         b,
-        &affine,
+        affine,
         a.uv_affine,
         a.texel_affine,
         &a.taps_affine,
@@ -208,7 +230,7 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
     ));
     b.eq(taps_line(
         b,
-        &perspective,
+        perspective,
         a.uv_perspective,
         a.texel_perspective,
         &a.taps_perspective,
@@ -216,6 +238,10 @@ pub(super) fn attribute_section(b: &mut Builder, trace: &PixelTrace, d: &Triangl
         filter,
         &rule,
     ));
+}
+
+/// The vertex colours and the colour interpolated both ways.
+fn vertex_colour_lines(b: &mut Builder, a: &AttributeTrace, n: &[String; 3], perspective: String) {
     b.eq(listing((0..3).map(|k| {
         vec![
             sym(format!("colour_{}", n[k])),

@@ -53,7 +53,7 @@ pub(super) fn color_section(b: &mut Builder, trace: &PixelTrace) {
                 } else {
                     "persp"
                 },
-                filter = filter_name(lang, st.filter)
+                filter = sampler_name(lang, st.filter, st.max_anisotropy)
             ),
             Shading::VertexColor => tr!(
                 b,

@@ -8,6 +8,7 @@ mod clipping;
 mod color;
 mod coverage;
 mod depth;
+mod lod;
 mod perspective;
 mod point;
 mod sample;
@@ -144,6 +145,16 @@ pub fn filter_name(lang: Lang, f: Filter) -> String {
     )
 }
 
+/// The sampler in `lang`: the filter's name, with the largest anisotropy when trilinear
+/// filtering is anisotropic.
+fn sampler_name(lang: Lang, f: Filter, max_anisotropy: u32) -> String {
+    if f == Filter::Trilinear && max_anisotropy > 1 {
+        lang.tr_with("probe.filter.anisotropic", &[("n", &max_anisotropy)])
+    } else {
+        filter_name(lang, f)
+    }
+}
+
 /// The wrap mode's name in `lang`.
 pub fn wrap_name(lang: Lang, w: Wrap) -> String {
     crate::i18n::tr(
@@ -240,6 +251,9 @@ pub fn document_in(trace: &PixelTrace, lang: Lang) -> Document {
         system::system_section(&mut b, d);
         point::point_section(&mut b, trace, d);
         attribute::attribute_section(&mut b, trace, d);
+        if let Some(lt) = d.attribute.as_ref().and_then(|a| a.lod.as_ref()) {
+            lod::lod_section(&mut b, trace, lt);
+        }
         depth::depth_section(&mut b, trace, d);
     }
     color::color_section(&mut b, trace);

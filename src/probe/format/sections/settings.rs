@@ -21,7 +21,7 @@ pub(super) fn settings_section(b: &mut Builder, trace: &PixelTrace) {
         b,
         "probe.settings.shading",
         shading = shading_name(lang, st.shading),
-        filter = filter_name(lang, st.filter),
+        filter = sampler_name(lang, st.filter, st.max_anisotropy),
         wrap = wrap_name(lang, st.wrap),
         wire = wire
     ));

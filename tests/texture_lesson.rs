@@ -1,0 +1,210 @@
+//! The built-in texture lesson: at least 12 steps in both languages, opened by name, every
+//! step's scene renders and pins a covered pixel, and the numbers its text quotes are the
+//! probe's (the level-of-detail derivation of the pinned pixel).
+
+use std::path::Path;
+
+use barylab::lesson::Lesson;
+use barylab::probe::format::fmt_number;
+use barylab::probe::{LodTrace, PixelTrace};
+use barylab::raster::Filter;
+
+fn lesson() -> Lesson {
+    Lesson::open(Path::new("texture")).expect("the texture lesson")
+}
+
+/// The probe of step `n`'s pinned pixel (with trilinear filtering when `trilinear`, so the
+/// level of detail is derived whatever the step's filter).
+fn probe_step(lesson: &Lesson, n: usize, trilinear: bool) -> PixelTrace {
+    let state = lesson.state(n - 1).expect("state");
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let [x, y] = state.pin.expect("pinned");
+    let mut settings = state.scene.settings();
+    if trilinear {
+        settings.filter = Filter::Trilinear;
+    }
+    barylab::probe::probe(&state.scene, &texture, &settings, (x, y)).expect("probe")
+}
+
+fn lod(t: &PixelTrace) -> &LodTrace {
+    t.detail
+        .as_ref()
+        .and_then(|d| d.attribute.as_ref())
+        .and_then(|a| a.lod.as_ref())
+        .expect("a level-of-detail derivation")
+}
+
+/// What step `n`'s text lacks of `v` (as the probe prints it), in each language.
+fn missing(lesson: &Lesson, n: usize, v: f64) -> Vec<String> {
+    let t = fmt_number(v).replace('-', "−");
+    let step = &lesson.steps[n - 1];
+    [("en", &step.text.en), ("zh", &step.text.zh)]
+        .into_iter()
+        .filter(|(_, text)| !text.contains(&t))
+        .map(|(lang, _)| format!("step {n} ({lang}) does not quote {t}"))
+        .collect()
+}
+
+#[test]
+fn the_texture_lesson_has_12_steps_in_both_languages_and_opens_by_name() {
+    let l = lesson();
+    assert!(l.steps.len() >= 12, "{} steps", l.steps.len());
+    assert_eq!(l.builtin, Some("texture"));
+    assert_eq!(l.shown_path(), "texture");
+    for (i, s) in l.steps.iter().enumerate() {
+        for text in [&s.title, &s.text, &s.try_this] {
+            assert!(
+                !text.en.trim().is_empty() && !text.zh.trim().is_empty(),
+                "step {}",
+                i + 1
+            );
+        }
+        assert!(!s.text.en.to_lowercase().contains("seed"), "step {}", i + 1);
+    }
+    // `builtin` stays the interpolation lesson's name.
+    let b = Lesson::open(Path::new("builtin")).expect("builtin");
+    let i = Lesson::open(Path::new("interpolation")).expect("interpolation");
+    assert_eq!(b.title, i.title);
+    assert_ne!(b.title, l.title);
+}
+
+#[test]
+fn every_step_pins_a_covered_pixel() {
+    let l = lesson();
+    for n in 1..=l.steps.len() {
+        let t = probe_step(&l, n, false);
+        assert!(
+            t.written_by.is_some(),
+            "step {n}: the pinned pixel is not covered"
+        );
+    }
+}
+
+#[test]
+fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
+    let l = lesson();
+    let problems = std::cell::RefCell::new(Vec::new());
+    let q = |n: usize, v: f64| problems.borrow_mut().extend(missing(&l, n, v));
+    // 1: uv and texel coordinates; nearest reads texel (0, 0).
+    let t = probe_step(&l, 1, false);
+    let a = t
+        .detail
+        .as_ref()
+        .and_then(|d| d.attribute.clone())
+        .expect("attribute");
+    for v in a
+        .uv_perspective
+        .into_iter()
+        .map(f64::from)
+        .chain(a.texel_perspective)
+    {
+        q(1, v);
+    }
+    assert_eq!((a.taps_perspective[0].i, a.taps_perspective[0].j), (0, 0));
+    // 2: the half-texel offset and the weights by row; the colour.
+    let t = probe_step(&l, 2, false);
+    let a = t
+        .detail
+        .as_ref()
+        .and_then(|d| d.attribute.clone())
+        .expect("attribute");
+    q(2, a.texel_perspective[0] - 0.5);
+    q(2, a.texel_perspective[1] - 0.5);
+    let row = |j: u32| {
+        a.taps_perspective
+            .iter()
+            .filter(|t| t.j == j)
+            .map(|t| f64::from(t.weight))
+            .sum::<f64>()
+    };
+    q(2, row(0));
+    q(2, row(1));
+    assert!(l.steps[1].text.en.contains(&format!(
+        "rgba({}, {}, {})",
+        t.color[0], t.color[1], t.color[2]
+    )));
+    // 3: magnification.
+    let lt = lod(&probe_step(&l, 3, false)).clone();
+    q(3, f64::from(lt.duv_dx[0]));
+    q(3, f64::from(lt.px));
+    q(3, f64::from(lt.trilinear.lambda));
+    assert!(lt.trilinear.lambda < 0.0);
+    // 4: the footprint's long side, measured with the level of detail's derivatives.
+    q(4, f64::from(lod(&probe_step(&l, 4, true)).py));
+    // 5: the quad's uvs and the derivatives.
+    let lt = lod(&probe_step(&l, 5, false)).clone();
+    for p in &lt.quad[..3] {
+        for c in p.uv.expect("uv") {
+            q(5, f64::from(c));
+        }
+    }
+    for v in lt.duv_dx.into_iter().chain(lt.duv_dy) {
+        q(5, f64::from(v));
+    }
+    // 6: the footprint, rho, lambda.
+    let lt = lod(&probe_step(&l, 6, false)).clone();
+    for v in [lt.px, lt.py, lt.rho, lt.trilinear.lambda] {
+        q(6, f64::from(v));
+    }
+    // 7: the number of levels and lambda lower on the floor.
+    let lt = lod(&probe_step(&l, 7, false)).clone();
+    q(7, f64::from(lt.levels));
+    q(7, f64::from(lt.trilinear.lambda));
+    assert_eq!(lt.trilinear.level, 2);
+    // 8: trilinear's two levels and weights; the colour.
+    let t = probe_step(&l, 8, false);
+    let lt = lod(&t).clone();
+    let (next, f) = lt.trilinear.next.expect("two levels");
+    assert_eq!((lt.trilinear.level, next), (4, 5));
+    q(8, f64::from(lt.trilinear.lambda));
+    q(8, 1.0 - f64::from(f));
+    q(8, f64::from(f));
+    assert!(
+        l.steps[7]
+            .text
+            .en
+            .contains(&format!("rgba({0}, {0}, {0})", t.color[0]))
+    );
+    // 9: magnified near the camera.
+    let lt = lod(&probe_step(&l, 9, false)).clone();
+    for v in [lt.px, lt.py, lt.trilinear.lambda] {
+        q(9, f64::from(v));
+    }
+    assert!(lt.trilinear.lambda < 0.0);
+    // 10: the footprint's sides and their ratio.
+    let lt = lod(&probe_step(&l, 10, false)).clone();
+    q(10, f64::from(lt.py));
+    q(10, f64::from(lt.px));
+    q(10, f64::from(lt.py / lt.px));
+    // 11: anisotropic: N, lambda, the colour.
+    let t = probe_step(&l, 11, false);
+    let lt = lod(&t).clone();
+    let an = lt.anisotropic.as_ref().expect("anisotropic");
+    q(11, f64::from(an.p_max));
+    q(11, f64::from(an.p_min));
+    q(11, f64::from(an.n));
+    q(11, f64::from(an.levels.lambda));
+    assert!(
+        l.steps[10]
+            .text
+            .en
+            .contains(&format!("rgba({0}, {0}, {0})", t.color[0]))
+    );
+    // 12: affine uv: its lambda and footprint against the perspective-correct ones.
+    let t = probe_step(&l, 12, false);
+    let a = t
+        .detail
+        .as_ref()
+        .and_then(|d| d.attribute.clone())
+        .expect("attribute");
+    let lt = a.lod.clone().expect("lod");
+    let tri = a.trilinear.expect("trilinear");
+    q(12, f64::from(tri.lod_affine));
+    q(12, f64::from(tri.lod_perspective));
+    q(12, f64::from(lt.py));
+    for v in a.uv_affine {
+        q(12, f64::from(v));
+    }
+    let problems = problems.into_inner();
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
