@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::{Gpu, Output, mesh_at_f32};
 use crate::bench::{filter_name, mode_name};
+use crate::raster::sample::{SampleOverride, SampleSettings};
 use crate::raster::setup::TieRule;
 use crate::raster::{
     BuiltinTexture, ClipMesh, Filter, Interpolation, MeshVertex, NO_TRIANGLE, RenderSettings,
@@ -26,6 +27,8 @@ pub struct CheckOptions {
     pub filter: Option<Filter>,
     /// The image size `(width, height)` in pixels instead of the scene's.
     pub size: Option<(u32, u32)>,
+    /// Changes to the scene's samples and qualifiers.
+    pub samples: SampleOverride,
 }
 
 /// One scene drawn by both, compared.
@@ -69,6 +72,10 @@ pub struct SceneCheck {
     /// `[x, y]` of the first pixel (in row order) with `max_uv_difference`; `None` when it
     /// is 0.
     pub max_uv_at: Option<[u32; 2]>,
+    /// The multisampled draw, sample by sample, when the settings ask for more than one
+    /// sample or for `flat` (the pixel fields above then compare one sample at the centre).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub samples: Option<super::sample_check::SampleCheck>,
     /// What was changed to draw it on the GPU (shading, filter, wireframe); in JSON as
     /// English sentences.
     #[serde(serialize_with = "notes_json")]
@@ -110,6 +117,10 @@ impl SceneCheck {
     /// [`SceneCheck::triangle_mismatches`]).
     pub fn coverage_agrees(&self) -> bool {
         self.coverage_mismatches == 0
+            && self
+                .samples
+                .as_ref()
+                .is_none_or(|s| s.coverage_mismatches == 0)
     }
 }
 
@@ -132,6 +143,7 @@ pub fn check_scene(
     if let Some(f) = options.filter {
         settings.filter = f;
     }
+    settings.samples = options.samples.apply(&settings.samples);
     check_mesh(gpu, &shown, &scene.to_mesh(), &texture, settings)
         .map_err(|e| format!("{shown}: {e}"))
 }
@@ -164,6 +176,13 @@ pub fn check_mesh(
         settings.wireframe = false;
     }
     let mesh = mesh_at_f32(mesh);
+    let samples = if settings.samples.uses_sample_path() {
+        let check = super::sample_check::check_samples(gpu, &mesh, texture, &settings, output)?;
+        settings.samples = SampleSettings::default();
+        Some(check.0)
+    } else {
+        None
+    };
     gpu.load_mesh(&mesh, texture, &settings)?;
     let ours = crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
     let ids = gpu.render(Output::TriangleId, settings.filter, settings.mode)?;
@@ -197,6 +216,7 @@ pub fn check_mesh(
         color_differing: 0,
         max_uv_difference: 0.0,
         max_uv_at: None,
+        samples,
         notes,
     };
     let mut histogram = [0usize; 256];

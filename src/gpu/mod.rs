@@ -8,6 +8,8 @@
 pub mod check;
 mod compare;
 mod context;
+pub mod multisample;
+pub mod sample_check;
 mod scene;
 pub mod status;
 pub mod view;
