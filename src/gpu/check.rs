@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::{Gpu, Output, mesh_at_f32};
 use crate::bench::{filter_name, mode_name};
-use crate::raster::sample::{SampleOverride, SampleSettings};
+use crate::raster::sample::{SampleCount, SampleOverride, SamplePattern, SampleSettings};
 use crate::raster::setup::TieRule;
 use crate::raster::{
     BuiltinTexture, ClipMesh, Filter, Interpolation, MeshVertex, NO_TRIANGLE, RenderSettings,
@@ -91,6 +91,8 @@ pub enum Note {
     Trilinear,
     /// The wireframe overlay, left out.
     Wireframe,
+    /// A sample pattern the GL cannot place (the grid): the samples are not compared.
+    SamplePattern,
 }
 
 impl Note {
@@ -103,6 +105,7 @@ impl Note {
             ),
             Note::Trilinear => lang.tr("compare.gpu_check.note_trilinear"),
             Note::Wireframe => lang.tr("compare.gpu_check.note_wireframe"),
+            Note::SamplePattern => lang.tr("compare.gpu_check.note_sample_pattern"),
         }
     }
 }
@@ -176,13 +179,18 @@ pub fn check_mesh(
         settings.wireframe = false;
     }
     let mesh = mesh_at_f32(mesh);
-    let samples = if settings.samples.uses_sample_path() {
+    if settings.samples.pattern == SamplePattern::Grid && settings.samples.count != SampleCount::One
+    {
+        notes.push(Note::SamplePattern);
+    }
+    let samples = if settings.samples.uses_sample_path() && !notes.contains(&Note::SamplePattern) {
         let check = super::sample_check::check_samples(gpu, &mesh, texture, &settings, output)?;
-        settings.samples = SampleSettings::default();
         Some(check.0)
     } else {
         None
     };
+    // The pixel comparison: one sample at the centre.
+    settings.samples = SampleSettings::default();
     gpu.load_mesh(&mesh, texture, &settings)?;
     let ours = crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
     let ids = gpu.render(Output::TriangleId, settings.filter, settings.mode)?;
