@@ -11,6 +11,8 @@
 
 #![cfg(feature = "gpu")]
 
+mod common;
+
 use barylab::gpu as gl;
 use barylab::gpu::sample_check::{UvFormula, check_samples};
 use barylab::raster::render::{ClipMesh, MeshVertex, RenderSettings};
@@ -18,6 +20,7 @@ use barylab::raster::sample::{
     Location, ProvokingVertex, SampleCount, SamplePattern, SampleSettings, ShadingRate,
 };
 use barylab::raster::{Filter, Interpolation, Shading, Texture};
+use common::gl::llvmpipe;
 use glam::{DVec4, Vec2, Vec3};
 
 const W: u32 = 40;
@@ -30,27 +33,6 @@ const UV_TOLERANCE: f64 = 5e-5;
 /// Window depth at a sample: llvmpipe evaluates its f32 depth plane at the sample offset
 /// (measured at most 2.3e-6 on these scenes; barylab's is exact to f32 rounding).
 const DEPTH_TOLERANCE: f64 = 1e-5;
-
-/// One test at a time talks to Mesa.
-static MESA: std::sync::Mutex<()> = std::sync::Mutex::new(());
-
-fn llvmpipe() -> Option<(std::sync::MutexGuard<'static, ()>, gl::Gpu)> {
-    let guard = MESA
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
-    static ENV: std::sync::Once = std::sync::Once::new();
-    ENV.call_once(gl::force_llvmpipe_env);
-    match gl::Gpu::new() {
-        Ok(lp) => Some((guard, lp)),
-        Err(e) if std::env::var("CI").as_deref() == Ok("true") => {
-            panic!("llvmpipe is required on CI: {e}")
-        }
-        Err(e) => {
-            eprintln!("skipped: {e}");
-            None
-        }
-    }
-}
 
 /// A small xorshift generator: the same scenes on every run.
 struct Rng(u64);

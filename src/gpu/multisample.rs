@@ -44,19 +44,6 @@ pub struct GlSamples {
     pub positions: Vec<[f32; 2]>,
 }
 
-const VERTEX_SHADER: &str = "#version 400 core
-layout(location = 0) in vec4 clip_position;
-layout(location = 1) in vec2 uv;
-layout(location = 2) in vec3 color;
-QUALIFIER out vec2 v_uv;
-QUALIFIER out vec3 v_color;
-void main() {
-    v_uv = uv;
-    v_color = color;
-    gl_Position = clip_position;
-}
-";
-
 /// Colour to attachment 0, `(u, v, gl_PrimitiveID + 1, 0)` to attachment 1.
 const FRAGMENT_SHADER: &str = "#version 400 core
 QUALIFIER in vec2 v_uv;
@@ -182,7 +169,12 @@ impl Gpu {
         let q = qualifiers(mode, samples);
         let out = i32::from(output != Output::Texture);
         let scene = self.link(&[
-            (glow::VERTEX_SHADER, VERTEX_SHADER.replace("QUALIFIER", &q)),
+            (
+                glow::VERTEX_SHADER,
+                super::VERTEX_SHADER
+                    .replace("#version 330 core", "#version 400 core")
+                    .replace("QUALIFIER", &q),
+            ),
             (
                 glow::FRAGMENT_SHADER,
                 FRAGMENT_SHADER.replace("QUALIFIER", &q).replacen(
@@ -253,7 +245,7 @@ impl Gpu {
     }
 
     /// Compiles and links one program from its shaders.
-    fn link(&self, shaders: &[(u32, String)]) -> Result<glow::Program, String> {
+    pub(super) fn link(&self, shaders: &[(u32, String)]) -> Result<glow::Program, String> {
         let gl = &self.gl;
         // SAFETY: plain GL calls on the current context.
         unsafe {
