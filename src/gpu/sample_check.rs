@@ -79,8 +79,8 @@ pub struct SampleCheck {
     /// `[x, y, sample]` of the first sample with it.
     pub max_uv_formula_at: Option<[u32; 3]>,
     /// Covered samples whose GL value was evaluated somewhere else than barylab's location
-    /// rule says (found by [`gl_location`]; llvmpipe's `centroid` in some fully covered
-    /// pixels takes a sample's position instead of the centre).
+    /// rule says (found among the centre and the covered samples; llvmpipe's `centroid` in
+    /// some fully covered pixels takes a sample's position instead of the centre).
     pub location_differs: usize,
     /// The first of them, `[x, y, sample]`.
     pub location_differs_at: Vec<[u32; 3]>,
