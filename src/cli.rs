@@ -6,7 +6,8 @@ use std::process::ExitCode;
 use anyhow::Result;
 use barylab::probe::format::Format;
 use barylab::raster::sample::{
-    Location, ProvokingVertex, SampleCount, SamplePattern, SampleSettings, ShadingRate,
+    Location, ProvokingVertex, SampleCount, SampleOverride, SamplePattern, SampleSettings,
+    ShadingRate,
 };
 use barylab::raster::{self, Filter, Interpolation, Shading};
 use barylab::scene::Scene;
@@ -255,6 +256,8 @@ struct GpuCheckArgs {
     /// Use Mesa's software rasterizer (llvmpipe) instead of the GPU.
     #[arg(long)]
     software: bool,
+    #[command(flatten)]
+    sampling: SampleOptions,
     /// Print one JSON object instead of text.
     #[arg(long)]
     json: bool,
@@ -454,6 +457,8 @@ struct BenchArgs {
     /// level draws the same pixels.
     #[arg(long, value_enum)]
     vector: Option<VectorArg>,
+    #[command(flatten)]
+    sampling: SampleOptions,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -537,6 +542,13 @@ struct SceneOptions {
     /// Vulkan drivers) (default: the scene's, else llvmpipe).
     #[arg(long, value_name = "RULE")]
     tie_rule: Option<TieRuleArg>,
+    #[command(flatten)]
+    sampling: SampleOptions,
+}
+
+/// The samples and qualifiers: shared by render, probe, figure, compare, bench and gpu-check.
+#[derive(clap::Args, Debug, Default, Clone, Copy)]
+struct SampleOptions {
     /// Samples per pixel: 1, 4, 8 or 16 (default: the scene's, else 1).
     #[arg(long, value_parser = parse_samples, value_name = "N")]
     samples: Option<SampleCount>,
@@ -564,14 +576,26 @@ struct SceneOptions {
 impl SceneOptions {
     /// The scene's samples with these options applied.
     fn samples(&self, scene: &SampleSettings) -> SampleSettings {
-        SampleSettings {
-            count: self.samples.unwrap_or(scene.count),
-            pattern: self.sample_pattern.unwrap_or(scene.pattern),
-            rate: self.shading_rate.unwrap_or(scene.rate),
-            location: self.location.unwrap_or(scene.location),
-            flat: self.flat || scene.flat,
-            provoking: self.provoking_vertex.unwrap_or(scene.provoking),
+        self.sampling.apply(scene)
+    }
+}
+
+impl SampleOptions {
+    /// The options as changes to a scene's samples.
+    fn overrides(&self) -> SampleOverride {
+        SampleOverride {
+            count: self.samples,
+            pattern: self.sample_pattern,
+            rate: self.shading_rate,
+            location: self.location,
+            flat: self.flat,
+            provoking: self.provoking_vertex,
         }
+    }
+
+    /// `scene`'s samples with these options applied.
+    fn apply(&self, scene: &SampleSettings) -> SampleSettings {
+        self.overrides().apply(scene)
     }
 }
 

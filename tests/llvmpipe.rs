@@ -5,7 +5,10 @@
 //! Coverage and the owning triangle must match exactly; colours within the tolerances below,
 //! each with its reason. `cargo bench --bench llvmpipe -- --conformance` prints the full table.
 
+mod common;
+
 use barylab::gpu as gl;
+use common::gl::llvmpipe;
 
 use std::path::Path;
 
@@ -56,27 +59,6 @@ const LLVMPIPE_INV_W_ACCURACY: f64 = 2e-6;
 /// llvmpipe 3.8586, barylab 3.6882, exact 3.6882 by the 4x4 system). barylab's values are
 /// exact there too (tests/exact_values.rs); this bound only documents llvmpipe's error.
 const LLVMPIPE_CLIPPED_AFFINE_UV: f64 = 0.2;
-
-/// One test at a time talks to Mesa (the environment is set once, before EGL is loaded).
-static MESA: std::sync::Mutex<()> = std::sync::Mutex::new(());
-
-fn llvmpipe() -> Option<(std::sync::MutexGuard<'static, ()>, gl::Gpu)> {
-    let guard = MESA
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
-    static ENV: std::sync::Once = std::sync::Once::new();
-    ENV.call_once(gl::force_llvmpipe_env);
-    match gl::Gpu::new() {
-        Ok(lp) => Some((guard, lp)),
-        Err(e) if std::env::var("CI").as_deref() == Ok("true") => {
-            panic!("llvmpipe is required on CI: {e}")
-        }
-        Err(e) => {
-            eprintln!("skipped: {e}");
-            None
-        }
-    }
-}
 
 fn scene_path(name: &str) -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))

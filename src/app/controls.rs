@@ -221,6 +221,11 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
         ui,
         state.scene.settings().tie_rule,
     ));
+    section(ui, &lang.tr("app.samples.title"));
+    out.extend(super::samples_control::samples_ui(
+        ui,
+        state.scene.samples(),
+    ));
 
     section(ui, &lang.tr("app.controls.pixels"));
     out.extend(super::image_size::image_size_ui(ui, state));

@@ -47,6 +47,9 @@ pub enum Note {
     Trilinear,
     /// The wireframe overlay left out.
     Wireframe,
+    /// Several samples per pixel (or `flat`): both sides drawn with one sample at the centre
+    /// (`barylab gpu-check --samples` compares every sample).
+    Samples,
 }
 
 /// One comparison: both images at the canvas's size and how they differ.
@@ -290,6 +293,10 @@ fn gpu_settings(
         notes.push(Note::Wireframe);
         s.wireframe = false;
     }
+    if s.samples.uses_sample_path() {
+        notes.push(Note::Samples);
+        s.samples = Default::default();
+    }
     (s, output, notes)
 }
 
@@ -332,6 +339,7 @@ fn note_text(note: Note, lang: Lang) -> String {
         }
         Note::Trilinear => lang.tr("gpu_view.note_trilinear"),
         Note::Wireframe => lang.tr("gpu_view.note_wireframe"),
+        Note::Samples => lang.tr("gpu_view.note_samples"),
     }
 }
 

@@ -343,6 +343,7 @@ impl BaryApp {
             texture: self.canvas.view_texture(content)?,
             pixel: pin.pixel,
             triangle: pin.triangle(),
+            samples: pin.sample_marks.clone(),
             lang: self.lang(),
             text_size,
         })

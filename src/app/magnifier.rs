@@ -6,7 +6,7 @@
 use egui::{Color32, Rect, TextureId, Ui};
 
 use super::paint::{self, CanvasTransform};
-use crate::figure::overlay::{self, MAGNIFIER_RADIUS, TriangleMark};
+use crate::figure::overlay::{self, MAGNIFIER_RADIUS, SampleMark, TriangleMark};
 use crate::i18n::Lang;
 
 /// The magnifier's square takes this share of the smaller side of the canvas when it lies over
@@ -23,6 +23,8 @@ pub struct MagnifierInput {
     pub pixel: [u32; 2],
     /// The triangle its weights refer to.
     pub triangle: Option<TriangleMark>,
+    /// Every sample of the pixels shown, when there are several per pixel.
+    pub samples: Vec<SampleMark>,
     /// The language of the title.
     pub lang: Lang,
     /// The title's text size in points.
@@ -75,7 +77,13 @@ fn paint_square(painter: &egui::Painter, rect: Rect, k: f32, input: &MagnifierIn
         Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
         Color32::WHITE,
     );
-    let shapes = overlay::magnifier(input.pixel, input.triangle.as_ref(), size, MAGNIFIER_RADIUS);
+    let shapes = overlay::magnifier(
+        input.pixel,
+        input.triangle.as_ref(),
+        size,
+        MAGNIFIER_RADIUS,
+        &input.samples,
+    );
     paint::paint(&painter, rect, rect, t, &shapes, &[]);
     painter.rect_stroke(
         rect,

@@ -63,6 +63,7 @@ pub(crate) mod present;
 pub mod presets;
 pub(crate) mod render;
 pub(crate) mod reports;
+pub(crate) mod samples_control;
 pub(crate) mod screenshot;
 pub(crate) mod shortcuts;
 pub(crate) mod side_panels;

@@ -3,7 +3,7 @@
 //! marks. Nothing here re-does the math.
 
 use super::render::CanvasOutput;
-use crate::figure::overlay::{PixelMark, TriangleMark};
+use crate::figure::overlay::{MAGNIFIER_RADIUS, PixelMark, SampleMark, TriangleMark};
 use crate::i18n::Lang;
 use crate::probe::format::{self, Document};
 use crate::probe::{PixelTrace, ProbeError, Prober};
@@ -21,6 +21,9 @@ pub struct PixelReport {
     pub lang: Lang,
     /// Which render it belongs to ([`CanvasOutput::generation`]).
     pub generation: u64,
+    /// Every sample of the pixels the magnifier shows around this one, when the render has
+    /// several per pixel (filled by [`PixelReport::magnify`]; empty otherwise).
+    pub sample_marks: Vec<SampleMark>,
 }
 
 impl PartialEq for PixelReport {
@@ -76,7 +79,30 @@ impl PixelReport {
             document,
             lang,
             generation: output.generation,
+            sample_marks: Vec::new(),
         })
+    }
+
+    /// Fills [`PixelReport::sample_marks`]: the samples of every pixel within the magnifier's
+    /// radius, from `prober` (the renderer's own per-pixel kernel); nothing for a
+    /// single-sample render.
+    pub fn magnify(&mut self, prober: &Prober<'_>) {
+        let settings = prober.settings();
+        let [px, py] = self.pixel;
+        let r = MAGNIFIER_RADIUS;
+        let mut marks = Vec::new();
+        for y in py.saturating_sub(r)..=(py + r).min(settings.height.saturating_sub(1)) {
+            for x in px.saturating_sub(r)..=(px + r).min(settings.width.saturating_sub(1)) {
+                let Some(samples) = prober.pixel_samples(x, y) else {
+                    return;
+                };
+                marks.extend(samples.iter().map(|s| SampleMark {
+                    position: glam::DVec2::from_array(s.position),
+                    triangle: s.triangle,
+                }));
+            }
+        }
+        self.sample_marks = marks;
     }
 
     /// Whether this report is for this pixel of this render in this mode, in this language.

@@ -52,43 +52,50 @@ impl PixelReports {
         let mut error = None;
         let prober = &mut self.prober;
         let built = &mut self.probers_built;
-        let mut update = |slot: &mut Option<PixelReport>, pixel: Option<[u32; 2]>| {
-            let Some(p) = pixel else {
-                *slot = None;
-                return;
-            };
-            if slot.as_ref().is_some_and(|r| r.is_for(out, mode, p, lang)) {
-                return;
-            }
-            // One prober per render and mode: it clips and sets up every triangle once.
-            let tag = (out.generation, mode);
-            if prober.as_ref().is_none_or(|(t, _)| *t != tag) {
-                let settings = PixelReport::settings(out, mode);
-                *prober = match Prober::shared(&out.scene, texture.clone(), &settings) {
-                    Ok(pr) => {
-                        *built += 1;
-                        Some((tag, pr))
+        let mut update =
+            |slot: &mut Option<PixelReport>, pixel: Option<[u32; 2]>, magnify: bool| {
+                let Some(p) = pixel else {
+                    *slot = None;
+                    return;
+                };
+                if slot.as_ref().is_some_and(|r| r.is_for(out, mode, p, lang)) {
+                    return;
+                }
+                // One prober per render and mode: it clips and sets up every triangle once.
+                let tag = (out.generation, mode);
+                if prober.as_ref().is_none_or(|(t, _)| *t != tag) {
+                    let settings = PixelReport::settings(out, mode);
+                    *prober = match Prober::shared(&out.scene, texture.clone(), &settings) {
+                        Ok(pr) => {
+                            *built += 1;
+                            Some((tag, pr))
+                        }
+                        Err(e) => {
+                            error = Some(e.to_string());
+                            *slot = None;
+                            return;
+                        }
+                    };
+                }
+                let Some((_, pr)) = prober.as_ref() else {
+                    return;
+                };
+                *slot = match PixelReport::with_prober(out, pr, p, lang) {
+                    Ok(mut r) => {
+                        if magnify {
+                            r.magnify(pr);
+                        }
+                        Some(r)
                     }
                     Err(e) => {
                         error = Some(e.to_string());
-                        *slot = None;
-                        return;
+                        None
                     }
                 };
-            }
-            let Some((_, pr)) = prober.as_ref() else {
-                return;
             };
-            *slot = match PixelReport::with_prober(out, pr, p, lang) {
-                Ok(r) => Some(r),
-                Err(e) => {
-                    error = Some(e.to_string());
-                    None
-                }
-            };
-        };
-        update(&mut self.hover, hover);
-        update(&mut self.pin, pinned);
+        update(&mut self.hover, hover, false);
+        // The pinned pixel's magnifier shows every sample around it.
+        update(&mut self.pin, pinned, true);
         error
     }
 }

@@ -167,6 +167,8 @@ pub enum Command {
     SetGpuView(bool),
     /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
     SetTieRule(crate::raster::setup::TieRule),
+    /// Samples per pixel, their pattern, the shading rate and the location (saved in the scene).
+    SetSamples(crate::raster::sample::SampleSettings),
     /// Put the wipe line at this fraction of the width (clamped to 0..1).
     SetWipe(f32),
     /// Screen pixels per rendered pixel when following the window (clamped; unpins if it changes).
@@ -334,6 +336,7 @@ impl AppState {
             }
             Command::SetGpuView(on) => self.view.gpu = on,
             Command::SetTieRule(rule) => self.scene.set_tie_rule(rule),
+            Command::SetSamples(samples) => self.scene.set_samples(samples),
             Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),
             Command::SetPixelSize(p) => {
                 let p = p.clamp(PIXEL_SIZE_RANGE.0, PIXEL_SIZE_RANGE.1);

@@ -109,7 +109,8 @@ pub(super) fn bench(args: &BenchArgs) -> Result<()> {
     }
     let texture = scene.load_texture(&base_dir)?;
     let mesh = scene.to_mesh();
-    let base = scene.settings();
+    let mut base = scene.settings();
+    base.samples = args.sampling.apply(&base.samples);
     if let Some(v) = args.vector {
         barylab::raster::lanes::set_vector_level(v.into());
     }

@@ -3,6 +3,7 @@
 use anyhow::Result;
 use barylab::compare::reason::mode_short;
 use barylab::compare::verdict::rule_words;
+use barylab::gpu::sample_check::{SampleCheck, UvFormula};
 use barylab::gpu::{self, Gpu, check};
 use barylab::i18n::Lang;
 use barylab::raster::Interpolation;
@@ -37,6 +38,7 @@ pub(super) fn run(args: &GpuCheckArgs) -> Result<()> {
         mode: args.mode.map(Into::into),
         filter: args.filter.map(Into::into),
         size: args.size,
+        samples: args.sampling.overrides(),
     };
     let ties = check::tie_rule(&mut gl).map_err(|e| anyhow::anyhow!("gpu-check: {e}"))?;
     let mut scenes = Vec::new();
@@ -74,6 +76,70 @@ pub(super) fn run(args: &GpuCheckArgs) -> Result<()> {
         ],
     ))
     .into())
+}
+
+/// The samples section of a scene's report.
+fn sample_lines(c: &SampleCheck, lang: Lang) -> Vec<String> {
+    let list = |l: &[[u32; 3]], total: usize| {
+        if total == 0 {
+            return String::new();
+        }
+        let shown: Vec<String> = l
+            .iter()
+            .map(|[x, y, k]| format!("({x}, {y}) #{k}"))
+            .collect();
+        let more = if total > l.len() { ", ..." } else { "" };
+        lang.tr_with(
+            "compare.gpu_check.at",
+            &[("list", &format!("{}{more}", shown.join(", ")))],
+        )
+    };
+    let at = |p: Option<[u32; 3]>| p.map(|a| list(&[a], 1)).unwrap_or_default();
+    let mut lines = vec![lang.tr_with(
+        "compare.gpu_check.samples",
+        &[
+            ("n", &c.per_pixel),
+            ("covered", &c.covered),
+            ("total", &c.samples),
+            ("coverage", &c.coverage_mismatches),
+            ("cat", &list(&c.coverage_mismatch_at, c.coverage_mismatches)),
+            ("triangles", &c.triangle_mismatches),
+            ("tat", &list(&c.triangle_mismatch_at, c.triangle_mismatches)),
+        ],
+    )];
+    let max = format!("{:.1e}", c.max_uv_difference);
+    lines.push(match c.uv_formula {
+        Some(UvFormula::SampleOverCentre) => lang.tr_with(
+            "compare.gpu_check.samples_uv_formula",
+            &[
+                ("raw", &format!("{:.2}", c.max_uv_formula_difference)),
+                ("max", &max),
+                ("at", &at(c.max_uv_at)),
+            ],
+        ),
+        _ => lang.tr_with(
+            "compare.gpu_check.samples_uv_exact",
+            &[("max", &max), ("at", &at(c.max_uv_at))],
+        ),
+    });
+    if c.location_differs > 0 {
+        lines.push(lang.tr_with(
+            "compare.gpu_check.samples_location",
+            &[
+                ("n", &c.location_differs),
+                ("at", &list(&c.location_differs_at, c.location_differs)),
+            ],
+        ));
+    }
+    lines.push(lang.tr_with(
+        "compare.gpu_check.samples_resolve",
+        &[
+            ("depth", &format!("{:.1e}", c.max_depth_difference)),
+            ("n", &c.resolve_differing),
+            ("max", &c.max_resolve_difference),
+        ],
+    ));
+    lines
 }
 
 fn pixels(list: &[[u32; 2]], total: usize) -> String {
@@ -182,6 +248,9 @@ fn text(r: &Report, lang: Lang) -> String {
                 ("at", &at(s.max_uv_at)),
             ],
         ));
+        if let Some(c) = &s.samples {
+            lines.extend(sample_lines(c, lang));
+        }
         for l in lines {
             out.push_str(&l);
             out.push('\n');

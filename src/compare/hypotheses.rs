@@ -9,7 +9,7 @@ use super::sampling::Sampled;
 use super::verdict::{Kind, Verdict};
 use super::{CoverageBy, Image, Reference, Rendered, classify, uv_gap_texels};
 use crate::i18n::Lang;
-use crate::raster::sample::SampleCount;
+use crate::raster::sample::{SampleCount, SamplePattern, SampleSettings, ShadingRate};
 use crate::raster::setup::TieRule;
 use crate::raster::{Framebuffer, Interpolation, Texture};
 
@@ -158,6 +158,35 @@ pub fn try_all(
         };
         let single = super::render_for_comparison(reference.mesh, reference.texture, &one)
             .map(|r| Rendered::of(&r.frame))?;
+        // Supersampling for MSAA and back; the other pattern where both have positions.
+        let rate = match s.samples.rate {
+            ShadingRate::Msaa => ShadingRate::Ssaa,
+            ShadingRate::Ssaa => ShadingRate::Msaa,
+        };
+        let pattern = match s.samples.pattern {
+            SamplePattern::Standard => SamplePattern::Grid,
+            SamplePattern::Grid => SamplePattern::Standard,
+        };
+        for (kind, samples) in [
+            (Kind::OtherShadingRate, SampleSettings { rate, ..s.samples }),
+            (
+                Kind::OtherSamplePattern,
+                SampleSettings {
+                    pattern,
+                    ..s.samples
+                },
+            ),
+        ] {
+            if samples.check().is_err() {
+                continue;
+            }
+            let other = crate::raster::RenderSettings { samples, ..*s };
+            add(
+                kind,
+                super::render_for_comparison(reference.mesh, reference.texture, &other)
+                    .map(|r| Rendered::of(&r.frame))?,
+            );
+        }
         let sampled = Sampled {
             ours: &ours,
             single: &single,

@@ -36,6 +36,12 @@ pub enum Kind {
     NoAntiAliasing,
     /// Against a multisampled reference: every difference sits on a triangle edge.
     EdgesOnly,
+    /// Against a multisampled reference: the image is barylab's render at the other shading
+    /// rate (supersampling for an MSAA reference, MSAA for a supersampled one).
+    OtherShadingRate,
+    /// Against a multisampled reference: the image is barylab's render with the other
+    /// sample pattern (the grid for a standard-pattern reference, and back).
+    OtherSamplePattern,
 }
 
 /// A whole-image explanation as a verdict: which one, what it leaves differing, and what it
@@ -71,6 +77,8 @@ impl Verdict {
             Kind::BlackEdges => lang.tr("compare.describe.black_edges"),
             Kind::NoAntiAliasing => lang.tr("compare.describe.no_anti_aliasing"),
             Kind::EdgesOnly => lang.tr("compare.describe.edges_only"),
+            Kind::OtherShadingRate => lang.tr("compare.describe.other_shading_rate"),
+            Kind::OtherSamplePattern => lang.tr("compare.describe.other_sample_pattern"),
         }
     }
 
@@ -91,6 +99,8 @@ impl Verdict {
             Kind::BlackEdges => lang.tr("compare.looks.black_edges"),
             Kind::NoAntiAliasing => lang.tr("compare.looks.no_anti_aliasing"),
             Kind::EdgesOnly => lang.tr("compare.looks.edges_only"),
+            Kind::OtherShadingRate => lang.tr("compare.looks.other_shading_rate"),
+            Kind::OtherSamplePattern => lang.tr("compare.looks.other_sample_pattern"),
         }
     }
 
@@ -118,6 +128,8 @@ impl Verdict {
             Kind::BlackEdges => "compare.short.black_edges",
             Kind::NoAntiAliasing => "compare.short.no_anti_aliasing",
             Kind::EdgesOnly => "compare.short.edges_only",
+            Kind::OtherShadingRate => "compare.short.other_shading_rate",
+            Kind::OtherSamplePattern => "compare.short.other_sample_pattern",
         })
     }
 }

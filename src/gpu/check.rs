@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::{Gpu, Output, mesh_at_f32};
 use crate::bench::{filter_name, mode_name};
+use crate::raster::sample::{SampleCount, SampleOverride, SamplePattern, SampleSettings};
 use crate::raster::setup::TieRule;
 use crate::raster::{
     BuiltinTexture, ClipMesh, Filter, Interpolation, MeshVertex, NO_TRIANGLE, RenderSettings,
@@ -26,6 +27,8 @@ pub struct CheckOptions {
     pub filter: Option<Filter>,
     /// The image size `(width, height)` in pixels instead of the scene's.
     pub size: Option<(u32, u32)>,
+    /// Changes to the scene's samples and qualifiers.
+    pub samples: SampleOverride,
 }
 
 /// One scene drawn by both, compared.
@@ -69,6 +72,10 @@ pub struct SceneCheck {
     /// `[x, y]` of the first pixel (in row order) with `max_uv_difference`; `None` when it
     /// is 0.
     pub max_uv_at: Option<[u32; 2]>,
+    /// The multisampled draw, sample by sample, when the settings ask for more than one
+    /// sample or for `flat` (the pixel fields above then compare one sample at the centre).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub samples: Option<super::sample_check::SampleCheck>,
     /// What was changed to draw it on the GPU (shading, filter, wireframe); in JSON as
     /// English sentences.
     #[serde(serialize_with = "notes_json")]
@@ -84,6 +91,8 @@ pub enum Note {
     Trilinear,
     /// The wireframe overlay, left out.
     Wireframe,
+    /// A sample pattern the GL cannot place (the grid): the samples are not compared.
+    SamplePattern,
 }
 
 impl Note {
@@ -96,6 +105,7 @@ impl Note {
             ),
             Note::Trilinear => lang.tr("compare.gpu_check.note_trilinear"),
             Note::Wireframe => lang.tr("compare.gpu_check.note_wireframe"),
+            Note::SamplePattern => lang.tr("compare.gpu_check.note_sample_pattern"),
         }
     }
 }
@@ -110,6 +120,10 @@ impl SceneCheck {
     /// [`SceneCheck::triangle_mismatches`]).
     pub fn coverage_agrees(&self) -> bool {
         self.coverage_mismatches == 0
+            && self
+                .samples
+                .as_ref()
+                .is_none_or(|s| s.coverage_mismatches == 0)
     }
 }
 
@@ -132,6 +146,7 @@ pub fn check_scene(
     if let Some(f) = options.filter {
         settings.filter = f;
     }
+    settings.samples = options.samples.apply(&settings.samples);
     check_mesh(gpu, &shown, &scene.to_mesh(), &texture, settings)
         .map_err(|e| format!("{shown}: {e}"))
 }
@@ -164,6 +179,18 @@ pub fn check_mesh(
         settings.wireframe = false;
     }
     let mesh = mesh_at_f32(mesh);
+    if settings.samples.pattern == SamplePattern::Grid && settings.samples.count != SampleCount::One
+    {
+        notes.push(Note::SamplePattern);
+    }
+    let samples = if settings.samples.uses_sample_path() && !notes.contains(&Note::SamplePattern) {
+        let check = super::sample_check::check_samples(gpu, &mesh, texture, &settings, output)?;
+        Some(check.0)
+    } else {
+        None
+    };
+    // The pixel comparison: one sample at the centre.
+    settings.samples = SampleSettings::default();
     gpu.load_mesh(&mesh, texture, &settings)?;
     let ours = crate::raster::render(&mesh, texture, &settings).map_err(|e| e.to_string())?;
     let ids = gpu.render(Output::TriangleId, settings.filter, settings.mode)?;
@@ -197,6 +224,7 @@ pub fn check_mesh(
         color_differing: 0,
         max_uv_difference: 0.0,
         max_uv_at: None,
+        samples,
         notes,
     };
     let mut histogram = [0usize; 256];

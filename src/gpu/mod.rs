@@ -8,6 +8,8 @@
 pub mod check;
 mod compare;
 mod context;
+pub mod multisample;
+pub mod sample_check;
 mod scene;
 pub mod status;
 pub mod view;
@@ -135,35 +137,10 @@ impl Gpu {
             &format!("\n#define OUTPUT {out}\n"),
             1,
         );
-        let gl = &self.gl;
-        // SAFETY: plain GL calls on the current context with valid objects.
-        unsafe {
-            let program = gl.create_program()?;
-            for (kind, src) in [
-                (glow::VERTEX_SHADER, &vs_src),
-                (glow::FRAGMENT_SHADER, &fs_src),
-            ] {
-                let shader = gl.create_shader(kind)?;
-                gl.shader_source(shader, src);
-                gl.compile_shader(shader);
-                if !gl.get_shader_compile_status(shader) {
-                    return Err(format!(
-                        "shader compile error: {}",
-                        gl.get_shader_info_log(shader)
-                    ));
-                }
-                gl.attach_shader(program, shader);
-                gl.delete_shader(shader);
-            }
-            gl.link_program(program);
-            if !gl.get_program_link_status(program) {
-                return Err(format!(
-                    "program link error: {}",
-                    gl.get_program_info_log(program)
-                ));
-            }
-            Ok(program)
-        }
+        self.link(&[
+            (glow::VERTEX_SHADER, vs_src),
+            (glow::FRAGMENT_SHADER, fs_src),
+        ])
     }
 
     /// Uploads `mesh` (its clip coordinates rounded to f32) with `texture`, at the settings'

@@ -62,6 +62,12 @@ pub struct SampleShading {
 }
 
 impl Prober<'_> {
+    /// The samples of pixel (x, y) after every triangle was drawn, or `None` when the render
+    /// has one sample at the centre and no `flat` attributes.
+    pub fn pixel_samples(&self, x: u32, y: u32) -> Option<Vec<SampleTrace>> {
+        self.samples(x, y).map(|(samples, _)| samples)
+    }
+
     /// The samples of pixel (x, y), or `None` when the render has one sample at the centre
     /// and no `flat` attributes (the single-sample trace says everything then).
     pub(super) fn samples(&self, x: u32, y: u32) -> Option<(Vec<SampleTrace>, SampleShading)> {

@@ -186,6 +186,38 @@ impl SampleSettings {
     }
 }
 
+/// Changes to a scene's [`SampleSettings`] asked for on a command line: each field that is
+/// set replaces the scene's (`flat` turns flat on; it never turns it off).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SampleOverride {
+    /// Samples per pixel.
+    pub count: Option<SampleCount>,
+    /// Where they lie.
+    pub pattern: Option<SamplePattern>,
+    /// MSAA or supersampling.
+    pub rate: Option<ShadingRate>,
+    /// Where MSAA evaluates the values.
+    pub location: Option<Location>,
+    /// Every attribute `flat`.
+    pub flat: bool,
+    /// Which vertex provokes.
+    pub provoking: Option<ProvokingVertex>,
+}
+
+impl SampleOverride {
+    /// `scene`'s samples with these changes applied.
+    pub fn apply(&self, scene: &SampleSettings) -> SampleSettings {
+        SampleSettings {
+            count: self.count.unwrap_or(scene.count),
+            pattern: self.pattern.unwrap_or(scene.pattern),
+            rate: self.rate.unwrap_or(scene.rate),
+            location: self.location.unwrap_or(scene.location),
+            flat: self.flat || scene.flat,
+            provoking: self.provoking.unwrap_or(scene.provoking),
+        }
+    }
+}
+
 /// The GL's standard positions in sixteenths of a pixel from the bottom-left corner, y up,
 /// for 4, 8 and 16 samples, in the GL's sample order.
 const STANDARD_4: [[i64; 2]; 4] = [[6, 2], [14, 6], [2, 10], [10, 14]];

@@ -2,6 +2,8 @@
 #![allow(dead_code)]
 
 pub mod app;
+#[cfg(feature = "gpu")]
+pub mod gl;
 pub mod xvfb;
 
 use barylab::raster::render::{ClipMesh, MeshVertex, Render, RenderSettings, render};

@@ -2,12 +2,14 @@
 //! Plain shapes in canvas coordinates, drawn over the image enlarged so that
 //! `2 * radius + 1` pixels fill the magnifier: the pixel grid, every pixel's sample point
 //! (its centre, where the rasterizer tests coverage and interpolates), the marked pixel's
-//! outline and sample, and the edges of the triangle its weights refer to.
+//! outline and sample, and the edges of the triangle its weights refer to. With several
+//! samples per pixel, every sample point of every pixel shown ([`SampleMark`]): filled in its
+//! triangle's colour when covered, hollow when not.
 
 use glam::DVec2;
 
 use super::shape::{Overlay, Shape, Stroke};
-use super::style::{PIN, SAMPLE_DOT, SHADOW};
+use super::style::{PIN, Rgba, SAMPLE_DOT, SHADOW};
 use super::{TriangleMark, centre_of};
 
 /// Pixels shown on each side of the marked one: 7 x 7 pixels in all, enough to see the
@@ -19,6 +21,42 @@ const GRID_LINES: [Stroke; 2] = [
     Stroke::new(2.0, [0, 0, 0, 150]),
     Stroke::new(1.0, [255, 255, 255, 70]),
 ];
+
+/// One sample of a pixel in the magnifier: where it lies and which triangle kept it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SampleMark {
+    /// Window position in pixels (y down, pixel corners at integers).
+    pub position: DVec2,
+    /// The source triangle whose fragment the sample kept; `None` when none covers it.
+    pub triangle: Option<u32>,
+}
+
+/// Colours of the sample marks by triangle (source triangle index modulo the list): light,
+/// saturated and apart from each other, each drawn with a dark outline.
+const TRIANGLE_COLORS: [Rgba; 8] = [
+    [255, 200, 40, 255],
+    [80, 200, 255, 255],
+    [120, 230, 100, 255],
+    [255, 110, 200, 255],
+    [190, 150, 255, 255],
+    [255, 140, 70, 255],
+    [60, 230, 200, 255],
+    [240, 240, 120, 255],
+];
+
+/// The colour of triangle `t`'s sample marks.
+///
+/// ```
+/// use barylab::figure::overlay::sample_color;
+/// assert_eq!(sample_color(0), sample_color(8));
+/// assert_ne!(sample_color(0), sample_color(1));
+/// ```
+pub fn sample_color(t: u32) -> Rgba {
+    TRIANGLE_COLORS[t as usize % TRIANGLE_COLORS.len()]
+}
+
+/// Radius in points of a sample mark.
+pub const SAMPLE_MARK_RADIUS: f32 = 5.0;
 
 /// The canvas rectangle the magnifier around `pixel` shows: `2 * radius + 1` pixels on a side
 /// centred on it (it may reach past the image's edges; nothing is drawn there).
@@ -38,12 +76,15 @@ pub fn magnified_rect(pixel: [u32; 2], radius: u32) -> (DVec2, DVec2) {
 /// The magnifier's shapes around `pixel` of a `size[0] x size[1]` image: the grid lines and
 /// sample points of the pixels within `radius` that lie in the image, the triangle's edges
 /// (unsnapped window positions, as the overlay draws them), and the marked pixel's outline
-/// and sample point in the pin's colour, drawn last.
+/// and sample point in the pin's colour; then `samples` (every sample of the pixels shown,
+/// when there are several per pixel): filled in their triangle's [`sample_color`] when
+/// covered, hollow when not, drawn last so that none is hidden.
 pub fn magnifier(
     pixel: [u32; 2],
     triangle: Option<&TriangleMark>,
     size: [u32; 2],
     radius: u32,
+    samples: &[SampleMark],
 ) -> Overlay {
     let mut shapes = Vec::new();
     let (lo, hi) = magnified_rect(pixel, radius);
@@ -112,10 +153,27 @@ pub fn magnifier(
     }
     shapes.push(Shape::Circle {
         centre: centre_of(pixel),
-        radius: 6.0,
+        radius: if samples.is_empty() { 6.0 } else { 3.5 },
         fill: PIN,
         stroke: Some(Stroke::new(2.0, SHADOW)),
     });
+    let inside = |p: DVec2| p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
+    for s in samples.iter().filter(|s| inside(s.position)) {
+        shapes.push(match s.triangle {
+            Some(t) => Shape::Circle {
+                centre: s.position,
+                radius: SAMPLE_MARK_RADIUS,
+                fill: sample_color(t),
+                stroke: Some(Stroke::new(1.5, SHADOW)),
+            },
+            None => Shape::Circle {
+                centre: s.position,
+                radius: SAMPLE_MARK_RADIUS,
+                fill: [0, 0, 0, 0],
+                stroke: Some(Stroke::new(2.0, [235, 235, 235, 230])),
+            },
+        });
+    }
     Overlay { shapes }
 }
 
@@ -135,7 +193,7 @@ mod tests {
 
     #[test]
     fn every_pixel_in_the_square_has_its_sample_point_and_the_marked_one_is_last() {
-        let o = magnifier([5, 5], None, [20, 20], 3);
+        let o = magnifier([5, 5], None, [20, 20], 3, &[]);
         let c = circles(&o);
         // 49 sample points and the marked pixel's own.
         assert_eq!(c.len(), 50);
@@ -146,7 +204,7 @@ mod tests {
 
     #[test]
     fn at_the_image_corner_only_pixels_of_the_image_are_drawn() {
-        let o = magnifier([0, 0], None, [20, 20], 3);
+        let o = magnifier([0, 0], None, [20, 20], 3, &[]);
         let c = circles(&o);
         // 4 x 4 pixels of the 7 x 7 square lie in the image, and the marked one again.
         assert_eq!(c.len(), 17);
@@ -174,7 +232,7 @@ mod tests {
             mesh_indices: [Some(0), Some(1), Some(2)],
             weights: [0.2, 0.3, 0.5],
         };
-        let o = magnifier([4, 4], Some(&t), [10, 10], 3);
+        let o = magnifier([4, 4], Some(&t), [10, 10], 3, &[]);
         let edges: Vec<&Vec<DVec2>> = o
             .shapes
             .iter()
@@ -186,5 +244,47 @@ mod tests {
         assert_eq!(edges.len(), 2);
         assert_eq!(edges[0].first(), edges[0].last());
         assert_eq!(edges[0][1], DVec2::new(9.0, 2.0));
+    }
+
+    #[test]
+    fn every_sample_is_drawn_filled_by_its_triangle_or_hollow() {
+        // Pixel (5, 5) with four samples: two covered by triangle 2, two by none; one more
+        // sample outside the square (pixel 12) is not drawn.
+        let at = |x: f64, y: f64, t: Option<u32>| SampleMark {
+            position: DVec2::new(x, y),
+            triangle: t,
+        };
+        let samples = [
+            at(5.375, 5.875, Some(2)),
+            at(5.875, 5.625, Some(2)),
+            at(5.125, 5.375, None),
+            at(5.625, 5.125, None),
+            at(12.5, 5.5, Some(1)),
+        ];
+        let o = magnifier([5, 5], None, [20, 20], 3, &samples);
+        let marks: Vec<(DVec2, Rgba, bool)> = o
+            .shapes
+            .iter()
+            .filter_map(|s| match s {
+                Shape::Circle {
+                    centre,
+                    radius,
+                    fill,
+                    stroke,
+                } if *radius == SAMPLE_MARK_RADIUS => Some((*centre, *fill, stroke.is_some())),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(marks.len(), 4, "{marks:?}");
+        assert_eq!(marks[0], (DVec2::new(5.375, 5.875), sample_color(2), true));
+        assert_eq!(marks[1].1, sample_color(2));
+        // Hollow: no fill, an outline.
+        assert_eq!(marks[2], (DVec2::new(5.125, 5.375), [0, 0, 0, 0], true));
+        assert_eq!(marks[3].1, [0, 0, 0, 0]);
+        // Drawn after everything else.
+        let last = o.shapes.len() - 4;
+        assert!(
+            matches!(o.shapes[last], Shape::Circle { radius, .. } if radius == SAMPLE_MARK_RADIUS)
+        );
     }
 }

@@ -20,7 +20,9 @@ mod shape;
 mod style;
 
 pub use inputs::{ClipMark, HandleMark, OverlayInput, PixelMark, TriangleMark};
-pub use magnifier::{MAGNIFIER_RADIUS, magnified_rect, magnifier};
+pub use magnifier::{
+    MAGNIFIER_RADIUS, SAMPLE_MARK_RADIUS, SampleMark, magnified_rect, magnifier, sample_color,
+};
 pub use marks::{
     SCIENTIFIC_W, behind_camera_note, format_w, is_triangle_outline, span_shapes, span_step_shapes,
 };
