@@ -20,6 +20,7 @@ mod compare;
 #[cfg(feature = "gpu")]
 mod gpu_check;
 mod lesson;
+mod space;
 mod values;
 mod work;
 
@@ -350,6 +351,15 @@ struct FigureArgs {
     /// perspective-correct, as its derivation gives them.
     #[arg(long)]
     caption: bool,
+    /// What the figure shows: the canvas (default), or `space`: the scene in 3D (eye,
+    /// frustum, image plane, triangles) with the ray of the --pixel (else --hover) pixel
+    /// meeting its triangle at P beside the affine guess Q, from the --yaw/--pitch/--zoom
+    /// orbit; `depth`: window depth against view depth for the scene's near and far planes;
+    /// `tetra`: the volume weights of a point inside a tetrahedron scene.
+    #[arg(long, default_value = "canvas")]
+    view: space::ViewArg,
+    #[command(flatten)]
+    orbit: space::OrbitArgs,
     /// Output file: .png or .svg.
     #[arg(short, long)]
     output: PathBuf,

@@ -295,6 +295,9 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         );
         lang = barylab::i18n::Lang::En;
     }
+    if args.view != super::space::ViewArg::Canvas {
+        return super::space::figure(args, &scene, &texture, &settings, lang, svg_out);
+    }
     let fig = Figure::compose_in(&scene, &texture, &options, lang)
         .with_context(|| barylab::files::shown(&args.input.scene))?;
     let bytes = if svg_out {

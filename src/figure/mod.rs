@@ -12,6 +12,8 @@
 //! - [`svg`], [`png`]: the figure as an SVG document, and that document rasterized by resvg.
 //! - [`plot`]: a line plot (the handout's row plot) as SVG and PNG, without egui.
 //! - [`caption`]: the optional caption with the marked pixel's key numbers.
+//! - [`space`]: the space view, the scene in 3D with the pixel's ray (`barylab figure --view
+//!   space`).
 //! - [`heatmap`]: the difference view's colours.
 //! - [`export`]: writing a figure's files (PNG, SVG, derivation, scene) under fresh names.
 //!
@@ -33,6 +35,7 @@ mod options;
 pub mod overlay;
 pub mod plot;
 pub mod png;
+pub mod space;
 pub mod svg;
 pub mod text;
 
