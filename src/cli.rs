@@ -94,6 +94,10 @@ struct Cli {
     /// gpu-wipe, gpu-difference.
     #[arg(long, value_parser = parse_compare, value_name = "VIEW")]
     compare: Option<(barylab::figure::Compare, bool)>,
+    /// Start with the 3D view beside the canvas: the eye, the frustum, the triangles and the
+    /// pinned or hovered pixel's ray.
+    #[arg(long)]
+    space_view: bool,
     /// Start comparing this image (a student's rasterizer output, a screenshot) with barylab's
     /// render of the scene, as File > Compare with image… does.
     #[arg(long, value_name = "IMAGE")]
@@ -720,6 +724,7 @@ fn app(cli: &Cli) -> Result<()> {
         lesson,
         startup_error: (!startup_errors.is_empty()).then(|| startup_errors.join("; ")),
         compare: cli.compare,
+        space_view: cli.space_view,
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,
     };

@@ -89,7 +89,8 @@ pub const P_COLOUR: Colour = Colour([200, 0, 200, 255]);
 pub const Q_COLOUR: Colour = Colour([0, 140, 150, 255]);
 /// The ray.
 pub const RAY_COLOUR: Colour = Colour([215, 40, 30, 255]);
-const INK: Colour = Colour([30, 30, 30, 255]);
+/// Text and outlines.
+pub const INK: Colour = Colour([30, 30, 30, 255]);
 const FRUSTUM: Colour = Colour([90, 90, 110, 255]);
 const NEAR_FILL: Colour = Colour([70, 130, 230, 60]);
 const FAR_FILL: Colour = Colour([120, 120, 120, 30]);
@@ -407,15 +408,15 @@ pub fn shapes(space: &SpaceScene, projector: &Projector, lang: Lang, text: f32) 
     }
 
     back.sort_by(|a, b| b.depth.total_cmp(&a.depth));
-    spread_labels(&mut front);
+    spread_labels(&mut front, projector.rect());
     back.extend(front);
     back
 }
 
 /// Moves labels that would overlap an earlier one: below it, above it, then to the other
 /// side of its anchor point, keeping the first position that overlaps nothing placed (else
-/// the original one).
-fn spread_labels(shapes: &mut [Shape]) {
+/// the original one); then moves each inside `rect`.
+fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
     let mut placed: Vec<[f32; 4]> = Vec::new();
     for s in shapes.iter_mut() {
         let ShapeKind::Text {
@@ -458,10 +459,14 @@ fn spread_labels(shapes: &mut [Shape]) {
             ([at[0], at[1] + 2.0 * h], *anchor),
             ([at[0], at[1] - 2.0 * h], *anchor),
         ];
-        let (pos, anc) = candidates
+        let (mut pos, anc) = candidates
             .into_iter()
             .find(|(p, a)| !overlaps(bounds(*p, *a)))
             .unwrap_or((*at, *anchor));
+        let b = bounds(pos, anc);
+        let pad = 2.0;
+        pos[0] += (rect[0] + pad - b[0]).max(0.0) - (b[2] - rect[2] + pad).max(0.0);
+        pos[1] += (rect[1] + pad - b[1]).max(0.0) - (b[3] - rect[3] + pad).max(0.0);
         *at = pos;
         *anchor = anc;
         placed.push(bounds(pos, anc));

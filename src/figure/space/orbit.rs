@@ -75,6 +75,7 @@ pub struct Projector {
     forward: DVec3,
     centre_2d: [f64; 2],
     focal: f64,
+    rect: [f32; 4],
 }
 
 impl Projector {
@@ -117,7 +118,13 @@ impl Projector {
             forward,
             centre_2d: [(x0 + x1) / 2.0, (y0 + y1) / 2.0],
             focal,
+            rect,
         }
+    }
+
+    /// The drawing area, `[min_x, min_y, max_x, max_y]`.
+    pub fn rect(&self) -> [f32; 4] {
+        self.rect
     }
 
     /// Where `p` is drawn, and its distance along the orbit camera's forward axis (larger is

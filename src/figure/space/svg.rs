@@ -96,7 +96,7 @@ pub fn wrap_line(text: &str, size: f32, width: f32) -> Vec<String> {
 /// The numbers beside the drawing, each a line and its colour: the weights of P (the
 /// probe's `a b c`) and of Q (`r s t`), `W_P`, the window depth, the gap and the notes.
 pub fn panel_lines(space: &SpaceScene, lang: Lang) -> Vec<(String, Colour)> {
-    const INK: Colour = Colour([30, 30, 30, 255]);
+    use draw::INK;
     let tr = |k: &str| lang.tr(&format!("space.{k}"));
     let n = |v: f64| fmt_number(v);
     let mut out = Vec::new();
@@ -105,19 +105,6 @@ pub fn panel_lines(space: &SpaceScene, lang: Lang) -> Vec<(String, Colour)> {
         if space.near.is_none() {
             out.push((tr("no_planes"), INK));
         }
-    }
-    let [w, h] = space.image_size;
-    let grid = lang.tr_with(
-        "space.grid",
-        &[
-            ("w", &w.to_string()),
-            ("h", &h.to_string()),
-            ("step", &space.grid_step.to_string()),
-        ],
-    );
-    out.push((format!("{}: {grid}", tr("image_plane")), INK));
-    if let (Some(f), false) = (space.far, space.far_is_shown()) {
-        out.push((lang.tr_with("space.far_beyond", &[("d", &n(f))]), INK));
     }
     match space.ray.as_ref().map(|r| r.seen.as_ref()) {
         None => out.push((tr("no_pixel"), INK)),
@@ -161,6 +148,19 @@ pub fn panel_lines(space: &SpaceScene, lang: Lang) -> Vec<(String, Colour)> {
                 ));
             }
         }
+    }
+    let [w, h] = space.image_size;
+    let grid = lang.tr_with(
+        "space.grid",
+        &[
+            ("w", &w.to_string()),
+            ("h", &h.to_string()),
+            ("step", &space.grid_step.to_string()),
+        ],
+    );
+    out.push((format!("{}: {grid}", tr("image_plane")), INK));
+    if let (Some(f), false) = (space.far, space.far_is_shown()) {
+        out.push((lang.tr_with("space.far_beyond", &[("d", &n(f))]), INK));
     }
     out.push((tr("p"), draw::P_COLOUR));
     out.push((tr("q"), draw::Q_COLOUR));
