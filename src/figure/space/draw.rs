@@ -429,7 +429,7 @@ fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
         else {
             continue;
         };
-        let w = super::svg::text_width(text, *size);
+        let w = text_width(text, *size);
         let bounds = |at: [f32; 2], anchor: Anchor2| {
             let x0 = match anchor {
                 Anchor2::Start => at[0],
@@ -471,6 +471,13 @@ fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
         *anchor = anc;
         placed.push(bounds(pos, anc));
     }
+}
+
+/// The width of `s` at `size` points: the overlay font's for most characters, one em for
+/// CJK ideographs and punctuation (which the overlay font lacks).
+pub fn text_width(s: &str, size: f32) -> f32 {
+    let (cjk, rest): (String, String) = s.chars().partition(|c| *c >= '\u{2E80}');
+    crate::figure::text::measure(&rest, size).0[0] + size * cjk.chars().count() as f32
 }
 
 /// The 3D points the view frames: the eye, the image and near planes, the vertices and P

@@ -23,10 +23,12 @@ mod svg;
 mod tetra;
 
 pub use depth::depth_plot;
-pub use draw::{Anchor2, Colour, INK, P_COLOUR, Q_COLOUR, RAY_COLOUR, Shape, ShapeKind, shapes};
+pub use draw::{
+    Anchor2, Colour, INK, P_COLOUR, Q_COLOUR, RAY_COLOUR, Shape, ShapeKind, shapes, text_width,
+};
 pub use lens::Lens;
 pub use orbit::{Orbit, PITCH_LIMIT, Projector, ZOOM_RANGE};
-pub use svg::{FIGURE_SIZE, SpaceFigure, drawing_rect, panel_lines, text_width, wrap_line};
+pub use svg::{FIGURE_SIZE, SpaceFigure, drawing_rect, panel_lines, wrap_line};
 pub use tetra::{POINT_WEIGHTS, TetraFigure, signed_volume, volume_weights};
 
 use glam::{DVec2, DVec3};

@@ -50,13 +50,6 @@ fn paint(what: &str, c: Colour) -> String {
     )
 }
 
-/// The width of `s` at `size` points: the overlay font's for most characters, one em for
-/// CJK ideographs and punctuation (which the overlay font lacks).
-pub fn text_width(s: &str, size: f32) -> f32 {
-    let (cjk, rest): (String, String) = s.chars().partition(|c| *c >= '\u{2E80}');
-    crate::figure::text::measure(&rest, size).0[0] + size * cjk.chars().count() as f32
-}
-
 /// `text` broken into lines no wider than `width` at `size` points: at spaces, and between
 /// any two CJK characters.
 pub fn wrap_line(text: &str, size: f32, width: f32) -> Vec<String> {
@@ -65,7 +58,7 @@ pub fn wrap_line(text: &str, size: f32, width: f32) -> Vec<String> {
     let mut word = String::new();
     let flush_word = |line: &mut String, word: &mut String, lines: &mut Vec<String>| {
         let joined = format!("{line}{word}");
-        if !line.trim().is_empty() && text_width(joined.trim_end(), size) > width {
+        if !line.trim().is_empty() && draw::text_width(joined.trim_end(), size) > width {
             lines.push(line.trim_end().to_string());
             *line = word.trim_start().to_string();
         } else {

@@ -176,6 +176,12 @@ impl<'a> TetraFigure<'a> {
     pub fn to_svg(&self) -> String {
         let ink = Colour([30, 30, 30, 255]);
         let mut panel = vec![(self.lang.tr("space.tetra.point"), super::draw::P_COLOUR)];
+        let face = |i: usize| -> String {
+            (0..4)
+                .filter(|&j| j != i)
+                .map(|j| self.names[j].as_str())
+                .collect()
+        };
         for i in 0..4 {
             let [r, g, b] = CORNER_COLOURS[i];
             panel.push((
@@ -184,6 +190,8 @@ impl<'a> TetraFigure<'a> {
                     &[
                         ("name", &self.names[i]),
                         ("v", &fmt_number(self.weights[i])),
+                        ("face", &face(i)),
+                        ("all", &self.names.concat()),
                     ],
                 ),
                 Colour([r, g, b, 255]),
