@@ -20,12 +20,16 @@ const LABEL_SIZE: f32 = 12.0;
 /// Degrees the orbit turns per point dragged.
 const TURN_PER_POINT: f64 = 0.4;
 
+/// What the cached scene was built for: the render's generation, and the traced pixel with
+/// its report's generation.
+type SceneKey = (u64, Option<([u32; 2], u64)>);
+
 /// The 3D view's widget state: its orbit and the scene built for the last render and pixel.
 #[derive(Default)]
 pub struct SpaceView {
     /// The orbit camera.
     pub orbit: Orbit,
-    cached: Option<((u64, Option<([u32; 2], u64)>), SpaceScene)>,
+    cached: Option<(SceneKey, SpaceScene)>,
 }
 
 /// The Controls panel's toggle of the 3D view (beside the comparison choices).

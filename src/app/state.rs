@@ -59,7 +59,7 @@ pub struct ViewSettings {
     /// The GPU view: the comparison shows barylab beside this computer's OpenGL
     /// ([`super::gpu_view`]) instead of affine beside perspective-correct.
     pub gpu: bool,
-    /// The 3D view beside the canvas ([`super::space_view`]).
+    /// The 3D view beside the canvas (the space view, `figure::space`).
     pub space: bool,
 }
 

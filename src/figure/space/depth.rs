@@ -35,13 +35,7 @@ impl Lens {
 /// an error when the scene's planes are unknown (a clip-space scene whose z is not affine
 /// in w).
 pub fn depth_plot(scene: &Scene, lang: Lang) -> Result<LinePlot, String> {
-    let (w, h) = scene.size();
-    let aspect = f64::from(w) / f64::from(h);
-    let lens = match scene {
-        Scene::World(s) => Lens::camera(&s.camera, scene.world_from_object(), aspect),
-        Scene::Model(s) => Lens::camera(&s.camera(), scene.world_from_object(), aspect),
-        Scene::Clip(_) => Lens::clip_w(&scene.to_mesh()),
-    };
+    let lens = Lens::of_scene(scene, &scene.to_mesh());
     let (Some(near), Some(far)) = lens.planes() else {
         return Err(lang.tr("space.no_planes"));
     };

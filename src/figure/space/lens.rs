@@ -14,14 +14,15 @@ use glam::{DVec2, DVec3, DVec4};
 
 use crate::raster::camera::{Camera, CameraChain, Projection};
 use crate::raster::mesh::ClipMesh;
+use crate::scene::Scene;
 
 /// How clip-space points become the space view's 3D points (view space, or clip w as depth).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Lens {
     /// A world or model scene: its camera chain (view space, eye at the origin looking down -z).
     Camera {
         /// The scene camera's chain (its `view_from_clip` maps points back).
-        chain: CameraChain,
+        chain: Box<CameraChain>,
         /// The near plane's distance in front of the eye.
         near: f64,
         /// The far plane's distance.
@@ -37,9 +38,21 @@ pub enum Lens {
 /// Largest residual of the `z_c = alpha w_c + beta` fit, relative to the largest `|w_c|`,
 /// for a clip-space scene's near and far planes to be drawn (the bundled scenes round their
 /// coordinates to five decimals).
-const FIT_TOLERANCE: f64 = 1e-3;
+pub const FIT_TOLERANCE: f64 = 1e-3;
 
 impl Lens {
+    /// The lens of `scene`: its camera's (world and model scenes), else [`Lens::clip_w`] of
+    /// `mesh` (the scene's clip-space mesh).
+    pub fn of_scene(scene: &Scene, mesh: &ClipMesh) -> Self {
+        let (w, h) = scene.size();
+        let aspect = f64::from(w) / f64::from(h);
+        match scene {
+            Scene::World(s) => Lens::camera(&s.camera, scene.world_from_object(), aspect),
+            Scene::Model(s) => Lens::camera(&s.camera(), scene.world_from_object(), aspect),
+            Scene::Clip(_) => Lens::clip_w(mesh),
+        }
+    }
+
     /// The lens of a camera scene for an image of `aspect` = width / height.
     pub fn camera(camera: &Camera, world_from_object: glam::DMat4, aspect: f64) -> Self {
         let (near, far) = match camera.projection {
@@ -47,7 +60,7 @@ impl Lens {
             | Projection::Orthographic { near, far, .. } => (near, far),
         };
         Lens::Camera {
-            chain: CameraChain::new(camera, world_from_object, aspect),
+            chain: Box::new(CameraChain::new(camera, world_from_object, aspect)),
             near,
             far,
         }

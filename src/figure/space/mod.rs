@@ -26,7 +26,7 @@ pub use depth::depth_plot;
 pub use draw::{
     Anchor2, Colour, INK, P_COLOUR, Q_COLOUR, RAY_COLOUR, Shape, ShapeKind, shapes, text_width,
 };
-pub use lens::Lens;
+pub use lens::{FIT_TOLERANCE, Lens};
 pub use orbit::{Orbit, PITCH_LIMIT, Projector, ZOOM_RANGE};
 pub use svg::{FIGURE_SIZE, SpaceFigure, drawing_rect, panel_lines, wrap_line};
 pub use tetra::{POINT_WEIGHTS, TetraFigure, signed_volume, volume_weights};
@@ -162,7 +162,7 @@ pub struct SpaceScene {
 const NDC_CORNERS: [[f64; 2]; 4] = [[-1.0, 1.0], [1.0, 1.0], [1.0, -1.0], [-1.0, -1.0]];
 
 impl SpaceScene {
-    /// The scene in 3D, with the ray of the pixel `trace` traced (from [`crate::probe`],
+    /// The scene in 3D, with the ray of the pixel `trace` traced (from [`crate::probe()`],
     /// with the same `settings`).
     pub fn build(
         scene: &Scene,
@@ -171,12 +171,7 @@ impl SpaceScene {
     ) -> Result<Self, RenderError> {
         let mesh = scene.to_mesh();
         let (w, h) = scene.size();
-        let aspect = f64::from(w) / f64::from(h);
-        let lens = match scene {
-            Scene::World(s) => Lens::camera(&s.camera, scene.world_from_object(), aspect),
-            Scene::Model(s) => Lens::camera(&s.camera(), scene.world_from_object(), aspect),
-            Scene::Clip(_) => Lens::clip_w(&mesh),
-        };
+        let lens = Lens::of_scene(scene, &mesh);
         let vertices: Vec<SpaceVertex> = mesh
             .vertices
             .iter()
@@ -243,6 +238,7 @@ impl SpaceScene {
             )
             .collect();
         let ray = trace.map(|t| pixel_ray(&lens, t, image_depth, shown_far));
+        let (near_corners, far_corners) = (near.map(face), face(shown_far));
         Ok(SpaceScene {
             lens,
             image_size: [w, h],
@@ -253,8 +249,8 @@ impl SpaceScene {
             image_corners,
             grid,
             grid_step,
-            near_corners: near.map(face),
-            far_corners: face(shown_far),
+            near_corners,
+            far_corners,
             vertices,
             triangles,
             ray,

@@ -10,6 +10,7 @@ use resvg::usvg;
 use super::draw::{self, Anchor2, Colour, Shape, ShapeKind};
 use super::{Orbit, SpaceScene};
 use crate::figure::FigureError;
+use crate::figure::plot::escape;
 use crate::figure::png::svg_options_in;
 use crate::i18n::Lang;
 use crate::probe::format::fmt_number;
@@ -32,13 +33,6 @@ pub struct SpaceFigure<'a> {
     pub orbit: Orbit,
     /// The labels' language.
     pub lang: Lang,
-}
-
-/// Text escaped for SVG.
-fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }
 
 /// `fill="rgb(...)" fill-opacity="..."` (or stroke) of a colour.

@@ -95,12 +95,11 @@ impl<'a> TetraFigure<'a> {
             depth: 0.0,
         };
         let mut back = Vec::new();
-        for i in 0..4 {
+        for (i, [r, g, b]) in CORNER_COLOURS.into_iter().enumerate() {
             let face: Vec<DVec3> = (0..4)
                 .filter(|&j| j != i)
                 .map(|j| self.corners[j])
                 .collect();
-            let [r, g, b] = CORNER_COLOURS[i];
             let projected: Vec<([f32; 2], f64)> = face.iter().map(|p| p2(*p)).collect();
             back.push(Shape {
                 kind: ShapeKind::Polygon {
@@ -182,8 +181,7 @@ impl<'a> TetraFigure<'a> {
                 .map(|j| self.names[j].as_str())
                 .collect()
         };
-        for i in 0..4 {
-            let [r, g, b] = CORNER_COLOURS[i];
+        for (i, [r, g, b]) in CORNER_COLOURS.into_iter().enumerate() {
             panel.push((
                 self.lang.tr_with(
                     "space.tetra.weight",
