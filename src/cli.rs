@@ -21,6 +21,7 @@ mod compare;
 #[cfg(feature = "gpu")]
 mod gpu_check;
 mod lesson;
+mod space;
 mod texture_figure;
 mod values;
 mod work;
@@ -95,6 +96,10 @@ struct Cli {
     /// gpu-wipe, gpu-difference.
     #[arg(long, value_parser = parse_compare, value_name = "VIEW")]
     compare: Option<(barylab::figure::Compare, bool)>,
+    /// Start with the 3D view beside the canvas: the eye, the frustum, the triangles and the
+    /// pinned or hovered pixel's ray.
+    #[arg(long)]
+    space_view: bool,
     /// Start comparing this image (a student's rasterizer output, a screenshot) with barylab's
     /// render of the scene, as File > Compare with image… does.
     #[arg(long, value_name = "IMAGE")]
@@ -354,21 +359,39 @@ struct FigureArgs {
     /// perspective-correct, as its derivation gives them.
     #[arg(long)]
     caption: bool,
-    /// What the figure shows: the rendered image (default); the pinned pixel's texture
-    /// lookup in texture space (texels, taps and weights, footprint, mipmap levels,
-    /// anisotropic probes; needs --pixel); or every pixel's mipmap level (lod).
+    /// What the figure shows: the rendered image with its overlays (default; also `canvas`);
+    /// `texture`: the pinned pixel's texture lookup in texture space (texels, taps and
+    /// weights, footprint, mipmap levels, anisotropic probes; needs --pixel); `lod`: every
+    /// pixel's mipmap level; `space`: the scene in 3D (eye, frustum, image plane, triangles)
+    /// with the ray of the --pixel (else --hover) pixel meeting its triangle at P beside the
+    /// affine guess Q, from the --yaw/--pitch/--zoom orbit; `depth`: window depth against
+    /// view depth for the scene's near and far planes; `tetra`: the volume weights of a point
+    /// inside a tetrahedron scene.
     #[arg(long, default_value = "image")]
     view: FigureViewArg,
+    #[command(flatten)]
+    orbit: space::OrbitArgs,
     /// Output file: .png or .svg.
     #[arg(short, long)]
     output: PathBuf,
 }
 
+/// What `barylab figure` draws.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 enum FigureViewArg {
+    /// The rendered image with its overlays.
+    #[value(alias = "canvas")]
     Image,
+    /// The pinned pixel's texture lookup in texture space.
     Texture,
+    /// Every pixel's mipmap level.
     Lod,
+    /// The scene in 3D with the pixel's ray.
+    Space,
+    /// Window depth against view depth.
+    Depth,
+    /// The volume weights of a point in a tetrahedron.
+    Tetra,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -755,6 +778,7 @@ fn app(cli: &Cli) -> Result<()> {
         lesson,
         startup_error: (!startup_errors.is_empty()).then(|| startup_errors.join("; ")),
         compare: cli.compare,
+        space_view: cli.space_view,
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,
     };

@@ -112,6 +112,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<Command> {
             }
         }
         out.extend(super::gpu_view::toggle_ui(ui, view.gpu));
+        out.extend(super::space_view::toggle_ui(ui, view.space));
     });
 
     section(ui, &lang.tr("app.controls.shading"));

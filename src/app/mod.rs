@@ -67,6 +67,7 @@ pub(crate) mod samples_control;
 pub(crate) mod screenshot;
 pub(crate) mod shortcuts;
 pub(crate) mod side_panels;
+pub(crate) mod space_view;
 pub mod state;
 pub(crate) mod status;
 pub(crate) mod style;
@@ -164,6 +165,8 @@ pub struct BaryApp {
     gpu_view: gpu_view::GpuView,
     /// The image compared with the canvas's render (File > Compare with image…).
     compare_image: Option<compare_image::ImageCompare>,
+    /// The 3D view's orbit and scene.
+    space_view: space_view::SpaceView,
 }
 
 impl BaryApp {
@@ -208,6 +211,9 @@ impl BaryApp {
         if let Some((compare, gpu)) = options.compare {
             (state.view.compare, state.view.gpu) = (compare, gpu);
         }
+        if options.space_view {
+            state.view.space = true;
+        }
         if let Some((scene, dir)) = options.scene {
             state.scene = scene;
             state.scene_dir = Some(dir);
@@ -243,6 +249,7 @@ impl BaryApp {
             fonts: locale::Fonts::new(options.no_cjk_font),
             lessons: lessons::Lessons::default(),
             gpu_view: gpu_view::GpuView::new(options.screenshot.is_some()),
+            space_view: space_view::SpaceView::default(),
             compare_image: None,
         };
         if let Some(path) = &options.compare_image {
@@ -473,6 +480,7 @@ impl BaryApp {
         self.lesson_panel(ui, texture, &mut out);
         self.side_panels_ui(ui, &mut out);
         self.canvas.avoid.clear();
+        self.space_panel(ui);
         self.canvas_panel(ui, texture, canvas_layout::Framing::NORMAL, &mut out);
         self.plot_window(&ctx, texture, &mut out);
         let mut help_open = self.help_open;

@@ -37,6 +37,8 @@ pub struct AppOptions {
     pub lesson: Option<(crate::lesson::Lesson, usize)>,
     /// Start in this comparison, with the GPU view on (`true`) or off (`--compare`).
     pub compare: Option<(crate::figure::Compare, bool)>,
+    /// Start with the 3D view beside the canvas (`--space-view`).
+    pub space_view: bool,
     /// Start comparing this image with the render (`--compare-image`).
     pub compare_image: Option<PathBuf>,
     /// With `compare_image`: the image's background colour (`--compare-background`).

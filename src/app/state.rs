@@ -59,6 +59,8 @@ pub struct ViewSettings {
     /// The GPU view: the comparison shows barylab beside this computer's OpenGL
     /// ([`super::gpu_view`]) instead of affine beside perspective-correct.
     pub gpu: bool,
+    /// The 3D view beside the canvas (the space view, `figure::space`).
+    pub space: bool,
 }
 
 impl Default for ViewSettings {
@@ -79,6 +81,7 @@ impl Default for ViewSettings {
             fit_window: false,
             plot: None,
             gpu: false,
+            space: false,
         }
     }
 }
@@ -165,6 +168,8 @@ pub enum Command {
     SetCompare(Compare),
     /// The GPU view on or off.
     SetGpuView(bool),
+    /// The 3D view beside the canvas on or off.
+    SetSpaceView(bool),
     /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
     SetTieRule(crate::raster::setup::TieRule),
     /// Samples per pixel, their pattern, the shading rate and the location (saved in the scene).
@@ -335,6 +340,7 @@ impl AppState {
                 self.view.compare = c;
             }
             Command::SetGpuView(on) => self.view.gpu = on,
+            Command::SetSpaceView(on) => self.view.space = on,
             Command::SetTieRule(rule) => self.scene.set_tie_rule(rule),
             Command::SetSamples(samples) => self.scene.set_samples(samples),
             Command::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),

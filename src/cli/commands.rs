@@ -304,7 +304,11 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         lang = barylab::i18n::Lang::En;
     }
     scene.set_max_anisotropy(settings.max_anisotropy);
-    if args.view != super::FigureViewArg::Image {
+    use super::FigureViewArg as V;
+    if matches!(args.view, V::Space | V::Depth | V::Tetra) {
+        return super::space::figure(args, &scene, &texture, &settings, lang, svg_out);
+    }
+    if args.view != V::Image {
         return super::texture_figure::write(args, &scene, &texture, &settings, lang);
     }
     let fig = Figure::compose_in(&scene, &texture, &options, lang)

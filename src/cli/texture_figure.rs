@@ -42,7 +42,7 @@ pub(super) fn write(
             );
             view.picture(lang)
         }
-        FigureViewArg::Lod | FigureViewArg::Image => {
+        _ => {
             let lambdas = lod_view::lod_per_pixel(scene, texture, settings).with_context(shown)?;
             let scale = f64::from(args.pixel_size);
             lod_view::lod_picture(&lambdas, scene.size(), texture.levels(), scale, lang)

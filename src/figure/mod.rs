@@ -14,6 +14,8 @@
 //!   taps and weights, footprint, anisotropic probes) and every pixel's mipmap level.
 //! - [`plot`]: a line plot (the handout's row plot) as SVG and PNG, without egui.
 //! - [`caption`]: the optional caption with the marked pixel's key numbers.
+//! - [`space`]: the space view, the scene in 3D with the pixel's ray (`barylab figure --view
+//!   space`).
 //! - [`heatmap`]: the difference view's colours.
 //! - [`export`]: writing a figure's files (PNG, SVG, derivation, scene) under fresh names.
 //!
@@ -37,6 +39,7 @@ pub mod overlay;
 pub mod plot;
 pub mod png;
 pub mod raster_svg;
+pub mod space;
 pub mod svg;
 pub mod text;
 pub mod texture_view;

@@ -79,7 +79,7 @@ fn extent(values: impl Iterator<Item = f64>) -> [f64; 2] {
 }
 
 /// Text escaped for SVG.
-pub(super) fn escape(s: &str) -> String {
+pub(crate) fn escape(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")

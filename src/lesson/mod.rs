@@ -225,6 +225,8 @@ pub struct Step {
     pub inspector: Vec<InspectorSection>,
     /// A plot of the pinned pixel's row.
     pub plot: Option<LessonPlot>,
+    /// The 3D view beside the canvas (default off).
+    pub space_view: bool,
 }
 
 /// A lesson: a title and its steps.
@@ -261,6 +263,8 @@ pub struct StepState {
     pub inspector: Vec<InspectorSection>,
     /// The plot to show.
     pub plot: Option<LessonPlot>,
+    /// The 3D view beside the canvas.
+    pub space_view: bool,
 }
 
 impl StepState {
@@ -341,6 +345,7 @@ impl Lesson {
             pin: step.pin,
             inspector: step.inspector.clone(),
             plot: step.plot,
+            space_view: step.space_view,
         })
     }
 

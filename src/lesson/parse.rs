@@ -94,6 +94,8 @@ struct RawStep {
     inspector: Vec<InspectorSection>,
     #[serde(default)]
     plot: Option<LessonPlot>,
+    #[serde(default)]
+    space_view: bool,
 }
 
 impl<'de> Deserialize<'de> for Step {
@@ -141,6 +143,7 @@ impl<'de> Deserialize<'de> for Step {
             pin: r.pin,
             inspector: r.inspector,
             plot: r.plot,
+            space_view: r.space_view,
         })
     }
 }

@@ -1,0 +1,504 @@
+//! The space view as 2D shapes in painter's order: the planes, triangles and lines sorted
+//! back to front by their mean distance from the orbit camera, then the points and labels on
+//! top. The SVG figure and the app draw the same list.
+
+use glam::DVec3;
+
+use super::{Orbit, Projector, SpaceScene};
+use crate::i18n::Lang;
+use crate::probe::format::fmt_number;
+
+/// A straight-alpha RGBA colour.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Colour(pub [u8; 4]);
+
+/// Where a text's anchor point is along its width.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Anchor2 {
+    /// The text starts at the point.
+    Start,
+    /// The text is centred on the point.
+    Middle,
+    /// The text ends at the point.
+    End,
+}
+
+/// What a shape is.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ShapeKind {
+    /// A filled polygon, with an optional outline (colour, width).
+    Polygon {
+        /// Its corners.
+        points: Vec<[f32; 2]>,
+        /// The fill.
+        fill: Colour,
+        /// The outline.
+        stroke: Option<(Colour, f32)>,
+    },
+    /// A line segment.
+    Line {
+        /// Start.
+        from: [f32; 2],
+        /// End.
+        to: [f32; 2],
+        /// Colour.
+        colour: Colour,
+        /// Width in points.
+        width: f32,
+        /// Drawn dashed (hidden or construction lines).
+        dashed: bool,
+    },
+    /// A disc, with an optional outline.
+    Dot {
+        /// Centre.
+        centre: [f32; 2],
+        /// Radius in points.
+        radius: f32,
+        /// The fill (transparent for a ring).
+        fill: Colour,
+        /// The outline.
+        stroke: Option<(Colour, f32)>,
+    },
+    /// One line of text; its baseline's anchor point at `at`.
+    Text {
+        /// The anchor point.
+        at: [f32; 2],
+        /// The text.
+        text: String,
+        /// Font size in points.
+        size: f32,
+        /// Colour.
+        colour: Colour,
+        /// Which point of the text `at` is.
+        anchor: Anchor2,
+    },
+}
+
+/// A shape and its distance from the orbit camera (for the painter's order).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shape {
+    /// What to draw.
+    pub kind: ShapeKind,
+    /// Mean distance from the orbit camera; marks and labels come after every 3D shape.
+    pub depth: f64,
+}
+
+/// P's mark: a filled disc of this colour (tests find it in the PNG by it).
+pub const P_COLOUR: Colour = Colour([200, 0, 200, 255]);
+/// Q's mark: a ring of this colour.
+pub const Q_COLOUR: Colour = Colour([0, 140, 150, 255]);
+/// The ray.
+pub const RAY_COLOUR: Colour = Colour([215, 40, 30, 255]);
+/// Text and outlines.
+pub const INK: Colour = Colour([30, 30, 30, 255]);
+const FRUSTUM: Colour = Colour([90, 90, 110, 255]);
+const NEAR_FILL: Colour = Colour([70, 130, 230, 60]);
+const FAR_FILL: Colour = Colour([120, 120, 120, 30]);
+const IMAGE_FILL: Colour = Colour([250, 220, 90, 70]);
+const GRID: Colour = Colour([150, 120, 30, 160]);
+const TRIANGLE_FILL: Colour = Colour([120, 170, 220, 110]);
+const PIXEL_TRIANGLE_FILL: Colour = Colour([245, 160, 70, 130]);
+const CUT_FILL: Colour = Colour([245, 120, 40, 150]);
+
+/// The drawing's sizes for a text size (points of the labels' font).
+#[derive(Clone, Copy, Debug)]
+struct Sizes {
+    text: f32,
+    line: f32,
+    dot: f32,
+}
+
+/// The space view drawn into `rect` by `projector`, labels `text` points high in `lang`.
+pub fn shapes(space: &SpaceScene, projector: &Projector, lang: Lang, text: f32) -> Vec<Shape> {
+    let k = text / 15.0;
+    let sz = Sizes {
+        text,
+        line: 1.6 * k,
+        dot: 4.0 * k,
+    };
+    let mut back = Vec::new();
+    let mut front = Vec::new();
+    let pr = |p: DVec3| projector.project(p);
+    let poly = |pts: &[DVec3], fill: Colour, stroke: Option<(Colour, f32)>| {
+        let projected: Vec<([f32; 2], f64)> = pts.iter().map(|p| pr(*p)).collect();
+        let depth = projected.iter().map(|p| p.1).sum::<f64>() / projected.len().max(1) as f64;
+        Shape {
+            kind: ShapeKind::Polygon {
+                points: projected.into_iter().map(|p| p.0).collect(),
+                fill,
+                stroke,
+            },
+            depth,
+        }
+    };
+    let line = |a: DVec3, b: DVec3, colour: Colour, width: f32, dashed: bool| {
+        let ((from, da), (to, db)) = (pr(a), pr(b));
+        Shape {
+            kind: ShapeKind::Line {
+                from,
+                to,
+                colour,
+                width,
+                dashed,
+            },
+            depth: (da + db) / 2.0,
+        }
+    };
+    let label = |p: DVec3, dx: f32, dy: f32, s: String, colour: Colour, anchor: Anchor2| {
+        let (at, depth) = pr(p);
+        Shape {
+            kind: ShapeKind::Text {
+                at: [at[0] + dx * k, at[1] + dy * k],
+                text: s,
+                size: sz.text,
+                colour,
+                anchor,
+            },
+            depth,
+        }
+    };
+    let dot = |p: DVec3, radius: f32, fill: Colour, stroke: Option<(Colour, f32)>| Shape {
+        kind: ShapeKind::Dot {
+            centre: pr(p).0,
+            radius,
+            fill,
+            stroke,
+        },
+        depth: pr(p).1,
+    };
+    let tr = |key: &str| lang.tr(&format!("space.{key}"));
+    let eye = space.ray.as_ref().map_or(DVec3::ZERO, |r| r.origin);
+    let apex = if space.lens.perspective() {
+        Some(space.lens.at_depth(glam::DVec2::ZERO, 0.0))
+    } else {
+        None
+    };
+
+    // The frustum: the end face, the near plane, the image plane and the edges.
+    let far = space.far_corners;
+    back.push(poly(&far, FAR_FILL, Some((FRUSTUM, sz.line * 0.6))));
+    if space.far_is_shown() {
+        front.push(label(
+            far[1],
+            6.0,
+            -6.0,
+            tr("far_plane"),
+            FRUSTUM,
+            Anchor2::Start,
+        ));
+    }
+    let image_is_near = space.near == Some(space.image_depth);
+    if let Some(near) = space.near_corners {
+        back.push(poly(&near, NEAR_FILL, Some((FRUSTUM, sz.line * 0.6))));
+        if !image_is_near {
+            front.push(label(
+                near[0],
+                -6.0,
+                -6.0,
+                tr("near_plane"),
+                FRUSTUM,
+                Anchor2::End,
+            ));
+        }
+    }
+    for i in 0..4 {
+        let start = match (apex, space.near_corners) {
+            (Some(a), Some(n)) => {
+                back.push(line(a, n[i], FRUSTUM, sz.line * 0.5, true));
+                n[i]
+            }
+            (Some(a), None) => a,
+            (None, Some(n)) => n[i],
+            (None, None) => space.image_corners[i],
+        };
+        back.push(line(start, far[i], FRUSTUM, sz.line * 0.7, false));
+    }
+    let img = space.image_corners;
+    back.push(poly(&img, IMAGE_FILL, Some((GRID, sz.line * 0.6))));
+    for g in &space.grid {
+        back.push(line(g[0], g[1], GRID, sz.line * 0.35, false));
+    }
+    let image_name = if image_is_near {
+        tr("image_is_near")
+    } else {
+        tr("image_plane")
+    };
+    front.push(label(img[3], 0.0, 18.0, image_name, GRID, Anchor2::Start));
+
+    // The triangles (the kept part of a clipped one, its whole outline dashed).
+    let seen = space.ray.as_ref().and_then(|r| r.seen.as_ref());
+    for t in &space.triangles {
+        let corners = t.corners.map(|i| space.vertices[i].point);
+        let mine = seen.is_some_and(|s| s.source == t.source);
+        let fill = if mine {
+            PIXEL_TRIANGLE_FILL
+        } else {
+            TRIANGLE_FILL
+        };
+        match &t.kept {
+            Some(kept) => {
+                for i in 0..3 {
+                    back.push(line(
+                        corners[i],
+                        corners[(i + 1) % 3],
+                        INK,
+                        sz.line * 0.6,
+                        true,
+                    ));
+                }
+                if kept.len() >= 3 {
+                    back.push(poly(
+                        kept,
+                        if mine { CUT_FILL } else { fill },
+                        Some((INK, sz.line)),
+                    ));
+                }
+            }
+            None => back.push(poly(&corners, fill, Some((INK, sz.line)))),
+        }
+    }
+    // Vertex names: every drawn vertex of a small mesh, else the pixel's triangle's.
+    let mut named = vec![false; space.vertices.len()];
+    for t in &space.triangles {
+        let mine = seen.is_some_and(|s| s.source == t.source);
+        if space.triangles.len() <= crate::probe::LIST_ALL_TRIANGLES || mine {
+            for i in t.corners {
+                named[i] = true;
+            }
+        }
+    }
+    for (v, _) in space.vertices.iter().zip(&named).filter(|(_, n)| **n) {
+        front.push(dot(v.point, sz.dot * 0.8, INK, None));
+        let mut s = format!("{}  w = {}", v.name, fmt_number(v.w));
+        if v.w <= 0.0 {
+            s = format!("{s} ({})", tr("behind"));
+        }
+        front.push(label(v.point, 7.0, -7.0, s, INK, Anchor2::Start));
+    }
+
+    // The depth axis from the eye along -z, with view-depth ticks on one side and z/w ticks
+    // on the other.
+    if let Some(a) = apex {
+        let end = DVec3::new(0.0, 0.0, -space.shown_far);
+        back.push(line(a, end, INK, sz.line * 0.8, false));
+        front.push(label(end, 6.0, 4.0, tr("view_depth"), INK, Anchor2::Start));
+        // Ticks at least a label's height apart on the drawing (and from the eye).
+        let far_enough = |placed: &mut Vec<[f32; 2]>, p: DVec3| {
+            let at = pr(p).0;
+            let ok = placed
+                .iter()
+                .all(|q| (q[0] - at[0]).hypot(q[1] - at[1]) >= 1.6 * sz.text);
+            if ok {
+                placed.push(at);
+            }
+            ok
+        };
+        let mut placed = vec![pr(a).0];
+        let step = crate::figure::plot::tick_step(space.shown_far);
+        let mut d = step;
+        while d < space.shown_far {
+            let p = DVec3::new(0.0, 0.0, -d);
+            if far_enough(&mut placed, p) {
+                front.push(dot(p, sz.dot * 0.45, INK, None));
+                front.push(label(p, -5.0, 16.0, fmt_number(d), INK, Anchor2::End));
+            }
+            d += step;
+        }
+        let mut placed = vec![pr(a).0];
+        for z in [0.0, 0.5, 0.9, 0.99] {
+            if let Some(d) = space.lens.depth_at_z_ndc(z) {
+                let p = DVec3::new(0.0, 0.0, -d);
+                if d < space.shown_far && far_enough(&mut placed, p) {
+                    front.push(dot(p, sz.dot * 0.55, Q_COLOUR, None));
+                    front.push(label(
+                        p,
+                        5.0,
+                        -6.0,
+                        format!("z/w={z}"),
+                        Q_COLOUR,
+                        Anchor2::Start,
+                    ));
+                }
+            }
+        }
+    }
+    front.push(dot(eye, sz.dot * 1.2, INK, None));
+    front.push(label(eye, -8.0, 16.0, tr("eye"), INK, Anchor2::End));
+
+    // The pixel's ray, P and Q.
+    if let Some(ray) = &space.ray {
+        let pixel = lang.tr_with(
+            "space.pixel",
+            &[
+                ("x", &ray.pixel[0].to_string()),
+                ("y", &ray.pixel[1].to_string()),
+            ],
+        );
+        back.push(line(
+            ray.origin,
+            ray.on_image,
+            RAY_COLOUR,
+            sz.line * 1.4,
+            false,
+        ));
+        front.push(dot(ray.on_image, sz.dot * 0.8, RAY_COLOUR, None));
+        front.push(label(
+            ray.on_image,
+            -8.0,
+            -8.0,
+            pixel,
+            RAY_COLOUR,
+            Anchor2::End,
+        ));
+        match seen {
+            Some(s) => {
+                back.push(line(ray.on_image, s.p, RAY_COLOUR, sz.line * 1.4, false));
+                back.push(line(s.p, ray.end, RAY_COLOUR, sz.line * 0.8, true));
+                front.push(line(s.p, s.q, Q_COLOUR, sz.line, true));
+                front.push(dot(
+                    s.q,
+                    sz.dot * 1.3,
+                    Colour([255, 255, 255, 200]),
+                    Some((Q_COLOUR, sz.line * 1.4)),
+                ));
+                front.push(label(
+                    s.q,
+                    9.0,
+                    16.0,
+                    tr("q_short"),
+                    Q_COLOUR,
+                    Anchor2::Start,
+                ));
+                front.push(dot(s.p, sz.dot * 1.5, P_COLOUR, Some((INK, sz.line * 0.6))));
+                front.push(label(
+                    s.p,
+                    9.0,
+                    -9.0,
+                    tr("p_short"),
+                    P_COLOUR,
+                    Anchor2::Start,
+                ));
+                if apex.is_some() {
+                    let foot = DVec3::new(0.0, 0.0, s.p.z);
+                    front.push(line(s.p, foot, P_COLOUR, sz.line * 0.7, true));
+                    front.push(dot(foot, sz.dot, P_COLOUR, None));
+                    front.push(label(
+                        foot,
+                        -8.0,
+                        -8.0,
+                        format!("W_P = {}", fmt_number(-s.p.z)),
+                        P_COLOUR,
+                        Anchor2::End,
+                    ));
+                }
+                if let Some(cut) = &s.cut {
+                    for (i, (name, p)) in cut.polygon.iter().enumerate() {
+                        if i >= 2 && i + 1 < cut.polygon.len() {
+                            front.push(line(cut.polygon[0].1, *p, INK, sz.line * 0.7, true));
+                        }
+                        if name.starts_with('K') {
+                            front.push(dot(*p, sz.dot, CUT_FILL, Some((INK, sz.line * 0.6))));
+                            front.push(label(*p, -7.0, 16.0, name.clone(), INK, Anchor2::End));
+                        }
+                    }
+                }
+            }
+            None => back.push(line(ray.on_image, ray.end, RAY_COLOUR, sz.line, false)),
+        }
+    }
+
+    back.sort_by(|a, b| b.depth.total_cmp(&a.depth));
+    spread_labels(&mut front, projector.rect());
+    back.extend(front);
+    back
+}
+
+/// Moves labels that would overlap an earlier one: below it, above it, then to the other
+/// side of its anchor point, keeping the first position that overlaps nothing placed (else
+/// the original one); then moves each inside `rect`.
+fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
+    let mut placed: Vec<[f32; 4]> = Vec::new();
+    for s in shapes.iter_mut() {
+        let ShapeKind::Text {
+            at,
+            text,
+            size,
+            anchor,
+            ..
+        } = &mut s.kind
+        else {
+            continue;
+        };
+        let w = text_width(text, *size);
+        let bounds = |at: [f32; 2], anchor: Anchor2| {
+            let x0 = match anchor {
+                Anchor2::Start => at[0],
+                Anchor2::Middle => at[0] - w / 2.0,
+                Anchor2::End => at[0] - w,
+            };
+            [x0, at[1] - 0.8 * *size, x0 + w, at[1] + 0.25 * *size]
+        };
+        let overlaps = |b: [f32; 4]| {
+            placed
+                .iter()
+                .any(|p| b[0] < p[2] && p[0] < b[2] && b[1] < p[3] && p[1] < b[3])
+        };
+        let flipped = match anchor {
+            Anchor2::Start => Anchor2::End,
+            Anchor2::End => Anchor2::Start,
+            Anchor2::Middle => Anchor2::Middle,
+        };
+        let h = 1.1 * *size;
+        let candidates = [
+            (*at, *anchor),
+            ([at[0], at[1] + h], *anchor),
+            ([at[0], at[1] - h], *anchor),
+            (*at, flipped),
+            ([at[0], at[1] + h], flipped),
+            ([at[0], at[1] - h], flipped),
+            ([at[0], at[1] + 2.0 * h], *anchor),
+            ([at[0], at[1] - 2.0 * h], *anchor),
+        ];
+        let (mut pos, anc) = candidates
+            .into_iter()
+            .find(|(p, a)| !overlaps(bounds(*p, *a)))
+            .unwrap_or((*at, *anchor));
+        let b = bounds(pos, anc);
+        let pad = 2.0;
+        pos[0] += (rect[0] + pad - b[0]).max(0.0) - (b[2] - rect[2] + pad).max(0.0);
+        pos[1] += (rect[1] + pad - b[1]).max(0.0) - (b[3] - rect[3] + pad).max(0.0);
+        *at = pos;
+        *anchor = anc;
+        placed.push(bounds(pos, anc));
+    }
+}
+
+/// The width of `s` at `size` points: the overlay font's for most characters, one em for
+/// CJK ideographs and punctuation (which the overlay font lacks).
+pub fn text_width(s: &str, size: f32) -> f32 {
+    let (cjk, rest): (String, String) = s.chars().partition(|c| *c >= '\u{2E80}');
+    crate::figure::text::measure(&rest, size).0[0] + size * cjk.chars().count() as f32
+}
+
+/// The 3D points the view frames: the eye, the image and near planes, the vertices and P
+/// (the frustum beyond them may leave the picture).
+pub(super) fn framed_points(space: &SpaceScene) -> Vec<DVec3> {
+    let mut pts: Vec<DVec3> = space.image_corners.to_vec();
+    pts.extend(space.near_corners.into_iter().flatten());
+    pts.push(space.lens.at_depth(glam::DVec2::ZERO, 0.0));
+    pts.extend(space.vertices.iter().map(|v| v.point));
+    pts.extend(
+        space
+            .ray
+            .iter()
+            .filter_map(|r| r.seen.as_ref().map(|s| s.p)),
+    );
+    pts
+}
+
+impl SpaceScene {
+    /// The projector of `orbit` for this scene into `rect` (`[min_x, min_y, max_x, max_y]`).
+    pub fn projector(&self, orbit: Orbit, rect: [f32; 4]) -> Projector {
+        Projector::new(orbit, &framed_points(self), rect)
+    }
+}

@@ -1,0 +1,72 @@
+//! The app's 3D view: on with `--space-view`, its numbers are the pinned pixel's (P's
+//! weights the inspector's a b c), they follow a dragged corner, and the Controls toggle
+//! turns it off. Driven through egui_kittest like tests/app.rs.
+
+mod common;
+
+use barylab::app::AppOptions;
+use barylab::app::state::Command;
+use barylab::probe::format::fmt_number;
+use barylab::raster::project::Viewport;
+use egui_kittest::kittest::Queryable;
+use glam::DVec2;
+
+const SIZE: egui::Vec2 = egui::vec2(1600.0, 1000.0);
+
+/// The 3D view's line of P's weights for the pinned pixel's trace.
+fn abc_line(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>) -> String {
+    let report = h.state().pin_report().expect("the pinned pixel is probed");
+    let detail = report.trace.detail.as_ref().expect("a triangle");
+    let abc = detail
+        .perspective
+        .as_ref()
+        .expect("1/w > 0")
+        .correction
+        .weights;
+    let [a, b, c] = abc.map(fmt_number);
+    format!("P: a, b, c = {a}, {b}, {c}")
+}
+
+#[test]
+fn the_3d_view_shows_the_pinned_pixels_weights_and_follows_a_drag() {
+    let mut h = common::app::harness(
+        SIZE,
+        AppOptions {
+            space_view: true,
+            pin: Some([400, 420]),
+            ..AppOptions::default()
+        },
+    );
+    assert!(h.state().state().view.space);
+    let before = abc_line(&h);
+    assert!(
+        h.query_by_label(&before).is_some(),
+        "the 3D view shows {before}"
+    );
+    assert!(h.query_by_label("The pixel's ray in 3D").is_some());
+
+    // Drag corner C (index 2) elsewhere on screen: P's weights change, and the view shows
+    // the new ones.
+    let size = h.state().canvas().output.as_ref().expect("rendered").size;
+    h.state_mut().push(Command::MoveVertex {
+        index: 2,
+        to: DVec2::new(600.0, 150.0),
+        viewport: Viewport {
+            width: size[0],
+            height: size[1],
+        },
+    });
+    h.run();
+    let after = abc_line(&h);
+    assert_ne!(before, after);
+    assert!(
+        h.query_by_label(&after).is_some(),
+        "the 3D view shows {after}"
+    );
+    assert!(h.query_by_label(&before).is_none());
+
+    h.state_mut().push(Command::SetSpaceView(false));
+    h.run();
+    assert!(h.query_by_label(&after).is_none());
+    assert!(h.query_by_label("The pixel's ray in 3D").is_none());
+}
