@@ -250,6 +250,20 @@ fn handle_indices(count: usize, marks: [Option<overlay::PixelMark>; 2]) -> Vec<u
     shown
 }
 
+/// How the canvas sizes its image: to fit the window at the chosen pixel size, or the
+/// scene's own size.
+pub(crate) fn sizing(state: &AppState) -> Sizing {
+    let (w, h) = state.scene.size();
+    if state.view.fit_window {
+        Sizing::Fit {
+            aspect: w as f32 / h as f32,
+            pixel_size: state.view.pixel_size,
+        }
+    } else {
+        Sizing::Fixed([w, h])
+    }
+}
+
 /// The views of a canvas `lay`out, their transforms mapping pixels of an image `image_width`
 /// pixels wide (the render shown, which may be of another size than the layout's) to the
 /// screen; what each shows as the canvas draws it (`gpu`: the GPU view is on).
@@ -294,16 +308,13 @@ pub(crate) fn canvas_ui(
     let ppp = ui.ctx().pixels_per_point();
     let available = ui.available_rect_before_wrap();
     canvas.area = Some(available);
-    let (scene_w, scene_h) = state.scene.size();
-    let sizing = if view_settings.fit_window {
-        Sizing::Fit {
-            aspect: scene_w as f32 / scene_h as f32,
-            pixel_size: view_settings.pixel_size,
-        }
-    } else {
-        Sizing::Fixed([scene_w, scene_h])
-    };
-    let lay = layout(available, view_settings.compare, sizing, ppp, input.framing);
+    let lay = layout(
+        available,
+        view_settings.compare,
+        sizing(state),
+        ppp,
+        input.framing,
+    );
     let size = lay.size;
     canvas.pixel_size = lay.pixel_size(ppp);
     let compare = gpu_view::render_compare(input.gpu, view_settings.compare);

@@ -315,16 +315,8 @@ impl BaryApp {
         let Some(output) = &self.canvas.output else {
             return Vec::new();
         };
-        let (w, h) = self.state.scene.size();
         let view = &self.state.view;
-        let sizing = if view.fit_window {
-            super::canvas_layout::Sizing::Fit {
-                aspect: w as f32 / h as f32,
-                pixel_size: view.pixel_size,
-            }
-        } else {
-            super::canvas_layout::Sizing::Fixed([w, h])
-        };
+        let sizing = super::canvas::sizing(&self.state);
         let lay =
             super::canvas_layout::layout(area, view.compare, sizing, pixels_per_point, framing);
         let gpu = compare_image::other_view(self.compare_image.as_ref(), view.gpu, &self.gpu_view);

@@ -305,14 +305,9 @@ pub fn texture_footprint(
         return;
     }
     let (w, h) = (texture.width(), texture.height());
-    match p.anisotropy() {
-        None => frag.lod = interpolate::quad_lod(setup, x, y, p.mode, w, h),
-        Some(_) => {
-            let duv = interpolate::quad_derivatives(setup, (x, y), p.mode, Derivatives::Coarse);
-            frag.duv = duv.unwrap_or([glam::Vec2::ZERO; 2]);
-            frag.lod = duv.map_or(0.0, |[dx, dy]| lod(dx, dy, w, h));
-        }
-    }
+    let duv = interpolate::quad_derivatives(setup, (x, y), p.mode, Derivatives::Coarse);
+    frag.duv = duv.unwrap_or([glam::Vec2::ZERO; 2]);
+    frag.lod = duv.map_or(0.0, |[dx, dy]| lod(dx, dy, w, h));
 }
 
 /// The depth range [`Shading::Depth`] maps to black and white: the smallest and largest of
