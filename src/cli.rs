@@ -732,18 +732,20 @@ fn app(cli: &Cli) -> Result<()> {
         Ok(())
     };
     let opened = match &cli.scene {
-        Some(path) => match barylab::app::files::open(path, &Scene::default_scene(), lang) {
-            Ok(opened) => {
-                for n in &opened.notes {
-                    note!("note: {n}");
+        Some(path) => {
+            match barylab::app::services::files::open(path, &Scene::default_scene(), lang) {
+                Ok(opened) => {
+                    for n in &opened.notes {
+                        note!("note: {n}");
+                    }
+                    Some(opened)
                 }
-                Some(opened)
+                Err(e) => {
+                    started(anyhow::Error::msg(e))?;
+                    None
+                }
             }
-            Err(e) => {
-                started(anyhow::Error::msg(e))?;
-                None
-            }
-        },
+        }
         None => None,
     };
     let lesson = match &cli.lesson {
@@ -757,7 +759,7 @@ fn app(cli: &Cli) -> Result<()> {
         None => None,
     };
     if let Some(path) = &cli.compare_image
-        && let Err(e) = barylab::app::compare_image::read_image(path, lang)
+        && let Err(e) = barylab::app::panels::compare_image::read_image(path, lang)
     {
         // The window shows it when it reads the image.
         note!("error: {}", output::one_line(&e));

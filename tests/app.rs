@@ -2,7 +2,7 @@
 
 mod common;
 
-use barylab::app::state::Command;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::vertices_on_screen;
 use barylab::probe::format::fmt_number;
@@ -202,8 +202,9 @@ fn dragging_handle_a_moves_vertex_a() {
 #[test]
 fn pressing_reset_restores_the_default_scene() {
     let mut h = harness();
-    h.state_mut()
-        .push(Command::Preset(barylab::app::presets::Preset::GrazingWall));
+    h.state_mut().push(StateCommand::Preset(
+        barylab::app::document::presets::Preset::GrazingWall,
+    ));
     h.run();
     assert_ne!(h.state().state().scene, Scene::default_scene());
     h.get_by_label("Reset scene").click();
@@ -268,8 +269,9 @@ fn state_is_saved_on_exit_and_restored_on_start() {
     h.run();
     h.get_by_label("Wipe").click();
     h.run();
-    h.state_mut()
-        .push(Command::Preset(barylab::app::presets::Preset::FarCorner));
+    h.state_mut().push(StateCommand::Preset(
+        barylab::app::document::presets::Preset::FarCorner,
+    ));
     h.run();
     let before = h.state().state().clone();
     let mut storage = MemoryStorage::default();
@@ -282,9 +284,9 @@ fn state_is_saved_on_exit_and_restored_on_start() {
         },
     );
     for c in [
-        Command::SetMode(Interpolation::Affine),
-        Command::SetCompare(barylab::figure::Compare::Wipe),
-        Command::Preset(barylab::app::presets::Preset::FarCorner),
+        StateCommand::SetMode(Interpolation::Affine),
+        StateCommand::SetCompare(barylab::figure::Compare::Wipe),
+        StateCommand::Preset(barylab::app::document::presets::Preset::FarCorner),
     ] {
         app.push(c);
     }
@@ -317,7 +319,9 @@ fn state_file_is_written_atomically_and_read_first() {
         ..AppOptions::default()
     };
     let mut app = BaryApp::new_with_state_file(None, persist(), Some(path.clone()));
-    app.push(Command::Preset(barylab::app::presets::Preset::FarCorner));
+    app.push(StateCommand::Preset(
+        barylab::app::document::presets::Preset::FarCorner,
+    ));
     let mut h = common::app::harness_of(app, SIZE);
     let saved = h.state().state().clone();
     assert_ne!(saved.scene, Scene::default_scene());

@@ -4,7 +4,7 @@
 
 mod common;
 
-use barylab::app::state::Command;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use egui_kittest::Harness;
 
@@ -33,7 +33,7 @@ fn a_dense_mesh_shows_only_the_pinned_triangles_handles() {
     let mut h = open("assets/bench/bench-mesh-5k.json");
     assert!(h.state().canvas().output.is_some(), "rendered");
     assert_eq!(h.state().canvas().handles, Vec::<usize>::new());
-    h.state_mut().push(Command::Pin(Some([500, 500])));
+    h.state_mut().push(StateCommand::Pin(Some([500, 500])));
     h.run();
     let mark = h.state().pin_report().expect("pinned").mark();
     let corners: Vec<usize> = mark

@@ -12,10 +12,10 @@ mod common;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use barylab::app::bench_panel::BenchCommand;
 use barylab::app::command::AppCommand;
-use barylab::app::export::ExportCommand;
-use barylab::app::state::Command;
+use barylab::app::command::BenchCommand;
+use barylab::app::command::ExportCommand;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::i18n::{Lang, cjk_font};
 use egui_kittest::Harness;
@@ -126,7 +126,7 @@ fn chinese_mode_shows_no_english_catalogue_text() {
             ..AppOptions::default()
         },
     );
-    app.push(Command::Pin(Some(PIXEL)));
+    app.push(StateCommand::Pin(Some(PIXEL)));
     app.push(AppCommand::SetHelpOpen(true));
     app.push(ExportCommand::Open);
     app.push(BenchCommand::SetOpen(true));
@@ -159,7 +159,7 @@ fn a_narrow_bar_offers_the_other_language() {
         return;
     }
     let mut app = BaryApp::new(None, AppOptions::default());
-    app.push(Command::SetUiScale(2.5));
+    app.push(StateCommand::SetUiScale(2.5));
     let mut h = Harness::builder()
         .with_size(egui::vec2(1024.0, 768.0))
         .with_max_steps(30)
@@ -185,7 +185,7 @@ fn the_derivation_follows_the_language() {
         return;
     }
     let mut app = BaryApp::new(None, AppOptions::default());
-    app.push(Command::Pin(Some(PIXEL)));
+    app.push(StateCommand::Pin(Some(PIXEL)));
     let mut h = harness_with(app);
     let report = h.state().pin_report().expect("pinned report");
     let zh = barylab::probe::format::document_in(&report.trace, Lang::Zh);
@@ -247,7 +247,7 @@ fn the_language_is_saved_and_restored() {
     // A state saved before the app had languages has none: the system locale decides.
     let old = Storage(
         [(
-            barylab::app::persist::STORAGE_KEY.to_string(),
+            barylab::app::document::persist::STORAGE_KEY.to_string(),
             "(scene_json: \"\")".to_string(),
         )]
         .into(),
@@ -318,11 +318,20 @@ fn every_key_the_app_uses_is_in_the_catalogue() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/app");
     let mut used = 0;
     let mut missing = Vec::new();
-    for entry in std::fs::read_dir(&dir).expect("src/app") {
-        let path = entry.expect("entry").path();
-        if path.extension().is_none_or(|e| e != "rs") {
-            continue;
+    // Every source file under src/app, its folders included.
+    let mut files = Vec::new();
+    let mut dirs = vec![dir];
+    while let Some(d) = dirs.pop() {
+        for entry in std::fs::read_dir(&d).expect("a folder of src/app") {
+            let path = entry.expect("entry").path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
         }
+    }
+    for path in files {
         let text = std::fs::read_to_string(&path).expect("source");
         for (i, _) in text.match_indices("\"app.") {
             let key: String = text[i + 1..]

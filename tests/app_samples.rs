@@ -4,7 +4,7 @@
 
 mod common;
 
-use barylab::app::state::Command;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::overlay::MAGNIFIER_RADIUS;
 use barylab::raster::sample::{SampleCount, SampleSettings};
@@ -21,7 +21,8 @@ fn open() -> Harness<'static, BaryApp> {
             ..AppOptions::default()
         },
     );
-    h.state_mut().push(Command::SetImageSize(Some([120, 120])));
+    h.state_mut()
+        .push(StateCommand::SetImageSize(Some([120, 120])));
     h.run();
     h
 }
@@ -29,7 +30,7 @@ fn open() -> Harness<'static, BaryApp> {
 #[test]
 fn the_pinned_pixels_magnifier_gets_every_sample_around_it() {
     let mut h = open();
-    h.state_mut().push(Command::Pin(Some([70, 55])));
+    h.state_mut().push(StateCommand::Pin(Some([70, 55])));
     h.run();
     let report = h.state().pin_report().expect("pinned");
     assert!(
@@ -37,7 +38,7 @@ fn the_pinned_pixels_magnifier_gets_every_sample_around_it() {
         "one sample: the centres only"
     );
 
-    h.state_mut().push(Command::SetSamples(SampleSettings {
+    h.state_mut().push(StateCommand::SetSamples(SampleSettings {
         count: SampleCount::Four,
         ..SampleSettings::default()
     }));

@@ -5,7 +5,7 @@
 mod common;
 
 use barylab::app::AppOptions;
-use barylab::app::state::Command;
+use barylab::app::document::state::StateCommand;
 use barylab::probe::format::fmt_number;
 use barylab::raster::project::Viewport;
 use egui_kittest::kittest::Queryable;
@@ -48,7 +48,7 @@ fn the_3d_view_shows_the_pinned_pixels_weights_and_follows_a_drag() {
     // Drag corner C (index 2) elsewhere on screen: P's weights change, and the view shows
     // the new ones.
     let size = h.state().canvas().output.as_ref().expect("rendered").size;
-    h.state_mut().push(Command::MoveVertex {
+    h.state_mut().push(StateCommand::MoveVertex {
         index: 2,
         to: DVec2::new(600.0, 150.0),
         viewport: Viewport {
@@ -65,7 +65,7 @@ fn the_3d_view_shows_the_pinned_pixels_weights_and_follows_a_drag() {
     );
     assert!(h.query_by_label(&before).is_none());
 
-    h.state_mut().push(Command::SetSpaceView(false));
+    h.state_mut().push(StateCommand::SetSpaceView(false));
     h.run();
     assert!(h.query_by_label(&after).is_none());
     assert!(h.query_by_label("The pixel's ray in 3D").is_none());

@@ -3,7 +3,7 @@
 
 use std::time::{Duration, Instant};
 
-use barylab::app::state::Command;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -19,8 +19,8 @@ fn the_benchmark_window_measures_the_canvas_and_shows_the_table() {
         .with_max_steps(30)
         .build_ui_state(|ui, app: &mut BaryApp| app.show(ui), app);
     // Coarse pixels: a small canvas to render.
-    h.state_mut().push(Command::SetImageSize(None));
-    h.state_mut().push(Command::SetPixelSize(16));
+    h.state_mut().push(StateCommand::SetImageSize(None));
+    h.state_mut().push(StateCommand::SetPixelSize(16));
     h.run();
     let size = h.state().canvas().output.as_ref().expect("rendered").size;
     assert!(size[0] < 100 && size[1] < 100, "canvas {size:?}");

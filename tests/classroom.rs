@@ -7,8 +7,8 @@ mod common;
 use std::process::Command as Process;
 
 use barylab::app::command::AppCommand;
-use barylab::app::export::ExportCommand;
-use barylab::app::state::Command;
+use barylab::app::command::ExportCommand;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::Compare;
 use barylab::probe::format::fmt_digits;
@@ -89,16 +89,16 @@ fn a_pin_stays_on_its_pixel_through_resizes_panels_comparisons_and_text_size() {
     let reference = pin_numbers(&h);
     let changes: Vec<Vec<AppCommand>> = vec![
         vec![],
-        vec![Command::SetShowControls(false).into()],
-        vec![Command::SetShowInspector(false).into()],
-        vec![Command::SetCompare(Compare::SideBySide).into()],
-        vec![Command::SetCompare(Compare::Wipe).into()],
-        vec![Command::SetUiScale(1.6).into()],
+        vec![StateCommand::SetShowControls(false).into()],
+        vec![StateCommand::SetShowInspector(false).into()],
+        vec![StateCommand::SetCompare(Compare::SideBySide).into()],
+        vec![StateCommand::SetCompare(Compare::Wipe).into()],
+        vec![StateCommand::SetUiScale(1.6).into()],
         vec![
-            Command::SetShowControls(true).into(),
-            Command::SetShowInspector(true).into(),
-            Command::SetCompare(Compare::Single).into(),
-            Command::SetUiScale(1.0).into(),
+            StateCommand::SetShowControls(true).into(),
+            StateCommand::SetShowInspector(true).into(),
+            StateCommand::SetCompare(Compare::Single).into(),
+            StateCommand::SetUiScale(1.0).into(),
         ],
     ];
     for size in [[1024.0, 768.0], [1280.0, 800.0], [1920.0, 1080.0]] {
@@ -124,23 +124,24 @@ fn a_pin_stays_on_its_pixel_through_resizes_panels_comparisons_and_text_size() {
 fn image_sizes_for_teaching_are_drawn_with_square_whole_pixels() {
     let mut h = harness(egui::vec2(1024.0, 768.0));
     for size in [[32, 24], [160, 120], [320, 240], [1280, 720]] {
-        h.state_mut().push(Command::SetImageSize(Some(size)));
+        h.state_mut().push(StateCommand::SetImageSize(Some(size)));
         settle(&mut h);
         let out = h.state().canvas().output.as_ref().expect("rendered");
         assert_eq!(out.size, size);
         let view = h.state().canvas().views[0];
         let px = view.transform.scale * h.ctx.pixels_per_point();
-        if px >= barylab::app::canvas::WHOLE_PIXELS_FROM {
+        if px >= barylab::app::panels::canvas_layout::WHOLE_PIXELS_FROM {
             assert_eq!(px, px.round(), "{size:?}: {px} screen pixels per pixel");
         }
         assert!(view.rect.width() <= h.state().canvas().area.expect("laid out").width() + 0.5);
     }
     // 32x24 on a projector: every pixel is a big square, grid and sample points shown.
-    h.state_mut().push(Command::SetImageSize(Some([32, 24])));
+    h.state_mut()
+        .push(StateCommand::SetImageSize(Some([32, 24])));
     settle(&mut h);
     assert!(h.state().canvas().pixel_size >= 10);
     // "Fit window" follows the canvas again.
-    h.state_mut().push(Command::SetImageSize(None));
+    h.state_mut().push(StateCommand::SetImageSize(None));
     settle(&mut h);
     let out = h.state().canvas().output.as_ref().expect("rendered");
     assert!(out.size[0] > 300, "{:?}", out.size);
@@ -151,7 +152,7 @@ fn the_canvas_keeps_half_the_window_on_projectors_at_any_text_size() {
     for size in [[1024.0, 768.0], [1280.0, 800.0]] {
         let mut h = harness(egui::vec2(size[0], size[1]));
         for scale in [1.0, 1.3, 1.5, 2.0] {
-            h.state_mut().push(Command::SetUiScale(scale));
+            h.state_mut().push(StateCommand::SetUiScale(scale));
             settle(&mut h);
             let share = canvas_share(&h);
             assert!(
@@ -207,7 +208,7 @@ fn presentation_mode_shows_the_pins_numbers_large_and_pages_through_presets() {
     // stays, and the card names the preset.
     h.key_press(egui::Key::PageDown);
     h.run();
-    let front = barylab::app::presets::Preset::FrontFacing;
+    let front = barylab::app::document::presets::Preset::FrontFacing;
     let mut expected = front.scene();
     expected.set_size(800, 600);
     assert_eq!(h.state().state().scene, expected);
@@ -218,7 +219,8 @@ fn presentation_mode_shows_the_pins_numbers_large_and_pages_through_presets() {
     );
     h.key_press(egui::Key::PageUp);
     h.run();
-    let last = barylab::app::presets::Preset::ALL[barylab::app::presets::Preset::ALL.len() - 1];
+    let last = barylab::app::document::presets::Preset::ALL
+        [barylab::app::document::presets::Preset::ALL.len() - 1];
     let mut expected = last.scene();
     expected.set_size(800, 600);
     assert_eq!(h.state().state().scene, expected);
@@ -251,8 +253,9 @@ fn undo_restores_the_exact_corners_after_a_drag_and_redo_brings_them_back() {
     let dragged = h.state().state().scene.clone();
     assert_ne!(dragged, start_scene);
     // A preset on top: two steps.
-    h.state_mut()
-        .push(Command::Preset(barylab::app::presets::Preset::GrazingWall));
+    h.state_mut().push(StateCommand::Preset(
+        barylab::app::document::presets::Preset::GrazingWall,
+    ));
     h.run();
     let preset = h.state().state().scene.clone();
     assert_eq!(h.state().history().undo_steps(), 2);
@@ -284,7 +287,8 @@ fn the_exported_derivation_is_what_barylab_probe_prints_for_the_exported_scene()
     let pos = pixel_centre(&h, p);
     click(&mut h, pos);
     away(&mut h);
-    h.state_mut().push(Command::SetCompare(Compare::SideBySide));
+    h.state_mut()
+        .push(StateCommand::SetCompare(Compare::SideBySide));
     h.set_size(egui::vec2(1280.0, 800.0));
     settle(&mut h);
     let dir = tempfile::tempdir().expect("tempdir");
@@ -323,11 +327,13 @@ fn the_exported_derivation_is_what_barylab_probe_prints_for_the_exported_scene()
 
 #[test]
 fn save_scene_writes_the_json_that_render_and_probe_read() {
-    use barylab::app::files::FileCommand;
+    use barylab::app::command::FileCommand;
     let mut h = harness(egui::vec2(1280.0, 800.0));
+    h.state_mut().push(StateCommand::Preset(
+        barylab::app::document::presets::Preset::GrazingWall,
+    ));
     h.state_mut()
-        .push(Command::Preset(barylab::app::presets::Preset::GrazingWall));
-    h.state_mut().push(Command::SetImageSize(Some([320, 240])));
+        .push(StateCommand::SetImageSize(Some([320, 240])));
     h.run();
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("lesson.json");
@@ -342,9 +348,10 @@ fn save_scene_writes_the_json_that_render_and_probe_read() {
     assert_eq!(saved, h.state().state().scene);
     assert_eq!(saved.size(), (320, 240));
     // File > Save writes the same file again, with the newest edit, and nothing else.
-    h.state_mut().push(Command::SetFov(40.0));
-    h.state_mut()
-        .push(Command::Preset(barylab::app::presets::Preset::FrontFacing));
+    h.state_mut().push(StateCommand::SetFov(40.0));
+    h.state_mut().push(StateCommand::Preset(
+        barylab::app::document::presets::Preset::FrontFacing,
+    ));
     h.state_mut().push(FileCommand::Save);
     h.run();
     assert_eq!(Scene::load(&path).expect("saved"), h.state().state().scene);
@@ -365,7 +372,7 @@ fn save_scene_writes_the_json_that_render_and_probe_read() {
 #[test]
 fn a_red_message_goes_when_its_cause_does() {
     let mut h = harness(egui::vec2(1280.0, 800.0));
-    let bad = Command::SetCorner {
+    let bad = StateCommand::SetCorner {
         index: 0,
         position: glam::DVec3::new(f64::NAN, 0.0, 0.0),
         uv: glam::Vec2::ZERO,
@@ -375,18 +382,20 @@ fn a_red_message_goes_when_its_cause_does() {
     h.run();
     assert!(h.state().message().is_some(), "the failed edit is reported");
     // The next edit that works replaces the cause.
-    h.state_mut().push(Command::SetTilt(barylab::scene::Tilt {
-        pitch_deg: 10.0,
-        yaw_deg: 0.0,
-    }));
+    h.state_mut()
+        .push(StateCommand::SetTilt(barylab::scene::Tilt {
+            pitch_deg: 10.0,
+            yaw_deg: 0.0,
+        }));
     h.run();
     assert_eq!(h.state().message(), None);
     // A preset starts afresh too.
     h.state_mut().push(bad);
     h.run();
     assert!(h.state().message().is_some());
-    h.state_mut()
-        .push(Command::Preset(barylab::app::presets::Preset::Floor));
+    h.state_mut().push(StateCommand::Preset(
+        barylab::app::document::presets::Preset::Floor,
+    ));
     h.run();
     assert_eq!(h.state().message(), None);
 }

@@ -9,8 +9,8 @@ mod common;
 use std::path::{Path, PathBuf};
 
 use barylab::app::command::AppCommand;
-use barylab::app::files::FileCommand;
-use barylab::app::state::Command as AppCmd;
+use barylab::app::command::FileCommand;
+use barylab::app::document::state::StateCommand as AppCmd;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::Compare;
 use barylab::i18n::Lang;
@@ -76,7 +76,7 @@ fn settle(h: &mut Harness<'_, BaryApp>) {
 fn summary(h: &Harness<'_, BaryApp>) -> String {
     let ic = h.state().compare_image().expect("comparing");
     let c = ic.comparison.as_ref().expect("compared");
-    barylab::app::compare_image::summary(c, barylab::i18n::Lang::En)
+    barylab::app::panels::compare_image::summary(c, barylab::i18n::Lang::En)
 }
 
 #[test]

@@ -6,8 +6,8 @@ mod common;
 use std::path::Path;
 use std::process::Command;
 
-use barylab::app::export::ExportCommand;
-use barylab::app::state::Command as AppCommand;
+use barylab::app::command::ExportCommand;
+use barylab::app::document::state::StateCommand as AppCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::Compare;
 use egui::Pos2;

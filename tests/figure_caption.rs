@@ -8,8 +8,8 @@ mod common;
 use std::path::Path;
 use std::process::Command as Process;
 
-use barylab::app::export::ExportCommand;
-use barylab::app::state::Command as AppCommand;
+use barylab::app::command::ExportCommand;
+use barylab::app::document::state::StateCommand as AppCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::{Background, Compare, Figure, FigureOptions, caption, svg};
 use barylab::i18n::Lang;

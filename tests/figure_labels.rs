@@ -8,7 +8,7 @@ mod common;
 use std::path::Path;
 
 use barylab::app::AppOptions;
-use barylab::app::state::Command as AppCommand;
+use barylab::app::document::state::StateCommand as AppCommand;
 use barylab::figure::text::{LABEL_INSET, LABEL_PAD, pair_fit, place_pair};
 use barylab::figure::{Background, Compare, Figure, FigureOptions, svg};
 use barylab::raster::Texture;

@@ -8,7 +8,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use barylab::app::state::Command;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::raster::Interpolation;
 use barylab::scene::Scene;
@@ -180,8 +180,9 @@ fn notes_are_shown_and_the_file_opens() {
 #[test]
 fn an_image_becomes_the_texture_of_the_current_scene() {
     let mut h = harness();
-    h.state_mut()
-        .push(Command::SetShading(barylab::raster::Shading::Barycentric));
+    h.state_mut().push(StateCommand::SetShading(
+        barylab::raster::Shading::Barycentric,
+    ));
     h.run();
     let geometry_before = h.state().state().scene.to_mesh();
     let rgbw = data("rgbw.png");
@@ -196,7 +197,7 @@ fn an_image_becomes_the_texture_of_the_current_scene() {
     assert_eq!(state.scene.to_mesh(), geometry_before, "the quad stays");
     // The picture shows the image's four colours (nearest lookups of the 2x2 image).
     h.state_mut()
-        .push(Command::SetFilter(barylab::raster::Filter::Nearest));
+        .push(StateCommand::SetFilter(barylab::raster::Filter::Nearest));
     h.run();
     let px = colors(&h);
     for c in [
@@ -284,7 +285,7 @@ fn recent_files_are_saved_and_restored() {
 }
 
 fn model_harness() -> Harness<'static, BaryApp> {
-    let opened = barylab::app::files::open(
+    let opened = barylab::app::services::files::open(
         &asset("assets/models/torus.obj"),
         &Scene::default_scene(),
         barylab::i18n::Lang::En,

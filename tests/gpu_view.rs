@@ -9,8 +9,8 @@ use std::process::Command;
 mod common;
 use common::xvfb::{start_xvfb, xvfb_or_skip};
 
-use barylab::app::gpu_view::Unavailable;
-use barylab::app::state::Command as AppCmd;
+use barylab::app::document::state::StateCommand as AppCmd;
+use barylab::app::panels::gpu_view::Unavailable;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::figure::Compare;
 use barylab::gpu::check::tie_lattice;

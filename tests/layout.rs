@@ -5,7 +5,7 @@
 
 mod common;
 
-use barylab::app::state::Command;
+use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
 use barylab::i18n::{Lang, cjk_font};
 use barylab::probe::format::fmt_number;
@@ -74,12 +74,12 @@ fn the_status_line_keeps_mode_canvas_and_frame_time_whole_on_a_projector() {
         let mut h = harness([1024.0, 768.0], options);
         let frame = lang_word(lang, "frame");
         for scale in [1.0, 1.5, 2.0] {
-            h.state_mut().push(Command::SetUiScale(scale));
+            h.state_mut().push(StateCommand::SetUiScale(scale));
             for compare in [
                 barylab::figure::Compare::Single,
                 barylab::figure::Compare::SideBySide,
             ] {
-                h.state_mut().push(Command::SetCompare(compare));
+                h.state_mut().push(StateCommand::SetCompare(compare));
                 settle(&mut h);
                 let what = format!("{lang:?} at text size {scale}, {compare:?}");
                 whole(&h, &frame, &what);
@@ -132,7 +132,7 @@ fn the_inspectors_numbers_are_never_cut_at_its_edge() {
             };
             let mut h = harness(size, options);
             for scale in scales {
-                h.state_mut().push(Command::SetUiScale(scale));
+                h.state_mut().push(StateCommand::SetUiScale(scale));
                 settle(&mut h);
                 // Hover another pixel, so the pinned-and-hovered table shows too.
                 let view = h.state().canvas().views[0];
@@ -170,7 +170,7 @@ fn a_lesson_leaves_the_canvas_most_of_the_window_on_a_wide_screen() {
             ..AppOptions::default()
         };
         let mut h = harness([1920.0, 1080.0], options);
-        h.state_mut().push(Command::SetUiScale(1.5));
+        h.state_mut().push(StateCommand::SetUiScale(1.5));
         settle(&mut h);
         for step in [2, 0, steps - 1] {
             h.state_mut().enter_lesson(lesson.clone(), step);
@@ -247,7 +247,7 @@ fn handles_on_screen(h: &Harness<'_, BaryApp>) -> Vec<egui::Pos2> {
         return Vec::new();
     };
     let vertices = barylab::figure::vertices_on_screen(&output.scene, output.viewport());
-    let per_pixel = |v: &barylab::app::canvas::View| v.rect.width() / output.size[0] as f32;
+    let per_pixel = |v: &barylab::app::panels::canvas::View| v.rect.width() / output.size[0] as f32;
     let mut out = Vec::new();
     for v in &canvas.views {
         for &k in &canvas.handles {
@@ -295,7 +295,7 @@ fn presenting_on_a_projector_gives_the_picture_half_the_window_and_hides_no_hand
             ..AppOptions::default()
         };
         let mut h = harness([1024.0, 768.0], options);
-        h.state_mut().push(Command::SetUiScale(scale));
+        h.state_mut().push(StateCommand::SetUiScale(scale));
         settle(&mut h);
         let share = image_share(&h);
         assert!(share >= 0.5, "text size {scale}, nothing pinned: {share}");
@@ -311,7 +311,7 @@ fn presenting_on_a_projector_gives_the_picture_half_the_window_and_hides_no_hand
             ..AppOptions::default()
         };
         let mut h = harness([1024.0, 768.0], options);
-        h.state_mut().push(Command::SetUiScale(scale));
+        h.state_mut().push(StateCommand::SetUiScale(scale));
         settle(&mut h);
         check_card(&h, &format!("text size {scale}, pinned"));
         // Every step of the lesson.
@@ -321,7 +321,7 @@ fn presenting_on_a_projector_gives_the_picture_half_the_window_and_hides_no_hand
             ..AppOptions::default()
         };
         let mut h = harness([1024.0, 768.0], options);
-        h.state_mut().push(Command::SetUiScale(scale));
+        h.state_mut().push(StateCommand::SetUiScale(scale));
         settle(&mut h);
         for n in 0..lesson.steps.len() {
             h.state_mut().enter_lesson(lesson.clone(), n);
@@ -340,7 +340,7 @@ fn on_a_projector_at_text_size_one_and_a_half_every_panel_opens_and_the_lesson_s
             ..AppOptions::default()
         };
         let mut h = harness([1024.0, 768.0], options);
-        h.state_mut().push(Command::SetUiScale(scale));
+        h.state_mut().push(StateCommand::SetUiScale(scale));
         settle(&mut h);
         let window = h.ctx.content_rect();
         let canvas = h.state().canvas().area.expect("the canvas is shown");
@@ -360,8 +360,8 @@ fn on_a_projector_at_text_size_one_and_a_half_every_panel_opens_and_the_lesson_s
         // strips beside it).
         let before = canvas.width();
         for show in [
-            Command::SetShowInspector(true),
-            Command::SetShowControls(true),
+            StateCommand::SetShowInspector(true),
+            StateCommand::SetShowControls(true),
         ] {
             h.state_mut().push(show.clone());
             settle(&mut h);

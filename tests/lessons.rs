@@ -613,9 +613,9 @@ fn handout_headings_are_numbered_from_one() {
 }
 
 mod app {
-    use barylab::app::lessons::LessonCommand;
-    use barylab::app::presets::Preset;
-    use barylab::app::state::Command;
+    use barylab::app::command::LessonCommand;
+    use barylab::app::document::presets::Preset;
+    use barylab::app::document::state::StateCommand;
     use barylab::app::{AppOptions, BaryApp};
     use barylab::figure::Compare;
     use barylab::lesson::Lesson;
@@ -644,10 +644,12 @@ mod app {
         let lesson = Lesson::builtin().expect("built-in lesson");
         let mut h = harness();
         // The user's own work: a preset (one undo step), the side-by-side view and a pin.
-        h.state_mut().push(Command::Preset(Preset::GrazingWall));
+        h.state_mut()
+            .push(StateCommand::Preset(Preset::GrazingWall));
         h.run();
-        h.state_mut().push(Command::SetCompare(Compare::SideBySide));
-        h.state_mut().push(Command::Pin(Some([5, 6])));
+        h.state_mut()
+            .push(StateCommand::SetCompare(Compare::SideBySide));
+        h.state_mut().push(StateCommand::Pin(Some([5, 6])));
         h.run();
         let mine = h.state().state().clone();
         let undo_steps = h.state().history().undo_steps();
@@ -675,9 +677,10 @@ mod app {
         // Step changes are not edits: nothing to undo.
         assert!(!h.state().history().can_undo());
         // The user changes the step; "reset this step" puts it back.
-        h.state_mut()
-            .push(Command::SetMode(barylab::raster::Interpolation::Affine));
-        h.state_mut().push(Command::Pin(Some([1, 1])));
+        h.state_mut().push(StateCommand::SetMode(
+            barylab::raster::Interpolation::Affine,
+        ));
+        h.state_mut().push(StateCommand::Pin(Some([1, 1])));
         h.run();
         h.get_by_label("Reset this step").click();
         h.run();
@@ -751,7 +754,7 @@ mod app {
     #[test]
     fn the_row_plot_opens_from_the_menu_outside_a_lesson() {
         let mut h = harness();
-        h.state_mut().push(Command::Pin(Some([400, 420])));
+        h.state_mut().push(StateCommand::Pin(Some([400, 420])));
         h.run();
         h.get_by_label("Lessons").click();
         h.run();

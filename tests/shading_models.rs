@@ -174,7 +174,7 @@ fn models_are_framed_from_the_courses_view_and_the_named_views() {
 
 #[test]
 fn the_apps_view_buttons_frame_the_model_from_each_side_and_home_goes_back() {
-    use barylab::app::state::{AppState, Command};
+    use barylab::app::document::state::{AppState, StateCommand};
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/models");
     let model = ModelScene::for_model(&dir.join("torus.obj"), 160, 120).expect("torus");
     let (centre, _) = model.mesh.bounding_sphere();
@@ -188,7 +188,7 @@ fn the_apps_view_buttons_frame_the_model_from_each_side_and_home_goes_back() {
     };
     let course = eye(&state);
     for view in ModelView::ALL {
-        state.apply(Command::ModelView(view)).expect("view");
+        state.apply(StateCommand::ModelView(view)).expect("view");
         let (expected, _) = view.eye_direction();
         assert!((eye(&state) - expected).length() < 1e-9, "{view:?}");
         // The model stays framed: it draws, touching no border.
@@ -199,6 +199,6 @@ fn the_apps_view_buttons_frame_the_model_from_each_side_and_home_goes_back() {
             "{view:?}"
         );
     }
-    state.apply(Command::ResetCamera).expect("home");
+    state.apply(StateCommand::ResetCamera).expect("home");
     assert!((eye(&state) - course).length() < 1e-12);
 }

@@ -2,14 +2,16 @@
 
 use std::path::PathBuf;
 
-use super::banner::Banner;
-use super::bench_panel::BenchPanel;
-use super::canvas::CanvasState;
-use super::command::AppCommand;
-use super::export::{ExportCommand, ExportPanel};
-use super::pixel::PixelReport;
-use super::state::AppState;
-use super::{BaryApp, history};
+use crate::app::BaryApp;
+use crate::app::command::AppCommand;
+use crate::app::command::ExportCommand;
+use crate::app::document::history;
+use crate::app::document::state::AppState;
+use crate::app::panels::banner::Banner;
+use crate::app::panels::bench_panel::BenchPanel;
+use crate::app::panels::canvas::CanvasState;
+use crate::app::panels::export::ExportPanel;
+use crate::app::services::pixel::PixelReport;
 
 impl BaryApp {
     /// The banner's lines (what the last opened file did, or why it did not open).
@@ -88,7 +90,7 @@ impl BaryApp {
     }
 
     /// The GPU view (its last comparison, or why there is none).
-    pub fn gpu_view(&self) -> &super::gpu_view::GpuView {
+    pub fn gpu_view(&self) -> &crate::app::panels::gpu_view::GpuView {
         &self.gpu_view
     }
 }

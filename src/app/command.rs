@@ -1,21 +1,21 @@
 //! Everything a panel can ask of the app. Panels get the state they show and return
 //! [`AppCommand`]s (or the commands of their own part, which convert into one); the app applies
-//! them all in one place, in order, once per frame ([`super::BaryApp::show`]).
+//! them all in one place, in order, once per frame ([`crate::app::BaryApp::show`]).
 
-use super::bench_panel::BenchCommand;
-use super::export::ExportCommand;
-use super::files::FileCommand;
-use super::lessons::LessonCommand;
-use super::state::Command;
+use crate::app::document::state::StateCommand;
+use std::path::PathBuf;
+
+use crate::figure::Background;
+use crate::figure::export::ExportSelection;
 
 /// A change or an action asked for by a panel, a shortcut, a dialog or a dropped file.
 #[derive(Clone, Debug, PartialEq)]
 pub enum AppCommand {
-    /// Change the scene or the view ([`super::state::AppState::apply`]).
-    State(Command),
+    /// Change the scene or the view ([`crate::app::document::state::AppState::apply`]).
+    State(StateCommand),
     /// The Export panel (applied by `ExportPanel::apply`).
     Export(ExportCommand),
-    /// The benchmark window ([`super::bench_panel::BenchPanel::apply`]).
+    /// The benchmark window ([`crate::app::panels::bench_panel::BenchPanel::apply`]).
     Bench(BenchCommand),
     /// Opening files: the File menu, the typed-path window, the banner.
     File(FileCommand),
@@ -35,8 +35,8 @@ pub enum AppCommand {
     ToggleSpanStepping,
 }
 
-impl From<Command> for AppCommand {
-    fn from(c: Command) -> Self {
+impl From<StateCommand> for AppCommand {
+    fn from(c: StateCommand) -> Self {
         Self::State(c)
     }
 }
@@ -62,4 +62,124 @@ impl From<FileCommand> for AppCommand {
 /// Converts a panel's own commands.
 pub fn all<C: Into<AppCommand>>(commands: Vec<C>) -> impl Iterator<Item = AppCommand> {
     commands.into_iter().map(Into::into)
+}
+
+impl From<LessonCommand> for AppCommand {
+    fn from(c: LessonCommand) -> Self {
+        AppCommand::Lesson(c)
+    }
+}
+
+/// A change or an action of the Export panel, applied once per frame.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExportCommand {
+    /// Show the Export panel.
+    Open,
+    /// Hide the Export panel.
+    Close,
+    /// Show the native folder dialog.
+    BrowseFolder,
+    /// Export into this folder.
+    SetFolder(PathBuf),
+    /// Export at this scale: PNG pixels per figure point (1, 2 or 4).
+    SetScale(u32),
+    /// Use this background in the figures.
+    SetBackground(Background),
+    /// Write these files.
+    SetSelection(ExportSelection),
+    /// Add (or leave out) the figure's caption.
+    SetCaption(bool),
+    /// Write the selected files into the folder.
+    Export,
+    /// Put the figure's PNG on the clipboard.
+    Copy,
+    /// Save the whole window as a PNG into the folder.
+    Screenshot,
+}
+
+/// Which scene the benchmark draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BenchSource {
+    /// The scene on the canvas, at the canvas's render size.
+    #[default]
+    Canvas,
+    /// `assets/scenes/bench-1080p.json` (built in), 1920 x 1080.
+    Reference,
+}
+
+/// A change or an action of the benchmark window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BenchCommand {
+    /// Show or hide the window.
+    SetOpen(bool),
+    /// Measure the canvas's scene or the built-in reference scene.
+    SetSource(BenchSource),
+    /// Frames per configuration.
+    SetFrames(u32),
+    /// Start measuring the chosen scene.
+    Run,
+    /// Stop the run going on.
+    Stop,
+}
+
+/// What the Lessons panel, the strip, the menu and the keys ask for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LessonCommand {
+    /// Open the built-in lesson at its first step.
+    OpenBuiltin,
+    /// Show the native dialog to pick a lesson file.
+    OpenDialog,
+    /// Open a lesson file at its first step.
+    OpenFile(PathBuf),
+    /// Go to step `n` (0-based).
+    Go(usize),
+    /// The next step (stays at the last).
+    Next,
+    /// The previous step (stays at the first).
+    Previous,
+    /// Put back everything the current step sets.
+    Reset,
+    /// Leave the lesson: the user's own scene and settings come back.
+    Leave,
+    /// The inspector showed the derivation sections the step opens: forget them, so the
+    /// user's own opening and closing is kept from now on.
+    SectionsShown,
+}
+
+/// What the File menu, the typed-path window, the banner and drag-and-drop ask the app to do.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FileCommand {
+    /// Show the native Open dialog.
+    OpenDialog,
+    /// Show the typed-path window; `dialog_failed` says the native dialog could not open.
+    ShowPathWindow {
+        /// The native dialog could not open (the window says so).
+        dialog_failed: bool,
+    },
+    /// Close the typed-path window.
+    ClosePathWindow,
+    /// The typed-path window's field now holds this text.
+    EditPath(String),
+    /// The typed-path window's field took the keyboard focus it was opened with.
+    PathFieldFocused,
+    /// Load this file and apply it ([`crate::app::services::files::open`]).
+    Open(PathBuf),
+    /// Empty the recent-files list.
+    ClearRecent,
+    /// Hide the banner.
+    DismissBanner,
+    /// Save the scene to the file it came from or was last saved to (else ask where).
+    Save,
+    /// Ask where to save the scene (the native dialog, else the typed-path window).
+    SaveAsDialog,
+    /// Save the scene to this file.
+    SaveTo(PathBuf),
+    /// Ask for an image to compare with the render (the native dialog).
+    CompareImageDialog,
+    /// Compare this image with the render ([`crate::app::panels::compare_image`]).
+    CompareImage(PathBuf),
+    /// Stop comparing with an image.
+    CloseCompareImage,
+    /// The compared image's background colour: any other colour is covered.
+    SetCompareBackground([u8; 3]),
 }

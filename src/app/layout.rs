@@ -1,15 +1,17 @@
 //! The layout of the app's window around the canvas: the side panels (each open, folded to a
-//! strip, or hidden, so the canvas keeps at least half of the window: [`super::side_panels`]),
+//! strip, or hidden, so the canvas keeps at least half of the window: [`crate::app::side_panels`]),
 //! the canvas panel, and presentation mode's card beside or below the canvas.
 
 use std::sync::Arc;
 
-use super::canvas::{self, CanvasInput};
-use super::canvas_layout::Framing;
-use super::command::{self, AppCommand};
-use super::side_panels::{self, Fit};
-use super::textures::texture_key;
-use super::{BaryApp, compare_image, controls, gpu_view, inspector, magnifier, present, state};
+use crate::app::BaryApp;
+use crate::app::command::{self, AppCommand};
+use crate::app::document::state;
+use crate::app::panels::canvas::{self, CanvasInput};
+use crate::app::panels::canvas_layout::Framing;
+use crate::app::panels::{compare_image, controls, gpu_view, inspector, magnifier, present};
+use crate::app::services::textures::texture_key;
+use crate::app::side_panels::{self, Fit};
 use crate::figure::ViewContent;
 use crate::raster::Texture;
 
@@ -19,7 +21,7 @@ const PRESENT_MARK_SCALE: f32 = 1.35;
 impl BaryApp {
     /// The side panels, in what the canvas can spare; their commands go to `out`.
     pub(super) fn side_panels_ui(&mut self, ui: &mut egui::Ui, out: &mut Vec<AppCommand>) {
-        let lang = super::locale::lang(ui.ctx());
+        let lang = crate::app::services::locale::lang(ui.ctx());
         let ctx = ui.ctx().clone();
         // The side panels take what the canvas can spare (at least half of the window's
         // area stays the canvas's); one that does not fit is a strip that opens it.
@@ -91,7 +93,7 @@ impl BaryApp {
                             .auto_shrink([false, false])
                             .show(ui, |ui| {
                                 ui.set_max_width(width);
-                                let shown = inspector::inspector_ui(
+                                let asked = inspector::inspector_ui(
                                     ui,
                                     self.reports.hover.as_ref(),
                                     self.reports.pin.as_ref(),
@@ -102,9 +104,7 @@ impl BaryApp {
                                         &self.gpu_view,
                                     ),
                                 );
-                                if shown {
-                                    self.lessons.open_sections = None;
-                                }
+                                out.extend(crate::app::command::all(asked));
                             });
                     });
             }
@@ -231,7 +231,13 @@ impl BaryApp {
         // picture that made room when the pointer entered it would move under the pointer).
         let corner = if self.state.view.pinned.is_some() {
             let views = self.views_at_largest(over_area, framing, ui.ctx().pixels_per_point());
-            self.free_corner_in(over_area, card, &[], &views, super::corners::FREE_CARD)
+            self.free_corner_in(
+                over_area,
+                card,
+                &[],
+                &views,
+                crate::app::panels::corners::FREE_CARD,
+            )
         } else {
             Some(self.emptiest_corner(self.canvas.area.unwrap_or(over_area), card))
         };
@@ -311,16 +317,21 @@ impl BaryApp {
         area: egui::Rect,
         framing: Framing,
         pixels_per_point: f32,
-    ) -> Vec<super::canvas::View> {
+    ) -> Vec<crate::app::panels::canvas::View> {
         let Some(output) = &self.canvas.output else {
             return Vec::new();
         };
         let view = &self.state.view;
-        let sizing = super::canvas::sizing(&self.state);
-        let lay =
-            super::canvas_layout::layout(area, view.compare, sizing, pixels_per_point, framing);
+        let sizing = crate::app::panels::canvas::sizing(&self.state);
+        let lay = crate::app::panels::canvas_layout::layout(
+            area,
+            view.compare,
+            sizing,
+            pixels_per_point,
+            framing,
+        );
         let gpu = compare_image::other_view(self.compare_image.as_ref(), view.gpu, &self.gpu_view);
-        super::canvas::views_of(&lay, &self.state, gpu.is_some(), output.size[0])
+        crate::app::panels::canvas::views_of(&lay, &self.state, gpu.is_some(), output.size[0])
     }
 
     /// The magnifier's contents, when it is on and a pixel is pinned; its title `text_size`
@@ -405,7 +416,7 @@ impl BaryApp {
             return Some(format!("{n} · {}", step.title.get(lang)));
         }
         self.last_preset
-            .map(|p| super::controls::preset_name(p, lang))
+            .map(|p| crate::app::panels::controls::preset_name(p, lang))
     }
 }
 
@@ -414,12 +425,12 @@ fn present_plot(
     ui: &mut egui::Ui,
     (plot, lines): (
         crate::lesson::LessonPlot,
-        Option<(u32, super::plots::PlotLines)>,
+        Option<(u32, crate::app::panels::plots::PlotLines)>,
     ),
     lang: crate::i18n::Lang,
     hovered_column: &mut Option<u32>,
 ) -> Vec<AppCommand> {
-    command::all(super::plots::plot_ui(
+    command::all(crate::app::panels::plots::plot_ui(
         ui,
         plot,
         lines,
@@ -468,12 +479,13 @@ fn below_height(
     if compare != crate::figure::Compare::SideBySide {
         return None;
     }
-    let margin = side_panels::CANVAS_MARGIN + super::canvas_layout::HANDLE_MARGIN;
-    let each = (rect.width() - 2.0 * margin - super::canvas::SIDE_BY_SIDE_GAP) / 2.0;
+    let margin = side_panels::CANVAS_MARGIN + crate::app::panels::canvas_layout::HANDLE_MARGIN;
+    let each =
+        (rect.width() - 2.0 * margin - crate::app::panels::canvas_layout::SIDE_BY_SIDE_GAP) / 2.0;
     let used = each.max(0.0) / aspect.max(0.01)
         + framing.title_strip
         + 2.0 * side_panels::CANVAS_MARGIN
-        + super::canvas_layout::HANDLE_MARGIN;
+        + crate::app::panels::canvas_layout::HANDLE_MARGIN;
     let room = (rect.height() - used).max(BELOW_MAX_SHARE * rect.height());
     let least = present::card_height_wide(BELOW_MIN_TEXT, spacing);
     (room >= least).then(|| room.min(present::card_height_wide(OVER_MAX_TEXT, spacing)))
@@ -524,11 +536,11 @@ fn beside_width(
     } else {
         1.0
     };
-    let margin = side_panels::CANVAS_MARGIN + super::canvas_layout::HANDLE_MARGIN;
+    let margin = side_panels::CANVAS_MARGIN + crate::app::panels::canvas_layout::HANDLE_MARGIN;
     let height = rect.height()
         - 2.0 * side_panels::CANVAS_MARGIN
         - framing.title_strip
-        - super::canvas_layout::HANDLE_MARGIN;
+        - crate::app::panels::canvas_layout::HANDLE_MARGIN;
     let image = views * height.max(0.0) * aspect + 2.0 * margin;
     let free = rect.width() - image;
     // Beside is better than over whenever its text is no smaller than the card over the
@@ -556,7 +568,7 @@ const BESIDE_SHRINK: f32 = 0.8;
 /// An open side panel's first row: its name and a button that folds it to a strip (so a panel
 /// opened on a small window, where the canvas gave way, is as easily put away).
 fn fold_row(ui: &mut egui::Ui, left: bool, name: &str) -> Vec<AppCommand> {
-    let lang = super::locale::lang(ui.ctx());
+    let lang = crate::app::services::locale::lang(ui.ctx());
     let mut folded = false;
     ui.horizontal(|ui| {
         ui.label(egui::RichText::new(name).strong());
@@ -573,9 +585,9 @@ fn fold_row(ui: &mut egui::Ui, left: bool, name: &str) -> Vec<AppCommand> {
     }
     vec![
         if left {
-            state::Command::SetShowControls(false)
+            state::StateCommand::SetShowControls(false)
         } else {
-            state::Command::SetShowInspector(false)
+            state::StateCommand::SetShowInspector(false)
         }
         .into(),
     ]
@@ -584,7 +596,7 @@ fn fold_row(ui: &mut egui::Ui, left: bool, name: &str) -> Vec<AppCommand> {
 /// A collapsed side panel: a strip with one button that opens it (and lets it have the room
 /// first).
 fn strip(ui: &mut egui::Ui, id: &'static str, left: bool, name: &str) -> Vec<AppCommand> {
-    let lang = super::locale::lang(ui.ctx());
+    let lang = crate::app::services::locale::lang(ui.ctx());
     let mut out = Vec::new();
     let panel = if left {
         egui::Panel::left(id)
@@ -603,9 +615,9 @@ fn strip(ui: &mut egui::Ui, id: &'static str, left: bool, name: &str) -> Vec<App
             {
                 out.push(
                     if left {
-                        state::Command::SetShowControls(true)
+                        state::StateCommand::SetShowControls(true)
                     } else {
-                        state::Command::SetShowInspector(true)
+                        state::StateCommand::SetShowInspector(true)
                     }
                     .into(),
                 );

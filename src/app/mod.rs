@@ -4,76 +4,38 @@
 //! How it fits together: panels read the state and return commands; [`BaryApp::show`] lays the
 //! panels out and then applies every command of the frame in one place, in order.
 //!
-//! - The document: [`state`] (scene, view settings, [`state::Command`]), [`persist`] (what is
-//!   saved between runs), [`edit`] and [`presets`] (scene edits, no egui).
-//! - Commands: [`command::AppCommand`], one enum for every panel's requests.
-//! - Panels, one per file, each a `*_ui` function that takes what it shows and returns
-//!   commands: `top_bar`, `file_menu`, `path_window`, `banner`, `controls`,
-//!   `image_size`, [`canvas`], `inspector`, `present`, `status`, `help`, [`export`],
-//!   [`bench_panel`] (with `bench_chart`), [`lessons`] (the Lessons panel, its
-//!   presentation strip and menu), `plots` (the pinned row's plot), [`gpu_view`] (barylab
-//!   beside this computer's OpenGL; `other_image` shows its other image), [`compare_image`]
-//!   (File > Compare with image…: an image file as the other image), `tie_rule`, and the
-//!   keyboard `shortcuts`; `options` is [`AppOptions`].
-//! - Around them: `layout` (side panels, canvas, presentation card; `side_panels` is the
-//!   arithmetic), `history` (undo and redo), `access` (what tests read).
-//! - Behind the panels: [`files`] (opening a file, all checked first), `render` (the
-//!   canvas's renders and their cache), `textures` (the scene's texture), `pixel` and
-//!   `reports` (the inspector's probe of a pixel, one prober per render), `paint` (overlays
-//!   with egui), `dialog` (native file dialogs), `screenshot` (window screenshots),
-//!   `style` (text sizes, zoom), `locale` (the language the panels show, from the
-//!   catalogues' `app:` section, and the Chinese font).
+//! - [`document`]: the scene and the view settings ([`document::state`], changed by
+//!   [`document::state::StateCommand`]), their edits and presets (no egui), the undo history
+//!   and what is saved between runs ([`document::persist`]); [`AppOptions`] (the command line's
+//!   choices).
+//! - [`command::AppCommand`]: one enum for every panel's requests; each part has its own
+//!   `*Command` enum (`StateCommand`, `FileCommand`, `ExportCommand`, `BenchCommand`,
+//!   `LessonCommand`) that converts into it.
+//! - [`panels`]: one per file, each a `*_ui` function that takes what it shows and returns
+//!   commands (the top bar, File menu, typed-path window, banner, controls, canvas, inspector,
+//!   presentation card and magnifier, status line, help, export, benchmark, lessons, row plot,
+//!   GPU view, image compare, 3D view, samples and tie-rule controls).
+//! - [`services`]: behind the panels: the canvas's renders and their cache, the scene's
+//!   texture, the pixel reports (one prober per render), opening files (all checked first),
+//!   native dialogs, window screenshots, text sizes, and the language the panels show.
+//! - Here: `window` (eframe), `layout` (side panels, canvas, presentation; `side_panels` is the
+//!   arithmetic), `shortcuts` (the keyboard) and `access` (what tests read).
 //!
 //! The overlays and the difference heatmap are described in [`crate::figure`], which the
 //! exported figures share.
 
+pub mod document;
+pub mod panels;
+pub mod services;
+
 pub(crate) mod access;
-pub(crate) mod banner;
-pub(crate) mod bench_chart;
-pub mod bench_panel;
-pub mod canvas;
-pub(crate) mod canvas_layout;
 pub mod command;
-pub mod compare_image;
 mod options;
 pub use options::AppOptions;
-pub(crate) mod controls;
-mod corners;
-pub(crate) mod dialog;
-pub mod edit;
-pub mod export;
-pub(crate) mod file_menu;
-pub mod files;
-pub mod gpu_view;
-pub(crate) mod help;
-pub(crate) mod history;
-pub(crate) mod image_size;
-pub(crate) mod inspector;
+pub(crate) mod language;
 pub(crate) mod layout;
-pub mod lessons;
-pub(crate) mod locale;
-pub(crate) mod magnifier;
-mod other_image;
-pub(crate) mod paint;
-pub(crate) mod path_window;
-pub mod persist;
-pub(crate) mod pixel;
-pub(crate) mod plots;
-pub(crate) mod present;
-pub mod presets;
-pub(crate) mod render;
-pub(crate) mod reports;
-pub(crate) mod samples_control;
-pub(crate) mod screenshot;
 pub(crate) mod shortcuts;
 pub(crate) mod side_panels;
-pub(crate) mod space_view;
-pub mod state;
-pub(crate) mod status;
-pub(crate) mod style;
-pub(crate) mod textures;
-pub(crate) mod tie_rule;
-pub(crate) mod top_bar;
 mod window;
 
 pub use window::run;
@@ -83,20 +45,22 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Instant;
 
-use self::banner::Banner;
-use self::bench_panel::BenchPanel;
-use self::canvas::CanvasState;
 use self::command::AppCommand;
-use self::export::{ExportContext, ExportPanel};
-use self::file_menu::FilePicker;
-use self::files::{FileCommand, OpenedFile, RecentFiles};
-use self::persist::{STORAGE_KEY, SavedState};
-use self::reports::PixelReports;
-use self::screenshot::StartupShot;
+use self::command::FileCommand;
+use self::document::persist::RecentFiles;
+use self::document::persist::{STORAGE_KEY, SavedState};
+use self::document::state::AppState;
+use self::panels::banner::Banner;
+use self::panels::bench_panel::BenchPanel;
+use self::panels::canvas::CanvasState;
+use self::panels::export::{ExportContext, ExportPanel};
+use self::panels::file_menu::FilePicker;
+use self::panels::status::{Cause, FrameTiming, Message};
+use self::services::files::OpenedFile;
+use self::services::reports::PixelReports;
+use self::services::screenshot::StartupShot;
+use self::services::textures::{TextureCache, texture_key};
 use self::side_panels::Side;
-use self::state::AppState;
-use self::status::{Cause, FrameTiming, Message};
-use self::textures::{TextureCache, texture_key};
 use crate::i18n::Lang;
 use crate::raster::Texture;
 
@@ -144,29 +108,29 @@ pub struct BaryApp {
     /// Presentation mode: panels hidden, the pixel card in large print.
     presenting: bool,
     /// The preset loaded last (Page Down / Page Up step on from it).
-    last_preset: Option<presets::Preset>,
+    last_preset: Option<document::presets::Preset>,
     /// What presentation mode's boxes must not hide, for the render shown.
-    corner_marks: std::cell::RefCell<corners::MarkCache>,
+    corner_marks: std::cell::RefCell<panels::corners::MarkCache>,
     /// The side panel asked for last: it gets the room when both do not fit.
     panel_first: Side,
     /// The side panel the user opened, which opens even where the canvas's share leaves no
     /// room (the canvas gives way), until it is folded again.
     panel_forced: Option<Side>,
-    history: history::History,
+    history: document::history::History,
     /// The scene file the scene came from or was saved to last (File > Save writes it).
     scene_file: Option<PathBuf>,
     /// The language chosen (English when Chinese was asked for but no CJK font is installed).
     lang: Lang,
     /// Whether egui has a font with Chinese glyphs.
-    fonts: locale::Fonts,
+    fonts: services::locale::Fonts,
     /// The open lesson (with the user's own state set aside) and the lesson file dialog.
-    lessons: lessons::Lessons,
+    lessons: panels::lessons::Lessons,
     /// The GPU view's context, GL objects and last comparison.
-    gpu_view: gpu_view::GpuView,
+    gpu_view: panels::gpu_view::GpuView,
     /// The image compared with the canvas's render (File > Compare with image…).
-    compare_image: Option<compare_image::ImageCompare>,
+    compare_image: Option<panels::compare_image::ImageCompare>,
     /// The 3D view's orbit and scene.
-    space_view: space_view::SpaceView,
+    space_view: panels::space_view::SpaceView,
 }
 
 impl BaryApp {
@@ -177,7 +141,7 @@ impl BaryApp {
     }
 
     /// [`BaryApp::new`] that also keeps its state in `state_file` (see
-    /// [`persist::state_file`]): read first on start, written atomically on save.
+    /// [`document::persist::state_file`]): read first on start, written atomically on save.
     pub fn new_with_state_file(
         storage: Option<&dyn eframe::Storage>,
         options: AppOptions,
@@ -187,9 +151,11 @@ impl BaryApp {
         let mut lang = options.system_lang;
         let mut state = AppState::default();
         let mut recent = RecentFiles::default();
-        let mut export_settings = export::ExportSettings::default();
+        let mut export_settings = document::export_settings::ExportSettings::default();
         let state_file = state_file.filter(|_| options.persist);
-        let from_file = state_file.as_deref().and_then(persist::read_state_file);
+        let from_file = state_file
+            .as_deref()
+            .and_then(document::persist::read_state_file);
         if options.persist
             && let Some(saved) = from_file
                 .or_else(|| storage.and_then(|s| eframe::get_value::<SavedState>(s, STORAGE_KEY)))
@@ -243,13 +209,13 @@ impl BaryApp {
             corner_marks: Default::default(),
             panel_first: Side::default(),
             panel_forced: None,
-            history: history::History::default(),
+            history: document::history::History::default(),
             scene_file: None,
             lang,
-            fonts: locale::Fonts::new(options.no_cjk_font),
-            lessons: lessons::Lessons::default(),
-            gpu_view: gpu_view::GpuView::new(options.screenshot.is_some()),
-            space_view: space_view::SpaceView::default(),
+            fonts: services::locale::Fonts::new(options.no_cjk_font),
+            lessons: panels::lessons::Lessons::default(),
+            gpu_view: panels::gpu_view::GpuView::new(options.screenshot.is_some()),
+            space_view: panels::space_view::SpaceView::default(),
             compare_image: None,
         };
         if let Some(path) = &options.compare_image {
@@ -265,7 +231,7 @@ impl BaryApp {
             app.enter_lesson(lesson, step);
         }
         if let Some(p) = options.pin {
-            app.push(state::Command::Pin(Some(p)));
+            app.push(document::state::StateCommand::Pin(Some(p)));
         }
         if let Some(e) = options.startup_error {
             app.set_error(e);
@@ -280,7 +246,7 @@ impl BaryApp {
         if let Some(out) = &self.canvas.output {
             scene.set_size(out.size[0], out.size[1]);
         }
-        match files::save(path, &scene, self.state.scene_dir.as_deref(), self.lang) {
+        match services::files::save(path, &scene, self.state.scene_dir.as_deref(), self.lang) {
             Ok(done) => {
                 self.message = Some(Message::note(done));
                 self.scene_file = Some(path.to_path_buf());
@@ -292,7 +258,7 @@ impl BaryApp {
 
     /// Applies a file that loaded.
     fn opened(&mut self, opened: OpenedFile) {
-        if matches!(opened.what, files::Opened::Scene { .. }) {
+        if matches!(opened.what, services::files::Opened::Scene { .. }) {
             // A model is not a scene file: Save asks where.
             self.scene_file = opened
                 .path
@@ -311,7 +277,7 @@ impl BaryApp {
     /// menu and drag-and-drop do. Everything is loaded and checked first: on failure the
     /// current scene stays exactly as it was and the banner names the file and the problem.
     pub fn open_file(&mut self, path: &Path) {
-        match files::open(path, &self.state.scene, self.lang) {
+        match services::files::open(path, &self.state.scene, self.lang) {
             Ok(opened) => self.opened(opened),
             Err(e) => self.banner = Some(Banner::failed(e, self.lang)),
         }
@@ -331,11 +297,11 @@ impl BaryApp {
         let start = Instant::now();
         let ctx = ui.ctx().clone();
         if !self.styled {
-            style::apply_style(&ctx);
+            services::style::apply_style(&ctx);
             self.styled = true;
         }
         self.sync_lang(&ctx);
-        style::sync_zoom(&ctx, &mut self.applied_zoom, &mut self.state.view.ui_scale);
+        services::style::sync_zoom(&ctx, &mut self.applied_zoom, &mut self.state.view.ui_scale);
         self.commands.extend(shortcuts::shortcuts(
             &ctx,
             &shortcuts::ShortcutInput {
@@ -369,7 +335,7 @@ impl BaryApp {
         let key = texture_key(&self.state.scene, self.state.scene_dir.as_deref());
         match texture_error {
             Some(e) => self.message = Some(Message::error(e, Some(Cause::Texture(key)))),
-            None => status::clear_if(
+            None => panels::status::clear_if(
                 &mut self.message,
                 |c| matches!(c, Cause::Texture(k) if *k != key),
             ),
@@ -398,7 +364,7 @@ impl BaryApp {
         );
         match error {
             Some(e) => self.message = Some(Message::error(e, Some(Cause::Probe))),
-            None => status::clear_if(&mut self.message, |c| *c == Cause::Probe),
+            None => panels::status::clear_if(&mut self.message, |c| *c == Cause::Probe),
         }
         if self.canvas.hover != hover_before || reports_before != self.reports.key() {
             // The inspector and overlay drew last frame's pixel; draw again with this one.
@@ -409,7 +375,8 @@ impl BaryApp {
         self.export_message(&ctx, outcome_before);
         self.commands.splice(0..0, command::all(picked));
         // (Only a frame with commands can change the scene; a scene can be large.)
-        let before = (!self.commands.is_empty()).then(|| history::Snapshot::of(&self.state));
+        let before =
+            (!self.commands.is_empty()).then(|| document::history::Snapshot::of(&self.state));
         self.apply_commands(&ctx, &texture);
         // A drag (a button held) is one undo step, taken when it is released.
         let held = ctx.input(|i| i.pointer.any_down());
@@ -439,9 +406,9 @@ impl BaryApp {
             return;
         }
         egui::Panel::top("top").show(ui, |ui| {
-            out.extend(top_bar::top_bar_ui(
+            out.extend(panels::top_bar::top_bar_ui(
                 ui,
-                &top_bar::TopBarInput {
+                &panels::top_bar::TopBarInput {
                     state: &self.state,
                     recent: &self.recent,
                     dialog_waiting: self.picker.waiting(),
@@ -455,21 +422,25 @@ impl BaryApp {
                 },
             ));
         });
-        banner::expire_banner(&ctx, &mut self.banner);
+        panels::banner::expire_banner(&ctx, &mut self.banner);
         if let Some(b) = &self.banner {
             egui::Panel::top("banner").show(ui, |ui| {
-                out.extend(command::all(banner::banner_ui(ui, b)));
+                out.extend(command::all(panels::banner::banner_ui(ui, b)));
             });
         }
-        out.extend(command::all(path_window::path_window_ui(
+        out.extend(command::all(panels::path_window::path_window_ui(
             &ctx,
-            &mut self.picker.path_window,
+            &self.picker.path_window,
         )));
         if let Some((view, folder_text)) = self.export.view() {
-            out.extend(command::all(export::export_ui(&ctx, &view, folder_text)));
+            out.extend(command::all(panels::export::export_ui(
+                &ctx,
+                &view,
+                folder_text,
+            )));
         }
         egui::Panel::bottom("status").show(ui, |ui| {
-            status::status_ui(
+            panels::status::status_ui(
                 ui,
                 &self.state,
                 &self.canvas,
@@ -481,19 +452,27 @@ impl BaryApp {
         self.side_panels_ui(ui, &mut out);
         self.canvas.avoid.clear();
         self.space_panel(ui);
-        self.canvas_panel(ui, texture, canvas_layout::Framing::NORMAL, &mut out);
+        self.canvas_panel(
+            ui,
+            texture,
+            panels::canvas_layout::Framing::NORMAL,
+            &mut out,
+        );
         self.plot_window(&ctx, texture, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(lang.tr("app.help.title"))
             .id(egui::Id::unique("help-window"))
             .open(&mut help_open)
             .default_width(620.0)
-            .show(&ctx, help::help_ui);
+            .show(&ctx, panels::help::help_ui);
         if help_open != self.help_open {
             out.push(AppCommand::SetHelpOpen(help_open));
         }
         self.bench.frame(&ctx);
-        out.extend(command::all(bench_panel::bench_ui(&ctx, &self.bench)));
+        out.extend(command::all(panels::bench_panel::bench_ui(
+            &ctx,
+            &self.bench,
+        )));
         self.commands.extend(out);
     }
 
@@ -525,35 +504,35 @@ impl BaryApp {
         match command {
             AppCommand::State(c) => {
                 match c {
-                    state::Command::Preset(p) => self.last_preset = Some(p),
-                    state::Command::SetShowControls(true) => {
+                    document::state::StateCommand::Preset(p) => self.last_preset = Some(p),
+                    document::state::StateCommand::SetShowControls(true) => {
                         self.panel_first = Side::Controls;
                         self.panel_forced = Some(Side::Controls);
                     }
-                    state::Command::SetShowInspector(true) => {
+                    document::state::StateCommand::SetShowInspector(true) => {
                         self.panel_first = Side::Inspector;
                         self.panel_forced = Some(Side::Inspector);
                     }
-                    state::Command::SetShowControls(false)
+                    document::state::StateCommand::SetShowControls(false)
                         if self.panel_forced == Some(Side::Controls) =>
                     {
                         self.panel_forced = None;
                     }
-                    state::Command::SetShowInspector(false)
+                    document::state::StateCommand::SetShowInspector(false)
                         if self.panel_forced == Some(Side::Inspector) =>
                     {
                         self.panel_forced = None;
                     }
-                    state::Command::SetGpuView(true) => self.compare_image = None,
+                    document::state::StateCommand::SetGpuView(true) => self.compare_image = None,
                     _ => {}
                 }
                 // A new scene leaves every error about the old one behind.
                 let fresh = matches!(
                     c,
-                    state::Command::Preset(_)
-                        | state::Command::ResetScene
-                        | state::Command::ResetAll
-                        | state::Command::OpenScene(..)
+                    document::state::StateCommand::Preset(_)
+                        | document::state::StateCommand::ResetScene
+                        | document::state::StateCommand::ResetAll
+                        | document::state::StateCommand::OpenScene(..)
                 );
                 match self.state.apply(c) {
                     Err(e) => {
@@ -565,7 +544,7 @@ impl BaryApp {
                             self.message = None;
                         }
                     }
-                    Ok(()) => status::clear_if(&mut self.message, |c| *c == Cause::Edit),
+                    Ok(()) => panels::status::clear_if(&mut self.message, |c| *c == Cause::Edit),
                 }
             }
             AppCommand::Export(c) => {
@@ -618,7 +597,7 @@ impl BaryApp {
 
 impl BaryApp {
     /// Puts a new outcome of the Export panel on the status line.
-    fn export_message(&mut self, ctx: &egui::Context, before: Option<export::Outcome>) {
+    fn export_message(&mut self, ctx: &egui::Context, before: Option<panels::export::Outcome>) {
         if self.export.outcome != before
             && let Some(o) = &self.export.outcome
         {

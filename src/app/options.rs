@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use super::files;
+use crate::app::services::files;
 use crate::i18n::Lang;
 use crate::scene::Scene;
 

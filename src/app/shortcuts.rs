@@ -1,14 +1,14 @@
-//! The keyboard shortcuts (listed in the help window, [`super::help`]). They read the state and
+//! The keyboard shortcuts (listed in the help window, [`crate::app::panels::help`]). They read the state and
 //! return commands, like the panels.
 
 use egui::{Key, Modifiers};
 
-use super::command::AppCommand;
-use super::export::ExportCommand;
-use super::files::FileCommand;
-use super::lessons::LessonCommand;
-use super::presets::Preset;
-use super::state::{AppState, Command, PIXEL_SIZE_RANGE};
+use crate::app::command::AppCommand;
+use crate::app::command::ExportCommand;
+use crate::app::command::FileCommand;
+use crate::app::command::LessonCommand;
+use crate::app::document::presets::Preset;
+use crate::app::document::state::{AppState, PIXEL_SIZE_RANGE, StateCommand};
 use crate::figure::Compare;
 
 /// What the shortcuts depend on besides the state.
@@ -38,9 +38,9 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
     let mut extra: Vec<AppCommand> = Vec::new();
     ctx.input_mut(|i| {
         let mut key = |k| i.consume_key(none, k);
-        let mut state = |c: Command| cmds.push(c.into());
+        let mut state = |c: StateCommand| cmds.push(c.into());
         if key(Key::P) {
-            state(Command::ToggleMode);
+            state(StateCommand::ToggleMode);
         }
         for (k, c) in [
             (Key::Num1, Compare::Single),
@@ -49,22 +49,22 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
             (Key::Num4, Compare::Difference),
         ] {
             if key(k) {
-                state(Command::SetCompare(c));
+                state(StateCommand::SetCompare(c));
             }
         }
         let options = input.state.options();
         let view = &input.state.view;
         if key(Key::W) {
-            state(Command::SetWireframe(!options.wireframe));
+            state(StateCommand::SetWireframe(!options.wireframe));
         }
         if key(Key::G) {
-            state(Command::SetShowGrid(!view.show_grid));
+            state(StateCommand::SetShowGrid(!view.show_grid));
         }
         if key(Key::M) {
-            state(Command::SetShowMagnifier(!view.show_magnifier));
+            state(StateCommand::SetShowMagnifier(!view.show_magnifier));
         }
         if key(Key::H) {
-            state(Command::SetShowHandles(!view.show_handles));
+            state(StateCommand::SetShowHandles(!view.show_handles));
         }
         // S: step along the pinned row's span (the scanline rasterizer's order).
         if view.rasterizer == crate::raster::render::Rasterizer::Scanline && key(Key::S) {
@@ -74,16 +74,16 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         let (w, h) = input.state.scene.size();
         if key(Key::OpenBracket) {
             state(if view.fit_window {
-                Command::SetPixelSize(smaller_pixel(view.pixel_size))
+                StateCommand::SetPixelSize(smaller_pixel(view.pixel_size))
             } else {
-                Command::SetImageSize(Some(step_size([w, h], false)))
+                StateCommand::SetImageSize(Some(step_size([w, h], false)))
             });
         }
         if key(Key::CloseBracket) {
             state(if view.fit_window {
-                Command::SetPixelSize(larger_pixel(view.pixel_size))
+                StateCommand::SetPixelSize(larger_pixel(view.pixel_size))
             } else {
-                Command::SetImageSize(Some(step_size([w, h], true)))
+                StateCommand::SetImageSize(Some(step_size([w, h], true)))
             });
         }
         // Escape closes an open menu or popup first (egui does), then the help window, then
@@ -94,7 +94,7 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
             } else if input.presenting {
                 extra.push(AppCommand::SetPresenting(false));
             } else {
-                state(Command::Pin(None));
+                state(StateCommand::Pin(None));
             }
         }
         if key(Key::F5) {
@@ -105,7 +105,10 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
                 if input.lesson_open {
                     extra.push(lesson_step(forward));
                 } else {
-                    state(Command::Preset(step_preset(input.last_preset, forward)));
+                    state(StateCommand::Preset(step_preset(
+                        input.last_preset,
+                        forward,
+                    )));
                 }
             }
         }
@@ -122,7 +125,7 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
             }
         }
         if key(Key::Home) {
-            state(Command::ResetCamera);
+            state(StateCommand::ResetCamera);
         }
         if key(Key::F1) {
             help = true;
@@ -137,7 +140,7 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
                 (Key::ArrowDown, 0, 1),
             ] {
                 if key(k) {
-                    state(Command::MovePin { dx, dy, size });
+                    state(StateCommand::MovePin { dx, dy, size });
                 }
             }
         }
@@ -151,7 +154,7 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
             extra.push(AppCommand::Undo);
         }
         if i.consume_key(Modifiers::COMMAND, Key::R) {
-            state(Command::ResetScene);
+            state(StateCommand::ResetScene);
         }
         if i.consume_key(Modifiers::COMMAND, Key::O) {
             cmds.push(FileCommand::OpenDialog.into());
@@ -201,7 +204,7 @@ fn larger_pixel(p: u32) -> u32 {
 /// itself at either end.
 fn step_size(size: [u32; 2], larger: bool) -> [u32; 2] {
     let count = |s: [u32; 2]| u64::from(s[0]) * u64::from(s[1]);
-    let sizes = super::image_size::IMAGE_SIZES;
+    let sizes = crate::app::panels::image_size::IMAGE_SIZES;
     let next = if larger {
         sizes.iter().find(|s| count(**s) > count(size))
     } else {

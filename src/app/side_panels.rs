@@ -1,7 +1,7 @@
 //! How wide the side panels may be: the canvas keeps at least half of the window's area, so a
 //! panel that does not fit collapses to a strip instead of crushing the canvas. Pure
 //! arithmetic in points (so text size is included); the panels themselves are laid out in
-//! [`super::BaryApp`].
+//! [`crate::app::BaryApp`].
 
 /// The canvas's least share of the window's area.
 pub const CANVAS_SHARE: f32 = 0.5;

@@ -3,9 +3,9 @@
 
 use std::sync::{Arc, Mutex};
 
-use super::persist::{self, STORAGE_KEY, SavedState};
-use super::screenshot::{self, ShotSlot};
-use super::{AppError, AppOptions, BaryApp, SAVE_STATE_FAILED};
+use crate::app::document::persist::{self, STORAGE_KEY, SavedState};
+use crate::app::services::screenshot::{self, ShotSlot};
+use crate::app::{AppError, AppOptions, BaryApp, SAVE_STATE_FAILED};
 
 /// Default window size in points.
 const WINDOW_SIZE: [f32; 2] = [1500.0, 950.0];

@@ -268,9 +268,9 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         h,
     )?;
     // The figure draws the scene as it is: the options become the scene's own.
-    barylab::app::edit::set_options(
+    barylab::app::document::edit::set_options(
         &mut scene,
-        barylab::app::edit::SceneOptions {
+        barylab::app::document::edit::SceneOptions {
             mode: settings.mode,
             shading: settings.shading,
             filter: settings.filter,

@@ -168,7 +168,7 @@ pub(super) fn parse_compare(s: &str) -> Result<(barylab::figure::Compare, bool),
 }
 
 pub(super) fn parse_text_size(s: &str) -> Result<f32, String> {
-    let (lo, hi) = barylab::app::state::UI_SCALE_RANGE;
+    let (lo, hi) = barylab::app::document::state::UI_SCALE_RANGE;
     match s.trim().parse::<f32>() {
         Ok(v) if (lo..=hi).contains(&v) => Ok(v),
         _ => Err(format!("text size `{s}`: a number from {lo} to {hi}")),

@@ -334,7 +334,7 @@ const HEATMAP_CHUNK: usize = 16 * 1024;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::app::presets::Preset;
+    use crate::app::document::presets::Preset;
     use crate::raster::{Texture, render};
 
     #[test]

@@ -397,10 +397,13 @@ pub fn fit(text_width: f32, fixed: f32, clip: Box2) -> f32 {
 /// there to be readable when zoomed in.
 pub const PAIR_MIN_FIT: f32 = 0.02;
 
-/// [`place_label`], but clear of the labels (and handles) already placed: of the box at its
-/// own side of `base` (pushed inside `clip`, else as [`place_label`] places it) and the boxes
-/// mirrored left-right, up-down and both, the first that overlaps none of `placed`; when all four do, the nearest free place found by moving them (up to
-/// [`AVOID_STEPS`] half-heights or half-widths); else the place overlapping them least.
+/// [`place_label`], but clear of the labels already placed (`placed`) and of what must stay
+/// visible (`keep_clear`: the handles, colour bars, cards): of the box at its own side of `base`
+/// (pushed inside `clip`, else as [`place_label`] places it) and the boxes mirrored left-right,
+/// up-down and both, the first that overlaps none of them; when all four do, the nearest free
+/// place found by moving them (up to [`AVOID_STEPS`] half-heights or half-widths); else the
+/// place overlapping them least, an overlap with `keep_clear` counting [`KEEP_CLEAR_COST`]
+/// times its area (a label covering another label is better than one hiding a handle).
 /// Neighbouring corners' labels on a small image go to different sides instead of on top of
 /// each other.
 ///
@@ -410,8 +413,14 @@ pub const PAIR_MIN_FIT: f32 = 0.02;
 /// let clip = [0.0, 0.0, 100.0, 100.0];
 /// let first = place_label([50.0, 50.0], [2.0, 2.0], Anchor::LeftTop, [20.0, 10.0], clip);
 /// let second = place_label_avoiding([52.0, 52.0], [2.0, 2.0], Anchor::LeftTop, [20.0, 10.0],
-///                                   clip, &[first]);
+///                                   clip, &[first], &[]);
 /// assert_eq!(second, [30.0, 54.0, 50.0, 64.0]); // mirrored to the left of its point
+/// // Boxed in on every side within reach: it covers a label rather than a handle.
+/// let handle = [0.0, 0.0, 100.0, 50.0];
+/// let label = [0.0, 50.0, 100.0, 100.0];
+/// let b = place_label_avoiding([50.0, 50.0], [2.0, 2.0], Anchor::LeftTop, [20.0, 10.0],
+///                              clip, &[label], &[handle]);
+/// assert!(b[1] >= 50.0);
 /// ```
 pub fn place_label_avoiding(
     base: [f32; 2],
@@ -420,9 +429,10 @@ pub fn place_label_avoiding(
     size: [f32; 2],
     clip: Box2,
     placed: &[Box2],
+    keep_clear: &[Box2],
 ) -> Box2 {
-    let overlap = |b: Box2| -> f32 {
-        placed
+    let area = |b: Box2, boxes: &[Box2]| -> f32 {
+        boxes
             .iter()
             .map(|p| {
                 let w = (b[2].min(p[2]) - b[0].max(p[0])).max(0.0);
@@ -431,6 +441,7 @@ pub fn place_label_avoiding(
             })
             .sum()
     };
+    let overlap = |b: Box2| area(b, placed) + KEEP_CLEAR_COST * area(b, keep_clear);
     let candidates = [
         (anchor, offset),
         (anchor.flipped_x(), [-offset[0], offset[1]]),
@@ -482,6 +493,10 @@ pub fn place_label_avoiding(
     }
     best.map_or(boxes[1], |(_, b)| b)
 }
+
+/// How much worse [`place_label_avoiding`] counts covering a point of what must stay visible
+/// (a handle) than covering a point of another label.
+pub const KEEP_CLEAR_COST: f32 = 1000.0;
 
 /// The part of a handle of radius `radius` at `centre` that labels keep clear of: the square
 /// inside its circle (a label placed diagonally next to its own handle touches only the

@@ -39,9 +39,10 @@ pub(super) fn overlay(
     // handles and labels may use the margin around it. Consecutive shapes on the image share
     // one clipped group, so the painting order is kept.
     let mut in_image_group = false;
-    // The label boxes placed so far: a label goes where it covers none of them if it can.
-    // The handles are there from the start.
-    let mut placed: Vec<Box2> = overlay
+    // What labels keep clear of above all (handles, colour bars, what the caller shows over
+    // the canvas), then the label boxes placed so far: a label goes where it covers none of
+    // them if it can, and covers a label rather than a handle if it cannot.
+    let keep_clear: Vec<Box2> = overlay
         .shapes
         .iter()
         .filter_map(|shape| match shape {
@@ -61,6 +62,7 @@ pub(super) fn overlay(
             _ => None,
         })
         .collect();
+    let mut placed: Vec<Box2> = Vec::new();
     for shape in &overlay.shapes {
         let on_image = matches!(
             shape,
@@ -166,7 +168,15 @@ pub(super) fn overlay(
                 // A label with a box keeps clear of the others; a bare letter (a handle's
                 // name) stays where it is.
                 let b = if background.is_some() {
-                    text::place_label_avoiding(t.point(*at), *offset, *anchor, outer, clip, &placed)
+                    text::place_label_avoiding(
+                        t.point(*at),
+                        *offset,
+                        *anchor,
+                        outer,
+                        clip,
+                        &placed,
+                        &keep_clear,
+                    )
                 } else {
                     text::place_label(t.point(*at), *offset, *anchor, outer, clip)
                 };

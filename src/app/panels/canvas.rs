@@ -1,0 +1,665 @@
+//! The canvas panel: the CPU-rendered image (one or two views), the overlays, the vertex
+//! handles, hovering and pinning pixels. The renders themselves: `crate::app::services::render`.
+
+use std::time::Instant;
+
+use egui::{Color32, CursorIcon, Id, Pos2, Rect, Sense, TextureHandle, TextureOptions, Ui};
+use glam::DVec2;
+
+use crate::app::document::state::{AppState, StateCommand};
+use crate::app::panels::canvas_layout::{Sizing, layout};
+use crate::app::panels::gpu_view::GpuView;
+use crate::app::panels::other_image;
+use crate::app::panels::paint::{self, CanvasTransform};
+use crate::app::services::pixel::PixelReport;
+use crate::app::services::render::{CanvasOutput, RenderCache, TextureKey, view_image};
+use crate::figure::overlay::{self, HandleMark, OverlayInput};
+use crate::figure::{Compare, VertexOnScreen, ViewContent, vertices_on_screen};
+use crate::raster::project::Viewport;
+use crate::raster::{Interpolation, Texture};
+use crate::scene::Scene;
+
+/// Points: extra grab radius around a handle.
+const HANDLE_GRAB_SLACK: f32 = 6.0;
+/// Points: the side of the square around the pinned pixel's marker that labels keep clear of.
+const PIN_CLEARANCE: f32 = 24.0;
+/// Seconds per pixel while stepping along the scanline span.
+const SPAN_STEP_SECONDS: f64 = 0.12;
+/// Steps the stepping rests on the span's last pixel before it starts again.
+const SPAN_PAUSE_STEPS: u32 = 8;
+/// Points: half-width of the wipe line's grab area.
+const WIPE_GRAB: f32 = 10.0;
+/// w factor per point of vertical Shift+drag: 100 points up doubles w roughly (e^0.7).
+const PUSH_PER_POINT: f64 = 0.007;
+/// w factor per point of scrolling.
+const PUSH_PER_SCROLL_POINT: f64 = 0.004;
+/// Model scenes: degrees the camera orbits per point dragged (a 450-point drag turns 180°).
+const ORBIT_DEG_PER_POINT: f64 = 0.4;
+/// Model scenes: the camera distance is multiplied by e^(-this) per point scrolled up.
+const ZOOM_PER_SCROLL_POINT: f64 = 0.004;
+
+/// Magnified pixels stay crisp squares; a large image shrunk into a small canvas is averaged
+/// rather than decimated.
+const VIEW_TEXTURE: TextureOptions = TextureOptions {
+    magnification: egui::TextureFilter::Nearest,
+    minification: egui::TextureFilter::Linear,
+    ..TextureOptions::NEAREST
+};
+
+/// One view on screen.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    /// Screen rectangle of the image, in points.
+    pub rect: Rect,
+    /// The view's share of the canvas (its image, title strip and margins), in points.
+    pub area: Rect,
+    /// Maps rendered-image pixels to screen points for this view.
+    pub transform: CanvasTransform,
+    /// What the view shows (a mode, the wipe, the difference heatmap).
+    pub content: ViewContent,
+}
+
+/// Timings of the last render, for the status line.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CanvasTiming {
+    /// Time the last render took, in milliseconds.
+    pub render_ms: f64,
+    /// Time the last texture upload to egui took, in milliseconds.
+    pub upload_ms: f64,
+    /// Renders made since start.
+    pub renders: u64,
+    /// Texture uploads made since start.
+    pub uploads: u64,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum DragKind {
+    Handle { index: usize, grab: DVec2 },
+    Wipe,
+}
+
+/// The canvas's state between frames (not saved).
+#[derive(Default)]
+pub struct CanvasState {
+    renders: RenderCache,
+    /// The last successful render (`None` until the first; kept when a later one fails).
+    pub output: Option<CanvasOutput>,
+    textures: Vec<TextureHandle>,
+    uploaded: Option<(u64, Compare, u32, Option<u64>)>,
+    drag: Option<DragKind>,
+    /// The views drawn last frame, left to right.
+    pub views: Vec<View>,
+    /// The pixel under the pointer, if it is over a view.
+    pub hover: Option<[u32; 2]>,
+    /// Timings of the last render and upload.
+    pub timing: CanvasTiming,
+    /// Why the last render failed, for the canvas to show.
+    pub error: Option<String>,
+    /// Screen pixels per rendered pixel as drawn (whole, 1 to 32): the overlay's grid and
+    /// the exported figure's pixel size.
+    pub pixel_size: u32,
+    /// The canvas's whole area on screen (points), the views inside it (`None` before the
+    /// first frame).
+    pub area: Option<Rect>,
+    /// What lies over the canvas (presentation mode's card, as placed last frame): labels
+    /// keep clear of it where they can.
+    pub avoid: Vec<Rect>,
+    /// The vertices whose handles were drawn last frame (every one of a scene of at most 32,
+    /// else only the pinned and hovered triangles' corners).
+    pub handles: Vec<usize>,
+    /// The scanline rasterizer steps along the pinned row's span (S starts and stops it).
+    pub span_play: bool,
+    /// When the stepping along the span started (egui's clock, seconds).
+    span_started: Option<f64>,
+}
+
+impl CanvasState {
+    /// The texture and image size of the view that shows `content`, else of the first view
+    /// (the magnifier enlarges what the canvas shows).
+    pub fn view_texture(&self, content: ViewContent) -> Option<(egui::TextureId, [u32; 2])> {
+        let out = self.output.as_ref()?;
+        let i = self
+            .views
+            .iter()
+            .position(|v| v.content == content)
+            .unwrap_or(0);
+        self.textures.get(i).map(|t| (t.id(), out.size))
+    }
+
+    /// Renders if anything the image depends on changed. Returns whether it rendered.
+    pub fn update(
+        &mut self,
+        state: &AppState,
+        compare: Compare,
+        size: [u32; 2],
+        texture: &Texture,
+        texture_key: TextureKey,
+    ) -> bool {
+        let generation = self.output.as_ref().map_or(0, |o| o.generation + 1);
+        match self
+            .renders
+            .update(state, compare, size, texture, texture_key, generation)
+        {
+            Ok(None) => false,
+            Ok(Some(r)) => {
+                if let Some(ms) = r.render_ms {
+                    self.timing.render_ms = ms;
+                    self.timing.renders += 1;
+                }
+                if let Some(old) = self.output.replace(r.output) {
+                    self.renders.recycle(old);
+                }
+                self.error = None;
+                true
+            }
+            Err(e) => {
+                self.error = Some(e);
+                false
+            }
+        }
+    }
+
+    /// Builds the view images and uploads them, only if the render, the GPU view's images or
+    /// the wipe moved.
+    fn upload(&mut self, ctx: &egui::Context, compare: Compare, wipe: f32, gpu: Option<&GpuView>) {
+        let Some(out) = &self.output else {
+            return;
+        };
+        let wipe_col = crate::figure::wipe_column(wipe, out.size[0]);
+        let tag = (out.generation, compare, wipe_col, gpu.map(|g| g.generation));
+        if self.uploaded == Some(tag) && self.textures.len() == self.views.len() {
+            return;
+        }
+        let start = Instant::now();
+        let images: Vec<egui::ColorImage> = self
+            .views
+            .iter()
+            .enumerate()
+            .map(|(i, v)| match gpu {
+                Some(g) => other_image::view_image(g, compare, i, wipe_col)
+                    .unwrap_or_else(|| view_image(out, g.fallback(), wipe_col)),
+                None => view_image(out, v.content, wipe_col),
+            })
+            .collect();
+        self.textures.truncate(images.len());
+        for (i, image) in images.into_iter().enumerate() {
+            match self.textures.get_mut(i) {
+                Some(t) => t.set(image, VIEW_TEXTURE),
+                None => {
+                    self.textures
+                        .push(ctx.load_texture(format!("canvas-{i}"), image, VIEW_TEXTURE))
+                }
+            }
+        }
+        self.uploaded = Some(tag);
+        self.timing.upload_ms = start.elapsed().as_secs_f64() * 1e3;
+        self.timing.uploads += 1;
+    }
+}
+
+/// Inputs the canvas needs besides its own state.
+pub(crate) struct CanvasInput<'a> {
+    /// The document the canvas renders and edits.
+    pub state: &'a AppState,
+    /// The scene's texture, loaded.
+    pub texture: &'a Texture,
+    /// Identifies the texture, so a new one triggers a new render.
+    pub texture_key: TextureKey,
+    /// Derivations of the hovered and pinned pixels from the last frame (for the overlay).
+    pub hover_report: Option<&'a PixelReport>,
+    /// The pinned pixel's derivation from the last frame (for the overlay).
+    pub pin_report: Option<&'a PixelReport>,
+    /// The GPU view, when it is on.
+    pub gpu: Option<&'a GpuView>,
+    /// How the images are framed (presentation mode: larger, a single view without title).
+    pub framing: crate::app::panels::canvas_layout::Framing,
+    /// The size of the overlay's marks (handles, labels, markers) relative to the usual:
+    /// larger in presentation mode, for the back of the room.
+    pub mark_scale: f32,
+}
+
+/// Most vertices whose handles and labels the canvas draws. A denser scene shows only the
+/// corners of the pinned and the hovered pixel's triangles: a label on every vertex of a mesh
+/// is unreadable, and each handle costs a widget and a text layout every frame (a 5,000
+/// triangle mesh took 42 s to its first frame with one for each).
+pub(crate) const MAX_HANDLES: usize = 32;
+
+/// The vertices whose handles are drawn: all `count` when there are at most [`MAX_HANDLES`],
+/// else the mesh corners of the triangles of `marks` (the pinned and hovered pixels), in
+/// order, each once.
+fn handle_indices(count: usize, marks: [Option<overlay::PixelMark>; 2]) -> Vec<usize> {
+    if count <= MAX_HANDLES {
+        return (0..count).collect();
+    }
+    let mut shown: Vec<usize> = Vec::new();
+    for k in marks
+        .iter()
+        .flatten()
+        .filter_map(|m| m.triangle)
+        .flat_map(|t| t.mesh_indices)
+        .flatten()
+    {
+        if k < count && !shown.contains(&k) {
+            shown.push(k);
+        }
+    }
+    shown
+}
+
+/// How the canvas sizes its image: to fit the window at the chosen pixel size, or the
+/// scene's own size.
+pub(crate) fn sizing(state: &AppState) -> Sizing {
+    let (w, h) = state.scene.size();
+    if state.view.fit_window {
+        Sizing::Fit {
+            aspect: w as f32 / h as f32,
+            pixel_size: state.view.pixel_size,
+        }
+    } else {
+        Sizing::Fixed([w, h])
+    }
+}
+
+/// The views of a canvas `lay`out, their transforms mapping pixels of an image `image_width`
+/// pixels wide (the render shown, which may be of another size than the layout's) to the
+/// screen; what each shows as the canvas draws it (`gpu`: the GPU view is on).
+pub(crate) fn views_of(
+    lay: &crate::app::panels::canvas_layout::Layout,
+    state: &AppState,
+    gpu: bool,
+    image_width: u32,
+) -> Vec<View> {
+    let compare = state.view.compare;
+    lay.views
+        .iter()
+        .zip(&lay.areas)
+        .map(|(&(rect, content), &area)| View {
+            rect,
+            area,
+            transform: CanvasTransform {
+                origin: rect.min,
+                scale: lay.scale * lay.size[0] as f32 / image_width.max(1) as f32,
+            },
+            content: match content {
+                ViewContent::Mode(_) if compare == Compare::Single || gpu => {
+                    ViewContent::Mode(state.options().mode)
+                }
+                c => c,
+            },
+        })
+        .collect()
+}
+
+/// The canvas panel. It renders and uploads what changed, and keeps its own widget state
+/// (views, hovered pixel, drag) in `canvas`; every change to the app is a returned command.
+pub(crate) fn canvas_ui(
+    ui: &mut Ui,
+    canvas: &mut CanvasState,
+    input: CanvasInput<'_>,
+) -> Vec<StateCommand> {
+    let lang = crate::app::services::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    let state = input.state;
+    let view_settings = &state.view;
+    let ppp = ui.ctx().pixels_per_point();
+    let available = ui.available_rect_before_wrap();
+    canvas.area = Some(available);
+    let lay = layout(
+        available,
+        view_settings.compare,
+        sizing(state),
+        ppp,
+        input.framing,
+    );
+    let size = lay.size;
+    canvas.pixel_size = lay.pixel_size(ppp);
+    let compare = other_image::render_compare(input.gpu, view_settings.compare);
+    canvas.update(
+        state,
+        compare,
+        size,
+        input.texture,
+        input.texture_key.clone(),
+    );
+    canvas.views = views_of(&lay, state, input.gpu.is_some(), lay.size[0]);
+    let (compare, wipe) = (view_settings.compare, view_settings.wipe);
+    canvas.upload(ui.ctx(), compare, wipe, input.gpu);
+    let Some(output) = &canvas.output else {
+        if let Some(e) = &canvas.error {
+            ui.colored_label(
+                Color32::LIGHT_RED,
+                lang.tr_with("app.canvas.render_failed", &[("error", e)]),
+            );
+        }
+        return out;
+    };
+    let viewport = output.viewport();
+    let vertices = vertices_on_screen(&state.scene, viewport);
+    let marks = [input.pin_report, input.hover_report].map(|r| r.map(PixelReport::mark));
+    let shown = if view_settings.show_handles {
+        handle_indices(vertices.len(), marks)
+    } else {
+        Vec::new()
+    };
+    canvas.handles.clone_from(&shown);
+    let painter = ui.painter().clone();
+    let base_id = Id::unique("canvas");
+    let mut hover = None;
+    let mut active_handle = None;
+
+    for (vi, view) in canvas.views.iter().enumerate() {
+        if let Some(tex) = canvas.textures.get(vi) {
+            painter.image(
+                tex.id(),
+                view.rect,
+                Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
+                Color32::WHITE,
+            );
+        }
+        let t = view.transform;
+        let is_model = matches!(state.scene, Scene::Model(_));
+        let sense = if is_model {
+            Sense::click_and_drag()
+        } else {
+            Sense::click()
+        };
+        let view_resp = ui.interact(view.rect, base_id.with(("view", vi)), sense);
+        if is_model {
+            model_camera_input(ui, &view_resp, t.scale, viewport, &mut out);
+        }
+        let pointer_pixel = |p: Pos2| -> Option<[u32; 2]> {
+            let c = t.to_canvas(p);
+            (c.x >= 0.0 && c.y >= 0.0 && c.x < f64::from(size[0]) && c.y < f64::from(size[1]))
+                .then(|| [c.x.floor() as u32, c.y.floor() as u32])
+        };
+        if ui.rect_contains_pointer(view.rect)
+            && let Some(p) = ui.ctx().pointer_hover_pos()
+        {
+            hover = pointer_pixel(p);
+        }
+        if view_resp.clicked()
+            && let Some(p) = view_resp.interact_pointer_pos().and_then(pointer_pixel)
+        {
+            let same = view_settings.pinned == Some(p);
+            out.push(StateCommand::Pin(if same { None } else { Some(p) }));
+        }
+        if view_resp.hovered() {
+            ui.ctx().set_cursor_icon(CursorIcon::Crosshair);
+        }
+
+        // The wipe line.
+        if view.content == ViewContent::Wipe {
+            let x = view.rect.left() + view_settings.wipe * view.rect.width();
+            let grab =
+                Rect::from_x_y_ranges((x - WIPE_GRAB)..=(x + WIPE_GRAB), view.rect.y_range());
+            let r = ui.interact(grab, base_id.with(("wipe", vi)), Sense::drag());
+            if r.hovered() || r.dragged() {
+                ui.ctx().set_cursor_icon(CursorIcon::ResizeHorizontal);
+            }
+            if r.drag_started() {
+                canvas.drag = Some(DragKind::Wipe);
+            }
+            if r.dragged()
+                && let Some(p) = r.interact_pointer_pos()
+            {
+                out.push(StateCommand::SetWipe(
+                    (p.x - view.rect.left()) / view.rect.width(),
+                ));
+            }
+            // No tooltip while dragging: it would cover what the drag changes.
+            if !r.dragged() {
+                r.on_hover_text(lang.tr("app.canvas.wipe_line"));
+            }
+        }
+
+        // Handles.
+        {
+            for &k in &shown {
+                let Some(win) = vertices.get(k).and_then(|v| v.window) else {
+                    continue;
+                };
+                let centre = t.to_screen(win);
+                let grab = Rect::from_center_size(
+                    centre,
+                    egui::Vec2::splat(2.0 * (overlay::HANDLE_RADIUS + HANDLE_GRAB_SLACK)),
+                );
+                if !view.rect.expand(overlay::HANDLE_RADIUS).intersects(grab) {
+                    continue;
+                }
+                let r = ui.interact(grab, base_id.with(("handle", vi, k)), Sense::drag());
+                if r.hovered() || r.dragged() {
+                    active_handle = Some(k);
+                    ui.ctx().set_cursor_icon(if r.dragged() {
+                        CursorIcon::Grabbing
+                    } else {
+                        CursorIcon::Grab
+                    });
+                }
+                // Grab offset from where the button went down, not from where the drag was
+                // recognised (a few points later), so the corner follows the pointer exactly.
+                if r.drag_started()
+                    && let Some(p) = ui
+                        .input(|i| i.pointer.press_origin())
+                        .or(r.interact_pointer_pos())
+                {
+                    canvas.drag = Some(DragKind::Handle {
+                        index: k,
+                        grab: t.to_canvas(p) - win,
+                    });
+                }
+                if r.dragged()
+                    && let Some(DragKind::Handle { index, grab }) = canvas.drag
+                    && index == k
+                {
+                    let shift = ui.input(|i| i.modifiers.shift);
+                    if shift {
+                        let dy = f64::from(r.drag_delta().y);
+                        if dy != 0.0 {
+                            out.push(StateCommand::PushVertex {
+                                index: k,
+                                factor: (-dy * PUSH_PER_POINT).exp(),
+                                viewport,
+                            });
+                        }
+                    } else if r.drag_delta() != egui::Vec2::ZERO
+                        && let Some(p) = r.interact_pointer_pos()
+                    {
+                        out.push(StateCommand::MoveVertex {
+                            index: k,
+                            to: t.to_canvas(p) - grab,
+                            viewport,
+                        });
+                    }
+                }
+                if r.hovered() {
+                    let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+                    if scroll != 0.0 {
+                        out.push(StateCommand::PushVertex {
+                            index: k,
+                            factor: (f64::from(scroll) * PUSH_PER_SCROLL_POINT).exp(),
+                            viewport,
+                        });
+                    }
+                }
+                if !r.dragged() {
+                    r.on_hover_text(lang.tr("app.canvas.handle_tip"));
+                }
+            }
+        }
+    }
+    if !ui.input(|i| i.pointer.any_down()) {
+        canvas.drag = None;
+    }
+    canvas.hover = hover;
+
+    // Overlays.
+    let handles: Vec<HandleMark> = shown
+        .iter()
+        .filter_map(|&k| Some((k, vertices.get(k)?)))
+        .map(|(k, v): (usize, &VertexOnScreen)| HandleMark {
+            index: k,
+            window: v.window,
+            w: v.w(),
+            active: active_handle == Some(k),
+        })
+        .collect();
+    // The GPU view: Some(whether it has a GPU image).
+    let gpu = input.gpu.map(|g| g.result.is_some());
+    // Steps taken along the scanline span since the stepping started (S).
+    let span_elapsed = if canvas.span_play
+        && view_settings.rasterizer == crate::raster::render::Rasterizer::Scanline
+        && view_settings.pinned.is_some()
+    {
+        let now = ui.input(|i| i.time);
+        let start = *canvas.span_started.get_or_insert(now);
+        ui.ctx()
+            .request_repaint_after(std::time::Duration::from_secs_f64(SPAN_STEP_SECONDS));
+        Some(((now - start) / SPAN_STEP_SECONDS).max(0.0) as u32)
+    } else {
+        canvas.span_started = None;
+        None
+    };
+    for (vi, view) in canvas.views.iter().enumerate() {
+        let input_overlay = OverlayInput {
+            size,
+            pixel_size: canvas.pixel_size,
+            pixels_per_point: ppp,
+            mode: match view.content {
+                _ if gpu.is_some() => Some(other_image::badge_mode(gpu, compare, vi, state)),
+                ViewContent::Mode(m) => Some(m),
+                _ => None,
+            },
+            show_grid: view_settings.show_grid,
+            handles: handles.clone(),
+            hover: input.hover_report.map(PixelReport::mark),
+            pin: input.pin_report.map(PixelReport::mark),
+            clipped: input
+                .pin_report
+                .or(input.hover_report)
+                .and_then(|r| crate::figure::clip_mark(&r.trace)),
+            sub_areas: view_settings.show_sub_areas,
+            sub_area_fill: state.options().shading != crate::raster::Shading::Texture,
+            wipe: (view.content == ViewContent::Wipe && gpu != Some(false)).then_some((
+                f64::from(view_settings.wipe) * f64::from(size[0]),
+                Interpolation::Affine,
+                Interpolation::Perspective,
+            )),
+            color_bar: match view.content {
+                ViewContent::Difference if gpu.is_none() => {
+                    output.heatmap.as_ref().map(|h| h.scale_max)
+                }
+                _ => None,
+            },
+        };
+        // Overlays stay in their view's share of the canvas (the image, its title strip and
+        // the margins where handles and their labels go), never over the panels.
+        let clip = view.area.intersect(available);
+        let mut shapes = overlay::build_in(&input_overlay, lang);
+        if let Some(g) = input.gpu.filter(|_| gpu == Some(true)) {
+            other_image::relabel(&mut shapes, lang, view_settings.compare, g);
+        }
+        if input.framing.title_strip == 0.0 {
+            paint::drop_titles(&mut shapes);
+        } else if let Some(w) = crate::figure::common_w(vertices.iter().map(VertexOnScreen::w))
+            && compare == Compare::Single
+            && gpu.is_none()
+        {
+            // Every corner at one w: both modes draw the same picture; the title says so
+            // instead of naming one (a lesson's flat steps are about screen space).
+            let title = lang.tr_with("figure.flat", &[("w", &format!("{w:.2}"))]);
+            paint::retitle(&mut shapes, &title);
+        }
+        // With the wireframe on, the triangle's outline would lie right over the wireframe's
+        // line (the thing to see): the line shows the triangle already.
+        if state.options().wireframe {
+            shapes.shapes.retain(|s| !overlay::is_triangle_outline(s));
+        }
+        // The scanline rasterizer: the pinned pixel's row, where it crosses two edges, and the
+        // span between (values stepped along the edges, then along the span).
+        if view_settings.rasterizer == crate::raster::render::Rasterizer::Scanline
+            && let Some(pin) = input.pin_report.map(PixelReport::mark)
+            && let Some(t) = pin.triangle
+            && let Some(span) = overlay::span_shapes(&t, pin.pixel[1])
+        {
+            // Over the triangle's outline, under the pixel marker and the handles.
+            let at = shapes
+                .shapes
+                .iter()
+                .rposition(|s| matches!(s, overlay::Shape::Polygon { .. }))
+                .map_or(0, |i| i + 1);
+            shapes.shapes.splice(at..at, span);
+            // Stepping: one pixel of the span after another, as the rasterizer visits them;
+            // after the last pixel a pause, then from the start again.
+            if let Some(elapsed) = span_elapsed
+                && let Some((_, count)) = overlay::span_step_shapes(&t, pin.pixel[1], 0)
+                && let Some((trail, _)) = overlay::span_step_shapes(
+                    &t,
+                    pin.pixel[1],
+                    elapsed % (count + SPAN_PAUSE_STEPS),
+                )
+            {
+                shapes.shapes.splice(at..at, trail);
+            }
+        }
+        paint::scale_marks(&mut shapes, input.mark_scale);
+        let image = Rect::from_min_max(
+            view.rect.min - egui::vec2(2.0, overlay::TITLE_STRIP),
+            view.rect.max + egui::vec2(2.0, 2.0),
+        );
+        // Labels keep clear of the pinned pixel's marker too (the pixel the lesson talks
+        // about).
+        let mut avoid = canvas.avoid.clone();
+        if let Some([px, py]) = view_settings.pinned {
+            let at = view
+                .transform
+                .to_screen(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
+            avoid.push(Rect::from_center_size(at, egui::Vec2::splat(PIN_CLEARANCE)));
+        }
+        paint::paint(&painter, clip, image, view.transform, &shapes, &avoid);
+    }
+    out
+}
+
+/// Model scenes: drag orbits the camera about its target, Shift+drag or a right/middle drag
+/// pans, scrolling zooms. `scale` is points per rendered pixel.
+fn model_camera_input(
+    ui: &Ui,
+    resp: &egui::Response,
+    scale: f32,
+    viewport: Viewport,
+    out: &mut Vec<StateCommand>,
+) {
+    use egui::PointerButton as B;
+    let d = resp.drag_delta();
+    if d != egui::Vec2::ZERO {
+        let shift = ui.input(|i| i.modifiers.shift);
+        let pan = resp.dragged_by(B::Secondary)
+            || resp.dragged_by(B::Middle)
+            || (shift && resp.dragged_by(B::Primary));
+        if pan {
+            let per_point = 1.0 / f64::from(scale.max(f32::MIN_POSITIVE));
+            out.push(StateCommand::PanCamera {
+                dx: f64::from(d.x) * per_point,
+                dy: f64::from(d.y) * per_point,
+                viewport,
+            });
+        } else if resp.dragged_by(B::Primary) {
+            // Grab-and-turn: dragging right turns the model's front to the right.
+            out.push(StateCommand::OrbitCamera {
+                yaw_deg: -f64::from(d.x) * ORBIT_DEG_PER_POINT,
+                pitch_deg: f64::from(d.y) * ORBIT_DEG_PER_POINT,
+            });
+        }
+    }
+    if resp.dragged() {
+        ui.ctx().set_cursor_icon(CursorIcon::Grabbing);
+    }
+    if resp.hovered() {
+        let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+        if scroll != 0.0 {
+            out.push(StateCommand::ZoomCamera(
+                (-f64::from(scroll) * ZOOM_PER_SCROLL_POINT).exp(),
+            ));
+        }
+    }
+}

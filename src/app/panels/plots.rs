@@ -1,0 +1,206 @@
+//! The plot of the pinned pixel's row, for a lesson step's [`LessonPlot`] (in the Lessons
+//! panel) or the user's choice (a window): the lines of [`crate::lesson::plot::row_lines`],
+//! read from the row rendered with every per-pixel buffer, drawn with egui_plot. (The
+//! handout draws the same lines without egui: [`crate::lesson::plot::row_plot`].)
+
+use std::sync::Arc;
+
+use egui::RichText;
+use egui_plot::{Line, Plot, VLine};
+
+use crate::app::BaryApp;
+use crate::app::command::AppCommand;
+use crate::app::document::state::StateCommand;
+use crate::i18n::{Lang, tr};
+use crate::lesson::LessonPlot;
+use crate::raster::{Framebuffer, Interpolation, Texture};
+
+pub use crate::lesson::plot::{PlotLines, row_lines, title_key};
+
+/// The plot window's contents: a choice of plot, then the plot with the pinned column marked.
+/// `one_row`: only the legend above the plot, no choice (a short band: presentation mode).
+pub fn plot_ui(
+    ui: &mut egui::Ui,
+    plot: LessonPlot,
+    lines: Option<(u32, PlotLines)>,
+    lang: Lang,
+    hovered_column: &mut Option<u32>,
+    one_row: bool,
+) -> Vec<StateCommand> {
+    let mut out = Vec::new();
+    // Never wider than the room given (a long legend must not widen the plot past it).
+    let width = ui.available_width().max(120.0);
+    ui.set_max_width(width);
+    let legend = |ui: &mut egui::Ui, lines: &PlotLines| {
+        for (k, (key, _)) in lines.iter().enumerate() {
+            ui.label(RichText::new("━━").color(line_color(k)).strong());
+            ui.label(tr(lang, key));
+            ui.add_space(8.0);
+        }
+    };
+    ui.horizontal_wrapped(|ui| {
+        // One row (a band under the picture): the legend (it names the lines), no choice.
+        if one_row {
+            match &lines {
+                Some((_, lines)) => legend(ui, lines),
+                None => {
+                    ui.label(RichText::new(tr(lang, title_key(plot))).strong());
+                }
+            }
+            return;
+        }
+        let label = ui.label(tr(lang, "lesson.plot_kind"));
+        egui::ComboBox::from_id_salt("row-plot-kind")
+            .selected_text(tr(lang, title_key(plot)))
+            .width(ui.available_width().clamp(80.0, 360.0))
+            .show_ui(ui, |ui| {
+                for p in [LessonPlot::UvRow, LessonPlot::WRow, LessonPlot::DepthRow] {
+                    if ui
+                        .selectable_label(p == plot, tr(lang, title_key(p)))
+                        .clicked()
+                        && p != plot
+                    {
+                        out.push(StateCommand::SetPlot(Some(p)));
+                    }
+                }
+            })
+            .response
+            .labelled_by(label.id);
+    });
+    let Some((pin_x, lines)) = lines else {
+        ui.label(tr(lang, "lesson.plot_none"));
+        return out;
+    };
+    // The legend above the plot, in the lines' colours (egui_plot's legend lies over the
+    // lines it names).
+    if !one_row {
+        ui.horizontal_wrapped(|ui| legend(ui, &lines));
+    }
+    let shown = Plot::new(("row-plot", plot as u8))
+        .x_axis_label(tr(lang, crate::lesson::plot::X_LABEL_KEY))
+        .show_axes([true, true])
+        // Never taller than the room left (a plot that overflowed its panel would push the
+        // panel's first row, the lesson's Previous / Next, out of sight).
+        .height((ui.available_height() - 8.0).max(PLOT_MIN_HEIGHT))
+        .width(width)
+        .show(ui, |p| {
+            for (k, (key, points)) in lines.into_iter().enumerate() {
+                p.line(
+                    Line::new(tr(lang, key), points)
+                        .color(line_color(k))
+                        .width(2.5),
+                );
+            }
+            p.vline(VLine::new("", f64::from(pin_x)));
+            p.pointer_coordinate()
+        });
+    // Hovering the plot marks that column of the pinned row on the canvas.
+    if shown.response.hovered()
+        && let Some(at) = shown.inner
+        && at.x >= 0.0
+    {
+        *hovered_column = Some(at.x.round() as u32);
+    }
+    out
+}
+
+/// Points: the least height of the plot area.
+const PLOT_MIN_HEIGHT: f32 = 48.0;
+
+/// The colour of a plot's `k`th line: distinct on the dark and the light theme, and not the
+/// vertex colours (the lines are no vertices).
+fn line_color(k: usize) -> egui::Color32 {
+    const COLORS: [egui::Color32; 4] = [
+        egui::Color32::from_rgb(255, 140, 60),
+        egui::Color32::from_rgb(90, 170, 255),
+        egui::Color32::from_rgb(240, 90, 200),
+        egui::Color32::from_rgb(120, 220, 140),
+    ];
+    COLORS[k % COLORS.len()]
+}
+
+/// The last row rendered with every buffer (one row high), by the canvas render it repeats,
+/// the mode and the row.
+pub type RowRender = Option<((u64, Interpolation, u32), Arc<Framebuffer>)>;
+
+impl BaryApp {
+    /// The chosen plot's lines along the pinned row, from that row rendered with every buffer
+    /// (`raster::render_row`: the full render's values, made once per canvas render, mode and
+    /// row; the canvas itself renders colour and depth only).
+    pub(in crate::app) fn row_plot(&mut self, texture: &Texture) -> Option<(u32, PlotLines)> {
+        let plot = self.state.view.plot?;
+        let [x, y] = self.state.view.pinned?;
+        let output = self.canvas.output.as_ref()?;
+        let mode = self.state.options().mode;
+        let mut settings = output.scene.settings();
+        if y >= settings.height || x >= settings.width {
+            return None;
+        }
+        let key = (output.generation, mode, y);
+        let row = match &self.lessons.row_render {
+            Some((k, r)) if *k == key => r.clone(),
+            _ => {
+                settings.mode = mode;
+                let mesh = output.scene.to_mesh();
+                let r = Arc::new(crate::raster::render_row(&mesh, texture, &settings, y).ok()?);
+                self.lessons.row_render = Some((key, r.clone()));
+                r
+            }
+        };
+        Some((x, row_lines(&row, 0, plot)))
+    }
+
+    /// The plot window, when a plot is chosen outside a lesson (a lesson shows it in its
+    /// panel); closing it clears the choice.
+    pub(in crate::app) fn plot_window(
+        &mut self,
+        ctx: &egui::Context,
+        texture: &Texture,
+        out: &mut Vec<AppCommand>,
+    ) {
+        self.plot_hover_to_canvas();
+        let Some(plot) = self.state.view.plot else {
+            return;
+        };
+        if self.lessons.session.is_some() {
+            return;
+        }
+        let lang = self.lang();
+        let lines = self.row_plot(texture);
+        let mut open = true;
+        let size = ctx.content_rect().size();
+        egui::Window::new(tr(lang, "lesson.plot_title"))
+            .open(&mut open)
+            .default_size([size.x * 0.4, size.y * 0.35])
+            .default_pos([size.x * 0.55, size.y * 0.1])
+            .show(ctx, |ui| {
+                let mut column = None;
+                out.extend(
+                    plot_ui(ui, plot, lines, lang, &mut column, false)
+                        .into_iter()
+                        .map(Into::into),
+                );
+                self.lessons.plot_hover = column;
+            });
+        if !open {
+            out.push(StateCommand::SetPlot(None).into());
+        }
+        self.plot_hover_to_canvas();
+    }
+
+    /// The column hovered in the plot (this frame's, from the Lessons panel or the window)
+    /// becomes the canvas's hovered pixel on the pinned row while the pointer is off the
+    /// canvas, so the inspector and the overlay show it.
+    fn plot_hover_to_canvas(&mut self) {
+        let Some(x) = self.lessons.plot_hover.take() else {
+            return;
+        };
+        let size = self.canvas.output.as_ref().map(|o| o.size);
+        if let (None, Some([_, y]), Some([w, _])) =
+            (self.canvas.hover, self.state.view.pinned, size)
+            && x < w
+        {
+            self.canvas.hover = Some([x, y]);
+        }
+    }
+}

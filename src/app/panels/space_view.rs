@@ -1,0 +1,222 @@
+//! The 3D view beside the canvas: the space view of `figure::space` (the eye, the frustum,
+//! the image plane, the triangles and the hovered, else pinned, pixel's ray meeting its
+//! triangle at P beside the affine guess Q), painted with egui from the same shapes the
+//! figure writes as SVG. Its own orbit camera: drag to orbit, scroll to zoom, a reset button.
+//! The scene follows the canvas's render (a dragged corner moves it live).
+
+use egui::epaint::PathStroke;
+use egui::{Align2, Color32, FontId, Pos2, RichText, Sense, Shape as EShape, Stroke, Ui};
+
+use crate::app::document::state::StateCommand;
+use crate::app::services::pixel::PixelReport;
+use crate::app::services::render::CanvasOutput;
+use crate::figure::space::{
+    Anchor2, Colour, INK, Orbit, Shape, ShapeKind, SpaceScene, panel_lines, shapes,
+};
+
+/// The labels' size in the 3D view, points (egui's zoom scales it).
+const LABEL_SIZE: f32 = 12.0;
+
+/// Degrees the orbit turns per point dragged.
+const TURN_PER_POINT: f64 = 0.4;
+
+/// What the cached scene was built for: the render's generation, and the traced pixel with
+/// its report's generation.
+type SceneKey = (u64, Option<([u32; 2], u64)>);
+
+/// The 3D view's widget state: its orbit and the scene built for the last render and pixel.
+#[derive(Default)]
+pub struct SpaceView {
+    /// The orbit camera.
+    pub orbit: Orbit,
+    cached: Option<(SceneKey, SpaceScene)>,
+}
+
+/// The Controls panel's toggle of the 3D view (beside the comparison choices).
+pub fn toggle_ui(ui: &mut Ui, on: bool) -> Vec<StateCommand> {
+    let lang = crate::app::services::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    if ui
+        .selectable_label(on, lang.tr("space.view_name"))
+        .on_hover_text(lang.tr("space.toggle_tip"))
+        .clicked()
+    {
+        out.push(StateCommand::SetSpaceView(!on));
+    }
+    out
+}
+
+fn colour(c: Colour) -> Color32 {
+    let [r, g, b, a] = c.0;
+    Color32::from_rgba_unmultiplied(r, g, b, a)
+}
+
+impl SpaceView {
+    /// The scene in 3D for `output` and the pixel `report` traced (built again only when the
+    /// render or the pixel changed).
+    fn scene(
+        &mut self,
+        output: &CanvasOutput,
+        report: Option<&PixelReport>,
+    ) -> Option<&SpaceScene> {
+        let key = (output.generation, report.map(|r| (r.pixel, r.generation)));
+        if self.cached.as_ref().is_none_or(|(k, _)| *k != key) {
+            let settings = output.scene.settings();
+            let space =
+                SpaceScene::build(&output.scene, &settings, report.map(|r| &r.trace)).ok()?;
+            self.cached = Some((key, space));
+        }
+        self.cached.as_ref().map(|(_, s)| s)
+    }
+
+    /// The view: a reset button and hint, the drawing (dragged to orbit, scrolled to zoom),
+    /// and the pixel's numbers under it.
+    pub fn ui(&mut self, ui: &mut Ui, output: Option<&CanvasOutput>, report: Option<&PixelReport>) {
+        let lang = crate::app::services::locale::lang(ui.ctx());
+        ui.horizontal(|ui| {
+            ui.label(RichText::new(lang.tr("space.title")).strong());
+            if ui.button(lang.tr("space.reset")).clicked() {
+                self.orbit = Orbit::default();
+            }
+        });
+        ui.label(RichText::new(lang.tr("space.hint")).weak());
+        let Some(output) = output else {
+            return;
+        };
+        let size = egui::vec2(
+            ui.available_width(),
+            (0.68 * ui.available_height()).max(160.0),
+        );
+        let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
+        if response.dragged() {
+            let d = response.drag_delta();
+            self.orbit = self.orbit.turned(
+                -f64::from(d.x) * TURN_PER_POINT,
+                f64::from(d.y) * TURN_PER_POINT,
+            );
+        }
+        if response.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+            if scroll != 0.0 {
+                self.orbit = self.orbit.zoomed((f64::from(scroll) * 0.002).exp());
+            }
+        }
+        let orbit = self.orbit;
+        let Some(space) = self.scene(output, report) else {
+            return;
+        };
+        let r = response.rect;
+        painter.rect_filled(r, 0.0, Color32::WHITE);
+        let projector = space.projector(orbit, [r.min.x, r.min.y, r.max.x, r.max.y]);
+        let painter = painter.with_clip_rect(r);
+        for s in shapes(space, &projector, lang, LABEL_SIZE) {
+            paint(&painter, &s);
+        }
+        egui::ScrollArea::vertical()
+            .id_salt("space-numbers")
+            .show(ui, |ui| {
+                let ink = ui.visuals().text_color();
+                for (line, c) in panel_lines(space, lang) {
+                    let c = if c == INK { ink } else { colour(c) };
+                    ui.label(RichText::new(line).color(c));
+                }
+            });
+    }
+}
+
+/// Paints one shape of the space view.
+fn paint(painter: &egui::Painter, s: &Shape) {
+    let p = |q: [f32; 2]| Pos2::new(q[0], q[1]);
+    match &s.kind {
+        ShapeKind::Polygon {
+            points,
+            fill,
+            stroke,
+        } => {
+            let mut pts: Vec<Pos2> = points.iter().map(|q| p(*q)).collect();
+            let area: f32 = (0..pts.len())
+                .map(|i| {
+                    let (a, b) = (pts[i], pts[(i + 1) % pts.len()]);
+                    a.x * b.y - b.x * a.y
+                })
+                .sum();
+            if area < 0.0 {
+                pts.reverse();
+            }
+            let stroke = stroke.map_or(PathStroke::NONE, |(c, w)| PathStroke::new(w, colour(c)));
+            painter.add(EShape::convex_polygon(pts, colour(*fill), stroke));
+        }
+        ShapeKind::Line {
+            from,
+            to,
+            colour: c,
+            width,
+            dashed,
+        } => {
+            let stroke = Stroke::new(*width, colour(*c));
+            if *dashed {
+                painter.extend(EShape::dashed_line(
+                    &[p(*from), p(*to)],
+                    stroke,
+                    3.0 * width,
+                    3.0 * width,
+                ));
+            } else {
+                painter.line_segment([p(*from), p(*to)], stroke);
+            }
+        }
+        ShapeKind::Dot {
+            centre,
+            radius,
+            fill,
+            stroke,
+        } => {
+            painter.circle_filled(p(*centre), *radius, colour(*fill));
+            if let Some((c, w)) = stroke {
+                painter.circle_stroke(p(*centre), *radius, Stroke::new(*w, colour(*c)));
+            }
+        }
+        ShapeKind::Text {
+            at,
+            text,
+            size,
+            colour: c,
+            anchor,
+        } => {
+            let align = match anchor {
+                Anchor2::Start => Align2::LEFT_BOTTOM,
+                Anchor2::Middle => Align2::CENTER_BOTTOM,
+                Anchor2::End => Align2::RIGHT_BOTTOM,
+            };
+            let galley =
+                painter.layout_no_wrap(text.clone(), FontId::proportional(*size), colour(*c));
+            // The baseline at `at`: the galley's bottom a little below it.
+            let rect = align.anchor_size(p(*at) + egui::vec2(0.0, 0.25 * size), galley.size());
+            painter.rect_filled(
+                rect.expand(1.0),
+                2.0,
+                Color32::from_rgba_unmultiplied(255, 255, 255, 190),
+            );
+            painter.galley(rect.min, galley, colour(*c));
+        }
+    }
+}
+
+impl crate::app::BaryApp {
+    /// The 3D view as a resizable panel right of the canvas (when it is on), drawn from the
+    /// canvas's render and the hovered, else pinned, pixel's trace.
+    pub(in crate::app) fn space_panel(&mut self, ui: &mut Ui) {
+        if !self.state.view.space {
+            return;
+        }
+        let width = ui.available_width();
+        let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
+        let output = self.canvas.output.as_ref();
+        let view = &mut self.space_view;
+        egui::Panel::right("space-view")
+            .resizable(true)
+            .default_size(0.45 * width)
+            .size_range((0.25 * width)..=(0.7 * width))
+            .show(ui, |ui| view.ui(ui, output, report));
+    }
+}
