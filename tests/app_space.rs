@@ -70,3 +70,31 @@ fn the_3d_view_shows_the_pinned_pixels_weights_and_follows_a_drag() {
     assert!(h.query_by_label(&after).is_none());
     assert!(h.query_by_label("The pixel's ray in 3D").is_none());
 }
+
+/// Presentation mode shows the 3D view beside the picture on a wide window (16:10 here), with
+/// the pinned pixel's weights, and leaves a 4:3 projector's width to the picture.
+#[test]
+fn presenting_shows_the_3d_view_on_wide_windows_only() {
+    for (size, shown) in [
+        (egui::vec2(1600.0, 1000.0), true),
+        (egui::vec2(1024.0, 768.0), false),
+    ] {
+        let mut h = common::app::harness(
+            size,
+            AppOptions {
+                space_view: true,
+                present: true,
+                pin: Some([400, 420]),
+                ..AppOptions::default()
+            },
+        );
+        h.run();
+        let line = abc_line(&h);
+        assert_eq!(
+            h.query_by_label("The pixel's ray in 3D").is_some(),
+            shown,
+            "at {size:?}"
+        );
+        assert_eq!(h.query_by_label(&line).is_some(), shown, "at {size:?}");
+    }
+}

@@ -401,6 +401,7 @@ impl BaryApp {
         let mut out: Vec<AppCommand> = Vec::new();
         if self.presenting {
             self.lesson_strip(ui, &mut out);
+            self.space_panel_presenting(ui);
             self.presentation(ui, texture, &mut out);
             self.commands.extend(out);
             return;

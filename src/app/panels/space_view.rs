@@ -16,6 +16,8 @@ use crate::figure::space::{
 
 /// The labels' size in the 3D view, points (egui's zoom scales it).
 const LABEL_SIZE: f32 = 12.0;
+/// Points: the labels in the 3D picture in presentation mode (read from the back of a room).
+const PRESENT_LABEL_SIZE: f32 = 17.0;
 
 /// Degrees the orbit turns per point dragged.
 const TURN_PER_POINT: f64 = 0.4;
@@ -70,8 +72,14 @@ impl SpaceView {
     }
 
     /// The view: a reset button and hint, the drawing (dragged to orbit, scrolled to zoom),
-    /// and the pixel's numbers under it.
-    pub fn ui(&mut self, ui: &mut Ui, output: Option<&CanvasOutput>, report: Option<&PixelReport>) {
+    /// and the pixel's numbers under it; the drawing's labels `label_size` points.
+    pub fn ui(
+        &mut self,
+        ui: &mut Ui,
+        output: Option<&CanvasOutput>,
+        report: Option<&PixelReport>,
+        label_size: f32,
+    ) {
         let lang = crate::app::services::locale::lang(ui.ctx());
         ui.horizontal(|ui| {
             ui.label(RichText::new(lang.tr("space.title")).strong());
@@ -109,7 +117,7 @@ impl SpaceView {
         painter.rect_filled(r, 0.0, Color32::WHITE);
         let projector = space.projector(orbit, [r.min.x, r.min.y, r.max.x, r.max.y]);
         let painter = painter.with_clip_rect(r);
-        for s in shapes(space, &projector, lang, LABEL_SIZE) {
+        for s in shapes(space, &projector, lang, label_size) {
             paint(&painter, &s);
         }
         egui::ScrollArea::vertical()
@@ -202,7 +210,36 @@ fn paint(painter: &egui::Painter, s: &Shape) {
     }
 }
 
+/// Presentation mode shows the 3D view (right of the picture) only in windows at least this
+/// many times as wide as high: on a 16:9 or 16:10 screen it takes width the picture cannot use,
+/// while on a 4:3 projector it would take what the picture needs.
+pub const PRESENT_MIN_ASPECT: f32 = 1.5;
+
+/// The 3D view's share of the window's width in presentation mode.
+pub const PRESENT_SHARE: f32 = 0.36;
+
 impl crate::app::BaryApp {
+    /// Presentation mode: the 3D view in a column right of the picture, when it is on and the
+    /// window is wide ([`PRESENT_MIN_ASPECT`]).
+    pub(in crate::app) fn space_panel_presenting(&mut self, ui: &mut Ui) {
+        let window = ui.ctx().content_rect();
+        if !self.state.view.space || window.width() < PRESENT_MIN_ASPECT * window.height() {
+            return;
+        }
+        let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
+        let output = self.canvas.output.as_ref();
+        let view = &mut self.space_view;
+        egui::Panel::right("space-view-present")
+            .frame(
+                egui::Frame::new()
+                    .fill(crate::app::panels::present::CARD_FILL)
+                    .inner_margin(egui::Margin::same(12)),
+            )
+            .resizable(false)
+            .exact_size((PRESENT_SHARE * window.width()).round())
+            .show(ui, |ui| view.ui(ui, output, report, PRESENT_LABEL_SIZE));
+    }
+
     /// The 3D view as a resizable panel right of the canvas (when it is on), drawn from the
     /// canvas's render and the hovered, else pinned, pixel's trace.
     pub(in crate::app) fn space_panel(&mut self, ui: &mut Ui) {
@@ -217,6 +254,6 @@ impl crate::app::BaryApp {
             .resizable(true)
             .default_size(0.45 * width)
             .size_range((0.25 * width)..=(0.7 * width))
-            .show(ui, |ui| view.ui(ui, output, report));
+            .show(ui, |ui| view.ui(ui, output, report, LABEL_SIZE));
     }
 }
