@@ -414,8 +414,9 @@ pub fn shapes(space: &SpaceScene, projector: &Projector, lang: Lang, text: f32) 
 }
 
 /// Moves labels that would overlap an earlier one: below it, above it, then to the other
-/// side of its anchor point, keeping the first position that overlaps nothing placed (else
-/// the original one); then moves each inside `rect`.
+/// side of its anchor point, then further up or down (up to [`SPREAD_STEPS`] lines), each kept
+/// inside `rect`; the first position that overlaps nothing placed wins, else the one that
+/// overlaps the placed labels least (a crowded corner of a small view stays readable).
 fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
     let mut placed: Vec<[f32; 4]> = Vec::new();
     for s in shapes.iter_mut() {
@@ -438,10 +439,23 @@ fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
             };
             [x0, at[1] - 0.8 * *size, x0 + w, at[1] + 0.25 * *size]
         };
-        let overlaps = |b: [f32; 4]| {
+        // The position moved as little as needed to lie inside `rect`.
+        let inside = |mut pos: [f32; 2], anchor: Anchor2| {
+            let b = bounds(pos, anchor);
+            let pad = 2.0;
+            pos[0] += (rect[0] + pad - b[0]).max(0.0) - (b[2] - rect[2] + pad).max(0.0);
+            pos[1] += (rect[1] + pad - b[1]).max(0.0) - (b[3] - rect[3] + pad).max(0.0);
+            pos
+        };
+        let overlap = |b: [f32; 4]| -> f32 {
             placed
                 .iter()
-                .any(|p| b[0] < p[2] && p[0] < b[2] && b[1] < p[3] && p[1] < b[3])
+                .map(|p| {
+                    let w = (b[2].min(p[2]) - b[0].max(p[0])).max(0.0);
+                    let h = (b[3].min(p[3]) - b[1].max(p[1])).max(0.0);
+                    w * h
+                })
+                .sum()
         };
         let flipped = match anchor {
             Anchor2::Start => Anchor2::End,
@@ -449,29 +463,33 @@ fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
             Anchor2::Middle => Anchor2::Middle,
         };
         let h = 1.1 * *size;
-        let candidates = [
-            (*at, *anchor),
-            ([at[0], at[1] + h], *anchor),
-            ([at[0], at[1] - h], *anchor),
-            (*at, flipped),
-            ([at[0], at[1] + h], flipped),
-            ([at[0], at[1] - h], flipped),
-            ([at[0], at[1] + 2.0 * h], *anchor),
-            ([at[0], at[1] - 2.0 * h], *anchor),
-        ];
-        let (mut pos, anc) = candidates
-            .into_iter()
-            .find(|(p, a)| !overlaps(bounds(*p, *a)))
-            .unwrap_or((*at, *anchor));
-        let b = bounds(pos, anc);
-        let pad = 2.0;
-        pos[0] += (rect[0] + pad - b[0]).max(0.0) - (b[2] - rect[2] + pad).max(0.0);
-        pos[1] += (rect[1] + pad - b[1]).max(0.0) - (b[3] - rect[3] + pad).max(0.0);
+        // Lines up and down in the order 0, +1, -1, +2, -2, ...; each with both anchors.
+        let shifts = (0..=2 * SPREAD_STEPS).map(|i| {
+            let n = i.div_ceil(2) as f32;
+            if i % 2 == 1 { n * h } else { -n * h }
+        });
+        let mut best: Option<(f32, [f32; 2], Anchor2)> = None;
+        'search: for dy in shifts {
+            for a in [*anchor, flipped] {
+                let pos = inside([at[0], at[1] + dy], a);
+                let cost = overlap(bounds(pos, a));
+                if best.is_none_or(|(c, _, _)| cost < c) {
+                    best = Some((cost, pos, a));
+                }
+                if cost == 0.0 {
+                    break 'search;
+                }
+            }
+        }
+        let (_, pos, anc) = best.unwrap_or((0.0, inside(*at, *anchor), *anchor));
         *at = pos;
         *anchor = anc;
         placed.push(bounds(pos, anc));
     }
 }
+
+/// How many lines up or down [`spread_labels`] moves a label looking for a free place.
+const SPREAD_STEPS: usize = 4;
 
 /// The width of `s` at `size` points: the overlay font's for most characters, one em for
 /// CJK ideographs and punctuation (which the overlay font lacks).
