@@ -6,34 +6,19 @@
 //! diagonal and top, bottom, left and right edges pass exactly through pixel centres, and
 //! three overlapping triangles drawn middle, front, back.
 
-use std::path::{Path, PathBuf};
+mod bugs_common;
+
+use std::path::Path;
 use std::process::Command;
 
 use barylab::compare::bugs::Bug;
 use barylab::compare::hypotheses::shifted;
 use barylab::compare::{self, CoverageBy, Reference};
 use barylab::i18n::Lang;
-use barylab::raster::render::render_samples;
-use barylab::raster::sample::{SampleCount, SamplePattern, SampleSettings, ShadingRate, resolve};
+use barylab::raster::sample::{SampleCount, SamplePattern, SampleSettings, ShadingRate};
 use barylab::raster::setup::TieRule;
-use barylab::raster::{ClipMesh, Interpolation, NO_TRIANGLE, RenderSettings, Texture, render};
-use barylab::scene::Scene;
-
-fn scene_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/grade")
-        .join(name)
-}
-
-fn load(name: &str) -> (Scene, Texture, RenderSettings) {
-    let path = scene_path(name);
-    let scene = Scene::load(&path).expect("scene");
-    let texture = scene
-        .load_texture(path.parent().expect("folder"))
-        .expect("texture");
-    let settings = scene.settings();
-    (scene, texture, settings)
-}
+use barylab::raster::{ClipMesh, Interpolation, RenderSettings, Texture, render};
+use bugs_common::{black_edges, load, painted, scene_path};
 
 /// barylab's render of `mesh` with `settings`, as pixels.
 fn pixels(mesh: &ClipMesh, texture: &Texture, settings: &RenderSettings) -> Vec<[u8; 4]> {
@@ -66,31 +51,6 @@ fn named(name: &str, pixels: Vec<[u8; 4]>, dir: &Path) -> Vec<Bug> {
         .expect("compared");
     assert!(!c.agrees(), "the buggy image equals barylab's");
     c.bugs
-}
-
-/// The scene's triangles composited one at a time without a depth test: the last drawn on
-/// top (`last_on_top`) or the first.
-fn painted(name: &str, last_on_top: bool) -> Vec<[u8; 4]> {
-    let (scene, texture, settings) = load(name);
-    let mesh = scene.to_mesh();
-    let mut out = vec![settings.background; (settings.width * settings.height) as usize];
-    let mut order: Vec<usize> = (0..mesh.triangles.len()).collect();
-    if !last_on_top {
-        order.reverse();
-    }
-    for t in order {
-        let one = ClipMesh {
-            vertices: mesh.vertices.clone(),
-            triangles: vec![mesh.triangles[t]],
-        };
-        let r = render(&one, &texture, &settings).expect("render");
-        for (k, &tri) in r.frame.triangle.iter().enumerate() {
-            if tri != NO_TRIANGLE {
-                out[k] = r.frame.color[k];
-            }
-        }
-    }
-    out
 }
 
 fn right(name: &str) -> Vec<[u8; 4]> {
@@ -253,42 +213,7 @@ fn one_sample_where_supersampling_is_asked() {
 
 #[test]
 fn black_edges_under_supersampling() {
-    // GAMES101 A2's bug, written the way it makes it: where a pixel's samples hold two
-    // triangles, only the triangle of the most samples keeps its samples (depth per pixel),
-    // the others stay background, then the four are averaged.
-    let (scene, texture, settings) = load("bugs-ssaa.json");
-    let (r, samples) = render_samples(&scene.to_mesh(), &texture, &settings).expect("render");
-    let mut out = r.frame.color.clone();
-    let mut changed = 0;
-    for y in 0..settings.height {
-        for x in 0..settings.width {
-            let s = samples.pixel(x, y);
-            let mut tris: Vec<u32> = s
-                .iter()
-                .map(|v| v.triangle)
-                .filter(|&t| t != NO_TRIANGLE)
-                .collect();
-            tris.sort_unstable();
-            tris.dedup();
-            if tris.len() < 2 {
-                continue;
-            }
-            let count = |t: u32| s.iter().filter(|v| v.triangle == t).count();
-            let keep = tris.iter().copied().max_by_key(|&t| count(t)).expect("two");
-            let colors: Vec<[u8; 4]> = s
-                .iter()
-                .map(|v| {
-                    if v.triangle == keep {
-                        v.color
-                    } else {
-                        settings.background
-                    }
-                })
-                .collect();
-            out[(y * settings.width + x) as usize] = resolve(&colors);
-            changed += 1;
-        }
-    }
+    let (out, changed) = black_edges("bugs-ssaa.json");
     assert!(changed > 10, "{changed}");
     check(Bug::BlackEdges, "bugs-ssaa.json", out);
 }
