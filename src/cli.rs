@@ -746,7 +746,7 @@ pub fn main() -> ExitCode {
         Some(Command::Figure(args)) => commands::figure(&args),
         Some(Command::Compare(args)) => compare::run(&args),
         Some(Command::Grade(args)) => grade::run(&args),
-        Some(Command::Assign(args)) => grade::run_assign(&args),
+        Some(Command::Assign(args)) => assign::run(&args),
         Some(Command::Lesson(args)) => lesson::run(&args),
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),
