@@ -16,6 +16,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::output::{self, note, print};
 use crate::progress_line::ProgressLine;
 
+mod assign;
 mod commands;
 mod compare;
 #[cfg(feature = "gpu")]

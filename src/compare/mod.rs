@@ -290,7 +290,7 @@ impl Rendered {
     /// pixel count is not a multiple of `width`.
     pub fn to_image(&self, width: u32) -> Option<image::RgbaImage> {
         let w = width.max(1) as usize;
-        if self.color.len() % w != 0 {
+        if !self.color.len().is_multiple_of(w) {
             return None;
         }
         let h = (self.color.len() / w) as u32;

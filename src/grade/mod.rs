@@ -1,6 +1,6 @@
 //! `barylab grade`: a whole class's images against barylab's renders of the course scenes.
 //!
-//! Each scene is loaded, rendered and made every way [`compare`](crate::compare) tries (its
+//! Each scene is loaded, rendered and made every way [`compare`] tries (its
 //! [`Candidates`]) once; every submission is then compared with
 //! [`compare::compare_with`] in parallel (rayon), so a verdict, its named bugs and the
 //! reasons of its regions are exactly `barylab compare`'s. A submission that cannot be
