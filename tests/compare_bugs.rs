@@ -18,7 +18,7 @@ use barylab::i18n::Lang;
 use barylab::raster::sample::{SampleCount, SamplePattern, SampleSettings, ShadingRate};
 use barylab::raster::setup::TieRule;
 use barylab::raster::{ClipMesh, Interpolation, RenderSettings, Texture, render};
-use bugs_common::{black_edges, load, painted, scene_path};
+use bugs_common::{black_edges, load, painted, save_png, scene_path};
 
 /// barylab's render of `mesh` with `settings`, as pixels.
 fn pixels(mesh: &ClipMesh, texture: &Texture, settings: &RenderSettings) -> Vec<[u8; 4]> {
@@ -30,15 +30,11 @@ fn pixels(mesh: &ClipMesh, texture: &Texture, settings: &RenderSettings) -> Vec<
 }
 
 /// Writes `pixels` as a PNG, reads it back through the comparison's reader and compares it
-/// with barylab's render of scene `name`; returns the named bugs.
-fn named(name: &str, pixels: Vec<[u8; 4]>, dir: &Path) -> Vec<Bug> {
+/// with barylab's render of scene `name`.
+fn compared(name: &str, pixels: &[[u8; 4]], dir: &Path) -> compare::Comparison {
     let (scene, texture, settings) = load(name);
-    let raw: Vec<u8> = pixels.into_iter().flatten().collect();
-    let file = dir.join("buggy.png");
-    image::RgbaImage::from_raw(settings.width, settings.height, raw)
-        .expect("image buffer")
-        .save(&file)
-        .expect("png written");
+    let file = dir.join("image.png");
+    save_png(pixels, settings.width, &file);
     let image = compare::read_image(&file, Lang::En, |_, _| Ok(())).expect("read back");
     let mesh = scene.to_mesh();
     let reference = Reference {
@@ -47,8 +43,12 @@ fn named(name: &str, pixels: Vec<[u8; 4]>, dir: &Path) -> Vec<Bug> {
         texture: &texture,
         settings,
     };
-    let c = compare::compare(&image, &reference, CoverageBy::Background([0, 0, 0]), 2)
-        .expect("compared");
+    compare::compare(&image, &reference, CoverageBy::Background([0, 0, 0]), 2).expect("compared")
+}
+
+/// The bugs named for `pixels` against scene `name` (which they must differ from).
+fn named(name: &str, pixels: Vec<[u8; 4]>, dir: &Path) -> Vec<Bug> {
+    let c = compared(name, &pixels, dir);
     assert!(!c.agrees(), "the buggy image equals barylab's");
     c.bugs
 }
@@ -74,24 +74,7 @@ const N: usize = 64;
 #[test]
 fn barylabs_own_render_names_no_bug() {
     let dir = tempfile::tempdir().expect("tempdir");
-    let (scene, texture, settings) = load("bugs.json");
-    let ours = right("bugs.json");
-    let raw: Vec<u8> = ours.into_iter().flatten().collect();
-    let file = dir.path().join("right.png");
-    image::RgbaImage::from_raw(settings.width, settings.height, raw)
-        .expect("buffer")
-        .save(&file)
-        .expect("png");
-    let image = compare::read_image(&file, Lang::En, |_, _| Ok(())).expect("read");
-    let mesh = scene.to_mesh();
-    let reference = Reference {
-        scene: &scene,
-        mesh: &mesh,
-        texture: &texture,
-        settings,
-    };
-    let c = compare::compare(&image, &reference, CoverageBy::Background([0, 0, 0]), 2)
-        .expect("compared");
+    let c = compared("bugs.json", &right("bugs.json"), dir.path());
     assert!(c.agrees());
     assert!(c.bugs.is_empty() && c.regions.is_empty());
 }

@@ -14,33 +14,44 @@ use std::time::Instant;
 use barylab::compare::bugs::Bug;
 use barylab::compare::hypotheses::Candidates;
 use barylab::compare::{Reference, render_for_comparison};
-use bugs_common::{black_edges, load, save_png, scene_path};
+use bugs_common::{black_edges, save_png, scene_path};
 
 const STUDENTS: usize = 300;
 
-/// barylab's image of a scene with `bug`, from the library's bug renders (`None`: barylab's
-/// own image).
-fn image_with(name: &str, bug: Option<Bug>) -> Vec<[u8; 4]> {
-    let (scene, texture, settings) = load(name);
+/// barylab's render of the scene file at `path` (colours) and its bug renders.
+fn candidates(path: &Path) -> (Vec<[u8; 4]>, Candidates) {
+    let scene = barylab::scene::Scene::load(path).expect("scene");
+    let texture = scene
+        .load_texture(path.parent().expect("folder"))
+        .expect("texture");
+    let settings = scene.settings();
     let mesh = scene.to_mesh();
     let render = render_for_comparison(&mesh, &texture, &settings).expect("render");
-    let Some(bug) = bug else {
-        return render.frame.color.clone();
-    };
-    if bug == Bug::BlackEdges {
-        return black_edges(name).0;
-    }
     let reference = Reference {
         scene: &scene,
         mesh: &mesh,
         texture: &texture,
         settings,
     };
-    let candidates = Candidates::new(&reference, &render.frame).expect("candidates");
-    bug.image(&candidates)
-        .unwrap_or_else(|| panic!("{} has no image for {name}", bug.code()))
-        .color
-        .clone()
+    let c = Candidates::new(&reference, &render.frame).expect("candidates");
+    (render.frame.color.clone(), c)
+}
+
+/// barylab's image of a test scene with `bug`, from the library's bug renders (`None`:
+/// barylab's own image).
+fn image_with(name: &str, bug: Option<Bug>) -> Vec<[u8; 4]> {
+    if bug == Some(Bug::BlackEdges) {
+        return black_edges(name).0;
+    }
+    let (ours, c) = candidates(&scene_path(name));
+    match bug {
+        None => ours,
+        Some(b) => b
+            .image(&c)
+            .unwrap_or_else(|| panic!("{} has no image for {name}", b.code()))
+            .color
+            .clone(),
+    }
 }
 
 /// A CSV line split into fields (quoted fields with doubled quotes).
@@ -367,22 +378,9 @@ fn three_hundred_at_700x700_timed() {
         .iter()
         .collect();
     let path = scene.to_str().expect("utf-8");
-    let loaded = barylab::scene::Scene::load(&scene).expect("scene");
-    let texture = loaded
-        .load_texture(scene.parent().expect("folder"))
-        .expect("texture");
-    let settings = loaded.settings();
-    let mesh = loaded.to_mesh();
-    let render = render_for_comparison(&mesh, &texture, &settings).expect("render");
-    let reference = Reference {
-        scene: &loaded,
-        mesh: &mesh,
-        texture: &texture,
-        settings,
-    };
-    let c = Candidates::new(&reference, &render.frame).expect("candidates");
+    let (ours, c) = candidates(&scene);
     let images = [
-        render.frame.color.clone(),
+        ours,
         Bug::YFlipped.image(&c).expect("flipped").color.clone(),
         Bug::DepthTest.image(&c).expect("depth").color.clone(),
     ];

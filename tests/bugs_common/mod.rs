@@ -56,7 +56,16 @@ pub fn painted(name: &str, last_on_top: bool) -> Vec<[u8; 4]> {
 /// Also returns how many pixels the bug changed.
 pub fn black_edges(name: &str) -> (Vec<[u8; 4]>, usize) {
     let (scene, texture, settings) = load(name);
-    let (r, samples) = render_samples(&scene.to_mesh(), &texture, &settings).expect("render");
+    black_edges_of(&scene, &texture, &settings)
+}
+
+/// [`black_edges`] of a loaded scene with its (multisampled) settings.
+pub fn black_edges_of(
+    scene: &Scene,
+    texture: &Texture,
+    settings: &RenderSettings,
+) -> (Vec<[u8; 4]>, usize) {
+    let (r, samples) = render_samples(&scene.to_mesh(), texture, settings).expect("render");
     let mut out = r.frame.color.clone();
     let mut changed = 0;
     for y in 0..settings.height {
