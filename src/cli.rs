@@ -16,10 +16,12 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::output::{self, note, print};
 use crate::progress_line::ProgressLine;
 
+mod assign;
 mod commands;
 mod compare;
 #[cfg(feature = "gpu")]
 mod gpu_check;
+mod grade;
 mod lesson;
 mod space;
 mod texture_figure;
@@ -47,6 +49,8 @@ Examples:
   barylab figure assets/scenes/default.json --pixel 400,420 -o fig.svg
   barylab figure assets/scenes/default.json --size 400x300 --compare side --scale 2 -o fig.png
   barylab compare assets/scenes/games101-a2.json output.png --background black -o diff.png
+  barylab grade assets/scenes/games101-a2.json --submissions homework/ --report report.html --csv grades.csv
+  barylab assign --students roster.csv --number 2026 --out variants/
   barylab gpu-check assets/scenes/*.json
   barylab lesson builtin --list             the built-in lesson's steps
   barylab lesson builtin --step 9 --figure step9.png
@@ -147,6 +151,19 @@ enum Command {
         after_help = "Examples:\n  barylab compare assets/scenes/games101-a2.json output.png --background black\n  barylab compare assets/scenes/default.json shot.png -o diff.png --json"
     )]
     Compare(CompareArgs),
+    /// Grade a class: every student's image in a folder against barylab's renders of the
+    /// scenes, in parallel; an HTML report (verdicts, named bugs, difference thumbnails,
+    /// regions and reasons per student) and a CSV.
+    #[command(
+        after_help = "Examples:\n  barylab grade assets/scenes/games101-a2.json --submissions homework/ --report report.html --csv grades.csv\n  barylab grade --roster variants/roster.csv --submissions homework/ --report report.html"
+    )]
+    Grade(GradeArgs),
+    /// Make a variant of a course scene per student (corners, uv, colours and camera moved
+    /// within limits that keep the task well-posed): scene file, task sheet and answer key.
+    #[command(
+        after_help = "Examples:\n  barylab assign --students roster.csv --number 2026 --out variants/\n  barylab grade --roster variants/roster.csv --submissions homework/ --report report.html"
+    )]
+    Assign(AssignArgs),
     /// A lesson (a file, or `builtin`): list its steps, print one, write a step's figure, or
     /// write the whole lesson as a Markdown handout with its figures.
     #[command(
@@ -217,6 +234,50 @@ struct CompareArgs {
     /// LC_ALL, LC_MESSAGES, LANG). JSON keeps English texts and adds stable `kind` codes.
     #[arg(long, default_value = "en", value_parser = parse_lang)]
     lang: barylab::i18n::Lang,
+}
+
+#[derive(clap::Args, Debug)]
+struct GradeArgs {
+    /// The scene files the images are compared with (a student's file name, or the names of
+    /// the images in a student's folder, contain the scene's file name when there are
+    /// several).
+    scenes: Vec<PathBuf>,
+    /// The folder of submissions: an image per student, or a folder per student.
+    #[arg(long, value_name = "DIR")]
+    submissions: PathBuf,
+    /// Write the HTML report here (.html; self-contained).
+    #[arg(long, value_name = "OUT")]
+    report: PathBuf,
+    /// Also write a CSV: student, scene, verdict, bug codes, pixels differing.
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// The roster `barylab assign` wrote: each student's image is compared with their own
+    /// variant (instead of SCENE...).
+    #[arg(long, value_name = "FILE", conflicts_with = "scenes")]
+    roster: Option<PathBuf>,
+    /// 8-bit levels a channel may differ by and still agree.
+    #[arg(long, default_value_t = barylab::compare::DEFAULT_TOLERANCE)]
+    tolerance: u8,
+    /// Language of the report: en, zh (zh-CN), or auto.
+    #[arg(long, default_value = "en", value_parser = parse_lang)]
+    lang: barylab::i18n::Lang,
+}
+
+#[derive(clap::Args, Debug)]
+struct AssignArgs {
+    /// The roster: CSV with the student's id in the first column.
+    #[arg(long, value_name = "FILE")]
+    students: PathBuf,
+    /// The number that picks the variants: the same roster and number give the same
+    /// variants.
+    #[arg(long, alias = "seed", value_name = "N")]
+    number: u64,
+    /// A new (or empty) folder for the variants: one folder per student and roster.csv.
+    #[arg(long, value_name = "DIR")]
+    out: PathBuf,
+    /// The base scene (world form: a camera and a quad); default: the built-in scene.
+    #[arg(long, value_name = "BASE")]
+    scene: Option<PathBuf>,
 }
 
 /// Parses a colour: black, white, #rrggbb or R,G,B.
@@ -674,6 +735,7 @@ pub fn main() -> ExitCode {
         Some(Command::Bench(_)) => ProgressLine::start("bench"),
         Some(Command::Figure(_)) => ProgressLine::start("figure"),
         Some(Command::Compare(_)) => ProgressLine::start("compare"),
+        Some(Command::Grade(_)) => ProgressLine::start("grade"),
         Some(Command::Lesson(_)) => ProgressLine::start("lesson"),
         _ => None,
     };
@@ -684,6 +746,8 @@ pub fn main() -> ExitCode {
         Some(Command::Bench(args)) => commands::bench(&args),
         Some(Command::Figure(args)) => commands::figure(&args),
         Some(Command::Compare(args)) => compare::run(&args),
+        Some(Command::Grade(args)) => grade::run(&args),
+        Some(Command::Assign(args)) => assign::run(&args),
         Some(Command::Lesson(args)) => lesson::run(&args),
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),

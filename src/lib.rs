@@ -55,6 +55,7 @@ pub mod figure;
 pub mod files;
 #[cfg(feature = "gpu")]
 pub mod gpu;
+pub mod grade;
 /// Without the `gpu` feature: only the GPU view's comparison of two images (no OpenGL), which
 /// the app's GPU view needs to compile (it then says the feature is missing).
 #[cfg(not(feature = "gpu"))]

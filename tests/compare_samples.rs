@@ -2,11 +2,12 @@
 //! GAMES101 A2's black edges (written here the way the bug makes them), a single-sample image
 //! (no anti-aliasing), differences only on edges, and barylab's own multisampled render.
 
+mod bugs_common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use barylab::raster::render::render_samples;
-use barylab::raster::sample::{SampleCount, SamplePattern, SampleSettings, resolve};
+use barylab::raster::sample::{SampleCount, SamplePattern, SampleSettings};
 use barylab::raster::{NO_TRIANGLE, RenderSettings, render};
 use barylab::scene::Scene;
 
@@ -48,41 +49,8 @@ fn save(pixels: Vec<[u8; 4]>, w: u32, h: u32, file: &Path) -> PathBuf {
 /// how many pixels the bug changed.
 fn black_edge_image(file: &Path) -> (PathBuf, usize) {
     let (scene, texture, settings) = load(SampleCount::Four);
-    let (r, samples) = render_samples(&scene.to_mesh(), &texture, &settings).expect("render");
-    let (w, h) = (r.frame.width, r.frame.height);
-    let mut changed = 0;
-    let mut pixels = r.frame.color.clone();
-    for y in 0..h {
-        for x in 0..w {
-            let s = samples.pixel(x, y);
-            let mut tris: Vec<u32> = s
-                .iter()
-                .map(|v| v.triangle)
-                .filter(|&t| t != NO_TRIANGLE)
-                .collect();
-            tris.sort_unstable();
-            tris.dedup();
-            if tris.len() < 2 {
-                continue;
-            }
-            let count = |t: u32| s.iter().filter(|v| v.triangle == t).count();
-            let keep = tris.iter().copied().max_by_key(|&t| count(t)).expect("two");
-            let colors: Vec<[u8; 4]> = s
-                .iter()
-                .map(|v| {
-                    if v.triangle == keep {
-                        v.color
-                    } else {
-                        settings.background
-                    }
-                })
-                .collect();
-            let k = (y * w + x) as usize;
-            pixels[k] = resolve(&colors);
-            changed += 1;
-        }
-    }
-    (save(pixels, w, h, file), changed)
+    let (pixels, changed) = bugs_common::black_edges_of(&scene, &texture, &settings);
+    (save(pixels, settings.width, settings.height, file), changed)
 }
 
 fn compare_json(image: &Path, extra: &[&str]) -> (Option<i32>, serde_json::Value) {

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use anyhow::Result;
 use barylab::compare::reason::mode_short;
-use barylab::compare::{self, Comparison, CoverageBy, Difference, Image, Reference};
+use barylab::compare::{self, Comparison, CoverageBy, Image, Reference};
 use barylab::files::{self, shown};
 use barylab::i18n::Lang;
 
@@ -30,14 +30,7 @@ pub(super) fn run(args: &CompareArgs) -> Result<()> {
         &args.input.scene,
         lang,
     )?;
-    let by = match args.background {
-        Some(c) => CoverageBy::Background(c),
-        None if image.has_transparency() => CoverageBy::Alpha,
-        None => {
-            let b = settings.background;
-            CoverageBy::Background([b[0], b[1], b[2]])
-        }
-    };
+    let by = compare::coverage_for(&image, &settings, args.background);
     let mesh = scene.to_mesh();
     let reference = Reference {
         scene: &scene,
@@ -104,8 +97,9 @@ fn read_image(path: &Path, size: (u32, u32), scene: &Path, lang: Lang) -> Result
     .map_err(anyhow::Error::msg)
 }
 
-/// The report: what was compared, coverage, colour, the verdict and the first differing
-/// pixels with their reasons, in `lang`.
+/// The report, in `lang`: the verdict first (underlined), the named bugs with their fixes,
+/// what was compared, coverage, colour, then the regions of differing pixels, each with its
+/// reason and a few sample pixels.
 fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>, lang: Lang) -> String {
     let by = match c.coverage_by {
         CoverageBy::Alpha => lang.tr("compare.report.by_alpha"),
@@ -114,7 +108,28 @@ fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>, lang: L
             &[("color", &format!("{r},{g},{b}"))],
         ),
     };
-    let mut lines = vec![lang.tr_with(
+    let verdict = if c.agrees() {
+        lang.tr("compare.report.agree")
+    } else {
+        match &c.looks_like {
+            Some(v) => lang.tr_with("compare.report.verdict", &[("verdict", &v.text(lang))]),
+            None => lang.tr_with("compare.report.differ", &[("n", &c.differing())]),
+        }
+    };
+    let rule = "=".repeat(verdict.chars().count().min(100));
+    let mut lines = vec![verdict, rule];
+    for b in &c.bugs {
+        lines.push(lang.tr_with(
+            "compare.report.bug",
+            &[
+                ("code", &b.code()),
+                ("title", &b.title(lang)),
+                ("explanation", &b.explanation(lang)),
+                ("fix", &b.fix(lang)),
+            ],
+        ));
+    }
+    lines.push(lang.tr_with(
         "compare.report.header",
         &[
             ("image", &shown(image)),
@@ -125,7 +140,7 @@ fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>, lang: L
             ("by", &by),
             ("tolerance", &c.tolerance),
         ],
-    )];
+    ));
     lines.push(lang.tr_with(
         "compare.report.coverage",
         &[
@@ -148,31 +163,16 @@ fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>, lang: L
             ("at", &at),
         ],
     ));
-    if c.agrees() {
-        lines.push(lang.tr("compare.report.agree"));
-    } else {
-        lines.push(match &c.looks_like {
-            Some(v) => lang.tr_with("compare.report.verdict", &[("verdict", &v.text(lang))]),
-            None => lang.tr_with("compare.report.differ", &[("n", &c.differing())]),
-        });
-        lines.push(lang.tr("compare.report.first"));
-        for p in &c.first {
-            let what = lang.tr(match p.difference {
-                Difference::OnlyTheirs => "compare.report.only_image",
-                Difference::OnlyOurs => "compare.report.only_barylab",
-                Difference::Color => "compare.report.colour_kind",
-            });
-            let rgb = |c: [u8; 4]| format!("{},{},{}", c[0], c[1], c[2]);
+    if !c.agrees() {
+        lines.push(lang.tr_with("compare.report.regions", &[("n", &c.region_count)]));
+        for (i, r) in c.regions.iter().enumerate() {
+            lines.push(r.text(i + 1, lang));
+            lines.extend(r.samples.iter().map(|p| p.text(lang)));
+        }
+        if c.region_count > c.regions.len() {
             lines.push(lang.tr_with(
-                "compare.report.pixel",
-                &[
-                    ("x", &p.pixel[0]),
-                    ("y", &p.pixel[1]),
-                    ("what", &what),
-                    ("image", &rgb(p.theirs)),
-                    ("barylab", &rgb(p.ours)),
-                    ("reason", &p.reason.text(lang)),
-                ],
+                "compare.report.regions_more",
+                &[("n", &(c.region_count - c.regions.len()))],
             ));
         }
     }

@@ -7,11 +7,16 @@
 //! interpolation, pixel centres at integer coordinates; against a multisampled reference: black
 //! edges, no anti-aliasing, differences only on edges) are tried by rendering or
 //! transforming barylab's image that way and counting what still differs ([`hypotheses`]).
+//! The differing pixels are grouped into connected regions ([`regions`]), each with the
+//! reason that explains most of it; an explanation that fits exactly or nearly names a bug
+//! ([`bugs`]: its code, explanation and fix).
 
+pub mod bugs;
 pub mod diagnose;
 mod file;
 pub mod hypotheses;
 pub mod reason;
+pub mod regions;
 pub mod sampling;
 pub mod verdict;
 
@@ -124,6 +129,30 @@ pub struct PixelDifference {
     pub reason: reason::Reason,
 }
 
+impl PixelDifference {
+    /// The pixel in one line with its colours and reason, in `lang` (indented as a sample
+    /// under its region).
+    pub fn text(&self, lang: Lang) -> String {
+        let what = lang.tr(match self.difference {
+            Difference::OnlyTheirs => "compare.report.only_image",
+            Difference::OnlyOurs => "compare.report.only_barylab",
+            Difference::Color => "compare.report.colour_kind",
+        });
+        let rgb = |c: [u8; 4]| format!("{},{},{}", c[0], c[1], c[2]);
+        lang.tr_with(
+            "compare.report.sample",
+            &[
+                ("x", &self.pixel[0]),
+                ("y", &self.pixel[1]),
+                ("what", &what),
+                ("image", &rgb(self.theirs)),
+                ("barylab", &rgb(self.ours)),
+                ("reason", &self.reason.text(lang)),
+            ],
+        )
+    }
+}
+
 impl Serialize for PixelDifference {
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeStruct;
@@ -188,6 +217,12 @@ pub struct Comparison {
     pub looks_like: Option<verdict::Verdict>,
     /// The first differing pixels in row order.
     pub first: Vec<PixelDifference>,
+    /// The named bugs ([`bugs::named`]): empty when none fits exactly or nearly.
+    pub bugs: Vec<bugs::Bug>,
+    /// Connected regions of differing pixels.
+    pub region_count: usize,
+    /// The largest [`regions::REGIONS_LISTED`] regions, largest first, with reasons.
+    pub regions: Vec<regions::Region>,
 }
 
 impl Comparison {
@@ -199,6 +234,24 @@ impl Comparison {
     /// Whether the images agree: same coverage, colours within the tolerance.
     pub fn agrees(&self) -> bool {
         self.differing() == 0
+    }
+}
+
+/// How an image's coverage is read when nothing else is said: by `background` when given,
+/// else by alpha when the image has a transparent pixel, else by the scene's background
+/// colour (`barylab compare` and `barylab grade` read it alike).
+pub fn coverage_for(
+    image: &Image,
+    settings: &RenderSettings,
+    background: Option<[u8; 3]>,
+) -> CoverageBy {
+    match background {
+        Some(c) => CoverageBy::Background(c),
+        None if image.has_transparency() => CoverageBy::Alpha,
+        None => {
+            let b = settings.background;
+            CoverageBy::Background([b[0], b[1], b[2]])
+        }
     }
 }
 
@@ -225,11 +278,24 @@ pub struct Rendered {
 }
 
 impl Rendered {
-    fn of(frame: &crate::raster::Framebuffer) -> Self {
+    /// A frame's colours and coverage.
+    pub fn of(frame: &crate::raster::Framebuffer) -> Self {
         Self {
             color: frame.color.clone(),
             covered: frame.triangle.iter().map(|&t| t != NO_TRIANGLE).collect(),
         }
+    }
+
+    /// The colours as an image `width` pixels wide (row 0 at the top); `None` when the
+    /// pixel count is not a multiple of `width`.
+    pub fn to_image(&self, width: u32) -> Option<image::RgbaImage> {
+        let w = width.max(1) as usize;
+        if !self.color.len().is_multiple_of(w) {
+            return None;
+        }
+        let h = (self.color.len() / w) as u32;
+        let bytes: Vec<u8> = self.color.iter().flatten().copied().collect();
+        image::RgbaImage::from_raw(width, h, bytes)
     }
 }
 
@@ -290,6 +356,20 @@ pub fn compare_rendered(
     by: CoverageBy,
     tolerance: u8,
 ) -> Result<Comparison, String> {
+    compare_with(theirs, reference, render, None, by, tolerance)
+}
+
+/// [`compare_rendered`] with the whole-image explanations already made
+/// ([`hypotheses::Candidates`], for the same reference and render; `None` makes them when
+/// the images differ): `barylab grade` makes them once per scene for a whole class.
+pub fn compare_with(
+    theirs: &Image,
+    reference: &Reference,
+    render: &crate::raster::render::Render,
+    candidates: Option<&hypotheses::Candidates>,
+    by: CoverageBy,
+    tolerance: u8,
+) -> Result<Comparison, String> {
     let s = &reference.settings;
     let f = &render.frame;
     if (theirs.width, theirs.height) != (f.width, f.height) || theirs.pixels.len() != f.color.len()
@@ -317,15 +397,17 @@ pub fn compare_rendered(
         hypotheses: Vec::new(),
         looks_like: None,
         first: Vec::new(),
+        bugs: Vec::new(),
+        region_count: 0,
+        regions: Vec::new(),
     };
-    let mut differing = Vec::new();
+    let mut differs = vec![None; ours.color.len()];
     for (k, &p) in theirs.pixels.iter().enumerate() {
-        let xy = [(k as u32) % width, (k as u32) / width];
         if ours.covered[k] && covered_by(p, by, tolerance) {
             let d = rgb_difference(p, ours.color[k]);
             if d > c.max_color_difference {
                 c.max_color_difference = d;
-                c.max_color_at = Some(xy);
+                c.max_color_at = Some([(k as u32) % width, (k as u32) / width]);
             }
         }
         let Some(d) = classify(p, &ours, k, by, tolerance) else {
@@ -336,21 +418,28 @@ pub fn compare_rendered(
             Difference::OnlyOurs => c.only_ours += 1,
             Difference::Color => c.color_differing += 1,
         }
-        if differing.len() < LISTED {
-            differing.push((k, d));
-        }
+        differs[k] = Some(d);
     }
     if c.agrees() {
         return Ok(c);
     }
-    let tried = hypotheses::try_all(theirs, reference, &render.frame, by, tolerance)?;
+    let made;
+    let candidates = match candidates {
+        Some(made) => made,
+        None => {
+            made = hypotheses::Candidates::new(reference, &render.frame)?;
+            &made
+        }
+    };
+    let tried = candidates.try_against(theirs, by, tolerance);
     let best = tried
         .iter()
         .filter(|h| h.differing * 2 < c.differing())
         .min_by_key(|h| h.differing);
     c.looks_like = best.map(|h| h.verdict());
+    c.bugs = bugs::named(c.differing(), &tried);
     let context = diagnose::Context::new(reference, render, by, tolerance)?;
-    for (k, d) in differing {
+    let pixel = |k: usize, d: Difference| -> Result<PixelDifference, String> {
         let xy = [(k as u32) % width, (k as u32) / width];
         let explained = best.filter(|h| !h.differs_at(k));
         let reason = match explained {
@@ -358,17 +447,75 @@ pub fn compare_rendered(
             None => context.reason(xy, d, theirs.pixels[k])?,
         };
         let t = render.frame.triangle[k];
-        c.first.push(PixelDifference {
+        Ok(PixelDifference {
             pixel: xy,
             difference: d,
             theirs: theirs.pixels[k],
             ours: ours.color[k],
             triangle: (t != NO_TRIANGLE).then_some(t),
             reason,
+        })
+    };
+    for (k, d) in differs.iter().enumerate() {
+        if c.first.len() == LISTED {
+            break;
+        }
+        if let Some(d) = d {
+            c.first.push(pixel(k, *d)?);
+        }
+    }
+    let components = regions::components(&differs, width as usize);
+    c.region_count = components.len();
+    for comp in components.iter().take(regions::REGIONS_LISTED) {
+        let count = |want: Difference| {
+            comp.indices
+                .iter()
+                .filter(|&&k| differs[k] == Some(want))
+                .count()
+        };
+        let explained = best.map_or(0, |h| {
+            comp.indices.iter().filter(|&&k| !h.differs_at(k)).count()
+        });
+        let mut samples = Vec::new();
+        for k in comp.samples() {
+            if let Some(d) = differs[k] {
+                samples.push(pixel(k, d)?);
+            }
+        }
+        let reason = match best {
+            Some(h) if explained * 2 > comp.indices.len() => {
+                Some(h.pixel_reason(comp.indices[0], &render.frame, reference.texture))
+            }
+            _ => commonest_reason(&samples),
+        };
+        c.regions.push(regions::Region {
+            bbox: comp.bbox,
+            pixels: comp.indices.len(),
+            only_theirs: count(Difference::OnlyTheirs),
+            only_ours: count(Difference::OnlyOurs),
+            color: count(Difference::Color),
+            explained,
+            reason,
+            samples,
         });
     }
     c.hypotheses = tried;
     Ok(c)
+}
+
+/// The reason of the commonest kind among `samples` (the first of that kind; among equally
+/// common kinds, the one met first).
+fn commonest_reason(samples: &[PixelDifference]) -> Option<reason::Reason> {
+    let count = |kind: &str| samples.iter().filter(|p| p.reason.kind() == kind).count();
+    samples
+        .iter()
+        .max_by(|a, b| {
+            count(a.reason.kind())
+                .cmp(&count(b.reason.kind()))
+                // max_by keeps the last of equals: prefer the earlier sample.
+                .then(std::cmp::Ordering::Greater)
+        })
+        .map(|p| p.reason.clone())
 }
 
 /// The difference image: barylab's image in dim grey where the two agree, red to yellow by

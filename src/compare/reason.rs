@@ -128,6 +128,8 @@ impl Reason {
                 let rule = lang.tr(match rule {
                     TieRule::Llvmpipe => "compare.tie.llvmpipe",
                     TieRule::TopLeft => "compare.tie.top_left",
+                    TieRule::AllEdges => "compare.tie.all_edges",
+                    TieRule::NoEdges => "compare.tie.no_edges",
                 });
                 let args: [(&str, &dyn std::fmt::Display); 4] = [
                     ("edge", edge),

@@ -42,6 +42,25 @@ pub enum Kind {
     /// Against a multisampled reference: the image is barylab's render with the other
     /// sample pattern (the grid for a standard-pattern reference, and back).
     OtherSamplePattern,
+    /// Rows and columns exchanged: pixel `(x, y)` written at `(y, x)` (square images only).
+    XySwapped,
+    /// Red and blue exchanged (the colour written as BGR).
+    Bgr,
+    /// The colour encoded with gamma 2.2 once more: `255 (c / 255)^(1 / 2.2)`.
+    Gamma,
+    /// The depth test reversed (greater wins), or the sign of z flipped.
+    DepthReversed,
+    /// No depth test: the triangles drawn in the scene's order, the last one on top.
+    NoDepthTest,
+    /// No depth test and the triangles drawn in the reverse order: the first one on top.
+    ReverseOrder,
+    /// No fill rule: samples exactly on an edge covered by every triangle that has the edge.
+    EveryEdgeOwns,
+    /// No fill rule: samples exactly on an edge covered by no triangle.
+    NoEdgeOwns,
+    /// Against a single-sample reference: barylab's render supersampled at 2x2 grid
+    /// positions (GAMES101 A2's SSAA), where none was asked for.
+    Supersampled,
 }
 
 /// A whole-image explanation as a verdict: which one, what it leaves differing, and what it
@@ -79,6 +98,15 @@ impl Verdict {
             Kind::EdgesOnly => lang.tr("compare.describe.edges_only"),
             Kind::OtherShadingRate => lang.tr("compare.describe.other_shading_rate"),
             Kind::OtherSamplePattern => lang.tr("compare.describe.other_sample_pattern"),
+            Kind::XySwapped => lang.tr("compare.describe.xy_swapped"),
+            Kind::Bgr => lang.tr("compare.describe.bgr"),
+            Kind::Gamma => lang.tr("compare.describe.gamma"),
+            Kind::DepthReversed => lang.tr("compare.describe.depth_reversed"),
+            Kind::NoDepthTest => lang.tr("compare.describe.no_depth_test"),
+            Kind::ReverseOrder => lang.tr("compare.describe.reverse_order"),
+            Kind::EveryEdgeOwns => lang.tr("compare.describe.every_edge_owns"),
+            Kind::NoEdgeOwns => lang.tr("compare.describe.no_edge_owns"),
+            Kind::Supersampled => lang.tr("compare.describe.supersampled"),
         }
     }
 
@@ -101,6 +129,14 @@ impl Verdict {
             Kind::EdgesOnly => lang.tr("compare.looks.edges_only"),
             Kind::OtherShadingRate => lang.tr("compare.looks.other_shading_rate"),
             Kind::OtherSamplePattern => lang.tr("compare.looks.other_sample_pattern"),
+            Kind::XySwapped => lang.tr("compare.looks.xy_swapped"),
+            Kind::Bgr => lang.tr("compare.looks.bgr"),
+            Kind::Gamma => lang.tr("compare.looks.gamma"),
+            Kind::DepthReversed => lang.tr("compare.looks.depth_reversed"),
+            Kind::NoDepthTest => lang.tr("compare.looks.no_depth_test"),
+            Kind::ReverseOrder => lang.tr("compare.looks.reverse_order"),
+            Kind::EveryEdgeOwns | Kind::NoEdgeOwns => lang.tr("compare.looks.no_fill_rule"),
+            Kind::Supersampled => lang.tr("compare.looks.supersampled"),
         }
     }
 
@@ -130,6 +166,14 @@ impl Verdict {
             Kind::EdgesOnly => "compare.short.edges_only",
             Kind::OtherShadingRate => "compare.short.other_shading_rate",
             Kind::OtherSamplePattern => "compare.short.other_sample_pattern",
+            Kind::XySwapped => "compare.short.xy_swapped",
+            Kind::Bgr => "compare.short.bgr",
+            Kind::Gamma => "compare.short.gamma",
+            Kind::DepthReversed => "compare.short.depth_reversed",
+            Kind::NoDepthTest => "compare.short.no_depth_test",
+            Kind::ReverseOrder => "compare.short.reverse_order",
+            Kind::EveryEdgeOwns | Kind::NoEdgeOwns => "compare.short.no_fill_rule",
+            Kind::Supersampled => "compare.short.supersampled",
         })
     }
 }
@@ -147,5 +191,7 @@ pub fn rule_words(rule: TieRule, lang: Lang) -> String {
     lang.tr(match rule {
         TieRule::Llvmpipe => "compare.rule.llvmpipe",
         TieRule::TopLeft => "compare.rule.top_left",
+        TieRule::AllEdges => "compare.rule.all_edges",
+        TieRule::NoEdges => "compare.rule.no_edges",
     })
 }

@@ -73,6 +73,17 @@ pub enum TieRule {
     /// The top-left rule as Direct3D states it (and most Vulkan drivers follow) in y-down
     /// framebuffer coordinates: left edges, and top edges (horizontal, interior below).
     TopLeft,
+    /// No fill rule: every edge owns the samples exactly on it, so a sample on an edge two
+    /// triangles share is drawn by both (a common homework mistake, `>= 0` on all three
+    /// edges; `barylab compare` renders it to name the mistake, scene files cannot ask
+    /// for it).
+    #[serde(skip)]
+    AllEdges,
+    /// No fill rule the other way: no edge owns the samples exactly on it, so a sample on an
+    /// edge two triangles share is missed by both (`> 0` on all three edges; as
+    /// [`TieRule::AllEdges`], only for `barylab compare`).
+    #[serde(skip)]
+    NoEdges,
 }
 
 impl TieRule {
@@ -81,6 +92,8 @@ impl TieRule {
         match self {
             TieRule::Llvmpipe => matches!(kind, EdgeKind::Left | EdgeKind::Bottom),
             TieRule::TopLeft => matches!(kind, EdgeKind::Left | EdgeKind::Top),
+            TieRule::AllEdges => true,
+            TieRule::NoEdges => false,
         }
     }
 
@@ -89,6 +102,8 @@ impl TieRule {
         match self {
             TieRule::Llvmpipe => "llvmpipe",
             TieRule::TopLeft => "top_left",
+            TieRule::AllEdges => "all_edges",
+            TieRule::NoEdges => "no_edges",
         }
     }
 
@@ -101,6 +116,8 @@ impl TieRule {
             TieRule::TopLeft => {
                 "the top-left rule (Direct3D, and most Vulkan drivers): centres on left and top edges are covered"
             }
+            TieRule::AllEdges => "no fill rule: centres on every edge are covered",
+            TieRule::NoEdges => "no fill rule: centres on an edge are never covered",
         }
     }
 

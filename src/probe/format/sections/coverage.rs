@@ -53,6 +53,16 @@ fn coverage_reason(b: &Builder, test: &CoverageTest) -> String {
                     tr!(b, "probe.coverage.edges_left_top"),
                     tr!(b, "probe.coverage.edges_bottom_right"),
                 ),
+                TieRule::AllEdges => (
+                    tr!(b, "probe.coverage.rule_all_edges"),
+                    tr!(b, "probe.coverage.edges_all"),
+                    tr!(b, "probe.coverage.edges_none"),
+                ),
+                TieRule::NoEdges => (
+                    tr!(b, "probe.coverage.rule_no_edges"),
+                    tr!(b, "probe.coverage.edges_none"),
+                    tr!(b, "probe.coverage.edges_all"),
+                ),
             };
             if test.covered {
                 tr!(
