@@ -16,6 +16,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::output::{self, note, print};
 use crate::progress_line::ProgressLine;
 
+mod animate;
 mod commands;
 mod compare;
 #[cfg(feature = "gpu")]
@@ -51,6 +52,7 @@ Examples:
   barylab lesson builtin --list             the built-in lesson's steps
   barylab lesson builtin --step 9 --figure step9.png
   barylab lesson builtin --handout handout/ --lang zh
+  barylab animate assets/scenes/default.json --sweep depth -o depth.gif
   barylab --lesson builtin --step 9         open the app on a lesson step
   barylab --compare-image out.png scene.json   open the app comparing out.png with the scene";
 
@@ -153,6 +155,14 @@ enum Command {
         after_help = "Examples:\n  barylab lesson builtin --list\n  barylab lesson builtin --step 9\n  barylab lesson builtin --step 9 --figure step9.svg\n  barylab lesson my-lesson.json --handout handout/ --lang zh\n  pandoc handout/handout.md -o handout.html"
     )]
     Lesson(LessonArgs),
+    /// A sweep of a scene as an animation for slides (GIF, APNG, WebP, MP4): the wipe from
+    /// affine to perspective-correct, a corner pushed away, a tilt, the pinned pixel walking
+    /// its row, the rasterizers filling the triangles, a corner crossing the near plane. Every
+    /// frame is the figure `barylab figure` draws.
+    #[command(
+        after_help = "Examples:\n  barylab animate assets/scenes/default.json --sweep affine-perspective -o wipe.gif\n  barylab animate assets/scenes/default.json --sweep depth --frames 60 -o depth.apng\n  barylab animate assets/scenes/default.json --sweep fill-scanline --size 40x30 --pixel-size 12 -o fill.gif\n  barylab animate assets/scenes/default.json --sweep row --pixel 400,300 --lang zh -o row.webp"
+    )]
+    Animate(animate::AnimateArgs),
     /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
     /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
     /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
@@ -675,6 +685,7 @@ pub fn main() -> ExitCode {
         Some(Command::Figure(_)) => ProgressLine::start("figure"),
         Some(Command::Compare(_)) => ProgressLine::start("compare"),
         Some(Command::Lesson(_)) => ProgressLine::start("lesson"),
+        Some(Command::Animate(_)) => ProgressLine::start("animate"),
         _ => None,
     };
     let result = match cli.command {
@@ -685,6 +696,7 @@ pub fn main() -> ExitCode {
         Some(Command::Figure(args)) => commands::figure(&args),
         Some(Command::Compare(args)) => compare::run(&args),
         Some(Command::Lesson(args)) => lesson::run(&args),
+        Some(Command::Animate(args)) => animate::run(&args),
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };

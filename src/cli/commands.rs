@@ -215,7 +215,12 @@ pub(super) fn inputs(named: &Path, scene: &Scene) -> Vec<PathBuf> {
 
 /// Refuses a pixel option (`--pixel`, `--hover`) outside the image, naming the option and the
 /// scene file.
-fn inside(option: &str, pixel: Option<(u32, u32)>, o: &SceneOptions, scene: &Scene) -> Result<()> {
+pub(super) fn inside(
+    option: &str,
+    pixel: Option<(u32, u32)>,
+    o: &SceneOptions,
+    scene: &Scene,
+) -> Result<()> {
     let (w, h) = scene.size();
     match pixel {
         Some((x, y)) if x >= w || y >= h => anyhow::bail!(

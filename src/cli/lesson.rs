@@ -39,7 +39,7 @@ pub(super) fn run(args: &LessonArgs) -> Result<()> {
 }
 
 /// The language asked for; for figures, English when Chinese labels have no font.
-fn check_font(lang: Lang, figures: bool) -> Lang {
+pub(super) fn check_font(lang: Lang, figures: bool) -> Lang {
     if figures && lang != Lang::En && barylab::i18n::cjk_font().is_none() {
         eprintln!(
             "warning: no font with Chinese glyphs found (looked for {}); the figures' labels are \
