@@ -12,6 +12,7 @@
 //!   the other pixels of every frame; a pixel takes the nearest entry NeuQuant gives.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 
 use color_quant::NeuQuant;
 use rayon::prelude::*;
@@ -28,6 +29,28 @@ const SAMPLE_PIXELS: usize = 300_000;
 /// NeuQuant's sampling factor (1 best and slowest, 30 fastest).
 const SAMPLE_FACTOR: i32 = 10;
 
+/// A hasher for `0xRRGGBB` keys: one multiplication (Fibonacci hashing), far cheaper than
+/// the default SipHash over the millions of pixels of an animation.
+#[derive(Default)]
+struct ColorHasher(u64);
+
+impl Hasher for ColorHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 << 8 | u64::from(b)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        }
+    }
+    fn write_u32(&mut self, k: u32) {
+        self.0 = u64::from(k).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+}
+
+/// A map keyed by `0xRRGGBB`.
+type ColorMap<V> = HashMap<u32, V, BuildHasherDefault<ColorHasher>>;
+
 /// A palette of at most 256 entries for every frame of one animation.
 pub struct Palette {
     /// The RGB entries, in index order.
@@ -35,7 +58,7 @@ pub struct Palette {
     /// The transparent entry, when some pixel is transparent.
     pub transparent: Option<u8>,
     /// The exact entries by colour (`0xRRGGBB`).
-    exact: HashMap<u32, u8>,
+    exact: ColorMap<u8>,
     /// The learned entries (after the exact ones), when the colours did not all fit.
     learned: Option<NeuQuant>,
 }
@@ -51,15 +74,28 @@ fn rgb(k: u32) -> [u8; 3] {
 }
 
 /// How often each opaque colour occurs in `frame`, and whether a pixel is transparent.
-fn histogram(frame: &image::RgbaImage) -> (HashMap<u32, u64>, bool) {
-    let mut counts: HashMap<u32, u64> = HashMap::new();
+fn histogram(frame: &image::RgbaImage) -> (ColorMap<u64>, bool) {
+    let mut counts: ColorMap<u64> = ColorMap::default();
     let mut transparent = false;
+    // Runs of one colour (flat areas) are counted at once.
+    let mut run: Option<(u32, u64)> = None;
     for p in frame.pixels() {
         if p[3] < ALPHA_CUTOFF {
             transparent = true;
-        } else {
-            *counts.entry(key(p)).or_insert(0) += 1;
+            continue;
         }
+        let k = key(p);
+        match &mut run {
+            Some((c, n)) if *c == k => *n += 1,
+            _ => {
+                if let Some((c, n)) = run.replace((k, 1)) {
+                    *counts.entry(c).or_insert(0) += n;
+                }
+            }
+        }
+    }
+    if let Some((c, n)) = run {
+        *counts.entry(c).or_insert(0) += n;
     }
     (counts, transparent)
 }
@@ -68,7 +104,7 @@ impl Palette {
     /// The palette of all `frames` (see the module's text).
     pub fn of(frames: &[image::RgbaImage]) -> Palette {
         let (counts, transparent) = frames.par_iter().map(histogram).reduce(
-            || (HashMap::new(), false),
+            || (ColorMap::default(), false),
             |(mut a, ta), (b, tb)| {
                 for (k, n) in b {
                     *a.entry(k).or_insert(0) += n;
@@ -91,7 +127,7 @@ impl Palette {
                 .map(|c| c.0)
                 .collect()
         };
-        let exact: HashMap<u32, u8> = reserved
+        let exact: ColorMap<u8> = reserved
             .iter()
             .enumerate()
             .map(|(i, &k)| (k, i as u8))
@@ -127,7 +163,9 @@ impl Palette {
     /// `frame` as palette indices, row by row.
     pub fn indices(&self, frame: &image::RgbaImage) -> Vec<u8> {
         let offset = self.exact.len();
-        let mut nearest: HashMap<u32, u8> = HashMap::new();
+        let mut nearest: ColorMap<u8> = ColorMap::default();
+        // The last opaque colour and its index: flat areas look up once per run.
+        let mut last: Option<(u32, u8)> = None;
         frame
             .pixels()
             .map(|p| {
@@ -135,13 +173,19 @@ impl Palette {
                     return self.transparent.unwrap_or(0);
                 }
                 let k = key(p);
-                if let Some(&i) = self.exact.get(&k) {
-                    return i;
+                match last {
+                    Some((c, i)) if c == k => return i,
+                    _ => {}
                 }
-                *nearest.entry(k).or_insert_with(|| match &self.learned {
-                    Some(nq) => (offset + nq.index_of(&[p[0], p[1], p[2], 255])) as u8,
-                    None => 0,
-                })
+                let i = match self.exact.get(&k) {
+                    Some(&i) => i,
+                    None => *nearest.entry(k).or_insert_with(|| match &self.learned {
+                        Some(nq) => (offset + nq.index_of(&[p[0], p[1], p[2], 255])) as u8,
+                        None => 0,
+                    }),
+                };
+                last = Some((k, i));
+                i
             })
             .collect()
     }
@@ -149,7 +193,7 @@ impl Palette {
 
 /// RGBA bytes of up to [`SAMPLE_PIXELS`] opaque pixels of `frames` without an exact entry,
 /// taken at an even stride across all frames.
-fn sample_rest(frames: &[image::RgbaImage], exact: &HashMap<u32, u8>) -> Vec<u8> {
+fn sample_rest(frames: &[image::RgbaImage], exact: &ColorMap<u8>) -> Vec<u8> {
     let all: usize = frames.iter().map(|f| f.pixels().len()).sum();
     let stride = all.div_ceil(SAMPLE_PIXELS).max(1);
     let mut sample = Vec::with_capacity(4 * SAMPLE_PIXELS.min(all));
