@@ -22,6 +22,7 @@ mod compare;
 #[cfg(feature = "gpu")]
 mod gpu_check;
 mod lesson;
+mod slides;
 mod space;
 mod texture_figure;
 mod values;
@@ -150,9 +151,9 @@ enum Command {
     )]
     Compare(CompareArgs),
     /// A lesson (a file, or `builtin`): list its steps, print one, write a step's figure, or
-    /// write the whole lesson as a Markdown handout with its figures.
+    /// write the whole lesson as a Markdown handout with its figures or as a slide deck.
     #[command(
-        after_help = "Examples:\n  barylab lesson builtin --list\n  barylab lesson builtin --step 9\n  barylab lesson builtin --step 9 --figure step9.svg\n  barylab lesson my-lesson.json --handout handout/ --lang zh\n  pandoc handout/handout.md -o handout.html"
+        after_help = "Examples:\n  barylab lesson builtin --list\n  barylab lesson builtin --step 9\n  barylab lesson builtin --step 9 --figure step9.svg\n  barylab lesson my-lesson.json --handout handout/ --lang zh\n  barylab lesson builtin --slides deck.html\n  pandoc handout/handout.md -o handout.html"
     )]
     Lesson(LessonArgs),
     /// A sweep of a scene as an animation for slides (GIF, APNG, WebP, MP4): the wipe from
@@ -196,6 +197,11 @@ struct LessonArgs {
     /// folder; never overwrites a file.
     #[arg(long, value_name = "DIR", conflicts_with_all = ["figure", "list"])]
     handout: Option<PathBuf>,
+    /// Write the lesson as a slide deck: .html (one self-contained file, no network: the
+    /// figures inline; arrow keys, Page Up/Down and space step through it) or .pdf (Beamer,
+    /// through pandoc and LaTeX).
+    #[arg(long, value_name = "OUT", conflicts_with_all = ["figure", "list", "handout", "step"])]
+    slides: Option<PathBuf>,
     /// Language of the texts, figure labels and derivations: en, zh (zh-CN), or auto.
     #[arg(long, default_value = "en", value_parser = parse_lang)]
     lang: barylab::i18n::Lang,
