@@ -177,7 +177,7 @@ fn apng(frames: &[image::RgbaImage], fps: f64) -> Result<Vec<u8>, AnimateError> 
         let mut enc = png::Encoder::new(&mut bytes, w, h);
         enc.set_color(png::ColorType::Rgba);
         enc.set_depth(png::BitDepth::Eight);
-        enc.set_compression(png::Compression::Fast);
+        enc.set_compression(png::Compression::Balanced);
         enc.set_animated(frames.len() as u32, 0)
             .map_err(encode_error)?;
         let (num, den) = apng_delay(fps);
