@@ -436,6 +436,15 @@ enum BackgroundArg {
     White,
 }
 
+impl From<BackgroundArg> for barylab::figure::Background {
+    fn from(b: BackgroundArg) -> Self {
+        match b {
+            BackgroundArg::Transparent => Self::Transparent,
+            BackgroundArg::White => Self::White,
+        }
+    }
+}
+
 /// Parses a fraction in [0, 1].
 fn parse_fraction(s: &str) -> Result<f32, String> {
     match s.trim().parse::<f32>() {

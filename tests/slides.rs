@@ -64,7 +64,7 @@ fn the_builtin_lesson_is_one_offline_html_deck_in_both_languages() {
             } else {
                 barylab::i18n::Lang::Zh
             }));
-            let escaped = barylab::lesson::slides::escape(&title);
+            let escaped = barylab::figure::svg::escape(&title);
             assert!(
                 html.contains(&format!("{}. {escaped}</h2>", i + 1)),
                 "{title}"

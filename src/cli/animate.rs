@@ -7,43 +7,17 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use barylab::animate::{self, Animation, Format, Sweep};
 use barylab::files::shown;
-use clap::ValueEnum;
 
 use super::values::*;
 use super::{BackgroundArg, SceneOptions, parse_lang, parse_overlay_scale, parse_scale};
 use crate::output::{self, print};
 
-/// The sweeps, by their names on the command line.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum SweepArg {
-    /// The wipe line across the image: affine to perspective-correct.
-    AffinePerspective,
-    /// A corner pushed away along its view ray, w from 1x to 8x.
-    Depth,
-    /// The quad tilting about its centre by 60 degrees.
-    Tilt,
-    /// The pinned pixel walking along its row, its weights and uv in the caption.
-    Row,
-    /// The edge-function rasterizer filling the triangles in its block order.
-    FillEdge,
-    /// The scanline rasterizer filling the triangles row by row.
-    FillScanline,
-    /// A corner moved through the near plane to behind the camera.
-    Clip,
-}
-
-impl From<SweepArg> for Sweep {
-    fn from(s: SweepArg) -> Self {
-        match s {
-            SweepArg::AffinePerspective => Sweep::AffinePerspective,
-            SweepArg::Depth => Sweep::Depth,
-            SweepArg::Tilt => Sweep::Tilt,
-            SweepArg::Row => Sweep::Row,
-            SweepArg::FillEdge => Sweep::FillEdge,
-            SweepArg::FillScanline => Sweep::FillScanline,
-            SweepArg::Clip => Sweep::Clip,
-        }
-    }
+/// Parses a sweep by its name.
+fn parse_sweep(s: &str) -> Result<Sweep, String> {
+    Sweep::from_name(s.trim()).ok_or_else(|| {
+        let names: Vec<&str> = Sweep::ALL.iter().map(|k| k.name()).collect();
+        format!("`{s}` is not a sweep: one of {}", names.join(", "))
+    })
 }
 
 /// Parses frames per second: 1 to 100.
@@ -69,9 +43,12 @@ fn parse_vertex(s: &str) -> Result<usize, String> {
 pub(super) struct AnimateArgs {
     #[command(flatten)]
     input: SceneOptions,
-    /// What moves: affine-perspective, depth, tilt, row, fill-edge, fill-scanline or clip.
-    #[arg(long, value_name = "KIND")]
-    sweep: SweepArg,
+    /// What moves: affine-perspective (the wipe from affine to perspective-correct), depth (a
+    /// corner pushed away, w 1x to 8x), tilt (the quad tilting 60 degrees), row (the pinned
+    /// pixel walking its row, weights and uv in the caption), fill-edge and fill-scanline (each
+    /// rasterizer filling the triangles in its order), clip (a corner crossing the near plane).
+    #[arg(long, value_name = "KIND", value_parser = parse_sweep)]
+    sweep: Sweep,
     /// Frames, 2 to 1000.
     #[arg(long, default_value_t = 48, value_parser = clap::value_parser!(u32).range(2..=1000))]
     frames: u32,
@@ -116,7 +93,7 @@ pub(super) struct AnimateArgs {
 
 /// Runs `barylab animate`.
 pub(super) fn run(args: &AnimateArgs) -> Result<()> {
-    use barylab::figure::{Background, FigureOptions};
+    use barylab::figure::FigureOptions;
     output::check_output(&args.output, &animate::encode::EXTENSIONS)?;
     let format = Format::of(&args.output).context("unknown output format")?;
     if format == Format::Mp4 && !animate::encode::has_ffmpeg() {
@@ -132,18 +109,10 @@ pub(super) fn run(args: &AnimateArgs) -> Result<()> {
         &super::commands::inputs(&args.input.scene, &scene),
     )?;
     super::commands::inside("--pixel", args.pixel, &args.input, &scene)?;
-    barylab::app::edit::set_options(
-        &mut scene,
-        barylab::app::edit::SceneOptions {
-            mode: settings.mode,
-            shading: settings.shading,
-            filter: settings.filter,
-            wireframe: settings.wireframe,
-        },
-    );
+    super::commands::own_options(&mut scene, &settings);
     scene.set_max_anisotropy(settings.max_anisotropy);
     let lang = super::lesson::check_font(args.lang, true);
-    let sweep: Sweep = args.sweep.into();
+    let sweep = args.sweep;
     let anim = Animation {
         sweep,
         frames: args.frames,
@@ -154,10 +123,7 @@ pub(super) fn run(args: &AnimateArgs) -> Result<()> {
             show_handles: !args.no_handles,
             pinned: args.pixel.map(|(x, y)| [x, y]),
             scale: args.scale,
-            background: match args.background {
-                BackgroundArg::Transparent => Background::Transparent,
-                BackgroundArg::White => Background::White,
-            },
+            background: args.background.into(),
             overlay_scale: args.overlay_scale,
             caption: args.caption,
             ..FigureOptions::default()

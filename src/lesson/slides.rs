@@ -15,26 +15,8 @@ use base64::Engine;
 use super::handout::{self, HandoutError, HandoutFile, step_pictures, step_state, texture_of};
 use super::text::{self, Block};
 use super::{Lesson, Step};
+use crate::figure::svg::escape;
 use crate::i18n::{Lang, tr};
-
-/// `s` with `&`, `<`, `>` and `"` escaped for HTML text and attributes.
-///
-/// ```
-/// assert_eq!(barylab::lesson::slides::escape("a < b & \"c\""), "a &lt; b &amp; &quot;c&quot;");
-/// ```
-pub fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            _ => out.push(c),
-        }
-    }
-    out
-}
 
 /// A lesson text as HTML: paragraphs with `<strong>` spans, formula blocks as `<pre>`.
 pub fn text_html(s: &str) -> String {
