@@ -1,5 +1,5 @@
 //! The animation formats: GIF (one palette, [`super::palette`]), APNG (lossless RGBA),
-//! animated WebP (lossless, [`super::webp`]) and MP4 (H.264 through an installed `ffmpeg`).
+//! animated WebP (lossless, `webp.rs`) and MP4 (H.264 through an installed `ffmpeg`).
 //! Each returns the file's bytes; the caller writes them atomically.
 
 use std::io::Write;

@@ -6,11 +6,11 @@
 //! caption and language, and the first and last frames are the still figures of the sweep's
 //! end states. The fill sweeps hide the pixels the rasterizer has not visited yet (they show
 //! the image's background) and outline the one it is at ([`visit`]); nothing else is drawn
-//! here. Frames are rendered in parallel (rayon), then encoded ([`encode`]).
+//! here. Frames are rendered in parallel (rayon), then encoded ([`mod@encode`]).
 //!
 //! - [`sweep`]: what each sweep changes, as a function of the frame's time `t = i / (N - 1)`.
 //! - [`visit`]: the order each rasterizer visits the pixels.
-//! - [`encode`]: the formats; [`palette`]: one GIF palette for the whole animation.
+//! - [`mod@encode`]: the formats; [`palette`]: one GIF palette for the whole animation.
 
 pub mod encode;
 pub mod palette;
