@@ -239,9 +239,16 @@ fn the_fill_sweeps_end_on_the_still_figure_and_start_empty() {
         let f = frames(&out);
         check_frames(&f, 8);
         assert!(f[7] == full, "{sweep}: the last frame is the still figure");
-        // The first frame shows no pixel of the quad: every pixel where the still differs
-        // from the first frame is a covered one, and there are such pixels.
-        assert_ne!(f[0], full);
+        // The first frame has drawn nothing yet: it differs from the still, and a later
+        // frame differs from it by more (more pixels drawn).
+        let first = &f[0];
+        let drawn = |g: &RgbaImage| {
+            g.pixels()
+                .zip(first.pixels())
+                .filter(|(p, q)| p != q)
+                .count()
+        };
+        assert!(0 < drawn(&f[3]) && drawn(&f[3]) < drawn(&f[7]));
     }
 }
 
