@@ -14,6 +14,14 @@ grep -v '^#' docs/figures/list.txt | grep -v '^\s*$' | while read -r out args; d
   ./target/release/barylab "$command" $args -o "docs/figures/$out" >/dev/null
   echo "docs/figures/$out"
 done
+# The animations of docs/animation.md (`barylab animate`; the same flags as their captions say).
+anim() { out=$1; shift; rm -f "docs/figures/$out"; ./target/release/barylab animate "$@" -o "docs/figures/$out" >/dev/null; echo "docs/figures/$out"; }
+anim animate-depth.gif assets/scenes/default.json --size 240x180 --sweep depth --frames 16 --fps 8
+anim animate-wipe.apng assets/scenes/default.json --size 240x180 --sweep affine-perspective --frames 12 --fps 6
+for kind in scanline edge; do
+  anim "animate-fill-$kind.gif" assets/scenes/default.json --size 24x18 --pixel-size 10 --no-handles \
+    --sweep "fill-$kind" --frames 25 --fps 8
+done
 # Screenshots of the app need a display (e.g. `Xvfb :99 &` and DISPLAY=:99). Their status line
 # shows timings, so tests/docs_figures.rs does not compare them.
 if [[ -n "${DISPLAY:-}" ]]; then

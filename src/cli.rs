@@ -16,6 +16,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use crate::output::{self, note, print};
 use crate::progress_line::ProgressLine;
 
+mod animate;
 mod assign;
 mod commands;
 mod compare;
@@ -23,6 +24,7 @@ mod compare;
 mod gpu_check;
 mod grade;
 mod lesson;
+mod slides;
 mod space;
 mod texture_figure;
 mod values;
@@ -55,6 +57,7 @@ Examples:
   barylab lesson builtin --list             the built-in lesson's steps
   barylab lesson builtin --step 9 --figure step9.png
   barylab lesson builtin --handout handout/ --lang zh
+  barylab animate assets/scenes/default.json --sweep depth -o depth.gif
   barylab --lesson builtin --step 9         open the app on a lesson step
   barylab --compare-image out.png scene.json   open the app comparing out.png with the scene";
 
@@ -165,11 +168,19 @@ enum Command {
     )]
     Assign(AssignArgs),
     /// A lesson (a file, or `builtin`): list its steps, print one, write a step's figure, or
-    /// write the whole lesson as a Markdown handout with its figures.
+    /// write the whole lesson as a Markdown handout with its figures or as a slide deck.
     #[command(
-        after_help = "Examples:\n  barylab lesson builtin --list\n  barylab lesson builtin --step 9\n  barylab lesson builtin --step 9 --figure step9.svg\n  barylab lesson my-lesson.json --handout handout/ --lang zh\n  pandoc handout/handout.md -o handout.html"
+        after_help = "Examples:\n  barylab lesson builtin --list\n  barylab lesson builtin --step 9\n  barylab lesson builtin --step 9 --figure step9.svg\n  barylab lesson my-lesson.json --handout handout/ --lang zh\n  barylab lesson builtin --slides deck.html\n  pandoc handout/handout.md -o handout.html"
     )]
     Lesson(LessonArgs),
+    /// A sweep of a scene as an animation for slides (GIF, APNG, WebP, MP4): the wipe from
+    /// affine to perspective-correct, a corner pushed away, a tilt, the pinned pixel walking
+    /// its row, the rasterizers filling the triangles, a corner crossing the near plane. Every
+    /// frame is the figure `barylab figure` draws.
+    #[command(
+        after_help = "Examples:\n  barylab animate assets/scenes/default.json --sweep affine-perspective -o wipe.gif\n  barylab animate assets/scenes/default.json --sweep depth --frames 60 -o depth.apng\n  barylab animate assets/scenes/default.json --sweep fill-scanline --size 40x30 --pixel-size 12 -o fill.gif\n  barylab animate assets/scenes/default.json --sweep row --pixel 400,300 --lang zh -o row.webp"
+    )]
+    Animate(animate::AnimateArgs),
     /// Draw scenes with barylab and with this computer's OpenGL (headless EGL; Mesa's
     /// llvmpipe with --software) and compare them pixel by pixel: coverage, the owning
     /// triangle, colours, uv, and which tie rule the GPU follows. Exits non-zero when
@@ -203,6 +214,11 @@ struct LessonArgs {
     /// folder; never overwrites a file.
     #[arg(long, value_name = "DIR", conflicts_with_all = ["figure", "list"])]
     handout: Option<PathBuf>,
+    /// Write the lesson as a slide deck: .html (one self-contained file, no network: the
+    /// figures inline; arrow keys, Page Up/Down and space step through it) or .pdf (Beamer,
+    /// through pandoc and LaTeX).
+    #[arg(long, value_name = "OUT", conflicts_with_all = ["figure", "list", "handout", "step"])]
+    slides: Option<PathBuf>,
     /// Language of the texts, figure labels and derivations: en, zh (zh-CN), or auto.
     #[arg(long, default_value = "en", value_parser = parse_lang)]
     lang: barylab::i18n::Lang,
@@ -481,6 +497,15 @@ enum BackgroundArg {
     White,
 }
 
+impl From<BackgroundArg> for barylab::figure::Background {
+    fn from(b: BackgroundArg) -> Self {
+        match b {
+            BackgroundArg::Transparent => Self::Transparent,
+            BackgroundArg::White => Self::White,
+        }
+    }
+}
+
 /// Parses a fraction in [0, 1].
 fn parse_fraction(s: &str) -> Result<f32, String> {
     match s.trim().parse::<f32>() {
@@ -737,6 +762,7 @@ pub fn main() -> ExitCode {
         Some(Command::Compare(_)) => ProgressLine::start("compare"),
         Some(Command::Grade(_)) => ProgressLine::start("grade"),
         Some(Command::Lesson(_)) => ProgressLine::start("lesson"),
+        Some(Command::Animate(_)) => ProgressLine::start("animate"),
         _ => None,
     };
     let result = match cli.command {
@@ -749,6 +775,7 @@ pub fn main() -> ExitCode {
         Some(Command::Grade(args)) => grade::run(&args),
         Some(Command::Assign(args)) => assign::run(&args),
         Some(Command::Lesson(args)) => lesson::run(&args),
+        Some(Command::Animate(args)) => animate::run(&args),
         #[cfg(feature = "gpu")]
         Some(Command::GpuCheck(args)) => gpu_check::run(&args),
     };

@@ -7,6 +7,8 @@
 //! - [`bench`](mod@bench): timing the rasterizers (`barylab bench`, the app's benchmark panel).
 //! - [`compare`]: another rasterizer's image (a student's, a screenshot) against barylab's,
 //!   pixel by pixel, with a reason for each difference.
+//! - [`animate`]: moving figures (GIF, APNG, WebP, MP4) of a sweep, a drag or the
+//!   rasterizer's visiting order, every frame a figure.
 //! - [`aov`]: float32 OpenEXR export of the per-pixel buffers.
 //! - [`figure`]: annotated figures (PNG, SVG) of what the canvas shows, for lecture notes.
 //! - [`lesson`]: lessons, a guided walk through the maths in steps that set the scene and the
@@ -46,6 +48,7 @@
 
 #![warn(missing_docs)]
 
+pub mod animate;
 pub mod aov;
 pub mod app;
 pub mod bench;

@@ -7,7 +7,7 @@ use anyhow::{Context, Result};
 use barylab::raster;
 use barylab::scene::Scene;
 
-use super::{BackgroundArg, BenchArgs, FigureArgs, ProbeArgs, RenderArgs, SceneOptions};
+use super::{BenchArgs, FigureArgs, ProbeArgs, RenderArgs, SceneOptions};
 use crate::output::{self, note, print};
 
 /// A thread pool of `n` workers (or rayon's default when `None`).
@@ -215,7 +215,12 @@ pub(super) fn inputs(named: &Path, scene: &Scene) -> Vec<PathBuf> {
 
 /// Refuses a pixel option (`--pixel`, `--hover`) outside the image, naming the option and the
 /// scene file.
-fn inside(option: &str, pixel: Option<(u32, u32)>, o: &SceneOptions, scene: &Scene) -> Result<()> {
+pub(super) fn inside(
+    option: &str,
+    pixel: Option<(u32, u32)>,
+    o: &SceneOptions,
+    scene: &Scene,
+) -> Result<()> {
     let (w, h) = scene.size();
     match pixel {
         Some((x, y)) if x >= w || y >= h => anyhow::bail!(
@@ -249,8 +254,22 @@ pub(super) fn probe(args: &ProbeArgs) -> Result<()> {
     print(&barylab::probe::format::write_in(&trace, format, args.lang))
 }
 
+/// A figure draws the scene as it is: the render options (`--mode`, `--shading`, `--filter`,
+/// `--wireframe`) become the scene's own.
+pub(super) fn own_options(scene: &mut Scene, settings: &raster::RenderSettings) {
+    barylab::app::document::edit::set_options(
+        scene,
+        barylab::app::document::edit::SceneOptions {
+            mode: settings.mode,
+            shading: settings.shading,
+            filter: settings.filter,
+            wireframe: settings.wireframe,
+        },
+    );
+}
+
 pub(super) fn figure(args: &FigureArgs) -> Result<()> {
-    use barylab::figure::{Background, Figure, FigureOptions, png, svg};
+    use barylab::figure::{Figure, FigureOptions, png, svg};
     output::check_output(&args.output, &["png", "svg"])?;
     let svg_out = args
         .output
@@ -267,16 +286,7 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         w,
         h,
     )?;
-    // The figure draws the scene as it is: the options become the scene's own.
-    barylab::app::document::edit::set_options(
-        &mut scene,
-        barylab::app::document::edit::SceneOptions {
-            mode: settings.mode,
-            shading: settings.shading,
-            filter: settings.filter,
-            wireframe: settings.wireframe,
-        },
-    );
+    own_options(&mut scene, &settings);
     let options = FigureOptions {
         compare: args.compare.into(),
         pixel_size: args.pixel_size,
@@ -287,10 +297,7 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
         pinned: args.pixel.map(|(x, y)| [x, y]),
         hovered: args.hover.map(|(x, y)| [x, y]),
         scale: args.scale,
-        background: match args.background {
-            BackgroundArg::Transparent => Background::Transparent,
-            BackgroundArg::White => Background::White,
-        },
+        background: args.background.into(),
         overlay_scale: args.overlay_scale,
         caption: args.caption,
     };

@@ -17,7 +17,13 @@ pub(super) fn run(args: &LessonArgs) -> Result<()> {
     if let Some(out) = &args.figure {
         output::check_output(out, &["png", "svg"])?;
     }
-    let lang = check_font(args.lang, args.figure.is_some() || args.handout.is_some());
+    if let Some(out) = &args.slides {
+        output::check_output(out, &["html", "htm", "pdf"])?;
+    }
+    let lang = check_font(
+        args.lang,
+        args.figure.is_some() || args.handout.is_some() || args.slides.is_some(),
+    );
     let lesson = Lesson::open(&args.lesson)?;
     let count = lesson.steps.len();
     let step = match args.step {
@@ -30,6 +36,9 @@ pub(super) fn run(args: &LessonArgs) -> Result<()> {
     if let Some(dir) = &args.handout {
         return write_handout(&lesson, dir, lang);
     }
+    if let Some(out) = &args.slides {
+        return super::slides::write(&lesson, out, lang);
+    }
     match (step, &args.figure) {
         (Some(n), Some(out)) => write_figure(&lesson, n, out, lang, args.scale),
         (None, Some(_)) => bail!("--figure needs --step N (which step's figure)"),
@@ -39,7 +48,7 @@ pub(super) fn run(args: &LessonArgs) -> Result<()> {
 }
 
 /// The language asked for; for figures, English when Chinese labels have no font.
-fn check_font(lang: Lang, figures: bool) -> Lang {
+pub(super) fn check_font(lang: Lang, figures: bool) -> Lang {
     if figures && lang != Lang::En && barylab::i18n::cjk_font().is_none() {
         eprintln!(
             "warning: no font with Chinese glyphs found (looked for {}); the figures' labels are \

@@ -4,7 +4,6 @@
 use crate::i18n::Lang;
 
 use super::caption::{self, Caption};
-use super::options::WHITE;
 use super::overlay::{self, HandleMark, Overlay, OverlayInput};
 use super::{
     Background, Compare, FigureOptions, MAX_FIGURE_SIZE, OVERLAY_SCALE_RANGE, SCALES, ViewContent,
@@ -232,10 +231,7 @@ impl Figure {
         // On a white figure (for print) the image's background is white too: no dark block
         // around the quad on paper.
         let base = hi.settings();
-        let image_background = match o.background {
-            Background::White => WHITE,
-            Background::Transparent => base.background,
-        };
+        let image_background = super::image_background(o.background, base.background);
         let mut renders: Vec<(Interpolation, Render)> = Vec::new();
         for m in modes {
             let s = RenderSettings {

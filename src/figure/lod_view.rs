@@ -5,8 +5,8 @@
 //! and how far each level reaches.
 
 use super::FigureError;
-use super::plot::escape;
 use super::raster_svg::{Raster, RasterSvg};
+use super::svg::escape;
 use crate::i18n::Lang;
 use crate::raster::interpolate::{self, Derivatives};
 use crate::raster::render::{self, RenderSettings};

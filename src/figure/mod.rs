@@ -52,5 +52,5 @@ pub use marks::{
 };
 pub use options::{
     Background, FIGURE_MARGIN, FigureOptions, MAX_FIGURE_SIZE, OVERLAY_SCALE_RANGE, SCALES,
-    SIDE_BY_SIDE_GAP, layout_points,
+    SIDE_BY_SIDE_GAP, image_background, layout_points,
 };

@@ -21,6 +21,15 @@ pub enum Background {
     White,
 }
 
+/// The image's own background in a figure: white on a white figure (no dark block around
+/// the quad on paper), else the scene's `scene_background`.
+pub fn image_background(background: Background, scene_background: [u8; 4]) -> [u8; 4] {
+    match background {
+        Background::White => WHITE,
+        Background::Transparent => scene_background,
+    }
+}
+
 /// Scales a figure can be exported at.
 pub const SCALES: [u32; 3] = [1, 2, 4];
 

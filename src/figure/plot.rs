@@ -3,6 +3,7 @@
 //! rasterized by resvg with the figures' fonts. The legend and the axes sit outside the
 //! plotting area, so no line is hidden.
 
+use super::svg::escape;
 use resvg::tiny_skia::{self, Transform};
 use resvg::usvg;
 
@@ -76,13 +77,6 @@ fn extent(values: impl Iterator<Item = f64>) -> [f64; 2] {
     } else {
         [lo, hi]
     }
-}
-
-/// Text escaped for SVG.
-pub(crate) fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }
 
 /// A tick's label: no more decimals than the step needs.

@@ -6,8 +6,8 @@
 
 use glam::DVec2;
 
-use super::plot::escape;
 use super::raster_svg::{Raster, RasterSvg};
+use super::svg::escape;
 use crate::i18n::Lang;
 use crate::probe::format::fmt_number;
 use crate::probe::{AttributeTrace, LodTrace};

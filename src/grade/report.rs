@@ -2,6 +2,7 @@
 //! `data:` URIs, one row per student linking to a section with each scene's verdict, named
 //! bugs with their fixes, and regions with reasons) and a CSV with a line per submission.
 
+use crate::figure::svg::escape;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -111,22 +112,6 @@ pub fn csv(rows: &[Row]) -> String {
         .join(",");
         out.push_str(&line);
         out.push('\n');
-    }
-    out
-}
-
-/// Text for HTML: `&`, `<`, `>`, `"` and `'` escaped.
-pub fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
     }
     out
 }

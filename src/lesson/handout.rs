@@ -168,6 +168,45 @@ fn derivation(trace: &PixelTrace, state: &StepState, lang: Lang) -> String {
         .to_string()
 }
 
+/// A step's pictures as PNG files: its figure and, when it has one, its row plot (with the
+/// plot's title). The handout and the slide deck both show these.
+pub struct StepPictures {
+    /// The step's figure ([`StepState::figure_options`]).
+    pub figure: Vec<u8>,
+    /// The row plot's title and PNG at [`PLOT_SCALE`].
+    pub plot: Option<(String, Vec<u8>)>,
+}
+
+/// The pictures of step `number` (from 1) in `state` with `texture`, labels in `lang`.
+pub fn step_pictures(
+    state: &StepState,
+    texture: &Texture,
+    number: usize,
+    lang: Lang,
+) -> Result<StepPictures, HandoutError> {
+    let figure_error = |error| HandoutError::Figure {
+        step: number,
+        error,
+    };
+    let figure = Figure::compose_in(&state.scene, texture, &state.figure_options(), lang)
+        .map_err(figure_error)?;
+    let figure = png::to_png(&figure).map_err(figure_error)?;
+    let plot = match (state.plot, state.pin) {
+        (Some(plot), Some(pin)) => {
+            let lines = super::plot::row_plot(&state.scene, texture, pin, plot, lang).map_err(
+                |source| HandoutError::Plot {
+                    step: number,
+                    source,
+                },
+            )?;
+            let bytes = lines.to_png(lang, PLOT_SCALE).map_err(figure_error)?;
+            Some((lines.title, bytes))
+        }
+        _ => None,
+    };
+    Ok(StepPictures { figure, plot })
+}
+
 /// PNG pixels per point of a handout's row plot (sharp in print).
 pub const PLOT_SCALE: f32 = 2.0;
 
@@ -187,16 +226,8 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
         let step = &lesson.steps[number - 1];
         let state = step_state(lesson, number)?;
         let texture = texture_of(&state, number)?;
-        let figure = Figure::compose_in(&state.scene, &texture, &state.figure_options(), lang)
-            .map_err(|error| HandoutError::Figure {
-                step: number,
-                error,
-            })?;
-        let bytes = png::to_png(&figure).map_err(|error| HandoutError::Figure {
-            step: number,
-            error,
-        })?;
-        // The same picture as an earlier step's: show that file again.
+        let pictures = step_pictures(&state, &texture, number, lang)?;
+        let bytes = pictures.figure;
         let name = match files.iter().find(|f: &&HandoutFile| f.bytes == bytes) {
             Some(earlier) => earlier.name.clone(),
             None => {
@@ -224,24 +255,9 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
             "\n![{}]({name})\n\n",
             text::plain(title).replace(['[', ']'], "")
         ));
-        if let (Some(plot), Some(pin)) = (state.plot, state.pin) {
-            let lines = super::plot::row_plot(&state.scene, &texture, pin, plot, lang).map_err(
-                |source| HandoutError::Plot {
-                    step: number,
-                    source,
-                },
-            )?;
-            let bytes = lines
-                .to_png(lang, PLOT_SCALE)
-                .map_err(|error| HandoutError::Figure {
-                    step: number,
-                    error,
-                })?;
+        if let Some((title, bytes)) = pictures.plot {
             let name = plot_name(number);
-            md.push_str(&format!(
-                "![{}]({name})\n\n",
-                lines.title.replace(['[', ']'], "")
-            ));
+            md.push_str(&format!("![{}]({name})\n\n", title.replace(['[', ']'], "")));
             files.push(HandoutFile { name, bytes });
         }
         md.push_str(&format!(

@@ -15,6 +15,7 @@ pub mod builtin;
 pub mod handout;
 mod parse;
 pub mod plot;
+pub mod slides;
 pub mod text;
 
 use std::path::{Path, PathBuf};

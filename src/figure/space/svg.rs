@@ -10,8 +10,8 @@ use resvg::usvg;
 use super::draw::{self, Anchor2, Colour, Shape, ShapeKind};
 use super::{Orbit, SpaceScene};
 use crate::figure::FigureError;
-use crate::figure::plot::escape;
 use crate::figure::png::svg_options_in;
+use crate::figure::svg::escape;
 use crate::i18n::Lang;
 use crate::probe::format::fmt_number;
 

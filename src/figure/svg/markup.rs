@@ -88,7 +88,12 @@ pub(super) fn points(pts: &[[f32; 2]]) -> String {
         .join(" ")
 }
 
-pub(super) fn escape(t: &str) -> String {
+/// `t` with `&`, `<`, `>` and `"` escaped for XML and HTML text and attributes.
+///
+/// ```
+/// assert_eq!(barylab::figure::svg::escape("a < b & \"c\""), "a &lt; b &amp; &quot;c&quot;");
+/// ```
+pub fn escape(t: &str) -> String {
     let mut out = String::with_capacity(t.len());
     for c in t.chars() {
         match c {

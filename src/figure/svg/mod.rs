@@ -13,6 +13,7 @@
 
 mod labels;
 mod markup;
+pub use markup::escape;
 mod shapes;
 
 use std::fmt::Write;

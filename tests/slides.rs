@@ -1,0 +1,186 @@
+//! `barylab lesson --slides`: the built-in lesson as one self-contained HTML deck in both
+//! languages (a slide per step, the figures inline and equal to `--step N --figure`'s, no
+//! network, the keys a clicker sends), the Beamer PDF where pandoc and LaTeX's beamer class
+//! are installed (else its message), and a screenshot of a slide in headless Chromium where
+//! one is installed.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+use barylab::lesson::Lesson;
+use base64::Engine;
+
+fn barylab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_barylab"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(args)
+        .output()
+        .expect("run barylab")
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().expect("utf-8 path")
+}
+
+/// The `src` of every `<img>`, in order.
+fn image_sources(html: &str) -> Vec<&str> {
+    html.split("<img ")
+        .skip(1)
+        .filter_map(|tag| {
+            let start = tag.find("src=\"")? + 5;
+            let end = tag[start..].find('"')? + start;
+            Some(&tag[start..end])
+        })
+        .collect()
+}
+
+/// Writes the built-in deck in `lang`; its HTML.
+fn deck(dir: &Path, lang: &str) -> String {
+    let out = dir.join(format!("deck-{lang}.html"));
+    let run = barylab(&["lesson", "builtin", "--slides", s(&out), "--lang", lang]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    std::fs::read_to_string(&out).expect("the deck")
+}
+
+#[test]
+fn the_builtin_lesson_is_one_offline_html_deck_in_both_languages() {
+    let lesson = Lesson::builtin().expect("built-in lesson");
+    let steps = lesson.steps.len();
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (lang, try_this, code) in [("en", "Try this:", "en"), ("zh", "试一试：", "zh-CN")] {
+        let html = deck(dir.path(), lang);
+        assert!(html.starts_with("<!DOCTYPE html>"));
+        assert!(html.contains(&format!("<html lang=\"{code}\">")));
+        // A title slide and one slide per step, each with its "try this".
+        assert_eq!(html.matches("<section class=\"slide").count(), steps + 1);
+        assert_eq!(html.matches(try_this).count(), steps, "{lang}");
+        for (i, step) in lesson.steps.iter().enumerate() {
+            let title = barylab::lesson::text::plain(step.title.get(if lang == "en" {
+                barylab::i18n::Lang::En
+            } else {
+                barylab::i18n::Lang::Zh
+            }));
+            let escaped = barylab::figure::svg::escape(&title);
+            assert!(
+                html.contains(&format!("{}. {escaped}</h2>", i + 1)),
+                "{title}"
+            );
+        }
+        // Nothing from the network: no URL, no external style or script.
+        assert!(!html.contains("http://") && !html.contains("https://"));
+        assert!(!html.contains("<link") && !html.contains("<script src"));
+        let sources = image_sources(&html);
+        assert!(sources.len() >= steps, "a figure per step");
+        assert!(
+            sources
+                .iter()
+                .all(|src| src.starts_with("data:image/png;base64,"))
+        );
+        // The keys a keyboard and a presentation clicker send.
+        for key in [
+            "'ArrowRight'",
+            "'ArrowLeft'",
+            "'PageDown'",
+            "'PageUp'",
+            "' '",
+        ] {
+            assert!(html.contains(key), "{key}");
+        }
+    }
+}
+
+#[test]
+fn a_slide_shows_the_same_figure_as_the_step_figure_command() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let html = deck(dir.path(), "en");
+    // Step 2's slide and its first image.
+    let slide = html
+        .split("<section class=\"slide\" id=\"step-2\">")
+        .nth(1)
+        .expect("step 2's slide");
+    let src = image_sources(slide)[0];
+    let png = base64::engine::general_purpose::STANDARD
+        .decode(&src["data:image/png;base64,".len()..])
+        .expect("base64");
+    let inline = image::load_from_memory(&png).expect("a PNG").to_rgba8();
+    let fig = dir.path().join("step2.png");
+    let run = barylab(&["lesson", "builtin", "--step", "2", "--figure", s(&fig)]);
+    assert!(run.status.success());
+    let still = image::open(&fig).expect("figure").to_rgba8();
+    assert!(inline == still, "the slide's figure is the step's figure");
+}
+
+#[test]
+fn bad_slide_outputs_and_the_pdf_deck() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let txt = dir.path().join("deck.txt");
+    let run = barylab(&["lesson", "builtin", "--slides", s(&txt)]);
+    assert!(!run.status.success());
+    let msg = String::from_utf8_lossy(&run.stderr);
+    assert!(msg.contains("deck.txt") && msg.contains(".html"), "{msg}");
+    // The PDF: made where pandoc, pdflatex and beamer are installed; else a message naming
+    // what is missing, and no file.
+    let pdf = dir.path().join("deck.pdf");
+    let run = barylab(&["lesson", "builtin", "--slides", s(&pdf)]);
+    let beamer = Command::new("kpsewhich")
+        .arg("beamer.cls")
+        .output()
+        .is_ok_and(|o| o.status.success() && !o.stdout.is_empty());
+    let pandoc = Command::new("pandoc").arg("--version").output().is_ok();
+    if beamer && pandoc {
+        assert!(
+            run.status.success(),
+            "{}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        let bytes = std::fs::read(&pdf).expect("the PDF");
+        assert!(bytes.starts_with(b"%PDF"));
+    } else {
+        assert!(!run.status.success());
+        let msg = String::from_utf8_lossy(&run.stderr);
+        assert!(msg.contains("deck.pdf"), "{msg}");
+        assert!(msg.contains("pandoc") || msg.contains("beamer"), "{msg}");
+        assert!(!pdf.exists());
+        println!("SKIPPED the Beamer PDF: pandoc or LaTeX's beamer class is not installed");
+    }
+}
+
+#[test]
+fn headless_chromium_shows_a_slide_where_installed() {
+    let Some(browser) = ["chromium", "chromium-browser", "google-chrome"]
+        .into_iter()
+        .find(|b| Command::new(b).arg("--version").output().is_ok())
+    else {
+        println!("SKIPPED the screenshot: no headless Chromium installed");
+        return;
+    };
+    let dir = tempfile::tempdir().expect("tempdir");
+    deck(dir.path(), "en");
+    let shot = dir.path().join("slide.png");
+    let url = format!("file://{}#3", s(&dir.path().join("deck-en.html")));
+    let run = Command::new(browser)
+        .args([
+            "--headless",
+            "--disable-gpu",
+            "--no-sandbox",
+            "--window-size=1280,720",
+        ])
+        .arg(format!("--screenshot={}", s(&shot)))
+        .arg(&url)
+        .output()
+        .expect("run the browser");
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let img = image::open(&shot).expect("the screenshot").to_rgba8();
+    assert_eq!(img.dimensions(), (1280, 720));
+    // The slide's dark background and its white figure are both on the screen.
+    assert!(img.pixels().any(|p| p[0] > 240 && p[1] > 240 && p[2] > 240));
+    assert!(img.pixels().any(|p| p[0] < 40 && p[1] < 40 && p[2] < 50));
+}
