@@ -5,6 +5,7 @@
 //! over an input. The time is printed (never asserted).
 
 mod bugs_common;
+mod common;
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -303,6 +304,18 @@ fn a_class_of_300_submissions_is_graded_with_every_bug_named() {
     assert!(html.contains("&lt;i&gt;x&amp;y&quot;") && !html.contains("<i>x&y"));
     // A few region lines with reasons in the students' sections.
     assert!(html.contains("region 1: "), "no regions in the report");
+
+    // The report as a browser draws it: the page and the difference thumbnails (many colours).
+    if let Some(browser) = common::browser::chromium() {
+        let shot = dir.path().join("report.png");
+        let url = format!("file://{}", s(&report));
+        common::browser::screenshot(browser, &url, [1280, 900], &shot).expect("the browser");
+        let img = image::open(&shot).expect("the screenshot").to_rgba8();
+        assert_eq!(img.dimensions(), (1280, 900));
+        let colours: std::collections::BTreeSet<[u8; 3]> =
+            img.pixels().map(|p| [p[0], p[1], p[2]]).collect();
+        assert!(colours.len() > 200, "only {} colours drawn", colours.len());
+    }
 }
 
 #[test]

@@ -4,6 +4,8 @@
 //! are installed (else its message), and a screenshot of a slide in headless Chromium where
 //! one is installed.
 
+mod common;
+
 use std::path::Path;
 use std::process::{Command, Output};
 
@@ -151,33 +153,14 @@ fn bad_slide_outputs_and_the_pdf_deck() {
 
 #[test]
 fn headless_chromium_shows_a_slide_where_installed() {
-    let Some(browser) = ["chromium", "chromium-browser", "google-chrome"]
-        .into_iter()
-        .find(|b| Command::new(b).arg("--version").output().is_ok())
-    else {
-        println!("SKIPPED the screenshot: no headless Chromium installed");
+    let Some(browser) = common::browser::chromium() else {
         return;
     };
     let dir = tempfile::tempdir().expect("tempdir");
     deck(dir.path(), "en");
     let shot = dir.path().join("slide.png");
     let url = format!("file://{}#3", s(&dir.path().join("deck-en.html")));
-    let run = Command::new(browser)
-        .args([
-            "--headless",
-            "--disable-gpu",
-            "--no-sandbox",
-            "--window-size=1280,720",
-        ])
-        .arg(format!("--screenshot={}", s(&shot)))
-        .arg(&url)
-        .output()
-        .expect("run the browser");
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    common::browser::screenshot(browser, &url, [1280, 720], &shot).expect("run the browser");
     let img = image::open(&shot).expect("the screenshot").to_rgba8();
     assert_eq!(img.dimensions(), (1280, 720));
     // The slide's dark background and its white figure are both on the screen.

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod app;
+pub mod browser;
 #[cfg(feature = "gpu")]
 pub mod gl;
 pub mod xvfb;
