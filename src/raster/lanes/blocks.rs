@@ -113,3 +113,53 @@ pub(super) fn classify(planes: &EdgePlanes, cols: (i64, i64), rows: (i64, i64)) 
         Block::Partial
     }
 }
+
+/// One block of the edge-function walk ([`walk_blocks`]): columns `x..x + LANES` (of which
+/// the first `lanes_in` are inside the bounding box) by rows `rows.0..=rows.1`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BlockAt {
+    /// The block's first column.
+    pub(super) x: u32,
+    /// Its first and last row.
+    pub(super) rows: (u32, u32),
+    /// The columns from `x` inside the bounding box (1 to [`LANES`]).
+    pub(super) lanes_in: usize,
+    /// [`Block::Inside`] or [`Block::Partial`] (outside blocks are skipped).
+    pub(super) kind: Block,
+}
+
+/// The block walk of every build of the edge-function lanes: the bounding box's columns
+/// `x0..=x1` in blocks of [`LANES`], rows `y_start..=y_end` in blocks of [`BLOCK_ROWS`],
+/// row of blocks by row of blocks, each block [`classify`]'d by its corners and given to
+/// `f` unless it is outside. (Always inlined, with `f`, into each build's code.)
+#[inline(always)]
+pub(super) fn walk_blocks(
+    planes: &EdgePlanes,
+    (x0, x1): (u32, u32),
+    (y_start, y_end): (u32, u32),
+    mut f: impl FnMut(BlockAt),
+) {
+    let mut by = y_start;
+    while by <= y_end {
+        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
+        let mut bx = x0;
+        while bx <= x1 {
+            let bx_end = bx + LANES as u32 - 1;
+            let kind = classify(
+                planes,
+                (i64::from(bx), i64::from(bx_end)),
+                (i64::from(by), i64::from(by_end)),
+            );
+            if kind != Block::Outside {
+                f(BlockAt {
+                    x: bx,
+                    rows: (by, by_end),
+                    lanes_in: (x1 - bx + 1).min(LANES as u32) as usize,
+                    kind,
+                });
+            }
+            bx += LANES as u32;
+        }
+        by = by_end + 1;
+    }
+}

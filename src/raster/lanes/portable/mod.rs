@@ -2,7 +2,7 @@
 //! colour and depth, written once in plain Rust over fixed arrays of eight lanes, one
 //! operation at a time over all lanes ([`each`]), so that the compiler maps each operation to
 //! vector instructions: SSE2 on any x86_64 (SSE4.1 where the CPU has it: the same source
-//! compiled a second time, `edge_triangle_sse41`), NEON on aarch64. No intrinsics, no
+//! compiled a second time, `draw_sse41`), NEON on aarch64. No intrinsics, no
 //! dependency; one `unsafe` conversion (`sampler::trunc`, whose range is checked first).
 //!
 //! The operations and their order are the scalar lane code's (the parent module), so the
@@ -45,55 +45,74 @@ pub(super) fn applies(shading: &LaneShading, target: &Target<'_>) -> bool {
         && target.difference.is_none()
 }
 
-/// The edge-function lanes of [`edge_triangle_impl`](super::edge_triangle_impl) for texture
-/// shading ([`applies`] must hold), compiled for the baseline of the target (SSE2 on x86_64,
-/// NEON on aarch64).
-pub(super) fn edge_triangle(
+/// Proof that the CPU has SSE4.1 (made only by [`Sse41::detect`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Sse41(());
+
+impl Sse41 {
+    /// `Some` when the CPU has SSE4.1 (never off x86_64).
+    pub(super) fn detect() -> Option<Self> {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("sse4.1") {
+            return Some(Self(()));
+        }
+        None
+    }
+}
+
+/// Draws rows `rows` (within the target band) of `tri` with texture shading ([`applies`]
+/// must hold) with the lanes of `rasterizer`: the edge functions of
+/// [`edge_triangle_impl`](super::edge_triangle_impl) or the spans of
+/// [`scanline_triangle_impl`](super::scanline::scanline_triangle_impl). Compiled with
+/// SSE4.1 (rounding, blends, 32-bit minimum and maximum) when `sse41` is given, else for the
+/// baseline of the target (SSE2 on x86_64, NEON on aarch64).
+pub(super) fn draw(
+    rasterizer: Rasterizer,
+    sse41: Option<Sse41>,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    edge_body(tri, rows, sampler, mode, target);
+    #[cfg(target_arch = "x86_64")]
+    if sse41.is_some() {
+        // SAFETY: the CPU has SSE4.1 (an `Sse41` is made only when it is detected).
+        unsafe { draw_sse41(rasterizer, tri, rows, sampler, mode, target) };
+        return;
+    }
+    let _ = sse41;
+    draw_body(rasterizer, tri, rows, sampler, mode, target);
 }
 
-/// [`edge_triangle`] compiled with SSE4.1 (rounding, blends, 32-bit minimum and maximum).
+/// [`draw`] compiled with SSE4.1.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "sse4.1")]
-pub(super) fn edge_triangle_sse41(
+fn draw_sse41(
+    rasterizer: Rasterizer,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    edge_body(tri, rows, sampler, mode, target);
+    draw_body(rasterizer, tri, rows, sampler, mode, target);
 }
 
-/// The scanline lanes of [`scanline_triangle_impl`](super::scanline::scanline_triangle_impl)
-/// for texture shading ([`applies`] must hold), compiled for the baseline of the target.
-pub(super) fn scanline_triangle(
+/// Both rasterizers' lanes, inlined into each build of [`draw`].
+#[inline(always)]
+fn draw_body(
+    rasterizer: Rasterizer,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    scanline_body(tri, rows, sampler, mode, target);
-}
-
-/// [`scanline_triangle`] compiled with SSE4.1.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "sse4.1")]
-pub(super) fn scanline_triangle_sse41(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: &Sampler<'_>,
-    mode: Interpolation,
-    target: &mut Target<'_>,
-) {
-    scanline_body(tri, rows, sampler, mode, target);
+    match rasterizer {
+        Rasterizer::EdgeFunction => edge_body(tri, rows, sampler, mode, target),
+        Rasterizer::Scanline => scanline_body(tri, rows, sampler, mode, target),
+    }
 }
 
 /// The edge-function lanes: blocks rejected, accepted or tested as in the scalar lane code,
@@ -113,43 +132,26 @@ fn edge_body(
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let a = three(|i| planes.a[i] as f64);
     let t = three(|i| planes.t[i] as f64);
-    let mut by = y_start;
-    while by <= y_end {
-        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
-        let mut bx = x0;
-        while bx <= x1 {
-            let bx_end = bx + LANES as u32 - 1;
-            let block = classify(
-                planes,
-                (i64::from(bx), i64::from(bx_end)),
-                (i64::from(by), i64::from(by_end)),
-            );
-            if block != Block::Outside {
-                let lanes_in = (x1 - bx + 1).min(LANES as u32) as usize;
-                for y in by..=by_end {
-                    let covered: Mask = if block == Block::Inside {
-                        each(|k| k < lanes_in)
-                    } else {
-                        let base = planes.at(i64::from(y), i64::from(bx));
-                        let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
-                        each(|k| {
-                            k < lanes_in && e[0][k] >= t[0] && e[1][k] >= t[1] && e[2][k] >= t[2]
-                        })
-                    };
-                    if !covered.iter().any(|&c| c) {
-                        continue;
-                    }
-                    let (u, v, depth, ok) =
-                        from_weights(&row_weights(&consts.weights, bx, y), consts, mode);
-                    let ok = each(|k| ok[k] && covered[k]);
-                    let rgba = sampler.sample_packed(&u, &v);
-                    write(target, bx, y, &ok, &depth, &rgba);
-                }
+    walk_blocks(planes, (x0, x1), (y_start, y_end), |block| {
+        let (bx, lanes_in) = (block.x, block.lanes_in);
+        for y in block.rows.0..=block.rows.1 {
+            let covered: Mask = if block.kind == Block::Inside {
+                each(|k| k < lanes_in)
+            } else {
+                let base = planes.at(i64::from(y), i64::from(bx));
+                let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
+                each(|k| k < lanes_in && e[0][k] >= t[0] && e[1][k] >= t[1] && e[2][k] >= t[2])
+            };
+            if !covered.iter().any(|&c| c) {
+                continue;
             }
-            bx += LANES as u32;
+            let (u, v, depth, ok) =
+                from_weights(&row_weights(&consts.weights, bx, y), consts, mode);
+            let ok = each(|k| ok[k] && covered[k]);
+            let rgba = sampler.sample_packed(&u, &v);
+            write(target, bx, y, &ok, &depth, &rgba);
         }
-        by = by_end + 1;
-    }
+    });
 }
 
 /// [`super::row_weights`], one operation over all lanes at a time.
