@@ -80,7 +80,7 @@ mod scanline;
 mod triangle;
 
 pub use blocks::EdgePlanes;
-use blocks::{Block, walk_blocks};
+use blocks::{Block, Blocks};
 pub use paths::Lanes;
 use sampler::Sampler;
 use scanline::Stepped;
@@ -468,7 +468,7 @@ fn edge_triangle_impl(
     let a = planes.a.map(|v| v as f64);
     let t = planes.t.map(|v| v as f64);
     let mut colors = [[0u8; 4]; LANES];
-    walk_blocks(planes, (x0, x1), (y_start, y_end), |block| {
+    for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
         let bx = block.x;
         for y in block.rows.0..=block.rows.1 {
             let base = planes.at(i64::from(y), i64::from(bx));
@@ -518,7 +518,7 @@ fn edge_triangle_impl(
                 }
             }
         }
-    });
+    }
 }
 
 #[cfg(test)]

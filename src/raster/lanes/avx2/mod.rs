@@ -10,7 +10,7 @@
 
 use std::arch::x86_64::*;
 
-use super::blocks::walk_blocks;
+use super::blocks::Blocks;
 use super::{
     Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, Stepped, Target,
 };
@@ -298,7 +298,7 @@ fn block_rows<const WIDE: bool>(
         Some(s) if WIDE && wide::pairs_apply(consts, color, sampler, target) => Some(s),
         _ => None,
     };
-    walk_blocks(planes, (x0, x1), (y_start, y_end), |block| {
+    for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
         let (bx, (by, by_end)) = (block.x, block.rows);
         let in_row = (1i32 << block.lanes_in) - 1;
         if let Some(sampler) = pairs
@@ -310,7 +310,7 @@ fn block_rows<const WIDE: bool>(
             unsafe {
                 wide::inside_block(consts, (bx, in_row), (by, by_end), mode, sampler, target)
             };
-            return;
+            continue;
         }
         for y in by..=by_end {
             let base = planes.at(i64::from(y), i64::from(bx));
@@ -376,7 +376,7 @@ fn block_rows<const WIDE: bool>(
                 target,
             );
         }
-    });
+    }
 }
 
 /// The edge-function lanes over a triangle at most [`LANES`] columns wide: the edge values of

@@ -15,6 +15,36 @@ use super::*;
 mod sampler;
 
 type I32s = [i32; LANES];
+/// A condition per lane from `f64` lanes as an integer mask: all ones where it holds, else
+/// zero (what a vector comparison gives; `[bool; 8]` needed packing and unpacking).
+type Mask64 = [i64; LANES];
+/// The same per `f32` lane.
+type Mask32 = [i32; LANES];
+
+/// Infinity, opaque to the optimizer (made once per triangle, [`Inf::new`]): compared with
+/// the constant, `x > 0 && x < inf` and `is_finite` became scalar bit tests lane by lane
+/// (LLVM's floating-point class tests); compared with this value they stay vector compares.
+#[derive(Clone, Copy)]
+struct Inf(f64);
+
+impl Inf {
+    #[inline(always)]
+    fn new() -> Self {
+        Self(std::hint::black_box(f64::INFINITY))
+    }
+}
+
+/// `cond` as a lane mask: all ones or zero.
+#[inline(always)]
+fn mask64(cond: bool) -> i64 {
+    -i64::from(cond)
+}
+
+/// `cond` as a lane mask: all ones or zero.
+#[inline(always)]
+fn mask32(cond: bool) -> i32 {
+    -i32::from(cond)
+}
 /// Packed RGBA8 colours of eight lanes, red in the low byte.
 type Rgba = [u32; LANES];
 
@@ -132,26 +162,30 @@ fn edge_body(
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let a = three(|i| planes.a[i] as f64);
     let t = three(|i| planes.t[i] as f64);
-    walk_blocks(planes, (x0, x1), (y_start, y_end), |block| {
+    let inf = Inf::new();
+    for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
         let (bx, lanes_in) = (block.x, block.lanes_in);
         for y in block.rows.0..=block.rows.1 {
-            let covered: Mask = if block.kind == Block::Inside {
-                each(|k| k < lanes_in)
+            let in_row: Mask64 = each(|k| mask64(k < lanes_in));
+            let covered: Mask64 = if block.kind == Block::Inside {
+                in_row
             } else {
                 let base = planes.at(i64::from(y), i64::from(bx));
                 let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
-                each(|k| k < lanes_in && e[0][k] >= t[0] && e[1][k] >= t[1] && e[2][k] >= t[2])
+                let pass = |i: usize| each(|k| mask64(e[i][k] >= t[i]));
+                let (p0, p1, p2) = (pass(0), pass(1), pass(2));
+                each(|k| in_row[k] & p0[k] & p1[k] & p2[k])
             };
-            if !covered.iter().any(|&c| c) {
+            if covered.iter().fold(0, |m, &c| m | c) == 0 {
                 continue;
             }
             let (u, v, depth, ok) =
-                from_weights(&row_weights(&consts.weights, bx, y), consts, mode);
-            let ok = each(|k| ok[k] && covered[k]);
-            let rgba = sampler.sample_packed(&u, &v);
+                from_weights(&row_weights(&consts.weights, bx, y), consts, mode, inf);
+            let ok = each(|k| ok[k] & covered[k]);
+            let rgba = sampler.sample_packed(&u, &v, inf);
             write(target, bx, y, &ok, &depth, &rgba);
         }
-    });
+    }
 }
 
 /// [`super::row_weights`], one operation over all lanes at a time.
@@ -169,10 +203,15 @@ fn row_weights(w: &WeightPlanes, x: u32, y: u32) -> [F64s; 3] {
 /// computes them for texture shading: `q_i = l_i / w_i`, valid where `sum q` is positive and
 /// finite, `uv = sum w_i uv_i` with the mode's weights, `depth = sum l_i d_i`.
 #[inline(always)]
-fn from_weights(l: &[F64s; 3], c: &Constants, mode: Interpolation) -> (F32s, F32s, F32s, Mask) {
+fn from_weights(
+    l: &[F64s; 3],
+    c: &Constants,
+    mode: Interpolation,
+    inf: Inf,
+) -> (F32s, F32s, F32s, Mask64) {
     let q = three(|i| each(|k| l[i][k] * c.inv_w[i]));
     let sum: F64s = each(|k| q[0][k] + q[1][k] + q[2][k]);
-    let ok = each(|k| sum[k] > 0.0 && sum[k] < f64::INFINITY);
+    let ok = positive_finite(&sum, inf);
     let w = match mode {
         Interpolation::Perspective => {
             let inv: F64s = each(|k| 1.0 / sum[k]);
@@ -201,6 +240,7 @@ fn scanline_body(
     let step = Stepped::row_step(consts, mode);
     let n = LANES as f64;
     let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
+    let inf = Inf::new();
     for y in y_start..=y_end {
         let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
             continue;
@@ -213,7 +253,8 @@ fn scanline_body(
         let mut x = x0;
         while x <= x1 {
             let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
-            let ok = each(|k| k < lanes_in && inv_w[k] > 0.0 && inv_w[k] < f64::INFINITY);
+            let valid = positive_finite(&inv_w, inf);
+            let ok = each(|k| mask64(k < lanes_in) & valid[k]);
             let (uf, vf) = match mode {
                 Interpolation::Perspective => {
                     let w: F64s = each(|k| 1.0 / inv_w[k]);
@@ -225,7 +266,7 @@ fn scanline_body(
                 Interpolation::Affine => (each(|k| u[k] as f32), each(|k| v[k] as f32)),
             };
             let d: F32s = each(|k| depth[k] as f32);
-            let rgba = sampler.sample_packed(&uf, &vf);
+            let rgba = sampler.sample_packed(&uf, &vf, inf);
             write(target, x, y, &ok, &d, &rgba);
             u = each(|k| u[k] + su);
             v = each(|k| v[k] + sv);
@@ -236,15 +277,23 @@ fn scanline_body(
     }
 }
 
+/// The lanes of `x` that are positive and finite (`x > 0 && x < inf`: NaN fails).
+#[inline(always)]
+fn positive_finite(x: &F64s, inf: Inf) -> Mask64 {
+    let above = each(|k| mask64(x[k] > 0.0));
+    let below = each(|k| mask64(x[k] < inf.0));
+    each(|k| above[k] & below[k])
+}
+
 /// Depth-tests and writes the lanes of `ok` of one row chunk from column `x` of row `y`
 /// ([`depth_passes`]: an ordered less-than), as the scalar [`write`](super::write) does
 /// for colour and depth. Eight lanes inside the row are read and written whole, with the
 /// failing lanes keeping their values (the band's rows belong to this thread only).
 #[inline(always)]
-fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask, depth: &F32s, rgba: &Rgba) {
+fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask64, depth: &F32s, rgba: &Rgba) {
     let i = (y - target.y0) as usize * target.width as usize + x as usize;
-    let colors: [[u8; 4]; LANES] = each(|k| rgba[k].to_le_bytes());
-    if ok.iter().all(|&o| o)
+    let ok: Mask32 = each(|k| ok[k] as i32);
+    if ok.iter().fold(-1, |m, &o| m & o) != 0
         && let Some((d, _)) = target
             .depth
             .get_mut(i..)
@@ -254,15 +303,25 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask, depth: &F32s, rgba:
             .get_mut(i..)
             .and_then(|s| s.split_first_chunk_mut::<LANES>())
     {
-        let pass: Mask = each(|k| depth_passes(depth[k], d[k]));
-        *d = each(|k| if pass[k] { depth[k] } else { d[k] });
-        *c = each(|k| if pass[k] { colors[k] } else { c[k] });
+        let pass: Mask32 = each(|k| mask32(depth_passes(depth[k], d[k])));
+        let old: [u32; LANES] = each(|k| d[k].to_bits());
+        *d = each(|k| f32::from_bits(select(pass[k], depth[k].to_bits(), old[k])));
+        let old: Rgba = each(|k| u32::from_le_bytes(c[k]));
+        let new: Rgba = each(|k| select(pass[k], rgba[k], old[k]));
+        *c = each(|k| new[k].to_le_bytes());
         return;
     }
     for k in 0..LANES {
-        if ok[k] && depth_passes(depth[k], target.depth[i + k]) {
+        if ok[k] != 0 && depth_passes(depth[k], target.depth[i + k]) {
             target.depth[i + k] = depth[k];
-            target.color[i + k] = colors[k];
+            target.color[i + k] = rgba[k].to_le_bytes();
         }
     }
+}
+
+/// `a` where the lane mask `m` is set, else `b` (bitwise: and, and-not, or).
+#[inline(always)]
+fn select(m: i32, a: u32, b: u32) -> u32 {
+    let m = m as u32;
+    (a & m) | (b & !m)
 }
