@@ -31,7 +31,7 @@ pub(in crate::raster::lanes) mod sparse;
 mod texture;
 mod write;
 
-pub(in crate::raster::lanes) use scanline::scanline_triangle_body;
+use scanline::scanline_triangle_body;
 use shade::channel_colors;
 pub(in crate::raster::lanes) use texture::Lookups;
 pub(in crate::raster::lanes) use write::{finish, mask_from_bits};
@@ -188,7 +188,7 @@ struct Four {
 
 /// Draws rows `rows` of `tri` with the lanes of `rasterizer` (see the parent module): every
 /// [`LaneColor`], with the wireframe on the edge-function path. The same bodies are compiled
-/// for AVX-512 in `avx512/` ([`edge_triangle_body`], [`scanline_triangle_body`]).
+/// for AVX-512 in `avx512/` ([`draw_body`]).
 #[target_feature(enable = "avx2")]
 pub(super) fn draw(
     rasterizer: Rasterizer,
@@ -200,13 +200,31 @@ pub(super) fn draw(
 ) {
     // SAFETY: this function is compiled with AVX2 (so the CPU has it), and `WIDE` is false:
     // the bodies' condition.
+    unsafe { draw_body::<false>(rasterizer, tri, rows, sampler, shading, target) }
+}
+
+/// The body of `rasterizer` ([`edge_triangle_body`] or [`scanline_triangle_body`]), inlined
+/// into both entries ([`draw`] and `avx512::draw`).
+///
+/// # Safety
+/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
+#[inline(always)]
+pub(in crate::raster::lanes) unsafe fn draw_body<const WIDE: bool>(
+    rasterizer: Rasterizer,
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: the function's condition is the bodies'.
     unsafe {
         match rasterizer {
             Rasterizer::EdgeFunction => {
-                edge_triangle_body::<false>(tri, rows, sampler, shading, target)
+                edge_triangle_body::<WIDE>(tri, rows, sampler, shading, target)
             }
             Rasterizer::Scanline => {
-                scanline_triangle_body::<false>(tri, rows, sampler, shading, target)
+                scanline_triangle_body::<WIDE>(tri, rows, sampler, shading, target)
             }
         }
     }
@@ -219,7 +237,7 @@ pub(super) fn draw(
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
 #[inline(always)]
-pub(in crate::raster::lanes) unsafe fn edge_triangle_body<const WIDE: bool>(
+unsafe fn edge_triangle_body<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,
@@ -234,10 +252,10 @@ pub(in crate::raster::lanes) unsafe fn edge_triangle_body<const WIDE: bool>(
         (target.uv.is_none() && target.difference.is_none()).then(sparse::Gathered::new);
     let consts = &tri.consts;
     let rows = (y_start, y_end);
-    // SAFETY: here and in the calls below: the function's condition (AVX2, and AVX-512 when
-    // `WIDE`) is what these functions need.
     match gathered.as_mut() {
         // A narrow triangle (a dense mesh's): every covered pixel is gathered.
+        // SAFETY: here and in the calls below: the function's condition (AVX2, and AVX-512
+        // when `WIDE`) is what these functions need.
         Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => unsafe {
             narrow_rows::<WIDE>(tri, rows, g, mode, color, sampler, &mut lookups, target)
         },

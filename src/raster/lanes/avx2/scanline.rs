@@ -14,7 +14,7 @@ use spans::draw_spans;
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
 #[inline(always)]
-pub(in crate::raster::lanes) unsafe fn scanline_triangle_body<const WIDE: bool>(
+pub(super) unsafe fn scanline_triangle_body<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,

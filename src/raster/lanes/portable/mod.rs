@@ -15,6 +15,8 @@ use super::*;
 mod sampler;
 
 type I32s = [i32; LANES];
+/// Packed RGBA8 colours of eight lanes, red in the low byte.
+type Rgba = [u32; LANES];
 /// A condition per lane from `f64` lanes as an integer mask: all ones where it holds, else
 /// zero (what a vector comparison gives; `[bool; 8]` needed packing and unpacking).
 type Mask64 = [i64; LANES];
@@ -45,8 +47,6 @@ fn mask64(cond: bool) -> i64 {
 fn mask32(cond: bool) -> i32 {
     -i32::from(cond)
 }
-/// Packed RGBA8 colours of eight lanes, red in the low byte.
-type Rgba = [u32; LANES];
 
 /// `[f(0), f(1), ..., f(7)]`: one operation over the eight lanes. (A loop, not
 /// `array::from_fn`: that was left as a call, compiled without the caller's SSE4.1.)

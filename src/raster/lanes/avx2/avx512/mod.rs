@@ -32,16 +32,7 @@ pub(in crate::raster::lanes) fn draw(
 ) {
     // SAFETY: this function is compiled with AVX2 and AVX-512 F, BW, VL and DQ (so the CPU
     // has them): the bodies' condition with `WIDE`.
-    unsafe {
-        match rasterizer {
-            Rasterizer::EdgeFunction => {
-                avx2::edge_triangle_body::<true>(tri, rows, sampler, shading, target)
-            }
-            Rasterizer::Scanline => {
-                avx2::scanline_triangle_body::<true>(tri, rows, sampler, shading, target)
-            }
-        }
-    }
+    unsafe { avx2::draw_body::<true>(rasterizer, tri, rows, sampler, shading, target) }
 }
 
 /// `(floor(clamp(x)) as i32, floor(clamp(x)))` with NaN giving index 0, as `texel_floor`.
