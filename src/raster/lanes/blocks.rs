@@ -128,7 +128,8 @@ pub(super) struct BlockAt {
     pub(super) kind: Block,
 }
 
-/// The block walk of every build of the edge-function lanes: the bounding box's columns
+/// The block walk of the scalar and portable edge-function lanes (the AVX2 lanes write the
+/// same loops out in `avx2::block_rows`, where this measured slower): the bounding box's columns
 /// `x0..=x1` in blocks of [`LANES`], rows `y_start..=y_end` in blocks of [`BLOCK_ROWS`],
 /// row of blocks by row of blocks, each block [`classify`]'d by its corners and yielded
 /// unless it is outside. (An iterator, not a function taking the loop body: a closure was

@@ -10,9 +10,10 @@
 
 use std::arch::x86_64::*;
 
-use super::blocks::Blocks;
+use super::blocks::classify;
 use super::{
-    Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, Stepped, Target,
+    BLOCK_ROWS, Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, Stepped,
+    Target,
 };
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span_of;
@@ -316,84 +317,104 @@ fn block_rows<const WIDE: bool>(
         Some(s) if WIDE && wide::pairs_apply(consts, color, sampler, target) => Some(s),
         _ => None,
     };
-    for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
-        let (bx, (by, by_end)) = (block.x, block.rows);
-        let in_row = (1i32 << block.lanes_in) - 1;
-        if let Some(sampler) = pairs
-            && block.kind == Block::Inside
-            && (gathered.is_none() || block.lanes_in > sparse::MAX_LANES as usize)
-        {
-            // SAFETY: `pairs` is set only when `WIDE`, which is set only when the CPU has
-            // AVX-512 F, BW, VL and DQ.
-            unsafe {
-                wide::inside_block(consts, (bx, in_row), (by, by_end), mode, sampler, target)
-            };
-            continue;
-        }
-        for y in by..=by_end {
-            let base = planes.at(i64::from(y), i64::from(bx));
-            let mut lo = [_mm256_setzero_pd(); 3];
-            let mut hi = [_mm256_setzero_pd(); 3];
-            for i in 0..3 {
-                let b = _mm256_set1_pd(base[i] as f64);
-                lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
-                hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
-            }
-            let covered = if block.kind == Block::Inside {
-                in_row
-            } else {
-                (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row
-            };
-            if covered == 0 {
-                continue;
-            }
-            if let Some(g) = gathered.as_deref_mut()
-                && covered.count_ones() <= sparse::MAX_LANES
-            {
-                g.add(bx, y, covered);
-                if g.full() {
-                    draw_gathered::<2, WIDE>(g, consts, mode, color, sampler, lookups, target);
-                }
-                continue;
-            }
-            let py = f64::from(y) + 0.5;
-            let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
-            let index = (y - target.y0) as usize * target.width as usize + bx as usize;
-            if WIDE && wide_rows {
-                // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
-                let l = unsafe { wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5) };
-                // SAFETY: as above; the row chunk's covered lanes are pixels of the band's
-                // row inside the image.
-                unsafe {
-                    wide::texture_chunk::<4, WIDE>(
-                        l,
-                        consts,
-                        covered,
-                        Where::Row(index),
-                        mode,
-                        sampler,
-                        lookups,
-                        target,
-                    )
-                };
-                continue;
-            }
-            let px = _mm256_set1_pd(f64::from(bx) + 0.5);
-            let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
-            let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
-            let at = Where::Row(index);
-            shade_chunk::<0, WIDE, true>(
-                [lo, hi],
-                covered,
-                at,
-                consts,
-                mode,
-                color,
-                sampler,
-                lookups,
-                target,
+    // The walk of `blocks::Blocks`, written out: the iterator measured about 5% more
+    // instructions here on the 75k mesh (its triangles are a few blocks each).
+    let mut by = y_start;
+    while by <= y_end {
+        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
+        let mut bx = x0;
+        while bx <= x1 {
+            let block = classify(
+                planes,
+                (i64::from(bx), i64::from(bx + LANES as u32 - 1)),
+                (i64::from(by), i64::from(by_end)),
             );
+            if block == Block::Outside {
+                bx += LANES as u32;
+                continue;
+            }
+            let lanes_in = (x1 - bx + 1).min(LANES as u32);
+            let in_row = (1i32 << lanes_in) - 1;
+            if let Some(sampler) = pairs
+                && block == Block::Inside
+                && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
+            {
+                // SAFETY: `pairs` is set only when `WIDE`, which is set only when the CPU has
+                // AVX-512 F, BW, VL and DQ.
+                unsafe {
+                    wide::inside_block(consts, (bx, in_row), (by, by_end), mode, sampler, target)
+                };
+                bx += LANES as u32;
+                continue;
+            }
+            for y in by..=by_end {
+                let base = planes.at(i64::from(y), i64::from(bx));
+                let mut lo = [_mm256_setzero_pd(); 3];
+                let mut hi = [_mm256_setzero_pd(); 3];
+                for i in 0..3 {
+                    let b = _mm256_set1_pd(base[i] as f64);
+                    lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
+                    hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
+                }
+                let covered = if block == Block::Inside {
+                    in_row
+                } else {
+                    (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row
+                };
+                if covered == 0 {
+                    continue;
+                }
+                if let Some(g) = gathered.as_deref_mut()
+                    && covered.count_ones() <= sparse::MAX_LANES
+                {
+                    g.add(bx, y, covered);
+                    if g.full() {
+                        draw_gathered::<2, WIDE>(g, consts, mode, color, sampler, lookups, target);
+                    }
+                    continue;
+                }
+                let py = f64::from(y) + 0.5;
+                let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
+                let index = (y - target.y0) as usize * target.width as usize + bx as usize;
+                if WIDE && wide_rows {
+                    // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
+                    let l =
+                        unsafe { wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5) };
+                    // SAFETY: as above; the row chunk's covered lanes are pixels of the band's
+                    // row inside the image.
+                    unsafe {
+                        wide::texture_chunk::<4, WIDE>(
+                            l,
+                            consts,
+                            covered,
+                            Where::Row(index),
+                            mode,
+                            sampler,
+                            lookups,
+                            target,
+                        )
+                    };
+                    continue;
+                }
+                let px = _mm256_set1_pd(f64::from(bx) + 0.5);
+                let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
+                let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
+                let at = Where::Row(index);
+                shade_chunk::<0, WIDE, true>(
+                    [lo, hi],
+                    covered,
+                    at,
+                    consts,
+                    mode,
+                    color,
+                    sampler,
+                    lookups,
+                    target,
+                );
+            }
+            bx += LANES as u32;
         }
+        by = by_end + 1;
     }
 }
 
