@@ -44,70 +44,103 @@ fn default_background() -> [u8; 4] {
     DEFAULT_BACKGROUND
 }
 
-/// The world form.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct WorldScene {
-    /// Image width in pixels (1..=16384).
-    pub width: u32,
-    /// Image height in pixels (1..=16384).
-    pub height: u32,
-    /// The camera (look-at and projection); default: at the origin looking down -z, 60°
-    /// perspective.
-    #[serde(default)]
-    pub camera: Camera,
-    /// Corners A, B, C, D.
-    pub quad: [Corner; 4],
-    /// Rotation of the quad about its centre (`world_from_object`).
-    #[serde(default)]
-    pub tilt: Tilt,
-    /// A built-in texture name (`uv-grid`, `checker`, `rgbw-2x2`, `noise`) or an image path
-    /// relative to the scene file.
-    #[serde(default = "default_texture")]
-    pub texture: String,
-    /// Texture filter (default bilinear).
-    #[serde(default)]
-    pub filter: Filter,
-    /// Texture wrap mode outside [0, 1] (default repeat).
-    #[serde(default)]
-    pub wrap: Wrap,
-    /// The largest anisotropy of texture lookups: 1 (off, the default) to 16; above 1,
-    /// trilinear filtering becomes anisotropic.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub max_anisotropy: MaxAnisotropy,
-    /// Interpolation: perspective-correct (default) or affine.
-    #[serde(default)]
-    pub mode: Interpolation,
-    /// What the colour shows (default the texture).
-    #[serde(default)]
-    pub shading: Shading,
-    /// Overlay the triangles' edges.
-    #[serde(default)]
-    pub wireframe: bool,
-    /// Colour of uncovered pixels, RGBA 0..=255.
-    #[serde(default = "default_background")]
-    pub background: [u8; 4],
-    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
-    #[serde(default, skip_serializing_if = "TieRule::is_default")]
-    pub tie_rule: TieRule,
-    /// Samples per pixel: 1 (the default), 4, 8 or 16.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub samples: SampleCount,
-    /// Where the samples lie: `standard` (the GL's, the default) or `grid`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub sample_pattern: SamplePattern,
-    /// `msaa` (one shading per pixel and triangle, the default) or `ssaa` (every sample).
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub shading_rate: ShadingRate,
-    /// Where MSAA evaluates values: `center` (the default), `centroid` or `sample`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub location: Location,
-    /// Every attribute `flat`: the provoking vertex's value (default false).
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub flat: bool,
-    /// The provoking vertex of `flat`: `last` (OpenGL's default) or `first`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub provoking_vertex: ProvokingVertex,
+/// Defines a scene form: the doc and attributes, its own fields, then the look fields every
+/// form has, written here once (serde's `flatten` cannot be combined with
+/// `deny_unknown_fields`, and rejecting unknown fields matters more: a typo must not pass
+/// silently). `texture` and `shading` differ between forms and are given with their
+/// attributes; fields after the look fields follow `then`.
+macro_rules! scene_form {
+    (
+        $(#[$meta:meta])*
+        pub struct $name:ident {
+            $( $(#[$own_meta:meta])* pub $own:ident: $own_ty:ty, )*
+        }
+        texture: $(#[$texture_meta:meta])* $texture_ty:ty,
+        shading: $(#[$shading_meta:meta])* $shading_ty:ty,
+        then { $( $(#[$then_meta:meta])* pub $then:ident: $then_ty:ty, )* }
+    ) => {
+        $(#[$meta])*
+        pub struct $name {
+            $( $(#[$own_meta])* pub $own: $own_ty, )*
+            $(#[$texture_meta])*
+            pub texture: $texture_ty,
+            /// Texture filter (default bilinear).
+            #[serde(default)]
+            pub filter: Filter,
+            /// Texture wrap mode outside [0, 1] (default repeat).
+            #[serde(default)]
+            pub wrap: Wrap,
+            /// The largest anisotropy of texture lookups: 1 (off, the default) to 16; above 1,
+            /// trilinear filtering becomes anisotropic.
+            #[serde(default, skip_serializing_if = "is_default")]
+            pub max_anisotropy: MaxAnisotropy,
+            /// Interpolation: perspective-correct (default) or affine.
+            #[serde(default)]
+            pub mode: Interpolation,
+            $(#[$shading_meta])*
+            pub shading: $shading_ty,
+            /// Overlay the triangles' edges.
+            #[serde(default)]
+            pub wireframe: bool,
+            /// Colour of uncovered pixels, RGBA 0..=255.
+            #[serde(default = "default_background")]
+            pub background: [u8; 4],
+            /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
+            #[serde(default, skip_serializing_if = "TieRule::is_default")]
+            pub tie_rule: TieRule,
+            /// Samples per pixel: 1 (the default), 4, 8 or 16.
+            #[serde(default, skip_serializing_if = "is_default")]
+            pub samples: SampleCount,
+            /// Where the samples lie: `standard` (the GL's, the default) or `grid`.
+            #[serde(default, skip_serializing_if = "is_default")]
+            pub sample_pattern: SamplePattern,
+            /// `msaa` (one shading per pixel and triangle, the default) or `ssaa` (every sample).
+            #[serde(default, skip_serializing_if = "is_default")]
+            pub shading_rate: ShadingRate,
+            /// Where MSAA evaluates values: `center` (the default), `centroid` or `sample`.
+            #[serde(default, skip_serializing_if = "is_default")]
+            pub location: Location,
+            /// Every attribute `flat`: the provoking vertex's value (default false).
+            #[serde(default, skip_serializing_if = "is_default")]
+            pub flat: bool,
+            /// The provoking vertex of `flat`: `last` (OpenGL's default) or `first`.
+            #[serde(default, skip_serializing_if = "is_default")]
+            pub provoking_vertex: ProvokingVertex,
+            $( $(#[$then_meta])* pub $then: $then_ty, )*
+        }
+    };
+}
+
+scene_form! {
+    /// The world form.
+    #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    pub struct WorldScene {
+        /// Image width in pixels (1..=16384).
+        pub width: u32,
+        /// Image height in pixels (1..=16384).
+        pub height: u32,
+        /// The camera (look-at and projection); default: at the origin looking down -z, 60°
+        /// perspective.
+        #[serde(default)]
+        pub camera: Camera,
+        /// Corners A, B, C, D.
+        pub quad: [Corner; 4],
+        /// Rotation of the quad about its centre (`world_from_object`).
+        #[serde(default)]
+        pub tilt: Tilt,
+    }
+    texture:
+        /// A built-in texture name (`uv-grid`, `checker`, `rgbw-2x2`, `noise`) or an image path
+        /// relative to the scene file.
+        #[serde(default = "default_texture")]
+        String,
+    shading:
+        /// What the colour shows (default the texture).
+        #[serde(default)]
+        Shading,
+    then {
+    }
 }
 
 /// A vertex of the raw clip-space form.
@@ -125,138 +158,67 @@ pub struct ClipSceneVertex {
     pub color: Vec3,
 }
 
-/// The raw clip-space form.
-///
-/// The look fields (`texture` ... `background`) repeat those of [`WorldScene`] on purpose:
-/// serde's `flatten` cannot be combined with `deny_unknown_fields`, and rejecting unknown
-/// fields matters more (a typo must not pass silently).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ClipScene {
-    /// Image width in pixels (1..=16384).
-    pub width: u32,
-    /// Image height in pixels (1..=16384).
-    pub height: u32,
-    /// The vertices, any number.
-    pub vertices: Vec<ClipSceneVertex>,
-    /// Index triples into `vertices`, drawn in order.
-    pub triangles: Vec<[u32; 3]>,
-    /// Split every triangle into `n x n` smaller ones on its barycentric grid
-    /// ([`ClipMesh::subdivided`]): the same surface, the same image, more triangles (the
-    /// dense-mesh benchmarks). 1 or absent: as given.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub subdivide: Option<u32>,
-    /// A built-in texture name or an image path relative to the scene file.
-    #[serde(default = "default_texture")]
-    pub texture: String,
-    /// Texture filter (default bilinear).
-    #[serde(default)]
-    pub filter: Filter,
-    /// Texture wrap mode outside [0, 1] (default repeat).
-    #[serde(default)]
-    pub wrap: Wrap,
-    /// The largest anisotropy of texture lookups: 1 (off, the default) to 16; above 1,
-    /// trilinear filtering becomes anisotropic.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub max_anisotropy: MaxAnisotropy,
-    /// Interpolation: perspective-correct (default) or affine.
-    #[serde(default)]
-    pub mode: Interpolation,
-    /// What the colour shows (default the texture).
-    #[serde(default)]
-    pub shading: Shading,
-    /// Overlay the triangles' edges.
-    #[serde(default)]
-    pub wireframe: bool,
-    /// Colour of uncovered pixels, RGBA 0..=255.
-    #[serde(default = "default_background")]
-    pub background: [u8; 4],
-    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
-    #[serde(default, skip_serializing_if = "TieRule::is_default")]
-    pub tie_rule: TieRule,
-    /// Samples per pixel: 1 (the default), 4, 8 or 16.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub samples: SampleCount,
-    /// Where the samples lie: `standard` (the GL's, the default) or `grid`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub sample_pattern: SamplePattern,
-    /// `msaa` (one shading per pixel and triangle, the default) or `ssaa` (every sample).
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub shading_rate: ShadingRate,
-    /// Where MSAA evaluates values: `center` (the default), `centroid` or `sample`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub location: Location,
-    /// Every attribute `flat`: the provoking vertex's value (default false).
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub flat: bool,
-    /// The provoking vertex of `flat`: `last` (OpenGL's default) or `first`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub provoking_vertex: ProvokingVertex,
+scene_form! {
+    /// The raw clip-space form (its look fields, `texture` on, are [`WorldScene`]'s: one
+    /// definition, `scene_form!`).
+    #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    pub struct ClipScene {
+        /// Image width in pixels (1..=16384).
+        pub width: u32,
+        /// Image height in pixels (1..=16384).
+        pub height: u32,
+        /// The vertices, any number.
+        pub vertices: Vec<ClipSceneVertex>,
+        /// Index triples into `vertices`, drawn in order.
+        pub triangles: Vec<[u32; 3]>,
+        /// Split every triangle into `n x n` smaller ones on its barycentric grid
+        /// ([`ClipMesh::subdivided`]): the same surface, the same image, more triangles (the
+        /// dense-mesh benchmarks). 1 or absent: as given.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub subdivide: Option<u32>,
+    }
+    texture:
+        /// A built-in texture name or an image path relative to the scene file.
+        #[serde(default = "default_texture")]
+        String,
+    shading:
+        /// What the colour shows (default the texture).
+        #[serde(default)]
+        Shading,
+    then {
+    }
 }
 
-/// The model form: an OBJ file seen by a camera.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ModelScene {
-    /// Image width in pixels (1..=16384).
-    pub width: u32,
-    /// Image height in pixels (1..=16384).
-    pub height: u32,
-    /// When omitted, a camera that frames the model ([`Camera::framing`]).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub camera: Option<Camera>,
-    /// The OBJ file, relative to the scene file.
-    pub model: String,
-    /// A built-in texture or image path; when omitted, the model's MTL diffuse texture, else
-    /// `uv-grid`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub texture: Option<String>,
-    /// Texture filter (default bilinear).
-    #[serde(default)]
-    pub filter: Filter,
-    /// Texture wrap mode outside [0, 1] (default repeat).
-    #[serde(default)]
-    pub wrap: Wrap,
-    /// The largest anisotropy of texture lookups: 1 (off, the default) to 16; above 1,
-    /// trilinear filtering becomes anisotropic.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub max_anisotropy: MaxAnisotropy,
-    /// Interpolation: perspective-correct (default) or affine.
-    #[serde(default)]
-    pub mode: Interpolation,
-    /// When omitted: the texture if the model has uvs, else the vertex (material) colour.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub shading: Option<Shading>,
-    /// Overlay the triangles' edges.
-    #[serde(default)]
-    pub wireframe: bool,
-    /// Colour of uncovered pixels, RGBA 0..=255.
-    #[serde(default = "default_background")]
-    pub background: [u8; 4],
-    /// Which triangle owns a pixel centre exactly on a shared edge (default: llvmpipe's).
-    #[serde(default, skip_serializing_if = "TieRule::is_default")]
-    pub tie_rule: TieRule,
-    /// Samples per pixel: 1 (the default), 4, 8 or 16.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub samples: SampleCount,
-    /// Where the samples lie: `standard` (the GL's, the default) or `grid`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub sample_pattern: SamplePattern,
-    /// `msaa` (one shading per pixel and triangle, the default) or `ssaa` (every sample).
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub shading_rate: ShadingRate,
-    /// Where MSAA evaluates values: `center` (the default), `centroid` or `sample`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub location: Location,
-    /// Every attribute `flat`: the provoking vertex's value (default false).
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub flat: bool,
-    /// The provoking vertex of `flat`: `last` (OpenGL's default) or `first`.
-    #[serde(default, skip_serializing_if = "is_default")]
-    pub provoking_vertex: ProvokingVertex,
-    /// The loaded model (filled when the scene is loaded).
-    #[serde(skip)]
-    pub mesh: Arc<ModelMesh>,
+scene_form! {
+    /// The model form: an OBJ file seen by a camera.
+    #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    pub struct ModelScene {
+        /// Image width in pixels (1..=16384).
+        pub width: u32,
+        /// Image height in pixels (1..=16384).
+        pub height: u32,
+        /// When omitted, a camera that frames the model ([`Camera::framing`]).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        pub camera: Option<Camera>,
+        /// The OBJ file, relative to the scene file.
+        pub model: String,
+    }
+    texture:
+        /// A built-in texture or image path; when omitted, the model's MTL diffuse texture, else
+        /// `uv-grid`.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        Option<String>,
+    shading:
+        /// When omitted: the texture if the model has uvs, else the vertex (material) colour.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        Option<Shading>,
+    then {
+        /// The loaded model (filled when the scene is loaded).
+        #[serde(skip)]
+        pub mesh: Arc<ModelMesh>,
+    }
 }
 
 impl ModelScene {

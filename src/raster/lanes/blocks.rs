@@ -113,3 +113,83 @@ pub(super) fn classify(planes: &EdgePlanes, cols: (i64, i64), rows: (i64, i64)) 
         Block::Partial
     }
 }
+
+/// One block of the edge-function walk ([`Blocks`]): columns `x..x + LANES` (of which the
+/// first `lanes_in` are inside the bounding box) by rows `rows.0..=rows.1`.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BlockAt {
+    /// The block's first column.
+    pub(super) x: u32,
+    /// Its first and last row.
+    pub(super) rows: (u32, u32),
+    /// The columns from `x` inside the bounding box (1 to [`LANES`]).
+    pub(super) lanes_in: usize,
+    /// [`Block::Inside`] or [`Block::Partial`] (outside blocks are skipped).
+    pub(super) kind: Block,
+}
+
+/// The block walk of the scalar and portable edge-function lanes (the AVX2 lanes write the
+/// same loops out in `avx2::block_rows`, where this measured slower): the bounding box's columns
+/// `x0..=x1` in blocks of [`LANES`], rows `y_start..=y_end` in blocks of [`BLOCK_ROWS`],
+/// row of blocks by row of blocks, each block [`classify`]'d by its corners and yielded
+/// unless it is outside. (An iterator, not a function taking the loop body: a closure was
+/// left as a call, compiled without the caller's SSE4.1.)
+pub(super) struct Blocks<'p> {
+    planes: &'p EdgePlanes,
+    cols: (u32, u32),
+    y_end: u32,
+    /// The current block's column and rows.
+    x: u32,
+    rows: (u32, u32),
+}
+
+impl<'p> Blocks<'p> {
+    /// The blocks of columns `cols` (`x0..=x1`) over rows `y_start..=y_end`.
+    #[inline(always)]
+    pub(super) fn new(
+        planes: &'p EdgePlanes,
+        cols: (u32, u32),
+        (y_start, y_end): (u32, u32),
+    ) -> Self {
+        Self {
+            planes,
+            cols,
+            y_end,
+            x: cols.0,
+            rows: (y_start, (y_start + BLOCK_ROWS - 1).min(y_end)),
+        }
+    }
+}
+
+impl Iterator for Blocks<'_> {
+    type Item = BlockAt;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<BlockAt> {
+        loop {
+            if self.x > self.cols.1 {
+                let by = self.rows.1 + 1;
+                self.rows = (by, (by + BLOCK_ROWS - 1).min(self.y_end));
+                self.x = self.cols.0;
+            }
+            if self.rows.0 > self.y_end {
+                return None;
+            }
+            let (bx, (by, by_end)) = (self.x, self.rows);
+            self.x += LANES as u32;
+            let kind = classify(
+                self.planes,
+                (i64::from(bx), i64::from(bx + LANES as u32 - 1)),
+                (i64::from(by), i64::from(by_end)),
+            );
+            if kind != Block::Outside {
+                return Some(BlockAt {
+                    x: bx,
+                    rows: (by, by_end),
+                    lanes_in: (self.cols.1 - bx + 1).min(LANES as u32) as usize,
+                    kind,
+                });
+            }
+        }
+    }
+}

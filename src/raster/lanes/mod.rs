@@ -61,6 +61,7 @@ use super::framebuffer::depth_passes;
 use super::interpolate::Interpolation;
 use super::project::SUBPIXEL;
 use super::scanline::row_span_of;
+use super::settings::Rasterizer;
 use super::setup::{Edge, PixelBounds, TriangleSetup, WeightPlanes, source_weight_gradients};
 use super::shade::{
     WIRE_COLOR, WIRE_HALO_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge,
@@ -79,7 +80,7 @@ mod scanline;
 mod triangle;
 
 pub use blocks::EdgePlanes;
-use blocks::{Block, classify};
+use blocks::{Block, Blocks};
 pub use paths::Lanes;
 use sampler::Sampler;
 use scanline::Stepped;
@@ -98,9 +99,11 @@ pub enum VectorLevel {
     /// The portable SIMD lanes (`portable/`: SSE2 or SSE4.1 on x86_64, NEON on aarch64) for
     /// texture shading into colour and depth; the scalar lane code for the rest.
     Portable = 1,
-    /// AVX2 intrinsics.
+    /// AVX2 intrinsics (`avx2/`), for every shading the lanes draw.
     Avx2 = 2,
-    /// AVX2, with texture lookups of sixteen pixels at once in AVX-512.
+    /// The AVX2 code compiled again for AVX-512 F, BW, VL and DQ (`avx2/avx512/`): 32
+    /// registers and mask registers, row chunks in one 512-bit register, texture lookups and
+    /// long scanline spans sixteen pixels at a time, scattered writes of gathered chunks.
     Avx512 = 3,
 }
 
@@ -465,71 +468,56 @@ fn edge_triangle_impl(
     let a = planes.a.map(|v| v as f64);
     let t = planes.t.map(|v| v as f64);
     let mut colors = [[0u8; 4]; LANES];
-    let mut by = y_start;
-    while by <= y_end {
-        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
-        let mut bx = x0;
-        while bx <= x1 {
-            let bx_end = bx + LANES as u32 - 1;
-            let block = classify(
-                planes,
-                (i64::from(bx), i64::from(bx_end)),
-                (i64::from(by), i64::from(by_end)),
-            );
-            if block != Block::Outside {
-                let lanes_in = (x1 - bx + 1).min(LANES as u32) as usize;
-                for y in by..=by_end {
-                    let base = planes.at(i64::from(y), i64::from(bx));
-                    let mut e = [[0.0; LANES]; 3];
-                    for i in 0..3 {
-                        for k in 0..LANES {
-                            e[i][k] = base[i] as f64 + a[i] * OFFSETS[k];
+    for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
+        let bx = block.x;
+        for y in block.rows.0..=block.rows.1 {
+            let base = planes.at(i64::from(y), i64::from(bx));
+            let mut e = [[0.0; LANES]; 3];
+            for i in 0..3 {
+                for k in 0..LANES {
+                    e[i][k] = base[i] as f64 + a[i] * OFFSETS[k];
+                }
+            }
+            let mut covered = [false; LANES];
+            for k in 0..block.lanes_in {
+                covered[k] = block.kind == Block::Inside
+                    || (e[0][k] >= t[0] && e[1][k] >= t[1] && e[2][k] >= t[2]);
+            }
+            if !covered.iter().any(|&c| c) {
+                continue;
+            }
+            match &sampler {
+                Some(sampler) => {
+                    let l = row_weights(&consts.weights, bx, y);
+                    let mut s = from_weights(&l, consts, mode);
+                    for k in 0..LANES {
+                        s.ok[k] &= covered[k];
+                    }
+                    // A difference target is not shaded (see `DifferenceTarget`).
+                    match color {
+                        _ if target.difference.is_some() => {}
+                        LaneColor::Texture => sampler.sample(&s.u, &s.v, &mut colors),
+                        _ => channel_colors(&s, color, &mut colors),
+                    }
+                    for k in 0..LANES {
+                        if s.wire[k] {
+                            colors[k] = WIRE_COLOR;
+                        } else if s.halo[k] {
+                            colors[k] = WIRE_HALO_COLOR;
                         }
                     }
-                    let mut covered = [false; LANES];
-                    for k in 0..lanes_in {
-                        covered[k] = block == Block::Inside
-                            || (e[0][k] >= t[0] && e[1][k] >= t[1] && e[2][k] >= t[2]);
-                    }
-                    if !covered.iter().any(|&c| c) {
-                        continue;
-                    }
-                    match &sampler {
-                        Some(sampler) => {
-                            let l = row_weights(&consts.weights, bx, y);
-                            let mut s = from_weights(&l, consts, mode);
-                            for k in 0..LANES {
-                                s.ok[k] &= covered[k];
-                            }
-                            // A difference target is not shaded (see `DifferenceTarget`).
-                            match color {
-                                _ if target.difference.is_some() => {}
-                                LaneColor::Texture => sampler.sample(&s.u, &s.v, &mut colors),
-                                _ => channel_colors(&s, color, &mut colors),
-                            }
-                            for k in 0..LANES {
-                                if s.wire[k] {
-                                    colors[k] = WIRE_COLOR;
-                                } else if s.halo[k] {
-                                    colors[k] = WIRE_HALO_COLOR;
-                                }
-                            }
-                            write(target, bx, y, &s, &colors);
-                        }
-                        None => {
-                            for k in 0..LANES {
-                                if covered[k] {
-                                    let edges = [e[0][k] as i64, e[1][k] as i64, e[2][k] as i64];
-                                    fallback(bx + k as u32, y, edges);
-                                }
-                            }
+                    write(target, bx, y, &s, &colors);
+                }
+                None => {
+                    for k in 0..LANES {
+                        if covered[k] {
+                            let edges = [e[0][k] as i64, e[1][k] as i64, e[2][k] as i64];
+                            fallback(bx + k as u32, y, edges);
                         }
                     }
                 }
             }
-            bx += LANES as u32;
         }
-        by = by_end + 1;
     }
 }
 

@@ -8,8 +8,8 @@ enum Build {
     /// The scalar lane code.
     Scalar,
     /// The portable SIMD lanes (`portable/`) where they apply, else the scalar lane code;
-    /// `sse41`: compiled with SSE4.1 (x86_64 CPUs that have it).
-    Portable { sse41: bool },
+    /// `sse41`: their build compiled with SSE4.1 (x86_64 CPUs that have it).
+    Portable { sse41: Option<portable::Sse41> },
     /// The scalar lane code compiled with AVX2 (a texture wrap the vector sampler lacks).
     #[cfg(target_arch = "x86_64")]
     Avx2Scalar,
@@ -52,12 +52,10 @@ impl<'t> Lanes<'t> {
                 };
             }
         }
-        #[cfg(target_arch = "x86_64")]
-        let sse41 = std::arch::is_x86_feature_detected!("sse4.1");
-        #[cfg(not(target_arch = "x86_64"))]
-        let sse41 = false;
         let build = if vector >= VectorLevel::Portable {
-            Build::Portable { sse41 }
+            Build::Portable {
+                sse41: portable::Sse41::detect(),
+            }
         } else {
             Build::Scalar
         };
@@ -86,79 +84,82 @@ impl<'t> Lanes<'t> {
     /// edge-function lanes (see [`edge_triangle`]). `tri` must be
     /// [`exact`](LaneTriangle::exact).
     pub fn edge_triangle(&self, tri: &LaneTriangle, rows: (u32, u32), target: &mut Target<'_>) {
-        let (texture, shading) = (self.texture, Some(self.shading));
-        let fallback = &mut |_, _, _| {};
-        let mode = self.shading.mode;
-        match self.build {
-            Build::Portable { sse41 } if portable::applies(&self.shading, target) => {
-                let sampler = Sampler::new(texture, self.shading.filter, self.shading.wrap);
-                #[cfg(target_arch = "x86_64")]
-                if sse41 {
-                    // SAFETY: the CPU has SSE4.1 (`sse41` is set only when it is detected).
-                    unsafe { portable::edge_triangle_sse41(tri, rows, &sampler, mode, target) };
-                    return;
-                }
-                let _ = sse41;
-                portable::edge_triangle(tri, rows, &sampler, mode, target);
-            }
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build), and AVX-512
-            // F, BW, VL and DQ when `wide` (`VectorLevel::avx512`).
-            Build::Avx2 => unsafe {
-                let sampler = self.sampler.as_ref();
-                if self.wide {
-                    avx2::avx512::edge_triangle(tri, rows, sampler, &self.shading, target)
-                } else {
-                    avx2::edge_triangle(tri, rows, sampler, &self.shading, target)
-                }
-            },
-            #[cfg(target_arch = "x86_64")]
-            // SAFETY: as above.
-            Build::Avx2Scalar => unsafe {
-                edge_triangle_avx2(tri, rows, texture, shading, target, fallback)
-            },
-            _ => edge_triangle_impl(tri, rows, texture, shading, target, fallback),
-        }
+        self.draw(Rasterizer::EdgeFunction, tri, rows, target);
     }
 
     /// Draws rows `rows` of `tri`, made for this shading (without the wireframe), with the
     /// scanline lanes (see [`scanline_triangle`]).
     pub fn scanline_triangle(&self, tri: &LaneTriangle, rows: (u32, u32), target: &mut Target<'_>) {
-        let (texture, shading) = (self.texture, self.shading);
-        if let Build::Portable { sse41 } = self.build
-            && portable::applies(&shading, target)
-        {
-            let sampler = Sampler::new(texture, shading.filter, shading.wrap);
-            #[cfg(target_arch = "x86_64")]
-            if sse41 {
-                // SAFETY: the CPU has SSE4.1 (`sse41` is set only when it is detected).
-                unsafe {
-                    portable::scanline_triangle_sse41(tri, rows, &sampler, shading.mode, target)
-                };
-                return;
-            }
-            let _ = sse41;
-            portable::scanline_triangle(tri, rows, &sampler, shading.mode, target);
-            return;
-        }
-        #[cfg(target_arch = "x86_64")]
-        match (self.build, &self.sampler) {
-            // SAFETY: the CPU supports AVX2 (`VectorLevel::avx2` chose this build), and AVX-512
-            // F, BW, VL and DQ when `wide` (`VectorLevel::avx512`).
-            (Build::Avx2, sampler) if sampler.is_some() || shading.color != LaneColor::Texture => unsafe {
-                if self.wide {
-                    avx2::avx512::scanline_triangle(tri, rows, sampler.as_ref(), &shading, target)
-                } else {
-                    avx2::scanline_triangle(tri, rows, sampler.as_ref(), &shading, target)
-                }
-            },
-            // SAFETY: as above.
-            (Build::Avx2 | Build::Avx2Scalar, _) => unsafe {
-                scanline::scanline_triangle_avx2(tri, rows, texture, shading, target)
-            },
-            _ => scanline::scanline_triangle_impl(tri, rows, texture, shading, target),
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        scanline::scanline_triangle_impl(tri, rows, texture, shading, target);
+        self.draw(Rasterizer::Scanline, tri, rows, target);
     }
+
+    /// Draws rows `rows` of `tri` with the lanes of `rasterizer` in the build chosen when this
+    /// was made.
+    fn draw(
+        &self,
+        rasterizer: Rasterizer,
+        tri: &LaneTriangle,
+        rows: (u32, u32),
+        target: &mut Target<'_>,
+    ) {
+        let (texture, shading) = (self.texture, self.shading);
+        match self.build {
+            Build::Portable { sse41 } if portable::applies(&shading, target) => {
+                let sampler = Sampler::new(texture, shading.filter, shading.wrap);
+                portable::draw(rasterizer, sse41, tri, rows, &sampler, shading.mode, target);
+            }
+            #[cfg(target_arch = "x86_64")]
+            Build::Avx2 => {
+                let sampler = self.sampler.as_ref();
+                if self.wide {
+                    // SAFETY: the CPU has AVX2 and AVX-512 F, BW, VL and DQ (`wide` is set
+                    // only by `VectorLevel::avx512`).
+                    unsafe { avx2::avx512::draw(rasterizer, tri, rows, sampler, &shading, target) }
+                } else {
+                    // SAFETY: the CPU has AVX2 (`VectorLevel::avx2` chose this build).
+                    unsafe { avx2::draw(rasterizer, tri, rows, sampler, &shading, target) }
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the CPU has AVX2 (`VectorLevel::avx2` chose this build).
+            Build::Avx2Scalar => unsafe {
+                scalar_avx2(rasterizer, tri, rows, texture, shading, target)
+            },
+            _ => scalar(rasterizer, tri, rows, texture, shading, target),
+        }
+    }
+}
+
+/// The scalar lane code of `rasterizer` (the reference build).
+#[inline(always)]
+fn scalar(
+    rasterizer: Rasterizer,
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    texture: &Texture,
+    shading: LaneShading,
+    target: &mut Target<'_>,
+) {
+    match rasterizer {
+        Rasterizer::EdgeFunction => {
+            edge_triangle_impl(tri, rows, texture, Some(shading), target, &mut |_, _, _| {})
+        }
+        Rasterizer::Scanline => {
+            scanline::scanline_triangle_impl(tri, rows, texture, shading, target)
+        }
+    }
+}
+
+/// [`scalar`] compiled with AVX2 (a texture wrap the vector sampler lacks).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn scalar_avx2(
+    rasterizer: Rasterizer,
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    texture: &Texture,
+    shading: LaneShading,
+    target: &mut Target<'_>,
+) {
+    scalar(rasterizer, tri, rows, texture, shading, target);
 }

@@ -15,18 +15,6 @@ pub fn scanline_triangle(
     Lanes::new(texture, shading, vector).scanline_triangle(tri, rows, target);
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-pub(super) fn scanline_triangle_avx2(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    texture: &Texture,
-    shading: LaneShading,
-    target: &mut Target<'_>,
-) {
-    scanline_triangle_impl(tri, rows, texture, shading, target);
-}
-
 /// What the scanline lanes step: `u`, `v` and the shading's channels (divided by w when
 /// perspective-correct), `1/w` and depth, each linear along a row.
 #[derive(Clone, Copy, Default)]

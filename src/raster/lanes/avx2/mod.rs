@@ -1,5 +1,5 @@
 //! The lane paths written with AVX2 intrinsics: the same operations in the same order as
-//! the portable lane code in the parent module (and so as the per-pixel renderer), eight
+//! the scalar lane code in the parent module (and so as the per-pixel renderer), eight
 //! pixels per instruction. Chosen at run time when the CPU has AVX2 and the texture's wrap
 //! is a mask or a clamp on both axes; tests check the two agree bit for bit. The bodies are
 //! generic over `WIDE`: the subfolder `avx512/` (code that needs AVX-512 as well) compiles them
@@ -10,12 +10,14 @@
 
 use std::arch::x86_64::*;
 
+use super::blocks::classify;
 use super::{
     BLOCK_ROWS, Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, Stepped,
-    Target, classify,
+    Target,
 };
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span_of;
+use crate::raster::settings::Rasterizer;
 use crate::raster::setup::WeightPlanes;
 use crate::raster::shade::{
     AMBIENT, MIN_NORMAL_LENGTH, WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX,
@@ -30,7 +32,7 @@ pub(in crate::raster::lanes) mod sparse;
 mod texture;
 mod write;
 
-pub(in crate::raster::lanes) use scanline::{scanline_triangle, scanline_triangle_body};
+use scanline::scanline_triangle_body;
 use shade::channel_colors;
 pub(in crate::raster::lanes) use texture::Lookups;
 pub(in crate::raster::lanes) use write::{finish, mask_from_bits};
@@ -94,7 +96,7 @@ fn weights4(w: &WeightPlanes, row: &[f64; 3], px: __m256d) -> [__m256d; 3] {
 /// `uv`: whether the target may keep uvs (then [`Constants::both_uv`] is read; a constant
 /// `false` takes that code out).
 /// (A macro, not a function: it is expanded into each caller, so its vectors stay in
-/// registers; a call returns [`Four`] through memory. Use it in `unsafe`, AVX2 code.)
+/// registers; a call returns [`Four`] through memory. Use it in functions compiled with AVX2.)
 macro_rules! from_weights4 {
     ($l:expr, $c:expr, $mode:expr, $uv:expr) => {{
         let (l, c, mode): ([__m256d; 3], &Constants, Interpolation) = ($l, $c, $mode);
@@ -185,77 +187,107 @@ struct Four {
     both_uv: Option<[__m256d; 4]>,
 }
 
-/// The edge-function lane path (see the parent module): every [`LaneColor`], with the
-/// wireframe. The same body is compiled for AVX-512 in `avx512/` ([`edge_triangle_body`]).
+/// Draws rows `rows` of `tri` with the lanes of `rasterizer` (see the parent module): every
+/// [`LaneColor`], with the wireframe on the edge-function path. The same bodies are compiled
+/// for AVX-512 in `avx512/` ([`draw_body`]).
 #[target_feature(enable = "avx2")]
-pub(super) fn edge_triangle(
+pub(super) fn draw(
+    rasterizer: Rasterizer,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: Option<&VecSampler<'_>>,
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    // SAFETY: this function's features.
-    unsafe { edge_triangle_body::<false>(tri, rows, sampler, shading, target) }
+    // SAFETY: this function is compiled with AVX2 (so the CPU has it), and `WIDE` is false:
+    // the bodies' condition.
+    unsafe { draw_body::<false>(rasterizer, tri, rows, sampler, shading, target) }
 }
 
-/// The body of both entries (this module's and `avx512::edge_triangle`), inlined into each
-/// (so compiled for each one's instruction set).
+/// The body of `rasterizer` ([`edge_triangle_body`] or [`scanline_triangle_body`]), inlined
+/// into both entries ([`draw`] and `avx512::draw`).
 ///
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
 #[inline(always)]
-pub(in crate::raster::lanes) unsafe fn edge_triangle_body<const WIDE: bool>(
+pub(in crate::raster::lanes) unsafe fn draw_body<const WIDE: bool>(
+    rasterizer: Rasterizer,
+    tri: &LaneTriangle,
+    rows: (u32, u32),
+    sampler: Option<&VecSampler<'_>>,
+    shading: &LaneShading,
+    target: &mut Target<'_>,
+) {
+    // SAFETY: the function's condition is the bodies'.
+    unsafe {
+        match rasterizer {
+            Rasterizer::EdgeFunction => {
+                edge_triangle_body::<WIDE>(tri, rows, sampler, shading, target)
+            }
+            Rasterizer::Scanline => {
+                scanline_triangle_body::<WIDE>(tri, rows, sampler, shading, target)
+            }
+        }
+    }
+}
+
+/// The edge-function body of both entries ([`draw`] and `avx512::draw`), inlined into each
+/// (so compiled for each one's instruction set). It only chooses the walk: every intrinsic is
+/// in the AVX2 functions it calls (which inline into an AVX-512 caller too).
+///
+/// # Safety
+/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
+#[inline(always)]
+unsafe fn edge_triangle_body<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    // SAFETY: as the function's.
-    unsafe {
-        let (mode, color) = (shading.mode, shading.color);
-        let mut lookups = Lookups::new(sampler, WIDE);
-        // Sparse rows are gathered only where pixels are written one by one (no uv or
-        // difference buffers).
-        let mut gathered =
-            (target.uv.is_none() && target.difference.is_none()).then(sparse::Gathered::new);
-        let consts = &tri.consts;
-        match gathered.as_mut() {
-            // A narrow triangle (a dense mesh's): every covered pixel is gathered.
-            Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => narrow_rows::<WIDE>(
+    let (mode, color) = (shading.mode, shading.color);
+    let mut lookups = Lookups::new(sampler, WIDE);
+    // Sparse rows are gathered only where pixels are written one by one (no uv or
+    // difference buffers).
+    let mut gathered =
+        (target.uv.is_none() && target.difference.is_none()).then(sparse::Gathered::new);
+    let consts = &tri.consts;
+    let rows = (y_start, y_end);
+    match gathered.as_mut() {
+        // A narrow triangle (a dense mesh's): every covered pixel is gathered.
+        // SAFETY: here and in the calls below: the function's condition (AVX2, and AVX-512
+        // when `WIDE`) is what these functions need.
+        Some(g) if tri.bounds.x1 - tri.bounds.x0 < LANES as u32 => unsafe {
+            narrow_rows::<WIDE>(tri, rows, g, mode, color, sampler, &mut lookups, target)
+        },
+        // SAFETY: as above.
+        _ => unsafe {
+            block_rows::<WIDE>(
                 tri,
-                (y_start, y_end),
-                g,
-                mode,
-                color,
-                sampler,
-                &mut lookups,
-                target,
-            ),
-            _ => block_rows::<WIDE>(
-                tri,
-                (y_start, y_end),
+                rows,
                 gathered.as_mut(),
                 mode,
                 color,
                 sampler,
                 &mut lookups,
                 target,
-            ),
-        }
-        // At most seven pixels are left (a chunk is drawn whenever eight wait): one chunk.
-        if let Some(g) = gathered.as_mut()
-            && !g.is_empty()
-        {
-            draw_gathered::<3, WIDE>(g, consts, mode, color, sampler, &mut lookups, target);
-            debug_assert!(g.is_empty());
-        }
-        lookups.flush(sampler, target);
+            )
+        },
     }
+    // At most seven pixels are left (a chunk is drawn whenever eight wait): one chunk.
+    if let Some(g) = gathered.as_mut()
+        && !g.is_empty()
+    {
+        // SAFETY: as above.
+        unsafe { draw_gathered::<3, WIDE>(g, consts, mode, color, sampler, &mut lookups, target) };
+        debug_assert!(g.is_empty());
+    }
+    // SAFETY: as above.
+    unsafe { lookups.flush(sampler, target) };
 }
 
-/// The edge-function lanes over the triangle's blocks of [`LANES`] columns by [`BLOCK_ROWS`]
+/// The edge-function lanes over the triangle's blocks of [`LANES`] columns by
+/// [`BLOCK_ROWS`](super::BLOCK_ROWS)
 /// rows: each block rejected, accepted or tested whole, then row by row; a row covering at
 /// most [`sparse::MAX_LANES`] pixels goes to `gathered` when there is one.
 #[allow(clippy::too_many_arguments)]
@@ -285,103 +317,100 @@ fn block_rows<const WIDE: bool>(
         Some(s) if WIDE && wide::pairs_apply(consts, color, sampler, target) => Some(s),
         _ => None,
     };
+    // The walk of `blocks::Blocks`, written out: the iterator measured about 5% more
+    // instructions here on the 75k mesh (its triangles are a few blocks each).
     let mut by = y_start;
     while by <= y_end {
         let by_end = (by + BLOCK_ROWS - 1).min(y_end);
         let mut bx = x0;
         while bx <= x1 {
-            let bx_end = bx + LANES as u32 - 1;
             let block = classify(
                 planes,
-                (i64::from(bx), i64::from(bx_end)),
+                (i64::from(bx), i64::from(bx + LANES as u32 - 1)),
                 (i64::from(by), i64::from(by_end)),
             );
-            if block != Block::Outside {
-                let lanes_in = (x1 - bx + 1).min(LANES as u32);
-                let in_row = (1i32 << lanes_in) - 1;
-                if let Some(sampler) = pairs
-                    && block == Block::Inside
-                    && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
+            if block == Block::Outside {
+                bx += LANES as u32;
+                continue;
+            }
+            let lanes_in = (x1 - bx + 1).min(LANES as u32);
+            let in_row = (1i32 << lanes_in) - 1;
+            if let Some(sampler) = pairs
+                && block == Block::Inside
+                && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
+            {
+                // SAFETY: `pairs` is set only when `WIDE`, which is set only when the CPU has
+                // AVX-512 F, BW, VL and DQ.
+                unsafe {
+                    wide::inside_block(consts, (bx, in_row), (by, by_end), mode, sampler, target)
+                };
+                bx += LANES as u32;
+                continue;
+            }
+            for y in by..=by_end {
+                let base = planes.at(i64::from(y), i64::from(bx));
+                let mut lo = [_mm256_setzero_pd(); 3];
+                let mut hi = [_mm256_setzero_pd(); 3];
+                for i in 0..3 {
+                    let b = _mm256_set1_pd(base[i] as f64);
+                    lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
+                    hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
+                }
+                let covered = if block == Block::Inside {
+                    in_row
+                } else {
+                    (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row
+                };
+                if covered == 0 {
+                    continue;
+                }
+                if let Some(g) = gathered.as_deref_mut()
+                    && covered.count_ones() <= sparse::MAX_LANES
                 {
-                    // SAFETY: `pairs` is set only when `WIDE`, which is set only when the CPU
-                    // has AVX-512 F, BW, VL and DQ.
+                    g.add(bx, y, covered);
+                    if g.full() {
+                        draw_gathered::<2, WIDE>(g, consts, mode, color, sampler, lookups, target);
+                    }
+                    continue;
+                }
+                let py = f64::from(y) + 0.5;
+                let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
+                let index = (y - target.y0) as usize * target.width as usize + bx as usize;
+                if WIDE && wide_rows {
+                    // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
+                    let l =
+                        unsafe { wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5) };
+                    // SAFETY: as above; the row chunk's covered lanes are pixels of the band's
+                    // row inside the image.
                     unsafe {
-                        wide::inside_block(
+                        wide::texture_chunk::<4, WIDE>(
+                            l,
                             consts,
-                            (bx, in_row),
-                            (by, by_end),
+                            covered,
+                            Where::Row(index),
                             mode,
                             sampler,
+                            lookups,
                             target,
                         )
                     };
-                    bx += LANES as u32;
                     continue;
                 }
-                for y in by..=by_end {
-                    let base = planes.at(i64::from(y), i64::from(bx));
-                    let mut lo = [_mm256_setzero_pd(); 3];
-                    let mut hi = [_mm256_setzero_pd(); 3];
-                    for i in 0..3 {
-                        let b = _mm256_set1_pd(base[i] as f64);
-                        lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
-                        hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
-                    }
-                    let covered = if block == Block::Inside {
-                        in_row
-                    } else {
-                        (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row
-                    };
-                    if covered == 0 {
-                        continue;
-                    }
-                    if let Some(g) = gathered.as_deref_mut()
-                        && covered.count_ones() <= sparse::MAX_LANES
-                    {
-                        g.add(bx, y, covered);
-                        if g.full() {
-                            draw_gathered::<2, WIDE>(
-                                g, consts, mode, color, sampler, lookups, target,
-                            );
-                        }
-                        continue;
-                    }
-                    let py = f64::from(y) + 0.5;
-                    let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
-                    let index = (y - target.y0) as usize * target.width as usize + bx as usize;
-                    if WIDE && wide_rows {
-                        // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
-                        unsafe {
-                            let l = wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5);
-                            wide::texture_chunk::<4, WIDE>(
-                                l,
-                                consts,
-                                covered,
-                                Where::Row(index),
-                                mode,
-                                sampler,
-                                lookups,
-                                target,
-                            );
-                        }
-                        continue;
-                    }
-                    let px = _mm256_set1_pd(f64::from(bx) + 0.5);
-                    let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
-                    let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
-                    let at = Where::Row(index);
-                    shade_chunk::<0, WIDE, true>(
-                        [lo, hi],
-                        covered,
-                        at,
-                        consts,
-                        mode,
-                        color,
-                        sampler,
-                        lookups,
-                        target,
-                    );
-                }
+                let px = _mm256_set1_pd(f64::from(bx) + 0.5);
+                let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
+                let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
+                let at = Where::Row(index);
+                shade_chunk::<0, WIDE, true>(
+                    [lo, hi],
+                    covered,
+                    at,
+                    consts,
+                    mode,
+                    color,
+                    sampler,
+                    lookups,
+                    target,
+                );
             }
             bx += LANES as u32;
         }

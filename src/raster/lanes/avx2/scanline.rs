@@ -7,142 +7,87 @@ mod spans;
 
 use spans::draw_spans;
 
-/// The scanline lane path (see the parent module). The same body is compiled for AVX-512 in
-/// `avx512/` (the subfolder; [`scanline_triangle_body`]).
-#[target_feature(enable = "avx2")]
-pub(in crate::raster::lanes) fn scanline_triangle(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: Option<&VecSampler<'_>>,
-    shading: &LaneShading,
-    target: &mut Target<'_>,
-) {
-    // SAFETY: this function's features.
-    unsafe { scanline_triangle_body::<false>(tri, rows, sampler, shading, target) }
-}
-
-/// The body of both entries (this module's and `avx512::scanline_triangle`), inlined into
-/// each (so compiled for each one's instruction set).
+/// The scanline body of both entries (`avx2::draw` and `avx512::draw`), inlined into each
+/// (so compiled for each one's instruction set). It walks the rows' spans; every intrinsic is
+/// in the AVX2 functions it calls (which inline into an AVX-512 caller too).
 ///
 /// # Safety
 /// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
 #[inline(always)]
-pub(in crate::raster::lanes) unsafe fn scanline_triangle_body<const WIDE: bool>(
+pub(super) unsafe fn scanline_triangle_body<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     sampler: Option<&VecSampler<'_>>,
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    // SAFETY: as the function's.
-    unsafe {
-        let (mode, color) = (shading.mode, shading.color);
-        let sampler = match sampler {
-            Some(s) if color == LaneColor::Texture => Some(s),
-            // Texture shading always has a sampler here (see `Lanes::scanline_triangle`).
-            _ if color == LaneColor::Texture => return,
-            _ => None,
+    let (mode, color) = (shading.mode, shading.color);
+    let sampler = match sampler {
+        Some(s) if color == LaneColor::Texture => Some(s),
+        // Texture shading always has a sampler here (see `Lanes::draw`).
+        _ if color == LaneColor::Texture => return,
+        _ => None,
+    };
+    let consts = &tri.consts;
+    // The increments along a row, made when a span of more than one pixel needs them (a
+    // dense mesh's rows are often one pixel).
+    let mut step = None;
+    let mut lookups = Lookups::new(sampler, WIDE);
+    let mut gathered = sparse::SpanGathered::new();
+    // SAFETY: here and in the calls below: the function's condition (AVX2, and AVX-512 when
+    // `WIDE`) is what these functions need; the spans are the rows' exact spans, inside the
+    // triangle's bounds and so inside the image.
+    let mut spans = unsafe { RowSpans::new(tri, y_start) };
+    // A narrow triangle's spans (at most eight pixels) are all gathered.
+    let narrow = spans.narrow.is_some();
+    for y in y_start..=y_end {
+        // SAFETY: as above.
+        let Some((x0, x1)) = (unsafe { spans.next(y) }) else {
+            continue;
         };
-        let consts = &tri.consts;
-        // The increments along a row, made when a span of more than one pixel needs them (a
-        // dense mesh's rows are often one pixel).
-        let mut step = None;
-        let mut lookups = Lookups::new(sampler, WIDE);
-        let mut gathered = sparse::SpanGathered::new();
-        let mut spans = RowSpans::new(tri, y_start);
-        // A narrow triangle's spans (at most eight pixels) are all gathered.
-        let narrow = spans.narrow.is_some();
-        for y in y_start..=y_end {
-            let Some((x0, x1)) = spans.next(y) else {
-                continue;
-            };
-            if x1 > x0 && step.is_none() {
-                step = Some(Stepped::row_step(consts, mode));
-            }
-            if narrow || x1 - x0 < sparse::MAX_LANES {
-                gathered.add(x0, x1, y);
-                if gathered.full() {
-                    // An opaque reference: the constants are loaded when a chunk is drawn,
-                    // not before the loop for every triangle (see `narrow_rows`).
-                    let consts = std::hint::black_box(consts);
-                    let step = step.as_ref().unwrap_or(&ZERO_STEP);
+        if x1 > x0 && step.is_none() {
+            step = Some(Stepped::row_step(consts, mode));
+        }
+        if narrow || x1 - x0 < sparse::MAX_LANES {
+            // SAFETY: as above.
+            unsafe { gathered.add(x0, x1, y) };
+            if gathered.full() {
+                // An opaque reference: the constants are loaded when a chunk is drawn,
+                // not before the loop for every triangle (see `narrow_rows`).
+                let consts = std::hint::black_box(consts);
+                let step = step.as_ref().unwrap_or(&ZERO_STEP);
+                let drawn = (consts, step);
+                // SAFETY: as above.
+                unsafe {
                     draw_spans::<11, WIDE>(
                         &mut gathered,
-                        (consts, step),
+                        drawn,
                         shading,
                         sampler,
                         &mut lookups,
                         target,
-                    );
-                }
-                continue;
+                    )
+                };
             }
-            let step = step.unwrap_or_default();
-            let start = Stepped::span_start(consts, mode, x0, y);
-            let row = (y - target.y0) as usize * target.width as usize;
-            let Some(sampler) = sampler else {
-                colour_span::<WIDE>(&start, &step, (row, x0, x1), consts, shading, target);
-                continue;
-            };
-            // Lane k holds pixel x0 + k, reached by k single steps; then eight steps per chunk.
-            let lanes = Stepped::lanes(start, &step);
-            if WIDE {
-                // (The function's unsafe block covers this: `WIDE` is set only when the CPU
-                // has AVX-512 F, BW, VL and DQ, `VectorLevel::avx512`; `x0..=x1` is the row's
-                // exact span, inside the triangle's bounds and so inside the image.)
-                super::avx512::wide_span(&lanes, &step, (row, x0, x1), mode, sampler, target);
-                continue;
-            }
-            let load = |f: fn(&Stepped) -> f64, h: usize| {
-                _mm256_setr_pd(
-                    f(&lanes[4 * h]),
-                    f(&lanes[4 * h + 1]),
-                    f(&lanes[4 * h + 2]),
-                    f(&lanes[4 * h + 3]),
-                )
-            };
-            // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8] (written out: `array::map` was
-            // left as a call).
-            let half = |h: usize| {
-                [
-                    load(|s| s.u, h),
-                    load(|s| s.v, h),
-                    load(|s| s.inv_w, h),
-                    load(|s| s.depth, h),
-                ]
-            };
-            let mut vals = [half(0), half(1)];
-            let n = _mm256_set1_pd(LANES as f64);
-            let step8 = [
-                _mm256_mul_pd(_mm256_set1_pd(step.u), n),
-                _mm256_mul_pd(_mm256_set1_pd(step.v), n),
-                _mm256_mul_pd(_mm256_set1_pd(step.inv_w), n),
-                _mm256_mul_pd(_mm256_set1_pd(step.depth), n),
-            ];
-            let mut x = x0;
-            while x <= x1 {
-                let lanes_in = (x1 - x + 1).min(LANES as u32);
-                let at = Where::Row(row + x as usize);
-                push_stepped::<10, WIDE>(
-                    &vals,
-                    (1i32 << lanes_in) - 1,
-                    at,
-                    mode,
-                    sampler,
-                    &mut lookups,
-                    target,
-                );
-                for half in vals.iter_mut() {
-                    for (q, s) in half.iter_mut().zip(&step8) {
-                        *q = _mm256_add_pd(*q, *s);
-                    }
-                }
-                x += LANES as u32;
-            }
+            continue;
         }
-        // At most seven pixels are left (a chunk is drawn whenever eight wait): one chunk.
-        if !gathered.is_empty() {
-            let step = step.as_ref().unwrap_or(&ZERO_STEP);
+        let step = step.unwrap_or_default();
+        let start = Stepped::span_start(consts, mode, x0, y);
+        let span = ((y - target.y0) as usize * target.width as usize, x0, x1);
+        match sampler {
+            // SAFETY: as above.
+            None => unsafe { colour_span::<WIDE>(&start, &step, span, consts, shading, target) },
+            // SAFETY: as above.
+            Some(sampler) => unsafe {
+                texture_span::<WIDE>(&start, &step, span, mode, sampler, &mut lookups, target)
+            },
+        }
+    }
+    // At most seven pixels are left (a chunk is drawn whenever eight wait): one chunk.
+    if !gathered.is_empty() {
+        let step = step.as_ref().unwrap_or(&ZERO_STEP);
+        // SAFETY: as above.
+        unsafe {
             draw_spans::<12, WIDE>(
                 &mut gathered,
                 (consts, step),
@@ -150,10 +95,84 @@ pub(in crate::raster::lanes) unsafe fn scanline_triangle_body<const WIDE: bool>(
                 sampler,
                 &mut lookups,
                 target,
-            );
-            debug_assert!(gathered.is_empty());
+            )
+        };
+        debug_assert!(gathered.is_empty());
+    }
+    // SAFETY: as above.
+    unsafe { lookups.flush(sampler, target) };
+}
+
+/// The chunks of one span of texture shading longer than [`sparse::MAX_LANES`] pixels: its
+/// columns `x0..=x1` of the band row whose first pixel is buffer index `row`. Lane k holds
+/// pixel `x0 + k`, reached by k single steps from `start`; then eight steps per chunk (with
+/// AVX-512, sixteen pixels at a time, `avx512::wide_span`).
+///
+/// # Safety
+/// The CPU has AVX2 (this function's feature), and AVX-512 F, BW, VL and DQ when `WIDE`;
+/// the span is inside the image.
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn texture_span<const WIDE: bool>(
+    start: &Stepped,
+    step: &Stepped,
+    (row, x0, x1): (usize, u32, u32),
+    mode: Interpolation,
+    sampler: &VecSampler<'_>,
+    lookups: &mut Lookups,
+    target: &mut Target<'_>,
+) {
+    let lanes = Stepped::lanes(*start, step);
+    if WIDE {
+        // SAFETY: the function's condition: AVX-512 when `WIDE`, the span inside the image.
+        unsafe { super::avx512::wide_span(&lanes, step, (row, x0, x1), mode, sampler, target) };
+        return;
+    }
+    let load = |f: fn(&Stepped) -> f64, h: usize| {
+        _mm256_setr_pd(
+            f(&lanes[4 * h]),
+            f(&lanes[4 * h + 1]),
+            f(&lanes[4 * h + 2]),
+            f(&lanes[4 * h + 3]),
+        )
+    };
+    // [u, v, 1/w, depth] x [lanes 0..4, lanes 4..8] (written out: `array::map` was
+    // left as a call).
+    let half = |h: usize| {
+        [
+            load(|s| s.u, h),
+            load(|s| s.v, h),
+            load(|s| s.inv_w, h),
+            load(|s| s.depth, h),
+        ]
+    };
+    let mut vals = [half(0), half(1)];
+    let n = _mm256_set1_pd(LANES as f64);
+    let step8 = [
+        _mm256_mul_pd(_mm256_set1_pd(step.u), n),
+        _mm256_mul_pd(_mm256_set1_pd(step.v), n),
+        _mm256_mul_pd(_mm256_set1_pd(step.inv_w), n),
+        _mm256_mul_pd(_mm256_set1_pd(step.depth), n),
+    ];
+    let mut x = x0;
+    while x <= x1 {
+        let lanes_in = (x1 - x + 1).min(LANES as u32);
+        let at = Where::Row(row + x as usize);
+        push_stepped::<10, WIDE>(
+            &vals,
+            (1i32 << lanes_in) - 1,
+            at,
+            mode,
+            sampler,
+            lookups,
+            target,
+        );
+        for half in vals.iter_mut() {
+            for (q, s) in half.iter_mut().zip(&step8) {
+                *q = _mm256_add_pd(*q, *s);
+            }
         }
-        lookups.flush(sampler, target);
+        x += LANES as u32;
     }
 }
 
@@ -218,7 +237,7 @@ impl<'t> RowSpans<'t> {
 
 /// The chunks of one span with a non-texture colour (vertex colour, weights, depth, normal,
 /// Lambert): the channels are stepped like uv (divided by w when perspective-correct, then
-/// multiplied by `1 / (1/w)`), as the portable scanline lanes do. Spans of more than
+/// multiplied by `1 / (1/w)`), as the scalar scanline lanes do. Spans of more than
 /// [`sparse::MAX_LANES`] pixels come here (shorter ones are gathered, `spans.rs`).
 #[inline]
 #[target_feature(enable = "avx2")]
@@ -230,90 +249,90 @@ fn colour_span<const WIDE: bool>(
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    // SAFETY: this module runs with AVX2; the loads read lanes 0..8 of an eight-element array.
-    unsafe {
-        const H: usize = 2;
-        let used = consts.used_channels;
-        // Lane k is the span's start after k single steps, as `Stepped::lanes` makes it (only
-        // the values this colour reads, only the pixels of the span).
-        let lanes = (x1 - x0 + 1).min(4 * H as u32) as usize;
-        let load = |s: f64, d: f64| {
-            let mut a = [s; LANES];
-            for k in 1..lanes {
-                a[k] = a[k - 1] + d;
-            }
-            let mut v = [_mm256_setzero_pd(); H];
-            for (h, v) in v.iter_mut().enumerate() {
-                *v = _mm256_loadu_pd(a.as_ptr().add(4 * h));
-            }
-            v
-        };
-        let n = LANES as f64;
-        let mut inv_w = load(start.inv_w, step.inv_w);
-        let mut depth = load(start.depth, step.depth);
-        let mut ch = [[_mm256_setzero_pd(); CHANNELS]; H];
-        for j in 0..used {
-            for (h, v) in load(start.ch[j], step.ch[j]).into_iter().enumerate() {
-                ch[h][j] = v;
-            }
+    const H: usize = 2;
+    let used = consts.used_channels;
+    // Lane k is the span's start after k single steps, as `Stepped::lanes` makes it (only
+    // the values this colour reads, only the pixels of the span).
+    let lanes = (x1 - x0 + 1).min(4 * H as u32) as usize;
+    let load = |s: f64, d: f64| {
+        let mut a = [s; LANES];
+        for k in 1..lanes {
+            a[k] = a[k - 1] + d;
         }
-        let mut x = x0;
-        while x <= x1 {
-            let lanes_in = (x1 - x + 1).min(LANES as u32);
-            let mut ok = (1i32 << lanes_in) - 1;
-            for h in 0..H {
-                let valid = _mm256_and_pd(
-                    _mm256_cmp_pd::<_CMP_GT_OQ>(inv_w[h], _mm256_setzero_pd()),
-                    _mm256_cmp_pd::<_CMP_LT_OQ>(inv_w[h], _mm256_set1_pd(f64::INFINITY)),
-                );
-                ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
-            }
-            if ok != 0 {
-                let mut channels = [[_mm256_setzero_pd(); CHANNELS]; H];
-                for (h, f) in channels.iter_mut().enumerate() {
-                    let w = match shading.mode {
-                        Interpolation::Perspective => {
-                            Some(_mm256_div_pd(_mm256_set1_pd(1.0), inv_w[h]))
-                        }
-                        Interpolation::Affine => None,
-                    };
-                    for j in 0..used {
-                        f[j] = match w {
-                            Some(w) => _mm256_mul_pd(ch[h][j], w),
-                            None => ch[h][j],
-                        };
-                    }
-                }
-                let channel = |j: usize| to_f32(channels[0][j], channels[H - 1][j]);
-                let depths = [depth[0], depth[H - 1]];
-                let rgba = channel_colors::<13, WIDE>(depths, channel, shading.color);
-                let chunk = Pending {
-                    u: _mm256_setzero_ps(),
-                    v: _mm256_setzero_ps(),
-                    depth: to_f32(depth[0], depth[H - 1]),
-                    valid: mask_from_bits(ok),
-                    wire: 0,
-                    halo: 0,
-                    index: row + x as usize,
-                    lanes: None,
-                };
-                finish::<WIDE>(target, &chunk, rgba, None);
-            }
-            x += LANES as u32;
-            if x > x1 {
-                break;
-            }
-            // Only a span of more than eight pixels gets here.
-            let (inv_w8, depth8) = (
-                _mm256_set1_pd(step.inv_w * n),
-                _mm256_set1_pd(step.depth * n),
+        let mut v = [_mm256_setzero_pd(); H];
+        for (h, v) in v.iter_mut().enumerate() {
+            *v = _mm256_setr_pd(a[4 * h], a[4 * h + 1], a[4 * h + 2], a[4 * h + 3]);
+        }
+        v
+    };
+    let n = LANES as f64;
+    let mut inv_w = load(start.inv_w, step.inv_w);
+    let mut depth = load(start.depth, step.depth);
+    let mut ch = [[_mm256_setzero_pd(); CHANNELS]; H];
+    for j in 0..used {
+        for (h, v) in load(start.ch[j], step.ch[j]).into_iter().enumerate() {
+            ch[h][j] = v;
+        }
+    }
+    let mut x = x0;
+    while x <= x1 {
+        let lanes_in = (x1 - x + 1).min(LANES as u32);
+        let mut ok = (1i32 << lanes_in) - 1;
+        for h in 0..H {
+            let valid = _mm256_and_pd(
+                _mm256_cmp_pd::<_CMP_GT_OQ>(inv_w[h], _mm256_setzero_pd()),
+                _mm256_cmp_pd::<_CMP_LT_OQ>(inv_w[h], _mm256_set1_pd(f64::INFINITY)),
             );
-            for h in 0..H {
-                inv_w[h] = _mm256_add_pd(inv_w[h], inv_w8);
-                depth[h] = _mm256_add_pd(depth[h], depth8);
+            ok &= !((!_mm256_movemask_pd(valid) & 0xf) << (4 * h));
+        }
+        if ok != 0 {
+            let mut channels = [[_mm256_setzero_pd(); CHANNELS]; H];
+            for (h, f) in channels.iter_mut().enumerate() {
+                let w = match shading.mode {
+                    Interpolation::Perspective => {
+                        Some(_mm256_div_pd(_mm256_set1_pd(1.0), inv_w[h]))
+                    }
+                    Interpolation::Affine => None,
+                };
                 for j in 0..used {
-                    ch[h][j] = _mm256_add_pd(ch[h][j], _mm256_set1_pd(step.ch[j] * n));
+                    f[j] = match w {
+                        Some(w) => _mm256_mul_pd(ch[h][j], w),
+                        None => ch[h][j],
+                    };
                 }
+            }
+            let channel = |j: usize| to_f32(channels[0][j], channels[H - 1][j]);
+            let depths = [depth[0], depth[H - 1]];
+            let rgba = channel_colors::<13, WIDE>(depths, channel, shading.color);
+            let chunk = Pending {
+                u: _mm256_setzero_ps(),
+                v: _mm256_setzero_ps(),
+                depth: to_f32(depth[0], depth[H - 1]),
+                valid: mask_from_bits(ok),
+                wire: 0,
+                halo: 0,
+                index: row + x as usize,
+                lanes: None,
+            };
+            // SAFETY: this function runs with AVX2 (and AVX-512 F, BW, VL and DQ when `WIDE`,
+            // the callers' condition); the valid lanes are columns of the row's span
+            // `x0..=x1`, inside the image (`finish`'s conditions).
+            unsafe { finish::<WIDE>(target, &chunk, rgba, None) };
+        }
+        x += LANES as u32;
+        if x > x1 {
+            break;
+        }
+        // Only a span of more than eight pixels gets here.
+        let (inv_w8, depth8) = (
+            _mm256_set1_pd(step.inv_w * n),
+            _mm256_set1_pd(step.depth * n),
+        );
+        for h in 0..H {
+            inv_w[h] = _mm256_add_pd(inv_w[h], inv_w8);
+            depth[h] = _mm256_add_pd(depth[h], depth8);
+            for j in 0..used {
+                ch[h][j] = _mm256_add_pd(ch[h][j], _mm256_set1_pd(step.ch[j] * n));
             }
         }
     }

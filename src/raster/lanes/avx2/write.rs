@@ -19,42 +19,52 @@ use super::*;
 pub(in crate::raster::lanes) unsafe fn finish<const WIDE: bool>(
     target: &mut Target<'_>,
     chunk: &Pending,
-    mut rgba: __m256i,
+    rgba: __m256i,
     both_uv: Option<&[__m256; 4]>,
 ) {
-    // SAFETY: the function's conditions: the CPU features, and `chunk.valid` enables only
-    // pixels inside the buffers (so do `pass`'s lanes, a subset of them).
-    unsafe {
-        if chunk.halo != 0 {
-            rgba = _mm256_blendv_epi8(
-                rgba,
-                _mm256_set1_epi32(i32::from_le_bytes(WIRE_HALO_COLOR)),
-                mask_from_bits(chunk.halo),
-            );
-        }
-        if chunk.wire != 0 {
-            rgba = _mm256_blendv_epi8(
-                rgba,
-                _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
-                mask_from_bits(chunk.wire),
-            );
-        }
-        let pass = match chunk.lanes {
-            // (The function's unsafe block covers this: `WIDE` is set only when the CPU has
-            // AVX-512 F, BW, VL and DQ.)
-            Some(at) if WIDE => {
-                super::avx512::scatter::write_scatter(target, at, chunk.valid, chunk.depth, rgba)
-            }
-            Some(at) => sparse::write(target, at, chunk.valid, chunk.depth, rgba),
-            None => write(target, chunk.index, chunk.valid, chunk.depth, rgba),
-        };
-        if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
-            store_uv(uv, chunk.index, pass, both);
-        }
-        if let (Some(d), Some(both)) = (target.difference.as_mut(), both_uv) {
-            store_difference(d, chunk.index, pass, both);
-        }
+    // SAFETY: here and below, the function's conditions: the CPU has AVX2 (and AVX-512 F,
+    // BW, VL and DQ when `WIDE`), and `chunk.valid` enables only pixels inside the buffers
+    // (so do `pass`'s lanes, a subset of them), as the writes require.
+    let rgba = unsafe { paint_wire(chunk, rgba) };
+    let pass = match chunk.lanes {
+        // SAFETY: as above (`WIDE`: AVX-512).
+        Some(at) if WIDE => unsafe {
+            super::avx512::scatter::write_scatter(target, at, chunk.valid, chunk.depth, rgba)
+        },
+        // SAFETY: as above.
+        Some(at) => unsafe { sparse::write(target, at, chunk.valid, chunk.depth, rgba) },
+        // SAFETY: as above.
+        None => unsafe { write(target, chunk.index, chunk.valid, chunk.depth, rgba) },
+    };
+    if let (Some(uv), Some(both)) = (target.uv.as_mut(), both_uv) {
+        // SAFETY: as above.
+        unsafe { store_uv(uv, chunk.index, pass, both) };
     }
+    if let (Some(d), Some(both)) = (target.difference.as_mut(), both_uv) {
+        // SAFETY: as above.
+        unsafe { store_difference(d, chunk.index, pass, both) };
+    }
+}
+
+/// A chunk's colours with the wireframe's halo, then its line, painted over them.
+#[inline]
+#[target_feature(enable = "avx2")]
+fn paint_wire(chunk: &Pending, mut rgba: __m256i) -> __m256i {
+    if chunk.halo != 0 {
+        rgba = _mm256_blendv_epi8(
+            rgba,
+            _mm256_set1_epi32(i32::from_le_bytes(WIRE_HALO_COLOR)),
+            mask_from_bits(chunk.halo),
+        );
+    }
+    if chunk.wire != 0 {
+        rgba = _mm256_blendv_epi8(
+            rgba,
+            _mm256_set1_epi32(i32::from_le_bytes(WIRE_COLOR)),
+            mask_from_bits(chunk.wire),
+        );
+    }
+    rgba
 }
 
 /// Writes the texel difference of the lanes in `pass` (eight pixels from buffer index
@@ -162,41 +172,48 @@ unsafe fn write(
         lanes_end(index, ok) <= target.depth.len() && target.depth.len() == target.color.len(),
         "colour lanes past the band"
     );
-    // SAFETY: the function's condition: every lane enabled in `ok` indexes both slices;
-    // masked loads and stores touch no other lane.
-    unsafe {
-        let dp = target.depth.as_mut_ptr().add(index);
-        let cp = target.color.as_mut_ptr().add(index).cast::<i32>();
-        if _mm256_movemask_ps(_mm256_castsi256_ps(ok)) == 0xff {
-            // Every lane is a pixel of the band's row, which only this thread draws: plain
-            // loads and stores of blended values (masked stores are slow on some CPUs).
-            let old = _mm256_loadu_ps(dp);
-            let pass = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old));
-            _mm256_storeu_ps(dp, _mm256_blendv_ps(old, depth, _mm256_castsi256_ps(pass)));
-            if target.difference.is_none() {
-                // The old colours are read only when some lane keeps its own.
-                let colour = if _mm256_movemask_ps(_mm256_castsi256_ps(pass)) == 0xff {
-                    rgba
-                } else {
-                    _mm256_blendv_epi8(_mm256_loadu_si256(cp.cast()), rgba, pass)
-                };
-                _mm256_storeu_si256(cp.cast(), colour);
-            }
-            return pass;
-        }
-        let old = _mm256_maskload_ps(dp, ok);
-        // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
-        let pass = _mm256_and_si256(
-            ok,
-            _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
-        );
-        _mm256_maskstore_ps(dp, pass, depth);
-        // A difference target keeps the background colour (see `DifferenceTarget`).
+    let dp = target.depth.as_mut_ptr().wrapping_add(index);
+    let cp = target.color.as_mut_ptr().wrapping_add(index).cast::<i32>();
+    if _mm256_movemask_ps(_mm256_castsi256_ps(ok)) == 0xff {
+        // Every lane is a pixel of the band's row, which only this thread draws: plain
+        // loads and stores of blended values (masked stores are slow on some CPUs).
+        // SAFETY: here and in this branch's other loads and stores: all eight lanes are
+        // enabled, so elements `index..index + 8` are in both slices (asserted above).
+        let old = unsafe { _mm256_loadu_ps(dp) };
+        let pass = _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old));
+        let new = _mm256_blendv_ps(old, depth, _mm256_castsi256_ps(pass));
+        // SAFETY: as above.
+        unsafe { _mm256_storeu_ps(dp, new) };
         if target.difference.is_none() {
-            _mm256_maskstore_epi32(cp, pass, rgba);
+            // The old colours are read only when some lane keeps its own.
+            let colour = if _mm256_movemask_ps(_mm256_castsi256_ps(pass)) == 0xff {
+                rgba
+            } else {
+                // SAFETY: as above.
+                _mm256_blendv_epi8(unsafe { _mm256_loadu_si256(cp.cast()) }, rgba, pass)
+            };
+            // SAFETY: as above.
+            unsafe { _mm256_storeu_si256(cp.cast(), colour) };
         }
-        pass
+        return pass;
     }
+    // SAFETY: here and in the masked stores below: every lane enabled in `ok` indexes both
+    // slices (asserted above), and `pass` is a subset of `ok`; masked loads and stores touch
+    // no other lane.
+    let old = unsafe { _mm256_maskload_ps(dp, ok) };
+    // `framebuffer::depth_passes`, mirrored: an ordered less-than (NaN fails).
+    let pass = _mm256_and_si256(
+        ok,
+        _mm256_castps_si256(_mm256_cmp_ps::<_CMP_LT_OQ>(depth, old)),
+    );
+    // SAFETY: as above.
+    unsafe { _mm256_maskstore_ps(dp, pass, depth) };
+    // A difference target keeps the background colour (see `DifferenceTarget`).
+    if target.difference.is_none() {
+        // SAFETY: as above.
+        unsafe { _mm256_maskstore_epi32(cp, pass, rgba) };
+    }
+    pass
 }
 
 /// One past the last buffer index the lanes enabled in `mask` touch, from buffer index

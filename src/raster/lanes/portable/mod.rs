@@ -2,7 +2,7 @@
 //! colour and depth, written once in plain Rust over fixed arrays of eight lanes, one
 //! operation at a time over all lanes ([`each`]), so that the compiler maps each operation to
 //! vector instructions: SSE2 on any x86_64 (SSE4.1 where the CPU has it: the same source
-//! compiled a second time, `edge_triangle_sse41`), NEON on aarch64. No intrinsics, no
+//! compiled a second time, `draw_sse41`), NEON on aarch64. No intrinsics, no
 //! dependency; one `unsafe` conversion (`sampler::trunc`, whose range is checked first).
 //!
 //! The operations and their order are the scalar lane code's (the parent module), so the
@@ -17,6 +17,36 @@ mod sampler;
 type I32s = [i32; LANES];
 /// Packed RGBA8 colours of eight lanes, red in the low byte.
 type Rgba = [u32; LANES];
+/// A condition per lane from `f64` lanes as an integer mask: all ones where it holds, else
+/// zero (what a vector comparison gives; `[bool; 8]` needed packing and unpacking).
+type Mask64 = [i64; LANES];
+/// The same per `f32` lane.
+type Mask32 = [i32; LANES];
+
+/// Infinity, opaque to the optimizer (made once per triangle, [`Inf::new`]): compared with
+/// the constant, `x > 0 && x < inf` and `is_finite` became scalar bit tests lane by lane
+/// (LLVM's floating-point class tests); compared with this value they stay vector compares.
+#[derive(Clone, Copy)]
+struct Inf(f64);
+
+impl Inf {
+    #[inline(always)]
+    fn new() -> Self {
+        Self(std::hint::black_box(f64::INFINITY))
+    }
+}
+
+/// `cond` as a lane mask: all ones or zero.
+#[inline(always)]
+fn mask64(cond: bool) -> i64 {
+    -i64::from(cond)
+}
+
+/// `cond` as a lane mask: all ones or zero.
+#[inline(always)]
+fn mask32(cond: bool) -> i32 {
+    -i32::from(cond)
+}
 
 /// `[f(0), f(1), ..., f(7)]`: one operation over the eight lanes. (A loop, not
 /// `array::from_fn`: that was left as a call, compiled without the caller's SSE4.1.)
@@ -45,55 +75,74 @@ pub(super) fn applies(shading: &LaneShading, target: &Target<'_>) -> bool {
         && target.difference.is_none()
 }
 
-/// The edge-function lanes of [`edge_triangle_impl`](super::edge_triangle_impl) for texture
-/// shading ([`applies`] must hold), compiled for the baseline of the target (SSE2 on x86_64,
-/// NEON on aarch64).
-pub(super) fn edge_triangle(
+/// Proof that the CPU has SSE4.1 (made only by [`Sse41::detect`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Sse41(());
+
+impl Sse41 {
+    /// `Some` when the CPU has SSE4.1 (never off x86_64).
+    pub(super) fn detect() -> Option<Self> {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("sse4.1") {
+            return Some(Self(()));
+        }
+        None
+    }
+}
+
+/// Draws rows `rows` (within the target band) of `tri` with texture shading ([`applies`]
+/// must hold) with the lanes of `rasterizer`: the edge functions of
+/// [`edge_triangle_impl`](super::edge_triangle_impl) or the spans of
+/// [`scanline_triangle_impl`](super::scanline::scanline_triangle_impl). Compiled with
+/// SSE4.1 (rounding, blends, 32-bit minimum and maximum) when `sse41` is given, else for the
+/// baseline of the target (SSE2 on x86_64, NEON on aarch64).
+pub(super) fn draw(
+    rasterizer: Rasterizer,
+    sse41: Option<Sse41>,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    edge_body(tri, rows, sampler, mode, target);
+    #[cfg(target_arch = "x86_64")]
+    if sse41.is_some() {
+        // SAFETY: the CPU has SSE4.1 (an `Sse41` is made only when it is detected).
+        unsafe { draw_sse41(rasterizer, tri, rows, sampler, mode, target) };
+        return;
+    }
+    let _ = sse41;
+    draw_body(rasterizer, tri, rows, sampler, mode, target);
 }
 
-/// [`edge_triangle`] compiled with SSE4.1 (rounding, blends, 32-bit minimum and maximum).
+/// [`draw`] compiled with SSE4.1.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "sse4.1")]
-pub(super) fn edge_triangle_sse41(
+fn draw_sse41(
+    rasterizer: Rasterizer,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    edge_body(tri, rows, sampler, mode, target);
+    draw_body(rasterizer, tri, rows, sampler, mode, target);
 }
 
-/// The scanline lanes of [`scanline_triangle_impl`](super::scanline::scanline_triangle_impl)
-/// for texture shading ([`applies`] must hold), compiled for the baseline of the target.
-pub(super) fn scanline_triangle(
+/// Both rasterizers' lanes, inlined into each build of [`draw`].
+#[inline(always)]
+fn draw_body(
+    rasterizer: Rasterizer,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    scanline_body(tri, rows, sampler, mode, target);
-}
-
-/// [`scanline_triangle`] compiled with SSE4.1.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "sse4.1")]
-pub(super) fn scanline_triangle_sse41(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: &Sampler<'_>,
-    mode: Interpolation,
-    target: &mut Target<'_>,
-) {
-    scanline_body(tri, rows, sampler, mode, target);
+    match rasterizer {
+        Rasterizer::EdgeFunction => edge_body(tri, rows, sampler, mode, target),
+        Rasterizer::Scanline => scanline_body(tri, rows, sampler, mode, target),
+    }
 }
 
 /// The edge-function lanes: blocks rejected, accepted or tested as in the scalar lane code,
@@ -113,42 +162,29 @@ fn edge_body(
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let a = three(|i| planes.a[i] as f64);
     let t = three(|i| planes.t[i] as f64);
-    let mut by = y_start;
-    while by <= y_end {
-        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
-        let mut bx = x0;
-        while bx <= x1 {
-            let bx_end = bx + LANES as u32 - 1;
-            let block = classify(
-                planes,
-                (i64::from(bx), i64::from(bx_end)),
-                (i64::from(by), i64::from(by_end)),
-            );
-            if block != Block::Outside {
-                let lanes_in = (x1 - bx + 1).min(LANES as u32) as usize;
-                for y in by..=by_end {
-                    let covered: Mask = if block == Block::Inside {
-                        each(|k| k < lanes_in)
-                    } else {
-                        let base = planes.at(i64::from(y), i64::from(bx));
-                        let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
-                        each(|k| {
-                            k < lanes_in && e[0][k] >= t[0] && e[1][k] >= t[1] && e[2][k] >= t[2]
-                        })
-                    };
-                    if !covered.iter().any(|&c| c) {
-                        continue;
-                    }
-                    let (u, v, depth, ok) =
-                        from_weights(&row_weights(&consts.weights, bx, y), consts, mode);
-                    let ok = each(|k| ok[k] && covered[k]);
-                    let rgba = sampler.sample_packed(&u, &v);
-                    write(target, bx, y, &ok, &depth, &rgba);
-                }
+    let inf = Inf::new();
+    for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
+        let (bx, lanes_in) = (block.x, block.lanes_in);
+        for y in block.rows.0..=block.rows.1 {
+            let in_row: Mask64 = each(|k| mask64(k < lanes_in));
+            let covered: Mask64 = if block.kind == Block::Inside {
+                in_row
+            } else {
+                let base = planes.at(i64::from(y), i64::from(bx));
+                let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
+                let pass = |i: usize| each(|k| mask64(e[i][k] >= t[i]));
+                let (p0, p1, p2) = (pass(0), pass(1), pass(2));
+                each(|k| in_row[k] & p0[k] & p1[k] & p2[k])
+            };
+            if covered.iter().fold(0, |m, &c| m | c) == 0 {
+                continue;
             }
-            bx += LANES as u32;
+            let (u, v, depth, ok) =
+                from_weights(&row_weights(&consts.weights, bx, y), consts, mode, inf);
+            let ok = each(|k| ok[k] & covered[k]);
+            let rgba = sampler.sample_packed(&u, &v, inf);
+            write(target, bx, y, &ok, &depth, &rgba);
         }
-        by = by_end + 1;
     }
 }
 
@@ -167,10 +203,15 @@ fn row_weights(w: &WeightPlanes, x: u32, y: u32) -> [F64s; 3] {
 /// computes them for texture shading: `q_i = l_i / w_i`, valid where `sum q` is positive and
 /// finite, `uv = sum w_i uv_i` with the mode's weights, `depth = sum l_i d_i`.
 #[inline(always)]
-fn from_weights(l: &[F64s; 3], c: &Constants, mode: Interpolation) -> (F32s, F32s, F32s, Mask) {
+fn from_weights(
+    l: &[F64s; 3],
+    c: &Constants,
+    mode: Interpolation,
+    inf: Inf,
+) -> (F32s, F32s, F32s, Mask64) {
     let q = three(|i| each(|k| l[i][k] * c.inv_w[i]));
     let sum: F64s = each(|k| q[0][k] + q[1][k] + q[2][k]);
-    let ok = each(|k| sum[k] > 0.0 && sum[k] < f64::INFINITY);
+    let ok = positive_finite(&sum, inf);
     let w = match mode {
         Interpolation::Perspective => {
             let inv: F64s = each(|k| 1.0 / sum[k]);
@@ -199,6 +240,7 @@ fn scanline_body(
     let step = Stepped::row_step(consts, mode);
     let n = LANES as f64;
     let (su, sv, sw, sd) = (step.u * n, step.v * n, step.inv_w * n, step.depth * n);
+    let inf = Inf::new();
     for y in y_start..=y_end {
         let Some((x0, x1)) = row_span_of(&tri.edges, tri.bounds, y) else {
             continue;
@@ -211,7 +253,8 @@ fn scanline_body(
         let mut x = x0;
         while x <= x1 {
             let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
-            let ok = each(|k| k < lanes_in && inv_w[k] > 0.0 && inv_w[k] < f64::INFINITY);
+            let valid = positive_finite(&inv_w, inf);
+            let ok = each(|k| mask64(k < lanes_in) & valid[k]);
             let (uf, vf) = match mode {
                 Interpolation::Perspective => {
                     let w: F64s = each(|k| 1.0 / inv_w[k]);
@@ -223,7 +266,7 @@ fn scanline_body(
                 Interpolation::Affine => (each(|k| u[k] as f32), each(|k| v[k] as f32)),
             };
             let d: F32s = each(|k| depth[k] as f32);
-            let rgba = sampler.sample_packed(&uf, &vf);
+            let rgba = sampler.sample_packed(&uf, &vf, inf);
             write(target, x, y, &ok, &d, &rgba);
             u = each(|k| u[k] + su);
             v = each(|k| v[k] + sv);
@@ -234,15 +277,23 @@ fn scanline_body(
     }
 }
 
+/// The lanes of `x` that are positive and finite (`x > 0 && x < inf`: NaN fails).
+#[inline(always)]
+fn positive_finite(x: &F64s, inf: Inf) -> Mask64 {
+    let above = each(|k| mask64(x[k] > 0.0));
+    let below = each(|k| mask64(x[k] < inf.0));
+    each(|k| above[k] & below[k])
+}
+
 /// Depth-tests and writes the lanes of `ok` of one row chunk from column `x` of row `y`
 /// ([`depth_passes`]: an ordered less-than), as the scalar [`write`](super::write) does
 /// for colour and depth. Eight lanes inside the row are read and written whole, with the
 /// failing lanes keeping their values (the band's rows belong to this thread only).
 #[inline(always)]
-fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask, depth: &F32s, rgba: &Rgba) {
+fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask64, depth: &F32s, rgba: &Rgba) {
     let i = (y - target.y0) as usize * target.width as usize + x as usize;
-    let colors: [[u8; 4]; LANES] = each(|k| rgba[k].to_le_bytes());
-    if ok.iter().all(|&o| o)
+    let ok: Mask32 = each(|k| ok[k] as i32);
+    if ok.iter().fold(-1, |m, &o| m & o) != 0
         && let Some((d, _)) = target
             .depth
             .get_mut(i..)
@@ -252,15 +303,25 @@ fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask, depth: &F32s, rgba:
             .get_mut(i..)
             .and_then(|s| s.split_first_chunk_mut::<LANES>())
     {
-        let pass: Mask = each(|k| depth_passes(depth[k], d[k]));
-        *d = each(|k| if pass[k] { depth[k] } else { d[k] });
-        *c = each(|k| if pass[k] { colors[k] } else { c[k] });
+        let pass: Mask32 = each(|k| mask32(depth_passes(depth[k], d[k])));
+        let old: [u32; LANES] = each(|k| d[k].to_bits());
+        *d = each(|k| f32::from_bits(select(pass[k], depth[k].to_bits(), old[k])));
+        let old: Rgba = each(|k| u32::from_le_bytes(c[k]));
+        let new: Rgba = each(|k| select(pass[k], rgba[k], old[k]));
+        *c = each(|k| new[k].to_le_bytes());
         return;
     }
     for k in 0..LANES {
-        if ok[k] && depth_passes(depth[k], target.depth[i + k]) {
+        if ok[k] != 0 && depth_passes(depth[k], target.depth[i + k]) {
             target.depth[i + k] = depth[k];
-            target.color[i + k] = colors[k];
+            target.color[i + k] = rgba[k].to_le_bytes();
         }
     }
+}
+
+/// `a` where the lane mask `m` is set, else `b` (bitwise: and, and-not, or).
+#[inline(always)]
+fn select(m: i32, a: u32, b: u32) -> u32 {
+    let m = m as u32;
+    (a & m) | (b & !m)
 }

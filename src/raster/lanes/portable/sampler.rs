@@ -5,7 +5,7 @@
 
 use super::super::sampler::{LaneWrap, Sampler};
 use super::super::texture::Filter;
-use super::{F32s, I32s, LANES, Rgba, each};
+use super::{F32s, I32s, Inf, LANES, Rgba, each, mask32};
 use crate::raster::texture::MAX_TEXEL_COORD;
 
 /// `x as i32` for an `x` already clamped to +-[`MAX_TEXEL_COORD`] or NaN: NaN gives 0 (as
@@ -37,21 +37,22 @@ fn floor_coord(x: &F32s) -> (I32s, F32s) {
 /// `texture::bilinear_fraction` per lane: `clamp(x - floor, 0, 1)` where `x` is finite,
 /// else 0.
 #[inline(always)]
-fn fraction(x: &F32s, floor: &F32s) -> F32s {
+fn fraction(x: &F32s, floor: &F32s, inf: Inf) -> F32s {
+    let inf = inf.0 as f32;
     each(|k| {
         let t = (x[k] - floor[k]).clamp(0.0, 1.0);
-        if x[k].is_finite() { t } else { 0.0 }
+        if x[k].abs() < inf { t } else { 0.0 }
     })
 }
 
 /// A wrap mode applied to eight texel indices along one axis ([`LaneWrap::apply`]): the mode
-/// is matched once, then applied to every lane.
+/// is matched once, then applied to every lane. Each result is in `0..size`.
 #[inline(always)]
-fn wrap(i: &I32s, w: LaneWrap) -> [usize; LANES] {
+fn wrap(i: &I32s, w: LaneWrap) -> I32s {
     match w {
-        LaneWrap::Mask(m) => each(|k| (i[k] & m) as usize),
-        LaneWrap::Clamp(hi) => each(|k| i[k].clamp(0, hi) as usize),
-        LaneWrap::General(..) => each(|k| w.apply(i[k])),
+        LaneWrap::Mask(m) => each(|k| i[k] & m),
+        LaneWrap::Clamp(hi) => each(|k| i[k].clamp(0, hi)),
+        LaneWrap::General(..) => each(|k| w.apply(i[k]) as i32),
     }
 }
 
@@ -84,30 +85,55 @@ fn weighted(w: &[F32s; 4], t: &[Rgba; 4], c: u32) -> I32s {
 }
 
 impl Sampler<'_> {
-    /// The packed texels (red in the low byte) at wrapped indices.
+    /// The index `j * width + i` in `texels` of eight wrapped texel coordinates (each in
+    /// `0..width` and `0..height`), as [`Sampler::texel`] reads it: a 32 x 32 -> 64-bit
+    /// product, which the vector units have.
     #[inline(always)]
-    fn fetch(&self, i: &[usize; LANES], j: &[usize; LANES]) -> Rgba {
-        each(|k| u32::from_le_bytes(self.texel(i[k], j[k])))
+    fn index(&self, i: &I32s, j: &I32s) -> [usize; LANES] {
+        let width = self.width as u64;
+        each(|k| (u64::from(j[k] as u32) * width + u64::from(i[k] as u32)) as usize)
+    }
+
+    /// The packed texels (red in the low byte) at indices `at`.
+    #[inline(always)]
+    fn fetch(&self, at: &[usize; LANES]) -> Rgba {
+        each(|k| u32::from_le_bytes(self.texels[at[k]]))
+    }
+
+    /// The packed texels at indices `at` and beside them, `at + 1` (the texels `(i, j)` and
+    /// `(i + 1, j)` when `i + 1` is inside the row): one 8-byte read per lane. An index
+    /// without a texel beside it (never asked for) reads as 0.
+    #[inline(always)]
+    fn fetch_pairs(&self, at: &[usize; LANES]) -> (Rgba, Rgba) {
+        let bytes = self.texels.as_flattened();
+        let pairs: [u64; LANES] = each(|k| {
+            let b = 4 * at[k];
+            bytes
+                .get(b..b + 8)
+                .and_then(|s| <[u8; 8]>::try_from(s).ok())
+                .map_or(0, u64::from_le_bytes)
+        });
+        (each(|k| pairs[k] as u32), each(|k| (pairs[k] >> 32) as u32))
     }
 
     /// The packed RGBA8 colours (red in the low byte) at eight uv, as [`Sampler::sample`]
     /// gives them.
     #[inline(always)]
-    pub(super) fn sample_packed(&self, u: &F32s, v: &F32s) -> Rgba {
+    pub(super) fn sample_packed(&self, u: &F32s, v: &F32s, inf: Inf) -> Rgba {
         let (w, h) = self.size;
         match self.filter {
             // One texel of weight 1: the colour is the texel (see the parent module).
             Filter::Nearest => {
                 let i = wrap(&floor_coord(&each(|k| u[k] * w)).0, self.wrap.0);
                 let j = wrap(&floor_coord(&each(|k| v[k] * h)).0, self.wrap.1);
-                self.fetch(&i, &j)
+                self.fetch(&self.index(&i, &j))
             }
             _ => {
                 let x = each(|k| u[k] * w - 0.5);
                 let y = each(|k| v[k] * h - 0.5);
                 let (i0, fx) = floor_coord(&x);
                 let (j0, fy) = floor_coord(&y);
-                let (a, b) = (fraction(&x, &fx), fraction(&y, &fy));
+                let (a, b) = (fraction(&x, &fx, inf), fraction(&y, &fy, inf));
                 let (ia, ib) = (
                     wrap(&i0, self.wrap.0),
                     wrap(&each(|k| i0[k] + 1), self.wrap.0),
@@ -116,12 +142,22 @@ impl Sampler<'_> {
                     wrap(&j0, self.wrap.1),
                     wrap(&each(|k| j0[k] + 1), self.wrap.1),
                 );
-                let texels = [
-                    self.fetch(&ia, &ja),
-                    self.fetch(&ib, &ja),
-                    self.fetch(&ia, &jb),
-                    self.fetch(&ib, &jb),
-                ];
+                let (at_a, at_b) = (self.index(&ia, &ja), self.index(&ia, &jb));
+                // Where every right neighbour is beside its texel (not wrapped to the row's
+                // start), each row's two texels are one read.
+                let beside = each(|k| mask32(ib[k] == ia[k] + 1));
+                let texels = if beside.iter().fold(-1, |m, &b| m & b) != 0 {
+                    let (t00, t10) = self.fetch_pairs(&at_a);
+                    let (t01, t11) = self.fetch_pairs(&at_b);
+                    [t00, t10, t01, t11]
+                } else {
+                    [
+                        self.fetch(&at_a),
+                        self.fetch(&self.index(&ib, &ja)),
+                        self.fetch(&at_b),
+                        self.fetch(&self.index(&ib, &jb)),
+                    ]
+                };
                 // `texture::bilinear_weights`, per lane.
                 let (oa, ob) = (each(|k| 1.0 - a[k]), each(|k| 1.0 - b[k]));
                 let weights = [

@@ -1,5 +1,5 @@
 //! The lane code that needs AVX-512 (F, BW, VL and DQ; used when the CPU has them): the
-//! entries that compile the `avx2/` bodies for AVX-512, the texture lookup of sixteen pixels
+//! entry that compiles the `avx2/` bodies for AVX-512 ([`draw`]), the texture lookup of sixteen pixels
 //! at once (two eight-pixel chunks) with the same operations in the same order as
 //! `avx2::sample`, so the same bytes; the scanline lanes' long spans of texture shading
 //! sixteen pixels at a time ([`span16`]), the edge-function lanes' row pairs' writes
@@ -14,34 +14,25 @@ use super as avx2;
 use super::super::{LANES, LaneShading, LaneTriangle, Stepped, Target};
 use super::sampler::{VecSampler, VecWrap};
 use crate::raster::interpolate::Interpolation;
+use crate::raster::settings::Rasterizer;
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD};
 
-/// The edge-function lanes of `avx2/` compiled for AVX-512 (32 vector registers, mask
-/// registers; row chunks in one 512-bit register, [`wide`]; lookups of sixteen pixels).
+/// The lanes of `avx2/` ([`avx2::draw`]) compiled for AVX-512: 32 vector registers, mask
+/// registers; the edge functions' row chunks in one 512-bit register ([`wide`]), lookups of
+/// sixteen pixels, the scanline lanes' long texture spans sixteen pixels at a time
+/// ([`span16`]).
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
-pub(in crate::raster::lanes) fn edge_triangle(
+pub(in crate::raster::lanes) fn draw(
+    rasterizer: Rasterizer,
     tri: &LaneTriangle,
     rows: (u32, u32),
     sampler: Option<&VecSampler<'_>>,
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    // SAFETY: this function's features.
-    unsafe { avx2::edge_triangle_body::<true>(tri, rows, sampler, shading, target) }
-}
-
-/// The scanline lanes of `avx2/` compiled for AVX-512 (long texture spans sixteen pixels at a
-/// time, [`span16`]).
-#[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
-pub(in crate::raster::lanes) fn scanline_triangle(
-    tri: &LaneTriangle,
-    rows: (u32, u32),
-    sampler: Option<&VecSampler<'_>>,
-    shading: &LaneShading,
-    target: &mut Target<'_>,
-) {
-    // SAFETY: this function's features.
-    unsafe { avx2::scanline_triangle_body::<true>(tri, rows, sampler, shading, target) }
+    // SAFETY: this function is compiled with AVX2 and AVX-512 F, BW, VL and DQ (so the CPU
+    // has them): the bodies' condition with `WIDE`.
+    unsafe { avx2::draw_body::<true>(rasterizer, tri, rows, sampler, shading, target) }
 }
 
 /// `(floor(clamp(x)) as i32, floor(clamp(x)))` with NaN giving index 0, as `texel_floor`.

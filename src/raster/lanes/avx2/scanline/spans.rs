@@ -164,42 +164,42 @@ fn colour_spans<const SITE: u8, const WIDE: bool, const N: usize>(
     shading: &LaneShading,
     target: &mut Target<'_>,
 ) {
-    // SAFETY: this module runs with AVX2 (`finish`).
-    unsafe {
-        let mode = shading.mode;
-        let values = |h: usize| {
-            let v = start_values::<N, false>(&lanes(h), consts, step, mode);
-            let valid = _mm256_and_pd(
-                _mm256_cmp_pd::<_CMP_GT_OQ>(v.inv_w, _mm256_setzero_pd()),
-                _mm256_cmp_pd::<_CMP_LT_OQ>(v.inv_w, _mm256_set1_pd(f64::INFINITY)),
-            );
-            let mut ch = v.ch;
-            if mode == Interpolation::Perspective {
-                let w = _mm256_div_pd(_mm256_set1_pd(1.0), v.inv_w);
-                for c in ch.iter_mut() {
-                    *c = _mm256_mul_pd(*c, w);
-                }
+    let mode = shading.mode;
+    let values = |h: usize| {
+        let v = start_values::<N, false>(&lanes(h), consts, step, mode);
+        let valid = _mm256_and_pd(
+            _mm256_cmp_pd::<_CMP_GT_OQ>(v.inv_w, _mm256_setzero_pd()),
+            _mm256_cmp_pd::<_CMP_LT_OQ>(v.inv_w, _mm256_set1_pd(f64::INFINITY)),
+        );
+        let mut ch = v.ch;
+        if mode == Interpolation::Perspective {
+            let w = _mm256_div_pd(_mm256_set1_pd(1.0), v.inv_w);
+            for c in ch.iter_mut() {
+                *c = _mm256_mul_pd(*c, w);
             }
-            (_mm256_movemask_pd(valid), v.depth, ch)
-        };
-        let lo = values(0);
-        let hi = if both { values(1) } else { lo };
-        let ok = bits & (lo.0 | (hi.0 << 4));
-        if ok == 0 {
-            return;
         }
-        let channel = |j: usize| to_f32(lo.2[j], hi.2[j]);
-        let rgba = channel_colors::<SITE, WIDE>([lo.1, hi.1], channel, shading.color);
-        let chunk = Pending {
-            u: _mm256_setzero_ps(),
-            v: _mm256_setzero_ps(),
-            depth: to_f32(lo.1, hi.1),
-            valid: mask_from_bits(ok),
-            wire: 0,
-            halo: 0,
-            index: 0,
-            lanes: Some(at),
-        };
-        finish::<WIDE>(target, &chunk, rgba, None)
+        (_mm256_movemask_pd(valid), v.depth, ch)
+    };
+    let lo = values(0);
+    let hi = if both { values(1) } else { lo };
+    let ok = bits & (lo.0 | (hi.0 << 4));
+    if ok == 0 {
+        return;
     }
+    let channel = |j: usize| to_f32(lo.2[j], hi.2[j]);
+    let rgba = channel_colors::<SITE, WIDE>([lo.1, hi.1], channel, shading.color);
+    let chunk = Pending {
+        u: _mm256_setzero_ps(),
+        v: _mm256_setzero_ps(),
+        depth: to_f32(lo.1, hi.1),
+        valid: mask_from_bits(ok),
+        wire: 0,
+        halo: 0,
+        index: 0,
+        lanes: Some(at),
+    };
+    // SAFETY: this function runs with AVX2 (and AVX-512 F, BW, VL and DQ when `WIDE`, the
+    // callers' condition); the valid lanes are gathered pixels of spans inside the image, at
+    // their own buffer indices (`finish`'s conditions).
+    unsafe { finish::<WIDE>(target, &chunk, rgba, None) }
 }
