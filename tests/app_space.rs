@@ -98,3 +98,33 @@ fn presenting_shows_the_3d_view_on_wide_windows_only() {
         assert_eq!(h.query_by_label(&line).is_some(), shown, "at {size:?}");
     }
 }
+
+/// On a 4:3 projector, V puts the 3D view (with the pinned pixel's weights) in the picture's
+/// place; any change of the scene brings the picture back.
+#[test]
+fn v_shows_the_3d_view_in_the_pictures_place_on_a_projector() {
+    let mut h = common::app::harness(
+        egui::vec2(1024.0, 768.0),
+        AppOptions {
+            space_view: true,
+            present: true,
+            pin: Some([400, 420]),
+            ..AppOptions::default()
+        },
+    );
+    h.run();
+    let line = abc_line(&h);
+    assert!(h.query_by_label("The pixel's ray in 3D").is_none());
+    h.state_mut()
+        .push(barylab::app::command::AppCommand::ToggleSpaceFull);
+    h.run();
+    assert!(h.query_by_label("The pixel's ray in 3D").is_some());
+    assert!(
+        h.query_by_label(&line).is_some(),
+        "the 3D view shows {line}"
+    );
+    assert!(h.query_by_label("V: back to the picture").is_some());
+    h.state_mut().push(StateCommand::SetShowGrid(true));
+    h.run();
+    assert!(h.query_by_label("The pixel's ray in 3D").is_none());
+}

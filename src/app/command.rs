@@ -33,6 +33,10 @@ pub enum AppCommand {
     Lesson(LessonCommand),
     /// Start or stop stepping along the pinned row's scanline span (S).
     ToggleSpanStepping,
+    /// Presentation mode in a window too narrow for the 3D view beside the picture: show the
+    /// 3D view in the picture's place, or the picture again (V). Any change of the scene or
+    /// the lesson step brings the picture back.
+    ToggleSpaceFull,
 }
 
 impl From<StateCommand> for AppCommand {

@@ -392,11 +392,17 @@ impl BaryApp {
             hovered: self.reports.hover.as_ref(),
             pinned: self.reports.pin.as_ref(),
             context: self.present_context(),
-            keys_hint: self
-                .lessons
-                .session
-                .is_some()
-                .then(|| crate::i18n::tr(self.lang(), "lesson.present_hint")),
+            keys_hint: self.lessons.session.is_some().then(|| {
+                let keys = crate::i18n::tr(self.lang(), "lesson.present_hint");
+                if self.space_toggle_offered {
+                    format!(
+                        "{keys} · {}",
+                        crate::i18n::tr(self.lang(), "lesson.present_hint_space")
+                    )
+                } else {
+                    keys
+                }
+            }),
             size,
         }
     }

@@ -107,6 +107,10 @@ pub struct BaryApp {
     export: ExportPanel,
     /// Presentation mode: panels hidden, the pixel card in large print.
     presenting: bool,
+    /// Presentation mode shows the 3D view in the picture's place (V; narrow windows only).
+    space_full: bool,
+    /// This frame's presentation layout offers V (the 3D view is on, the window narrow).
+    space_toggle_offered: bool,
     /// The preset loaded last (Page Down / Page Up step on from it).
     last_preset: Option<document::presets::Preset>,
     /// What presentation mode's boxes must not hide, for the render shown.
@@ -205,6 +209,8 @@ impl BaryApp {
             bench: BenchPanel::default(),
             export: ExportPanel::new(export_settings),
             presenting: options.present,
+            space_full: false,
+            space_toggle_offered: false,
             last_preset: None,
             corner_marks: Default::default(),
             panel_first: Side::default(),
@@ -401,8 +407,9 @@ impl BaryApp {
         let mut out: Vec<AppCommand> = Vec::new();
         if self.presenting {
             self.lesson_strip(ui, &mut out);
-            self.space_panel_presenting(ui);
-            self.presentation(ui, texture, &mut out);
+            if !self.space_panel_presenting(ui) {
+                self.presentation(ui, texture, &mut out);
+            }
             self.commands.extend(out);
             return;
         }
@@ -504,6 +511,8 @@ impl BaryApp {
     fn apply(&mut self, ctx: &egui::Context, command: AppCommand, texture: &Arc<Texture>) {
         match command {
             AppCommand::State(c) => {
+                // The picture comes back for any change (the 3D view is drawn from its render).
+                self.space_full = false;
                 match c {
                     document::state::StateCommand::Preset(p) => self.last_preset = Some(p),
                     document::state::StateCommand::SetShowControls(true) => {
@@ -583,6 +592,7 @@ impl BaryApp {
             AppCommand::File(c) => self.picker.apply(ctx, &c),
             AppCommand::SetHelpOpen(open) => self.help_open = open,
             AppCommand::ToggleSpanStepping => self.canvas.span_play = !self.canvas.span_play,
+            AppCommand::ToggleSpaceFull => self.space_full = !self.space_full,
             AppCommand::SetPresenting(on) => self.presenting = on,
             AppCommand::SetLang(lang) => self.set_lang(lang),
             AppCommand::Undo => {
@@ -591,7 +601,10 @@ impl BaryApp {
             AppCommand::Redo => {
                 self.history.redo(&mut self.state);
             }
-            AppCommand::Lesson(c) => self.apply_lesson(ctx, c),
+            AppCommand::Lesson(c) => {
+                self.space_full = false;
+                self.apply_lesson(ctx, c);
+            }
         }
     }
 }

@@ -66,6 +66,10 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if key(Key::H) {
             state(StateCommand::SetShowHandles(!view.show_handles));
         }
+        // V: presentation mode's 3D view in the picture's place (windows too narrow for both).
+        if input.presenting && view.space && key(Key::V) {
+            extra.push(AppCommand::ToggleSpaceFull);
+        }
         // S: step along the pinned row's span (the scanline rasterizer's order).
         if view.rasterizer == crate::raster::render::Rasterizer::Scanline && key(Key::S) {
             extra.push(AppCommand::ToggleSpanStepping);

@@ -69,7 +69,7 @@ pub const CARD_FILL: Color32 = Color32::from_rgb(8, 10, 16);
 /// The card's fill when it lies over the picture: the picture shows faintly through.
 pub const CARD_FILL_OVER: Color32 = Color32::from_rgba_premultiplied(8, 10, 16, 236);
 const INK: Color32 = Color32::WHITE;
-const DIM: Color32 = Color32::from_rgb(170, 180, 200);
+pub const DIM: Color32 = Color32::from_rgb(170, 180, 200);
 const ACCENT: Color32 = Color32::from_rgb(255, 214, 90);
 
 /// The text size at which the card's widest line fills a card `width` points wide:

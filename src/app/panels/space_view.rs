@@ -219,16 +219,30 @@ pub const PRESENT_MIN_ASPECT: f32 = 1.5;
 pub const PRESENT_SHARE: f32 = 0.36;
 
 impl crate::app::BaryApp {
-    /// Presentation mode: the 3D view in a column right of the picture, when it is on and the
-    /// window is wide ([`PRESENT_MIN_ASPECT`]).
-    pub(in crate::app) fn space_panel_presenting(&mut self, ui: &mut Ui) {
+    /// Presentation mode, when the 3D view is on: in a column right of the picture when the
+    /// window is wide ([`PRESENT_MIN_ASPECT`]); in a narrower window, in the picture's place
+    /// while V has asked for it (returns true: nothing else is to be laid out).
+    pub(in crate::app) fn space_panel_presenting(&mut self, ui: &mut Ui) -> bool {
         let window = ui.ctx().content_rect();
-        if !self.state.view.space || window.width() < PRESENT_MIN_ASPECT * window.height() {
-            return;
+        let wide = window.width() >= PRESENT_MIN_ASPECT * window.height();
+        self.space_toggle_offered = self.state.view.space && !wide;
+        if !self.state.view.space || (!wide && !self.space_full) {
+            return false;
         }
         let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
         let output = self.canvas.output.as_ref();
         let view = &mut self.space_view;
+        let frame = egui::Frame::new()
+            .fill(crate::app::panels::present::CARD_FILL)
+            .inner_margin(egui::Margin::same(12));
+        if !wide {
+            let back = crate::app::services::locale::lang(ui.ctx()).tr("space.present_back");
+            egui::CentralPanel::default().frame(frame).show(ui, |ui| {
+                ui.label(RichText::new(back).color(crate::app::panels::present::DIM));
+                view.ui(ui, output, report, PRESENT_LABEL_SIZE);
+            });
+            return true;
+        }
         egui::Panel::right("space-view-present")
             .frame(
                 egui::Frame::new()
@@ -238,6 +252,7 @@ impl crate::app::BaryApp {
             .resizable(false)
             .exact_size((PRESENT_SHARE * window.width()).round())
             .show(ui, |ui| view.ui(ui, output, report, PRESENT_LABEL_SIZE));
+        false
     }
 
     /// The 3D view as a resizable panel right of the canvas (when it is on), drawn from the
