@@ -491,6 +491,7 @@ impl BaryApp {
             return;
         }
         let before = self.state.clone();
+        let space_full = self.space_full;
         let mut others = false;
         let mut queue: VecDeque<AppCommand> = std::mem::take(&mut self.commands).into();
         while let Some(c) = queue.pop_front() {
@@ -502,7 +503,7 @@ impl BaryApp {
                 queue.insert(k, c);
             }
         }
-        if others || self.state != before {
+        if others || self.state != before || self.space_full != space_full {
             // The panels show the change next frame.
             ctx.request_repaint();
         }
