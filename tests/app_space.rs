@@ -115,8 +115,11 @@ fn v_shows_the_3d_view_in_the_pictures_place_on_a_projector() {
     h.run();
     let line = abc_line(&h);
     assert!(h.query_by_label("The pixel's ray in 3D").is_none());
-    h.state_mut()
-        .push(barylab::app::command::AppCommand::ToggleSpaceFull);
+    assert!(
+        h.query_by_label("V: the 3D view").is_some(),
+        "the card offers V"
+    );
+    h.key_press(egui::Key::V);
     h.run();
     assert!(h.query_by_label("The pixel's ray in 3D").is_some());
     assert!(

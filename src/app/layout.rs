@@ -392,17 +392,24 @@ impl BaryApp {
             hovered: self.reports.hover.as_ref(),
             pinned: self.reports.pin.as_ref(),
             context: self.present_context(),
-            keys_hint: self.lessons.session.is_some().then(|| {
-                let keys = crate::i18n::tr(self.lang(), "lesson.present_hint");
+            keys_hint: {
+                let lang = self.lang();
+                // A lesson's keys (else the card's own line), and V where it is offered.
+                let keys = self
+                    .lessons
+                    .session
+                    .is_some()
+                    .then(|| crate::i18n::tr(lang, "lesson.present_hint"));
                 if self.space_toggle_offered {
-                    format!(
-                        "{keys} · {}",
-                        crate::i18n::tr(self.lang(), "lesson.present_hint_space")
-                    )
+                    let keys = keys.unwrap_or_else(|| lang.tr("app.present.leave"));
+                    Some(format!(
+                        "{keys}\n{}",
+                        crate::i18n::tr(lang, "lesson.present_hint_space")
+                    ))
                 } else {
                     keys
                 }
-            }),
+            },
             size,
         }
     }

@@ -173,10 +173,13 @@ pub fn card_ui(ui: &mut Ui, input: &CardInput<'_>) {
             );
         }
     }
-    ui.add(
-        egui::Label::new(RichText::new(hint).size(small).color(DIM))
-            .wrap_mode(egui::TextWrapMode::Truncate),
-    );
+    // One line per key group (a narrow card would cut a long line short).
+    for line in hint.lines() {
+        ui.add(
+            egui::Label::new(RichText::new(line).size(small).color(DIM))
+                .wrap_mode(egui::TextWrapMode::Truncate),
+        );
+    }
 }
 
 /// The pixel's lines: which pixel and mode, the weights table (rows in the vertex colours),
