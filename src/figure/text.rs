@@ -431,17 +431,7 @@ pub fn place_label_avoiding(
     placed: &[Box2],
     keep_clear: &[Box2],
 ) -> Box2 {
-    let area = |b: Box2, boxes: &[Box2]| -> f32 {
-        boxes
-            .iter()
-            .map(|p| {
-                let w = (b[2].min(p[2]) - b[0].max(p[0])).max(0.0);
-                let h = (b[3].min(p[3]) - b[1].max(p[1])).max(0.0);
-                w * h
-            })
-            .sum()
-    };
-    let overlap = |b: Box2| area(b, placed) + KEEP_CLEAR_COST * area(b, keep_clear);
+    let overlap = |b: Box2| overlap_area(b, placed) + KEEP_CLEAR_COST * overlap_area(b, keep_clear);
     let candidates = [
         (anchor, offset),
         (anchor.flipped_x(), [-offset[0], offset[1]]),
@@ -492,6 +482,25 @@ pub fn place_label_avoiding(
         }
     }
     best.map_or(boxes[1], |(_, b)| b)
+}
+
+/// The area box `b` shares with `boxes`, summed over them (a point under two of them counts
+/// twice).
+///
+/// ```
+/// use barylab::figure::text::overlap_area;
+/// let b = [0.0, 0.0, 10.0, 10.0];
+/// assert_eq!(overlap_area(b, &[[5.0, 5.0, 20.0, 20.0], [20.0, 0.0, 30.0, 10.0]]), 25.0);
+/// ```
+pub fn overlap_area(b: Box2, boxes: &[Box2]) -> f32 {
+    boxes
+        .iter()
+        .map(|p| {
+            let w = (b[2].min(p[2]) - b[0].max(p[0])).max(0.0);
+            let h = (b[3].min(p[3]) - b[1].max(p[1])).max(0.0);
+            w * h
+        })
+        .sum()
 }
 
 /// How much worse [`place_label_avoiding`] counts covering a point of what must stay visible

@@ -447,16 +447,6 @@ fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
             pos[1] += (rect[1] + pad - b[1]).max(0.0) - (b[3] - rect[3] + pad).max(0.0);
             pos
         };
-        let overlap = |b: [f32; 4]| -> f32 {
-            placed
-                .iter()
-                .map(|p| {
-                    let w = (b[2].min(p[2]) - b[0].max(p[0])).max(0.0);
-                    let h = (b[3].min(p[3]) - b[1].max(p[1])).max(0.0);
-                    w * h
-                })
-                .sum()
-        };
         let flipped = match anchor {
             Anchor2::Start => Anchor2::End,
             Anchor2::End => Anchor2::Start,
@@ -472,7 +462,7 @@ fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
         'search: for dy in shifts {
             for a in [*anchor, flipped] {
                 let pos = inside([at[0], at[1] + dy], a);
-                let cost = overlap(bounds(pos, a));
+                let cost = crate::figure::text::overlap_area(bounds(pos, a), &placed);
                 if best.is_none_or(|(c, _, _)| cost < c) {
                     best = Some((cost, pos, a));
                 }
