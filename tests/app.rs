@@ -199,6 +199,54 @@ fn dragging_handle_a_moves_vertex_a() {
     assert!((w_after - w_before).abs() < 1e-9);
 }
 
+/// A corner far off the picture (the receding floor's near corners) has its handle on the
+/// image's edge; dragging that handle moves the corner by the pointer's motion.
+#[test]
+fn a_corner_off_the_image_is_dragged_by_its_handle_on_the_edge() {
+    let path = std::path::PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/assets/scenes/far-checker.json"
+    ));
+    let scene = Scene::load(&path).expect("far-checker loads");
+    let mut h = common::app::harness(
+        SIZE,
+        AppOptions {
+            scene: Some((scene, path)),
+            ..AppOptions::default()
+        },
+    );
+    h.run();
+    let before = vertex_windows(&h);
+    let a = before[0].expect("A in front of the camera");
+    let out = h.state().canvas().output.as_ref().expect("rendered");
+    let size = DVec2::new(f64::from(out.size[0]), f64::from(out.size[1]));
+    assert!(
+        a.x < 0.0 && a.y > size.y,
+        "A lies off the image's bottom left: {a}"
+    );
+    // Its handle: the image's bottom-left corner.
+    let view = h.state().canvas().views[0];
+    let start = view.transform.to_screen(DVec2::new(0.0, size.y));
+    let delta = egui::vec2(30.0, -20.0);
+    h.hover_at(start);
+    h.run();
+    h.drag_at(start);
+    h.run();
+    for k in 1..=4 {
+        h.hover_at(start + delta * (k as f32 / 4.0));
+        h.run();
+    }
+    h.drop_at(start + delta);
+    h.run();
+    let moved = vertex_windows(&h)[0].expect("A in front of the camera");
+    let expected =
+        a + DVec2::new(f64::from(delta.x), f64::from(delta.y)) / f64::from(view.transform.scale);
+    assert!(
+        (moved - expected).length() < 0.02,
+        "A at {moved}, expected {expected}"
+    );
+}
+
 #[test]
 fn pressing_reset_restores_the_default_scene() {
     let mut h = harness();

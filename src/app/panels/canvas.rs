@@ -418,7 +418,10 @@ pub(crate) fn canvas_ui(
                 let Some(win) = vertices.get(k).and_then(|v| v.window) else {
                     continue;
                 };
-                let centre = t.to_screen(win);
+                // Where the handle is drawn: a corner off the image has it on the edge (the
+                // drag moves the corner by the pointer's motion, from wherever it is).
+                let image = glam::DVec2::new(f64::from(viewport.width), f64::from(viewport.height));
+                let centre = t.to_screen(overlay::handle_position(win, image));
                 let grab = Rect::from_center_size(
                     centre,
                     egui::Vec2::splat(2.0 * (overlay::HANDLE_RADIUS + HANDLE_GRAB_SLACK)),

@@ -198,12 +198,15 @@ impl BaryApp {
         let key = (output.generation, self.canvas.handles.clone());
         let mut cache = self.corner_marks.borrow_mut();
         if cache.key.as_ref() != Some(&key) {
-            let vertices = crate::figure::vertices_on_screen(&output.scene, output.viewport());
+            let viewport = output.viewport();
+            let vertices = crate::figure::vertices_on_screen(&output.scene, viewport);
+            let image = glam::DVec2::new(f64::from(viewport.width), f64::from(viewport.height));
             *cache = MarkCache {
                 handles: key
                     .1
                     .iter()
                     .filter_map(|&k| vertices.get(k)?.window)
+                    .map(|w| crate::figure::overlay::handle_position(w, image))
                     .collect(),
                 behind: vertices.iter().any(|v| v.window.is_none()),
                 key: Some(key),

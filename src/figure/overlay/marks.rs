@@ -155,14 +155,39 @@ pub(super) fn pixel_marker(
     });
 }
 
+/// Where a vertex's handle is drawn (and grabbed): at its window position `window`, or, for
+/// a vertex outside the `size` image, at the nearest point of the image's edge (the view's
+/// margin holds a handle there whole), so a corner far off the picture still has a handle to
+/// drag and a label; an arrow beside it points the way to the corner.
+///
+/// ```
+/// use barylab::figure::overlay::handle_position;
+/// use glam::DVec2;
+/// let size = DVec2::new(480.0, 300.0);
+/// assert_eq!(handle_position(DVec2::new(100.0, 50.0), size), DVec2::new(100.0, 50.0));
+/// assert_eq!(handle_position(DVec2::new(-2000.0, 900.0), size), DVec2::new(0.0, 300.0));
+/// ```
+pub fn handle_position(window: DVec2, size: DVec2) -> DVec2 {
+    window.clamp(DVec2::ZERO, size.max(DVec2::ZERO))
+}
+
+/// The arrow pointing along `d` (image rows down): one of the eight compass arrows.
+fn arrow(d: DVec2) -> &'static str {
+    const ARROWS: [&str; 8] = ["→", "↘", "↓", "↙", "←", "↖", "↑", "↗"];
+    let sector = (d.y.atan2(d.x) / std::f64::consts::FRAC_PI_4).round() as i64;
+    ARROWS[sector.rem_euclid(8) as usize]
+}
+
 /// A handle and its label; the label goes on the side away from `centre` (the handles'
-/// centroid), so labels of neighbouring corners do not cover each other.
-pub(super) fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVec2) {
+/// centroid), so labels of neighbouring corners do not cover each other. A vertex outside the
+/// `size` image gets its handle on the edge ([`handle_position`]) with an arrow towards it.
+pub(super) fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVec2, size: DVec2) {
     let color = vertex_color(h.index);
     let name = vertex_name(h.index);
-    let Some(p) = h.window else {
+    let Some(window) = h.window else {
         return;
     };
+    let p = handle_position(window, size);
     let radius = if h.active {
         HANDLE_RADIUS + 3.0
     } else {
@@ -186,6 +211,20 @@ pub(super) fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVe
         color: [0, 0, 0, 255],
         background: None,
     });
+    let away = window - p;
+    if away != DVec2::ZERO {
+        let d = away.normalize();
+        let reach = radius + 0.6 * TEXT_LABEL;
+        shapes.push(Shape::Text {
+            at: p,
+            offset: [(d.x as f32) * reach, (d.y as f32) * reach],
+            anchor: Anchor::Center,
+            text: arrow(d).to_string(),
+            size: TEXT_LABEL,
+            color,
+            background: Some(LABEL_BG),
+        });
+    }
     // Diagonally outward from the centroid: neighbouring corners' labels go different ways.
     let (left, up) = (p.x < centre.x, p.y < centre.y);
     // (The handle's own radius: an active, larger handle's label stays beside it too.)
@@ -363,3 +402,59 @@ const SPAN_TRAIL: Rgba = [255, 230, 80, 90];
 
 /// Colour of the scanline span and its edge crossings.
 const SPAN: Rgba = [255, 230, 80, 255];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn texts(shapes: &[Shape]) -> Vec<(DVec2, String)> {
+        shapes
+            .iter()
+            .filter_map(|s| match s {
+                Shape::Text { at, text, .. } => Some((*at, text.clone())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_corner_off_the_image_has_its_handle_on_the_edge_with_an_arrow_towards_it() {
+        let size = DVec2::new(480.0, 300.0);
+        let centre = DVec2::new(240.0, 150.0);
+        // (-900, 420) from the edge point (0, 300): direction (-900, 120), 172 degrees: left.
+        // (-10, 400) from (0, 300): (-10, 100), 96 degrees (rows down): down.
+        // (600, -100) from (480, 0): (120, -100), -40 degrees: up and right.
+        for (window, edge, want) in [
+            (DVec2::new(-900.0, 420.0), DVec2::new(0.0, 300.0), "←"),
+            (DVec2::new(-10.0, 400.0), DVec2::new(0.0, 300.0), "↓"),
+            (DVec2::new(600.0, -100.0), DVec2::new(480.0, 0.0), "↗"),
+        ] {
+            let h = HandleMark {
+                index: 0,
+                window: Some(window),
+                w: 1.0,
+                active: false,
+            };
+            let mut shapes = Vec::new();
+            handle_shapes(&mut shapes, &h, centre, size);
+            let circle = shapes.iter().find_map(|s| match s {
+                Shape::Circle { centre, .. } => Some(*centre),
+                _ => None,
+            });
+            assert_eq!(circle, Some(edge));
+            let t = texts(&shapes);
+            assert!(t.iter().all(|(at, _)| *at == edge), "{t:?}");
+            assert!(t.iter().any(|(_, s)| s == want), "{window}: {t:?}");
+        }
+        // A corner on the image: where it is, no arrow.
+        let h = HandleMark {
+            index: 1,
+            window: Some(DVec2::new(100.0, 50.0)),
+            w: 1.0,
+            active: false,
+        };
+        let mut shapes = Vec::new();
+        handle_shapes(&mut shapes, &h, centre, size);
+        assert_eq!(texts(&shapes).len(), 2, "the name and the w label only");
+    }
+}

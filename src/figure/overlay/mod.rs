@@ -24,7 +24,8 @@ pub use magnifier::{
     MAGNIFIER_RADIUS, SAMPLE_MARK_RADIUS, SampleMark, magnified_rect, magnifier, sample_color,
 };
 pub use marks::{
-    SCIENTIFIC_W, behind_camera_note, format_w, is_triangle_outline, span_shapes, span_step_shapes,
+    SCIENTIFIC_W, behind_camera_note, format_w, handle_position, is_triangle_outline, span_shapes,
+    span_step_shapes,
 };
 use marks::{behind_note, clip_shapes, handle_shapes, pixel_marker, triangle_shapes};
 pub use shape::{Anchor, Overlay, Shape, Stroke};
@@ -188,14 +189,20 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
         pixel_marker(&mut shapes, hover.pixel, HOVER, wf, hf, true);
     }
 
-    let on_screen: Vec<DVec2> = input.handles.iter().filter_map(|h| h.window).collect();
+    let size = DVec2::new(wf, hf);
+    let on_screen: Vec<DVec2> = input
+        .handles
+        .iter()
+        .filter_map(|h| h.window)
+        .map(|w| marks::handle_position(w, size))
+        .collect();
     let centre = if on_screen.is_empty() {
         DVec2::new(wf / 2.0, hf / 2.0)
     } else {
         on_screen.iter().sum::<DVec2>() / on_screen.len() as f64
     };
     for handle in &input.handles {
-        handle_shapes(&mut shapes, handle, centre);
+        handle_shapes(&mut shapes, handle, centre, size);
     }
     if let Some(note) = behind_note(&input.handles, &behind) {
         shapes.push(Shape::Text {
