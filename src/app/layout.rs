@@ -226,7 +226,8 @@ impl BaryApp {
         let over_area = rect.shrink(side_panels::CANVAS_MARGIN);
         let size = over_text(over_area.width());
         let width = present::card_width_for_text(size).min(over_area.width());
-        let card = egui::vec2(width, present::card_height(size, full, spacing));
+        let key_lines = 1 + usize::from(self.space_toggle_offered);
+        let card = egui::vec2(width, present::card_height(size, full, spacing, key_lines));
         // The layout follows the pin only: a hovered pixel fills the card where it is (a
         // picture that made room when the pointer entered it would move under the pointer).
         let corner = if self.state.view.pinned.is_some() {

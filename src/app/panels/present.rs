@@ -99,12 +99,15 @@ pub fn card_height_narrow(size: f32, spacing: f32) -> f32 {
         + PANEL_MARGINS
 }
 
-/// The card's height in points at text `size`, with a pixel to show (`full`) or without.
-/// Used to place the card before it is drawn; the card is never taller.
-pub fn card_height(size: f32, full: bool, spacing: f32) -> f32 {
+/// The card's height in points at text `size`, with a pixel to show (`full`) or without,
+/// and `key_lines` lines of keys under it (two when V offers the 3D view). Used to place the
+/// card before it is drawn; the card is never taller.
+pub fn card_height(size: f32, full: bool, spacing: f32, key_lines: usize) -> f32 {
     let spacing = card_spacing(spacing, size);
     let rows = if full { FULL_ROWS } else { COMPACT_ROWS };
-    rows * (ROW * size + spacing) + (ROW * SMALL_SHARE * size + spacing) + PANEL_MARGINS
+    rows * (ROW * size + spacing)
+        + key_lines.max(1) as f32 * (ROW * SMALL_SHARE * size + spacing)
+        + PANEL_MARGINS
 }
 
 /// The height in points of a wide card (two columns: the table beside the other lines) at
@@ -361,6 +364,12 @@ mod tests {
         assert_eq!(card_text_for_width(10.0), CARD_TEXT_RANGE.0);
         assert_eq!(card_text_for_width(5000.0), CARD_TEXT_RANGE.1);
         // A card without a pixel is far smaller than one with.
-        assert!(card_height(20.0, false, 4.0) < 0.4 * card_height(20.0, true, 4.0));
+        assert!(card_height(20.0, false, 4.0, 1) < 0.4 * card_height(20.0, true, 4.0, 1));
+        // The V line: one small row more.
+        let row = ROW * SMALL_SHARE * 20.0 + card_spacing(4.0, 20.0);
+        assert_eq!(
+            card_height(20.0, true, 4.0, 2),
+            card_height(20.0, true, 4.0, 1) + row
+        );
     }
 }
