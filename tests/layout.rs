@@ -248,10 +248,15 @@ fn handles_on_screen(h: &Harness<'_, BaryApp>) -> Vec<egui::Pos2> {
     };
     let vertices = barylab::figure::vertices_on_screen(&output.scene, output.viewport());
     let per_pixel = |v: &barylab::app::panels::canvas::View| v.rect.width() / output.size[0] as f32;
+    let image = glam::DVec2::new(f64::from(output.size[0]), f64::from(output.size[1]));
     let mut out = Vec::new();
     for v in &canvas.views {
         for &k in &canvas.handles {
-            if let Some(p) = vertices.get(k).and_then(|x| x.window) {
+            if let Some(p) = vertices
+                .get(k)
+                .and_then(|x| x.window)
+                .map(|w| barylab::figure::overlay::handle_position(w, image))
+            {
                 out.push(v.rect.min + per_pixel(v) * egui::vec2(p.x as f32, p.y as f32));
             }
         }
