@@ -235,7 +235,7 @@ pub struct Step {
 }
 
 /// A step's quiz as written: `"quiz": {"ask": ["screen_weights", "weights", "inv_w", "uv"]}`,
-/// with `"pixel": [x, y]` when the quiz pixel is not the step's `pin` (it becomes the pin).
+/// with `"pixel": [x, y]` when the quiz pixel is not the step's `pin` (it is pinned instead).
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct QuizSpec {
