@@ -208,20 +208,25 @@ pub fn step_pictures(
     Ok(StepPictures { figure, plot })
 }
 
+/// The YAML front matter pandoc reads: the title and the language (`en`, `zh-CN`).
+pub(super) fn front_matter(title: &str, lang: Lang) -> String {
+    format!(
+        "---\ntitle: \"{}\"\nlang: {}\n---\n\n",
+        title.replace('"', "\\\""),
+        match lang {
+            Lang::En => "en",
+            Lang::Zh => "zh-CN",
+        }
+    )
+}
+
 /// PNG pixels per point of a handout's row plot (sharp in print).
 pub const PLOT_SCALE: f32 = 2.0;
 
 /// The handout of `lesson` in `lang`: [`MARKDOWN_NAME`] first, then the figures (one per
 /// distinct picture, named after the first step that draws it) and the row plots.
 pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutError> {
-    let mut md = format!(
-        "---\ntitle: \"{}\"\nlang: {}\n---\n\n",
-        lesson.title.get(lang).replace('"', "\\\""),
-        match lang {
-            Lang::En => "en",
-            Lang::Zh => "zh-CN",
-        }
-    );
+    let mut md = front_matter(lesson.title.get(lang), lang);
     let mut files = Vec::new();
     // The quiz steps, with their texture and figure, for the quiz sheet and its key.
     let mut quizzes: Vec<(usize, StepState, Texture, String)> = Vec::new();

@@ -3,7 +3,7 @@
 //! come from, and what each known mistake gives), as two Markdown files beside the handout
 //! ([`SHEET_NAME`], [`KEY_NAME`]). Every number is the probe's ([`crate::probe::quiz::key`]).
 
-use super::handout::{HandoutError, derivation};
+use super::handout::{HandoutError, derivation, front_matter};
 use super::{InspectorSection, Lesson, StepState, text};
 use crate::i18n::Lang;
 use crate::probe::quiz::{self, Quantity, TOLERANCE};
@@ -34,17 +34,6 @@ fn sections(q: Quantity) -> &'static [InspectorSection] {
         Quantity::Weights | Quantity::InvW => &[InspectorSection::Perspective],
         Quantity::Uv => &[InspectorSection::Attribute],
     }
-}
-
-fn front_matter(title: &str, lang: Lang) -> String {
-    format!(
-        "---\ntitle: \"{}\"\nlang: {}\n---\n\n",
-        title.replace('"', "\\\""),
-        match lang {
-            Lang::En => "en",
-            Lang::Zh => "zh-CN",
-        }
-    )
 }
 
 /// `r = 0.2500, s = 0.5625, t = 0.1875`.

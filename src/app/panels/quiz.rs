@@ -189,7 +189,13 @@ pub fn quiz_ui(
     let report = pinned.filter(|r| r.pixel == session.question.pixel);
     let key = report.map(|r| quiz::key(&r.trace, &session.question.ask));
     let h = ui.text_style_height(&egui::TextStyle::Body);
-    for (part, q) in session.question.ask.iter().enumerate() {
+    // Once revealed, the table shows what was typed: the fields make room for it.
+    let asking = if session.revealed {
+        &[][..]
+    } else {
+        &session.question.ask[..]
+    };
+    for (part, q) in asking.iter().enumerate() {
         ui.add_space(4.0);
         ui.label(q.name(lang));
         // One row of "symbol [field]" pairs, the fields sharing the width left.
@@ -203,6 +209,7 @@ pub fn quiz_ui(
         let field_width = ((ui.available_width() - names - gaps) / n).clamp(2.5 * h, 6.0 * h);
         egui::Grid::new(("quiz-fields", part))
             .num_columns(2 * symbols.len())
+            .min_col_width(0.0)
             .show(ui, |ui| {
                 for (index, symbol) in symbols.iter().enumerate() {
                     ui.label(RichText::new(*symbol).monospace().strong());
@@ -313,7 +320,9 @@ fn verdict_ui(
                 ui.label(mono(format!("{a:.4}")).strong());
                 if let Some(v) = verdict {
                     let g = v.given.get(i).copied().unwrap_or(f64::NAN);
+                    // (No "-0.0000": a difference that rounds to zero is shown as +0.0000.)
                     let d = v.differences.get(i).copied().unwrap_or(f64::NAN);
+                    let d = if d.abs() < 5e-5 { 0.0 } else { d };
                     ui.label(mono(format!("{g:.4}")));
                     let colour = if d.abs() <= TOLERANCE { RIGHT } else { WRONG };
                     ui.label(mono(format!("{d:+.4}")).color(colour));
@@ -364,15 +373,18 @@ impl BaryApp {
         let width = (COLUMN_SHARE * ui.available_width()).clamp(COLUMN_WIDTH.0, COLUMN_WIDTH.1);
         let pinned = self.reports.pin.as_ref();
         egui::Panel::right("quiz-column")
+            .frame(
+                egui::Frame::side_top_panel(ui.style())
+                    .inner_margin(egui::Margin::symmetric(14, 10)),
+            )
             .resizable(false)
             .exact_size(width)
             .show(ui, |ui| {
-                let inner = ui.available_width();
                 egui::ScrollArea::vertical()
                     .auto_shrink([false, false])
                     .show(ui, |ui| {
                         // Lines wrap at the column's width; nothing widens it.
-                        ui.set_max_width(inner);
+                        ui.set_max_width(ui.available_width());
                         ui.heading(lang.tr("quiz.title"));
                         out.extend(
                             quiz_ui(ui, session, pinned, lang)
