@@ -306,7 +306,8 @@ fn verdict_ui(
     // as for one.
     egui::Grid::new(("quiz-verdict", part))
         .num_columns(4)
-        .spacing([12.0, 2.0])
+        .min_col_width(0.0)
+        .spacing([10.0, 2.0])
         .show(ui, |ui| {
             ui.label("");
             ui.label(lang.tr("quiz.answer"));
@@ -354,8 +355,8 @@ fn verdict_ui(
 
 /// Share of the window's width the quiz takes in presentation mode, and its least and
 /// largest width in points.
-const COLUMN_SHARE: f32 = 0.42;
-const COLUMN_WIDTH: (f32, f32) = (250.0, 480.0);
+const COLUMN_SHARE: f32 = 0.45;
+const COLUMN_WIDTH: (f32, f32) = (270.0, 480.0);
 
 impl BaryApp {
     /// Presentation mode during a quiz: the quiz in a column right of the picture, in the
@@ -395,6 +396,8 @@ impl BaryApp {
                         ui.label(RichText::new(lang.tr("quiz.keys")).small().weak());
                     });
             });
+        // Nothing lies over the picture (the card's corner of the last frame is gone).
+        self.canvas.avoid.clear();
         let framing = Framing::presenting(self.state.view.compare);
         self.canvas_panel(ui, texture, framing, out);
     }
@@ -406,11 +409,14 @@ impl BaryApp {
             return;
         };
         let mut open = true;
-        let corner = ctx.content_rect().right_bottom() - egui::vec2(24.0, 48.0);
+        // In the canvas's top-left corner: clear of the inspector (it says the numbers are
+        // hidden) and of the Lessons panel's text and plot under the canvas.
+        let corner = self.canvas.area.map_or(ctx.content_rect().center(), |a| {
+            a.min + egui::vec2(12.0, 12.0)
+        });
         egui::Window::new(lang.tr("quiz.title"))
             .id(egui::Id::unique("quiz-window"))
             .open(&mut open)
-            .pivot(egui::Align2::RIGHT_BOTTOM)
             .default_pos(corner)
             .default_width(360.0)
             .show(ctx, |ui| {
