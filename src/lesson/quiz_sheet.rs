@@ -121,7 +121,7 @@ pub fn sheets(
                         values(e.quantity, &e.values)
                     ));
                     let mut shown: Vec<String> = Vec::new();
-                    for (m, v) in &e.mistakes {
+                    for (m, v) in e.diagnosable() {
                         let line = lang.tr_with(
                             "quiz.key_mistake",
                             &[("name", &m.name(lang)), ("values", &values(e.quantity, v))],

@@ -30,6 +30,10 @@ pub const TOLERANCE: f64 = 0.006;
 /// is no mistake.
 const DISTINCT: f64 = 2.0 * TOLERANCE;
 
+/// Two mistakes whose predictions are this close give the same numbers (they differ by
+/// rounding only).
+const SAME: f64 = 1e-9;
+
 /// What a question asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -194,6 +198,14 @@ fn distance(a: &[f64], b: &[f64]) -> f64 {
 }
 
 impl Expected {
+    /// The mistakes a wrong prediction can be diagnosed as: those whose numbers differ from
+    /// the answer by more than twice [`TOLERANCE`].
+    pub fn diagnosable(&self) -> impl Iterator<Item = &(Mistake, Vec<f64>)> {
+        self.mistakes
+            .iter()
+            .filter(|(_, m)| distance(m, &self.values) > DISTINCT)
+    }
+
     /// Checks a prediction: right when every number is within [`TOLERANCE`] of the answer;
     /// else the differences, and the closest known mistake that the prediction matches within
     /// [`TOLERANCE`] and that differs from the answer by more than twice that.
@@ -221,13 +233,13 @@ impl Expected {
         let diagnosis = if correct {
             None
         } else {
-            self.mistakes
-                .iter()
-                .filter(|(_, m)| distance(m, &self.values) > DISTINCT)
+            self.diagnosable()
                 .map(|(k, m)| (*k, distance(given, m)))
                 .filter(|(_, d)| *d <= TOLERANCE)
+                // The closest; of mistakes that give the same numbers (r, s, t used as a, b, c
+                // and every w = 1 both give r, s, t), the one listed first.
                 .fold(None, |best: Option<(Mistake, f64)>, c| match best {
-                    Some(b) if b.1 <= c.1 => Some(b),
+                    Some(b) if b.1 <= c.1 + SAME => Some(b),
                     _ => Some(c),
                 })
                 .map(|(k, _)| k)
