@@ -207,28 +207,25 @@ pub fn quiz_ui(
             .sum();
         let gaps = 2.0 * n * ui.spacing().item_spacing.x + n * ui.spacing().button_padding.x * 2.0;
         let field_width = ((ui.available_width() - names - gaps) / n).clamp(2.5 * h, 6.0 * h);
-        egui::Grid::new(("quiz-fields", part))
-            .num_columns(2 * symbols.len())
-            .min_col_width(0.0)
-            .show(ui, |ui| {
-                for (index, symbol) in symbols.iter().enumerate() {
-                    ui.label(RichText::new(*symbol).monospace().strong());
-                    let mut text = session.fields[part][index].clone();
-                    let edit = egui::TextEdit::singleline(&mut text)
-                        .desired_width(field_width)
-                        .id_salt(("quiz-field", part, index))
-                        .hint_text("?");
-                    let r = ui.add(edit);
-                    if r.changed() {
-                        out.push(QuizCommand::Edit { part, index, text });
-                    }
-                    // Enter in a field reveals (the field gives the keyboard back, so Page
-                    // Down goes on to the next step again).
-                    if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-                        out.push(QuizCommand::Reveal(true));
-                    }
+        ui.horizontal(|ui| {
+            for (index, symbol) in symbols.iter().enumerate() {
+                ui.label(RichText::new(*symbol).monospace().strong());
+                let mut text = session.fields[part][index].clone();
+                let edit = egui::TextEdit::singleline(&mut text)
+                    .desired_width(field_width)
+                    .id_salt(("quiz-field", part, index))
+                    .hint_text("?");
+                let r = ui.add(edit);
+                if r.changed() {
+                    out.push(QuizCommand::Edit { part, index, text });
                 }
-            });
+                // Enter in a field reveals (the field gives the keyboard back, so Page Down
+                // goes on to the next step again).
+                if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                    out.push(QuizCommand::Reveal(true));
+                }
+            }
+        });
     }
     ui.add_space(6.0);
     let label = if session.revealed {
