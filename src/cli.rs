@@ -116,6 +116,11 @@ struct Cli {
     /// scene's background colour).
     #[arg(long, value_parser = parse_color, value_name = "COLOR", requires = "compare_image")]
     compare_background: Option<[u8; 3]>,
+    /// Type these predictions into the quiz of the --lesson step (or of the pinned pixel)
+    /// and press Reveal, e.g. for a --screenshot of a verdict: the numbers in the quiz's
+    /// order, separated by spaces or semicolons ("0.25 0.56 0.19").
+    #[arg(long, value_name = "NUMBERS")]
+    quiz_answers: Option<String>,
     /// Memory a render, figure, scene or model may use, e.g. 2G or 512M (default: the
     /// environment variable BARYLAB_MEMORY_LIMIT if set, else 75% of the available memory).
     #[arg(long, global = true, value_parser = parse_memory, value_name = "SIZE")]
@@ -874,6 +879,12 @@ fn app(cli: &Cli) -> Result<()> {
         space_view: cli.space_view,
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,
+        quiz_answers: cli.quiz_answers.as_ref().map(|a| {
+            a.split([' ', ';'])
+                .filter(|t| !t.is_empty())
+                .map(str::to_string)
+                .collect()
+        }),
     };
     if let Some(shot) = &cli.screenshot {
         // The scene, its texture or model and the lesson were read by now; the image to

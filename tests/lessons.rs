@@ -536,9 +536,15 @@ fn handout_figures_are_distinct_and_shared_only_when_identical() {
             }
         }
     }
+    // And the quiz sheet with its answer key (the built-in lesson has quiz steps).
+    let quiz = ["quiz.md", "quiz-key.md"]
+        .iter()
+        .filter(|n| files.iter().any(|f| f.name == **n))
+        .count();
+    assert_eq!(quiz, 2);
     assert_eq!(
         files.len(),
-        1 + pictures.len() + md.matches("-plot.png)").count()
+        1 + pictures.len() + md.matches("-plot.png)").count() + quiz
     );
 }
 

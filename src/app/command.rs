@@ -37,6 +37,32 @@ pub enum AppCommand {
     /// 3D view in the picture's place, or the picture again (V). Any change of the scene or
     /// the lesson step brings the picture back.
     ToggleSpaceFull,
+    /// The quiz on the pinned pixel ([`crate::app::panels::quiz`]).
+    Quiz(QuizCommand),
+}
+
+/// What the quiz panel and the Q key ask for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum QuizCommand {
+    /// Start a quiz on the pinned pixel (every quantity), or end the one going on (Q).
+    Toggle,
+    /// The field of number `index` of quantity `part` now holds `text`.
+    Edit {
+        /// Which quantity asked (0-based, in the question's order).
+        part: usize,
+        /// Which of its numbers.
+        index: usize,
+        /// The field's text.
+        text: String,
+    },
+    /// Show (true) or hide again (false) the answer.
+    Reveal(bool),
+}
+
+impl From<QuizCommand> for AppCommand {
+    fn from(c: QuizCommand) -> Self {
+        AppCommand::Quiz(c)
+    }
 }
 
 impl From<StateCommand> for AppCommand {

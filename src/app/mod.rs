@@ -135,6 +135,8 @@ pub struct BaryApp {
     compare_image: Option<panels::compare_image::ImageCompare>,
     /// The 3D view's orbit and scene.
     space_view: panels::space_view::SpaceView,
+    /// The quiz on the pinned pixel, if one is going on.
+    quiz: panels::quiz::Quiz,
 }
 
 impl BaryApp {
@@ -223,6 +225,7 @@ impl BaryApp {
             gpu_view: panels::gpu_view::GpuView::new(options.screenshot.is_some()),
             space_view: panels::space_view::SpaceView::default(),
             compare_image: None,
+            quiz: panels::quiz::Quiz::default(),
         };
         if let Some(path) = &options.compare_image {
             app.push(FileCommand::CompareImage(path.clone()));
@@ -239,6 +242,7 @@ impl BaryApp {
         if let Some(p) = options.pin {
             app.push(document::state::StateCommand::Pin(Some(p)));
         }
+        app.quiz.answers = options.quiz_answers;
         if let Some(e) = options.startup_error {
             app.set_error(e);
         }
@@ -347,6 +351,8 @@ impl BaryApp {
             ),
         }
         let hover_before = self.canvas.hover;
+        self.quiz.sync(self.lesson_quiz(), self.state.view.pinned);
+        panels::quiz::set_hidden_pixel(&ctx, self.quiz.hidden());
         self.panels(ui, &texture);
         let (gpu_on, mode) = (self.state.view.gpu, self.state.options().mode);
         if self
@@ -407,7 +413,9 @@ impl BaryApp {
         let mut out: Vec<AppCommand> = Vec::new();
         if self.presenting {
             self.lesson_strip(ui, &mut out);
-            if !self.space_panel_presenting(ui) {
+            if self.quiz.session.is_some() {
+                self.quiz_presenting(ui, texture, &mut out);
+            } else if !self.space_panel_presenting(ui) {
                 self.presentation(ui, texture, &mut out);
             }
             self.commands.extend(out);
@@ -459,7 +467,10 @@ impl BaryApp {
         self.lesson_panel(ui, texture, &mut out);
         self.side_panels_ui(ui, &mut out);
         self.canvas.avoid.clear();
-        self.space_panel(ui);
+        // The 3D view shows the pinned pixel's a, b, c: not during a quiz before Reveal.
+        if self.quiz.hidden().is_none() {
+            self.space_panel(ui);
+        }
         self.canvas_panel(
             ui,
             texture,
@@ -467,6 +478,7 @@ impl BaryApp {
             &mut out,
         );
         self.plot_window(&ctx, texture, &mut out);
+        self.quiz_window(&ctx, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(lang.tr("app.help.title"))
             .id(egui::Id::unique("help-window"))
@@ -606,7 +618,24 @@ impl BaryApp {
                 self.space_full = false;
                 self.apply_lesson(ctx, c);
             }
+            AppCommand::Quiz(c) => {
+                let step = self.lesson_step();
+                self.quiz.apply(c, self.state.view.pinned, step);
+            }
         }
+    }
+
+    /// The open lesson's step and its quiz, for [`panels::quiz::Quiz::sync`].
+    fn lesson_quiz(&self) -> Option<(usize, Option<crate::probe::quiz::Question>)> {
+        let s = self.lessons.session.as_ref()?;
+        let step = s.lesson.steps.get(s.step)?;
+        let quiz = step.quiz.as_ref().and_then(|q| {
+            Some(crate::probe::quiz::Question {
+                pixel: step.quiz_pixel()?,
+                ask: q.ask.clone(),
+            })
+        });
+        Some((s.step, quiz))
     }
 }
 

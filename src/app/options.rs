@@ -47,4 +47,7 @@ pub struct AppOptions {
     /// opened: shown in the window as an error while the app starts on the default (or
     /// saved) scene; the command line printed it to standard error too.
     pub startup_error: Option<String>,
+    /// Predictions typed into the first quiz, then revealed (`--quiz-answers`; a quiz is
+    /// started on the pinned pixel if the lesson step has none).
+    pub quiz_answers: Option<Vec<String>>,
 }

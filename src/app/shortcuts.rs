@@ -7,6 +7,7 @@ use crate::app::command::AppCommand;
 use crate::app::command::ExportCommand;
 use crate::app::command::FileCommand;
 use crate::app::command::LessonCommand;
+use crate::app::command::QuizCommand;
 use crate::app::document::presets::Preset;
 use crate::app::document::state::{AppState, PIXEL_SIZE_RANGE, StateCommand};
 use crate::figure::Compare;
@@ -65,6 +66,10 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         }
         if key(Key::H) {
             state(StateCommand::SetShowHandles(!view.show_handles));
+        }
+        // Q: a quiz on the pinned pixel (or the end of the one going on).
+        if key(Key::Q) {
+            extra.push(QuizCommand::Toggle.into());
         }
         // V: presentation mode's 3D view in the picture's place (windows too narrow for both).
         if input.presenting && view.space && key(Key::V) {

@@ -2,7 +2,8 @@
 //! title, text and "try this", its figure, its row plot (when the step has one: the app's
 //! plot, drawn by [`crate::figure::plot`]) and the pinned pixel's derivation from the probe,
 //! the figures and plots as PNG files beside it. A step that draws the same figure as an
-//! earlier one shows that file again instead of a copy. Nothing is written here: [`handout`] returns the files
+//! earlier one shows that file again instead of a copy. A lesson with quiz steps also gets
+//! a quiz sheet and its answer key ([`super::quiz_sheet`]). Nothing is written here: [`handout`] returns the files
 //! and the command line writes them (all or nothing, never over an existing file).
 
 use std::path::Path;
@@ -125,7 +126,7 @@ pub fn step_figure(
 /// The pinned pixel's derivation, only the sections the step opens in the inspector (all
 /// when it names none), with headings two levels down so they sit under the step's, and the
 /// sections numbered from 1 (the probe numbers them in its full derivation).
-fn derivation(trace: &PixelTrace, state: &StepState, lang: Lang) -> String {
+pub(super) fn derivation(trace: &PixelTrace, state: &StepState, lang: Lang) -> String {
     let full = document_in(trace, lang);
     let detail = trace.detail.is_some();
     let clipped = trace.detail.as_ref().is_some_and(|d| d.clipping.is_some());
@@ -207,21 +208,28 @@ pub fn step_pictures(
     Ok(StepPictures { figure, plot })
 }
 
+/// The YAML front matter pandoc reads: the title and the language (`en`, `zh-CN`).
+pub(super) fn front_matter(title: &str, lang: Lang) -> String {
+    format!(
+        "---\ntitle: \"{}\"\nlang: {}\n---\n\n",
+        title.replace('"', "\\\""),
+        match lang {
+            Lang::En => "en",
+            Lang::Zh => "zh-CN",
+        }
+    )
+}
+
 /// PNG pixels per point of a handout's row plot (sharp in print).
 pub const PLOT_SCALE: f32 = 2.0;
 
 /// The handout of `lesson` in `lang`: [`MARKDOWN_NAME`] first, then the figures (one per
 /// distinct picture, named after the first step that draws it) and the row plots.
 pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutError> {
-    let mut md = format!(
-        "---\ntitle: \"{}\"\nlang: {}\n---\n\n",
-        lesson.title.get(lang).replace('"', "\\\""),
-        match lang {
-            Lang::En => "en",
-            Lang::Zh => "zh-CN",
-        }
-    );
+    let mut md = front_matter(lesson.title.get(lang), lang);
     let mut files = Vec::new();
+    // The quiz steps, with their texture and figure, for the quiz sheet and its key.
+    let mut quizzes: Vec<(usize, StepState, Texture, String)> = Vec::new();
     for number in 1..=lesson.steps.len() {
         let step = &lesson.steps[number - 1];
         let state = step_state(lesson, number)?;
@@ -281,6 +289,30 @@ pub fn handout(lesson: &Lesson, lang: Lang) -> Result<Vec<HandoutFile>, HandoutE
             ));
         }
         md.push('\n');
+        if state.quiz.is_some() {
+            quizzes.push((number, state, texture, name));
+        }
+    }
+    let steps: Vec<super::quiz_sheet::QuizStep<'_>> = quizzes
+        .iter()
+        .map(
+            |(number, state, texture, figure)| super::quiz_sheet::QuizStep {
+                number: *number,
+                state,
+                texture,
+                figure,
+            },
+        )
+        .collect();
+    if let Some((sheet, key)) = super::quiz_sheet::sheets(lesson, &steps, lang)? {
+        files.push(HandoutFile {
+            name: super::quiz_sheet::SHEET_NAME.to_string(),
+            bytes: sheet.into_bytes(),
+        });
+        files.push(HandoutFile {
+            name: super::quiz_sheet::KEY_NAME.to_string(),
+            bytes: key.into_bytes(),
+        });
     }
     files.insert(
         0,

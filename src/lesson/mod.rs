@@ -15,6 +15,7 @@ pub mod builtin;
 pub mod handout;
 mod parse;
 pub mod plot;
+pub mod quiz_sheet;
 pub mod slides;
 pub mod text;
 
@@ -25,6 +26,7 @@ use serde::{Deserialize, Serialize};
 use crate::figure::{Compare, FigureOptions};
 use crate::files::ReadError;
 use crate::i18n::Lang;
+use crate::probe::quiz::{Quantity, Question};
 use crate::raster::render::Rasterizer;
 use crate::raster::{Filter, Interpolation, Shading};
 use crate::scene::Scene;
@@ -228,6 +230,20 @@ pub struct Step {
     pub plot: Option<LessonPlot>,
     /// The 3D view beside the canvas (default off).
     pub space_view: bool,
+    /// A quiz on the pinned pixel: the class predicts these numbers before they are shown.
+    pub quiz: Option<QuizSpec>,
+}
+
+/// A step's quiz as written: `"quiz": {"ask": ["screen_weights", "weights", "inv_w", "uv"]}`,
+/// with `"pixel": [x, y]` when the quiz pixel is not the step's `pin` (it is pinned instead).
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct QuizSpec {
+    /// The pixel asked about (default: the step's pin).
+    #[serde(default)]
+    pub pixel: Option<[u32; 2]>,
+    /// What the class predicts, in order, each once.
+    pub ask: Vec<Quantity>,
 }
 
 /// A lesson: a title and its steps.
@@ -266,6 +282,8 @@ pub struct StepState {
     pub plot: Option<LessonPlot>,
     /// The 3D view beside the canvas.
     pub space_view: bool,
+    /// The quiz on the pinned pixel (its pixel is [`StepState::pin`]).
+    pub quiz: Option<Question>,
 }
 
 impl StepState {
@@ -293,6 +311,13 @@ fn set_look(scene: &mut Scene, mode: Interpolation, shading: Shading, filter: Fi
         Scene::Model(s) => {
             (s.mode, s.shading, s.filter, s.wireframe) = (mode, Some(shading), filter, wf)
         }
+    }
+}
+
+impl Step {
+    /// The pinned pixel: the quiz's pixel when the quiz names one, else `pin`.
+    pub fn quiz_pixel(&self) -> Option<[u32; 2]> {
+        self.quiz.as_ref().and_then(|q| q.pixel).or(self.pin)
     }
 }
 
@@ -343,10 +368,16 @@ impl Lesson {
             rasterizer: step.rasterizer,
             overlays: step.overlays,
             pixel_size: step.pixel_size.unwrap_or(1),
-            pin: step.pin,
+            pin: step.quiz_pixel(),
             inspector: step.inspector.clone(),
             plot: step.plot,
             space_view: step.space_view,
+            quiz: step.quiz.as_ref().and_then(|q| {
+                Some(Question {
+                    pixel: step.quiz_pixel()?,
+                    ask: q.ask.clone(),
+                })
+            }),
         })
     }
 

@@ -7,10 +7,11 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use super::{
-    Compare, InspectorSection, Lesson, LessonError, LessonPlot, Overlays, SceneSource, Step,
-    StepScene, Text, builtin,
+    Compare, InspectorSection, Lesson, LessonError, LessonPlot, Overlays, QuizSpec, SceneSource,
+    Step, StepScene, Text, builtin,
 };
 use crate::files::{self, FileKind, shown};
+use crate::probe::quiz::Quantity;
 use crate::raster::project::MAX_IMAGE_SIZE;
 use crate::raster::render::Rasterizer;
 use crate::raster::{Filter, Interpolation, Shading};
@@ -96,6 +97,8 @@ struct RawStep {
     plot: Option<LessonPlot>,
     #[serde(default)]
     space_view: bool,
+    #[serde(default)]
+    quiz: Option<QuizSpec>,
 }
 
 impl<'de> Deserialize<'de> for Step {
@@ -122,7 +125,11 @@ impl<'de> Deserialize<'de> for Step {
             let (w, h) = s.scene.size();
             [w, h]
         }));
-        if let (Some([x, y]), Some([w, h])) = (r.pin, size) {
+        if let Some(q) = &r.quiz {
+            check_quiz(q, r.pin).map_err(D::Error::custom)?;
+        }
+        let pin = r.quiz.as_ref().and_then(|q| q.pixel).or(r.pin);
+        if let (Some([x, y]), Some([w, h])) = (pin, size) {
             check_pin([x, y], [w, h]).map_err(D::Error::custom)?;
         }
         Ok(Step {
@@ -144,8 +151,39 @@ impl<'de> Deserialize<'de> for Step {
             inspector: r.inspector,
             plot: r.plot,
             space_view: r.space_view,
+            quiz: r.quiz,
         })
     }
+}
+
+/// A quiz asks something, each thing once, about one pixel: its own (pinned instead of the
+/// step's `pin`) or the step's pin.
+fn check_quiz(q: &QuizSpec, pin: Option<[u32; 2]>) -> Result<(), String> {
+    let codes = || {
+        Quantity::ALL
+            .iter()
+            .map(|q| q.code())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if q.ask.is_empty() {
+        return Err(format!(
+            "`quiz.ask` is empty: name one or more of {}",
+            codes()
+        ));
+    }
+    if let Some(dup) = q
+        .ask
+        .iter()
+        .enumerate()
+        .find_map(|(i, a)| q.ask[..i].contains(a).then_some(a))
+    {
+        return Err(format!("`quiz.ask` names `{}` twice", dup.code()));
+    }
+    if q.pixel.is_none() && pin.is_none() {
+        return Err("`quiz` needs a pixel: give `quiz.pixel` or the step's `pin`".into());
+    }
+    Ok(())
 }
 
 /// A pin must lie in the image.
@@ -300,7 +338,7 @@ fn check(lesson: &Lesson, text: &str, path: &str) -> Result<(), LessonError> {
         ));
     }
     for (i, step) in lesson.steps.iter().enumerate() {
-        if let (Some(pin), Some(state)) = (step.pin, lesson.state(i)) {
+        if let (Some(pin), Some(state)) = (step.quiz_pixel(), lesson.state(i)) {
             let (w, h) = state.scene.size();
             check_pin(pin, [w, h]).map_err(|m| at(format!("steps[{i}].pin"), m))?;
         }

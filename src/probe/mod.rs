@@ -28,6 +28,7 @@
 mod detail;
 pub mod format;
 mod lod;
+pub mod quiz;
 mod samples;
 mod trace;
 pub mod weights;

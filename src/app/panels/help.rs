@@ -70,6 +70,7 @@ const KEY_ROWS: &[(&str, &str)] = &[
     ("app.help.key_rows.k17.key", "app.help.key_rows.k17.what"),
     ("app.help.key_rows.k18.key", "app.help.key_rows.k18.what"),
     ("app.help.key_rows.k19.key", "app.help.key_rows.k19.what"),
+    ("quiz.help_key", "quiz.help_what"),
 ];
 
 /// The help window's contents (they scroll when the window is shorter than they are).

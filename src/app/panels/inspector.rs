@@ -505,6 +505,12 @@ pub fn inspector_ui(
     } else {
         &lang.tr("app.inspector.pinned")
     };
+    // A quiz hides its pixel's numbers (and its colour, which can show them) until Reveal.
+    let hidden = crate::app::panels::quiz::hidden_pixel(ui.ctx());
+    if hidden == Some(focus.pixel) {
+        ui.label(crate::app::panels::quiz::hidden_note(lang, focus.pixel));
+        return Vec::new();
+    }
     header_ui(ui, focus, role);
     if let Some(g) = gpu {
         crate::app::panels::other_image::pixel_colours_ui(ui, g, focus.pixel);
@@ -513,6 +519,7 @@ pub fn inspector_ui(
     summary_ui(ui, focus);
     if let (Some(p), Some(h)) = (pinned, hovered)
         && p.pixel != h.pixel
+        && hidden != Some(p.pixel)
     {
         ui.separator();
         compare_ui(ui, p, h);

@@ -21,6 +21,7 @@ pub(crate) mod paint;
 pub(crate) mod path_window;
 pub(crate) mod plots;
 pub(crate) mod present;
+pub mod quiz;
 pub(crate) mod samples_control;
 pub(crate) mod space_view;
 pub(crate) mod status;

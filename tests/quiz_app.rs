@@ -1,0 +1,145 @@
+//! The app's quiz mode (issue 34, item 5): on a quiz step in presentation mode at 1024x768,
+//! text size 1.5, the pinned pixel's numbers are hidden; the class's prediction is typed;
+//! Reveal shows the answer, the difference and the diagnosis. Driven through egui_kittest.
+
+mod common;
+
+use barylab::app::AppOptions;
+use barylab::app::command::QuizCommand;
+use barylab::i18n::Lang;
+use barylab::lesson::Lesson;
+use egui_kittest::kittest::Queryable;
+
+const SIZE: egui::Vec2 = egui::vec2(1024.0, 768.0);
+
+/// The built-in lesson's step 6 (index 5): the quiz asks r, s, t at (120, 180).
+fn presenting_step_6(lang: Lang) -> egui_kittest::Harness<'static, barylab::app::BaryApp> {
+    common::app::harness(
+        SIZE,
+        AppOptions {
+            lesson: Some((Lesson::builtin().expect("the built-in lesson"), 5)),
+            present: true,
+            text_size: Some(1.5),
+            lang: Some(lang),
+            ..AppOptions::default()
+        },
+    )
+}
+
+/// The pinned pixel's r, s, t, from its trace (what the inspector would show).
+fn rst(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>) -> [f64; 3] {
+    let report = h.state().pin_report().expect("the pinned pixel is probed");
+    assert_eq!(report.pixel, [120, 180]);
+    report
+        .trace
+        .detail
+        .as_ref()
+        .expect("a triangle")
+        .screen
+        .rasterizer
+}
+
+fn shown(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>, text: &str) -> bool {
+    h.query_all_by_label_contains(text).next().is_some()
+}
+
+#[test]
+fn a_quiz_step_hides_the_numbers_until_reveal_and_diagnoses_a_swap() {
+    let mut h = presenting_step_6(Lang::En);
+    assert!(h.state().presenting());
+    assert!(shown(&h, "Predict at pixel (120, 180)"));
+    let [r, s, t] = rst(&h);
+    // Hidden: no 4-digit r, s or t anywhere (the card would show them).
+    for v in [r, s, t] {
+        assert!(
+            !shown(&h, &format!("{v:.4}")),
+            "{v:.4} is shown before Reveal"
+        );
+    }
+    assert!(h.query_by_label("Reveal").is_some());
+
+    // The class swaps r and s: typed into the three fields.
+    assert_eq!(
+        h.get_all_by_role(egui::accesskit::Role::TextInput).count(),
+        3,
+        "a field per number"
+    );
+    for (i, v) in [s, r, t].into_iter().enumerate() {
+        let field = h
+            .get_all_by_role(egui::accesskit::Role::TextInput)
+            .nth(i)
+            .expect("the field");
+        field.focus();
+        field.type_text(&format!("{v:.3}"));
+        h.run();
+    }
+    h.get_by_label("Reveal").click();
+    h.run();
+    assert!(shown(&h, &format!("{r:.4}")), "the answer after Reveal");
+    assert!(shown(&h, "Not right."));
+    assert!(shown(&h, "Diagnosis: weights from the wrong vertex order."));
+    assert!(shown(
+        &h,
+        &format!("{:+.4}", (s * 1000.0).round() / 1000.0 - r)
+    ));
+
+    // Next step still works (Page Down): the quiz of step 6 ends with it.
+    h.state_mut()
+        .push(barylab::app::command::LessonCommand::Next);
+    h.run();
+    assert_eq!(h.state().lesson_step(), Some(6));
+    assert!(!shown(&h, "Predict at pixel"));
+}
+
+#[test]
+fn a_correct_answer_is_accepted_in_chinese() {
+    let mut h = presenting_step_6(Lang::Zh);
+    assert!(shown(&h, "预测像素 (120, 180) 的数值"));
+    let [r, s, t] = rst(&h);
+    for (part_index, v) in [r, s, t].into_iter().enumerate() {
+        h.state_mut().push(QuizCommand::Edit {
+            part: 0,
+            index: part_index,
+            text: format!("{v:.2}"),
+        });
+    }
+    h.run();
+    h.get_by_label("揭晓").click();
+    h.run();
+    assert!(shown(&h, "正确"), "the verdict in Chinese");
+    assert!(!shown(&h, "诊断"));
+}
+
+#[test]
+fn q_quizzes_any_pinned_pixel_and_the_inspector_hides_it() {
+    let mut h = common::app::harness(
+        egui::vec2(1400.0, 900.0),
+        AppOptions {
+            pin: Some([400, 420]),
+            lang: Some(Lang::En),
+            ..AppOptions::default()
+        },
+    );
+    assert!(h.state().pin_report().is_some());
+    assert!(!shown(&h, "hidden for the quiz"));
+    h.key_press(egui::Key::Q);
+    h.run();
+    assert!(shown(&h, "Predict at pixel (400, 420)"));
+    assert!(shown(&h, "are hidden for the quiz"), "the inspector's note");
+    // Every quantity is asked: 3 + 3 + 1 + 2 fields.
+    assert_eq!(
+        h.get_all_by_role(egui::accesskit::Role::TextInput).count(),
+        9
+    );
+    // Reveal with nothing typed: the answers, and the inspector's derivation comes back.
+    h.get_by_label("Reveal").click();
+    h.run();
+    assert!(shown(&h, "No prediction typed."));
+    assert!(!shown(&h, "are hidden for the quiz"));
+    // Q again ends it.
+    h.get_by_label("Hide the answer").click();
+    h.run();
+    h.key_press(egui::Key::Q);
+    h.run();
+    assert!(!shown(&h, "Predict at pixel"));
+}
