@@ -19,6 +19,19 @@ fn shown(h: &Harness<'static, BaryApp>) -> ([u32; 2], u64) {
     (out.size, out.generation)
 }
 
+/// Asserts that the first view is laid out for a picture of `size`: its screen rectangle is
+/// `size` pixels at its scale (so the pixel under the pointer is the shown picture's).
+fn laid_out_for(h: &Harness<'static, BaryApp>, size: [u32; 2]) {
+    let v = h.state().canvas().views.first().expect("a view");
+    let s = v.transform.scale;
+    assert!(
+        (v.rect.width() - size[0] as f32 * s).abs() < 0.01
+            && (v.rect.height() - size[1] as f32 * s).abs() < 0.01,
+        "{:?} at {s} points a pixel is not {size:?}",
+        v.rect
+    );
+}
+
 /// Runs frames (a few milliseconds apart) until the picture shown is `size`, at most a
 /// minute.
 fn until_drawn(h: &mut Harness<'static, BaryApp>, size: [u32; 2]) {
@@ -64,6 +77,7 @@ fn a_long_render_shows_progress_and_can_be_cancelled() {
     h.step();
     // The previous picture stays, with its numbers, under the progress bar.
     assert_eq!(shown(&h), (before, generation));
+    laid_out_for(&h, before);
     h.get_by_label_contains("Drawing the 8192×8192 picture");
     h.get_by_label("Cancel").click();
     h.step();
@@ -90,6 +104,7 @@ fn a_long_render_shows_progress_and_can_be_cancelled() {
         .push(StateCommand::SetImageSize(Some([160, 120])));
     h.run();
     assert_eq!(shown(&h).0, [160, 120]);
+    laid_out_for(&h, [160, 120]);
     assert_eq!(shown(&h).1, generation + 1);
     assert_eq!(h.state().canvas().cancelled, None);
     assert!(h.query_by_label_contains("was cancelled").is_none());

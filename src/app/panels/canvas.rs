@@ -331,7 +331,6 @@ pub(crate) fn canvas_ui(
         input.framing,
     );
     let size = lay.size;
-    canvas.pixel_size = lay.pixel_size(ppp);
     let compare = other_image::render_compare(input.gpu, view_settings.compare);
     canvas.update(
         state,
@@ -340,6 +339,20 @@ pub(crate) fn canvas_ui(
         input.texture,
         input.texture_key.clone(),
     );
+    // While a larger render is drawn (or after one was cancelled) the picture shown is an
+    // older one of another size: it is laid out at its own size, so the pixel under the
+    // pointer (and the probe's numbers) are its pixels.
+    let lay = match &canvas.output {
+        Some(o) if o.size != size => layout(
+            available,
+            view_settings.compare,
+            Sizing::Fixed(o.size),
+            ppp,
+            input.framing,
+        ),
+        _ => lay,
+    };
+    canvas.pixel_size = lay.pixel_size(ppp);
     canvas.views = views_of(&lay, state, input.gpu.is_some(), lay.size[0]);
     let (compare, wipe) = (view_settings.compare, view_settings.wipe);
     canvas.upload(ui.ctx(), compare, wipe, input.gpu);
