@@ -74,8 +74,8 @@ const RENDER_CACHE: usize = 4;
 pub const FRAME_BUDGET: Duration = Duration::from_millis(100);
 
 /// Pixels (all the modes' renders together) up to which a render is quick whatever the time
-/// it takes: the largest fixed image size side by side.
-const QUICK_PIXELS: u64 = 2 * 1280 * 720;
+/// it takes: a full-HD image side by side (a canvas fitting a large window).
+const QUICK_PIXELS: u64 = 2 * 1920 * 1080;
 
 /// Triangles up to which a render is quick.
 const QUICK_TRIANGLES: usize = 100_000;
