@@ -69,8 +69,9 @@ type RenderCacheKey = (Scene, Interpolation, TextureKey, Buffers, Rasterizer);
 /// not render again.
 const RENDER_CACHE: usize = 4;
 
-/// How long [`RenderCache::update`] waits for a render that is not [`quick`] before it lets
-/// the frame go on without it (the previous picture stays, with a progress bar and Cancel).
+/// How long [`RenderCache::update`] waits for a render that is not quick (small enough to be a
+/// few tens of milliseconds) before it lets the frame go on without it (the previous picture
+/// stays, with a progress bar and Cancel).
 pub const FRAME_BUDGET: Duration = Duration::from_millis(100);
 
 /// Pixels (all the modes' renders together) up to which a render is quick whatever the time
@@ -197,7 +198,7 @@ impl RenderCache {
 
     /// Renders `state` at `size` for the comparison `compare` if anything the image depends
     /// on changed: `Ok(None)` when nothing did, or while the render runs on (a render that is
-    /// not [`quick`] and takes longer than [`FRAME_BUDGET`] goes on on its own thread; a later
+    /// not quick and takes longer than [`FRAME_BUDGET`] goes on on its own thread; a later
     /// call takes its result, see [`RenderCache::underway`]). `generation` numbers the new
     /// output.
     pub fn update(
