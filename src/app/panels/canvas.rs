@@ -137,7 +137,7 @@ impl CanvasState {
         self.renders.underway()
     }
 
-    /// Cancels the render under way (see [`RenderCache::cancel`]); the picture shown stays.
+    /// Cancels the render under way (its render cache cancels it); the picture shown stays.
     pub fn cancel_render(&mut self) {
         if let Some(size) = self.renders.cancel() {
             self.cancelled = Some(size);
