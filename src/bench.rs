@@ -236,7 +236,7 @@ pub fn draw_view(
             // As the app's canvas: one render in the configuration's mode that keeps the
             // texel difference of the two uvs, then the heatmap.
             raster::render_into(a, mesh, texture, settings, Buffers::DepthDifference)?;
-            heatmap::heatmap_into(a, (texture.width(), texture.height()), heat);
+            heatmap::heatmap_into(a, (texture.width(), texture.height()), heat)?;
             std::hint::black_box(&heat.pixels);
             Ok(())
         }

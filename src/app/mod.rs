@@ -402,7 +402,11 @@ impl BaryApp {
                 .compare_image
                 .as_ref()
                 .is_none_or(|ic| ic.settled(self.canvas.output.as_ref(), mode));
-            shot.step(&ctx, self.canvas.output.is_some() && gpu && image);
+            // Not while a render runs on: the picture shown is an older one. A render that
+            // failed (over the memory budget) is shot with its message in the picture's place.
+            let drawn = (self.canvas.output.is_some() || self.canvas.error.is_some())
+                && self.canvas.underway().is_none();
+            shot.step(&ctx, drawn && gpu && image);
         }
     }
 

@@ -253,7 +253,8 @@ impl Figure {
                 render_of(mode)
                     .map(|r| heatmap::heatmap(&r.frame, (texture.width(), texture.height())))
             })
-            .flatten();
+            .flatten()
+            .transpose()?;
 
         let handles: Vec<HandleMark> = if o.show_handles {
             vertices_on_screen(

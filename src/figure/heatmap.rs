@@ -1,6 +1,7 @@
 //! The difference heatmap: how far apart, in texels, the affine and the perspective-correct
 //! texture coordinates of each pixel are. Reads the framebuffer (which holds both); no GUI code.
 
+use crate::budget::MemoryError;
 use crate::raster::Framebuffer;
 
 use crate::raster::texture::square_texel_difference as square_difference;
@@ -123,11 +124,23 @@ pub fn nice_ceiling(x: f32) -> f32 {
 }
 
 /// The heatmap of a framebuffer for a texture of `texture_size` texels (rows in parallel, on
-/// rayon's current pool).
-pub fn heatmap(frame: &Framebuffer, texture_size: (u32, u32)) -> Heatmap {
+/// rayon's current pool); an error naming the heatmap's size when its memory is refused.
+pub fn heatmap(frame: &Framebuffer, texture_size: (u32, u32)) -> Result<Heatmap, MemoryError> {
     let mut out = Heatmap::default();
-    heatmap_into(frame, texture_size, &mut out);
-    out
+    heatmap_into(frame, texture_size, &mut out)?;
+    Ok(out)
+}
+
+/// Makes `out` hold `n` pixels, asking for the memory fallibly (an error naming the
+/// `width`x`height` heatmap when the system refuses it).
+fn size_pixels(
+    out: &mut Heatmap,
+    n: usize,
+    (width, height): (u32, u32),
+) -> Result<(), MemoryError> {
+    crate::budget::try_resize(&mut out.pixels, n, [0; 4], || {
+        format!("the {width}x{height} difference heatmap")
+    })
 }
 
 /// [`heatmap`] into `out`, reusing its pixel memory (a view redrawn every frame then takes no
@@ -136,7 +149,11 @@ pub fn heatmap(frame: &Framebuffer, texture_size: (u32, u32)) -> Heatmap {
 /// on that scale. Both passes run over plain slices so the compiler vectorizes them; the
 /// largest difference is found among the squares (the square root is monotonic, so
 /// `sqrt(max d^2)` is exactly `max d`).
-pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Heatmap) {
+pub fn heatmap_into(
+    frame: &Framebuffer,
+    texture_size: (u32, u32),
+    out: &mut Heatmap,
+) -> Result<(), MemoryError> {
     use rayon::prelude::*;
     let n = frame.color.len();
     let covered =
@@ -144,8 +161,9 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
     let size = [texture_size.0 as f32, texture_size.1 as f32];
     if frame.texel_difference.len() == n {
         // The render kept the difference itself (`Buffers::DepthDifference`).
+        size_pixels(out, n, (frame.width, frame.height))?;
         from_differences(frame, out);
-        return;
+        return Ok(());
     }
     let max = if covered {
         frame
@@ -160,7 +178,7 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
         0.0
     };
     let scale_max = nice_ceiling(max);
-    out.pixels.resize(n, [0; 4]);
+    size_pixels(out, n, (frame.width, frame.height))?;
     if covered {
         out.pixels
             .par_chunks_mut(HEATMAP_CHUNK)
@@ -179,6 +197,7 @@ pub fn heatmap_into(frame: &Framebuffer, texture_size: (u32, u32), out: &mut Hea
     out.height = frame.height;
     out.max = max;
     out.scale_max = scale_max;
+    Ok(())
 }
 
 /// Colours a run of pixels: [`heat_color`] of the difference where a triangle is drawn, the
@@ -266,7 +285,6 @@ fn from_differences(frame: &Framebuffer, out: &mut Heatmap) {
         .reduce(|| 0.0f32, |x, y| if y > x { y } else { x });
     let scale_max = nice_ceiling(max);
     let table = heat_table();
-    out.pixels.resize(d.len(), [0; 4]);
     out.pixels
         .par_chunks_mut(HEATMAP_CHUNK)
         .zip(frame.color.par_chunks(HEATMAP_CHUNK))
@@ -344,13 +362,13 @@ mod tests {
         let mut scene = Preset::FrontFacing.scene();
         scene.set_size(160, 120);
         let out = render(&scene.to_mesh(), &texture, &scene.settings()).expect("render");
-        let h = heatmap(&out.frame, size);
+        let h = heatmap(&out.frame, size).expect("a small heatmap");
         // Equal w everywhere: the weights agree up to float rounding.
         assert!(h.max < 1e-3, "max {}", h.max);
         let mut floor = Preset::Floor.scene();
         floor.set_size(160, 120);
         let out = render(&floor.to_mesh(), &texture, &floor.settings()).expect("render");
-        let h = heatmap(&out.frame, size);
+        let h = heatmap(&out.frame, size).expect("a small heatmap");
         assert!(h.max > 10.0, "max {}", h.max);
         assert!(h.scale_max >= h.max);
         // The hottest pixel gets the top colour of the scale, up to the map's quantisation.
@@ -382,10 +400,10 @@ mod tests {
             .filter(|&i| drawn(i))
             .map(d)
             .fold(0.0f32, f32::max);
-        let mut reused = heatmap(f, (7, 3));
+        let mut reused = heatmap(f, (7, 3)).expect("a small heatmap");
         assert_eq!(reused.pixels.len(), f.color.len());
-        heatmap_into(f, size, &mut reused);
-        let h = heatmap(f, size);
+        heatmap_into(f, size, &mut reused).expect("a small heatmap");
+        let h = heatmap(f, size).expect("a small heatmap");
         assert_eq!(reused, h);
         assert_eq!(h.max, max);
         assert_eq!(h.scale_max, nice_ceiling(max));
@@ -405,7 +423,7 @@ mod tests {
         crate::raster::render_into(&mut fast, &mesh, &texture, &floor.settings(), buffers)
             .expect("render");
         assert_eq!(fast.buffers(), buffers);
-        assert_eq!(heatmap(&fast, size), h);
+        assert_eq!(heatmap(&fast, size).expect("a small heatmap"), h);
         // Some pixels of each kind, and more than one colour.
         assert!((0..f.color.len()).any(drawn) && !(0..f.color.len()).all(drawn));
         assert!(h.pixels.iter().any(|p| *p != h.pixels[0]));

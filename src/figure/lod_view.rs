@@ -62,7 +62,11 @@ pub fn lod_per_pixel(
     let triangles =
         render::prepare_triangles(&mesh, settings).map_err(|e| FigureError::Draw(e.to_string()))?;
     let size = (texture.width(), texture.height());
-    let mut out = vec![f32::NAN; frame.width as usize * frame.height as usize];
+    let (w, h) = (frame.width, frame.height);
+    let mut out = Vec::new();
+    crate::budget::try_resize(&mut out, w as usize * h as usize, f32::NAN, || {
+        format!("the {w}x{h} level-of-detail image")
+    })?;
     for tri in &triangles {
         for s in &tri.setups {
             let b = s.bounds;

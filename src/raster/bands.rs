@@ -1,7 +1,10 @@
 //! Binning for parallel rasterization: which set-up triangles reach each band of image rows
 //! ([`bin_rows`]). Each band ([`RowBand`](super::framebuffer::RowBand)) is one rayon task of
 //! the full render and of the fast path, and visits only the triangles of its bin, in
-//! submission order. [`RowsDrawn`] counts a band's rows for the progress display.
+//! submission order. [`RowsDrawn`] counts a band's rows for the progress display;
+//! [`stop_at`] stops a band of a cancelled render.
+
+use crate::progress::RenderProgress;
 
 /// The triangles that reach each band of `rows_per_band` rows of an image `height` rows high:
 /// every `(triangle, setup, first row, last row)` of `spans`, in order, is added as
@@ -28,12 +31,21 @@ pub(super) fn bin_rows(
 }
 
 /// Counts a band's rows as drawn ([`crate::progress`]) when the band is done.
-pub(super) struct RowsDrawn(pub(super) u32);
+pub(super) struct RowsDrawn<'a>(pub(super) &'a RenderProgress, pub(super) u32);
 
-impl Drop for RowsDrawn {
+impl Drop for RowsDrawn<'_> {
     fn drop(&mut self) {
-        crate::progress::rows_drawn(self.0);
+        self.0.rows_drawn(self.1);
     }
+}
+
+/// How many triangles a band draws between two looks at its render's cancel flag.
+pub(super) const CANCEL_CHECK_TRIANGLES: usize = 256;
+
+/// Whether the band drawing its `j`th triangle stops there: its render was cancelled (looked
+/// at every [`CANCEL_CHECK_TRIANGLES`] triangles).
+pub(super) fn stop_at(progress: &RenderProgress, j: usize) -> bool {
+    j.is_multiple_of(CANCEL_CHECK_TRIANGLES) && progress.cancelled()
 }
 
 #[cfg(test)]

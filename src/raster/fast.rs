@@ -20,7 +20,7 @@
 
 use glam::{DVec2, I64Vec2, IVec2 as I32Vec2};
 
-use super::bands::{RowsDrawn, bin_rows};
+use super::bands::{RowsDrawn, bin_rows, stop_at};
 use super::clip::{ClipPlane, planes};
 use super::draw::{draw_lanes, draw_scanline_lanes, lane_shading, rasterize, scanline_lanes_apply};
 use super::framebuffer::{Framebuffer, RowBand};
@@ -363,7 +363,7 @@ impl<'m> FastMesh<'m> {
         use rayon::prelude::*;
         let rows_per_band = rows_per_band.max(1);
         let bins = self.bins(frame.height, rows_per_band);
-        crate::progress::render_started(frame.height);
+        let progress = crate::progress::render_started(frame.height);
         let bands = RowBand::split(frame, rows_per_band);
         // Whole triangles go straight to the lanes when they can draw them.
         let shading = lane_shading(params);
@@ -371,7 +371,10 @@ impl<'m> FastMesh<'m> {
             .into_par_iter()
             .zip(&bins)
             .for_each(|(mut band, bin)| {
-                let _drawn = RowsDrawn(band.rows);
+                let _drawn = RowsDrawn(&progress, band.rows);
+                if progress.cancelled() {
+                    return;
+                }
                 band.clear(background);
                 // Both uvs, for the uv buffers or the texel difference.
                 let uvs = !band.uv_affine.is_empty() || !band.texel_difference.is_empty();
@@ -385,6 +388,9 @@ impl<'m> FastMesh<'m> {
                 let drawer = lanes.map(|s| Lanes::new(texture, s, vector));
                 let mut tri = LaneTriangle::EMPTY;
                 for (j, &(ti, si)) in bin.iter().enumerate() {
+                    if stop_at(&progress, j) {
+                        break;
+                    }
                     // The triangles a band visits are scattered over the mesh: ask for the memory
                     // of the ones a few steps ahead while this one draws.
                     if let Some(&(ahead, _)) = bin.get(j + PREFETCH_SLOTS) {

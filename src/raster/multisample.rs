@@ -304,6 +304,7 @@ pub(super) fn draw_frame(
             .enumerate()
             .map(|(i, d)| (i as u32, 0, d.3.y0, d.3.y1)),
     );
+    let progress = crate::progress::render_started(height);
     let bands = RowBand::split(frame, rows_per_band);
     let chunk = (rows_per_band as usize * width as usize * n).max(1);
     bands
@@ -311,6 +312,10 @@ pub(super) fn draw_frame(
         .zip(buffer.samples.par_chunks_mut(chunk))
         .zip(bins)
         .for_each(|((mut band, samples), bin)| {
+            let _drawn = super::bands::RowsDrawn(&progress, band.rows);
+            if progress.cancelled() {
+                return;
+            }
             let triangles = bin.iter().map(|&(i, _)| {
                 let (s, source, flat, bounds) = &drawn[i as usize];
                 (*s, *source, flat.as_ref(), *bounds)

@@ -11,7 +11,7 @@
 //! `fast.rs`'s, the bins `bands.rs`'s and the memory estimate
 //! [`footprint`](super::footprint)'s; none of them calls back into it.
 
-use super::bands::{RowsDrawn, bin_rows};
+use super::bands::{RowsDrawn, bin_rows, stop_at};
 use super::draw::rasterize;
 use super::fast::FastMesh;
 use super::footprint::check_render_samples;
@@ -326,14 +326,17 @@ pub fn rasterize_bands(
                 .map(move |(si, s)| (ti as u32, si as u32, s.bounds.y0, s.bounds.y1))
         }),
     );
-    crate::progress::render_started(frame.height);
+    let progress = crate::progress::render_started(frame.height);
     let bands = RowBand::split(frame, rows_per_band);
     bands.into_par_iter().zip(bins).for_each(|(mut band, bin)| {
-        let _drawn = RowsDrawn(band.rows);
+        let _drawn = RowsDrawn(&progress, band.rows);
         if let Some(background) = clear {
             band.clear(background);
         }
-        for (ti, si) in bin {
+        for (j, (ti, si)) in bin.into_iter().enumerate() {
+            if stop_at(&progress, j) {
+                break;
+            }
             let tri = &triangles[ti as usize];
             let setup = &tri.setups[si as usize];
             rasterize(

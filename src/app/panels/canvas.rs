@@ -1,6 +1,7 @@
 //! The canvas panel: the CPU-rendered image (one or two views), the overlays, the vertex
 //! handles, hovering and pinning pixels. The renders themselves: `crate::app::services::render`.
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use egui::{Color32, CursorIcon, Id, Pos2, Rect, Sense, TextureHandle, TextureOptions, Ui};
@@ -8,11 +9,14 @@ use glam::DVec2;
 
 use crate::app::document::state::{AppState, StateCommand};
 use crate::app::panels::canvas_layout::{Sizing, layout};
+use crate::app::panels::canvas_progress;
 use crate::app::panels::gpu_view::GpuView;
 use crate::app::panels::other_image;
 use crate::app::panels::paint::{self, CanvasTransform};
 use crate::app::services::pixel::PixelReport;
-use crate::app::services::render::{CanvasOutput, RenderCache, TextureKey, view_image};
+use crate::app::services::render::{
+    CanvasOutput, RenderCache, RenderFailure, TextureKey, view_image,
+};
 use crate::figure::overlay::{self, HandleMark, OverlayInput};
 use crate::figure::{Compare, VertexOnScreen, ViewContent, vertices_on_screen};
 use crate::raster::project::Viewport;
@@ -93,8 +97,10 @@ pub struct CanvasState {
     pub hover: Option<[u32; 2]>,
     /// Timings of the last render and upload.
     pub timing: CanvasTiming,
-    /// Why the last render failed, for the canvas to show.
-    pub error: Option<String>,
+    /// Why the last render failed, for the canvas to show in the picture's place.
+    pub error: Option<RenderFailure>,
+    /// The size of a render that was cancelled: the picture shown is an older one.
+    pub cancelled: Option<[u32; 2]>,
     /// Screen pixels per rendered pixel as drawn (whole, 1 to 32): the overlay's grid and
     /// the exported figure's pixel size.
     pub pixel_size: u32,
@@ -126,13 +132,25 @@ impl CanvasState {
         self.textures.get(i).map(|t| (t.id(), out.size))
     }
 
-    /// Renders if anything the image depends on changed. Returns whether it rendered.
+    /// A render under way on its own thread (it took longer than a frame), if any.
+    pub fn underway(&self) -> Option<crate::app::services::render::Underway> {
+        self.renders.underway()
+    }
+
+    /// Cancels the render under way (its render cache cancels it); the picture shown stays.
+    pub fn cancel_render(&mut self) {
+        if let Some(size) = self.renders.cancel() {
+            self.cancelled = Some(size);
+        }
+    }
+
+    /// Renders if anything the image depends on changed. Returns whether a new picture came.
     pub fn update(
         &mut self,
         state: &AppState,
         compare: Compare,
         size: [u32; 2],
-        texture: &Texture,
+        texture: &Arc<Texture>,
         texture_key: TextureKey,
     ) -> bool {
         let generation = self.output.as_ref().map_or(0, |o| o.generation + 1);
@@ -150,6 +168,7 @@ impl CanvasState {
                     self.renders.recycle(old);
                 }
                 self.error = None;
+                self.cancelled = None;
                 true
             }
             Err(e) => {
@@ -202,7 +221,7 @@ pub(crate) struct CanvasInput<'a> {
     /// The document the canvas renders and edits.
     pub state: &'a AppState,
     /// The scene's texture, loaded.
-    pub texture: &'a Texture,
+    pub texture: &'a Arc<Texture>,
     /// Identifies the texture, so a new one triggers a new render.
     pub texture_key: TextureKey,
     /// Derivations of the hovered and pinned pixels from the last frame (for the overlay).
@@ -312,7 +331,6 @@ pub(crate) fn canvas_ui(
         input.framing,
     );
     let size = lay.size;
-    canvas.pixel_size = lay.pixel_size(ppp);
     let compare = other_image::render_compare(input.gpu, view_settings.compare);
     canvas.update(
         state,
@@ -321,16 +339,34 @@ pub(crate) fn canvas_ui(
         input.texture,
         input.texture_key.clone(),
     );
+    // While a larger render is drawn (or after one was cancelled) the picture shown is an
+    // older one of another size: it is laid out at its own size, so the pixel under the
+    // pointer (and the probe's numbers) are its pixels.
+    let lay = match &canvas.output {
+        Some(o) if o.size != size => layout(
+            available,
+            view_settings.compare,
+            Sizing::Fixed(o.size),
+            ppp,
+            input.framing,
+        ),
+        _ => lay,
+    };
+    canvas.pixel_size = lay.pixel_size(ppp);
     canvas.views = views_of(&lay, state, input.gpu.is_some(), lay.size[0]);
     let (compare, wipe) = (view_settings.compare, view_settings.wipe);
     canvas.upload(ui.ctx(), compare, wipe, input.gpu);
+    if let Some(e) = &canvas.error {
+        // In the picture's place: an older picture (or the handles of a scene it cannot
+        // draw over it) would not belong to what the controls show.
+        canvas_progress::failure_ui(ui, e, lang);
+        canvas.handles.clear();
+        return out;
+    }
+    if canvas_progress::underway_ui(ui, available, canvas.underway(), canvas.cancelled, lang) {
+        canvas.cancel_render();
+    }
     let Some(output) = &canvas.output else {
-        if let Some(e) = &canvas.error {
-            ui.colored_label(
-                Color32::LIGHT_RED,
-                lang.tr_with("app.canvas.render_failed", &[("error", e)]),
-            );
-        }
         return out;
     };
     let viewport = output.viewport();

@@ -5,6 +5,7 @@ pub(crate) mod bench_chart;
 pub mod bench_panel;
 pub mod canvas;
 pub mod canvas_layout;
+pub(crate) mod canvas_progress;
 pub mod compare_image;
 pub(crate) mod controls;
 pub(crate) mod corners;
