@@ -105,6 +105,8 @@ pub struct BaryApp {
     banner: Option<Banner>,
     bench: BenchPanel,
     export: ExportPanel,
+    /// File > Export animation… and the recorder.
+    animation: panels::export_animation::AnimationPanel,
     /// Presentation mode: panels hidden, the pixel card in large print.
     presenting: bool,
     /// Presentation mode shows the 3D view in the picture's place (V; narrow windows only).
@@ -208,6 +210,7 @@ impl BaryApp {
             banner: None,
             bench: BenchPanel::default(),
             export: ExportPanel::new(export_settings),
+            animation: Default::default(),
             presenting: options.present,
             space_full: false,
             space_toggle_offered: false,
@@ -384,6 +387,7 @@ impl BaryApp {
         let before =
             (!self.commands.is_empty()).then(|| document::history::Snapshot::of(&self.state));
         self.apply_commands(&ctx, &texture);
+        self.animation_frame(&ctx, &texture);
         // A drag (a button held) is one undo step, taken when it is released.
         let held = ctx.input(|i| i.pointer.any_down());
         self.history.track(before, &self.state, held);
@@ -447,6 +451,7 @@ impl BaryApp {
                 folder_text,
             )));
         }
+        self.animation_window(&ctx, &mut out);
         egui::Panel::bottom("status").show(ui, |ui| {
             panels::status::status_ui(
                 ui,
@@ -575,6 +580,8 @@ impl BaryApp {
                 let rendered = self.canvas.output.as_ref().map(|o| (&o.scene, texture));
                 self.bench.apply(ctx, c, rendered);
             }
+            AppCommand::Animation(c) => self.apply_animation(ctx, c, texture),
+            AppCommand::File(FileCommand::ExportAnimation) => self.animation.open = true,
             AppCommand::File(FileCommand::Open(path)) => self.open_file(&path),
             AppCommand::File(FileCommand::ClearRecent) => self.recent.0.clear(),
             AppCommand::File(FileCommand::DismissBanner) => self.banner = None,

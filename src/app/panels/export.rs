@@ -31,7 +31,7 @@ pub struct Outcome {
 }
 
 impl Outcome {
-    fn failed(message: impl Into<String>) -> Self {
+    pub(crate) fn failed(message: impl Into<String>) -> Self {
         let message = message.into();
         Self {
             error: true,
@@ -40,7 +40,7 @@ impl Outcome {
         }
     }
 
-    fn done(message: impl Into<String>) -> Self {
+    pub(crate) fn done(message: impl Into<String>) -> Self {
         let message = message.into();
         Self {
             error: false,

@@ -1,0 +1,311 @@
+//! The Export animation window's widgets ([`super::export_animation`] has its state): they
+//! return commands, like every panel.
+
+use std::path::PathBuf;
+
+use egui::{Color32, RichText, Ui};
+
+use super::export_animation::{FPS_RANGE, SWEEP_FRAMES, WindowView, sweep_key};
+use crate::animate::{Format, Sweep};
+use crate::app::command::{AnimationCommand, AnimationKind, AppCommand, ExportCommand};
+use crate::app::services::recorder::RECORD_FPS;
+use crate::figure::{Background, SCALES};
+use crate::i18n::Lang;
+
+/// The corners the depth and clip sweeps offer.
+const CORNERS: usize = 4;
+
+/// The window's contents.
+pub(crate) fn contents(
+    ui: &mut Ui,
+    view: &WindowView<'_>,
+    folder_text: &mut String,
+    out: &mut Vec<AppCommand>,
+) {
+    let lang = crate::app::services::locale::lang(ui.ctx());
+    let panel = view.panel;
+    egui::Grid::new("animation-grid")
+        .num_columns(2)
+        .spacing([12.0, 8.0])
+        .show(ui, |ui| {
+            ui.label(lang.tr("animate.app.what"));
+            ui.horizontal_wrapped(|ui| {
+                for (k, key) in [
+                    (AnimationKind::Sweep, "animate.app.kind_sweep"),
+                    (AnimationKind::Recording, "animate.app.kind_recording"),
+                ] {
+                    if ui.selectable_label(panel.kind == k, lang.tr(key)).clicked() {
+                        out.push(AnimationCommand::SetKind(k).into());
+                    }
+                }
+            });
+            ui.end_row();
+            match panel.kind {
+                AnimationKind::Sweep => sweep_rows(ui, view, lang, out),
+                AnimationKind::Recording => recording_rows(ui, view, lang, out),
+            }
+            let mut fps = panel.fps;
+            ui.label(lang.tr("animate.app.fps"));
+            if ui
+                .add(egui::Slider::new(&mut fps, FPS_RANGE.0..=FPS_RANGE.1))
+                .changed()
+            {
+                out.push(AnimationCommand::SetFps(fps).into());
+            }
+            ui.end_row();
+
+            ui.label(lang.tr("animate.app.format"));
+            ui.horizontal_wrapped(|ui| {
+                let ffmpeg = panel.ffmpeg.unwrap_or(false);
+                for f in [Format::Gif, Format::Apng, Format::WebP, Format::Mp4] {
+                    let enabled = f != Format::Mp4 || ffmpeg;
+                    let r = ui
+                        .add_enabled(
+                            enabled,
+                            egui::Button::selectable(panel.format == f, f.name()),
+                        )
+                        .on_disabled_hover_text(lang.tr("animate.app.no_ffmpeg"));
+                    if r.clicked() {
+                        out.push(AnimationCommand::SetFormat(f).into());
+                    }
+                }
+            });
+            ui.end_row();
+
+            ui.label(lang.tr("app.export.scale"))
+                .on_hover_text(lang.tr("app.export.scale_tip"));
+            ui.horizontal(|ui| {
+                for k in SCALES {
+                    if ui
+                        .selectable_label(view.settings.scale == k, format!("{k}x"))
+                        .clicked()
+                    {
+                        out.push(ExportCommand::SetScale(k).into());
+                    }
+                }
+                if let Some([w, h]) = view.size {
+                    ui.label(
+                        RichText::new(lang.tr_with("animate.app.image", &[("w", &w), ("h", &h)]))
+                            .weak(),
+                    );
+                }
+            });
+            ui.end_row();
+
+            ui.label(lang.tr("app.export.background"));
+            ui.horizontal_wrapped(|ui| {
+                for (b, key) in [
+                    (Background::White, "app.export.white"),
+                    (Background::Transparent, "app.export.transparent"),
+                ] {
+                    if ui
+                        .selectable_label(view.settings.background == b, lang.tr(key))
+                        .clicked()
+                    {
+                        out.push(ExportCommand::SetBackground(b).into());
+                    }
+                }
+            });
+            ui.end_row();
+
+            ui.label(lang.tr("animate.app.labels"));
+            ui.horizontal_wrapped(|ui| {
+                let choices = [
+                    (None, lang.tr("animate.app.labels_app")),
+                    (Some(Lang::En), "English".to_string()),
+                    (Some(Lang::Zh), "中文".to_string()),
+                ];
+                for (l, label) in choices {
+                    let enabled = l != Some(Lang::Zh) || view.cjk;
+                    let r =
+                        ui.add_enabled(enabled, egui::Button::selectable(panel.lang == l, label));
+                    if r.clicked() {
+                        out.push(AnimationCommand::SetLang(l).into());
+                    }
+                }
+            });
+            ui.end_row();
+
+            ui.label(lang.tr("animate.app.pinned"));
+            ui.label(match view.pinned {
+                Some([x, y]) => format!("({x}, {y})"),
+                None => lang.tr("animate.app.no_pin"),
+            });
+            ui.end_row();
+
+            ui.label(lang.tr("app.export.folder"));
+            ui.horizontal(|ui| {
+                let field = ui.add(
+                    egui::TextEdit::singleline(folder_text)
+                        .hint_text(lang.tr("app.export.folder_hint"))
+                        .desired_width(220.0),
+                );
+                if field.changed() {
+                    let t = folder_text.trim();
+                    if !t.is_empty() {
+                        out.push(ExportCommand::SetFolder(PathBuf::from(t)).into());
+                    }
+                }
+                if ui.button(lang.tr("app.export.browse")).clicked() {
+                    out.push(ExportCommand::BrowseFolder.into());
+                }
+            });
+            ui.end_row();
+        });
+    let mut caption = view.settings.caption;
+    ui.checkbox(&mut caption, lang.tr("figure.caption.option"))
+        .on_hover_text(lang.tr("figure.caption.option_tip"));
+    if caption != view.settings.caption {
+        out.push(ExportCommand::SetCaption(caption).into());
+    }
+    ui.add_space(4.0);
+    buttons(ui, view, lang, out);
+    if let Some(o) = &panel.outcome {
+        ui.separator();
+        let color = if o.error {
+            Color32::from_rgb(255, 120, 110)
+        } else {
+            Color32::from_rgb(140, 220, 140)
+        };
+        for line in &o.lines {
+            ui.label(RichText::new(line).color(color));
+        }
+    }
+}
+
+/// Export, or the progress bar and Cancel while exporting.
+fn buttons(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppCommand>) {
+    let panel = view.panel;
+    match panel.progress() {
+        Some((done, total)) => {
+            ui.horizontal(|ui| {
+                let f = done as f32 / total.max(1) as f32;
+                ui.add(
+                    egui::ProgressBar::new(f).desired_width(200.0).text(
+                        lang.tr_with("animate.app.progress", &[("done", &done), ("n", &total)]),
+                    ),
+                );
+                if ui.button(lang.tr("animate.app.cancel")).clicked() {
+                    out.push(AnimationCommand::Cancel.into());
+                }
+            });
+        }
+        None => {
+            let ready = !panel.recorder.recording();
+            if ui
+                .add_enabled(
+                    ready,
+                    egui::Button::new(RichText::new(lang.tr("animate.app.export")).strong()),
+                )
+                .on_hover_text(lang.tr("animate.app.export_tip"))
+                .clicked()
+            {
+                out.push(AnimationCommand::Export.into());
+            }
+        }
+    }
+}
+
+/// The sweep, its corner and its frames.
+fn sweep_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppCommand>) {
+    let panel = view.panel;
+    ui.label(lang.tr("animate.app.sweep"));
+    egui::ComboBox::from_id_salt("animation-sweep")
+        .selected_text(lang.tr(&sweep_key(panel.sweep)))
+        .width(220.0)
+        .show_ui(ui, |ui| {
+            for s in Sweep::ALL {
+                if ui
+                    .selectable_label(panel.sweep == s, lang.tr(&sweep_key(s)))
+                    .on_hover_text(s.name())
+                    .clicked()
+                {
+                    out.push(AnimationCommand::SetSweep(s).into());
+                }
+            }
+        });
+    ui.end_row();
+    if panel.sweep.moves_vertex() {
+        ui.label(lang.tr("animate.app.corner"));
+        ui.horizontal(|ui| {
+            for v in 0..CORNERS {
+                let name = crate::scene::vertex_name(v);
+                if ui.selectable_label(panel.vertex == v, name).clicked() {
+                    out.push(AnimationCommand::SetVertex(v).into());
+                }
+            }
+        });
+        ui.end_row();
+    }
+    let mut frames = panel.frames;
+    ui.label(lang.tr("animate.app.frames"));
+    if ui
+        .add(egui::Slider::new(
+            &mut frames,
+            SWEEP_FRAMES.0..=SWEEP_FRAMES.1,
+        ))
+        .changed()
+    {
+        out.push(AnimationCommand::SetFrames(frames).into());
+    }
+    ui.end_row();
+}
+
+/// Record / Stop, what is recorded, and the trim.
+fn recording_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppCommand>) {
+    let r = &view.panel.recorder;
+    let seconds = |n: usize| format!("{:.1}", n as f64 / RECORD_FPS);
+    ui.label(lang.tr("animate.app.recording"));
+    ui.horizontal_wrapped(|ui| {
+        let (key, color) = if r.recording() {
+            ("animate.app.stop", Color32::from_rgb(255, 120, 110))
+        } else {
+            ("animate.app.record", Color32::from_rgb(230, 80, 70))
+        };
+        if ui
+            .button(RichText::new(lang.tr(key)).color(color).strong())
+            .on_hover_text(lang.tr("animate.app.record_tip"))
+            .clicked()
+        {
+            out.push(AnimationCommand::ToggleRecord.into());
+        }
+        let n = r.len();
+        let status = if r.recording() {
+            lang.tr_with(
+                "animate.app.recording_now",
+                &[("n", &n), ("seconds", &seconds(n))],
+            )
+        } else if r.is_empty() {
+            lang.tr("animate.app.nothing_recorded")
+        } else {
+            lang.tr_with(
+                "animate.app.recorded",
+                &[("n", &n), ("seconds", &seconds(n))],
+            )
+        };
+        ui.label(status);
+    });
+    ui.end_row();
+    if r.recording() || r.len() < 2 {
+        return;
+    }
+    let last = r.len() - 1;
+    let (mut a, mut b) = r.trim;
+    ui.label(lang.tr("animate.app.first"));
+    let first = ui.add(egui::Slider::new(&mut a, 0..=last));
+    ui.end_row();
+    ui.label(lang.tr("animate.app.last"));
+    let second = ui.add(egui::Slider::new(&mut b, 0..=last));
+    ui.end_row();
+    if first.changed() || second.changed() {
+        out.push(AnimationCommand::SetTrim(a.min(b), b.max(a)).into());
+    }
+    let kept = b.saturating_sub(a) + 1;
+    let playing = format!("{:.1}", kept as f64 / f64::from(view.panel.fps.max(1)));
+    ui.label("");
+    ui.label(
+        RichText::new(lang.tr_with("animate.app.kept", &[("n", &kept), ("seconds", &playing)]))
+            .weak(),
+    );
+    ui.end_row();
+}
