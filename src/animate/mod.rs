@@ -115,6 +115,16 @@ pub struct FrameState {
     pub filled: Option<usize>,
 }
 
+/// The corner named `name` (A, B, C, ...; any case), as a mesh vertex index.
+///
+/// ```
+/// assert_eq!(barylab::animate::vertex_by_name(" c"), Some(2));
+/// assert_eq!(barylab::animate::vertex_by_name("AB"), None);
+/// ```
+pub fn vertex_by_name(name: &str) -> Option<usize> {
+    (0..26).find(|&i| crate::scene::vertex_name(i).eq_ignore_ascii_case(name.trim()))
+}
+
 /// Frame `i`'s time `t = i / (n - 1)`.
 fn time(i: u32, n: u32) -> f64 {
     f64::from(i) / f64::from(n.max(2) - 1)

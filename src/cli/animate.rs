@@ -34,8 +34,7 @@ fn parse_vertex(s: &str) -> Result<usize, String> {
     if let Ok(i) = t.parse::<usize>() {
         return Ok(i);
     }
-    (0..26)
-        .find(|&i| barylab::scene::vertex_name(i).eq_ignore_ascii_case(t))
+    animate::vertex_by_name(t)
         .ok_or_else(|| format!("`{s}` is not a vertex: a name A, B, C, ... or an index from 0"))
 }
 

@@ -228,7 +228,26 @@ pub struct Step {
     pub plot: Option<LessonPlot>,
     /// The 3D view beside the canvas (default off).
     pub space_view: bool,
+    /// A moving figure for the step's slide (`barylab lesson --slides`), in place of the
+    /// still one.
+    pub animation: Option<StepAnimation>,
 }
+
+/// A step's moving figure: a sweep of the step's scene with the step's figure options, as
+/// `barylab animate` makes it (`"animation": {"sweep": "depth", "frames": 10}`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepAnimation {
+    /// What moves.
+    pub sweep: crate::animate::Sweep,
+    /// Frames, [`STEP_ANIMATION_FRAMES`] (few: a deck stays small).
+    pub frames: u32,
+    /// The corner the depth and clip sweeps move (mesh vertex index; written as its name,
+    /// default C).
+    pub vertex: usize,
+}
+
+/// The frames a step's animation may have (default 10).
+pub const STEP_ANIMATION_FRAMES: (u32, u32) = (2, 40);
 
 /// A lesson: a title and its steps.
 #[derive(Clone, Debug, PartialEq)]

@@ -6,9 +6,11 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
+use crate::animate::Sweep;
+
 use super::{
-    Compare, InspectorSection, Lesson, LessonError, LessonPlot, Overlays, SceneSource, Step,
-    StepScene, Text, builtin,
+    Compare, InspectorSection, Lesson, LessonError, LessonPlot, Overlays, STEP_ANIMATION_FRAMES,
+    SceneSource, Step, StepAnimation, StepScene, Text, builtin,
 };
 use crate::files::{self, FileKind, shown};
 use crate::raster::project::MAX_IMAGE_SIZE;
@@ -96,6 +98,63 @@ struct RawStep {
     plot: Option<LessonPlot>,
     #[serde(default)]
     space_view: bool,
+    #[serde(default)]
+    animation: Option<StepAnimation>,
+}
+
+/// A step's animation as written.
+#[derive(Deserialize)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "an animation: a JSON object with `sweep` and optionally `frames` and `vertex`"
+)]
+struct RawAnimation {
+    sweep: String,
+    #[serde(default = "default_animation_frames")]
+    frames: u32,
+    #[serde(default = "default_animation_vertex")]
+    vertex: String,
+}
+
+fn default_animation_frames() -> u32 {
+    10
+}
+
+fn default_animation_vertex() -> String {
+    "C".into()
+}
+
+impl<'de> Deserialize<'de> for StepAnimation {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde::de::Error;
+        let r = RawAnimation::deserialize(d)?;
+        let sweep = Sweep::from_name(&r.sweep).ok_or_else(|| {
+            let names: Vec<&str> = Sweep::ALL.iter().map(|s| s.name()).collect();
+            D::Error::custom(format!(
+                "`sweep` `{}` is not a sweep: one of {}",
+                r.sweep,
+                names.join(", ")
+            ))
+        })?;
+        let (lo, hi) = STEP_ANIMATION_FRAMES;
+        if !(lo..=hi).contains(&r.frames) {
+            return Err(D::Error::custom(format!(
+                "`frames` {} is outside {lo}..={hi}",
+                r.frames
+            )));
+        }
+        let vertex = crate::animate::vertex_by_name(&r.vertex).ok_or_else(|| {
+            D::Error::custom(format!(
+                "`vertex` `{}` is not a corner's name (A, B, C, ...)",
+                r.vertex
+            ))
+        })?;
+        Ok(StepAnimation {
+            sweep,
+            frames: r.frames,
+            vertex,
+        })
+    }
 }
 
 impl<'de> Deserialize<'de> for Step {
@@ -144,6 +203,7 @@ impl<'de> Deserialize<'de> for Step {
             inspector: r.inspector,
             plot: r.plot,
             space_view: r.space_view,
+            animation: r.animation,
         })
     }
 }
