@@ -234,7 +234,8 @@ pub struct Step {
 }
 
 /// A step's moving figure: a sweep of the step's scene with the step's figure options, as
-/// `barylab animate` makes it (`"animation": {"sweep": "depth", "frames": 10}`).
+/// `barylab animate` makes it (`"animation": {"sweep": "depth", "frames": 10, "format":
+/// "apng"}`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepAnimation {
     /// What moves.
@@ -244,6 +245,8 @@ pub struct StepAnimation {
     /// The corner the depth and clip sweeps move (mesh vertex index; written as its name,
     /// default C).
     pub vertex: usize,
+    /// GIF (default: small, 256 colours) or APNG (lossless: smooth colour gradients).
+    pub format: crate::animate::Format,
 }
 
 /// The frames a step's animation may have (default 10).

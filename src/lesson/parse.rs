@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
-use crate::animate::Sweep;
+use crate::animate::{Format, Sweep};
 
 use super::{
     Compare, InspectorSection, Lesson, LessonError, LessonPlot, Overlays, STEP_ANIMATION_FRAMES,
@@ -106,7 +106,7 @@ struct RawStep {
 #[derive(Deserialize)]
 #[serde(
     deny_unknown_fields,
-    expecting = "an animation: a JSON object with `sweep` and optionally `frames` and `vertex`"
+    expecting = "an animation: a JSON object with `sweep` and optionally `frames`, `vertex` and `format`"
 )]
 struct RawAnimation {
     sweep: String,
@@ -114,6 +114,8 @@ struct RawAnimation {
     frames: u32,
     #[serde(default = "default_animation_vertex")]
     vertex: String,
+    #[serde(default)]
+    format: Option<String>,
 }
 
 fn default_animation_frames() -> u32 {
@@ -149,10 +151,20 @@ impl<'de> Deserialize<'de> for StepAnimation {
                 r.vertex
             ))
         })?;
+        let format = match r.format.as_deref() {
+            None | Some("gif") => Format::Gif,
+            Some("apng") => Format::Apng,
+            Some(f) => {
+                return Err(D::Error::custom(format!(
+                    "`format` `{f}` is not an animation format for slides: gif or apng"
+                )));
+            }
+        };
         Ok(StepAnimation {
             sweep,
             frames: r.frames,
             vertex,
+            format,
         })
     }
 }

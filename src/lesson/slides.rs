@@ -6,7 +6,7 @@
 //! block, as the app shows it), the style and the few lines of script are inline. A title
 //! slide, then one slide per step: its title, summary, text and "try this" beside its figure
 //! and row plot (the handout's pictures, [`super::handout::step_pictures`]); a step with an
-//! `animation` shows it in place of the still figure, as a small looping GIF `data:` URI
+//! `animation` shows it in place of the still figure, as a small looping GIF or APNG `data:` URI
 //! ([`step_animation`]; the Beamer PDF keeps the still). The arrow keys,
 //! Page Up / Page Down (what a presentation clicker sends), the space bar, Enter, Backspace,
 //! Home and End step through it; a click on the right (left) half goes forward (back); the
@@ -120,8 +120,9 @@ const SCRIPT: &str = r#"
 /// Frames per second of a slide's animation.
 pub const SLIDE_FPS: f64 = 5.0;
 
-/// A step's animation as a GIF (one palette, looping): its sweep of the step's scene, every
-/// frame drawn with the step's figure options ([`crate::animate::render_frames`]).
+/// A step's animation as a GIF (one palette) or an APNG, looping: its sweep of the step's
+/// scene, every frame drawn with the step's figure options
+/// ([`crate::animate::render_frames`]).
 pub fn step_animation(
     state: &StepState,
     texture: &Texture,
@@ -140,7 +141,7 @@ pub fn step_animation(
         options: state.figure_options(),
     };
     let frames = animate::render_frames(&state.scene, texture, &anim, lang).map_err(error)?;
-    animate::encode(&frames, SLIDE_FPS, animate::Format::Gif).map_err(error)
+    animate::encode(&frames, SLIDE_FPS, animation.format).map_err(error)
 }
 
 /// One step's slide.
@@ -174,10 +175,14 @@ fn step_slide(
     s.push_str("</div><div class=\"pictures\">\n");
     let figure = match &step.animation {
         Some(a) => {
-            let gif = step_animation(&state, &texture, a, number, lang)?;
+            let bytes = step_animation(&state, &texture, a, number, lang)?;
+            let mime = match a.format {
+                animate::Format::Gif => "gif",
+                _ => "png",
+            };
             format!(
-                "data:image/gif;base64,{}",
-                base64::engine::general_purpose::STANDARD.encode(gif)
+                "data:image/{mime};base64,{}",
+                base64::engine::general_purpose::STANDARD.encode(bytes)
             )
         }
         None => png_uri(&pictures.figure),
