@@ -29,7 +29,10 @@ fn corner_a(h: &Harness<'_, BaryApp>) -> egui::Pos2 {
 fn wait_for_export(h: &mut Harness<'_, BaryApp>) {
     let start = Instant::now();
     while h.state().animation_panel().exporting() {
-        assert!(start.elapsed() < Duration::from_secs(120), "the export ends");
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "the export ends"
+        );
         std::thread::sleep(Duration::from_millis(50));
         h.step();
     }
@@ -111,7 +114,11 @@ fn a_recorded_drag_exports_as_a_gif_with_a_frame_per_kept_state() {
         .expect("an outcome");
     assert!(!outcome.error, "{:?}", outcome.lines);
     let path = dir.path().join("animation-001.gif");
-    assert!(outcome.summary.contains("animation-001.gif"), "{}", outcome.summary);
+    assert!(
+        outcome.summary.contains("animation-001.gif"),
+        "{}",
+        outcome.summary
+    );
     assert!(outcome.summary.contains(&format!("{} frames", n - 2)));
     assert_eq!(h.state().message(), Some(outcome.summary.as_str()));
 
@@ -127,7 +134,11 @@ fn a_recorded_drag_exports_as_a_gif_with_a_frame_per_kept_state() {
             same_state,
             "frames {k} and {}: the state {}",
             k + 1,
-            if same_state { "did not change" } else { "changed" }
+            if same_state {
+                "did not change"
+            } else {
+                "changed"
+            }
         );
         changes += usize::from(!same_state);
     }

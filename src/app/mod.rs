@@ -239,6 +239,10 @@ impl BaryApp {
         if let Some((lesson, step)) = options.lesson {
             app.enter_lesson(lesson, step);
         }
+        if let Some(kind) = options.animation_window {
+            app.push(command::AnimationCommand::Open);
+            app.push(command::AnimationCommand::SetKind(kind));
+        }
         if let Some(p) = options.pin {
             app.push(document::state::StateCommand::Pin(Some(p)));
         }

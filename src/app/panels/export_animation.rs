@@ -329,6 +329,7 @@ impl BaryApp {
             .pivot(egui::Align2::RIGHT_TOP)
             .default_pos(ctx.content_rect().right_top() + egui::vec2(-20.0, 60.0))
             .show(ctx, |ui| {
+                super::export_animation_ui::actions(ui, &view, &mut cmds);
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     super::export_animation_ui::contents(ui, &view, folder_text, &mut cmds);
                 });

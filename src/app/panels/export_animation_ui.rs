@@ -1,8 +1,6 @@
 //! The Export animation window's widgets ([`super::export_animation`] has its state): they
 //! return commands, like every panel.
 
-use std::path::PathBuf;
-
 use egui::{Color32, RichText, Ui};
 
 use super::export_animation::{FPS_RANGE, SWEEP_FRAMES, WindowView, sweep_key};
@@ -26,7 +24,7 @@ pub(crate) fn contents(
     let panel = view.panel;
     egui::Grid::new("animation-grid")
         .num_columns(2)
-        .spacing([12.0, 8.0])
+        .spacing([12.0, 6.0])
         .show(ui, |ui| {
             ui.label(lang.tr("animate.app.what"));
             ui.horizontal_wrapped(|ui| {
@@ -45,11 +43,8 @@ pub(crate) fn contents(
                 AnimationKind::Recording => recording_rows(ui, view, lang, out),
             }
             let mut fps = panel.fps;
-            ui.label(lang.tr("animate.app.fps"));
-            if ui
-                .add(egui::Slider::new(&mut fps, FPS_RANGE.0..=FPS_RANGE.1))
-                .changed()
-            {
+            let label = ui.label(lang.tr("animate.app.fps"));
+            if slider(ui, &mut fps, FPS_RANGE.0..=FPS_RANGE.1, label.id) {
                 out.push(AnimationCommand::SetFps(fps).into());
             }
             ui.end_row();
@@ -133,24 +128,9 @@ pub(crate) fn contents(
             });
             ui.end_row();
 
-            ui.label(lang.tr("app.export.folder"));
-            ui.horizontal(|ui| {
-                let field = ui.add(
-                    egui::TextEdit::singleline(folder_text)
-                        .hint_text(lang.tr("app.export.folder_hint"))
-                        .desired_width(220.0),
-                );
-                if field.changed() {
-                    let t = folder_text.trim();
-                    if !t.is_empty() {
-                        out.push(ExportCommand::SetFolder(PathBuf::from(t)).into());
-                    }
-                }
-                if ui.button(lang.tr("app.export.browse")).clicked() {
-                    out.push(ExportCommand::BrowseFolder.into());
-                }
-            });
-            ui.end_row();
+            let mut folder = Vec::new();
+            super::export::folder_row(ui, folder_text, 180.0, &mut folder);
+            out.extend(folder.into_iter().map(AppCommand::from));
         });
     let mut caption = view.settings.caption;
     ui.checkbox(&mut caption, lang.tr("figure.caption.option"))
@@ -158,19 +138,17 @@ pub(crate) fn contents(
     if caption != view.settings.caption {
         out.push(ExportCommand::SetCaption(caption).into());
     }
-    ui.add_space(4.0);
+}
+
+/// Export (or the progress bar and Cancel) and what the last export did: above the settings,
+/// so that they stay in view when the settings scroll.
+pub(crate) fn actions(ui: &mut Ui, view: &WindowView<'_>, out: &mut Vec<AppCommand>) {
+    let lang = crate::app::services::locale::lang(ui.ctx());
     buttons(ui, view, lang, out);
-    if let Some(o) = &panel.outcome {
-        ui.separator();
-        let color = if o.error {
-            Color32::from_rgb(255, 120, 110)
-        } else {
-            Color32::from_rgb(140, 220, 140)
-        };
-        for line in &o.lines {
-            ui.label(RichText::new(line).color(color));
-        }
+    if let Some(o) = &view.panel.outcome {
+        super::export::outcome_lines(ui, o);
     }
+    ui.separator();
 }
 
 /// Export, or the progress bar and Cancel while exporting.
@@ -209,7 +187,7 @@ fn buttons(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppComm
 /// The sweep, its corner and its frames.
 fn sweep_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppCommand>) {
     let panel = view.panel;
-    ui.label(lang.tr("animate.app.sweep"));
+    let label = ui.label(lang.tr("animate.app.sweep"));
     egui::ComboBox::from_id_salt("animation-sweep")
         .selected_text(lang.tr(&sweep_key(panel.sweep)))
         .width(220.0)
@@ -223,7 +201,9 @@ fn sweep_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppC
                     out.push(AnimationCommand::SetSweep(s).into());
                 }
             }
-        });
+        })
+        .response
+        .labelled_by(label.id);
     ui.end_row();
     if panel.sweep.moves_vertex() {
         ui.label(lang.tr("animate.app.corner"));
@@ -238,14 +218,8 @@ fn sweep_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppC
         ui.end_row();
     }
     let mut frames = panel.frames;
-    ui.label(lang.tr("animate.app.frames"));
-    if ui
-        .add(egui::Slider::new(
-            &mut frames,
-            SWEEP_FRAMES.0..=SWEEP_FRAMES.1,
-        ))
-        .changed()
-    {
+    let label = ui.label(lang.tr("animate.app.frames"));
+    if slider(ui, &mut frames, SWEEP_FRAMES.0..=SWEEP_FRAMES.1, label.id) {
         out.push(AnimationCommand::SetFrames(frames).into());
     }
     ui.end_row();
@@ -291,13 +265,13 @@ fn recording_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<
     }
     let last = r.len() - 1;
     let (mut a, mut b) = r.trim;
-    ui.label(lang.tr("animate.app.first"));
-    let first = ui.add(egui::Slider::new(&mut a, 0..=last));
+    let label = ui.label(lang.tr("animate.app.first"));
+    let first = slider(ui, &mut a, 0..=last, label.id);
     ui.end_row();
-    ui.label(lang.tr("animate.app.last"));
-    let second = ui.add(egui::Slider::new(&mut b, 0..=last));
+    let label = ui.label(lang.tr("animate.app.last"));
+    let second = slider(ui, &mut b, 0..=last, label.id);
     ui.end_row();
-    if first.changed() || second.changed() {
+    if first || second {
         out.push(AnimationCommand::SetTrim(a.min(b), b.max(a)).into());
     }
     let kept = b.saturating_sub(a) + 1;
@@ -308,4 +282,21 @@ fn recording_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<
             .weak(),
     );
     ui.end_row();
+}
+
+/// A slider named by the grid's `label`, its value beside it; whether it changed.
+fn slider<T: egui::emath::Numeric + std::fmt::Display>(
+    ui: &mut Ui,
+    value: &mut T,
+    range: std::ops::RangeInclusive<T>,
+    label: egui::Id,
+) -> bool {
+    ui.horizontal(|ui| {
+        let r = ui
+            .add(egui::Slider::new(value, range).show_value(false))
+            .labelled_by(label);
+        ui.label(value.to_string());
+        r.changed()
+    })
+    .inner
 }
