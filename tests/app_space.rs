@@ -131,3 +131,37 @@ fn v_shows_the_3d_view_in_the_pictures_place_on_a_projector() {
     h.run();
     assert!(h.query_by_label("The pixel's ray in 3D").is_none());
 }
+
+/// The lesson's tetrahedron step: the 3D view draws the volume weights of the point where the
+/// pinned pixel's ray runs through the tetrahedron, its entry weights the card's a b c.
+#[test]
+fn the_tetrahedron_step_weighs_the_pinned_pixels_point() {
+    let lesson = barylab::lesson::Lesson::builtin().expect("built-in lesson");
+    let last = lesson.steps.len() - 1;
+    let mut h = common::app::harness(
+        SIZE,
+        AppOptions {
+            lesson: Some((lesson, last)),
+            ..AppOptions::default()
+        },
+    );
+    h.run();
+    assert!(h.state().state().view.space, "the step opens the 3D view");
+    assert!(
+        h.query_by_label("Volume weights of a point in a tetrahedron")
+            .is_some()
+    );
+    let report = h.state().pin_report().expect("the step pins a pixel");
+    let detail = report.trace.detail.as_ref().expect("a triangle");
+    let [a, b, c] = detail
+        .perspective
+        .as_ref()
+        .expect("1/w > 0")
+        .correction
+        .weights
+        .map(fmt_number);
+    let entry = format!(
+        "P, where it enters through face A B D: λ = ({a}, {b}, 0, {c}); λ_C = 0 and the other three are that triangle's weights a b c"
+    );
+    assert!(h.query_by_label(&entry).is_some(), "the view shows {entry}");
+}

@@ -223,6 +223,51 @@ fn the_tetrahedrons_volume_weights() {
     assert!(fig.to_svg().contains("λ_A = 0.4"));
 }
 
+/// The pinned pixel's ray through the tetrahedron: where it enters (on the front face A B D)
+/// the volume weights are the probe's perspective-correct a b c with C's weight 0, and X,
+/// halfway to where it leaves, lies on the ray with four positive weights.
+#[test]
+fn the_tetrahedrons_point_follows_the_pixels_ray() {
+    let scene = load("tetrahedron.json");
+    let (space, trace) = traced(&scene, (370, 290));
+    let fig = TetraFigure::new(&space, Orbit::default(), Lang::En).expect("a tetrahedron");
+    let ray = fig.ray().expect("the ray crosses the tetrahedron");
+    let detail = trace.detail.as_ref().expect("a triangle");
+    let abc = detail
+        .perspective
+        .as_ref()
+        .expect("1/w > 0")
+        .correction
+        .weights;
+    // The face A B D is vertices 0, 1, 3; the entry's weights of A, B, D are a, b, c.
+    let want = [abc[0], abc[1], 0.0, abc[2]];
+    for (got, want) in ray.entry_weights.iter().zip(want) {
+        assert!((got - want).abs() < 1e-9, "{:?} {abc:?}", ray.entry_weights);
+    }
+    assert_eq!(ray.entry_face_opposite(), 2);
+    // X on the ray (the eye, the pixel centre and X in one line) and inside.
+    let r = space.ray.as_ref().expect("a ray");
+    let along = (r.on_image - r.origin).normalize();
+    let off = (fig.point() - r.origin).cross(along).length();
+    assert!(off < 1e-9 * fig.point().length(), "X is {off} off the ray");
+    let w = fig.weights();
+    assert!(w.iter().all(|&v| v > 0.0), "{w:?}");
+    assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+    // X is the volume weights' point: sum λ_i V_i.
+    let x: DVec3 = (0..4).map(|i| space.vertices[i].point * w[i]).sum();
+    assert!((x - fig.point()).length() < 1e-9 * x.length());
+    let svg = fig.to_svg();
+    assert!(svg.contains("(0.3675, 0.4099, 0, 0.2226)"), "{svg}");
+
+    // A pixel beside the tetrahedron: the fixed point inside.
+    let (space, _) = traced(&scene, (5, 5));
+    let fig = TetraFigure::new(&space, Orbit::default(), Lang::En).expect("a tetrahedron");
+    assert!(fig.ray().is_none());
+    for (got, want) in fig.weights().iter().zip(POINT_WEIGHTS) {
+        assert!((got - want).abs() < 1e-9, "{:?}", fig.weights());
+    }
+}
+
 #[test]
 fn the_depth_plot_runs_from_the_near_plane_to_the_far_plane() {
     let plot = depth_plot(&Scene::default_scene(), Lang::En).expect("planes");

@@ -66,13 +66,7 @@ pub(super) fn figure(
     let scale = args.scale as f32;
     let (bytes, what) = match args.view {
         ViewArg::Space | ViewArg::Image | ViewArg::Texture | ViewArg::Lod => {
-            let trace = match args.pixel.or(args.hover) {
-                Some(p) => Some(
-                    barylab::probe::probe(scene, texture, settings, p)
-                        .with_context(|| shown.clone())?,
-                ),
-                None => None,
-            };
+            let trace = pixel_trace(args, scene, texture, settings)?;
             let space = SpaceScene::build(scene, settings, trace.as_ref())
                 .with_context(|| shown.clone())?;
             let fig = SpaceFigure {
@@ -99,7 +93,9 @@ pub(super) fn figure(
             (bytes, "depth plot")
         }
         ViewArg::Tetra => {
-            let space = SpaceScene::build(scene, settings, None).with_context(|| shown.clone())?;
+            let trace = pixel_trace(args, scene, texture, settings)?;
+            let space = SpaceScene::build(scene, settings, trace.as_ref())
+                .with_context(|| shown.clone())?;
             let fig = barylab::figure::space::TetraFigure::new(&space, args.orbit.orbit(), lang)
                 .map_err(anyhow::Error::msg)
                 .with_context(|| shown.clone())?;
@@ -116,4 +112,20 @@ pub(super) fn figure(
         "{what} -> {}\n",
         barylab::files::shown(&args.output)
     ))
+}
+
+/// The probe of the pixel `--pixel` (else `--hover`) names, when one is given.
+fn pixel_trace(
+    args: &FigureArgs,
+    scene: &Scene,
+    texture: &Texture,
+    settings: &RenderSettings,
+) -> Result<Option<barylab::probe::PixelTrace>> {
+    match args.pixel.or(args.hover) {
+        Some(p) => Ok(Some(
+            barylab::probe::probe(scene, texture, settings, p)
+                .with_context(|| barylab::files::shown(&args.input.scene))?,
+        )),
+        None => Ok(None),
+    }
 }

@@ -11,7 +11,8 @@ use crate::app::document::state::StateCommand;
 use crate::app::services::pixel::PixelReport;
 use crate::app::services::render::CanvasOutput;
 use crate::figure::space::{
-    Anchor2, Colour, INK, Orbit, Shape, ShapeKind, SpaceScene, panel_lines, shapes,
+    Anchor2, Colour, INK, Orbit, Shape, ShapeKind, SpaceScene, TetraFigure, is_tetrahedron,
+    panel_lines, shapes,
 };
 
 /// The labels' size in the 3D view, points (egui's zoom scales it).
@@ -81,8 +82,17 @@ impl SpaceView {
         label_size: f32,
     ) {
         let lang = crate::app::services::locale::lang(ui.ctx());
-        ui.horizontal(|ui| {
-            ui.label(RichText::new(lang.tr("space.title")).strong());
+        // A tetrahedron scene shows its volume weights (the lesson's last step).
+        let tetra = output
+            .and_then(|o| self.scene(o, report))
+            .is_some_and(is_tetrahedron);
+        let title = if tetra {
+            "space.tetra.title"
+        } else {
+            "space.title"
+        };
+        ui.horizontal_wrapped(|ui| {
+            ui.label(RichText::new(lang.tr(title)).strong());
             if ui.button(lang.tr("space.reset")).clicked() {
                 self.orbit = Orbit::default();
             }
@@ -115,16 +125,23 @@ impl SpaceView {
         };
         let r = response.rect;
         painter.rect_filled(r, 0.0, Color32::WHITE);
-        let projector = space.projector(orbit, [r.min.x, r.min.y, r.max.x, r.max.y]);
+        let rect = [r.min.x, r.min.y, r.max.x, r.max.y];
         let painter = painter.with_clip_rect(r);
-        for s in shapes(space, &projector, lang, label_size) {
-            paint(&painter, &s);
+        let (drawn, lines) = match tetra.then(|| TetraFigure::new(space, orbit, lang).ok()) {
+            Some(Some(fig)) => (fig.shapes(rect, label_size), fig.panel_lines()),
+            _ => (
+                shapes(space, &space.projector(orbit, rect), lang, label_size),
+                panel_lines(space, lang),
+            ),
+        };
+        for s in &drawn {
+            paint(&painter, s);
         }
         egui::ScrollArea::vertical()
             .id_salt("space-numbers")
             .show(ui, |ui| {
                 let ink = ui.visuals().text_color();
-                for (line, c) in panel_lines(space, lang) {
+                for (line, c) in lines {
                     let c = if c == INK { ink } else { colour(c) };
                     ui.label(RichText::new(line).color(c));
                 }

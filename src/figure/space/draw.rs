@@ -417,7 +417,7 @@ pub fn shapes(space: &SpaceScene, projector: &Projector, lang: Lang, text: f32) 
 /// side of its anchor point, then further up or down (up to [`SPREAD_STEPS`] lines), each kept
 /// inside `rect`; the first position that overlaps nothing placed wins, else the one that
 /// overlaps the placed labels least (a crowded corner of a small view stays readable).
-fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
+pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
     let mut placed: Vec<[f32; 4]> = Vec::new();
     for s in shapes.iter_mut() {
         let ShapeKind::Text {

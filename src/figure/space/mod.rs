@@ -29,7 +29,10 @@ pub use draw::{
 pub use lens::{FIT_TOLERANCE, Lens};
 pub use orbit::{Orbit, PITCH_LIMIT, Projector, ZOOM_RANGE};
 pub use svg::{FIGURE_SIZE, SpaceFigure, drawing_rect, panel_lines, wrap_line};
-pub use tetra::{POINT_WEIGHTS, TetraFigure, signed_volume, volume_weights};
+pub use tetra::{
+    POINT_WEIGHTS, RayThrough, TetraFigure, is_tetrahedron, segment_inside, signed_volume,
+    volume_weights,
+};
 
 use glam::{DVec2, DVec3};
 
