@@ -13,11 +13,13 @@
 //!   `LessonCommand`) that converts into it.
 //! - [`panels`]: one per file, each a `*_ui` function that takes what it shows and returns
 //!   commands (the top bar, File menu, typed-path window, banner, controls, canvas, inspector,
-//!   presentation card and magnifier, status line, help, export, benchmark, lessons, row plot,
+//!   presentation card and magnifier, status line, help, export, export animation, benchmark,
+//!   lessons, row plot,
 //!   GPU view, image compare, 3D view, samples and tie-rule controls).
 //! - [`services`]: behind the panels: the canvas's renders and their cache, the scene's
 //!   texture, the pixel reports (one prober per render), opening files (all checked first),
-//!   native dialogs, window screenshots, text sizes, and the language the panels show.
+//!   native dialogs, window screenshots, text sizes, the language the panels show, and the
+//!   recorder (a drag's states) with the animation export's thread.
 //! - Here: `window` (eframe), `layout` (side panels, canvas, presentation; `side_panels` is the
 //!   arithmetic), `shortcuts` (the keyboard) and `access` (what tests read).
 //!
