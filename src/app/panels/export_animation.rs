@@ -261,7 +261,7 @@ impl BaryApp {
         let settings = &self.export.settings;
         let source = match panel.kind {
             AnimationKind::Sweep => AnimationSource::Sweep {
-                scene: figure_scene(app.state, size),
+                scene: Box::new(figure_scene(app.state, size)),
                 animation: Animation {
                     sweep: panel.sweep,
                     frames: panel.frames,

@@ -118,7 +118,7 @@ pub enum AnimationSource {
     /// A sweep of a scene, as `barylab animate` makes it.
     Sweep {
         /// The scene at the canvas's render size.
-        scene: Scene,
+        scene: Box<Scene>,
         /// The sweep, frames and figure options.
         animation: Animation,
     },
