@@ -22,7 +22,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use rayon::prelude::*;
 
-use crate::app::document::edit::EditError;
+use crate::edit::EditError;
 use crate::figure::overlay::{PIN, SHADOW, Shape, Stroke};
 use crate::figure::{self, Background, Figure, FigureError, FigureOptions};
 use crate::i18n::Lang;

@@ -8,6 +8,7 @@
 //! at [`RECORD_FPS`] from egui's clock; after Stop, two sliders trim it, and Export draws each
 //! kept state again as a figure at the export scale.
 
+use super::export_animation_ui::{FPS_RANGE, WindowView};
 use crate::animate::{Animation, Format, FrameState, Sweep};
 use crate::app::BaryApp;
 use crate::app::command::{AnimationCommand, AnimationKind};
@@ -21,12 +22,6 @@ use crate::raster::Texture;
 
 /// How often a running export repaints (its progress bar).
 const POLL: std::time::Duration = std::time::Duration::from_millis(100);
-
-/// Frames of a sweep the slider offers (the command line goes to 1000).
-pub(super) const SWEEP_FRAMES: (u32, u32) = (2, 240);
-
-/// Frames per second the slider offers.
-pub(super) const FPS_RANGE: (u32, u32) = (1, 50);
 
 /// The Export animation window's state and the recorder.
 pub struct AnimationPanel {
@@ -85,11 +80,6 @@ impl AnimationPanel {
     pub fn progress(&self) -> Option<(usize, usize)> {
         self.job.as_ref().map(|j| (j.done(), j.total))
     }
-}
-
-/// The catalogue key of a sweep's label.
-pub(super) fn sweep_key(sweep: Sweep) -> String {
-    format!("animate.sweep.{}", sweep.name().replace('-', "_"))
 }
 
 /// The figure options a recorded or swept frame starts from: the canvas's, with the export
@@ -313,8 +303,19 @@ impl BaryApp {
         let lang = crate::app::services::locale::lang(ctx);
         let mut open = true;
         let mut cmds: Vec<crate::app::command::AppCommand> = Vec::new();
+        let panel = &self.animation;
         let view = WindowView {
-            panel: &self.animation,
+            kind: panel.kind,
+            sweep: panel.sweep,
+            vertex: panel.vertex,
+            frames: panel.frames,
+            fps: panel.fps,
+            format: panel.format,
+            lang: panel.lang,
+            ffmpeg: panel.ffmpeg.unwrap_or(false),
+            recorder: &panel.recorder,
+            progress: panel.progress(),
+            outcome: panel.outcome.as_ref(),
             settings: &self.export.settings,
             pinned: self.state.view.pinned,
             size: self.canvas.output.as_ref().map(|o| o.size),
@@ -339,18 +340,4 @@ impl BaryApp {
         }
         out.extend(cmds);
     }
-}
-
-/// What the window shows.
-pub(crate) struct WindowView<'a> {
-    /// The window's state.
-    pub panel: &'a AnimationPanel,
-    /// The Export window's settings (scale, background, caption, folder).
-    pub settings: &'a ExportSettings,
-    /// The pinned pixel.
-    pub pinned: Option<[u32; 2]>,
-    /// The canvas's render size.
-    pub size: Option<[u32; 2]>,
-    /// Whether a CJK font is installed.
-    pub cjk: bool,
 }

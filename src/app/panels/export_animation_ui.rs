@@ -3,12 +3,57 @@
 
 use egui::{Color32, RichText, Ui};
 
-use super::export_animation::{FPS_RANGE, SWEEP_FRAMES, WindowView, sweep_key};
 use crate::animate::{Format, Sweep};
 use crate::app::command::{AnimationCommand, AnimationKind, AppCommand, ExportCommand};
-use crate::app::services::recorder::RECORD_FPS;
+use crate::app::panels::export::Outcome;
+use crate::app::services::recorder::{RECORD_FPS, Recorder};
 use crate::figure::{Background, SCALES};
 use crate::i18n::Lang;
+
+/// Frames of a sweep the slider offers (the command line goes to 1000).
+const SWEEP_FRAMES: (u32, u32) = (2, 240);
+
+/// Frames per second the slider offers.
+pub(super) const FPS_RANGE: (u32, u32) = (1, 50);
+
+/// The catalogue key of a sweep's label.
+fn sweep_key(sweep: Sweep) -> String {
+    format!("animate.sweep.{}", sweep.name().replace('-', "_"))
+}
+
+/// What the window shows (the Export animation panel's state, as of this frame).
+pub(crate) struct WindowView<'a> {
+    /// A sweep or the recording.
+    pub kind: AnimationKind,
+    /// The sweep.
+    pub sweep: Sweep,
+    /// The corner the depth and clip sweeps move.
+    pub vertex: usize,
+    /// Frames of a sweep.
+    pub frames: u32,
+    /// Frames per second.
+    pub fps: u32,
+    /// The file format.
+    pub format: Format,
+    /// The label language (`None`: the app's).
+    pub lang: Option<Lang>,
+    /// Whether ffmpeg runs.
+    pub ffmpeg: bool,
+    /// The recording.
+    pub recorder: &'a Recorder,
+    /// The export going on: frames drawn, frames to draw.
+    pub progress: Option<(usize, usize)>,
+    /// What the last export did.
+    pub outcome: Option<&'a Outcome>,
+    /// The Export window's settings (scale, background, caption, folder).
+    pub settings: &'a crate::app::document::export_settings::ExportSettings,
+    /// The pinned pixel.
+    pub pinned: Option<[u32; 2]>,
+    /// The canvas's render size.
+    pub size: Option<[u32; 2]>,
+    /// Whether a CJK font is installed.
+    pub cjk: bool,
+}
 
 /// The corners the depth and clip sweeps offer.
 const CORNERS: usize = 4;
@@ -21,7 +66,7 @@ pub(crate) fn contents(
     out: &mut Vec<AppCommand>,
 ) {
     let lang = crate::app::services::locale::lang(ui.ctx());
-    let panel = view.panel;
+    let panel = view;
     egui::Grid::new("animation-grid")
         .num_columns(2)
         .spacing([12.0, 6.0])
@@ -51,7 +96,7 @@ pub(crate) fn contents(
 
             ui.label(lang.tr("animate.app.format"));
             ui.horizontal_wrapped(|ui| {
-                let ffmpeg = panel.ffmpeg.unwrap_or(false);
+                let ffmpeg = panel.ffmpeg;
                 for f in [Format::Gif, Format::Apng, Format::WebP, Format::Mp4] {
                     let enabled = f != Format::Mp4 || ffmpeg;
                     let r = ui
@@ -145,7 +190,7 @@ pub(crate) fn contents(
 pub(crate) fn actions(ui: &mut Ui, view: &WindowView<'_>, out: &mut Vec<AppCommand>) {
     let lang = crate::app::services::locale::lang(ui.ctx());
     buttons(ui, view, lang, out);
-    if let Some(o) = &view.panel.outcome {
+    if let Some(o) = &view.outcome {
         super::export::outcome_lines(ui, o);
     }
     ui.separator();
@@ -153,8 +198,8 @@ pub(crate) fn actions(ui: &mut Ui, view: &WindowView<'_>, out: &mut Vec<AppComma
 
 /// Export, or the progress bar and Cancel while exporting.
 fn buttons(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppCommand>) {
-    let panel = view.panel;
-    match panel.progress() {
+    let panel = view;
+    match panel.progress {
         Some((done, total)) => {
             ui.horizontal(|ui| {
                 let f = done as f32 / total.max(1) as f32;
@@ -186,7 +231,7 @@ fn buttons(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppComm
 
 /// The sweep, its corner and its frames.
 fn sweep_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppCommand>) {
-    let panel = view.panel;
+    let panel = view;
     let label = ui.label(lang.tr("animate.app.sweep"));
     egui::ComboBox::from_id_salt("animation-sweep")
         .selected_text(lang.tr(&sweep_key(panel.sweep)))
@@ -227,7 +272,7 @@ fn sweep_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppC
 
 /// Record / Stop, what is recorded, and the trim.
 fn recording_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<AppCommand>) {
-    let r = &view.panel.recorder;
+    let r = view.recorder;
     let seconds = |n: usize| format!("{:.1}", n as f64 / RECORD_FPS);
     ui.label(lang.tr("animate.app.recording"));
     ui.horizontal_wrapped(|ui| {
@@ -275,7 +320,7 @@ fn recording_rows(ui: &mut Ui, view: &WindowView<'_>, lang: Lang, out: &mut Vec<
         out.push(AnimationCommand::SetTrim(a.min(b), b.max(a)).into());
     }
     let kept = b.saturating_sub(a) + 1;
-    let playing = format!("{:.1}", kept as f64 / f64::from(view.panel.fps.max(1)));
+    let playing = format!("{:.1}", kept as f64 / f64::from(view.fps.max(1)));
     ui.label("");
     ui.label(
         RichText::new(lang.tr_with("animate.app.kept", &[("n", &kept), ("seconds", &playing)]))
