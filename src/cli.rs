@@ -107,6 +107,10 @@ struct Cli {
     /// pinned or hovered pixel's ray.
     #[arg(long)]
     space_view: bool,
+    /// Start with File > Export animation… open, on a sweep or a recording (screenshots of the
+    /// window).
+    #[arg(long, hide = true, value_name = "sweep|recording", value_parser = ["sweep", "recording"])]
+    animation_window: Option<String>,
     /// Start comparing this image (a student's rasterizer output, a screenshot) with barylab's
     /// render of the scene, as File > Compare with image… does.
     #[arg(long, value_name = "IMAGE")]
@@ -877,6 +881,13 @@ fn app(cli: &Cli) -> Result<()> {
         startup_error: (!startup_errors.is_empty()).then(|| startup_errors.join("; ")),
         compare: cli.compare,
         space_view: cli.space_view,
+        animation_window: cli.animation_window.as_deref().map(|k| {
+            if k == "recording" {
+                barylab::app::command::AnimationKind::Recording
+            } else {
+                barylab::app::command::AnimationKind::Sweep
+            }
+        }),
         compare_image: cli.compare_image.clone(),
         compare_background: cli.compare_background,
         quiz_answers: cli.quiz_answers.as_ref().map(|a| {

@@ -54,6 +54,7 @@ pub mod app;
 pub mod bench;
 pub mod budget;
 pub mod compare;
+pub mod edit;
 pub mod figure;
 pub mod files;
 #[cfg(feature = "gpu")]

@@ -77,11 +77,9 @@ fn the_builtin_lesson_is_one_offline_html_deck_in_both_languages() {
         assert!(!html.contains("<link") && !html.contains("<script src"));
         let sources = image_sources(&html);
         assert!(sources.len() >= steps, "a figure per step");
-        assert!(
-            sources
-                .iter()
-                .all(|src| src.starts_with("data:image/png;base64,"))
-        );
+        assert!(sources.iter().all(|src| {
+            src.starts_with("data:image/png;base64,") || src.starts_with("data:image/gif;base64,")
+        }));
         // The keys a keyboard and a presentation clicker send.
         for key in [
             "'ArrowRight'",
@@ -114,6 +112,115 @@ fn a_slide_shows_the_same_figure_as_the_step_figure_command() {
     assert!(run.status.success());
     let still = image::open(&fig).expect("figure").to_rgba8();
     assert!(inline == still, "the slide's figure is the step's figure");
+}
+
+/// The frames of an inline GIF or (A)PNG image.
+fn inline_frames(src: &str) -> Vec<image::RgbaImage> {
+    use image::AnimationDecoder;
+    let (kind, data) = src
+        .strip_prefix("data:image/")
+        .and_then(|s| s.split_once(";base64,"))
+        .expect("a base64 data: URI");
+    let bytes = base64::engine::general_purpose::STANDARD
+        .decode(data)
+        .expect("base64");
+    let cursor = std::io::Cursor::new(bytes);
+    let frames = match kind {
+        "gif" => image::codecs::gif::GifDecoder::new(cursor)
+            .expect("a GIF")
+            .into_frames()
+            .collect_frames(),
+        _ => {
+            let png = image::codecs::png::PngDecoder::new(cursor).expect("a PNG");
+            if !png.is_apng().expect("PNG header") {
+                return vec![
+                    image::DynamicImage::from_decoder(png)
+                        .expect("PNG")
+                        .to_rgba8(),
+                ];
+            }
+            png.apng().expect("APNG").into_frames().collect_frames()
+        }
+    }
+    .expect("the frames decode");
+    frames.into_iter().map(|f| f.into_buffer()).collect()
+}
+
+#[test]
+fn steps_with_an_animation_show_it_on_their_slide() {
+    let lesson = Lesson::builtin().expect("built-in lesson");
+    let animated: Vec<(usize, u32)> = lesson
+        .steps
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| s.animation.map(|a| (i + 1, a.frames)))
+        .collect();
+    assert!(
+        animated.len() >= 3,
+        "the built-in lesson animates a few steps"
+    );
+    let dir = tempfile::tempdir().expect("tempdir");
+    let html = deck(dir.path(), "en");
+    println!("the deck: {} bytes", html.len());
+    for n in 1..=lesson.steps.len() {
+        let slide = html
+            .split(&format!("<section class=\"slide\" id=\"step-{n}\">"))
+            .nth(1)
+            .and_then(|s| s.split("</section>").next())
+            .expect("the step's slide");
+        let frames = inline_frames(image_sources(slide)[0]);
+        match animated.iter().find(|(k, _)| *k == n) {
+            Some(&(_, count)) => {
+                assert_eq!(frames.len(), count as usize, "step {n}'s frames");
+                let size = frames[0].dimensions();
+                assert!(frames.iter().all(|f| f.dimensions() == size), "step {n}");
+                assert!(
+                    frames.windows(2).all(|p| p[0] != p[1]),
+                    "step {n}: every frame changes"
+                );
+            }
+            None => assert_eq!(frames.len(), 1, "step {n} is a still"),
+        }
+    }
+}
+
+#[test]
+fn a_bad_animation_field_names_the_file_and_the_step() {
+    let text = |animation: &str| {
+        format!(
+            r#"{{"title": {{"en": "t", "zh": "t"}}, "steps": [{{
+              "title": {{"en": "a", "zh": "a"}}, "text": {{"en": "b", "zh": "b"}},
+              "try": {{"en": "c", "zh": "c"}}, "scene": "builtin:default",
+              "animation": {animation} }}]}}"#
+        )
+    };
+    let dir = Path::new(".");
+    let ok =
+        barylab::lesson::parse_str(&text(r#"{"sweep": "clip", "vertex": "b"}"#), "ok.json", dir)
+            .expect("a good animation");
+    let a = ok.steps[0].animation.expect("parsed");
+    assert_eq!(
+        (a.sweep, a.frames, a.vertex),
+        (barylab::animate::Sweep::Clip, 10, 1)
+    );
+    for (field, expected) in [
+        (r#"{"sweep": "spin"}"#, "`spin` is not a sweep"),
+        (r#"{"sweep": "depth", "frames": 500}"#, "`frames` 500"),
+        (
+            r#"{"sweep": "depth", "vertex": "Q7"}"#,
+            "`Q7` is not a corner",
+        ),
+        (r#"{"sweep": "depth", "format": "mp4"}"#, "gif or apng"),
+        (r#"{"sweep": "depth", "fps": 3}"#, "unknown field `fps`"),
+    ] {
+        let err =
+            barylab::lesson::parse_str(&text(field), "bad.json", dir).expect_err("a bad animation");
+        let m = err.to_string();
+        assert!(
+            m.contains("bad.json") && m.contains("steps[0].animation") && m.contains(expected),
+            "{m}"
+        );
+    }
 }
 
 #[test]

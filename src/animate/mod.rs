@@ -18,9 +18,11 @@ pub mod sweep;
 pub mod visit;
 mod webp;
 
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
 use rayon::prelude::*;
 
-use crate::app::document::edit::EditError;
+use crate::edit::EditError;
 use crate::figure::overlay::{PIN, SHADOW, Shape, Stroke};
 use crate::figure::{self, Background, Figure, FigureError, FigureOptions};
 use crate::i18n::Lang;
@@ -81,6 +83,9 @@ pub enum AnimateError {
          `apt install ffmpeg`), or write .gif, .apng or .webp"
     )]
     NoFfmpeg,
+    /// The rendering was cancelled ([`Control::cancel`]).
+    #[error("cancelled")]
+    Cancelled,
 }
 
 /// What to animate: the sweep, the number of frames, the corner the depth and clip sweeps
@@ -100,7 +105,7 @@ pub struct Animation {
 
 /// One frame before it is drawn: the scene and options, and for a fill sweep how many
 /// pixels of the visiting order are drawn.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct FrameState {
     /// The scene as the sweep has changed it.
     pub scene: Scene,
@@ -108,6 +113,16 @@ pub struct FrameState {
     pub options: FigureOptions,
     /// Fill sweeps: the first this many pixels of the order are shown.
     pub filled: Option<usize>,
+}
+
+/// The corner named `name` (A, B, C, ...; any case), as a mesh vertex index.
+///
+/// ```
+/// assert_eq!(barylab::animate::vertex_by_name(" c"), Some(2));
+/// assert_eq!(barylab::animate::vertex_by_name("AB"), None);
+/// ```
+pub fn vertex_by_name(name: &str) -> Option<usize> {
+    (0..26).find(|&i| crate::scene::vertex_name(i).eq_ignore_ascii_case(name.trim()))
 }
 
 /// Frame `i`'s time `t = i / (n - 1)`.
@@ -240,19 +255,80 @@ fn draw(
 }
 
 /// Every frame of `anim` on `scene`, labels in `lang`, rendered in parallel on the current
-/// rayon pool. Frames of different sizes (a caption that wraps differently) are padded to the
-/// largest at the top left with the figure's background.
+/// rayon pool ([`render_frames_with`] without progress or cancelling).
 pub fn render_frames(
     scene: &Scene,
     texture: &Texture,
     anim: &Animation,
     lang: Lang,
 ) -> Result<Vec<image::RgbaImage>, AnimateError> {
+    render_frames_with(scene, texture, anim, lang, &Control::default())
+}
+
+/// [`render_frames`], counting the frames drawn in `control` and stopping with
+/// [`AnimateError::Cancelled`] once it is cancelled.
+pub fn render_frames_with(
+    scene: &Scene,
+    texture: &Texture,
+    anim: &Animation,
+    lang: Lang,
+    control: &Control,
+) -> Result<Vec<image::RgbaImage>, AnimateError> {
     let states = frame_states(scene, anim)?;
     let order = order_of(scene, anim.sweep)?;
     let order = order.as_deref().filter(|_| anim.sweep != Sweep::Row);
-    // The first frame alone: its size bounds the memory all of them need.
-    let first = draw(&states[0], 0, texture, order, lang)?;
+    render_all(&states, texture, order, lang, control)
+}
+
+/// A recorded list of states (a drag in the app, one state per frame at a fixed frame rate),
+/// each drawn as the still figure of its scene and options: frame `k` is
+/// `figure::png::rasterize(Figure::compose_in(states[k]))`, padded like [`render_frames`].
+/// The fill sweeps' `filled` is ignored (a recording has no visiting order).
+pub fn render_states(
+    states: &[FrameState],
+    texture: &Texture,
+    lang: Lang,
+    control: &Control,
+) -> Result<Vec<image::RgbaImage>, AnimateError> {
+    let n = u32::try_from(states.len()).unwrap_or(u32::MAX);
+    if !(FRAME_RANGE.0..=FRAME_RANGE.1).contains(&n) {
+        return Err(AnimateError::Frames(n));
+    }
+    render_all(states, texture, None, lang, control)
+}
+
+/// How far a rendering has got, and a way to stop it from another thread (the app's Export
+/// animation window).
+#[derive(Debug, Default)]
+pub struct Control {
+    /// Frames drawn so far.
+    pub done: AtomicUsize,
+    /// Set to stop: the frames not yet started are not drawn.
+    pub cancel: AtomicBool,
+}
+
+/// Draws `states` in parallel (the first alone: its size bounds the memory), padding frames
+/// of different sizes (a caption that wraps differently) to the largest at the top left with
+/// the figure's background.
+fn render_all(
+    states: &[FrameState],
+    texture: &Texture,
+    order: Option<&[[u32; 2]]>,
+    lang: Lang,
+    control: &Control,
+) -> Result<Vec<image::RgbaImage>, AnimateError> {
+    let Some(first_state) = states.first() else {
+        return Err(AnimateError::Frames(0));
+    };
+    let draw_one = |i: usize, s: &FrameState| {
+        if control.cancel.load(Ordering::Relaxed) {
+            return Err(AnimateError::Cancelled);
+        }
+        let frame = draw(s, i, texture, order, lang)?;
+        control.done.fetch_add(1, Ordering::Relaxed);
+        Ok(frame)
+    };
+    let first = draw_one(0, first_state)?;
     let (w, h) = first.dimensions();
     crate::budget::check(
         || format!("{} frames of {w}x{h}", states.len()),
@@ -261,14 +337,14 @@ pub fn render_frames(
     let rest: Vec<image::RgbaImage> = states[1..]
         .par_iter()
         .enumerate()
-        .map(|(i, s)| draw(s, i + 1, texture, order, lang))
+        .map(|(i, s)| draw_one(i + 1, s))
         .collect::<Result<_, _>>()?;
     let mut frames = vec![first];
     frames.extend(rest);
     let (mw, mh) = frames
         .iter()
         .fold((0, 0), |(a, b), f| (a.max(f.width()), b.max(f.height())));
-    let fill = match anim.options.background {
+    let fill = match first_state.options.background {
         Background::White => image::Rgba([255, 255, 255, 255]),
         Background::Transparent => image::Rgba([0, 0, 0, 0]),
     };

@@ -2,7 +2,7 @@
 //! time `t` in `[0, 1]` (`t = i / (N - 1)` for frame `i` of `N`). A frame is a scene and the
 //! figure options it is drawn with; the drawing is [`crate::figure`]'s.
 
-use crate::app::document::edit::{self, PUSH_FACTOR_RANGE};
+use crate::edit::{self, PUSH_FACTOR_RANGE};
 use crate::figure::{Compare, FigureOptions};
 use crate::raster::camera::Projection;
 use crate::raster::project::Viewport;

@@ -29,6 +29,11 @@ impl BaryApp {
         &self.export
     }
 
+    /// The Export animation window and the recorder.
+    pub fn animation_panel(&self) -> &crate::app::panels::export_animation::AnimationPanel {
+        &self.animation
+    }
+
     /// Queues an Export panel command, as its widgets do.
     pub fn push_export(&mut self, command: ExportCommand) {
         self.push(command);

@@ -33,6 +33,8 @@ pub enum AppCommand {
     Lesson(LessonCommand),
     /// Start or stop stepping along the pinned row's scanline span (S).
     ToggleSpanStepping,
+    /// The Export animation window and the recorder (applied by `BaryApp::apply_animation`).
+    Animation(AnimationCommand),
     /// Presentation mode in a window too narrow for the 3D view beside the picture: show the
     /// 3D view in the picture's place, or the picture again (V). Any change of the scene or
     /// the lesson step brings the picture back.
@@ -74,6 +76,12 @@ impl From<StateCommand> for AppCommand {
 impl From<ExportCommand> for AppCommand {
     fn from(c: ExportCommand) -> Self {
         Self::Export(c)
+    }
+}
+
+impl From<AnimationCommand> for AppCommand {
+    fn from(c: AnimationCommand) -> Self {
+        Self::Animation(c)
     }
 }
 
@@ -125,6 +133,47 @@ pub enum ExportCommand {
     Copy,
     /// Save the whole window as a PNG into the folder.
     Screenshot,
+}
+
+/// What an exported animation shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AnimationKind {
+    /// A sweep of the scene, as `barylab animate` makes it.
+    #[default]
+    Sweep,
+    /// The recorded drag.
+    Recording,
+}
+
+/// A change or an action of the Export animation window and the recorder.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AnimationCommand {
+    /// Show the window.
+    Open,
+    /// Hide the window.
+    Close,
+    /// Export a sweep or the recording.
+    SetKind(AnimationKind),
+    /// The sweep to export.
+    SetSweep(crate::animate::Sweep),
+    /// The corner the depth and clip sweeps move (mesh vertex index).
+    SetVertex(usize),
+    /// Frames of a sweep.
+    SetFrames(u32),
+    /// Frames per second of the file.
+    SetFps(u32),
+    /// The file format.
+    SetFormat(crate::animate::Format),
+    /// The figures' label language (`None`: the app's).
+    SetLang(Option<crate::i18n::Lang>),
+    /// Start recording the document's states, or stop (R).
+    ToggleRecord,
+    /// Keep the recorded frames `first..=last`.
+    SetTrim(usize, usize),
+    /// Render and write the animation in the background.
+    Export,
+    /// Stop the rendering going on.
+    Cancel,
 }
 
 /// Which scene the benchmark draws.
@@ -210,6 +259,8 @@ pub enum FileCommand {
     CompareImage(PathBuf),
     /// Stop comparing with an image.
     CloseCompareImage,
+    /// Show the Export animation window.
+    ExportAnimation,
     /// The compared image's background colour: any other colour is covered.
     SetCompareBackground([u8; 3]),
 }

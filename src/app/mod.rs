@@ -13,11 +13,13 @@
 //!   `LessonCommand`) that converts into it.
 //! - [`panels`]: one per file, each a `*_ui` function that takes what it shows and returns
 //!   commands (the top bar, File menu, typed-path window, banner, controls, canvas, inspector,
-//!   presentation card and magnifier, status line, help, export, benchmark, lessons, row plot,
+//!   presentation card and magnifier, status line, help, export, export animation, benchmark,
+//!   lessons, row plot,
 //!   GPU view, image compare, 3D view, samples and tie-rule controls).
 //! - [`services`]: behind the panels: the canvas's renders and their cache, the scene's
 //!   texture, the pixel reports (one prober per render), opening files (all checked first),
-//!   native dialogs, window screenshots, text sizes, and the language the panels show.
+//!   native dialogs, window screenshots, text sizes, the language the panels show, and the
+//!   recorder (a drag's states) with the animation export's thread.
 //! - Here: `window` (eframe), `layout` (side panels, canvas, presentation; `side_panels` is the
 //!   arithmetic), `shortcuts` (the keyboard) and `access` (what tests read).
 //!
@@ -105,6 +107,8 @@ pub struct BaryApp {
     banner: Option<Banner>,
     bench: BenchPanel,
     export: ExportPanel,
+    /// File > Export animation… and the recorder.
+    animation: panels::export_animation::AnimationPanel,
     /// Presentation mode: panels hidden, the pixel card in large print.
     presenting: bool,
     /// Presentation mode shows the 3D view in the picture's place (V; narrow windows only).
@@ -210,6 +214,7 @@ impl BaryApp {
             banner: None,
             bench: BenchPanel::default(),
             export: ExportPanel::new(export_settings),
+            animation: Default::default(),
             presenting: options.present,
             space_full: false,
             space_toggle_offered: false,
@@ -238,6 +243,10 @@ impl BaryApp {
         }
         if let Some((lesson, step)) = options.lesson {
             app.enter_lesson(lesson, step);
+        }
+        if let Some(kind) = options.animation_window {
+            app.push(command::AnimationCommand::Open);
+            app.push(command::AnimationCommand::SetKind(kind));
         }
         if let Some(p) = options.pin {
             app.push(document::state::StateCommand::Pin(Some(p)));
@@ -390,6 +399,7 @@ impl BaryApp {
         let before =
             (!self.commands.is_empty()).then(|| document::history::Snapshot::of(&self.state));
         self.apply_commands(&ctx, &texture);
+        self.animation_frame(&ctx, &texture);
         // A drag (a button held) is one undo step, taken when it is released.
         let held = ctx.input(|i| i.pointer.any_down());
         self.history.track(before, &self.state, held);
@@ -459,6 +469,7 @@ impl BaryApp {
                 folder_text,
             )));
         }
+        self.animation_window(&ctx, &mut out);
         egui::Panel::bottom("status").show(ui, |ui| {
             panels::status::status_ui(
                 ui,
@@ -591,6 +602,8 @@ impl BaryApp {
                 let rendered = self.canvas.output.as_ref().map(|o| (&o.scene, texture));
                 self.bench.apply(ctx, c, rendered);
             }
+            AppCommand::Animation(c) => self.apply_animation(ctx, c, texture),
+            AppCommand::File(FileCommand::ExportAnimation) => self.animation.open = true,
             AppCommand::File(FileCommand::Open(path)) => self.open_file(&path),
             AppCommand::File(FileCommand::ClearRecent) => self.recent.0.clear(),
             AppCommand::File(FileCommand::DismissBanner) => self.banner = None,

@@ -39,6 +39,9 @@ pub struct AppOptions {
     pub compare: Option<(crate::figure::Compare, bool)>,
     /// Start with the 3D view beside the canvas (`--space-view`).
     pub space_view: bool,
+    /// Start with File > Export animation… open on a sweep or a recording
+    /// (`--animation-window`, for screenshots).
+    pub animation_window: Option<crate::app::command::AnimationKind>,
     /// Start comparing this image with the render (`--compare-image`).
     pub compare_image: Option<PathBuf>,
     /// With `compare_image`: the image's background colour (`--compare-background`).

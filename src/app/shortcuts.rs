@@ -64,6 +64,10 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if key(Key::M) {
             state(StateCommand::SetShowMagnifier(!view.show_magnifier));
         }
+        // R: start or stop recording the canvas (File > Export animation…).
+        if key(Key::R) {
+            extra.push(crate::app::command::AnimationCommand::ToggleRecord.into());
+        }
         if key(Key::H) {
             state(StateCommand::SetShowHandles(!view.show_handles));
         }

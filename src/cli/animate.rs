@@ -34,8 +34,7 @@ fn parse_vertex(s: &str) -> Result<usize, String> {
     if let Ok(i) = t.parse::<usize>() {
         return Ok(i);
     }
-    (0..26)
-        .find(|&i| barylab::scene::vertex_name(i).eq_ignore_ascii_case(t))
+    animate::vertex_by_name(t)
         .ok_or_else(|| format!("`{s}` is not a vertex: a name A, B, C, ... or an index from 0"))
 }
 
@@ -145,18 +144,9 @@ pub(super) fn run(args: &AnimateArgs) -> Result<()> {
         sweep.name(),
         frames.len(),
         args.fps,
-        size_text(bytes.len()),
+        barylab::files::bytes(bytes.len() as u64),
         total,
         rendered,
         shown(&args.output)
     ))
-}
-
-/// A file size in bytes, KiB or MiB.
-fn size_text(bytes: usize) -> String {
-    match bytes {
-        b if b < 1024 => format!("{b} bytes"),
-        b if b < 1024 * 1024 => format!("{:.1} KiB", b as f64 / 1024.0),
-        b => format!("{:.1} MiB", b as f64 / (1024.0 * 1024.0)),
-    }
 }

@@ -52,6 +52,14 @@ pub enum HandoutError {
         /// What went wrong (part of this error's message).
         error: probe::ProbeError,
     },
+    /// A step's animation could not be made.
+    #[error("step {step}: animation: {error}")]
+    Animation {
+        /// The step, from 1.
+        step: usize,
+        /// What went wrong (part of this error's message).
+        error: crate::animate::AnimateError,
+    },
     /// There is no such step.
     #[error("there is no step {step}: the lesson has steps 1 to {count}")]
     NoStep {

@@ -232,6 +232,9 @@ pub struct Step {
     pub space_view: bool,
     /// A quiz on the pinned pixel: the class predicts these numbers before they are shown.
     pub quiz: Option<QuizSpec>,
+    /// A moving figure for the step's slide (`barylab lesson --slides`), in place of the
+    /// still one.
+    pub animation: Option<StepAnimation>,
 }
 
 /// A step's quiz as written: `"quiz": {"ask": ["screen_weights", "weights", "inv_w", "uv"]}`,
@@ -245,6 +248,25 @@ pub struct QuizSpec {
     /// What the class predicts, in order, each once.
     pub ask: Vec<Quantity>,
 }
+
+/// A step's moving figure: a sweep of the step's scene with the step's figure options, as
+/// `barylab animate` makes it (`"animation": {"sweep": "depth", "frames": 10, "format":
+/// "apng"}`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepAnimation {
+    /// What moves.
+    pub sweep: crate::animate::Sweep,
+    /// Frames, [`STEP_ANIMATION_FRAMES`] (few: a deck stays small).
+    pub frames: u32,
+    /// The corner the depth and clip sweeps move (mesh vertex index; written as its name,
+    /// default C).
+    pub vertex: usize,
+    /// GIF (default: small, 256 colours) or APNG (lossless: smooth colour gradients).
+    pub format: crate::animate::Format,
+}
+
+/// The frames a step's animation may have (default 10).
+pub const STEP_ANIMATION_FRAMES: (u32, u32) = (2, 40);
 
 /// A lesson: a title and its steps.
 #[derive(Clone, Debug, PartialEq)]

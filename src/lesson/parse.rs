@@ -6,9 +6,11 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
+use crate::animate::{Format, Sweep};
+
 use super::{
-    Compare, InspectorSection, Lesson, LessonError, LessonPlot, Overlays, QuizSpec, SceneSource,
-    Step, StepScene, Text, builtin,
+    Compare, InspectorSection, Lesson, LessonError, LessonPlot, Overlays, QuizSpec,
+    STEP_ANIMATION_FRAMES, SceneSource, Step, StepAnimation, StepScene, Text, builtin,
 };
 use crate::files::{self, FileKind, shown};
 use crate::probe::quiz::Quantity;
@@ -99,6 +101,74 @@ struct RawStep {
     space_view: bool,
     #[serde(default)]
     quiz: Option<QuizSpec>,
+    animation: Option<StepAnimation>,
+}
+
+/// A step's animation as written.
+#[derive(Deserialize)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "an animation: a JSON object with `sweep` and optionally `frames`, `vertex` and `format`"
+)]
+struct RawAnimation {
+    sweep: String,
+    #[serde(default = "default_animation_frames")]
+    frames: u32,
+    #[serde(default = "default_animation_vertex")]
+    vertex: String,
+    #[serde(default)]
+    format: Option<String>,
+}
+
+fn default_animation_frames() -> u32 {
+    10
+}
+
+fn default_animation_vertex() -> String {
+    "C".into()
+}
+
+impl<'de> Deserialize<'de> for StepAnimation {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde::de::Error;
+        let r = RawAnimation::deserialize(d)?;
+        let sweep = Sweep::from_name(&r.sweep).ok_or_else(|| {
+            let names: Vec<&str> = Sweep::ALL.iter().map(|s| s.name()).collect();
+            D::Error::custom(format!(
+                "`sweep` `{}` is not a sweep: one of {}",
+                r.sweep,
+                names.join(", ")
+            ))
+        })?;
+        let (lo, hi) = STEP_ANIMATION_FRAMES;
+        if !(lo..=hi).contains(&r.frames) {
+            return Err(D::Error::custom(format!(
+                "`frames` {} is outside {lo}..={hi}",
+                r.frames
+            )));
+        }
+        let vertex = crate::animate::vertex_by_name(&r.vertex).ok_or_else(|| {
+            D::Error::custom(format!(
+                "`vertex` `{}` is not a corner's name (A, B, C, ...)",
+                r.vertex
+            ))
+        })?;
+        let format = match r.format.as_deref() {
+            None | Some("gif") => Format::Gif,
+            Some("apng") => Format::Apng,
+            Some(f) => {
+                return Err(D::Error::custom(format!(
+                    "`format` `{f}` is not an animation format for slides: gif or apng"
+                )));
+            }
+        };
+        Ok(StepAnimation {
+            sweep,
+            frames: r.frames,
+            vertex,
+            format,
+        })
+    }
 }
 
 impl<'de> Deserialize<'de> for Step {
@@ -152,6 +222,7 @@ impl<'de> Deserialize<'de> for Step {
             plot: r.plot,
             space_view: r.space_view,
             quiz: r.quiz,
+            animation: r.animation,
         })
     }
 }

@@ -5,7 +5,9 @@
 //! are the lessons' own plain Unicode (a formula block is kept line by line in a monospace
 //! block, as the app shows it), the style and the few lines of script are inline. A title
 //! slide, then one slide per step: its title, summary, text and "try this" beside its figure
-//! and row plot (the handout's pictures, [`super::handout::step_pictures`]). The arrow keys,
+//! and row plot (the handout's pictures, [`super::handout::step_pictures`]); a step with an
+//! `animation` shows it in place of the still figure, as a small looping GIF or APNG `data:` URI
+//! ([`step_animation`]; the Beamer PDF keeps the still). The arrow keys,
 //! Page Up / Page Down (what a presentation clicker sends), the space bar, Enter, Backspace,
 //! Home and End step through it; a click on the right (left) half goes forward (back); the
 //! address's `#N` is the slide shown. Printed, every slide is a page.
@@ -14,9 +16,11 @@ use base64::Engine;
 
 use super::handout::{self, HandoutError, HandoutFile, step_pictures, step_state, texture_of};
 use super::text::{self, Block};
-use super::{Lesson, Step};
+use super::{Lesson, Step, StepAnimation, StepState};
+use crate::animate;
 use crate::figure::svg::escape;
 use crate::i18n::{Lang, tr};
+use crate::raster::Texture;
 
 /// A lesson text as HTML: paragraphs with `<strong>` spans, formula blocks as `<pre>`.
 pub fn text_html(s: &str) -> String {
@@ -113,6 +117,33 @@ const SCRIPT: &str = r#"
 })();
 "#;
 
+/// Frames per second of a slide's animation.
+pub const SLIDE_FPS: f64 = 5.0;
+
+/// A step's animation as a GIF (one palette) or an APNG, looping: its sweep of the step's
+/// scene, every frame drawn with the step's figure options
+/// ([`crate::animate::render_frames`]).
+pub fn step_animation(
+    state: &StepState,
+    texture: &Texture,
+    animation: &StepAnimation,
+    number: usize,
+    lang: Lang,
+) -> Result<Vec<u8>, HandoutError> {
+    let error = |error| HandoutError::Animation {
+        step: number,
+        error,
+    };
+    let anim = animate::Animation {
+        sweep: animation.sweep,
+        frames: animation.frames,
+        vertex: animation.vertex,
+        options: state.figure_options(),
+    };
+    let frames = animate::render_frames(&state.scene, texture, &anim, lang).map_err(error)?;
+    animate::encode(&frames, SLIDE_FPS, animation.format).map_err(error)
+}
+
 /// One step's slide.
 fn step_slide(
     lesson: &Lesson,
@@ -142,10 +173,23 @@ fn step_slide(
         escape(&text::plain(step.try_this.get(lang)))
     ));
     s.push_str("</div><div class=\"pictures\">\n");
+    let figure = match &step.animation {
+        Some(a) => {
+            let bytes = step_animation(&state, &texture, a, number, lang)?;
+            let mime = match a.format {
+                animate::Format::Gif => "gif",
+                _ => "png",
+            };
+            format!(
+                "data:image/{mime};base64,{}",
+                base64::engine::general_purpose::STANDARD.encode(bytes)
+            )
+        }
+        None => png_uri(&pictures.figure),
+    };
     s.push_str(&format!(
-        "<img class=\"figure\" alt=\"{}\" src=\"{}\">\n",
+        "<img class=\"figure\" alt=\"{}\" src=\"{figure}\">\n",
         escape(&title),
-        png_uri(&pictures.figure)
     ));
     if let Some((plot_title, bytes)) = &pictures.plot {
         s.push_str(&format!(

@@ -31,7 +31,7 @@ pub struct Outcome {
 }
 
 impl Outcome {
-    fn failed(message: impl Into<String>) -> Self {
+    pub(crate) fn failed(message: impl Into<String>) -> Self {
         let message = message.into();
         Self {
             error: true,
@@ -40,7 +40,7 @@ impl Outcome {
         }
     }
 
-    fn done(message: impl Into<String>) -> Self {
+    pub(crate) fn done(message: impl Into<String>) -> Self {
         let message = message.into();
         Self {
             error: false,
@@ -435,24 +435,7 @@ fn window_contents(
         .num_columns(2)
         .spacing([12.0, 8.0])
         .show(ui, |ui| {
-            ui.label(lang.tr("app.export.folder"));
-            ui.horizontal(|ui| {
-                let field = ui.add(
-                    egui::TextEdit::singleline(folder_text)
-                        .hint_text(lang.tr("app.export.folder_hint"))
-                        .desired_width(340.0),
-                );
-                if field.changed() {
-                    let t = folder_text.trim();
-                    if !t.is_empty() {
-                        out.push(ExportCommand::SetFolder(PathBuf::from(t)));
-                    }
-                }
-                if ui.button(lang.tr("app.export.browse")).clicked() {
-                    out.push(ExportCommand::BrowseFolder);
-                }
-            });
-            ui.end_row();
+            folder_row(ui, folder_text, 340.0, out);
 
             ui.label(lang.tr("app.export.scale"))
                 .on_hover_text(lang.tr("app.export.scale_tip"));
@@ -525,14 +508,47 @@ fn window_contents(
         }
     });
     if let Some(o) = panel.outcome {
-        ui.separator();
-        let color = if o.error {
-            Color32::from_rgb(255, 120, 110)
-        } else {
-            Color32::from_rgb(140, 220, 140)
-        };
-        for line in &o.lines {
-            ui.label(RichText::new(line).color(color));
+        outcome_lines(ui, o);
+    }
+}
+
+/// The grid row of the folder: its field (`width` points) and Browse….
+pub(crate) fn folder_row(
+    ui: &mut Ui,
+    folder_text: &mut String,
+    width: f32,
+    out: &mut Vec<ExportCommand>,
+) {
+    let lang = crate::app::services::locale::lang(ui.ctx());
+    ui.label(lang.tr("app.export.folder"));
+    ui.horizontal(|ui| {
+        let field = ui.add(
+            egui::TextEdit::singleline(folder_text)
+                .hint_text(lang.tr("app.export.folder_hint"))
+                .desired_width(width),
+        );
+        if field.changed() {
+            let t = folder_text.trim();
+            if !t.is_empty() {
+                out.push(ExportCommand::SetFolder(PathBuf::from(t)));
+            }
         }
+        if ui.button(lang.tr("app.export.browse")).clicked() {
+            out.push(ExportCommand::BrowseFolder);
+        }
+    });
+    ui.end_row();
+}
+
+/// What the last action did, under a line: green, or red for an error.
+pub(crate) fn outcome_lines(ui: &mut Ui, o: &Outcome) {
+    ui.separator();
+    let color = if o.error {
+        Color32::from_rgb(255, 120, 110)
+    } else {
+        Color32::from_rgb(140, 220, 140)
+    };
+    for line in &o.lines {
+        ui.label(RichText::new(line).color(color));
     }
 }

@@ -37,6 +37,7 @@ impl FilePicker {
             | FileCommand::SaveTo(_)
             | FileCommand::CompareImage(_)
             | FileCommand::CloseCompareImage
+            | FileCommand::ExportAnimation
             | FileCommand::SetCompareBackground(_) => {}
         }
     }
@@ -163,6 +164,14 @@ pub fn file_menu_ui(ui: &mut Ui, recent: &RecentFiles, waiting: bool) -> Vec<Fil
             .clicked()
         {
             out.push(FileCommand::CompareImageDialog);
+            ui.close();
+        }
+        if ui
+            .button(lang.tr("animate.app.menu"))
+            .on_hover_text(lang.tr("animate.app.menu_tip"))
+            .clicked()
+        {
+            out.push(FileCommand::ExportAnimation);
             ui.close();
         }
         ui.separator();

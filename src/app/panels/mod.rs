@@ -10,6 +10,8 @@ pub mod compare_image;
 pub(crate) mod controls;
 pub(crate) mod corners;
 pub mod export;
+pub mod export_animation;
+pub(crate) mod export_animation_ui;
 pub(crate) mod file_menu;
 pub mod gpu_view;
 pub(crate) mod help;

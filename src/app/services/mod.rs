@@ -4,6 +4,7 @@ pub(crate) mod dialog;
 pub mod files;
 pub(crate) mod locale;
 pub(crate) mod pixel;
+pub mod recorder;
 pub(crate) mod render;
 pub(crate) mod reports;
 pub(crate) mod screenshot;

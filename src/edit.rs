@@ -1,4 +1,4 @@
-//! Scene edits the app makes: moving a vertex under the cursor, pushing it along its view ray,
+//! Scene edits the app makes (also `app::document::edit`; the animations use them too): moving a vertex under the cursor, pushing it along its view ray,
 //! the render options stored in a scene. No GUI code here.
 
 use glam::{DMat4, DVec2, DVec3, DVec4};
@@ -421,7 +421,7 @@ mod tests {
     #[test]
     fn clip_form_edits_keep_w() {
         let mut scene = Scene::from_json(
-            include_str!("../../../assets/scenes/clip-two-triangles.json"),
+            include_str!("../assets/scenes/clip-two-triangles.json"),
             "clip-two-triangles.json",
         )
         .expect("scene");
@@ -438,7 +438,7 @@ mod tests {
     #[test]
     fn a_vertex_behind_the_camera_cannot_be_dragged() {
         let mut scene = Scene::from_json(
-            include_str!("../../../assets/scenes/corner-behind.json"),
+            include_str!("../assets/scenes/corner-behind.json"),
             "corner-behind.json",
         )
         .expect("scene");
