@@ -1,4 +1,4 @@
-//! Scene edits the app makes (also `app::document::edit`; the animations use them too): moving a vertex under the cursor, pushing it along its view ray,
+//! Scene edits the app makes (the app's document and the animations use them): moving a vertex under the cursor, pushing it along its view ray,
 //! the render options stored in a scene. No GUI code here.
 
 use glam::{DMat4, DVec2, DVec3, DVec4};

@@ -7,8 +7,8 @@ use std::path::Path;
 use std::sync::atomic::Ordering;
 
 use barylab::animate::{self, AnimateError, Control, Format, FrameState};
-use barylab::app::document::edit::move_vertex_to;
 use barylab::app::services::recorder::{RECORD_FPS, RECORD_MAX_FRAMES, Recorder};
+use barylab::edit::move_vertex_to;
 use barylab::figure::{Background, Figure, FigureOptions, png};
 use barylab::i18n::Lang;
 use barylab::raster::Texture;

@@ -257,9 +257,9 @@ pub(super) fn probe(args: &ProbeArgs) -> Result<()> {
 /// A figure draws the scene as it is: the render options (`--mode`, `--shading`, `--filter`,
 /// `--wireframe`) become the scene's own.
 pub(super) fn own_options(scene: &mut Scene, settings: &raster::RenderSettings) {
-    barylab::app::document::edit::set_options(
+    barylab::edit::set_options(
         scene,
-        barylab::app::document::edit::SceneOptions {
+        barylab::edit::SceneOptions {
             mode: settings.mode,
             shading: settings.shading,
             filter: settings.filter,

@@ -16,6 +16,7 @@ pub mod handout;
 mod parse;
 pub mod plot;
 pub mod quiz_sheet;
+mod sheet;
 pub mod slides;
 pub mod text;
 

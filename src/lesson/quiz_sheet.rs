@@ -3,7 +3,7 @@
 //! come from, and what each known mistake gives), as two Markdown files beside the handout
 //! ([`SHEET_NAME`], [`KEY_NAME`]). Every number is the probe's ([`crate::probe::quiz::key`]).
 
-use super::handout::{HandoutError, derivation, front_matter};
+use super::sheet::{HandoutError, derivation, front_matter};
 use super::{InspectorSection, Lesson, StepState, text};
 use crate::i18n::Lang;
 use crate::probe::quiz::{self, Quantity, TOLERANCE};

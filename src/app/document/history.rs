@@ -5,8 +5,8 @@
 
 use std::path::PathBuf;
 
-use crate::app::document::edit;
 use crate::app::document::state::AppState;
+use crate::edit;
 use crate::scene::Scene;
 
 /// Undo steps kept.

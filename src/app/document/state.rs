@@ -7,8 +7,8 @@ use std::path::PathBuf;
 use glam::{DVec2, DVec4, Vec2, Vec3};
 use serde::{Deserialize, Serialize};
 
-use crate::app::document::edit::{self, EditError, SceneOptions};
 use crate::app::document::presets::Preset;
+use crate::edit::{self, EditError, SceneOptions};
 use crate::raster::camera::{Camera, ModelView};
 use crate::raster::project::Viewport;
 use crate::raster::{Filter, Interpolation, Shading};

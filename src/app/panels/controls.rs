@@ -3,10 +3,10 @@
 use egui::{Color32, DragValue, RichText, Slider, Ui};
 use glam::{DVec3, DVec4, Vec2};
 
-use crate::app::document::edit::{self, FOV_RANGE_DEG};
 use crate::app::document::presets::Preset;
 use crate::app::document::state::{AppState, PIXEL_SIZE_RANGE, StateCommand, UI_SCALE_RANGE};
 use crate::app::panels::paint::color;
+use crate::edit::{self, FOV_RANGE_DEG};
 use crate::figure::Compare;
 use crate::figure::overlay::{vertex_color, vertex_name};
 use crate::i18n::Lang;

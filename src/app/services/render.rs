@@ -7,8 +7,8 @@ use std::time::{Duration, Instant};
 
 use egui::Color32;
 
-use crate::app::document::edit;
 use crate::app::document::state::AppState;
+use crate::edit;
 use crate::figure::heatmap::{self, Heatmap};
 use crate::figure::{Compare, ViewContent, modes_for, wipe_pixels};
 use crate::progress::{self, Job};
