@@ -165,6 +165,8 @@ impl BaryApp {
         out: &mut Vec<AppCommand>,
     ) {
         let spacing = ui.spacing().item_spacing.y;
+        // The card's lines of keys: two when V offers the 3D view.
+        let key_lines = 1 + usize::from(self.space_toggle_offered);
         let full = self.reports.hover.is_some() || self.reports.pin.is_some();
         let compare = self.state.view.compare;
         let framing = Framing::presenting(compare);
@@ -199,9 +201,9 @@ impl BaryApp {
             self.card_column(ui, width, size, false, texture, framing, out);
             return;
         }
-        if let Some(height) = below_height(rect, aspect, compare, framing, spacing) {
-            let size =
-                present::card_text_for_width(rect.width() / 2.0).min(below_text(height, spacing));
+        if let Some(height) = below_height(rect, aspect, compare, framing, spacing, key_lines) {
+            let size = present::card_text_for_width(rect.width() / 2.0)
+                .min(below_text(height, spacing, key_lines));
             self.canvas.avoid.clear();
             let input = self.card_input(size, false);
             egui::Panel::bottom("present-card-below")
@@ -226,7 +228,6 @@ impl BaryApp {
         let over_area = rect.shrink(side_panels::CANVAS_MARGIN);
         let size = over_text(over_area.width());
         let width = present::card_width_for_text(size).min(over_area.width());
-        let key_lines = 1 + usize::from(self.space_toggle_offered);
         let card = egui::vec2(width, present::card_height(size, full, spacing, key_lines));
         // The layout follows the pin only: a hovered pixel fills the card where it is (a
         // picture that made room when the pointer entered it would move under the pointer).
@@ -243,7 +244,7 @@ impl BaryApp {
             Some(self.emptiest_corner(self.canvas.area.unwrap_or(over_area), card))
         };
         let Some(corner) = corner else {
-            let size = narrow_text(rect, spacing);
+            let size = narrow_text(rect, spacing, key_lines);
             let width = present::card_width_narrow(size);
             self.card_column(ui, width, size, true, texture, framing, out);
             return;
@@ -489,6 +490,7 @@ fn below_height(
     compare: crate::figure::Compare,
     framing: Framing,
     spacing: f32,
+    key_lines: usize,
 ) -> Option<f32> {
     if compare != crate::figure::Compare::SideBySide {
         return None;
@@ -501,8 +503,8 @@ fn below_height(
         + 2.0 * side_panels::CANVAS_MARGIN
         + crate::app::panels::canvas_layout::HANDLE_MARGIN;
     let room = (rect.height() - used).max(BELOW_MAX_SHARE * rect.height());
-    let least = present::card_height_wide(BELOW_MIN_TEXT, spacing);
-    (room >= least).then(|| room.min(present::card_height_wide(OVER_MAX_TEXT, spacing)))
+    let least = present::card_height_wide(BELOW_MIN_TEXT, spacing, key_lines);
+    (room >= least).then(|| room.min(present::card_height_wide(OVER_MAX_TEXT, spacing, key_lines)))
 }
 
 /// The largest share of the canvas's height a card under two images takes from them.
@@ -517,20 +519,22 @@ const NARROW_MIN_TEXT: f32 = 12.0;
 
 /// The text size of the narrow card beside the picture in the canvas `rect`: its column a
 /// share of the width, its height within the canvas's.
-fn narrow_text(rect: egui::Rect, spacing: f32) -> f32 {
+fn narrow_text(rect: egui::Rect, spacing: f32, key_lines: usize) -> f32 {
     let for_width = (NARROW_SHARE * rect.width() - present::PANEL_MARGINS)
         / (present::card_width_narrow(1.0) - present::PANEL_MARGINS);
     let mut size = for_width.clamp(NARROW_MIN_TEXT, OVER_MAX_TEXT);
-    while size > NARROW_MIN_TEXT && present::card_height_narrow(size, spacing) > rect.height() {
+    while size > NARROW_MIN_TEXT
+        && present::card_height_narrow(size, spacing, key_lines) > rect.height()
+    {
         size -= 0.5;
     }
     size
 }
 
 /// The largest text size whose wide card fits `height` points.
-fn below_text(height: f32, spacing: f32) -> f32 {
+fn below_text(height: f32, spacing: f32, key_lines: usize) -> f32 {
     let mut size = OVER_MAX_TEXT;
-    while size > BELOW_MIN_TEXT && present::card_height_wide(size, spacing) > height {
+    while size > BELOW_MIN_TEXT && present::card_height_wide(size, spacing, key_lines) > height {
         size -= 0.5;
     }
     size

@@ -91,12 +91,18 @@ pub fn card_width_narrow(size: f32) -> f32 {
     size * NARROW_EMS * MONO_ADVANCE + PANEL_MARGINS
 }
 
-/// The height in points of a narrow card with a pixel at text `size`.
-pub fn card_height_narrow(size: f32, spacing: f32) -> f32 {
+/// The height in points of a narrow card with a pixel at text `size`, with `key_lines` lines
+/// of keys (two when V offers the 3D view).
+pub fn card_height_narrow(size: f32, spacing: f32, key_lines: usize) -> f32 {
     let spacing = card_spacing(spacing, size);
     NARROW_ROWS * (ROW * size + spacing)
-        + 2.0 * (ROW * SMALL_SHARE * size + spacing)
+        + small_rows(key_lines) * (ROW * SMALL_SHARE * size + spacing)
         + PANEL_MARGINS
+}
+
+/// The small rows of a card: the context line and `key_lines` lines of keys (at least one).
+fn small_rows(key_lines: usize) -> f32 {
+    1.0 + key_lines.max(1) as f32
 }
 
 /// The card's height in points at text `size`, with a pixel to show (`full`) or without,
@@ -111,10 +117,12 @@ pub fn card_height(size: f32, full: bool, spacing: f32, key_lines: usize) -> f32
 }
 
 /// The height in points of a wide card (two columns: the table beside the other lines) at
-/// text `size`.
-pub fn card_height_wide(size: f32, spacing: f32) -> f32 {
+/// text `size`, with `key_lines` lines of keys.
+pub fn card_height_wide(size: f32, spacing: f32, key_lines: usize) -> f32 {
     let spacing = card_spacing(spacing, size);
-    WIDE_ROWS * (ROW * size + spacing) + 2.0 * (ROW * SMALL_SHARE * size + spacing) + PANEL_MARGINS
+    WIDE_ROWS * (ROW * size + spacing)
+        + small_rows(key_lines) * (ROW * SMALL_SHARE * size + spacing)
+        + PANEL_MARGINS
 }
 
 /// The card's space between rows for the style's `spacing` and text `size`: at most a
