@@ -14,7 +14,7 @@ mod mip;
 
 pub use anisotropic::{Anisotropic, MAX_ANISOTROPY, MaxAnisotropy, footprint_axes};
 pub use load::{ImageProblem, OpenedImage, TextureError, open_image, plain_error};
-use mip::mip_chain;
+use mip::{mip_chain, try_mip_chain};
 
 /// Texture minification/magnification filter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -364,15 +364,27 @@ impl Texture {
         Self::from_texels(img.width(), img.height(), flipped_texels(img, Vec::new()))
     }
 
-    /// [`Texture::from_image`] with the texels' memory asked for fallibly (`None` for an
-    /// image of no pixels).
+    /// [`Texture::from_image`] with the texels' and the mipmap levels' memory asked for
+    /// fallibly (`None` for an image of no pixels).
     pub fn try_from_image(
         img: &image::RgbaImage,
     ) -> Result<Option<Self>, crate::budget::MemoryError> {
         let (w, h) = img.dimensions();
+        if w == 0 || h == 0 {
+            return Ok(None);
+        }
         let room =
             crate::budget::try_vec(w as usize * h as usize, &format!("the {w}x{h} texture"))?;
-        Ok(Self::from_texels(w, h, flipped_texels(img, room)))
+        let texels = flipped_texels(img, room);
+        let mips = try_mip_chain(w, h, &texels)?;
+        let opaque = texels.iter().all(|t| t[3] == u8::MAX);
+        Ok(Some(Self {
+            width: w,
+            height: h,
+            texels,
+            mips,
+            opaque,
+        }))
     }
 
     /// The texels as an image with row 0 at the top, for display and export.
