@@ -162,14 +162,8 @@ fn hovering_outside_the_quad_still_shows_weights_and_why() {
     assert!(shows(&h, &fmt_number(negative)));
 }
 
-#[test]
-fn dragging_handle_a_moves_vertex_a() {
-    let mut h = harness();
-    let before = vertex_windows(&h);
-    let a = before[0].expect("A on screen");
-    let view = h.state().canvas().views[0];
-    let start = view.transform.to_screen(a);
-    let delta = egui::vec2(60.0, -40.0);
+/// Drags from `start` by `delta` points in four moves, as a hand would.
+fn drag_by(h: &mut Harness<'_, BaryApp>, start: Pos2, delta: egui::Vec2) {
     h.hover_at(start);
     h.run();
     h.drag_at(start);
@@ -180,6 +174,17 @@ fn dragging_handle_a_moves_vertex_a() {
     }
     h.drop_at(start + delta);
     h.run();
+}
+
+#[test]
+fn dragging_handle_a_moves_vertex_a() {
+    let mut h = harness();
+    let before = vertex_windows(&h);
+    let a = before[0].expect("A on screen");
+    let view = h.state().canvas().views[0];
+    let start = view.transform.to_screen(a);
+    let delta = egui::vec2(60.0, -40.0);
+    drag_by(&mut h, start, delta);
     let after = vertex_windows(&h);
     let moved = after[0].expect("A on screen");
     let expected =
@@ -228,16 +233,7 @@ fn a_corner_off_the_image_is_dragged_by_its_handle_on_the_edge() {
     let view = h.state().canvas().views[0];
     let start = view.transform.to_screen(DVec2::new(0.0, size.y));
     let delta = egui::vec2(30.0, -20.0);
-    h.hover_at(start);
-    h.run();
-    h.drag_at(start);
-    h.run();
-    for k in 1..=4 {
-        h.hover_at(start + delta * (k as f32 / 4.0));
-        h.run();
-    }
-    h.drop_at(start + delta);
-    h.run();
+    drag_by(&mut h, start, delta);
     let moved = vertex_windows(&h)[0].expect("A in front of the camera");
     let expected =
         a + DVec2::new(f64::from(delta.x), f64::from(delta.y)) / f64::from(view.transform.scale);
