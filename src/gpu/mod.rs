@@ -467,7 +467,9 @@ impl Gpu {
     pub fn read(&self) -> Result<Vec<[u8; 4]>, String> {
         let o = self.objects.as_ref().ok_or("no scene loaded")?;
         let (w, h) = (o.width as usize, o.height as usize);
-        let mut bytes = vec![0u8; w * h * 4];
+        let mut bytes = readback_buffer(w * h * 4, || {
+            format!("reading back the GPU's {w}x{h} image")
+        })?;
         // SAFETY: the buffer holds exactly width * height RGBA8 pixels.
         unsafe {
             self.gl.bind_framebuffer(glow::FRAMEBUFFER, Some(o.fbo));
@@ -482,8 +484,7 @@ impl Gpu {
                 glow::PixelPackData::Slice(Some(&mut bytes)),
             );
         }
-        let pixels = bytes.chunks_exact(4).map(|c| [c[0], c[1], c[2], c[3]]);
-        Ok(top_row_first(pixels.collect(), w, h))
+        top_row_first(&bytes, w, h, |c| [c[0], c[1], c[2], c[3]])
     }
 
     /// Draws [`Output::Values`] once and reads the floats back, image row 0 (the top) first:
@@ -494,7 +495,9 @@ impl Gpu {
         self.finish();
         let o = self.objects.as_ref().ok_or("no scene loaded")?;
         let (w, h) = (o.width as usize, o.height as usize);
-        let mut bytes = vec![0u8; w * h * 16];
+        let mut bytes = readback_buffer(w * h * 16, || {
+            format!("reading back the GPU's {w}x{h} values")
+        })?;
         // SAFETY: the buffer holds exactly width * height RGBA32F pixels.
         unsafe {
             self.gl
@@ -511,11 +514,7 @@ impl Gpu {
             );
         }
         self.release_state();
-        let float = |b: &[u8]| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
-        let pixels = bytes
-            .chunks_exact(16)
-            .map(|p| [0, 4, 8, 12].map(|k| float(&p[k..k + 4])));
-        Ok(top_row_first(pixels.collect(), w, h))
+        top_row_first(&bytes, w, h, rgba32f)
     }
 
     /// Draws once and reads back.
@@ -563,11 +562,33 @@ impl Drop for Gpu {
     }
 }
 
-/// Pixels read back from GL (row 0 at the bottom) in image order, row 0 at the top.
-fn top_row_first<T: Copy>(bottom_first: Vec<T>, width: usize, height: usize) -> Vec<T> {
-    let mut out = Vec::with_capacity(width * height);
+/// A zeroed buffer of `n` bytes for a readback, allocated fallibly: when the system refuses
+/// the memory, a message naming `what` and the size instead of an abort.
+pub(crate) fn readback_buffer(n: usize, what: impl FnOnce() -> String) -> Result<Vec<u8>, String> {
+    let mut bytes = Vec::new();
+    crate::budget::try_resize(&mut bytes, n, 0u8, what).map_err(|e| e.to_string())?;
+    Ok(bytes)
+}
+
+/// One RGBA32F pixel's 16 bytes (native order, as GL wrote them) as four floats.
+pub(crate) fn rgba32f(p: &[u8]) -> [f32; 4] {
+    [0, 4, 8, 12].map(|k| f32::from_ne_bytes([p[k], p[k + 1], p[k + 2], p[k + 3]]))
+}
+
+/// Pixels read back from GL (row 0 at the bottom), each decoded from its bytes by `pixel`,
+/// in image order, row 0 at the top; the output is allocated fallibly.
+fn top_row_first<T>(
+    bottom_first: &[u8],
+    width: usize,
+    height: usize,
+    pixel: impl Fn(&[u8]) -> T,
+) -> Result<Vec<T>, String> {
+    let size = bottom_first.len() / (width * height).max(1);
+    let mut out = crate::budget::try_vec(width * height, "the GPU's pixels in image order")
+        .map_err(|e| e.to_string())?;
     for row in (0..height).rev() {
-        out.extend_from_slice(&bottom_first[row * width..(row + 1) * width]);
+        let bytes = &bottom_first[row * width * size..(row + 1) * width * size];
+        out.extend(bytes.chunks_exact(size).map(&pixel));
     }
-    out
+    Ok(out)
 }

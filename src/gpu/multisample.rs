@@ -395,7 +395,15 @@ impl Gpu {
     ) -> Result<Vec<[f32; 4]>, String> {
         let o = self.objects.as_ref().ok_or("no scene loaded")?;
         let (w, h) = (o.width as usize, o.height as usize);
-        let mut out = vec![[0.0f32; 4]; w * h * count];
+        let n = w * h * count;
+        let mut out = Vec::new();
+        crate::budget::try_resize(&mut out, n, [0.0f32; 4], || {
+            format!("the GPU's {count} samples of a {w}x{h} image")
+        })
+        .map_err(|e| e.to_string())?;
+        let mut bytes = super::readback_buffer(w * h * 16, || {
+            format!("reading back one sample of the GPU's {w}x{h} image")
+        })?;
         let gl = &self.gl;
         // SAFETY: the caller's context is current; the buffer holds w * h RGBA32F pixels.
         unsafe {
@@ -409,7 +417,6 @@ impl Gpu {
                 gl.uniform_1_i32(Some(&loc), 1);
             }
             let index = gl.get_uniform_location(program, "index");
-            let mut bytes = vec![0u8; w * h * 16];
             for k in 0..count {
                 gl.uniform_1_i32(index.as_ref(), k as i32);
                 gl.draw_arrays(glow::TRIANGLES, 0, 3);
@@ -423,12 +430,11 @@ impl Gpu {
                     glow::FLOAT,
                     glow::PixelPackData::Slice(Some(&mut bytes)),
                 );
-                let float = |b: &[u8]| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
                 for (i, p) in bytes.chunks_exact(16).enumerate() {
                     // GL row 0 is the bottom.
                     let (x, gl_row) = (i % w, i / w);
                     let pixel = (h - 1 - gl_row) * w + x;
-                    out[pixel * count + k] = [0, 4, 8, 12].map(|j| float(&p[j..j + 4]));
+                    out[pixel * count + k] = super::rgba32f(p);
                 }
             }
             gl.bind_texture(glow::TEXTURE_2D_MULTISAMPLE, None);
