@@ -337,6 +337,45 @@ fn presenting_on_a_projector_gives_the_picture_half_the_window_and_hides_no_hand
 }
 
 #[test]
+fn the_c_key_hides_the_card_and_gives_the_pinned_picture_half_the_window() {
+    for scale in [1.0, 1.5] {
+        let options = AppOptions {
+            present: true,
+            pin: Some([400, 420]),
+            ..AppOptions::default()
+        };
+        let mut h = harness([1024.0, 768.0], options);
+        h.state_mut().push(StateCommand::SetUiScale(scale));
+        settle(&mut h);
+        let with_card = image_share(&h);
+        h.key_press(egui::Key::C);
+        settle(&mut h);
+        assert!(!h.state().state().view.show_card, "C hides the card");
+        let alone = image_share(&h);
+        assert!(
+            alone >= 0.5 && alone > with_card,
+            "text size {scale}: the picture alone has {alone} of the window (with the card {with_card})"
+        );
+        assert!(
+            h.state().canvas().avoid.is_empty(),
+            "no card over the picture"
+        );
+        assert_eq!(
+            h.state().state().view.pinned,
+            Some([400, 420]),
+            "the pin stays"
+        );
+        h.key_press(egui::Key::C);
+        settle(&mut h);
+        assert!(h.state().state().view.show_card, "C again shows the card");
+        assert!(
+            (image_share(&h) - with_card).abs() < 1e-3,
+            "the same layout as before"
+        );
+    }
+}
+
+#[test]
 fn on_a_projector_at_text_size_one_and_a_half_every_panel_opens_and_the_lesson_steps() {
     let lesson = barylab::lesson::Lesson::builtin().expect("built-in lesson");
     for scale in [1.5, 2.0] {

@@ -196,6 +196,12 @@ impl BaryApp {
         }
         let rect = ui.available_rect_before_wrap();
         let window = ui.ctx().content_rect();
+        // C hides the card: the picture alone, as large as the window allows.
+        if !self.state.view.show_card {
+            self.canvas.avoid.clear();
+            self.canvas_panel(ui, texture, framing, out);
+            return;
+        }
         if let Some(width) = beside_width(rect, aspect, compare, framing, window) {
             let size = present::card_text_for_width(width);
             self.card_column(ui, width, size, false, texture, framing, out);

@@ -64,6 +64,10 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if key(Key::M) {
             state(StateCommand::SetShowMagnifier(!view.show_magnifier));
         }
+        // C: presentation mode's card of numbers, or the picture alone at its largest.
+        if input.presenting && key(Key::C) {
+            state(StateCommand::SetShowCard(!view.show_card));
+        }
         // R: start or stop recording the canvas (File > Export animation…).
         if key(Key::R) {
             extra.push(crate::app::command::AnimationCommand::ToggleRecord.into());

@@ -39,6 +39,9 @@ pub struct ViewSettings {
     pub show_sub_areas: bool,
     /// In presentation mode, show the pinned pixel and its neighbours enlarged.
     pub show_magnifier: bool,
+    /// In presentation mode, show the card of the pixel's numbers (off: the picture alone, as
+    /// large as the window allows).
+    pub show_card: bool,
     /// Show the Controls side panel.
     pub show_controls: bool,
     /// Show the Inspector side panel.
@@ -73,6 +76,7 @@ impl Default for ViewSettings {
             show_handles: true,
             show_sub_areas: false,
             show_magnifier: true,
+            show_card: true,
             show_controls: true,
             show_inspector: true,
             pinned: None,
@@ -189,6 +193,8 @@ pub enum StateCommand {
     SetShowSubAreas(bool),
     /// Show the magnifier in presentation mode, or not.
     SetShowMagnifier(bool),
+    /// Show the card in presentation mode, or not.
+    SetShowCard(bool),
     /// Show the Controls panel, or not.
     SetShowControls(bool),
     /// Show the Inspector panel, or not.
@@ -367,6 +373,7 @@ impl AppState {
             StateCommand::SetShowHandles(b) => self.view.show_handles = b,
             StateCommand::SetShowSubAreas(b) => self.view.show_sub_areas = b,
             StateCommand::SetShowMagnifier(b) => self.view.show_magnifier = b,
+            StateCommand::SetShowCard(b) => self.view.show_card = b,
             StateCommand::SetShowControls(b) => self.view.show_controls = b,
             StateCommand::SetShowInspector(b) => self.view.show_inspector = b,
             StateCommand::SetUiScale(s) => {

@@ -276,6 +276,14 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<StateCommand> {
         &mut out,
         StateCommand::SetShowMagnifier,
     );
+    checkbox(
+        ui,
+        view.show_card,
+        &lang.tr("app.controls.card"),
+        &lang.tr("app.controls.tip.card"),
+        &mut out,
+        StateCommand::SetShowCard,
+    );
 
     section(ui, &lang.tr("app.controls.presets"));
     ui.horizontal_wrapped(|ui| {

@@ -58,6 +58,7 @@ const KEY_ROWS: &[(&str, &str)] = &[
     ("app.help.key_rows.k21.key", "app.help.key_rows.k21.what"),
     ("app.help.key_rows.k22.key", "app.help.key_rows.k22.what"),
     ("app.help.key_rows.k23.key", "app.help.key_rows.k23.what"),
+    ("app.help.key_rows.k24.key", "app.help.key_rows.k24.what"),
     ("app.help.key_rows.k07.key", "app.help.key_rows.k07.what"),
     ("app.help.key_rows.k08.key", "app.help.key_rows.k08.what"),
     ("app.help.key_rows.k09.key", "app.help.key_rows.k09.what"),
