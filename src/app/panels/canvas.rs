@@ -172,6 +172,11 @@ impl CanvasState {
                 true
             }
             Err(e) => {
+                // Also on stderr, once per new message: a terminal (or a test) sees why the
+                // picture is missing.
+                if self.error.as_ref().map(|old| &old.text) != Some(&e.text) {
+                    eprintln!("barylab: {}", e.text);
+                }
                 self.error = Some(e);
                 false
             }
