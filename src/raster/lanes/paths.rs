@@ -104,7 +104,7 @@ impl<'t> Lanes<'t> {
     ) {
         let (texture, shading) = (self.texture, self.shading);
         match self.build {
-            Build::Portable { sse41 } if portable::applies(&shading, target) => {
+            Build::Portable { sse41 } if portable::applies(&shading, texture, target) => {
                 let sampler = Sampler::new(texture, shading.filter, shading.wrap);
                 portable::draw(rasterizer, sse41, tri, rows, &sampler, shading.mode, target);
             }

@@ -67,9 +67,11 @@ fn three<T>(mut f: impl FnMut(usize) -> T) -> [T; 3] {
 }
 
 /// Whether the portable lanes draw a triangle made for `shading` into `target`: texture
-/// shading without the wireframe, into colour and depth only.
-pub(super) fn applies(shading: &LaneShading, target: &Target<'_>) -> bool {
+/// shading without the wireframe, into colour and depth only, from a texture of fewer than
+/// 2^31 texels (the sampler's indices are 32-bit).
+pub(super) fn applies(shading: &LaneShading, texture: &Texture, target: &Target<'_>) -> bool {
     shading.color == LaneColor::Texture
+        && texture.base_texels().len() < 1 << 31
         && !shading.wireframe
         && target.uv.is_none()
         && target.difference.is_none()

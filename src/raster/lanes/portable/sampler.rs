@@ -6,32 +6,38 @@
 use super::super::sampler::{LaneWrap, Sampler};
 use super::super::texture::Filter;
 use super::{F32s, I32s, Inf, LANES, Rgba, each, mask32};
+
+/// Texel indices of eight lanes (`j * width + i`).
+type Indices = [u32; LANES];
 use crate::raster::texture::MAX_TEXEL_COORD;
 
-/// `x as i32` for an `x` already clamped to +-[`MAX_TEXEL_COORD`] or NaN: NaN gives 0 (as
-/// `as i32`), the rest is truncated. (`as i32` saturates, which the compiler does lane by
-/// lane; this is one vector conversion.)
+/// `x as i32` for an `x` that is not NaN and within +-[`MAX_TEXEL_COORD`]: the truncation.
+/// (`as i32` saturates and maps NaN to 0, which the compiler does lane by lane; this is one
+/// vector conversion. The callers replace NaN and clamp first.)
 #[inline(always)]
 fn trunc(x: f32) -> i32 {
-    let x = if x.is_nan() { 0.0 } else { x };
     debug_assert!(x.abs() <= MAX_TEXEL_COORD);
-    // SAFETY: `x` is finite and within +-1e9 (clamped by the caller, NaN replaced above), so
-    // its truncation fits an `i32`.
+    // SAFETY: `x` is finite and within +-1e9 (clamped by the caller, NaN replaced), so its
+    // truncation fits an `i32`.
     unsafe { x.to_int_unchecked::<i32>() }
 }
 
 /// `(floor(clamp(x)) as i32, floor(clamp(x)))` per lane, as `texture::texel_floor` and the
 /// floor inside `texture::bilinear_fraction`: the coordinate clamped to
-/// +-[`MAX_TEXEL_COORD`], truncated (`as i32`: NaN gives 0), one less where the truncation is
-/// above it. NaN gives index 0, as `texel_floor`.
+/// +-[`MAX_TEXEL_COORD`] (NaN as 0, which `texel_floor` gives), truncated, one less where the
+/// truncation is above it (a negative non-integer, so below 2^23 in magnitude: `t - 1` is
+/// exact in `f32`), and the index converted back: exact, since an index beyond 2^24 is the
+/// coordinate itself (an `f32` that large is an integer). One conversion each way, where
+/// `fast_floor` then `as i32` take two to the integer.
 #[inline(always)]
 fn floor_coord(x: &F32s) -> (I32s, F32s) {
-    let floor = each(|k| {
-        let xc = x[k].clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD);
-        let t = trunc(xc) as f32;
-        if t > xc { t - 1.0 } else { t }
+    let xc: F32s = each(|k| {
+        let c = x[k].clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD);
+        if c.is_nan() { 0.0 } else { c }
     });
-    (each(|k| trunc(floor[k])), floor)
+    let t: I32s = each(|k| trunc(xc[k]));
+    let i: I32s = each(|k| t[k] + mask32(t[k] as f32 > xc[k]));
+    (i, each(|k| i[k] as f32))
 }
 
 /// `texture::bilinear_fraction` per lane: `clamp(x - floor, 0, 1)` where `x` is finite,
@@ -57,11 +63,13 @@ fn wrap(i: &I32s, w: LaneWrap) -> I32s {
 }
 
 /// `texture::byte_from_sum` per lane: NaN gives 0, else `clamp(x, 0, 255)` rounded half away
-/// from zero, as `trunc(x)` plus one where the rest is at least 1/2.
+/// from zero, as `trunc(x)` plus one where the rest is at least 1/2. (The comparisons are
+/// written so that NaN fails the first: `x > 0 ? x : 0` is one vector maximum.)
 #[inline(always)]
 pub(super) fn byte_from_sum(y: &F32s) -> I32s {
     each(|k| {
-        let y = y[k].clamp(0.0, 255.0);
+        let y = if y[k] > 0.0 { y[k] } else { 0.0 };
+        let y = if y < 255.0 { y } else { 255.0 };
         let t = trunc(y);
         t + i32::from(y - t as f32 >= 0.5)
     })
@@ -86,34 +94,55 @@ fn weighted(w: &[F32s; 4], t: &[Rgba; 4], c: u32) -> I32s {
 
 impl Sampler<'_> {
     /// The index `j * width + i` in `texels` of eight wrapped texel coordinates (each in
-    /// `0..width` and `0..height`), as [`Sampler::texel`] reads it: a 32 x 32 -> 64-bit
-    /// product, which the vector units have.
+    /// `0..width` and `0..height`), as [`Sampler::texel`] reads it: below the number of
+    /// texels, which is below 2^31 where these lanes draw ([`super::applies`]), so 32-bit
+    /// products (one vector multiplication).
     #[inline(always)]
-    fn index(&self, i: &I32s, j: &I32s) -> [usize; LANES] {
-        let width = self.width as u64;
-        each(|k| (u64::from(j[k] as u32) * width + u64::from(i[k] as u32)) as usize)
+    fn index(&self, i: &I32s, j: &I32s) -> Indices {
+        let width = self.width as u32;
+        each(|k| j[k] as u32 * width + i[k] as u32)
+    }
+
+    /// Whether `at + extra` is a texel index for every lane (`extra` 0 for one texel, 1 for a
+    /// pair): one vector maximum, so the reads after it need no check of their own.
+    #[inline(always)]
+    fn inside(&self, at: &Indices, extra: usize) -> bool {
+        let max = at.iter().fold(0, |m, &a| m.max(a));
+        (max as usize) + extra < self.texels.len()
     }
 
     /// The packed texels (red in the low byte) at indices `at`.
     #[inline(always)]
-    fn fetch(&self, at: &[usize; LANES]) -> Rgba {
-        each(|k| u32::from_le_bytes(self.texels[at[k]]))
+    fn fetch(&self, at: &Indices) -> Rgba {
+        if self.inside(at, 0) {
+            // SAFETY: every index is below `texels.len()` (checked just above).
+            each(|k| u32::from_le_bytes(unsafe { *self.texels.get_unchecked(at[k] as usize) }))
+        } else {
+            each(|k| {
+                self.texels
+                    .get(at[k] as usize)
+                    .map_or(0, |t| u32::from_le_bytes(*t))
+            })
+        }
     }
 
     /// The packed texels at indices `at` and beside them, `at + 1` (the texels `(i, j)` and
-    /// `(i + 1, j)` when `i + 1` is inside the row): one 8-byte read per lane. An index
-    /// without a texel beside it (never asked for) reads as 0.
+    /// `(i + 1, j)` when `i + 1` is inside the row): two 4-byte reads per lane at one address
+    /// (read as one 8-byte value they were split lane by lane, in scalar registers). A pair
+    /// past the last texel (never asked for) reads as 0.
     #[inline(always)]
-    fn fetch_pairs(&self, at: &[usize; LANES]) -> (Rgba, Rgba) {
-        let bytes = self.texels.as_flattened();
-        let pairs: [u64; LANES] = each(|k| {
-            let b = 4 * at[k];
-            bytes
-                .get(b..b + 8)
-                .and_then(|s| <[u8; 8]>::try_from(s).ok())
-                .map_or(0, u64::from_le_bytes)
-        });
-        (each(|k| pairs[k] as u32), each(|k| (pairs[k] >> 32) as u32))
+    fn fetch_pairs(&self, at: &Indices) -> (Rgba, Rgba) {
+        if self.inside(at, 1) {
+            let base = self.texels.as_ptr();
+            // SAFETY: `at + 1` is below `texels.len()` for every lane (checked just above).
+            let read = |k: usize, d: usize| unsafe { *base.add(at[k] as usize + d) };
+            (
+                each(|k| u32::from_le_bytes(read(k, 0))),
+                each(|k| u32::from_le_bytes(read(k, 1))),
+            )
+        } else {
+            (self.fetch(at), self.fetch(&each(|k| at[k].wrapping_add(1))))
+        }
     }
 
     /// The packed RGBA8 colours (red in the low byte) at eight uv, as [`Sampler::sample`]
