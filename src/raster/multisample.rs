@@ -15,9 +15,11 @@
 use glam::{DVec2, I64Vec2};
 
 use super::draw::write_buffers;
-use super::framebuffer::{NO_TRIANGLE, RowBand, depth_passes};
+use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE, RowBand, depth_passes};
 use super::interpolate::{self, Fragment};
+use super::lanes::VectorLevel;
 use super::mesh::ClipMesh;
+use super::msaa_band::{self, Drawn};
 use super::prepare::{PreparedTriangle, source_vertices};
 use super::project::{SUBPIXEL, Viewport};
 use super::sample::{SampleSettings, centroid_sample, resolve, sample_at, window_position};
@@ -133,6 +135,39 @@ pub fn shading_point(x: u32, y: u32, mask: u32, ctx: &SampleContext<'_>) -> I64V
     }
 }
 
+/// The fragment pixel (x, y) of a triangle shades at `p` (1/256 pixel): [`fragment_at`] with
+/// the texture footprint of the pixel.
+fn shading_fragment(
+    (setup, flat): (&TriangleSetup, Option<&Varyings>),
+    (x, y): (u32, u32),
+    p: I64Vec2,
+    ctx: &SampleContext<'_>,
+) -> Option<Fragment> {
+    let mut frag = fragment_at(setup, p, flat)?;
+    texture_footprint(&mut frag, setup, (x, y), ctx.params, ctx.texture);
+    Some(frag)
+}
+
+/// MSAA's one shading of pixel (x, y) for a triangle covering the samples `mask`: the
+/// fragment at the [`shading_point`] and its colour; `None` when there is no fragment there.
+pub(super) fn shared_shading(
+    (setup, flat): (&TriangleSetup, Option<&Varyings>),
+    (x, y): (u32, u32),
+    mask: u32,
+    ctx: &SampleContext<'_>,
+    wire: &[DVec2; 3],
+) -> Option<(Fragment, [u8; 4])> {
+    let frag = shading_fragment((setup, flat), (x, y), shading_point(x, y, mask, ctx), ctx)?;
+    Some((frag, shade(&frag, ctx.texture, ctx.params, wire)))
+}
+
+/// The window depth of the sample at `offset` in pixel (x, y) under a triangle:
+/// `sum l_i d_i` with the screen weights at the sample ([`interpolate::depth_at`]), as `f32`.
+pub(super) fn sample_depth(setup: &TriangleSetup, x: u32, y: u32, offset: I64Vec2) -> f32 {
+    let l = setup.weights.at(window_position(sample_at(x, y, offset)));
+    interpolate::depth_at(setup, &l) as f32
+}
+
 /// Draws one triangle (source triangle `source`, with its `flat` attributes if any) into the
 /// samples of pixel (x, y): coverage, the depth test per sample (less-than), shading once
 /// (MSAA at the centre or centroid) or per sample, and the sample's colour, depth, triangle
@@ -150,34 +185,26 @@ pub fn draw_pixel(
     }
     let params = ctx.params;
     let texture = ctx.texture;
-    let fragment = |p: I64Vec2| {
-        let mut frag = fragment_at(setup, p, flat)?;
-        texture_footprint(&mut frag, setup, (x, y), params, texture);
-        Some(frag)
-    };
+    let fragment = |p: I64Vec2| shading_fragment((setup, flat), (x, y), p, ctx);
     let shared = if ctx.samples.per_sample_shading() {
         None
     } else {
-        let frag = fragment(shading_point(x, y, mask, ctx))?;
-        Some((frag, shade(&frag, texture, params, wire)))
+        Some(shared_shading((setup, flat), (x, y), mask, ctx, wire)?)
     };
     let mut first = None;
     for (k, (&o, out)) in ctx.offsets.iter().zip(pixel.iter_mut()).enumerate() {
         if mask & 1 << k == 0 {
             continue;
         }
-        let p = sample_at(x, y, o);
         let (frag, depth) = match &shared {
-            Some((frag, _)) => {
-                let l = setup.weights.at(window_position(p));
-                (*frag, interpolate::depth_at(setup, &l))
-            }
+            Some((frag, _)) => (*frag, sample_depth(setup, x, y, o)),
             None => {
-                let Some(frag) = fragment(p) else { continue };
-                (frag, frag.depth)
+                let Some(frag) = fragment(sample_at(x, y, o)) else {
+                    continue;
+                };
+                (frag, frag.depth as f32)
             }
         };
-        let depth = depth as f32;
         if !depth_passes(depth, out.depth) {
             continue;
         }
@@ -262,30 +289,16 @@ pub(super) fn draw_band<'t>(
     }
 }
 
-/// Draws every prepared triangle into `frame` (already sized and cleared to `background`)
-/// and into a new sample buffer, in parallel over bands of `rows_per_band` rows, each band
-/// drawing its triangles in submission order; returns the samples.
-pub(super) fn draw_frame(
-    (mesh, triangles): (&ClipMesh, &[PreparedTriangle]),
+/// The set-up triangles of a multisampled frame with their source, `flat` attributes and
+/// [`sample_bounds`], in submission order, and the bins of the bands of `rows_per_band` rows.
+fn drawn_and_bins<'t>(
+    (mesh, triangles): (&ClipMesh, &'t [PreparedTriangle]),
     ctx: &SampleContext<'_>,
-    frame: &mut super::framebuffer::Framebuffer,
+    (width, height): (u32, u32),
     rows_per_band: u32,
-    background: [u8; 4],
-) -> SampleBuffer {
-    use rayon::prelude::*;
-    let viewport = Viewport {
-        width: frame.width,
-        height: frame.height,
-    };
-    let n = ctx.offsets.len();
-    let (width, height) = (frame.width, frame.height);
-    let mut buffer = SampleBuffer {
-        width,
-        height,
-        offsets: ctx.offsets.to_vec(),
-        samples: vec![SampleValue::clear(background); width as usize * height as usize * n],
-    };
-    let drawn: Vec<_> = triangles
+) -> (Vec<Drawn<'t>>, Vec<Vec<(u32, u32)>>) {
+    let viewport = Viewport { width, height };
+    let drawn: Vec<Drawn<'_>> = triangles
         .iter()
         .map(|t| (t, flat_varyings(mesh, t.source, &ctx.samples)))
         .flat_map(|(t, flat)| {
@@ -304,6 +317,60 @@ pub(super) fn draw_frame(
             .enumerate()
             .map(|(i, d)| (i as u32, 0, d.3.y0, d.3.y1)),
     );
+    (drawn, bins)
+}
+
+/// Whether [`draw_frame_fast`] draws into `frame` with these samples: a frame of colour and
+/// depth only, and samples [`msaa_band::applies`] to.
+pub(super) fn fast_applies(ctx: &SampleContext<'_>, frame: &Framebuffer) -> bool {
+    frame.buffers() == Buffers::ColorDepth && msaa_band::applies(ctx)
+}
+
+/// Draws every prepared triangle into `frame` (sized, with colour and depth only:
+/// [`fast_applies`]) with [`msaa_band`], in parallel over bands of `rows_per_band` rows, each
+/// band drawing its triangles in submission order with the lanes at level `vector`. The
+/// colour and depth are [`draw_frame`]'s; no sample is kept.
+pub(super) fn draw_frame_fast(
+    prepared: (&ClipMesh, &[PreparedTriangle]),
+    ctx: &SampleContext<'_>,
+    frame: &mut Framebuffer,
+    (rows_per_band, vector): (u32, VectorLevel),
+    background: [u8; 4],
+) {
+    use rayon::prelude::*;
+    let (drawn, bins) = drawn_and_bins(prepared, ctx, (frame.width, frame.height), rows_per_band);
+    let progress = crate::progress::render_started(frame.height);
+    RowBand::split(frame, rows_per_band)
+        .into_par_iter()
+        .zip(bins)
+        .for_each(|(mut band, bin)| {
+            let _drawn = super::bands::RowsDrawn(&progress, band.rows);
+            if !progress.cancelled() {
+                msaa_band::draw_band(&drawn, &bin, ctx, (vector, background), &mut band);
+            }
+        });
+}
+
+/// Draws every prepared triangle into `frame` (already sized and cleared to `background`)
+/// and into a new sample buffer, in parallel over bands of `rows_per_band` rows, each band
+/// drawing its triangles in submission order; returns the samples.
+pub(super) fn draw_frame(
+    prepared: (&ClipMesh, &[PreparedTriangle]),
+    ctx: &SampleContext<'_>,
+    frame: &mut Framebuffer,
+    rows_per_band: u32,
+    background: [u8; 4],
+) -> SampleBuffer {
+    use rayon::prelude::*;
+    let n = ctx.offsets.len();
+    let (width, height) = (frame.width, frame.height);
+    let (drawn, bins) = drawn_and_bins(prepared, ctx, (width, height), rows_per_band);
+    let mut buffer = SampleBuffer {
+        width,
+        height,
+        offsets: ctx.offsets.to_vec(),
+        samples: vec![SampleValue::clear(background); width as usize * height as usize * n],
+    };
     let progress = crate::progress::render_started(height);
     let bands = RowBand::split(frame, rows_per_band);
     let chunk = (rows_per_band as usize * width as usize * n).max(1);
