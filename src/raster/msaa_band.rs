@@ -172,7 +172,9 @@ fn draw_triangle(
         let r = row_index(y);
         s.lane_depth[r + bounds.x0 as usize..=r + bounds.x1 as usize].fill(f32::INFINITY);
     }
-    if let Some(lanes) = lanes {
+    // A triangle between pixel centres (empty centre bounds) has nothing for the lanes.
+    let centres = setup.bounds.x0 <= setup.bounds.x1 && setup.bounds.y0 <= setup.bounds.y1;
+    if let Some(lanes) = lanes.filter(|_| centres) {
         let tri = LaneTriangle::of(setup, Some(lanes.shading()), false);
         if tri.exact()
             && let Some(rows) = band.rows_of(&tri.bounds())

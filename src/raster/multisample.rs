@@ -15,15 +15,17 @@
 use glam::{DVec2, I64Vec2};
 
 use super::draw::write_buffers;
+use crate::budget::{MemoryError, try_resize};
+
 use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE, RowBand, depth_passes};
 use super::interpolate::{self, Fragment};
 use super::lanes::VectorLevel;
 use super::mesh::ClipMesh;
 use super::msaa_band::{self, Drawn};
 use super::prepare::{PreparedTriangle, source_vertices};
-use super::project::{SUBPIXEL, Viewport};
+use super::project::Viewport;
 use super::sample::{SampleSettings, centroid_sample, resolve, sample_at, window_position};
-use super::setup::{PixelBounds, TriangleSetup, sample_point};
+use super::setup::{PixelBounds, TriangleSetup, sample_pixel_bounds, sample_point};
 use super::shade::{ShadeParams, shade, texture_footprint};
 use super::texture::Texture;
 use super::varying::Varyings;
@@ -225,27 +227,10 @@ pub fn draw_pixel(
     first
 }
 
-/// The pixels whose samples a triangle can cover: its snapped corners' bounding box widened
-/// by a pixel (a sample lies anywhere in its pixel, edges included), within the viewport.
+/// The pixels whose samples a triangle can cover ([`sample_pixel_bounds`] of its snapped
+/// corners).
 pub fn sample_bounds(setup: &TriangleSetup, viewport: Viewport) -> Option<PixelBounds> {
-    let p = setup.v.map(|v| v.fixed);
-    let (min, max) = (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]));
-    let lo = |m: i64| (m.div_euclid(SUBPIXEL) - 1).max(0);
-    let (x0, y0) = (lo(min.x), lo(min.y));
-    let x1 = max
-        .x
-        .div_euclid(SUBPIXEL)
-        .min(i64::from(viewport.width) - 1);
-    let y1 = max
-        .y
-        .div_euclid(SUBPIXEL)
-        .min(i64::from(viewport.height) - 1);
-    (x0 <= x1 && y0 <= y1).then_some(PixelBounds {
-        x0: x0 as u32,
-        y0: y0 as u32,
-        x1: x1 as u32,
-        y1: y1 as u32,
-    })
+    sample_pixel_bounds(&setup.v.map(|v| v.fixed), viewport)
 }
 
 /// Draws `triangles` (with their bounds and `flat` attributes, in submission order) into
@@ -353,24 +338,33 @@ pub(super) fn draw_frame_fast(
 
 /// Draws every prepared triangle into `frame` (already sized and cleared to `background`)
 /// and into a new sample buffer, in parallel over bands of `rows_per_band` rows, each band
-/// drawing its triangles in submission order; returns the samples.
+/// drawing its triangles in submission order; returns the samples. The sample buffer's
+/// memory is asked for fallibly: refused, it is an error naming the buffer and its size
+/// (`width x height x n` samples of [`SampleValue`]'s size), never an abort.
 pub(super) fn draw_frame(
     prepared: (&ClipMesh, &[PreparedTriangle]),
     ctx: &SampleContext<'_>,
     frame: &mut Framebuffer,
     rows_per_band: u32,
     background: [u8; 4],
-) -> SampleBuffer {
+) -> Result<SampleBuffer, MemoryError> {
     use rayon::prelude::*;
     let n = ctx.offsets.len();
     let (width, height) = (frame.width, frame.height);
-    let (drawn, bins) = drawn_and_bins(prepared, ctx, (width, height), rows_per_band);
+    let mut samples = Vec::new();
+    try_resize(
+        &mut samples,
+        (width as usize * height as usize).saturating_mul(n),
+        SampleValue::clear(background),
+        || format!("the {width}x{height} sample buffer ({n} samples a pixel)"),
+    )?;
     let mut buffer = SampleBuffer {
         width,
         height,
         offsets: ctx.offsets.to_vec(),
-        samples: vec![SampleValue::clear(background); width as usize * height as usize * n],
+        samples,
     };
+    let (drawn, bins) = drawn_and_bins(prepared, ctx, (width, height), rows_per_band);
     let progress = crate::progress::render_started(height);
     let bands = RowBand::split(frame, rows_per_band);
     let chunk = (rows_per_band as usize * width as usize * n).max(1);
@@ -389,5 +383,5 @@ pub(super) fn draw_frame(
             });
             draw_band(triangles, ctx, &mut band, samples);
         });
-    buffer
+    Ok(buffer)
 }

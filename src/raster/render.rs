@@ -11,6 +11,8 @@
 //! `fast.rs`'s, the bins `bands.rs`'s and the memory estimate
 //! [`footprint`](super::footprint)'s; none of them calls back into it.
 
+use crate::budget::MemoryError;
+
 use super::bands::{RowsDrawn, bin_rows, stop_at};
 use super::draw::rasterize;
 use super::fast::FastMesh;
@@ -84,7 +86,7 @@ pub fn render_samples(
         settings,
         &mut frame,
         ROWS_PER_BAND,
-    );
+    )?;
     Ok((Render { frame, triangles }, samples))
 }
 
@@ -96,7 +98,7 @@ fn draw_samples(
     settings: &RenderSettings,
     frame: &mut Framebuffer,
     rows_per_band: u32,
-) -> SampleBuffer {
+) -> Result<SampleBuffer, MemoryError> {
     let params = shade_params(settings, triangles);
     let offsets = settings.samples.offsets();
     let ctx = SampleContext {
@@ -224,7 +226,7 @@ pub fn render_into_at(
                 settings,
                 frame,
                 FAST_ROWS_PER_BAND,
-            );
+            )?;
         }
         return Ok(());
     }
