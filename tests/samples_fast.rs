@@ -12,8 +12,7 @@ use barylab::raster::sample::{Location, SampleCount, SamplePattern, SampleSettin
 use barylab::raster::setup::TieRule;
 use barylab::raster::{Buffers, BuiltinTexture, Filter, Framebuffer, Interpolation, Shading};
 use barylab::raster::{Texture, Wrap};
-use barylab::scene::Scene;
-use common::at_window;
+use common::four_triangles;
 use proptest::prelude::*;
 
 /// The fast path's colour and depth equal the per-sample kernel's, bit for bit, at every
@@ -92,14 +91,7 @@ proptest! {
         which in 0usize..10,
     ) {
         let (w, h) = (83, 61);
-        let mut mesh = ClipMesh {
-            vertices: pts.iter().map(|&(x, y, z)| at_window(x, y, z, w, h)).collect(),
-            triangles: vec![[0, 1, 2], [3, 4, 5], [0, 2, 4], [5, 3, 1]],
-        };
-        for (k, v) in mesh.vertices.iter_mut().enumerate() {
-            v.uv = v.uv * uv_scale - 0.3;
-            v.color = glam::Vec3::new(k as f32 * 0.3 - 0.2, 1.0 - k as f32 * 0.25, 0.5);
-        }
+        let mesh = four_triangles(&pts, uv_scale, w, h);
         let tex = Texture::builtin(BuiltinTexture::Noise);
         let s = RenderSettings {
             width: w,
@@ -120,14 +112,10 @@ proptest! {
 /// Every sample scene, at most 320x240, 4 standard and 4 grid samples, each location.
 #[test]
 fn msaa_fast_path_is_the_per_sample_kernel_on_the_sample_scenes() {
-    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes"));
-    let mut n = 0;
-    for entry in std::fs::read_dir(dir).expect("scenes") {
-        let path = entry.expect("entry").path();
-        if path.extension().and_then(|e| e.to_str()) != Some("json") {
-            continue;
-        }
-        let mut scene = Scene::load(&path).expect("scene");
+    let scenes = common::sample_scenes();
+    assert!(scenes.len() >= 8);
+    for (path, mut scene) in scenes {
+        let dir = path.parent().expect("the scenes' folder");
         let (w, h) = scene.size();
         let k = (w / 320).max(h / 240).max(1);
         scene.set_size(w / k, h / k);
@@ -143,7 +131,5 @@ fn msaa_fast_path_is_the_per_sample_kernel_on_the_sample_scenes() {
                 assert_same(&mesh, &tex, &s, &what);
             }
         }
-        n += 1;
     }
-    assert!(n >= 8);
 }
