@@ -25,14 +25,15 @@ use std::cell::RefCell;
 use glam::{DVec2, I64Vec2};
 
 use super::draw::lane_shading;
-use super::framebuffer::{RowBand, depth_passes};
+use super::framebuffer::{Buffers, Framebuffer, RowBand, depth_passes};
 use super::interpolate;
 use super::lanes::{LaneTriangle, Lanes, Target, VectorLevel};
-use super::multisample::{SampleContext, sample_depth, shared_shading};
+use super::mesh::ClipMesh;
+use super::multisample::{Drawn, SampleContext, drawn_and_bins, sample_depth, shared_shading};
+use super::prepare::PreparedTriangle;
 use super::project::SUBPIXEL;
 use super::sample::{Location, resolve, sample_at, window_position};
 use super::setup::{PixelBounds, TriangleSetup};
-use super::varying::Varyings;
 
 /// A pixel no triangle has written: every sample the background at depth 1.
 const CLEAR: u32 = 0;
@@ -46,9 +47,6 @@ pub(super) fn applies(ctx: &SampleContext<'_>) -> bool {
         && !ctx.samples.flat
         && ctx.samples.location != Location::Sample
 }
-
-/// One triangle a band draws: its set-up, source triangle and sample bounds.
-pub(super) type Drawn<'a> = (&'a TriangleSetup, u32, Option<Varyings>, PixelBounds);
 
 /// The memory of a band's drawing, kept per thread from frame to frame.
 #[derive(Default)]
@@ -361,4 +359,35 @@ fn resolve_band(
             band.depth[i] = depth;
         }
     }
+}
+
+/// Whether [`draw_frame_fast`] draws into `frame` with these samples: a frame of colour and
+/// depth only, and samples [`applies`] to.
+pub(super) fn fast_applies(ctx: &SampleContext<'_>, frame: &Framebuffer) -> bool {
+    frame.buffers() == Buffers::ColorDepth && applies(ctx)
+}
+
+/// Draws every prepared triangle into `frame` (sized, with colour and depth only:
+/// [`fast_applies`]) in parallel over bands of `rows_per_band` rows, each
+/// band drawing its triangles in submission order with the lanes at level `vector`. The
+/// colour and depth are [`draw_frame`](super::multisample)'s; no sample is kept.
+pub(super) fn draw_frame_fast(
+    prepared: (&ClipMesh, &[PreparedTriangle]),
+    ctx: &SampleContext<'_>,
+    frame: &mut Framebuffer,
+    (rows_per_band, vector): (u32, VectorLevel),
+    background: [u8; 4],
+) {
+    use rayon::prelude::*;
+    let (drawn, bins) = drawn_and_bins(prepared, ctx, (frame.width, frame.height), rows_per_band);
+    let progress = crate::progress::render_started(frame.height);
+    RowBand::split(frame, rows_per_band)
+        .into_par_iter()
+        .zip(bins)
+        .for_each(|(mut band, bin)| {
+            let _drawn = super::bands::RowsDrawn(&progress, band.rows);
+            if !progress.cancelled() {
+                draw_band(&drawn, &bin, ctx, (vector, background), &mut band);
+            }
+        });
 }

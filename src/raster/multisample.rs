@@ -14,14 +14,12 @@
 
 use glam::{DVec2, I64Vec2};
 
-use super::draw::write_buffers;
 use crate::budget::{MemoryError, try_resize};
 
-use super::framebuffer::{Buffers, Framebuffer, NO_TRIANGLE, RowBand, depth_passes};
+use super::draw::write_buffers;
+use super::framebuffer::{Framebuffer, NO_TRIANGLE, RowBand, depth_passes};
 use super::interpolate::{self, Fragment};
-use super::lanes::VectorLevel;
 use super::mesh::ClipMesh;
-use super::msaa_band::{self, Drawn};
 use super::prepare::{PreparedTriangle, source_vertices};
 use super::project::Viewport;
 use super::sample::{SampleSettings, centroid_sample, resolve, sample_at, window_position};
@@ -274,9 +272,13 @@ pub(super) fn draw_band<'t>(
     }
 }
 
+/// One triangle a band draws: its set-up, source triangle, `flat` attributes and
+/// [`sample_bounds`].
+pub(super) type Drawn<'a> = (&'a TriangleSetup, u32, Option<Varyings>, PixelBounds);
+
 /// The set-up triangles of a multisampled frame with their source, `flat` attributes and
 /// [`sample_bounds`], in submission order, and the bins of the bands of `rows_per_band` rows.
-fn drawn_and_bins<'t>(
+pub(super) fn drawn_and_bins<'t>(
     (mesh, triangles): (&ClipMesh, &'t [PreparedTriangle]),
     ctx: &SampleContext<'_>,
     (width, height): (u32, u32),
@@ -303,37 +305,6 @@ fn drawn_and_bins<'t>(
             .map(|(i, d)| (i as u32, 0, d.3.y0, d.3.y1)),
     );
     (drawn, bins)
-}
-
-/// Whether [`draw_frame_fast`] draws into `frame` with these samples: a frame of colour and
-/// depth only, and samples [`msaa_band::applies`] to.
-pub(super) fn fast_applies(ctx: &SampleContext<'_>, frame: &Framebuffer) -> bool {
-    frame.buffers() == Buffers::ColorDepth && msaa_band::applies(ctx)
-}
-
-/// Draws every prepared triangle into `frame` (sized, with colour and depth only:
-/// [`fast_applies`]) with [`msaa_band`], in parallel over bands of `rows_per_band` rows, each
-/// band drawing its triangles in submission order with the lanes at level `vector`. The
-/// colour and depth are [`draw_frame`]'s; no sample is kept.
-pub(super) fn draw_frame_fast(
-    prepared: (&ClipMesh, &[PreparedTriangle]),
-    ctx: &SampleContext<'_>,
-    frame: &mut Framebuffer,
-    (rows_per_band, vector): (u32, VectorLevel),
-    background: [u8; 4],
-) {
-    use rayon::prelude::*;
-    let (drawn, bins) = drawn_and_bins(prepared, ctx, (frame.width, frame.height), rows_per_band);
-    let progress = crate::progress::render_started(frame.height);
-    RowBand::split(frame, rows_per_band)
-        .into_par_iter()
-        .zip(bins)
-        .for_each(|(mut band, bin)| {
-            let _drawn = super::bands::RowsDrawn(&progress, band.rows);
-            if !progress.cancelled() {
-                msaa_band::draw_band(&drawn, &bin, ctx, (vector, background), &mut band);
-            }
-        });
 }
 
 /// Draws every prepared triangle into `frame` (already sized and cleared to `background`)

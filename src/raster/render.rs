@@ -19,7 +19,8 @@ use super::fast::FastMesh;
 use super::footprint::check_render_samples;
 use super::framebuffer::{Buffers, Framebuffer, RowBand};
 use super::lanes::VectorLevel;
-use super::multisample::{SampleBuffer, SampleContext, draw_frame, draw_frame_fast, fast_applies};
+use super::msaa_band::{draw_frame_fast, fast_applies};
+use super::multisample::{SampleBuffer, SampleContext, draw_frame};
 use super::shade::{ShadeParams, Shading, depth_range};
 use super::texture::Texture;
 
