@@ -229,21 +229,7 @@ proptest! {
         top_left in any::<bool>(),
     ) {
         let (w, h) = (83, 61);
-        let mut mesh = ClipMesh {
-            vertices: pts.iter().map(|&(x, y, z)| at_window(x, y, z, w, h)).collect(),
-            triangles: vec![[0, 1, 2], [3, 4, 5], [0, 2, 4], [5, 3, 1]],
-        };
-        for (k, v) in mesh.vertices.iter_mut().enumerate() {
-            v.uv = v.uv * uv_scale - 0.3;
-            // Colours beyond [0, 1] too, so the clamp to 8 bits is exercised.
-            v.color = glam::Vec3::new(k as f32 * 0.3 - 0.2, 1.0 - k as f32 * 0.25, 0.5);
-            // Unit normals in several directions, one facing away and one zero (no normal).
-            let a = k as f32 * 1.3;
-            v.normal = match k {
-                4 => glam::Vec3::ZERO,
-                _ => glam::Vec3::new(a.cos() * 0.8, a.sin() * 0.6, 0.5 - k as f32 * 0.2).normalize(),
-            };
-        }
+        let mesh = common::four_triangles(&pts, uv_scale, w, h);
         let (name, tex) = textures().swap_remove(which);
         let s = RenderSettings {
             width: w,

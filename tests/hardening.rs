@@ -286,6 +286,56 @@ fn a_refused_allocation_is_a_message_not_an_abort() {
     assert!(!out.exists());
 }
 
+#[test]
+fn a_refused_sample_buffer_is_a_message_naming_it() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = dir.path().join("o.png");
+    // The frame's buffers (about 1 GiB) fit in the 3 GiB address space; the 16 samples of
+    // each of its 16.8 million pixels (20 bytes each, 5.0 GiB) do not. The limit set by hand
+    // lets it past the estimate, so the allocation itself is refused: it aborted before.
+    let o = within_deadline(under_address_limit(3 << 30).args([
+        "render",
+        &scene("default.json"),
+        "--size",
+        "4096x4096",
+        "--samples",
+        "16",
+        "-o",
+        s(&out),
+        "--memory-limit",
+        "64G",
+    ]));
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.starts_with(
+            "error: cannot allocate 5.0 GiB for the 4096x4096 sample buffer (16 samples a pixel)"
+        ) && err.contains("the system refused the memory"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    // Under a small --memory-limit the estimate, which counts the samples, refuses it first.
+    let e = fails(&[
+        "render",
+        &scene("default.json"),
+        "--size",
+        "1024x1024",
+        "--samples",
+        "16",
+        "-o",
+        s(&out),
+        "--memory-limit",
+        "200M",
+    ]);
+    assert!(
+        e.starts_with(
+            "error: a 1024x1024 render of 2 triangles with 16 samples a pixel needs about"
+        ) && e.contains("more than the limit of 200.0 MiB (--memory-limit)"),
+        "{e}"
+    );
+    assert!(!out.exists());
+}
+
 /// A render long enough for the progress line (past half a second: 16 million pixels of
 /// every buffer), into `out`.
 fn long_render(out: &Path) -> Vec<String> {

@@ -64,8 +64,8 @@ fn random_scene(rng: &mut Rng) -> ClipMesh {
             .collect();
         let (a, b, c) = (corners[0], corners[1], corners[2]);
         let area2 = ((b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)).abs();
-        // Slivers narrower than a pixel are left out: barylab still drops a triangle that
-        // covers no pixel centre at set-up (docs/samples.md, "Not yet").
+        // Random slivers narrower than a pixel are left out (their values at far samples
+        // are ill-conditioned); one thin triangle is added below.
         let longest = [(a, b), (b, c), (c, a)]
             .iter()
             .map(|(p, q)| (p.0 - q.0).hypot(p.1 - q.1))
@@ -87,6 +87,25 @@ fn random_scene(rng: &mut Rng) -> ClipMesh {
         mesh.triangles.push([3 * t, 3 * t + 1, 3 * t + 2]);
         t += 1;
     }
+    // And in front of them, one triangle too thin to hold a pixel centre: rows r + 0.55 to
+    // r + 0.95 of a 20-pixel run, covering samples 0 and 1 of some pixels and no centre.
+    let (x, r) = (
+        rng.range(0.0, f64::from(W) - 24.0),
+        f64::from((rng.next() * f64::from(H - 2)) as u32),
+    );
+    for (dx, dy) in [(0.0, 0.55), (20.0, 0.6), (10.0, 0.95)] {
+        let ndc = (
+            2.0 * (x + dx) / f64::from(W) - 1.0,
+            1.0 - 2.0 * (r + dy) / f64::from(H),
+        );
+        mesh.vertices.push(MeshVertex {
+            clip: DVec4::new(ndc.0, ndc.1, -0.99, 1.0),
+            uv: Vec2::new(rng.next() as f32, rng.next() as f32),
+            color: Vec3::new(rng.next() as f32, rng.next() as f32, rng.next() as f32),
+            normal: Vec3::ZERO,
+        });
+    }
+    mesh.triangles.push([3 * t, 3 * t + 1, 3 * t + 2]);
     mesh
 }
 

@@ -137,6 +137,58 @@ fn every_sample_is_covered_as_a_hand_written_edge_test_says_and_shared_edges_onc
     }
 }
 
+/// A triangle too thin to hold a pixel centre (rows 3.55 to 3.95 and a sliver between
+/// columns' centres) covers the samples a hand-written edge test says under 4 and 16
+/// samples (4 standard, 4 grid, 8), in a multisampled render and in its colour-and-depth fast
+/// path; with one sample it draws nothing, as before.
+#[test]
+fn a_triangle_between_pixel_centres_covers_its_samples() {
+    let thin = [
+        [(1.0, 3.5625, 1.0), (10.0, 3.625, 1.0), (5.0, 3.9375, 1.0)],
+        [(6.5625, 1.0, 1.0), (6.9375, 2.0, 1.0), (6.625, 9.0, 1.0)],
+    ];
+    for pts in thin {
+        let m = mesh(&pts, vec![[0, 1, 2]]);
+        let corners = pts.map(|(x, y, _)| (x, y));
+        let one = render(&m, &white(), &with(SampleSettings::default())).expect("render");
+        assert!(one.frame.triangle.iter().all(|&t| t == NO_TRIANGLE));
+        for (c, p) in [
+            (SampleCount::Four, SamplePattern::Standard),
+            (SampleCount::Four, SamplePattern::Grid),
+            (SampleCount::Eight, SamplePattern::Standard),
+        ] {
+            let (full, samples) = render_samples(&m, &white(), &with(count(c, p))).expect("render");
+            let pos = hand_positions(c, p);
+            let mut covered = 0;
+            for y in 0..H {
+                for x in 0..W {
+                    for (k, &(ox, oy)) in pos.iter().enumerate() {
+                        let at = (f64::from(x) + ox, f64::from(y) + oy);
+                        let want = if inside(corners, at) { 0 } else { NO_TRIANGLE };
+                        covered += usize::from(want == 0);
+                        assert_eq!(
+                            samples.pixel(x, y)[k].triangle,
+                            want,
+                            "{c:?} {p:?} pixel ({x}, {y}) sample {k} at {at:?}"
+                        );
+                    }
+                }
+            }
+            assert!(covered >= 8, "{c:?} {p:?}: {covered} samples covered");
+            let mut fast = barylab::raster::Framebuffer::empty();
+            barylab::raster::render_into(
+                &mut fast,
+                &m,
+                &white(),
+                &with(count(c, p)),
+                barylab::raster::Buffers::ColorDepth,
+            )
+            .expect("render");
+            assert_eq!(fast.color, full.frame.color, "{c:?} {p:?}");
+        }
+    }
+}
+
 /// A sample exactly on the shared diagonal of a quad belongs to exactly one of its halves,
 /// and every sample strictly inside the quad to one: no gaps, no double coverage.
 #[test]

@@ -12,6 +12,7 @@ pub mod framebuffer;
 pub mod interpolate;
 pub mod lanes;
 pub mod mesh;
+mod msaa_band;
 pub mod multisample;
 mod prepare;
 pub mod project;

@@ -14,14 +14,16 @@
 
 use glam::{DVec2, I64Vec2};
 
+use crate::budget::{MemoryError, try_resize};
+
 use super::draw::write_buffers;
-use super::framebuffer::{NO_TRIANGLE, RowBand, depth_passes};
+use super::framebuffer::{Framebuffer, NO_TRIANGLE, RowBand, depth_passes};
 use super::interpolate::{self, Fragment};
 use super::mesh::ClipMesh;
 use super::prepare::{PreparedTriangle, source_vertices};
-use super::project::{SUBPIXEL, Viewport};
+use super::project::Viewport;
 use super::sample::{SampleSettings, centroid_sample, resolve, sample_at, window_position};
-use super::setup::{PixelBounds, TriangleSetup, sample_point};
+use super::setup::{PixelBounds, TriangleSetup, sample_pixel_bounds, sample_point};
 use super::shade::{ShadeParams, shade, texture_footprint};
 use super::texture::Texture;
 use super::varying::Varyings;
@@ -133,6 +135,39 @@ pub fn shading_point(x: u32, y: u32, mask: u32, ctx: &SampleContext<'_>) -> I64V
     }
 }
 
+/// The fragment pixel (x, y) of a triangle shades at `p` (1/256 pixel): [`fragment_at`] with
+/// the texture footprint of the pixel.
+fn shading_fragment(
+    (setup, flat): (&TriangleSetup, Option<&Varyings>),
+    (x, y): (u32, u32),
+    p: I64Vec2,
+    ctx: &SampleContext<'_>,
+) -> Option<Fragment> {
+    let mut frag = fragment_at(setup, p, flat)?;
+    texture_footprint(&mut frag, setup, (x, y), ctx.params, ctx.texture);
+    Some(frag)
+}
+
+/// MSAA's one shading of pixel (x, y) for a triangle covering the samples `mask`: the
+/// fragment at the [`shading_point`] and its colour; `None` when there is no fragment there.
+pub(super) fn shared_shading(
+    (setup, flat): (&TriangleSetup, Option<&Varyings>),
+    (x, y): (u32, u32),
+    mask: u32,
+    ctx: &SampleContext<'_>,
+    wire: &[DVec2; 3],
+) -> Option<(Fragment, [u8; 4])> {
+    let frag = shading_fragment((setup, flat), (x, y), shading_point(x, y, mask, ctx), ctx)?;
+    Some((frag, shade(&frag, ctx.texture, ctx.params, wire)))
+}
+
+/// The window depth of the sample at `offset` in pixel (x, y) under a triangle:
+/// `sum l_i d_i` with the screen weights at the sample ([`interpolate::depth_at`]), as `f32`.
+pub(super) fn sample_depth(setup: &TriangleSetup, x: u32, y: u32, offset: I64Vec2) -> f32 {
+    let l = setup.weights.at(window_position(sample_at(x, y, offset)));
+    interpolate::depth_at(setup, &l) as f32
+}
+
 /// Draws one triangle (source triangle `source`, with its `flat` attributes if any) into the
 /// samples of pixel (x, y): coverage, the depth test per sample (less-than), shading once
 /// (MSAA at the centre or centroid) or per sample, and the sample's colour, depth, triangle
@@ -150,34 +185,26 @@ pub fn draw_pixel(
     }
     let params = ctx.params;
     let texture = ctx.texture;
-    let fragment = |p: I64Vec2| {
-        let mut frag = fragment_at(setup, p, flat)?;
-        texture_footprint(&mut frag, setup, (x, y), params, texture);
-        Some(frag)
-    };
+    let fragment = |p: I64Vec2| shading_fragment((setup, flat), (x, y), p, ctx);
     let shared = if ctx.samples.per_sample_shading() {
         None
     } else {
-        let frag = fragment(shading_point(x, y, mask, ctx))?;
-        Some((frag, shade(&frag, texture, params, wire)))
+        Some(shared_shading((setup, flat), (x, y), mask, ctx, wire)?)
     };
     let mut first = None;
     for (k, (&o, out)) in ctx.offsets.iter().zip(pixel.iter_mut()).enumerate() {
         if mask & 1 << k == 0 {
             continue;
         }
-        let p = sample_at(x, y, o);
         let (frag, depth) = match &shared {
-            Some((frag, _)) => {
-                let l = setup.weights.at(window_position(p));
-                (*frag, interpolate::depth_at(setup, &l))
-            }
+            Some((frag, _)) => (*frag, sample_depth(setup, x, y, o)),
             None => {
-                let Some(frag) = fragment(p) else { continue };
-                (frag, frag.depth)
+                let Some(frag) = fragment(sample_at(x, y, o)) else {
+                    continue;
+                };
+                (frag, frag.depth as f32)
             }
         };
-        let depth = depth as f32;
         if !depth_passes(depth, out.depth) {
             continue;
         }
@@ -198,27 +225,10 @@ pub fn draw_pixel(
     first
 }
 
-/// The pixels whose samples a triangle can cover: its snapped corners' bounding box widened
-/// by a pixel (a sample lies anywhere in its pixel, edges included), within the viewport.
+/// The pixels whose samples a triangle can cover ([`sample_pixel_bounds`] of its snapped
+/// corners).
 pub fn sample_bounds(setup: &TriangleSetup, viewport: Viewport) -> Option<PixelBounds> {
-    let p = setup.v.map(|v| v.fixed);
-    let (min, max) = (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]));
-    let lo = |m: i64| (m.div_euclid(SUBPIXEL) - 1).max(0);
-    let (x0, y0) = (lo(min.x), lo(min.y));
-    let x1 = max
-        .x
-        .div_euclid(SUBPIXEL)
-        .min(i64::from(viewport.width) - 1);
-    let y1 = max
-        .y
-        .div_euclid(SUBPIXEL)
-        .min(i64::from(viewport.height) - 1);
-    (x0 <= x1 && y0 <= y1).then_some(PixelBounds {
-        x0: x0 as u32,
-        y0: y0 as u32,
-        x1: x1 as u32,
-        y1: y1 as u32,
-    })
+    sample_pixel_bounds(&setup.v.map(|v| v.fixed), viewport)
 }
 
 /// Draws `triangles` (with their bounds and `flat` attributes, in submission order) into
@@ -262,30 +272,20 @@ pub(super) fn draw_band<'t>(
     }
 }
 
-/// Draws every prepared triangle into `frame` (already sized and cleared to `background`)
-/// and into a new sample buffer, in parallel over bands of `rows_per_band` rows, each band
-/// drawing its triangles in submission order; returns the samples.
-pub(super) fn draw_frame(
-    (mesh, triangles): (&ClipMesh, &[PreparedTriangle]),
+/// One triangle a band draws: its set-up, source triangle, `flat` attributes and
+/// [`sample_bounds`].
+pub(super) type Drawn<'a> = (&'a TriangleSetup, u32, Option<Varyings>, PixelBounds);
+
+/// The set-up triangles of a multisampled frame with their source, `flat` attributes and
+/// [`sample_bounds`], in submission order, and the bins of the bands of `rows_per_band` rows.
+pub(super) fn drawn_and_bins<'t>(
+    (mesh, triangles): (&ClipMesh, &'t [PreparedTriangle]),
     ctx: &SampleContext<'_>,
-    frame: &mut super::framebuffer::Framebuffer,
+    (width, height): (u32, u32),
     rows_per_band: u32,
-    background: [u8; 4],
-) -> SampleBuffer {
-    use rayon::prelude::*;
-    let viewport = Viewport {
-        width: frame.width,
-        height: frame.height,
-    };
-    let n = ctx.offsets.len();
-    let (width, height) = (frame.width, frame.height);
-    let mut buffer = SampleBuffer {
-        width,
-        height,
-        offsets: ctx.offsets.to_vec(),
-        samples: vec![SampleValue::clear(background); width as usize * height as usize * n],
-    };
-    let drawn: Vec<_> = triangles
+) -> (Vec<Drawn<'t>>, Vec<Vec<(u32, u32)>>) {
+    let viewport = Viewport { width, height };
+    let drawn: Vec<Drawn<'_>> = triangles
         .iter()
         .map(|t| (t, flat_varyings(mesh, t.source, &ctx.samples)))
         .flat_map(|(t, flat)| {
@@ -304,6 +304,38 @@ pub(super) fn draw_frame(
             .enumerate()
             .map(|(i, d)| (i as u32, 0, d.3.y0, d.3.y1)),
     );
+    (drawn, bins)
+}
+
+/// Draws every prepared triangle into `frame` (already sized and cleared to `background`)
+/// and into a new sample buffer, in parallel over bands of `rows_per_band` rows, each band
+/// drawing its triangles in submission order; returns the samples. The sample buffer's
+/// memory is asked for fallibly: refused, it is an error naming the buffer and its size
+/// (`width x height x n` samples of [`SampleValue`]'s size), never an abort.
+pub(super) fn draw_frame(
+    prepared: (&ClipMesh, &[PreparedTriangle]),
+    ctx: &SampleContext<'_>,
+    frame: &mut Framebuffer,
+    rows_per_band: u32,
+    background: [u8; 4],
+) -> Result<SampleBuffer, MemoryError> {
+    use rayon::prelude::*;
+    let n = ctx.offsets.len();
+    let (width, height) = (frame.width, frame.height);
+    let mut samples = Vec::new();
+    try_resize(
+        &mut samples,
+        (width as usize * height as usize).saturating_mul(n),
+        SampleValue::clear(background),
+        || format!("the {width}x{height} sample buffer ({n} samples a pixel)"),
+    )?;
+    let mut buffer = SampleBuffer {
+        width,
+        height,
+        offsets: ctx.offsets.to_vec(),
+        samples,
+    };
+    let (drawn, bins) = drawn_and_bins(prepared, ctx, (width, height), rows_per_band);
     let progress = crate::progress::render_started(height);
     let bands = RowBand::split(frame, rows_per_band);
     let chunk = (rows_per_band as usize * width as usize * n).max(1);
@@ -322,5 +354,5 @@ pub(super) fn draw_frame(
             });
             draw_band(triangles, ctx, &mut band, samples);
         });
-    buffer
+    Ok(buffer)
 }

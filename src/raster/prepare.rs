@@ -8,7 +8,7 @@ use super::clip::{ClipPolygon, ClipVertex, clip_triangle, inside_every_plane};
 use super::mesh::ClipMesh;
 use super::project::{Viewport, project_vertex};
 use super::settings::{RenderError, RenderSettings};
-use super::setup::{Facing, TieRule, TriangleSetup, setup_triangle_with};
+use super::setup::{Facing, TieRule, TriangleSetup, setup_triangle_samples};
 use super::varying::Varyings;
 
 /// Why a source triangle drew nothing, or that it was drawn.
@@ -113,6 +113,17 @@ pub fn prepare_triangle_with(
     viewport: Viewport,
     rule: TieRule,
 ) -> PreparedTriangle {
+    prepare_triangle_samples(mesh, index, (viewport, rule), false)
+}
+
+/// Like [`prepare_triangle_with`]; with `multisample`, the set-up keeps triangles too thin
+/// to hold a pixel centre ([`setup_triangle_samples`]): they may cover other samples.
+pub fn prepare_triangle_samples(
+    mesh: &ClipMesh,
+    index: u32,
+    (viewport, rule): (Viewport, TieRule),
+    multisample: bool,
+) -> PreparedTriangle {
     let mut out = PreparedTriangle {
         source: index,
         status: TriangleStatus::BadIndex,
@@ -131,7 +142,7 @@ pub fn prepare_triangle_with(
         // Most triangles of a mesh: nothing to clip, one set-up triangle.
         let window = verts.map(|v| project_vertex(&v, viewport));
         out.setups
-            .extend(setup_triangle_with(window, viewport, rule));
+            .extend(setup_triangle_samples(window, viewport, rule, multisample));
     } else {
         let polygon = clip_triangle(&verts, guard);
         out.clipped = Some(Box::new(polygon));
@@ -142,9 +153,8 @@ pub fn prepare_triangle_with(
         }
         let window: Vec<_> = pv.iter().map(|v| project_vertex(v, viewport)).collect();
         for k in 1..window.len() - 1 {
-            if let Some(s) =
-                setup_triangle_with([window[0], window[k], window[k + 1]], viewport, rule)
-            {
+            let fan = [window[0], window[k], window[k + 1]];
+            if let Some(s) = setup_triangle_samples(fan, viewport, rule, multisample) {
                 out.setups.push(s);
             }
         }
@@ -165,10 +175,11 @@ pub fn prepare_triangles(
     settings: &RenderSettings,
 ) -> Result<Vec<PreparedTriangle>, RenderError> {
     settings.check_size()?;
-    Ok(prepare_all_with(
+    let multisample = settings.samples.count.get() > 1;
+    Ok(prepare_all_samples(
         mesh,
-        settings.viewport(),
-        settings.tie_rule,
+        (settings.viewport(), settings.tie_rule),
+        multisample,
     ))
 }
 
@@ -184,11 +195,20 @@ pub fn prepare_all_with(
     viewport: Viewport,
     rule: TieRule,
 ) -> Vec<PreparedTriangle> {
+    prepare_all_samples(mesh, (viewport, rule), false)
+}
+
+/// Like [`prepare_all_with`], each triangle prepared by [`prepare_triangle_samples`].
+pub fn prepare_all_samples(
+    mesh: &ClipMesh,
+    (viewport, rule): (Viewport, TieRule),
+    multisample: bool,
+) -> Vec<PreparedTriangle> {
     use rayon::prelude::*;
     (0..mesh.triangles.len() as u32)
         .into_par_iter()
         .with_min_len(PREPARE_CHUNK)
-        .map(|i| prepare_triangle_with(mesh, i, viewport, rule))
+        .map(|i| prepare_triangle_samples(mesh, i, (viewport, rule), multisample))
         .collect()
 }
 

@@ -11,12 +11,15 @@
 //! `fast.rs`'s, the bins `bands.rs`'s and the memory estimate
 //! [`footprint`](super::footprint)'s; none of them calls back into it.
 
+use crate::budget::MemoryError;
+
 use super::bands::{RowsDrawn, bin_rows, stop_at};
 use super::draw::rasterize;
 use super::fast::FastMesh;
 use super::footprint::check_render_samples;
 use super::framebuffer::{Buffers, Framebuffer, RowBand};
 use super::lanes::VectorLevel;
+use super::msaa_band::{draw_frame_fast, fast_applies};
 use super::multisample::{SampleBuffer, SampleContext, draw_frame};
 use super::shade::{ShadeParams, Shading, depth_range};
 use super::texture::Texture;
@@ -84,7 +87,7 @@ pub fn render_samples(
         settings,
         &mut frame,
         ROWS_PER_BAND,
-    );
+    )?;
     Ok((Render { frame, triangles }, samples))
 }
 
@@ -96,7 +99,7 @@ fn draw_samples(
     settings: &RenderSettings,
     frame: &mut Framebuffer,
     rows_per_band: u32,
-) -> SampleBuffer {
+) -> Result<SampleBuffer, MemoryError> {
     let params = shade_params(settings, triangles);
     let offsets = settings.samples.offsets();
     let ctx = SampleContext {
@@ -199,14 +202,33 @@ pub fn render_into_at(
         // More than one sample per pixel: the multisample path, not the lanes.
         let triangles = prepare_triangles(mesh, settings)?;
         frame.resize(settings.width, settings.height, buffers)?;
-        draw_samples(
-            mesh,
-            &triangles,
+        let params = shade_params(settings, &triangles);
+        let offsets = settings.samples.offsets();
+        let ctx = SampleContext {
+            offsets: &offsets,
+            samples: settings.samples,
             texture,
-            settings,
-            frame,
-            FAST_ROWS_PER_BAND,
-        );
+            params: &params,
+        };
+        if fast_applies(&ctx, frame) {
+            // Colour and depth only: every pixel is written, no sample kept.
+            draw_frame_fast(
+                (mesh, &triangles),
+                &ctx,
+                frame,
+                (FAST_ROWS_PER_BAND, vector),
+                settings.background,
+            );
+        } else {
+            draw_samples(
+                mesh,
+                &triangles,
+                texture,
+                settings,
+                frame,
+                FAST_ROWS_PER_BAND,
+            )?;
+        }
         return Ok(());
     }
     let prepared = FastMesh::prepare(mesh, settings.viewport(), settings.tie_rule);

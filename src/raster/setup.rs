@@ -386,11 +386,21 @@ pub fn setup_triangle_with(
     viewport: Viewport,
     rule: TieRule,
 ) -> Option<TriangleSetup> {
-    let g = triangle_geometry(
-        [v[0].fixed, v[1].fixed, v[2].fixed],
-        v.map(|v| v.window),
-        viewport,
-        rule,
+    setup_triangle_samples(v, viewport, rule, false)
+}
+
+/// Like [`setup_triangle_with`]; with `multisample`, a triangle too thin to hold a pixel
+/// centre is kept when its [`sample_pixel_bounds`] reach the viewport (with empty
+/// [`TriangleSetup::bounds`]: it covers no centre, but it may cover other samples).
+pub fn setup_triangle_samples(
+    v: [WindowVertex; 3],
+    viewport: Viewport,
+    rule: TieRule,
+    multisample: bool,
+) -> Option<TriangleSetup> {
+    let g = geometry_samples(
+        ([v[0].fixed, v[1].fixed, v[2].fixed], v.map(|v| v.window)),
+        (viewport, rule, multisample),
     )?;
     Some(TriangleSetup {
         v,
@@ -428,6 +438,15 @@ pub fn triangle_geometry(
     viewport: Viewport,
     rule: TieRule,
 ) -> Option<Geometry> {
+    geometry_samples((p, window), (viewport, rule, false))
+}
+
+/// [`triangle_geometry`], keeping a triangle between pixel centres with `multisample` (see
+/// [`setup_triangle_samples`]).
+fn geometry_samples(
+    (p, window): ([I64Vec2; 3], [DVec2; 3]),
+    (viewport, rule, multisample): (Viewport, TieRule, bool),
+) -> Option<Geometry> {
     let mut g = Geometry {
         edges: [Edge::EMPTY; 3],
         area2: 0,
@@ -435,11 +454,9 @@ pub fn triangle_geometry(
         facing: Facing::Front,
         bounds: PixelBounds::EMPTY,
     };
-    let (area2, facing) = geometry_into(
-        p,
-        window,
-        viewport,
-        rule,
+    let (area2, facing) = geometry_into_samples(
+        (p, window),
+        (viewport, rule, multisample),
         &mut g.edges,
         &mut g.weights,
         &mut g.bounds,
@@ -459,7 +476,19 @@ pub fn geometry_into(
     weights: &mut WeightPlanes,
     bounds: &mut PixelBounds,
 ) -> Option<(i64, Facing)> {
-    let (signed, b, w) = geometry(p, window, viewport)?;
+    geometry_into_samples((p, window), (viewport, rule, false), edges, weights, bounds)
+}
+
+/// [`geometry_into`], keeping a triangle between pixel centres with `multisample` (see
+/// [`setup_triangle_samples`]).
+fn geometry_into_samples(
+    (p, window): ([I64Vec2; 3], [DVec2; 3]),
+    (viewport, rule, multisample): (Viewport, TieRule, bool),
+    edges: &mut [Edge; 3],
+    weights: &mut WeightPlanes,
+    bounds: &mut PixelBounds,
+) -> Option<(i64, Facing)> {
+    let (signed, b, w) = geometry(p, window, viewport, multisample)?;
     let positive = signed > 0;
     *edges = edges_of(p, positive, rule);
     *weights = w;
@@ -550,13 +579,16 @@ fn geometry(
     p: [I64Vec2; 3],
     window: [DVec2; 3],
     viewport: Viewport,
+    multisample: bool,
 ) -> Option<(i64, PixelBounds, WeightPlanes)> {
     let signed = signed_area2(p[0], p[1], p[2]);
     if signed == 0 {
         return None;
     }
     let positive = signed > 0;
-    let bounds = pixel_bounds(&p, viewport)?;
+    let bounds = pixel_bounds(&p, viewport).or_else(|| {
+        (multisample && sample_pixel_bounds(&p, viewport).is_some()).then_some(PixelBounds::EMPTY)
+    })?;
     let weights = WeightPlanes::new(window)
         .filter(|w| (w.area2 > 0.0) == positive)
         .or_else(|| WeightPlanes::new(p.map(|f| f.as_dvec2() / SUBPIXEL as f64)))?;
@@ -580,6 +612,29 @@ fn pixel_bounds(p: &[I64Vec2; 3], viewport: Viewport) -> Option<PixelBounds> {
         return None;
     }
     Some(PixelBounds {
+        x0: x0 as u32,
+        y0: y0 as u32,
+        x1: x1 as u32,
+        y1: y1 as u32,
+    })
+}
+
+/// The pixels whose samples (anywhere in the pixel, its edges included) a triangle with
+/// these snapped positions can cover: their bounding box widened by a pixel up and left,
+/// `[floor(min / 256) - 1, floor(max / 256)]`, within the viewport.
+pub fn sample_pixel_bounds(p: &[I64Vec2; 3], viewport: Viewport) -> Option<PixelBounds> {
+    let (min, max) = (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]));
+    let lo = |m: i64| (m.div_euclid(SUBPIXEL) - 1).max(0);
+    let x1 = max
+        .x
+        .div_euclid(SUBPIXEL)
+        .min(i64::from(viewport.width) - 1);
+    let y1 = max
+        .y
+        .div_euclid(SUBPIXEL)
+        .min(i64::from(viewport.height) - 1);
+    let (x0, y0) = (lo(min.x), lo(min.y));
+    (x0 <= x1 && y0 <= y1).then_some(PixelBounds {
         x0: x0 as u32,
         y0: y0 as u32,
         x1: x1 as u32,

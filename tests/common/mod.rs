@@ -177,3 +177,42 @@ pub fn scene_variants(
     }
     out
 }
+
+/// Four overlapping triangles over six window points `(x, y, w)` of a `width` x `height`
+/// viewport (the random scenes of the fast-path tests): uv scaled by `uv_scale` and moved by
+/// -0.3, colours beyond [0, 1] too (the clamp to 8 bits), unit normals in several directions,
+/// one facing away and one zero.
+pub fn four_triangles(pts: &[(f64, f64, f64)], uv_scale: f32, width: u32, height: u32) -> ClipMesh {
+    let mut mesh = ClipMesh {
+        vertices: pts
+            .iter()
+            .map(|&(x, y, z)| at_window(x, y, z, width, height))
+            .collect(),
+        triangles: vec![[0, 1, 2], [3, 4, 5], [0, 2, 4], [5, 3, 1]],
+    };
+    for (k, v) in mesh.vertices.iter_mut().enumerate() {
+        v.uv = v.uv * uv_scale - 0.3;
+        v.color = Vec3::new(k as f32 * 0.3 - 0.2, 1.0 - k as f32 * 0.25, 0.5);
+        let a = k as f32 * 1.3;
+        v.normal = match k {
+            4 => Vec3::ZERO,
+            _ => Vec3::new(a.cos() * 0.8, a.sin() * 0.6, 0.5 - k as f32 * 0.2).normalize(),
+        };
+    }
+    mesh
+}
+
+/// The project's sample scenes (`assets/scenes/*.json`), each with its path and the folder
+/// its textures are found from.
+pub fn sample_scenes() -> Vec<(std::path::PathBuf, barylab::scene::Scene)> {
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes"));
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(dir).expect("scenes") {
+        let path = entry.expect("entry").path();
+        if path.extension().and_then(|e| e.to_str()) == Some("json") {
+            let scene = barylab::scene::Scene::load(&path).expect("scene");
+            out.push((path, scene));
+        }
+    }
+    out
+}
