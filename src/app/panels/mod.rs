@@ -25,6 +25,7 @@ pub(crate) mod path_window;
 pub(crate) mod plots;
 pub(crate) mod present;
 pub mod quiz;
+pub(crate) mod sample_buffers;
 pub(crate) mod samples_control;
 pub(crate) mod space_view;
 pub(crate) mod status;
