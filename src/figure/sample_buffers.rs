@@ -217,7 +217,7 @@ pub fn title(kind: SampleBufferKind, k: usize, n: usize, black_edges: bool, lang
     let k = k.min(n.max(1) - 1).to_string();
     let n = n.to_string();
     let base = lang.tr_with(kind.key(), &[("k", &k), ("n", &n)]);
-    if black_edges && kind != SampleBufferKind::Coverage && kind != SampleBufferKind::Depth {
+    if black_edges {
         lang.tr_with("figure.samples.with_bug", &[("view", &base)])
     } else {
         base
