@@ -232,5 +232,8 @@ fn the_latex_probe_lists_the_samples() {
         "{tex}"
     );
     assert!(tex.contains("Triangle 0 covers samples 0, 2, 3"), "{tex}");
-    assert!(tex.contains("rgba(209, 233, 198, 255) = \\#d1e9c6"), "{tex}");
+    assert!(
+        tex.contains("rgba(209, 233, 198, 255) = \\#d1e9c6"),
+        "{tex}"
+    );
 }

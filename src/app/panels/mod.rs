@@ -13,6 +13,7 @@ pub mod export;
 pub mod export_animation;
 pub(crate) mod export_animation_ui;
 pub(crate) mod file_menu;
+pub mod gpu_samples;
 pub mod gpu_view;
 pub(crate) mod help;
 pub(crate) mod image_size;
