@@ -161,20 +161,16 @@ fn barylab(args: &[&str]) -> std::process::Output {
 fn the_cli_draws_the_buffers_and_refuses_what_it_cannot() {
     let dir = tempfile::tempdir().expect("temp dir");
     let out = dir.path().join("samples.png");
-    let scene = asset("assets/scenes/games101-a2-ssaa.json");
-    let (s, o) = (scene.to_str().expect("path"), out.to_str().expect("path"));
-    let ok = barylab(&[
-        "figure",
-        s,
-        "--size",
-        "120x120",
-        "--view",
-        "samples",
-        "--sample-index",
-        "1",
-        "-o",
-        o,
-    ]);
+    let o = out.to_str().expect("path");
+    let ssaa = asset("assets/scenes/games101-a2-ssaa.json");
+    let one = asset("assets/scenes/games101-a2.json");
+    // `barylab figure SCENE --size 120x120 --view samples --sample-index K -o OUT`.
+    let figure = |scene: &Path, k: &str| {
+        let s = scene.to_str().expect("path");
+        let args = ["figure", s, "--size", "120x120", "--view", "samples"];
+        barylab(&[&args[..], &["--sample-index", k, "-o", o]].concat())
+    };
+    let ok = figure(&ssaa, "1");
     assert!(
         ok.status.success(),
         "{}",
@@ -182,44 +178,17 @@ fn the_cli_draws_the_buffers_and_refuses_what_it_cannot() {
     );
     let png = image::open(&out).expect("png").to_rgba8();
     // Four images of 120 x 120 (each a 120 x 120 raster at pixel size 1) and their titles.
-    assert!(
-        png.width() > 2 * 120 && png.height() > 2 * 120,
-        "{:?}",
-        png.dimensions()
-    );
-    let bad = barylab(&[
-        "figure",
-        s,
-        "--size",
-        "120x120",
-        "--view",
-        "samples",
-        "--sample-index",
-        "4",
-        "-o",
-        o,
-    ]);
-    assert!(!bad.status.success());
-    let err = String::from_utf8_lossy(&bad.stderr);
-    assert!(
-        err.contains("--sample-index 4") && err.contains("0 to 3"),
-        "{err}"
-    );
-    let one = asset("assets/scenes/games101-a2.json");
-    let bad = barylab(&[
-        "figure",
-        one.to_str().expect("path"),
-        "--view",
-        "samples",
-        "-o",
-        o,
-    ]);
-    assert!(!bad.status.success());
-    let err = String::from_utf8_lossy(&bad.stderr);
-    assert!(
-        err.contains("games101-a2.json") && err.contains("--samples 4"),
-        "{err}"
-    );
+    let (w, h) = png.dimensions();
+    assert!(w > 2 * 120 && h > 2 * 120, "{w}x{h}");
+    for (scene, k, words) in [
+        (&ssaa, "4", ["--sample-index 4", "0 to 3"]),
+        (&one, "0", ["games101-a2.json", "--samples 4"]),
+    ] {
+        let bad = figure(scene, k);
+        assert!(!bad.status.success());
+        let err = String::from_utf8_lossy(&bad.stderr);
+        assert!(words.iter().all(|w| err.contains(w)), "{err}");
+    }
 }
 
 /// Prints the clip-space form of a model scene (run with `--ignored --nocapture` to write the

@@ -8,7 +8,6 @@ use barylab::raster::{RenderSettings, Texture};
 use barylab::scene::Scene;
 
 use super::FigureArgs;
-use crate::output::print;
 
 /// Writes the per-sample buffers view of `scene` to `args.output`.
 pub(super) fn write(
@@ -41,18 +40,5 @@ pub(super) fn write(
         args.black_edges,
         lang,
     );
-    let svg_out = args
-        .output
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
-    let bytes = if svg_out {
-        picture.to_svg()?.into_bytes()
-    } else {
-        picture.to_png(args.scale as f32)?
-    };
-    barylab::files::write_bytes(&args.output, &bytes)?;
-    print(&format!(
-        "figure -> {}\n",
-        barylab::files::shown(&args.output)
-    ))
+    super::texture_figure::write_picture(args, &picture)
 }
