@@ -643,9 +643,12 @@ pub(crate) fn canvas_ui(
             let title = lang.tr_with("figure.flat", &[("w", &format!("{w:.2}"))]);
             paint::retitle(&mut shapes, &title);
         }
-        if let Some(title) = canvas
-            .samples
-            .title(view.content, view_settings.samples_view, lang)
+        // The sample view's buffer (the GPU view shows the GL's image instead).
+        if gpu.is_none()
+            && let Some(title) =
+                canvas
+                    .samples
+                    .title(view.content, view_settings.samples_view, lang)
         {
             paint::retitle(&mut shapes, &title);
         }

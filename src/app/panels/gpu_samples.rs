@@ -62,6 +62,16 @@ impl From<&crate::gpu::sample_check::SampleCheck> for SamplesSummary {
     }
 }
 
+/// What [`draw`] gives: barylab's resolve, the GL's, their per-pixel comparison and the
+/// per-sample summary.
+#[cfg(feature = "gpu")]
+pub(crate) type Drawn = (
+    Vec<[u8; 4]>,
+    Vec<[u8; 4]>,
+    crate::gpu::view::ImageDiff,
+    SamplesSummary,
+);
+
 /// Draws `mesh` with the GL and barylab at the settings' samples and compares every sample:
 /// barylab's resolve and the GL's, the per-pixel comparison by sample 0's owner (the frame's
 /// per-pixel buffers are sample 0's), and the per-sample summary.
@@ -72,15 +82,7 @@ pub(crate) fn draw(
     texture: &crate::raster::Texture,
     settings: &crate::raster::RenderSettings,
     output: crate::gpu::Output,
-) -> Result<
-    (
-        Vec<[u8; 4]>,
-        Vec<[u8; 4]>,
-        crate::gpu::view::ImageDiff,
-        SamplesSummary,
-    ),
-    String,
-> {
+) -> Result<Drawn, String> {
     let (check, render, _ours, gl) =
         crate::gpu::sample_check::check_samples(gpu, mesh, texture, settings, output)?;
     let n = gl.count.max(1);
