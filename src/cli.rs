@@ -24,6 +24,7 @@ mod compare;
 mod gpu_check;
 mod grade;
 mod lesson;
+mod samples_figure;
 mod slides;
 mod space;
 mod texture_figure;
@@ -452,9 +453,17 @@ struct FigureArgs {
     /// with the ray of the --pixel (else --hover) pixel meeting its triangle at P beside the
     /// affine guess Q, from the --yaw/--pitch/--zoom orbit; `depth`: window depth against
     /// view depth for the scene's near and far planes; `tetra`: the volume weights of a point
-    /// inside a tetrahedron scene.
+    /// inside a tetrahedron scene; `samples`: the per-sample buffers of a multisampled scene
+    /// (coverage count, resolve, and sample --sample-index's colour and depth).
     #[arg(long, default_value = "image")]
     view: FigureViewArg,
+    /// With --view samples: the sample index whose colour and depth are shown (0 to N-1).
+    #[arg(long, default_value_t = 0)]
+    sample_index: u32,
+    /// With --view samples: the buffers with GAMES101 A2's black-edge bug (colour kept per
+    /// pixel while coverage is per sample).
+    #[arg(long)]
+    black_edges: bool,
     #[command(flatten)]
     orbit: space::OrbitArgs,
     /// Output file: .png or .svg.
@@ -478,6 +487,8 @@ enum FigureViewArg {
     Depth,
     /// The volume weights of a point in a tetrahedron.
     Tetra,
+    /// The per-sample buffers of a multisampled scene.
+    Samples,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]

@@ -153,3 +153,86 @@ fn tempfile_dir() -> PathBuf {
     std::fs::create_dir_all(&dir).expect("a temporary folder");
     dir
 }
+
+/// The per-sample buffers of step `n`'s state (its scene at the step's size), with the bug
+/// when the step's view has it.
+fn step_samples(lesson: &Lesson, n: usize) -> barylab::raster::multisample::SampleBuffer {
+    let state = lesson.state(n - 1).expect("state");
+    let dir = state.scene_dir.clone().unwrap_or_default();
+    let texture = state.scene.load_texture(&dir).expect("texture");
+    barylab::figure::sample_buffers::samples_of(
+        &state.scene,
+        &texture,
+        &state.scene.settings(),
+        state.samples_view.black_edges,
+    )
+    .expect("samples")
+}
+
+#[test]
+fn the_steps_select_the_views_their_texts_describe() {
+    use barylab::figure::sample_buffers::{SampleBufferKind, image};
+    let lesson = open();
+    let [g, b] = [[217, 238, 185, 255], [185, 217, 238, 255]];
+    // Step 2 shows sample 1's colour: blue at the pinned pixel, whose resolve is mostly green.
+    let v2 = lesson.state(1).expect("state").samples_view;
+    assert_eq!(
+        (v2.kind, v2.index, v2.black_edges),
+        (SampleBufferKind::Color, 1, false)
+    );
+    let s2 = step_samples(&lesson, 2);
+    let at = |px: &[[u8; 4]], x: usize, y: usize| px[y * 120 + x];
+    assert_eq!(at(&image(&s2, v2.kind, 1), 83, 42), b);
+    assert_eq!(at(&image(&s2, v2.kind, 0), 83, 42), g);
+    // Step 4 draws the bug: the pinned pixel resolves to the colour its text quotes.
+    let v4 = lesson.state(3).expect("state").samples_view;
+    assert!(v4.black_edges && v4.kind == SampleBufferKind::Resolve);
+    let bug = at(&image(&step_samples(&lesson, 4), v4.kind, 0), 83, 42);
+    assert_eq!(bug, resolve(&[g, [0, 0, 0, 255], g, g]));
+    quotes(&lesson, 4, &format!("({}, {}, {})", bug[0], bug[1], bug[2]));
+    // The other steps show the usual image.
+    for n in [1, 3, 5, 6] {
+        assert!(
+            !lesson.state(n - 1).expect("state").samples_view.is_on(),
+            "step {n}"
+        );
+    }
+}
+
+#[test]
+fn it_is_a_builtin_lesson_that_opens_from_any_folder() {
+    let builtin = barylab::lesson::builtin::lesson("samples").expect("registered");
+    assert_eq!(
+        builtin.text,
+        std::fs::read_to_string(lesson_path()).expect("read")
+    );
+    let dir = std::env::temp_dir().join(format!(
+        "barylab-lesson-samples-builtin-{}",
+        std::process::id()
+    ));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let out = dir.join("step4.png");
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_barylab"))
+            .current_dir(&dir)
+            .args(["lesson", "samples"])
+            .args(args)
+            .output()
+            .expect("run barylab")
+    };
+    for n in 1..=6 {
+        let step = run(&["--step", &n.to_string()]);
+        assert!(
+            step.status.success(),
+            "step {n}: {}",
+            String::from_utf8_lossy(&step.stderr)
+        );
+    }
+    let fig = run(&["--step", "4", "--figure", out.to_str().expect("utf-8")]);
+    assert!(
+        fig.status.success(),
+        "{}",
+        String::from_utf8_lossy(&fig.stderr)
+    );
+    std::fs::remove_dir_all(&dir).expect("clean up");
+}

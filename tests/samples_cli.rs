@@ -207,3 +207,33 @@ fn the_probe_lists_every_sample_and_where_the_centroid_landed() {
     let text = String::from_utf8_lossy(&zh.stdout);
     assert!(text.contains("采样点") && text.contains("质心"), "{text}");
 }
+
+/// The LaTeX probe has the samples section the text and Markdown probes have (the same
+/// document): each sample's coverage and the resolve, escaped for LaTeX.
+#[test]
+fn the_latex_probe_lists_the_samples() {
+    let scene = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("assets/scenes/games101-a2-ssaa.json");
+    let out = barylab(&[
+        "probe",
+        scene.to_str().expect("utf-8"),
+        "--size",
+        "120x120",
+        "--pixel",
+        "83,42",
+        "--format",
+        "latex",
+    ]);
+    assert!(out.status.success());
+    let tex = String::from_utf8_lossy(&out.stdout);
+    assert!(tex.contains(". The samples}"), "{tex}");
+    assert!(
+        tex.contains("sample 1 at (83.75, 42.25): covered by triangle 1"),
+        "{tex}"
+    );
+    assert!(tex.contains("Triangle 0 covers samples 0, 2, 3"), "{tex}");
+    assert!(
+        tex.contains("rgba(209, 233, 198, 255) = \\#d1e9c6"),
+        "{tex}"
+    );
+}

@@ -315,6 +315,9 @@ pub(super) fn figure(args: &FigureArgs) -> Result<()> {
     if matches!(args.view, V::Space | V::Depth | V::Tetra) {
         return super::space::figure(args, &scene, &texture, &settings, lang, svg_out);
     }
+    if args.view == V::Samples {
+        return super::samples_figure::write(args, &scene, &texture, &settings, lang);
+    }
     if args.view != V::Image {
         return super::texture_figure::write(args, &scene, &texture, &settings, lang);
     }

@@ -65,7 +65,7 @@ pub(super) fn figure(
     let shown = barylab::files::shown(&args.input.scene);
     let scale = args.scale as f32;
     let (bytes, what) = match args.view {
-        ViewArg::Space | ViewArg::Image | ViewArg::Texture | ViewArg::Lod => {
+        ViewArg::Space | ViewArg::Image | ViewArg::Texture | ViewArg::Lod | ViewArg::Samples => {
             let trace = pixel_trace(args, scene, texture, settings)?;
             let space = SpaceScene::build(scene, settings, trace.as_ref())
                 .with_context(|| shown.clone())?;

@@ -18,10 +18,6 @@ pub(super) fn write(
     settings: &RenderSettings,
     lang: Lang,
 ) -> Result<()> {
-    let svg_out = args
-        .output
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
     let shown = || barylab::files::shown(&args.input.scene);
     let picture = match args.view {
         FigureViewArg::Texture => {
@@ -48,6 +44,19 @@ pub(super) fn write(
             lod_view::lod_picture(&lambdas, scene.size(), texture.levels(), scale, lang)
         }
     };
+    write_picture(args, &picture)
+}
+
+/// Writes a raster picture (the texture, level-of-detail and per-sample buffers views) to
+/// `args.output`: SVG or PNG by its extension, at `--scale`.
+pub(super) fn write_picture(
+    args: &FigureArgs,
+    picture: &barylab::figure::raster_svg::RasterSvg,
+) -> Result<()> {
+    let svg_out = args
+        .output
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
     let bytes = if svg_out {
         picture.to_svg()?.into_bytes()
     } else {

@@ -12,6 +12,8 @@
 //! - [`svg`], [`png`]: the figure as an SVG document, and that document rasterized by resvg.
 //! - [`texture_view`], [`lod_view`]: the pinned pixel's lookup in texture space (texels,
 //!   taps and weights, footprint, anisotropic probes) and every pixel's mipmap level.
+//! - [`sample_buffers`]: what each sample buffer of a multisampled render holds (coverage
+//!   count, a sample's colour and depth, the resolve; the black-edge bug).
 //! - [`plot`]: a line plot (the handout's row plot) as SVG and PNG, without egui.
 //! - [`caption`]: the optional caption with the marked pixel's key numbers.
 //! - [`space`]: the space view, the scene in 3D with the pixel's ray (`barylab figure --view
@@ -39,6 +41,7 @@ pub mod overlay;
 pub mod plot;
 pub mod png;
 pub mod raster_svg;
+pub mod sample_buffers;
 pub mod space;
 pub mod svg;
 pub mod text;

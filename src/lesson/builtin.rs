@@ -1,5 +1,5 @@
 //! The built-in lessons and the scenes compiled into the program, so `barylab lesson
-//! interpolation` (or `builtin`), `barylab lesson texture` and the app's Lessons menu work on
+//! interpolation` (or `builtin`), `barylab lesson texture`, `barylab lesson samples` and the app's Lessons menu work on
 //! a machine without the `assets/` folder. [`LESSONS`] is the registry: a lesson added there
 //! is opened by name everywhere.
 
@@ -18,7 +18,7 @@ pub struct BuiltinLesson {
 }
 
 /// The built-in lessons, in the order the Lessons menu lists them.
-pub const LESSONS: [BuiltinLesson; 2] = [
+pub const LESSONS: [BuiltinLesson; 3] = [
     BuiltinLesson {
         name: "interpolation",
         aliases: &[NAME],
@@ -29,6 +29,11 @@ pub const LESSONS: [BuiltinLesson; 2] = [
         aliases: &[],
         text: TEXTURE_LESSON,
     },
+    BuiltinLesson {
+        name: "samples",
+        aliases: &[],
+        text: SAMPLES_LESSON,
+    },
 ];
 
 /// The built-in lesson a name (or alias) opens.
@@ -37,6 +42,7 @@ pub const LESSONS: [BuiltinLesson; 2] = [
 /// use barylab::lesson::builtin::lesson;
 /// assert_eq!(lesson("builtin").map(|l| l.name), Some("interpolation"));
 /// assert_eq!(lesson("texture").map(|l| l.name), Some("texture"));
+/// assert_eq!(lesson("samples").map(|l| l.name), Some("samples"));
 /// assert!(lesson("lessons/my.json").is_none());
 /// ```
 pub fn lesson(name: &str) -> Option<&'static BuiltinLesson> {
@@ -48,6 +54,11 @@ pub fn lesson(name: &str) -> Option<&'static BuiltinLesson> {
 /// The second built-in lesson, `assets/lessons/texture.json`: from uv to texel.
 pub const TEXTURE_LESSON: &str = include_str!("../../assets/lessons/texture.json");
 
+/// The third built-in lesson, `assets/lessons/samples.json`: samples per pixel, the resolve,
+/// the black-edge bug, MSAA and supersampling (its scenes are the clip-space copies of
+/// GAMES101 A2's, `games101-a2-clip*.json`, which need no model file).
+pub const SAMPLES_LESSON: &str = include_str!("../../assets/lessons/samples.json");
+
 /// A lesson's scene reference that names a built-in scene: `"builtin:default"`.
 pub const SCENE_PREFIX: &str = "builtin:";
 
@@ -55,7 +66,7 @@ pub const SCENE_PREFIX: &str = "builtin:";
 pub const LESSON: &str = include_str!("../../assets/lessons/interpolation.json");
 
 /// The scenes of `assets/scenes/` that need no other file (built-in textures only), by name.
-pub const SCENES: [(&str, &str); 15] = [
+pub const SCENES: [(&str, &str); 17] = [
     ("default", include_str!("../../assets/scenes/default.json")),
     ("front", include_str!("../../assets/scenes/front.json")),
     (
@@ -109,6 +120,14 @@ pub const SCENES: [(&str, &str); 15] = [
     (
         "games101-pitfall",
         include_str!("../../assets/scenes/games101-pitfall.json"),
+    ),
+    (
+        "games101-a2-clip",
+        include_str!("../../assets/scenes/games101-a2-clip.json"),
+    ),
+    (
+        "games101-a2-clip-ssaa",
+        include_str!("../../assets/scenes/games101-a2-clip-ssaa.json"),
     ),
 ];
 

@@ -231,6 +231,8 @@ pub struct Step {
     pub plot: Option<LessonPlot>,
     /// The 3D view beside the canvas (default off).
     pub space_view: bool,
+    /// The per-sample buffers view (default: the resolve, without the black-edge bug).
+    pub samples_view: crate::figure::sample_buffers::SampleView,
     /// A quiz on the pinned pixel: the class predicts these numbers before they are shown.
     pub quiz: Option<QuizSpec>,
     /// A moving figure for the step's slide (`barylab lesson --slides`), in place of the
@@ -305,6 +307,8 @@ pub struct StepState {
     pub plot: Option<LessonPlot>,
     /// The 3D view beside the canvas.
     pub space_view: bool,
+    /// The per-sample buffers view.
+    pub samples_view: crate::figure::sample_buffers::SampleView,
     /// The quiz on the pinned pixel (its pixel is [`StepState::pin`]).
     pub quiz: Option<Question>,
 }
@@ -395,6 +399,7 @@ impl Lesson {
             inspector: step.inspector.clone(),
             plot: step.plot,
             space_view: step.space_view,
+            samples_view: step.samples_view,
             quiz: step.quiz.as_ref().and_then(|q| {
                 Some(Question {
                     pixel: step.quiz_pixel()?,

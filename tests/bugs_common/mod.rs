@@ -1,11 +1,12 @@
 //! Helpers of the named-bug tests (`compare_bugs.rs`, `grade.rs`): the test scenes and
-//! images made with a bug independently of the library's own bug renders.
+//! images made with a bug independently of the library's own bug renders (the black edges
+//! with the per-sample buffers view's writer, which `compare` does not use).
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
 
+use barylab::figure::sample_buffers::{black_edge_samples, resolved};
 use barylab::raster::render::render_samples;
-use barylab::raster::sample::resolve;
 use barylab::raster::{ClipMesh, NO_TRIANGLE, RenderSettings, Texture, render};
 use barylab::scene::Scene;
 
@@ -59,45 +60,16 @@ pub fn black_edges(name: &str) -> (Vec<[u8; 4]>, usize) {
     black_edges_of(&scene, &texture, &settings)
 }
 
-/// [`black_edges`] of a loaded scene with its (multisampled) settings.
+/// [`black_edges`] of a loaded scene with its (multisampled) settings: the library's
+/// [`black_edge_samples`] (what the app's black-edge toggle shows), resolved.
 pub fn black_edges_of(
     scene: &Scene,
     texture: &Texture,
     settings: &RenderSettings,
 ) -> (Vec<[u8; 4]>, usize) {
-    let (r, samples) = render_samples(&scene.to_mesh(), texture, settings).expect("render");
-    let mut out = r.frame.color.clone();
-    let mut changed = 0;
-    for y in 0..settings.height {
-        for x in 0..settings.width {
-            let s = samples.pixel(x, y);
-            let mut tris: Vec<u32> = s
-                .iter()
-                .map(|v| v.triangle)
-                .filter(|&t| t != NO_TRIANGLE)
-                .collect();
-            tris.sort_unstable();
-            tris.dedup();
-            if tris.len() < 2 {
-                continue;
-            }
-            let count = |t: u32| s.iter().filter(|v| v.triangle == t).count();
-            let keep = tris.iter().copied().max_by_key(|&t| count(t)).expect("two");
-            let colors: Vec<[u8; 4]> = s
-                .iter()
-                .map(|v| {
-                    if v.triangle == keep {
-                        v.color
-                    } else {
-                        settings.background
-                    }
-                })
-                .collect();
-            out[(y * settings.width + x) as usize] = resolve(&colors);
-            changed += 1;
-        }
-    }
-    (out, changed)
+    let (_, samples) = render_samples(&scene.to_mesh(), texture, settings).expect("render");
+    let (bugged, changed) = black_edge_samples(&samples, settings.background);
+    (resolved(&bugged), changed)
 }
 
 /// Saves RGBA pixels as a PNG `width` pixels wide.

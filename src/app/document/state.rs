@@ -64,6 +64,9 @@ pub struct ViewSettings {
     pub gpu: bool,
     /// The 3D view beside the canvas (the space view, `figure::space`).
     pub space: bool,
+    /// The per-sample buffers view of a multisampled scene (coverage count, a sample's
+    /// colour or depth; the black-edge bug), [`crate::figure::sample_buffers`].
+    pub samples_view: crate::figure::sample_buffers::SampleView,
 }
 
 impl Default for ViewSettings {
@@ -86,6 +89,7 @@ impl Default for ViewSettings {
             plot: None,
             gpu: false,
             space: false,
+            samples_view: Default::default(),
         }
     }
 }
@@ -174,6 +178,8 @@ pub enum StateCommand {
     SetGpuView(bool),
     /// The 3D view beside the canvas on or off.
     SetSpaceView(bool),
+    /// The per-sample buffers view: which buffer, sample index, black-edge bug.
+    SetSamplesView(crate::figure::sample_buffers::SampleView),
     /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
     SetTieRule(crate::raster::setup::TieRule),
     /// Samples per pixel, their pattern, the shading rate and the location (saved in the scene).
@@ -347,6 +353,7 @@ impl AppState {
             }
             StateCommand::SetGpuView(on) => self.view.gpu = on,
             StateCommand::SetSpaceView(on) => self.view.space = on,
+            StateCommand::SetSamplesView(v) => self.view.samples_view = v,
             StateCommand::SetTieRule(rule) => self.scene.set_tie_rule(rule),
             StateCommand::SetSamples(samples) => self.scene.set_samples(samples),
             StateCommand::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),

@@ -89,7 +89,11 @@ pub struct CanvasState {
     /// The last successful render (`None` until the first; kept when a later one fails).
     pub output: Option<CanvasOutput>,
     textures: Vec<TextureHandle>,
-    uploaded: Option<(u64, Compare, u32, Option<u64>)>,
+    uploaded: Option<(u64, Compare, u32, Option<u64>, u64)>,
+    /// The per-sample buffers the sample view shows (made only while it is on).
+    pub samples: crate::app::services::sample_images::SampleImages,
+    /// How many views the last upload took from the per-sample buffers.
+    pub samples_shown: usize,
     drag: Option<DragKind>,
     /// The views drawn last frame, left to right.
     pub views: Vec<View>,
@@ -185,16 +189,32 @@ impl CanvasState {
 
     /// Builds the view images and uploads them, only if the render, the GPU view's images or
     /// the wipe moved.
-    fn upload(&mut self, ctx: &egui::Context, compare: Compare, wipe: f32, gpu: Option<&GpuView>) {
+    fn upload(
+        &mut self,
+        ctx: &egui::Context,
+        (compare, wipe): (Compare, f32),
+        gpu: Option<&GpuView>,
+        samples_view: crate::figure::sample_buffers::SampleView,
+    ) {
         let Some(out) = &self.output else {
             return;
         };
         let wipe_col = crate::figure::wipe_column(wipe, out.size[0]);
-        let tag = (out.generation, compare, wipe_col, gpu.map(|g| g.generation));
+        let tag = (
+            out.generation,
+            compare,
+            wipe_col,
+            gpu.map(|g| g.generation),
+            // The sample view's image changes with its kind and index too.
+            self.samples.generation
+                ^ (u64::from(samples_view.index) << 40)
+                ^ ((samples_view.kind as u64) << 56),
+        );
         if self.uploaded == Some(tag) && self.textures.len() == self.views.len() {
             return;
         }
         let start = Instant::now();
+        self.samples_shown = 0;
         let images: Vec<egui::ColorImage> = self
             .views
             .iter()
@@ -202,7 +222,12 @@ impl CanvasState {
             .map(|(i, v)| match gpu {
                 Some(g) => other_image::view_image(g, compare, i, wipe_col)
                     .unwrap_or_else(|| view_image(out, g.fallback(), wipe_col)),
-                None => view_image(out, v.content, wipe_col),
+                None => match v.content {
+                    ViewContent::Mode(m) => self.samples.image(m, samples_view),
+                    _ => None,
+                }
+                .inspect(|_| self.samples_shown += 1)
+                .unwrap_or_else(|| view_image(out, v.content, wipe_col)),
             })
             .collect();
         self.textures.truncate(images.len());
@@ -359,8 +384,18 @@ pub(crate) fn canvas_ui(
     };
     canvas.pixel_size = lay.pixel_size(ppp);
     canvas.views = views_of(&lay, state, input.gpu.is_some(), lay.size[0]);
+    if let Some(o) = &canvas.output {
+        let rasterizer = view_settings.rasterizer;
+        let view = view_settings.samples_view;
+        canvas.samples.update(o, input.texture, view, rasterizer);
+    }
     let (compare, wipe) = (view_settings.compare, view_settings.wipe);
-    canvas.upload(ui.ctx(), compare, wipe, input.gpu);
+    canvas.upload(
+        ui.ctx(),
+        (compare, wipe),
+        input.gpu,
+        view_settings.samples_view,
+    );
     if let Some(e) = &canvas.error {
         // In the picture's place: an older picture (or the handles of a scene it cannot
         // draw over it) would not belong to what the controls show.
@@ -611,6 +646,15 @@ pub(crate) fn canvas_ui(
             // Every corner at one w: both modes draw the same picture; the title says so
             // instead of naming one (a lesson's flat steps are about screen space).
             let title = lang.tr_with("figure.flat", &[("w", &format!("{w:.2}"))]);
+            paint::retitle(&mut shapes, &title);
+        }
+        // The sample view's buffer (the GPU view shows the GL's image instead).
+        if gpu.is_none()
+            && let Some(title) =
+                canvas
+                    .samples
+                    .title(view.content, view_settings.samples_view, lang)
+        {
             paint::retitle(&mut shapes, &title);
         }
         // With the wireframe on, the triangle's outline would lie right over the wireframe's

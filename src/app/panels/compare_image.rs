@@ -465,6 +465,7 @@ impl Work {
             gpu: self.image.pixels.clone(),
             diff: image_diff,
             notes: Vec::new(),
+            samples: None,
         };
         let held = Held {
             scene: self.scene,

@@ -227,6 +227,11 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<StateCommand> {
         ui,
         state.scene.samples(),
     ));
+    out.extend(crate::app::panels::sample_buffers::buffers_ui(
+        ui,
+        view.samples_view,
+        state.scene.samples().count.get(),
+    ));
 
     section(ui, &lang.tr("app.controls.pixels"));
     out.extend(crate::app::panels::image_size::image_size_ui(ui, state));

@@ -44,8 +44,8 @@ pub enum Note {
     Trilinear,
     /// The wireframe overlay left out.
     Wireframe,
-    /// Several samples per pixel (or `flat`): both sides drawn with one sample at the centre
-    /// (`barylab gpu-check --samples` compares every sample).
+    /// GAMES101's sample grid (the GL places only its own positions): both sides drawn with
+    /// one sample at the centre.
     Samples,
 }
 
@@ -59,6 +59,9 @@ pub struct GpuResult {
     pub diff: crate::gpu::view::ImageDiff,
     /// What was drawn differently from the scene's settings.
     pub notes: Vec<Note>,
+    /// With several samples per pixel: the per-sample comparison
+    /// ([`crate::app::panels::gpu_samples`]).
+    pub samples: Option<crate::app::panels::gpu_samples::SamplesSummary>,
 }
 
 /// OpenGL's strings: GL_VENDOR, GL_RENDERER, GL_VERSION.
@@ -179,6 +182,12 @@ impl GpuView {
             Ok(result) => {
                 if self.print_summary {
                     println!("gpu view: {}", result.diff.summary_en());
+                    if let Some(samples) = &result.samples {
+                        let lines =
+                            crate::app::panels::gpu_samples::summary_lines(samples, Lang::En);
+                        let text: Vec<String> = lines.into_iter().map(|(l, _)| l).collect();
+                        println!("gpu view samples: {}", text.join(" "));
+                    }
                 }
                 self.result = Some(result);
                 self.unavailable = None;
@@ -236,6 +245,18 @@ impl GpuView {
         let gpu = self.gpu.as_mut().ok_or(Unavailable::NoContext)?;
         let (settings, output, notes) = gpu_settings(out.scene.settings(), mode);
         let mesh = mesh_at_f32(&out.scene.to_mesh());
+        if settings.samples.uses_sample_path() {
+            let (ours, gpu_image, diff, summary) =
+                crate::app::panels::gpu_samples::draw(gpu, &mesh, texture, &settings, output)
+                    .map_err(Unavailable::Gl)?;
+            return Ok(GpuResult {
+                ours,
+                gpu: gpu_image,
+                diff,
+                notes,
+                samples: Some(summary),
+            });
+        }
         // Colour, depth and the owning triangle (the fast path draws them).
         let mut f = crate::raster::Framebuffer::empty();
         let buffers = crate::raster::Buffers::ColorDepthUv;
@@ -254,6 +275,7 @@ impl GpuView {
             gpu: colors,
             diff,
             notes,
+            samples: None,
         })
     }
 }
@@ -290,7 +312,10 @@ fn gpu_settings(
         notes.push(Note::Wireframe);
         s.wireframe = false;
     }
-    if s.samples.uses_sample_path() {
+    // The GL places its own samples only: GAMES101's grid is drawn with one sample.
+    if s.samples.uses_sample_path()
+        && s.samples.pattern == crate::raster::sample::SamplePattern::Grid
+    {
         notes.push(Note::Samples);
         s.samples = Default::default();
     }
@@ -392,6 +417,9 @@ fn strip_contents(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<StateCom
             ui.label(lang.tr_with("gpu_view.triangles", &[("count", &d.triangle_mismatches)]));
         }
     });
+    if let Some(s) = &r.samples {
+        crate::app::panels::gpu_samples::summary_ui(ui, s);
+    }
     if let Some(info) = &view.info {
         ui.add(
             egui::Label::new(

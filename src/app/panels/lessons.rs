@@ -95,6 +95,7 @@ pub fn apply_step(state: &mut AppState, step: &StepState) {
     v.pinned = step.pin;
     v.plot = step.plot;
     v.space = step.space_view;
+    v.samples_view = step.samples_view;
 }
 
 impl BaryApp {

@@ -7,6 +7,7 @@ pub(crate) mod pixel;
 pub mod recorder;
 pub(crate) mod render;
 pub(crate) mod reports;
+pub(crate) mod sample_images;
 pub(crate) mod screenshot;
 pub(crate) mod style;
 pub(crate) mod textures;
