@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use barylab::figure::TexelView;
 use barylab::lesson::Lesson;
 use barylab::probe::format::fmt_number;
 use barylab::probe::{LodTrace, PixelTrace};
@@ -207,4 +208,48 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
     }
     let problems = problems.into_inner();
     assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// The view a step's words name, in one language: the texture-space view, the
+/// level-of-detail view, or none.
+fn named_view(text: &str, texture: &str, lod: &str) -> Option<TexelView> {
+    match (text.contains(texture), text.contains(lod)) {
+        (true, false) => Some(TexelView::Texture),
+        (false, true) => Some(TexelView::Lod),
+        _ => None,
+    }
+}
+
+#[test]
+fn steps_that_talk_about_a_texture_view_select_it_in_both_languages() {
+    let l = lesson();
+    let mut named = 0;
+    for (i, s) in l.steps.iter().enumerate() {
+        let en = format!("{} {}", s.text.en, s.try_this.en);
+        let zh = format!("{} {}", s.text.zh, s.try_this.zh);
+        let by_en = named_view(&en, "texture-space view", "level-of-detail view");
+        let by_zh = named_view(&zh, "纹理空间视图", "细节层次视图");
+        assert_eq!(
+            by_en,
+            by_zh,
+            "step {}: the languages name different views",
+            i + 1
+        );
+        if let Some(v) = by_en {
+            named += 1;
+            assert_eq!(s.texture_view, v, "step {} names {v:?}", i + 1);
+            let state = l.state(i).expect("state");
+            assert_eq!(state.texture_view, v, "step {}'s state", i + 1);
+        }
+    }
+    // The footprint, the mipmap pyramid, magnification's end and the probes.
+    assert_eq!(named, 4);
+    let views: Vec<TexelView> = l.steps.iter().map(|s| s.texture_view).collect();
+    assert_eq!(views[6], TexelView::Lod, "step 7 (the mipmap pyramid)");
+    assert_eq!(views[10], TexelView::Texture, "step 11 (anisotropic)");
+    assert_eq!(
+        views[0],
+        TexelView::Off,
+        "step 1 is plain nearest filtering"
+    );
 }

@@ -231,6 +231,9 @@ pub struct Step {
     pub plot: Option<LessonPlot>,
     /// The 3D view beside the canvas (default off).
     pub space_view: bool,
+    /// The texture-space or level-of-detail view beside the canvas (`"texture_view":
+    /// "texture"` or `"lod"`; default off).
+    pub texture_view: crate::figure::TexelView,
     /// A quiz on the pinned pixel: the class predicts these numbers before they are shown.
     pub quiz: Option<QuizSpec>,
     /// A moving figure for the step's slide (`barylab lesson --slides`), in place of the
@@ -305,6 +308,8 @@ pub struct StepState {
     pub plot: Option<LessonPlot>,
     /// The 3D view beside the canvas.
     pub space_view: bool,
+    /// The texture-space or level-of-detail view beside the canvas.
+    pub texture_view: crate::figure::TexelView,
     /// The quiz on the pinned pixel (its pixel is [`StepState::pin`]).
     pub quiz: Option<Question>,
 }
@@ -395,6 +400,7 @@ impl Lesson {
             inspector: step.inspector.clone(),
             plot: step.plot,
             space_view: step.space_view,
+            texture_view: step.texture_view,
             quiz: step.quiz.as_ref().and_then(|q| {
                 Some(Question {
                     pixel: step.quiz_pixel()?,

@@ -100,6 +100,8 @@ struct RawStep {
     #[serde(default)]
     space_view: bool,
     #[serde(default)]
+    texture_view: crate::figure::TexelView,
+    #[serde(default)]
     quiz: Option<QuizSpec>,
     animation: Option<StepAnimation>,
 }
@@ -221,6 +223,7 @@ impl<'de> Deserialize<'de> for Step {
             inspector: r.inspector,
             plot: r.plot,
             space_view: r.space_view,
+            texture_view: r.texture_view,
             quiz: r.quiz,
             animation: r.animation,
         })

@@ -61,6 +61,9 @@ pub struct ViewSettings {
     pub gpu: bool,
     /// The 3D view beside the canvas (the space view, `figure::space`).
     pub space: bool,
+    /// The texture-space or level-of-detail view beside the canvas
+    /// ([`crate::app::panels::texel_view`]).
+    pub texel: crate::figure::TexelView,
 }
 
 impl Default for ViewSettings {
@@ -82,6 +85,7 @@ impl Default for ViewSettings {
             plot: None,
             gpu: false,
             space: false,
+            texel: crate::figure::TexelView::Off,
         }
     }
 }
@@ -170,6 +174,8 @@ pub enum StateCommand {
     SetGpuView(bool),
     /// The 3D view beside the canvas on or off.
     SetSpaceView(bool),
+    /// Which texture view shows beside the canvas (texture space, level of detail, none).
+    SetTexelView(crate::figure::TexelView),
     /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
     SetTieRule(crate::raster::setup::TieRule),
     /// Samples per pixel, their pattern, the shading rate and the location (saved in the scene).
@@ -341,6 +347,7 @@ impl AppState {
             }
             StateCommand::SetGpuView(on) => self.view.gpu = on,
             StateCommand::SetSpaceView(on) => self.view.space = on,
+            StateCommand::SetTexelView(t) => self.view.texel = t,
             StateCommand::SetTieRule(rule) => self.scene.set_tie_rule(rule),
             StateCommand::SetSamples(samples) => self.scene.set_samples(samples),
             StateCommand::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),

@@ -28,5 +28,6 @@ pub mod quiz;
 pub(crate) mod samples_control;
 pub(crate) mod space_view;
 pub(crate) mod status;
+pub(crate) mod texel_view;
 pub(crate) mod tie_rule;
 pub(crate) mod top_bar;
