@@ -253,3 +253,46 @@ fn steps_that_talk_about_a_texture_view_select_it_in_both_languages() {
         "step 1 is plain nearest filtering"
     );
 }
+
+#[test]
+fn the_step_where_lambda_grows_towards_the_horizon_plots_it_down_the_column() {
+    let l = lesson();
+    let n = 1 + l
+        .steps
+        .iter()
+        .position(|s| s.text.en.contains("lambda grows towards the horizon"))
+        .expect("a step says it");
+    assert!(l.steps[n - 1].text.zh.contains("越靠近地平线越大"));
+    let state = l.state(n - 1).expect("state");
+    assert_eq!(state.plot, Some(barylab::lesson::LessonPlot::LambdaColumn));
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let [x, y] = state.pin.expect("pinned");
+    let plot = barylab::lesson::plot::row_plot(
+        &state.scene,
+        &texture,
+        [x, y],
+        barylab::lesson::LessonPlot::LambdaColumn,
+        barylab::i18n::Lang::En,
+    )
+    .expect("plot");
+    assert_eq!(plot.marker, Some(f64::from(y)));
+    let lambda = &plot.lines[0].1;
+    // At the pinned row, the probe's lambda.
+    let at_pin = lambda
+        .iter()
+        .find(|p| p[0] == f64::from(y))
+        .expect("the pinned row is covered")[1];
+    let probed = lod(&probe_step(&l, n, true)).trilinear.lambda;
+    assert_eq!(at_pin, f64::from(probed));
+    // Up the column (rows decreasing) lambda never falls, from magnified to past level 4.
+    for w in lambda.windows(2) {
+        assert!(w[0][0] < w[1][0]);
+        assert!(w[0][1] >= w[1][1] - 1e-6, "lambda falls going up at {w:?}");
+    }
+    assert!(lambda.last().expect("rows")[1] < 0.0);
+    assert!(lambda[0][1] > 4.0);
+    // The level line: floor(lambda), 0 when magnified.
+    for (p, q) in lambda.iter().zip(&plot.lines[1].1) {
+        assert_eq!(q[1], p[1].max(0.0).floor().min(8.0), "row {}", p[0]);
+    }
+}

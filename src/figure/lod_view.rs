@@ -78,19 +78,7 @@ pub fn lod_per_pixel(
                     {
                         continue;
                     }
-                    let d = interpolate::quad_derivatives(
-                        s,
-                        (x, y),
-                        settings.mode,
-                        Derivatives::Coarse,
-                    );
-                    out[i] = match d {
-                        None => 0.0,
-                        Some([dx, dy]) if settings.max_anisotropy.is_on() => {
-                            Anisotropic::of(dx, dy, size, settings.max_anisotropy).lambda
-                        }
-                        Some([dx, dy]) => lod(dx, dy, size.0, size.1),
-                    };
+                    out[i] = pixel_lambda(s, (x, y), settings, size);
                 }
             }
         }
@@ -131,6 +119,54 @@ pub fn lod_image(lambdas: &[f32], (width, height): (u32, u32), levels: u32) -> i
             image::Rgba([c[0], c[1], c[2], 255])
         }
     })
+}
+
+/// The level of detail of pixel `(x, y)` of set-up triangle `s` as the renderer computes it:
+/// coarse derivatives of the quad in `settings.mode`, `lod` (or the anisotropic level when
+/// `settings.max_anisotropy` is on) for a texture of `size`; 0 where the quad has no uv.
+fn pixel_lambda(
+    s: &crate::raster::setup::TriangleSetup,
+    (x, y): (u32, u32),
+    settings: &RenderSettings,
+    size: (u32, u32),
+) -> f32 {
+    match interpolate::quad_derivatives(s, (x, y), settings.mode, Derivatives::Coarse) {
+        None => 0.0,
+        Some([dx, dy]) if settings.max_anisotropy.is_on() => {
+            Anisotropic::of(dx, dy, size, settings.max_anisotropy).lambda
+        }
+        Some([dx, dy]) => lod(dx, dy, size.0, size.1),
+    }
+}
+
+/// Column `x` of [`lod_per_pixel`]'s image: `[row, lambda]` for every row a triangle wrote,
+/// top to bottom, and `[row, level]` with the mipmap level read there (0 when magnified,
+/// else `floor(lambda)` clamped to the texture's last level).
+pub fn lod_column(
+    scene: &Scene,
+    texture: &Texture,
+    settings: &RenderSettings,
+    x: u32,
+) -> Result<[Vec<[f64; 2]>; 2], FigureError> {
+    let lambdas = lod_per_pixel(scene, texture, settings)?;
+    let (w, h) = scene.size();
+    let last = texture.levels().saturating_sub(1);
+    let mut lambda = Vec::new();
+    let mut level = Vec::new();
+    for y in (0..h).filter(|_| x < w) {
+        let l = lambdas[y as usize * w as usize + x as usize];
+        if l.is_nan() {
+            continue;
+        }
+        let lv = if l <= 0.0 {
+            0
+        } else {
+            (l.floor() as u32).min(last)
+        };
+        lambda.push([f64::from(y), f64::from(l)]);
+        level.push([f64::from(y), f64::from(lv)]);
+    }
+    Ok([lambda, level])
 }
 
 /// The level-of-detail view: the image coloured by level (`scale` points per pixel) and the

@@ -77,6 +77,9 @@ pub enum LessonPlot {
     WRow,
     /// Window depth z/w (straight on the screen) against view depth w (not straight).
     DepthRow,
+    /// The level of detail lambda down the pinned pixel's column (up a floor it grows towards
+    /// the horizon), with the mipmap level read.
+    LambdaColumn,
 }
 
 /// A section of the inspector's derivation (the probe's worked example), by name: lessons

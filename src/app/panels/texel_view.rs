@@ -40,6 +40,8 @@ type PictureKey = (TexelView, u64, Option<([u32; 2], u64)>, Lang);
 pub struct TexelViewPanel {
     pictures: Option<(PictureKey, Vec<TextureHandle>)>,
     lambdas: Option<(u64, Arc<Vec<f32>>)>,
+    /// The lambda-down-a-column plot's lines: the render's generation, the mode, the column.
+    column: Option<((u64, Interpolation, u32), crate::lesson::plot::PlotLines)>,
 }
 
 /// The Controls panel's choices of the texture views (beside the 3D view's toggle): a second
@@ -207,6 +209,25 @@ pub fn lod_line(lang: Lang, pixel: [u32; 2], lambda: f32, levels: u32) -> String
 }
 
 impl TexelViewPanel {
+    /// The lines of the lambda plot down column `x` of `output`'s scene drawn with `settings`
+    /// ([`crate::lesson::plot::lambda_column`]; computed again only for a new render, mode or
+    /// column).
+    pub(in crate::app) fn lambda_column(
+        &mut self,
+        output: &CanvasOutput,
+        texture: &Texture,
+        settings: &crate::raster::RenderSettings,
+        x: u32,
+    ) -> Option<crate::lesson::plot::PlotLines> {
+        let key = (output.generation, settings.mode, x);
+        if self.column.as_ref().is_none_or(|(k, _)| *k != key) {
+            let lines =
+                crate::lesson::plot::lambda_column(&output.scene, texture, settings, x).ok()?;
+            self.column = Some((key, lines));
+        }
+        self.column.as_ref().map(|(_, l)| l.clone())
+    }
+
     /// Every pixel's level of detail for `output` (computed again only for a new render).
     fn lambdas(&mut self, output: &CanvasOutput, texture: &Texture) -> Option<Arc<Vec<f32>>> {
         if self
