@@ -185,3 +185,21 @@ fn the_card_shows_the_level_of_detail_with_trilinear_filtering() {
     );
     assert!(shows(&h, &line), "the card shows {line}");
 }
+
+#[test]
+fn on_a_projector_the_level_of_detail_step_keeps_its_legend_in_the_window() {
+    let h = at_step(7, PROJECTOR, true);
+    let view = h
+        .query_by_label("Each pixel's mipmap level")
+        .expect("the view")
+        .rect();
+    let canvas = h.state().canvas().area.expect("the canvas is laid out");
+    assert!(canvas.max.x <= view.min.x, "{canvas:?} left of {view:?}");
+    for entry in ["level 0", "level 8"] {
+        let r = h.query_by_label(entry).expect("a legend entry").rect();
+        assert!(
+            r.min.x >= view.min.x && r.max.x <= PROJECTOR.x && r.max.y <= PROJECTOR.y,
+            "{entry} at {r:?}, the view at {view:?}"
+        );
+    }
+}

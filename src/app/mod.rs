@@ -434,6 +434,7 @@ impl BaryApp {
                 self.quiz_presenting(ui, texture, &mut out);
             } else if !self.space_panel_presenting(ui) {
                 if self.texel_panel_presenting(ui, texture) {
+                    self.present_plot_band(ui, texture, &mut out);
                     let framing =
                         panels::canvas_layout::Framing::presenting(self.state.view.compare);
                     self.canvas_panel(ui, texture, framing, &mut out);

@@ -393,19 +393,17 @@ impl TexelViewPanel {
         ui.label(RichText::new(lang.tr("figure.lod.legend")).strong());
         ui.horizontal_wrapped(|ui| {
             for (c, label) in lod_view::legend(&lambdas, levels, lang) {
-                // A swatch and its label stay on one line.
-                ui.horizontal(|ui| {
-                    let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 14.0), Sense::hover());
-                    ui.painter()
-                        .rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
-                    ui.painter().rect_stroke(
-                        r,
-                        0.0,
-                        Stroke::new(1.0, Color32::DARK_GRAY),
-                        egui::StrokeKind::Inside,
-                    );
-                    ui.label(label);
-                });
+                let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 14.0), Sense::hover());
+                ui.painter()
+                    .rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
+                ui.painter().rect_stroke(
+                    r,
+                    0.0,
+                    Stroke::new(1.0, Color32::DARK_GRAY),
+                    egui::StrokeKind::Inside,
+                );
+                // The label with its level number kept on one line.
+                ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
                 ui.add_space(6.0);
             }
         });
