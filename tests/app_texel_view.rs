@@ -12,8 +12,8 @@ use barylab::app::AppOptions;
 use barylab::app::document::state::StateCommand;
 use barylab::figure::TexelView;
 use barylab::lesson::Lesson;
+use barylab::probe::PixelTrace;
 use barylab::probe::format::{fmt_digits, fmt_number};
-use barylab::probe::{LodTrace, PixelTrace};
 use egui_kittest::kittest::Queryable;
 
 const WIDE: egui::Vec2 = egui::vec2(1600.0, 1000.0);
@@ -47,14 +47,6 @@ fn probe_step(n: usize) -> PixelTrace {
     barylab::probe::probe(&state.scene, &texture, &state.scene.settings(), (x, y)).expect("probe")
 }
 
-fn lod(t: &PixelTrace) -> &LodTrace {
-    t.detail
-        .as_ref()
-        .and_then(|d| d.attribute.as_ref())
-        .and_then(|a| a.lod.as_ref())
-        .expect("a level-of-detail derivation")
-}
-
 fn n(x: f32) -> String {
     fmt_number(f64::from(x))
 }
@@ -69,7 +61,7 @@ fn the_trilinear_step_shows_the_footprint_levels_and_taps_of_the_pinned_pixel() 
     assert_eq!(h.state().state().view.texel, TexelView::Texture);
     assert!(shows(&h, "The pixel's lookup in texture space"));
     let t = probe_step(8);
-    let l = lod(&t);
+    let l = common::lod_of(&t);
     let footprint = format!(
         "P_x = {}, P_y = {} texels; ρ = {}; λ = log2 ρ = {}",
         n(l.px),
@@ -113,7 +105,7 @@ fn the_mipmap_step_shows_every_pixels_level_and_the_pinned_pixels_lambda() {
     assert_eq!(h.state().state().view.texel, TexelView::Lod);
     assert!(shows(&h, "Each pixel's mipmap level"));
     let t = probe_step(7);
-    let lambda = lod(&t).trilinear.lambda;
+    let lambda = common::lod_of(&t).trilinear.lambda;
     let [x, y] = t.pixel;
     let line = format!(
         "pixel ({x}, {y}): λ = {}, level {}",
@@ -132,7 +124,10 @@ fn on_a_projector_the_anisotropic_step_keeps_the_view_beside_the_picture() {
     let mut h = at_step(11, PROJECTOR, true);
     assert!(h.state().presenting());
     let t = probe_step(11);
-    let a = lod(&t).anisotropic.as_ref().expect("anisotropic");
+    let a = common::lod_of(&t)
+        .anisotropic
+        .as_ref()
+        .expect("anisotropic");
     let line = format!(
         "anisotropic: N = {} probes (at most {}); λ' = log2(P_max / N) = {}",
         a.n,
@@ -174,7 +169,7 @@ fn the_card_shows_the_level_of_detail_with_trilinear_filtering() {
     let h = at_step(10, WIDE, true);
     assert_eq!(h.state().state().view.texel, TexelView::Off);
     let t = probe_step(10);
-    let l = lod(&t);
+    let l = common::lod_of(&t);
     let (e, _) = l.trilinear.next.expect("two levels");
     let d = |x: f32| fmt_digits(f64::from(x), 4);
     let line = format!(

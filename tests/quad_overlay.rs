@@ -2,12 +2,14 @@
 //! around the pinned pixel with the four pixels' uvs (the probe's), a helper pixel marked as
 //! extrapolated, and nothing of it without a level-of-detail derivation.
 
+mod common;
+
 use std::path::Path;
 
 use barylab::figure::overlay::Shape;
 use barylab::figure::{Figure, FigureOptions};
+use barylab::probe::PixelTrace;
 use barylab::probe::format::fmt_number;
-use barylab::probe::{LodTrace, PixelTrace};
 use barylab::raster::Filter;
 use barylab::scene::Scene;
 use glam::DVec2;
@@ -20,14 +22,6 @@ fn far_checker(filter: Filter) -> Scene {
     };
     barylab::edit::set_options(&mut scene, options);
     scene
-}
-
-fn lod(t: &PixelTrace) -> &LodTrace {
-    t.detail
-        .as_ref()
-        .and_then(|d| d.attribute.as_ref())
-        .and_then(|a| a.lod.as_ref())
-        .expect("a level-of-detail derivation")
 }
 
 /// The figure's overlay texts and rectangles with the pixel `pin` pinned.
@@ -54,7 +48,7 @@ fn marks(scene: &Scene, pin: [u32; 2]) -> (Vec<String>, Vec<(DVec2, DVec2)>, Pix
 fn the_pinned_pixels_quad_is_outlined_with_the_probes_uvs() {
     let scene = far_checker(Filter::Trilinear);
     let (texts, rects, trace) = marks(&scene, [240, 160]);
-    let l = lod(&trace);
+    let l = common::lod_of(&trace);
     let o = l.quad[0].pixel;
     assert_eq!(o, [240, 160]);
     let origin = DVec2::new(f64::from(o[0]), f64::from(o[1]));
@@ -98,7 +92,7 @@ fn a_quad_neighbour_outside_the_triangle_is_named_a_helper() {
         })
         .expect("a pixel of the floor whose quad has a helper");
     let (texts, _, trace) = marks(&scene, pin);
-    let l = lod(&trace);
+    let l = common::lod_of(&trace);
     let helpers: Vec<String> = l
         .quad
         .iter()

@@ -2,12 +2,14 @@
 //! step's scene renders and pins a covered pixel, and the numbers its text quotes are the
 //! probe's (the level-of-detail derivation of the pinned pixel).
 
+mod common;
+
 use std::path::Path;
 
 use barylab::figure::TexelView;
 use barylab::lesson::Lesson;
+use barylab::probe::PixelTrace;
 use barylab::probe::format::fmt_number;
-use barylab::probe::{LodTrace, PixelTrace};
 use barylab::raster::Filter;
 
 fn lesson() -> Lesson {
@@ -25,14 +27,6 @@ fn probe_step(lesson: &Lesson, n: usize, trilinear: bool) -> PixelTrace {
         settings.filter = Filter::Trilinear;
     }
     barylab::probe::probe(&state.scene, &texture, &settings, (x, y)).expect("probe")
-}
-
-fn lod(t: &PixelTrace) -> &LodTrace {
-    t.detail
-        .as_ref()
-        .and_then(|d| d.attribute.as_ref())
-        .and_then(|a| a.lod.as_ref())
-        .expect("a level-of-detail derivation")
 }
 
 /// What step `n`'s text lacks of `v` (as the probe prints it), in each language.
@@ -125,15 +119,15 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
         t.color[0], t.color[1], t.color[2]
     )));
     // 3: magnification.
-    let lt = lod(&probe_step(&l, 3, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 3, false)).clone();
     q(3, f64::from(lt.duv_dx[0]));
     q(3, f64::from(lt.px));
     q(3, f64::from(lt.trilinear.lambda));
     assert!(lt.trilinear.lambda < 0.0);
     // 4: the footprint's long side, measured with the level of detail's derivatives.
-    q(4, f64::from(lod(&probe_step(&l, 4, true)).py));
+    q(4, f64::from(common::lod_of(&probe_step(&l, 4, true)).py));
     // 5: the quad's uvs and the derivatives.
-    let lt = lod(&probe_step(&l, 5, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 5, false)).clone();
     for p in &lt.quad[..3] {
         for c in p.uv.expect("uv") {
             q(5, f64::from(c));
@@ -143,18 +137,18 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
         q(5, f64::from(v));
     }
     // 6: the footprint, rho, lambda.
-    let lt = lod(&probe_step(&l, 6, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 6, false)).clone();
     for v in [lt.px, lt.py, lt.rho, lt.trilinear.lambda] {
         q(6, f64::from(v));
     }
     // 7: the number of levels and lambda lower on the floor.
-    let lt = lod(&probe_step(&l, 7, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 7, false)).clone();
     q(7, f64::from(lt.levels));
     q(7, f64::from(lt.trilinear.lambda));
     assert_eq!(lt.trilinear.level, 2);
     // 8: trilinear's two levels and weights; the colour.
     let t = probe_step(&l, 8, false);
-    let lt = lod(&t).clone();
+    let lt = common::lod_of(&t).clone();
     let (next, f) = lt.trilinear.next.expect("two levels");
     assert_eq!((lt.trilinear.level, next), (4, 5));
     q(8, f64::from(lt.trilinear.lambda));
@@ -167,19 +161,19 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
             .contains(&format!("rgba({0}, {0}, {0})", t.color[0]))
     );
     // 9: magnified near the camera.
-    let lt = lod(&probe_step(&l, 9, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 9, false)).clone();
     for v in [lt.px, lt.py, lt.trilinear.lambda] {
         q(9, f64::from(v));
     }
     assert!(lt.trilinear.lambda < 0.0);
     // 10: the footprint's sides and their ratio.
-    let lt = lod(&probe_step(&l, 10, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 10, false)).clone();
     q(10, f64::from(lt.py));
     q(10, f64::from(lt.px));
     q(10, f64::from(lt.py / lt.px));
     // 11: anisotropic: N, lambda, the colour.
     let t = probe_step(&l, 11, false);
-    let lt = lod(&t).clone();
+    let lt = common::lod_of(&t).clone();
     let an = lt.anisotropic.as_ref().expect("anisotropic");
     q(11, f64::from(an.p_max));
     q(11, f64::from(an.p_min));
@@ -282,7 +276,7 @@ fn the_step_where_lambda_grows_towards_the_horizon_plots_it_down_the_column() {
         .iter()
         .find(|p| p[0] == f64::from(y))
         .expect("the pinned row is covered")[1];
-    let probed = lod(&probe_step(&l, n, true)).trilinear.lambda;
+    let probed = common::lod_of(&probe_step(&l, n, true)).trilinear.lambda;
     assert_eq!(at_pin, f64::from(probed));
     // Up the column (rows decreasing) lambda never falls, from magnified to past level 4.
     for w in lambda.windows(2) {
