@@ -62,7 +62,7 @@ pub struct ViewSettings {
     /// The 3D view beside the canvas (the space view, `figure::space`).
     pub space: bool,
     /// The texture-space or level-of-detail view beside the canvas
-    /// ([`crate::app::panels::texel_view`]).
+    /// (the app's `panels::texel_view`).
     pub texel: crate::figure::TexelView,
 }
 
