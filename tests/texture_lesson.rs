@@ -2,11 +2,14 @@
 //! step's scene renders and pins a covered pixel, and the numbers its text quotes are the
 //! probe's (the level-of-detail derivation of the pinned pixel).
 
+mod common;
+
 use std::path::Path;
 
+use barylab::figure::TexelView;
 use barylab::lesson::Lesson;
+use barylab::probe::PixelTrace;
 use barylab::probe::format::fmt_number;
-use barylab::probe::{LodTrace, PixelTrace};
 use barylab::raster::Filter;
 
 fn lesson() -> Lesson {
@@ -24,14 +27,6 @@ fn probe_step(lesson: &Lesson, n: usize, trilinear: bool) -> PixelTrace {
         settings.filter = Filter::Trilinear;
     }
     barylab::probe::probe(&state.scene, &texture, &settings, (x, y)).expect("probe")
-}
-
-fn lod(t: &PixelTrace) -> &LodTrace {
-    t.detail
-        .as_ref()
-        .and_then(|d| d.attribute.as_ref())
-        .and_then(|a| a.lod.as_ref())
-        .expect("a level-of-detail derivation")
 }
 
 /// What step `n`'s text lacks of `v` (as the probe prints it), in each language.
@@ -124,15 +119,15 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
         t.color[0], t.color[1], t.color[2]
     )));
     // 3: magnification.
-    let lt = lod(&probe_step(&l, 3, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 3, false)).clone();
     q(3, f64::from(lt.duv_dx[0]));
     q(3, f64::from(lt.px));
     q(3, f64::from(lt.trilinear.lambda));
     assert!(lt.trilinear.lambda < 0.0);
     // 4: the footprint's long side, measured with the level of detail's derivatives.
-    q(4, f64::from(lod(&probe_step(&l, 4, true)).py));
+    q(4, f64::from(common::lod_of(&probe_step(&l, 4, true)).py));
     // 5: the quad's uvs and the derivatives.
-    let lt = lod(&probe_step(&l, 5, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 5, false)).clone();
     for p in &lt.quad[..3] {
         for c in p.uv.expect("uv") {
             q(5, f64::from(c));
@@ -142,18 +137,18 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
         q(5, f64::from(v));
     }
     // 6: the footprint, rho, lambda.
-    let lt = lod(&probe_step(&l, 6, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 6, false)).clone();
     for v in [lt.px, lt.py, lt.rho, lt.trilinear.lambda] {
         q(6, f64::from(v));
     }
     // 7: the number of levels and lambda lower on the floor.
-    let lt = lod(&probe_step(&l, 7, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 7, false)).clone();
     q(7, f64::from(lt.levels));
     q(7, f64::from(lt.trilinear.lambda));
     assert_eq!(lt.trilinear.level, 2);
     // 8: trilinear's two levels and weights; the colour.
     let t = probe_step(&l, 8, false);
-    let lt = lod(&t).clone();
+    let lt = common::lod_of(&t).clone();
     let (next, f) = lt.trilinear.next.expect("two levels");
     assert_eq!((lt.trilinear.level, next), (4, 5));
     q(8, f64::from(lt.trilinear.lambda));
@@ -166,19 +161,19 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
             .contains(&format!("rgba({0}, {0}, {0})", t.color[0]))
     );
     // 9: magnified near the camera.
-    let lt = lod(&probe_step(&l, 9, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 9, false)).clone();
     for v in [lt.px, lt.py, lt.trilinear.lambda] {
         q(9, f64::from(v));
     }
     assert!(lt.trilinear.lambda < 0.0);
     // 10: the footprint's sides and their ratio.
-    let lt = lod(&probe_step(&l, 10, false)).clone();
+    let lt = common::lod_of(&probe_step(&l, 10, false)).clone();
     q(10, f64::from(lt.py));
     q(10, f64::from(lt.px));
     q(10, f64::from(lt.py / lt.px));
     // 11: anisotropic: N, lambda, the colour.
     let t = probe_step(&l, 11, false);
-    let lt = lod(&t).clone();
+    let lt = common::lod_of(&t).clone();
     let an = lt.anisotropic.as_ref().expect("anisotropic");
     q(11, f64::from(an.p_max));
     q(11, f64::from(an.p_min));
@@ -207,4 +202,91 @@ fn numbers_quoted_in_the_texture_lesson_are_the_probes() {
     }
     let problems = problems.into_inner();
     assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// The view a step's words name, in one language: the texture-space view, the
+/// level-of-detail view, or none.
+fn named_view(text: &str, texture: &str, lod: &str) -> Option<TexelView> {
+    match (text.contains(texture), text.contains(lod)) {
+        (true, false) => Some(TexelView::Texture),
+        (false, true) => Some(TexelView::Lod),
+        _ => None,
+    }
+}
+
+#[test]
+fn steps_that_talk_about_a_texture_view_select_it_in_both_languages() {
+    let l = lesson();
+    let mut named = 0;
+    for (i, s) in l.steps.iter().enumerate() {
+        let en = format!("{} {}", s.text.en, s.try_this.en);
+        let zh = format!("{} {}", s.text.zh, s.try_this.zh);
+        let by_en = named_view(&en, "texture-space view", "level-of-detail view");
+        let by_zh = named_view(&zh, "纹理空间视图", "细节层次视图");
+        assert_eq!(
+            by_en,
+            by_zh,
+            "step {}: the languages name different views",
+            i + 1
+        );
+        if let Some(v) = by_en {
+            named += 1;
+            assert_eq!(s.texture_view, v, "step {} names {v:?}", i + 1);
+            let state = l.state(i).expect("state");
+            assert_eq!(state.texture_view, v, "step {}'s state", i + 1);
+        }
+    }
+    // The footprint, the mipmap pyramid, magnification's end and the probes.
+    assert_eq!(named, 4);
+    let views: Vec<TexelView> = l.steps.iter().map(|s| s.texture_view).collect();
+    assert_eq!(views[6], TexelView::Lod, "step 7 (the mipmap pyramid)");
+    assert_eq!(views[10], TexelView::Texture, "step 11 (anisotropic)");
+    assert_eq!(
+        views[0],
+        TexelView::Off,
+        "step 1 is plain nearest filtering"
+    );
+}
+
+#[test]
+fn the_step_where_lambda_grows_towards_the_horizon_plots_it_down_the_column() {
+    let l = lesson();
+    let n = 1 + l
+        .steps
+        .iter()
+        .position(|s| s.text.en.contains("lambda grows towards the horizon"))
+        .expect("a step says it");
+    assert!(l.steps[n - 1].text.zh.contains("越靠近地平线越大"));
+    let state = l.state(n - 1).expect("state");
+    assert_eq!(state.plot, Some(barylab::lesson::LessonPlot::LambdaColumn));
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let [x, y] = state.pin.expect("pinned");
+    let plot = barylab::lesson::plot::row_plot(
+        &state.scene,
+        &texture,
+        [x, y],
+        barylab::lesson::LessonPlot::LambdaColumn,
+        barylab::i18n::Lang::En,
+    )
+    .expect("plot");
+    assert_eq!(plot.marker, Some(f64::from(y)));
+    let lambda = &plot.lines[0].1;
+    // At the pinned row, the probe's lambda.
+    let at_pin = lambda
+        .iter()
+        .find(|p| p[0] == f64::from(y))
+        .expect("the pinned row is covered")[1];
+    let probed = common::lod_of(&probe_step(&l, n, true)).trilinear.lambda;
+    assert_eq!(at_pin, f64::from(probed));
+    // Up the column (rows decreasing) lambda never falls, from magnified to past level 4.
+    for w in lambda.windows(2) {
+        assert!(w[0][0] < w[1][0]);
+        assert!(w[0][1] >= w[1][1] - 1e-6, "lambda falls going up at {w:?}");
+    }
+    assert!(lambda.last().expect("rows")[1] < 0.0);
+    assert!(lambda[0][1] > 4.0);
+    // The level line: floor(lambda), 0 when magnified.
+    for (p, q) in lambda.iter().zip(&plot.lines[1].1) {
+        assert_eq!(q[1], p[1].max(0.0).floor().min(8.0), "row {}", p[0]);
+    }
 }

@@ -172,28 +172,7 @@ impl BaryApp {
         let framing = Framing::presenting(compare);
         let (w, h) = self.state.scene.size();
         let aspect = w.max(1) as f32 / h.max(1) as f32;
-        let lang = self.lang();
-        // The pinned row's plot: a band as wide as the window under the picture (over it or in
-        // the card's column it would hide the picture or be too small to read).
-        if let Some(p) = self.state.view.plot.zip(self.state.view.pinned) {
-            let lines = self.row_plot(texture);
-            let band = (PLOT_BAND_SHARE * ui.available_rect_before_wrap().height()).round();
-            let mut plot_hover = None;
-            egui::Panel::bottom("present-plot-below")
-                .frame(
-                    egui::Frame::new()
-                        .fill(present::CARD_FILL)
-                        .inner_margin(egui::Margin::same(10)),
-                )
-                .resizable(false)
-                .exact_size(band)
-                .show(ui, |ui| {
-                    out.extend(present_plot(ui, (p.0, lines), lang, &mut plot_hover));
-                });
-            self.lessons.plot_hover = plot_hover;
-        } else {
-            self.lessons.plot_hover = None;
-        }
+        self.present_plot_band(ui, texture, out);
         let rect = ui.available_rect_before_wrap();
         let window = ui.ctx().content_rect();
         // C hides the card: the picture alone, as large as the window allows.
@@ -277,6 +256,37 @@ impl BaryApp {
                         present::card_ui(ui, &input);
                     });
             });
+    }
+
+    /// Presentation mode's plot of the pinned pixel's row (or column): a band as wide as the
+    /// room left under the picture (over it or in the card's column it would hide the picture
+    /// or be too small to read).
+    pub(super) fn present_plot_band(
+        &mut self,
+        ui: &mut egui::Ui,
+        texture: &Arc<Texture>,
+        out: &mut Vec<AppCommand>,
+    ) {
+        let lang = self.lang();
+        if let Some(p) = self.state.view.plot.zip(self.state.view.pinned) {
+            let lines = self.row_plot(texture);
+            let band = (PLOT_BAND_SHARE * ui.available_rect_before_wrap().height()).round();
+            let mut plot_hover = None;
+            egui::Panel::bottom("present-plot-below")
+                .frame(
+                    egui::Frame::new()
+                        .fill(present::CARD_FILL)
+                        .inner_margin(egui::Margin::same(10)),
+                )
+                .resizable(false)
+                .exact_size(band)
+                .show(ui, |ui| {
+                    out.extend(present_plot(ui, (p.0, lines), lang, &mut plot_hover));
+                });
+            self.lessons.plot_hover = plot_hover;
+        } else {
+            self.lessons.plot_hover = None;
+        }
     }
 
     /// The card in a column `width` points wide right of the canvas (text `size`, `narrow`:

@@ -139,6 +139,8 @@ pub struct BaryApp {
     compare_image: Option<panels::compare_image::ImageCompare>,
     /// The 3D view's orbit and scene.
     space_view: panels::space_view::SpaceView,
+    /// The texture views' pictures (texture space, level of detail).
+    texel_view: panels::texel_view::TexelViewPanel,
     /// The quiz on the pinned pixel, if one is going on.
     quiz: panels::quiz::Quiz,
 }
@@ -229,6 +231,7 @@ impl BaryApp {
             lessons: panels::lessons::Lessons::default(),
             gpu_view: panels::gpu_view::GpuView::new(options.screenshot.is_some()),
             space_view: panels::space_view::SpaceView::default(),
+            texel_view: Default::default(),
             compare_image: None,
             quiz: panels::quiz::Quiz::default(),
         };
@@ -430,7 +433,14 @@ impl BaryApp {
             if self.quiz.session.is_some() {
                 self.quiz_presenting(ui, texture, &mut out);
             } else if !self.space_panel_presenting(ui) {
-                self.presentation(ui, texture, &mut out);
+                if self.texel_panel_presenting(ui, texture) {
+                    self.present_plot_band(ui, texture, &mut out);
+                    let framing =
+                        panels::canvas_layout::Framing::presenting(self.state.view.compare);
+                    self.canvas_panel(ui, texture, framing, &mut out);
+                } else {
+                    self.presentation(ui, texture, &mut out);
+                }
             }
             self.commands.extend(out);
             return;
@@ -485,6 +495,7 @@ impl BaryApp {
         // The 3D view shows the pinned pixel's a, b, c: not during a quiz before Reveal.
         if self.quiz.hidden().is_none() {
             self.space_panel(ui);
+            self.texel_panel(ui, texture);
         }
         self.canvas_panel(
             ui,

@@ -78,24 +78,95 @@ pub fn lod_per_pixel(
                     {
                         continue;
                     }
-                    let d = interpolate::quad_derivatives(
-                        s,
-                        (x, y),
-                        settings.mode,
-                        Derivatives::Coarse,
-                    );
-                    out[i] = match d {
-                        None => 0.0,
-                        Some([dx, dy]) if settings.max_anisotropy.is_on() => {
-                            Anisotropic::of(dx, dy, size, settings.max_anisotropy).lambda
-                        }
-                        Some([dx, dy]) => lod(dx, dy, size.0, size.1),
-                    };
+                    out[i] = pixel_lambda(s, (x, y), settings, size);
                 }
             }
         }
     }
     Ok(out)
+}
+
+/// The legend's rows for `lambdas` (a texture of `levels` levels), words in `lang`: the
+/// magnified colour if any pixel is magnified, then each level some pixel reads, in order.
+pub fn legend(lambdas: &[f32], levels: u32, lang: Lang) -> Vec<([u8; 3], String)> {
+    let last = levels.saturating_sub(1);
+    let mut v = Vec::new();
+    if lambdas.iter().any(|&l| !l.is_nan() && l <= 0.0) {
+        v.push((MAGNIFIED, lang.tr("figure.lod.magnified")));
+    }
+    for lv in 0..=last {
+        if lambdas
+            .iter()
+            .any(|&l| l > 0.0 && (l.floor() as u32).min(last) == lv)
+        {
+            let label = lang.tr_with("figure.lod.level", &[("level", &lv)]);
+            v.push((LEVEL_COLOURS[lv as usize % LEVEL_COLOURS.len()], label));
+        }
+    }
+    v
+}
+
+/// The level-of-detail image: one pixel per image pixel, coloured by [`level_colour`], dark
+/// grey where no triangle wrote.
+pub fn lod_image(lambdas: &[f32], (width, height): (u32, u32), levels: u32) -> image::RgbaImage {
+    let last = levels.saturating_sub(1);
+    image::RgbaImage::from_fn(width, height, |x, y| {
+        let l = lambdas[(y * width + x) as usize];
+        if l.is_nan() {
+            image::Rgba([40, 40, 40, 255])
+        } else {
+            let c = level_colour(l, last);
+            image::Rgba([c[0], c[1], c[2], 255])
+        }
+    })
+}
+
+/// The level of detail of pixel `(x, y)` of set-up triangle `s` as the renderer computes it:
+/// coarse derivatives of the quad in `settings.mode`, `lod` (or the anisotropic level when
+/// `settings.max_anisotropy` is on) for a texture of `size`; 0 where the quad has no uv.
+fn pixel_lambda(
+    s: &crate::raster::setup::TriangleSetup,
+    (x, y): (u32, u32),
+    settings: &RenderSettings,
+    size: (u32, u32),
+) -> f32 {
+    match interpolate::quad_derivatives(s, (x, y), settings.mode, Derivatives::Coarse) {
+        None => 0.0,
+        Some([dx, dy]) if settings.max_anisotropy.is_on() => {
+            Anisotropic::of(dx, dy, size, settings.max_anisotropy).lambda
+        }
+        Some([dx, dy]) => lod(dx, dy, size.0, size.1),
+    }
+}
+
+/// Column `x` of [`lod_per_pixel`]'s image: `[row, lambda]` for every row a triangle wrote,
+/// top to bottom, and `[row, level]` with the mipmap level read there (0 when magnified,
+/// else `floor(lambda)` clamped to the texture's last level).
+pub fn lod_column(
+    scene: &Scene,
+    texture: &Texture,
+    settings: &RenderSettings,
+    x: u32,
+) -> Result<[Vec<[f64; 2]>; 2], FigureError> {
+    let lambdas = lod_per_pixel(scene, texture, settings)?;
+    let (w, h) = scene.size();
+    let last = texture.levels().saturating_sub(1);
+    let mut lambda = Vec::new();
+    let mut level = Vec::new();
+    for y in (0..h).filter(|_| x < w) {
+        let l = lambdas[y as usize * w as usize + x as usize];
+        if l.is_nan() {
+            continue;
+        }
+        let lv = if l <= 0.0 {
+            0
+        } else {
+            (l.floor() as u32).min(last)
+        };
+        lambda.push([f64::from(y), f64::from(l)]);
+        level.push([f64::from(y), f64::from(lv)]);
+    }
+    Ok([lambda, level])
 }
 
 /// The level-of-detail view: the image coloured by level (`scale` points per pixel) and the
@@ -107,29 +178,12 @@ pub fn lod_picture(
     scale: f64,
     lang: Lang,
 ) -> RasterSvg {
-    let last = levels.saturating_sub(1);
-    let img = image::RgbaImage::from_fn(width, height, |x, y| {
-        let l = lambdas[(y * width + x) as usize];
-        if l.is_nan() {
-            image::Rgba([40, 40, 40, 255])
-        } else {
-            let c = level_colour(l, last);
-            image::Rgba([c[0], c[1], c[2], 255])
-        }
-    });
+    let img = lod_image(lambdas, (width, height), levels);
     let (iw, ih) = (f64::from(width) * scale, f64::from(height) * scale);
     let margin = 16.0;
     let legend_w = 220.0;
-    // Levels present, and whether any pixel is magnified.
-    let used: Vec<bool> = (0..=last)
-        .map(|lv| {
-            lambdas
-                .iter()
-                .any(|&l| l > 0.0 && (l.floor() as u32).min(last) == lv)
-        })
-        .collect();
-    let magnified = lambdas.iter().any(|&l| !l.is_nan() && l <= 0.0);
-    let rows = used.iter().filter(|&&u| u).count() + usize::from(magnified);
+    let entries = legend(lambdas, levels, lang);
+    let rows = entries.len();
     let title_h = 30.0;
     let w = margin * 3.0 + iw + legend_w;
     let h = (title_h + ih + margin).max(title_h + 24.0 + 22.0 * rows as f64 + margin);
@@ -158,12 +212,8 @@ pub fn lod_picture(
         ));
         y += 22.0;
     };
-    if magnified {
-        swatch(&mut s, MAGNIFIED, lang.tr("figure.lod.magnified"));
-    }
-    for (lv, _) in used.iter().enumerate().filter(|(_, u)| **u) {
-        let label = lang.tr_with("figure.lod.level", &[("level", &lv)]);
-        swatch(&mut s, LEVEL_COLOURS[lv % LEVEL_COLOURS.len()], label);
+    for (c, label) in entries {
+        swatch(&mut s, c, label);
     }
     RasterSvg {
         size: [w, h],

@@ -94,7 +94,19 @@ pub fn pixel_mark(trace: &PixelTrace) -> PixelMark {
     PixelMark {
         pixel: trace.pixel,
         triangle: triangle_mark(trace),
+        quad: quad_mark(trace),
     }
+}
+
+/// The 2x2 quad of a traced pixel's level-of-detail derivation (trilinear and anisotropic
+/// filtering), with its pixels' uvs.
+pub fn quad_mark(trace: &PixelTrace) -> Option<super::overlay::QuadMark> {
+    let lod = trace.detail.as_ref()?.attribute.as_ref()?.lod.as_ref()?;
+    Some(super::overlay::QuadMark {
+        origin: lod.quad[0].pixel,
+        uvs: lod.quad.map(|q| q.uv),
+        inside: lod.quad.map(|q| q.inside),
+    })
 }
 
 /// The common w of `ws` when every one is the same (within [`FLAT_W_TOLERANCE`], relative):

@@ -57,3 +57,4 @@ pub use options::{
     Background, FIGURE_MARGIN, FigureOptions, MAX_FIGURE_SIZE, OVERLAY_SCALE_RANGE, SCALES,
     SIDE_BY_SIDE_GAP, image_background, layout_points,
 };
+pub use texture_view::TexelView;

@@ -63,6 +63,12 @@ impl RasterSvg {
 
     /// The picture as PNG file bytes, `scale` pixels per point.
     pub fn to_png(&self, scale: f32) -> Result<Vec<u8>, FigureError> {
+        super::png::encode(&self.to_image(scale)?)
+    }
+
+    /// The picture as an image, `scale` pixels per point (what [`RasterSvg::to_png`] encodes;
+    /// the app shows it).
+    pub fn to_image(&self, scale: f32) -> Result<image::RgbaImage, FigureError> {
         let [w, h] = self.size.map(|v| (v * f64::from(scale)).round() as u32);
         let mut pixmap = super::png::canvas(w, h, "picture canvas")?;
         pixmap.fill(Color::WHITE);
@@ -96,6 +102,6 @@ impl RasterSvg {
             Transform::from_scale(scale, scale),
             &mut pixmap.as_mut(),
         );
-        super::png::encode(&super::png::image_of(&pixmap)?)
+        super::png::image_of(&pixmap)
     }
 }

@@ -19,6 +19,8 @@ const PANEL: f64 = 300.0;
 const MIN_WIDTH: f64 = 640.0;
 /// Space around and between the panels, in points.
 const GAP: f64 = 24.0;
+/// Space left and right of a panel drawn alone ([`TextureView::panel_pictures`]), in points.
+const PANEL_MARGIN: f64 = 4.0;
 /// Height of the title strip above the panels and of the caption below, in points.
 const TITLE: f64 = 44.0;
 /// Space between the panels and the caption's first line, in points.
@@ -28,6 +30,23 @@ const CAPTION: f64 = 14.0;
 const TAP: &str = "#d55e00";
 const FOOTPRINT: &str = "#0072b2";
 const PROBE: &str = "#009e73";
+
+/// Which texture picture shows beside the canvas (the app) or a lesson step selects: none,
+/// the pixel's lookup in texture space ([`TextureView`]), or every pixel's mipmap level
+/// ([`super::lod_view`]).
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum TexelView {
+    /// Neither.
+    #[default]
+    Off,
+    /// The texture beside the image with the pixel's footprint, taps and weights.
+    Texture,
+    /// Every pixel coloured by its mipmap level, with a legend.
+    Lod,
+}
 
 /// What the view shows for one pixel.
 #[derive(Clone, Debug)]
@@ -141,8 +160,29 @@ impl<'a> TextureView<'a> {
         }
     }
 
+    /// Each level's panel as a picture of its own with its title (the app lays them out to
+    /// fit its column); the caption ([`TextureView::caption`]) is left to the caller.
+    pub fn panel_pictures(&self, lang: Lang) -> Vec<RasterSvg> {
+        self.panels()
+            .into_iter()
+            .map(|(level, share)| {
+                let mut s = String::new();
+                let raster = self.panel(&mut s, lang, [PANEL_MARGIN, TITLE / 2.0], level, share);
+                RasterSvg {
+                    size: [
+                        PANEL + 2.0 * PANEL_MARGIN,
+                        TITLE / 2.0 + PANEL + PANEL_MARGIN,
+                    ],
+                    rasters: vec![raster],
+                    marks: s,
+                    lang,
+                }
+            })
+            .collect()
+    }
+
     /// The caption's lines: the footprint and the level of detail.
-    fn caption(&self, lang: Lang) -> Vec<String> {
+    pub fn caption(&self, lang: Lang) -> Vec<String> {
         let Some(lt) = self.lod else {
             return vec![lang.tr("figure.texture.caption_level0")];
         };

@@ -77,6 +77,9 @@ pub enum LessonPlot {
     WRow,
     /// Window depth z/w (straight on the screen) against view depth w (not straight).
     DepthRow,
+    /// The level of detail lambda down the pinned pixel's column (up a floor it grows towards
+    /// the horizon), with the mipmap level read.
+    LambdaColumn,
 }
 
 /// A section of the inspector's derivation (the probe's worked example), by name: lessons
@@ -233,6 +236,9 @@ pub struct Step {
     pub space_view: bool,
     /// The per-sample buffers view (default: the resolve, without the black-edge bug).
     pub samples_view: crate::figure::sample_buffers::SampleView,
+    /// The texture-space or level-of-detail view beside the canvas (`"texture_view":
+    /// "texture"` or `"lod"`; default off).
+    pub texture_view: crate::figure::TexelView,
     /// A quiz on the pinned pixel: the class predicts these numbers before they are shown.
     pub quiz: Option<QuizSpec>,
     /// A moving figure for the step's slide (`barylab lesson --slides`), in place of the
@@ -309,6 +315,8 @@ pub struct StepState {
     pub space_view: bool,
     /// The per-sample buffers view.
     pub samples_view: crate::figure::sample_buffers::SampleView,
+    /// The texture-space or level-of-detail view beside the canvas.
+    pub texture_view: crate::figure::TexelView,
     /// The quiz on the pinned pixel (its pixel is [`StepState::pin`]).
     pub quiz: Option<Question>,
 }
@@ -400,6 +408,7 @@ impl Lesson {
             plot: step.plot,
             space_view: step.space_view,
             samples_view: step.samples_view,
+            texture_view: step.texture_view,
             quiz: step.quiz.as_ref().and_then(|q| {
                 Some(Question {
                     pixel: step.quiz_pixel()?,

@@ -101,6 +101,7 @@ struct RawStep {
     space_view: bool,
     #[serde(default)]
     samples_view: crate::figure::sample_buffers::SampleView,
+    texture_view: crate::figure::TexelView,
     #[serde(default)]
     quiz: Option<QuizSpec>,
     animation: Option<StepAnimation>,
@@ -224,6 +225,7 @@ impl<'de> Deserialize<'de> for Step {
             plot: r.plot,
             space_view: r.space_view,
             samples_view: r.samples_view,
+            texture_view: r.texture_view,
             quiz: r.quiz,
             animation: r.animation,
         })

@@ -13,7 +13,6 @@
 use super::LessonPlot;
 use crate::figure::plot::LinePlot;
 use crate::i18n::{Lang, tr};
-use crate::raster::render::RenderError;
 use crate::raster::{Framebuffer, NO_TRIANGLE, Texture};
 use crate::scene::Scene;
 
@@ -64,6 +63,8 @@ pub fn row_lines(frame: &Framebuffer, y: u32, plot: LessonPlot) -> PlotLines {
                 unit(line(&|k| 1.0 / f64::from(frame.inv_w[k]))),
             ),
         ],
+        // The level of detail is no per-pixel buffer: [`lambda_column`] computes it.
+        LessonPlot::LambdaColumn => Vec::new(),
         LessonPlot::DepthRow => vec![
             (
                 "lesson.plot_depth_line",
@@ -96,7 +97,32 @@ pub fn title_key(plot: LessonPlot) -> &'static str {
         LessonPlot::UvRow => "lesson.plot_uv",
         LessonPlot::WRow => "lesson.plot_w",
         LessonPlot::DepthRow => "lesson.plot_depth",
+        LessonPlot::LambdaColumn => "lesson.plot_lambda",
     }
+}
+
+/// The catalogue key of a plot's x axis: the pixel column along a row, the pixel row down a
+/// column ([`LessonPlot::LambdaColumn`]).
+pub fn x_label_key(plot: LessonPlot) -> &'static str {
+    match plot {
+        LessonPlot::LambdaColumn => "lesson.plot_row",
+        _ => X_LABEL_KEY,
+    }
+}
+
+/// The lines of [`LessonPlot::LambdaColumn`] down column `x` of `scene` drawn with `settings`:
+/// lambda and the mipmap level read ([`crate::figure::lod_view::lod_column`]).
+pub fn lambda_column(
+    scene: &Scene,
+    texture: &Texture,
+    settings: &crate::raster::RenderSettings,
+    x: u32,
+) -> Result<PlotLines, crate::figure::FigureError> {
+    let [lambda, level] = crate::figure::lod_view::lod_column(scene, texture, settings, x)?;
+    Ok(vec![
+        ("lesson.plot_lambda_line", lambda),
+        ("lesson.plot_level_line", level),
+    ])
 }
 
 /// The catalogue key of the x axis's name (the pixel column).
@@ -111,16 +137,21 @@ pub fn row_plot(
     [x, y]: [u32; 2],
     plot: LessonPlot,
     lang: Lang,
-) -> Result<LinePlot, RenderError> {
-    let row = crate::raster::render_row(&scene.to_mesh(), texture, &scene.settings(), y)?;
+) -> Result<LinePlot, crate::figure::FigureError> {
+    let (lines, marker) = if plot == LessonPlot::LambdaColumn {
+        (lambda_column(scene, texture, &scene.settings(), x)?, y)
+    } else {
+        let row = crate::raster::render_row(&scene.to_mesh(), texture, &scene.settings(), y)?;
+        (row_lines(&row, 0, plot), x)
+    };
     Ok(LinePlot {
         title: tr(lang, title_key(plot)),
-        x_label: tr(lang, X_LABEL_KEY),
-        lines: row_lines(&row, 0, plot)
+        x_label: tr(lang, x_label_key(plot)),
+        lines: lines
             .into_iter()
             .map(|(key, points)| (tr(lang, key), points))
             .collect(),
-        marker: Some(f64::from(x)),
+        marker: Some(f64::from(marker)),
     })
 }
 

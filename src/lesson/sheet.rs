@@ -34,7 +34,7 @@ pub enum HandoutError {
         /// The step, from 1.
         step: usize,
         /// What went wrong.
-        source: crate::raster::render::RenderError,
+        source: crate::figure::FigureError,
     },
     /// The pinned pixel could not be probed.
     #[error("step {step}: {error}")]

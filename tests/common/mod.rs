@@ -216,3 +216,12 @@ pub fn sample_scenes() -> Vec<(std::path::PathBuf, barylab::scene::Scene)> {
     }
     out
 }
+
+/// The level-of-detail derivation of a probed pixel (trilinear or anisotropic filtering).
+pub fn lod_of(t: &barylab::probe::PixelTrace) -> &barylab::probe::LodTrace {
+    t.detail
+        .as_ref()
+        .and_then(|d| d.attribute.as_ref())
+        .and_then(|a| a.lod.as_ref())
+        .expect("a level-of-detail derivation")
+}

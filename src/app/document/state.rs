@@ -67,6 +67,9 @@ pub struct ViewSettings {
     /// The per-sample buffers view of a multisampled scene (coverage count, a sample's
     /// colour or depth; the black-edge bug), [`crate::figure::sample_buffers`].
     pub samples_view: crate::figure::sample_buffers::SampleView,
+    /// The texture-space or level-of-detail view beside the canvas
+    /// (the app's `panels::texel_view`).
+    pub texel: crate::figure::TexelView,
 }
 
 impl Default for ViewSettings {
@@ -90,6 +93,7 @@ impl Default for ViewSettings {
             gpu: false,
             space: false,
             samples_view: Default::default(),
+            texel: crate::figure::TexelView::Off,
         }
     }
 }
@@ -180,6 +184,8 @@ pub enum StateCommand {
     SetSpaceView(bool),
     /// The per-sample buffers view: which buffer, sample index, black-edge bug.
     SetSamplesView(crate::figure::sample_buffers::SampleView),
+    /// Which texture view shows beside the canvas (texture space, level of detail, none).
+    SetTexelView(crate::figure::TexelView),
     /// Which triangle owns a pixel centre exactly on a shared edge (saved in the scene).
     SetTieRule(crate::raster::setup::TieRule),
     /// Samples per pixel, their pattern, the shading rate and the location (saved in the scene).
@@ -354,6 +360,7 @@ impl AppState {
             StateCommand::SetGpuView(on) => self.view.gpu = on,
             StateCommand::SetSpaceView(on) => self.view.space = on,
             StateCommand::SetSamplesView(v) => self.view.samples_view = v,
+            StateCommand::SetTexelView(t) => self.view.texel = t,
             StateCommand::SetTieRule(rule) => self.scene.set_tie_rule(rule),
             StateCommand::SetSamples(samples) => self.scene.set_samples(samples),
             StateCommand::SetWipe(x) => self.view.wipe = x.clamp(0.0, 1.0),

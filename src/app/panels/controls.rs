@@ -113,6 +113,7 @@ pub fn controls_ui(ui: &mut Ui, state: &AppState) -> Vec<StateCommand> {
         }
         out.extend(crate::app::panels::gpu_view::toggle_ui(ui, view.gpu));
         out.extend(crate::app::panels::space_view::toggle_ui(ui, view.space));
+        out.extend(crate::app::panels::texel_view::toggle_ui(ui, view.texel));
     });
 
     section(ui, &lang.tr("app.controls.shading"));

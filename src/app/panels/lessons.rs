@@ -78,7 +78,7 @@ impl Lessons {
 }
 
 /// Sets what a step sets: the scene (at the step's size, with its mode, shading, filter and
-/// wireframe), the comparison, rasterizer, overlays, pixel size, pin, plot and the 3D view. The image keeps
+/// wireframe), the comparison, rasterizer, overlays, pixel size, pin, plot, the 3D view and the texture view. The image keeps
 /// the step's size (not the window's), so the pin is the step's pixel.
 pub fn apply_step(state: &mut AppState, step: &StepState) {
     state.scene = step.scene.clone();
@@ -96,6 +96,7 @@ pub fn apply_step(state: &mut AppState, step: &StepState) {
     v.plot = step.plot;
     v.space = step.space_view;
     v.samples_view = step.samples_view;
+    v.texel = step.texture_view;
 }
 
 impl BaryApp {

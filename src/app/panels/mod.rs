@@ -30,5 +30,6 @@ pub(crate) mod sample_buffers;
 pub(crate) mod samples_control;
 pub(crate) mod space_view;
 pub(crate) mod status;
+pub(crate) mod texel_view;
 pub(crate) mod tie_rule;
 pub(crate) mod top_bar;

@@ -54,7 +54,12 @@ pub fn plot_ui(
             .selected_text(tr(lang, title_key(plot)))
             .width(ui.available_width().clamp(80.0, 360.0))
             .show_ui(ui, |ui| {
-                for p in [LessonPlot::UvRow, LessonPlot::WRow, LessonPlot::DepthRow] {
+                for p in [
+                    LessonPlot::UvRow,
+                    LessonPlot::WRow,
+                    LessonPlot::DepthRow,
+                    LessonPlot::LambdaColumn,
+                ] {
                     if ui
                         .selectable_label(p == plot, tr(lang, title_key(p)))
                         .clicked()
@@ -77,7 +82,7 @@ pub fn plot_ui(
         ui.horizontal_wrapped(|ui| legend(ui, &lines));
     }
     let shown = Plot::new(("row-plot", plot as u8))
-        .x_axis_label(tr(lang, crate::lesson::plot::X_LABEL_KEY))
+        .x_axis_label(tr(lang, crate::lesson::plot::x_label_key(plot)))
         .show_axes([true, true])
         // Never taller than the room left (a plot that overflowed its panel would push the
         // panel's first row, the lesson's Previous / Next, out of sight).
@@ -135,6 +140,13 @@ impl BaryApp {
         let mut settings = output.scene.settings();
         if y >= settings.height || x >= settings.width {
             return None;
+        }
+        if plot == LessonPlot::LambdaColumn {
+            settings.mode = mode;
+            let lines = self
+                .texel_view
+                .lambda_column(output, texture, &settings, x)?;
+            return Some((y, lines));
         }
         let key = (output.generation, mode, y);
         let row = match &self.lessons.row_render {
@@ -196,11 +208,13 @@ impl BaryApp {
             return;
         };
         let size = self.canvas.output.as_ref().map(|o| o.size);
-        if let (None, Some([_, y]), Some([w, _])) =
+        // Along the pinned column for the column plot (its axis counts rows).
+        let column = self.state.view.plot == Some(LessonPlot::LambdaColumn);
+        if let (None, Some([px, py]), Some([w, h])) =
             (self.canvas.hover, self.state.view.pinned, size)
-            && x < w
+            && x < if column { h } else { w }
         {
-            self.canvas.hover = Some([x, y]);
+            self.canvas.hover = Some(if column { [px, x] } else { [x, py] });
         }
     }
 }

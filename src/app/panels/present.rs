@@ -336,6 +336,25 @@ fn lines_ui(
     let textured = r.trace.settings.shading == crate::raster::Shading::Texture;
     if let Some(a) = d.attribute.as_ref().filter(|_| textured) {
         let strong = |t: RichText, on: bool| if on { t.color(ACCENT) } else { t };
+        // Trilinear or anisotropic filtering: the mode's uv and its level of detail, in the
+        // rows the two uvs take otherwise (the card's height does not change).
+        if let Some(lod) = &a.lod {
+            let uv = match r.mode {
+                Interpolation::Affine => ("app.present.uv_affine", a.uv_affine),
+                Interpolation::Perspective => ("app.present.uv_perspective", a.uv_perspective),
+            };
+            let [rho, levels] = lod_lines(lod, lang);
+            if narrow {
+                ui.label(big(lang.tr(uv.0), size).color(ACCENT));
+                ui.label(big(format!("  {}", pair(uv.1)), size).color(ACCENT));
+                ui.label(big(rho, size));
+                ui.label(big(levels, size));
+            } else {
+                ui.label(big(format!("{} {}", &lang.tr(uv.0), pair(uv.1)), size).color(ACCENT));
+                ui.label(big(format!("{rho}  {levels}"), size));
+            }
+            return;
+        }
         for (name, uv, mode) in [
             ("app.present.uv_affine", a.uv_affine, Interpolation::Affine),
             (
@@ -356,6 +375,33 @@ fn lines_ui(
             }
         }
     }
+}
+
+/// The card's level-of-detail lines: `rho = ...  lambda = ...` (anisotropic: `N = ...
+/// lambda' = ...`, the level from the long side over N) and the mipmap levels read.
+pub fn lod_lines(lod: &crate::probe::LodTrace, lang: crate::i18n::Lang) -> [String; 2] {
+    let n = |x: f32| fmt_digits(f64::from(x), DIGITS);
+    let (first, choice) = match &lod.anisotropic {
+        Some(a) => (
+            lang.tr_with(
+                "app.present.lod_aniso",
+                &[("n", &a.n), ("lambda", &n(a.levels.lambda))],
+            ),
+            &a.levels,
+        ),
+        None => (
+            lang.tr_with(
+                "app.present.lod",
+                &[("rho", &n(lod.rho)), ("lambda", &n(lod.trilinear.lambda))],
+            ),
+            &lod.trilinear,
+        ),
+    };
+    let levels = match choice.next {
+        Some((e, _)) => lang.tr_with("app.present.levels_two", &[("d", &choice.level), ("e", &e)]),
+        None => lang.tr_with("app.present.level_one", &[("d", &choice.level)]),
+    };
+    [first, levels]
 }
 
 #[cfg(test)]

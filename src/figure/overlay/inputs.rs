@@ -38,6 +38,21 @@ pub struct PixelMark {
     pub pixel: [u32; 2],
     /// The triangle its weights refer to, if any.
     pub triangle: Option<TriangleMark>,
+    /// The 2x2 quad its texture derivatives come from (trilinear and anisotropic filtering).
+    pub quad: Option<QuadMark>,
+}
+
+/// The 2x2 pixel quad a pixel's texture derivatives are differences in, with each pixel's uv.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuadMark {
+    /// Its top-left pixel `(x0, y0)`; the others are `(x0 + 1, y0)`, `(x0, y0 + 1)`,
+    /// `(x0 + 1, y0 + 1)`, the order of [`QuadMark::uvs`] and [`QuadMark::inside`].
+    pub origin: [u32; 2],
+    /// Each pixel's uv (extrapolated from the triangle's plane outside it; `None` where the
+    /// plane gives none).
+    pub uvs: [Option<[f32; 2]>; 4],
+    /// Whether the triangle covers each pixel's centre (else a helper pixel).
+    pub inside: [bool; 4],
 }
 
 /// The polygon the clipper left of a marked pixel's triangle: its corners in order, with

@@ -1,13 +1,13 @@
 //! The marks over the image: a traced pixel's triangle and sub-triangles, the pixel marker
-//! with its crosshair, the vertex handles with their w labels, and the note listing vertices
+//! with its crosshair, the 2x2 quad of the texture derivatives, the vertex handles with their w labels, and the note listing vertices
 //! behind the camera.
 
 use glam::DVec2;
 
 use super::{
-    Anchor, CLIP_POINT, ClipMark, HANDLE_RADIUS, HandleMark, LABEL_BG, LABEL_TEXT, NEGATIVE, Rgba,
-    SHADOW, SUB_AREA_ALPHA, Shape, Stroke, TEXT_LABEL, TEXT_SMALL, TriangleMark, centre_of, text,
-    vertex_color, vertex_name, with_alpha,
+    Anchor, CLIP_POINT, ClipMark, HANDLE_RADIUS, HandleMark, LABEL_BG, LABEL_TEXT, NEGATIVE,
+    QuadMark, Rgba, SHADOW, SUB_AREA_ALPHA, Shape, Stroke, TEXT_LABEL, TEXT_SMALL, TriangleMark,
+    centre_of, text, vertex_color, vertex_name, with_alpha,
 };
 
 /// The triangle outline and, if asked (`Some(fill)`), the three sub-triangles P V_{i+1}
@@ -115,6 +115,60 @@ pub fn is_triangle_outline(shape: &Shape) -> bool {
 }
 
 /// A square around the pixel and a crosshair through its centre.
+/// The colour of the 2x2 quad's outline and labels.
+const QUAD: Rgba = [255, 220, 60, 255];
+/// Points: the quad's uv labels (four of them: smaller than the other labels).
+const TEXT_QUAD: f32 = 13.0;
+
+/// The 2x2 quad a pixel's texture derivatives come from: its outline, and each pixel's uv
+/// beside the quad's corner at that pixel (outwards, so the four labels never cover the
+/// quad) and named `uv_ij` for pixel `(x0 + i, y0 + j)`, "helper" on a pixel outside the
+/// triangle (its uv extrapolated).
+pub(super) fn quad_shapes(shapes: &mut Vec<Shape>, q: &QuadMark, lang: crate::i18n::Lang) {
+    let o = DVec2::new(f64::from(q.origin[0]), f64::from(q.origin[1]));
+    for (width, col) in [(5.0, SHADOW), (2.5, QUAD)] {
+        shapes.push(Shape::Rect {
+            min: o,
+            max: o + DVec2::splat(2.0),
+            fill: [0, 0, 0, 0],
+            stroke: Some(Stroke::new(width, col)),
+        });
+    }
+    // Top-left, top-right, bottom-left, bottom-right: the quad's corner and the label's anchor.
+    let corners = [
+        (DVec2::ZERO, Anchor::RightBottom, [-4.0, -4.0]),
+        (DVec2::new(2.0, 0.0), Anchor::LeftBottom, [4.0, -4.0]),
+        (DVec2::new(0.0, 2.0), Anchor::RightTop, [-4.0, 4.0]),
+        (DVec2::splat(2.0), Anchor::LeftTop, [4.0, 4.0]),
+    ];
+    for (k, (corner, anchor, offset)) in corners.into_iter().enumerate() {
+        let Some(uv) = q.uvs[k] else { continue };
+        let (u, v) = (
+            crate::probe::format::fmt_number(f64::from(uv[0])),
+            crate::probe::format::fmt_number(f64::from(uv[1])),
+        );
+        let key = if q.inside[k] {
+            "figure.quad.uv"
+        } else {
+            "figure.quad.helper"
+        };
+        shapes.push(Shape::Text {
+            at: o + corner,
+            offset,
+            anchor,
+            // Named as the probe and the lessons name them (uv_ij: pixel (x0 + i, y0 + j)),
+            // so a label moved off its corner to keep clear of others still says whose it is.
+            text: lang.tr_with(
+                key,
+                &[("ij", &format!("{}{}", k % 2, k / 2)), ("u", &u), ("v", &v)],
+            ),
+            size: TEXT_QUAD,
+            color: if q.inside[k] { QUAD } else { NEGATIVE },
+            background: Some(LABEL_BG),
+        });
+    }
+}
+
 pub(super) fn pixel_marker(
     shapes: &mut Vec<Shape>,
     pixel: [u32; 2],

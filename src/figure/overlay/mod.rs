@@ -19,7 +19,7 @@ mod marks;
 mod shape;
 mod style;
 
-pub use inputs::{ClipMark, HandleMark, OverlayInput, PixelMark, TriangleMark};
+pub use inputs::{ClipMark, HandleMark, OverlayInput, PixelMark, QuadMark, TriangleMark};
 pub use magnifier::{
     MAGNIFIER_RADIUS, SAMPLE_MARK_RADIUS, SampleMark, magnified_rect, magnifier, sample_color,
 };
@@ -27,7 +27,7 @@ pub use marks::{
     SCIENTIFIC_W, behind_camera_note, format_w, handle_position, is_triangle_outline, span_shapes,
     span_step_shapes,
 };
-use marks::{behind_note, clip_shapes, handle_shapes, pixel_marker, triangle_shapes};
+use marks::{behind_note, clip_shapes, handle_shapes, pixel_marker, quad_shapes, triangle_shapes};
 pub use shape::{Anchor, Overlay, Shape, Stroke};
 pub use style::*;
 
@@ -183,6 +183,9 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
         clip_shapes(&mut shapes, c, wf, hf);
     }
     if let Some(pin) = input.pin {
+        if let Some(q) = pin.quad {
+            quad_shapes(&mut shapes, &q, lang);
+        }
         pixel_marker(&mut shapes, pin.pixel, PIN, wf, hf, false);
     }
     if let Some(hover) = input.hover {
@@ -337,6 +340,7 @@ mod tests {
                 mesh_indices: [Some(0), Some(2), Some(3)],
                 weights: [-1.75, 1.375, 1.375],
             }),
+            quad: None,
         });
         let o = build(&i);
         let polys: Vec<(Rgba, bool)> = o

@@ -1,0 +1,492 @@
+//! The texture views beside the canvas, the same pictures `barylab figure --view texture|lod`
+//! makes: the hovered, else pinned, pixel's lookup in texture space (`figure::texture_view`:
+//! level 0 with the footprint, the levels read with their taps and weights, the anisotropic
+//! probes), or every pixel coloured by its mipmap level (`figure::lod_view`) with the legend.
+//! Under each picture the numbers that made the pixel, from the probe's trace, as text.
+
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Sense, Stroke, TextureHandle, TextureOptions, Ui};
+
+use crate::app::document::state::StateCommand;
+use crate::app::services::pixel::PixelReport;
+use crate::app::services::render::CanvasOutput;
+use crate::figure::TexelView;
+use crate::figure::lod_view;
+use crate::figure::texture_view::TextureView;
+use crate::i18n::Lang;
+use crate::probe::LodTrace;
+use crate::probe::format::fmt_number;
+use crate::raster::texture::Filter;
+use crate::raster::{Interpolation, Texture};
+
+/// Pixels per point the pictures are drawn at before egui scales them to the column.
+const PICTURE_SCALE: f32 = 2.0;
+/// Narrowest a texture panel is laid out, points (narrower columns show one per row).
+const MIN_PANEL: f32 = 220.0;
+/// The texture view's share of the window's width in presentation mode.
+pub const PRESENT_SHARE: f32 = 0.42;
+
+/// How the pixels of the pictures are shown: crisp (they are texels or image pixels).
+const PICTURE_TEXTURE: TextureOptions = TextureOptions::NEAREST;
+
+/// What the drawn pictures belong to: the view, the render's generation, the pixel with its
+/// report's generation, the language.
+type PictureKey = (TexelView, u64, Option<([u32; 2], u64)>, Lang);
+
+/// The views' state: the pictures drawn for the last key, and the level of detail of every
+/// pixel of the last render.
+#[derive(Default)]
+pub struct TexelViewPanel {
+    pictures: Option<(PictureKey, Vec<TextureHandle>)>,
+    lambdas: Option<(u64, Arc<Vec<f32>>)>,
+    /// The lambda-down-a-column plot's lines: the render's generation, the mode, the column.
+    column: Option<((u64, Interpolation, u32), crate::lesson::plot::PlotLines)>,
+}
+
+/// The Controls panel's choices of the texture views (beside the 3D view's toggle): a second
+/// click on the one shown turns it off.
+pub fn toggle_ui(ui: &mut Ui, current: TexelView) -> Vec<StateCommand> {
+    let lang = crate::app::services::locale::lang(ui.ctx());
+    let mut out = Vec::new();
+    for (kind, name, tip) in [
+        (
+            TexelView::Texture,
+            "texel_view.texture",
+            "texel_view.texture_tip",
+        ),
+        (TexelView::Lod, "texel_view.lod", "texel_view.lod_tip"),
+    ] {
+        if ui
+            .selectable_label(current == kind, lang.tr(name))
+            .on_hover_text(lang.tr(tip))
+            .clicked()
+        {
+            let next = if current == kind {
+                TexelView::Off
+            } else {
+                kind
+            };
+            out.push(StateCommand::SetTexelView(next));
+        }
+    }
+    out
+}
+
+/// `rgba(r, g, b, a)`.
+fn rgba(c: [u8; 4]) -> String {
+    format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3])
+}
+
+fn n(x: f32) -> String {
+    fmt_number(f64::from(x))
+}
+
+/// The lines of numbers of the texture-space view: first (over the pictures) the uv, the
+/// derivatives, the footprint and level of detail, the levels and their blend; then (under
+/// them) the anisotropic probes or each tap with its weight, and the colour.
+pub fn texture_lines(
+    lang: Lang,
+    pixel: [u32; 2],
+    uv: [f32; 2],
+    taps: &[crate::probe::TapTrace],
+    lod: Option<&LodTrace>,
+    color: [u8; 4],
+) -> [Vec<String>; 2] {
+    let mut v = vec![lang.tr_with(
+        "texel_view.uv",
+        &[
+            ("x", &pixel[0]),
+            ("y", &pixel[1]),
+            ("u", &n(uv[0])),
+            ("v", &n(uv[1])),
+        ],
+    )];
+    let mut taps = taps;
+    if let Some(lt) = lod {
+        v.push(lang.tr_with(
+            "texel_view.derivatives",
+            &[
+                ("dudx", &n(lt.duv_dx[0])),
+                ("dvdx", &n(lt.duv_dx[1])),
+                ("dudy", &n(lt.duv_dy[0])),
+                ("dvdy", &n(lt.duv_dy[1])),
+            ],
+        ));
+        v.push(lang.tr_with(
+            "texel_view.footprint",
+            &[
+                ("px", &n(lt.px)),
+                ("py", &n(lt.py)),
+                ("rho", &n(lt.rho)),
+                ("lambda", &n(lt.trilinear.lambda)),
+            ],
+        ));
+        let choice = match &lt.anisotropic {
+            Some(a) => {
+                v.push(lang.tr_with(
+                    "texel_view.anisotropic",
+                    &[
+                        ("n", &a.n),
+                        ("max", &a.max),
+                        ("lambda", &n(a.levels.lambda)),
+                    ],
+                ));
+                &a.levels
+            }
+            None => &lt.trilinear,
+        };
+        v.push(match choice.next {
+            Some((next, f)) => lang.tr_with(
+                "texel_view.two_levels",
+                &[
+                    ("d", &choice.level),
+                    ("e", &next),
+                    ("wd", &n(1.0 - f)),
+                    ("we", &n(f)),
+                ],
+            ),
+            None => lang.tr_with("texel_view.one_level", &[("d", &choice.level)]),
+        });
+    }
+    let mut below = Vec::new();
+    if let Some(lt) = lod {
+        taps = &lt.taps;
+        if let Some(a) = &lt.anisotropic {
+            for (i, p) in a.probes.iter().enumerate() {
+                below.push(lang.tr_with(
+                    "texel_view.probe",
+                    &[
+                        ("i", &(i + 1)),
+                        ("u", &n(p.uv[0])),
+                        ("v", &n(p.uv[1])),
+                        ("color", &rgba(p.color)),
+                    ],
+                ));
+            }
+            taps = &[];
+        }
+    }
+    for t in taps {
+        below.push(lang.tr_with(
+            "texel_view.tap",
+            &[
+                ("level", &t.level),
+                ("i", &t.i),
+                ("j", &t.j),
+                ("w", &n(t.weight)),
+                ("color", &rgba(t.texel)),
+            ],
+        ));
+    }
+    below.push(lang.tr_with("texel_view.color", &[("color", &rgba(color))]));
+    [v, below]
+}
+
+/// The line under the level-of-detail view for `pixel` with level of detail `lambda` (NaN:
+/// no triangle wrote it) in a texture of `levels` levels.
+pub fn lod_line(lang: Lang, pixel: [u32; 2], lambda: f32, levels: u32) -> String {
+    let (x, y) = (&pixel[0], &pixel[1]);
+    if lambda.is_nan() {
+        return lang.tr_with("texel_view.lod_none", &[("x", x), ("y", y)]);
+    }
+    if lambda <= 0.0 {
+        return lang.tr_with(
+            "texel_view.lod_magnified",
+            &[("x", x), ("y", y), ("lambda", &n(lambda))],
+        );
+    }
+    let level = (lambda.floor() as u32).min(levels.saturating_sub(1));
+    lang.tr_with(
+        "texel_view.lod_pixel",
+        &[
+            ("x", x),
+            ("y", y),
+            ("lambda", &n(lambda)),
+            ("level", &level),
+        ],
+    )
+}
+
+impl TexelViewPanel {
+    /// The lines of the lambda plot down column `x` of `output`'s scene drawn with `settings`
+    /// ([`crate::lesson::plot::lambda_column`]; computed again only for a new render, mode or
+    /// column).
+    pub(in crate::app) fn lambda_column(
+        &mut self,
+        output: &CanvasOutput,
+        texture: &Texture,
+        settings: &crate::raster::RenderSettings,
+        x: u32,
+    ) -> Option<crate::lesson::plot::PlotLines> {
+        let key = (output.generation, settings.mode, x);
+        if self.column.as_ref().is_none_or(|(k, _)| *k != key) {
+            let lines =
+                crate::lesson::plot::lambda_column(&output.scene, texture, settings, x).ok()?;
+            self.column = Some((key, lines));
+        }
+        self.column.as_ref().map(|(_, l)| l.clone())
+    }
+
+    /// Every pixel's level of detail for `output` (computed again only for a new render).
+    fn lambdas(&mut self, output: &CanvasOutput, texture: &Texture) -> Option<Arc<Vec<f32>>> {
+        if self
+            .lambdas
+            .as_ref()
+            .is_none_or(|(g, _)| *g != output.generation)
+        {
+            let settings = output.scene.settings();
+            let l = lod_view::lod_per_pixel(&output.scene, texture, &settings).ok()?;
+            self.lambdas = Some((output.generation, Arc::new(l)));
+        }
+        self.lambdas.as_ref().map(|(_, l)| Arc::clone(l))
+    }
+
+    /// The view `kind` for the canvas's `output` and the pixel `report` traced (hovered,
+    /// else pinned): its title, the picture fitted to the column, the numbers under it.
+    pub fn ui(
+        &mut self,
+        ui: &mut Ui,
+        kind: TexelView,
+        output: Option<&CanvasOutput>,
+        report: Option<&PixelReport>,
+        texture: &Texture,
+    ) {
+        let lang = crate::app::services::locale::lang(ui.ctx());
+        let title = match kind {
+            TexelView::Lod => "texel_view.lod_title",
+            _ => "texel_view.texture_title",
+        };
+        ui.label(RichText::new(lang.tr(title)).strong());
+        let Some(output) = output else {
+            return;
+        };
+        egui::ScrollArea::vertical()
+            .id_salt("texel-view")
+            .auto_shrink([false, false])
+            .show(ui, |ui| match kind {
+                TexelView::Lod => self.lod_ui(ui, lang, output, report, texture),
+                _ => self.texture_ui(ui, lang, output, report, texture),
+            });
+    }
+
+    /// The texture-space view of the report's pixel.
+    fn texture_ui(
+        &mut self,
+        ui: &mut Ui,
+        lang: Lang,
+        output: &CanvasOutput,
+        report: Option<&PixelReport>,
+        texture: &Texture,
+    ) {
+        let Some(report) = report else {
+            ui.label(lang.tr("texel_view.no_pixel"));
+            return;
+        };
+        let Some(a) = report
+            .trace
+            .detail
+            .as_ref()
+            .and_then(|d| d.attribute.as_ref())
+            .filter(|_| report.trace.written_by.is_some())
+        else {
+            ui.label(lang.tr("texel_view.no_lookup"));
+            return;
+        };
+        let settings = PixelReport::settings(output, report.mode);
+        let perspective = report.mode == Interpolation::Perspective;
+        let view = TextureView::of(
+            texture,
+            (settings.filter, settings.wrap),
+            a,
+            perspective,
+            report.pixel,
+        );
+        let key = (
+            TexelView::Texture,
+            output.generation,
+            Some((report.pixel, report.generation)),
+            lang,
+        );
+        let (uv, taps, color) = if perspective {
+            (a.uv_perspective, &a.taps_perspective, a.color_perspective)
+        } else {
+            (a.uv_affine, &a.taps_affine, a.color_affine)
+        };
+        let lod = a
+            .lod
+            .as_ref()
+            .filter(|_| settings.filter == Filter::Trilinear);
+        let [over, under] = texture_lines(lang, report.pixel, uv, taps, lod, color);
+        for line in over {
+            ui.label(RichText::new(line).monospace());
+        }
+        if self.pictures.as_ref().is_none_or(|(k, _)| *k != key) {
+            let handles = view
+                .panel_pictures(lang)
+                .iter()
+                .enumerate()
+                .filter_map(|(i, p)| {
+                    let img = p.to_image(PICTURE_SCALE).ok()?;
+                    Some(upload(ui.ctx(), &format!("texel-view-{i}"), &img))
+                })
+                .collect();
+            self.pictures = Some((key, handles));
+        }
+        if let Some((_, handles)) = &self.pictures {
+            show_grid(ui, handles);
+        }
+        for line in view.caption(lang) {
+            ui.label(RichText::new(line).weak());
+        }
+        ui.add_space(4.0);
+        for line in under {
+            ui.label(RichText::new(line).monospace());
+        }
+    }
+
+    /// The level-of-detail view of the render, the report's pixel outlined.
+    fn lod_ui(
+        &mut self,
+        ui: &mut Ui,
+        lang: Lang,
+        output: &CanvasOutput,
+        report: Option<&PixelReport>,
+        texture: &Texture,
+    ) {
+        let Some(lambdas) = self.lambdas(output, texture) else {
+            return;
+        };
+        let (w, h) = output.scene.size();
+        if lambdas.len() != w as usize * h as usize {
+            return;
+        }
+        let levels = texture.levels();
+        let key = (TexelView::Lod, output.generation, None, lang);
+        if self.pictures.as_ref().is_none_or(|(k, _)| *k != key) {
+            let img = lod_view::lod_image(&lambdas, (w, h), levels);
+            self.pictures = Some((key, vec![upload(ui.ctx(), "texel-view-lod", &img)]));
+        }
+        if output.scene.settings().filter != Filter::Trilinear {
+            ui.label(RichText::new(lang.tr("texel_view.lod_not_mipmapped")).weak());
+        }
+        if let Some((_, handles)) = &self.pictures
+            && let Some(t) = handles.first()
+        {
+            let side = ui.available_width();
+            let size = egui::vec2(side, side * h as f32 / w.max(1) as f32);
+            let (rect, _) = ui.allocate_exact_size(size, Sense::hover());
+            let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
+            ui.painter().image(t.id(), rect, uv, Color32::WHITE);
+            if let Some(r) = report {
+                let k = rect.width() / w.max(1) as f32;
+                let min = rect.min + egui::vec2(r.pixel[0] as f32 * k, r.pixel[1] as f32 * k);
+                let px = egui::Rect::from_min_size(min, egui::vec2(k, k)).expand(2.0);
+                ui.painter().rect_stroke(
+                    px,
+                    0.0,
+                    Stroke::new(2.0, Color32::BLACK),
+                    egui::StrokeKind::Outside,
+                );
+            }
+        }
+        ui.label(RichText::new(lang.tr("figure.lod.legend")).strong());
+        ui.horizontal_wrapped(|ui| {
+            for (c, label) in lod_view::legend(&lambdas, levels, lang) {
+                let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 14.0), Sense::hover());
+                ui.painter()
+                    .rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
+                ui.painter().rect_stroke(
+                    r,
+                    0.0,
+                    Stroke::new(1.0, Color32::DARK_GRAY),
+                    egui::StrokeKind::Inside,
+                );
+                // The label with its level number kept on one line.
+                ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
+                ui.add_space(6.0);
+            }
+        });
+        if let Some(r) = report {
+            let i = (r.pixel[1] as usize) * w as usize + r.pixel[0] as usize;
+            if let Some(&l) = lambdas.get(i) {
+                ui.label(RichText::new(lod_line(lang, r.pixel, l, levels)).monospace());
+            }
+        }
+    }
+}
+
+/// Uploads a picture as an egui texture.
+fn upload(ctx: &egui::Context, name: &str, img: &image::RgbaImage) -> TextureHandle {
+    let size = [img.width() as usize, img.height() as usize];
+    let image = egui::ColorImage::from_rgba_unmultiplied(size, img.as_raw());
+    ctx.load_texture(name, image, PICTURE_TEXTURE)
+}
+
+/// The panels' pictures in rows as wide as the column, as many to a row as fit
+/// [`MIN_PANEL`] points each.
+fn show_grid(ui: &mut Ui, handles: &[TextureHandle]) {
+    let width = ui.available_width();
+    let columns = ((width / MIN_PANEL).floor() as usize).clamp(1, handles.len().max(1));
+    let side = width / columns as f32 - ui.spacing().item_spacing.x;
+    for row in handles.chunks(columns) {
+        ui.horizontal(|ui| {
+            for t in row {
+                let [tw, th] = t.size().map(|v| v as f32);
+                let size = egui::vec2(side, side * th / tw.max(1.0));
+                ui.add(egui::Image::new((t.id(), size)));
+            }
+        });
+    }
+}
+
+impl crate::app::BaryApp {
+    /// Presentation mode, when a texture view is on: a column right of the picture
+    /// ([`PRESENT_SHARE`] of the window). In a window narrower than
+    /// [`space_view::PRESENT_MIN_ASPECT`](super::space_view::PRESENT_MIN_ASPECT) (a 4:3
+    /// projector) the view's numbers stand in for the card, and the picture takes the rest
+    /// alone (returns true: the caller draws the canvas only); in a wider one the rest is laid
+    /// out as before.
+    pub(in crate::app) fn texel_panel_presenting(
+        &mut self,
+        ui: &mut Ui,
+        texture: &Texture,
+    ) -> bool {
+        let kind = self.state.view.texel;
+        if kind == TexelView::Off {
+            return false;
+        }
+        let window = ui.ctx().content_rect();
+        let narrow = window.width() < super::space_view::PRESENT_MIN_ASPECT * window.height();
+        let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
+        let output = self.canvas.output.as_ref();
+        let view = &mut self.texel_view;
+        egui::Panel::right("texel-view-present")
+            .frame(
+                egui::Frame::new()
+                    .fill(crate::app::panels::present::CARD_FILL)
+                    .inner_margin(egui::Margin::same(10)),
+            )
+            .resizable(false)
+            .exact_size((PRESENT_SHARE * window.width()).round())
+            .show(ui, |ui| view.ui(ui, kind, output, report, texture));
+        narrow
+    }
+
+    /// The texture view as a resizable panel right of the canvas (when one is on).
+    pub(in crate::app) fn texel_panel(&mut self, ui: &mut Ui, texture: &Texture) {
+        let kind = self.state.view.texel;
+        if kind == TexelView::Off {
+            return;
+        }
+        let width = ui.available_width();
+        let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
+        let output = self.canvas.output.as_ref();
+        let view = &mut self.texel_view;
+        egui::Panel::right("texel-view")
+            .resizable(true)
+            .default_size(0.4 * width)
+            .size_range((0.25 * width)..=(0.7 * width))
+            .show(ui, |ui| view.ui(ui, kind, output, report, texture));
+    }
+}

@@ -1,0 +1,200 @@
+//! The app's texture views: the texture lesson's steps open the texture-space and
+//! level-of-detail views, which show the probe's numbers for the pinned pixel (computed here
+//! with the library's probe, not read from the app); presentation mode at 1024x768 keeps the
+//! view beside the picture; the card shows the level of detail; the Controls choice turns the
+//! view off. Driven through egui_kittest like tests/app_space.rs.
+
+mod common;
+
+use std::path::Path;
+
+use barylab::app::AppOptions;
+use barylab::app::document::state::StateCommand;
+use barylab::figure::TexelView;
+use barylab::lesson::Lesson;
+use barylab::probe::PixelTrace;
+use barylab::probe::format::{fmt_digits, fmt_number};
+use egui_kittest::kittest::Queryable;
+
+const WIDE: egui::Vec2 = egui::vec2(1600.0, 1000.0);
+const PROJECTOR: egui::Vec2 = egui::vec2(1024.0, 768.0);
+
+/// The texture lesson at step `n` (1-based), in a window of `size`.
+fn at_step(
+    n: usize,
+    size: egui::Vec2,
+    present: bool,
+) -> egui_kittest::Harness<'static, barylab::app::BaryApp> {
+    let lesson = Lesson::open(Path::new("texture")).expect("the texture lesson");
+    let mut h = common::app::harness(
+        size,
+        AppOptions {
+            lesson: Some((lesson, n - 1)),
+            present,
+            ..AppOptions::default()
+        },
+    );
+    h.run();
+    h
+}
+
+/// The library's probe of step `n`'s pinned pixel, as the step sets the scene.
+fn probe_step(n: usize) -> PixelTrace {
+    let lesson = Lesson::open(Path::new("texture")).expect("the texture lesson");
+    let state = lesson.state(n - 1).expect("state");
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let [x, y] = state.pin.expect("pinned");
+    barylab::probe::probe(&state.scene, &texture, &state.scene.settings(), (x, y)).expect("probe")
+}
+
+fn n(x: f32) -> String {
+    fmt_number(f64::from(x))
+}
+
+fn shows(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>, line: &str) -> bool {
+    h.query_by_label(line).is_some()
+}
+
+#[test]
+fn the_trilinear_step_shows_the_footprint_levels_and_taps_of_the_pinned_pixel() {
+    let h = at_step(8, WIDE, false);
+    assert_eq!(h.state().state().view.texel, TexelView::Texture);
+    assert!(shows(&h, "The pixel's lookup in texture space"));
+    let t = probe_step(8);
+    let l = common::lod_of(&t);
+    let footprint = format!(
+        "P_x = {}, P_y = {} texels; ρ = {}; λ = log2 ρ = {}",
+        n(l.px),
+        n(l.py),
+        n(l.rho),
+        n(l.trilinear.lambda)
+    );
+    assert!(shows(&h, &footprint), "the view shows {footprint}");
+    let (e, f) = l.trilinear.next.expect("two levels");
+    let levels = format!(
+        "levels {} and {e}, weights {} and {}",
+        l.trilinear.level,
+        n(1.0 - f),
+        n(f)
+    );
+    assert!(shows(&h, &levels), "the view shows {levels}");
+    assert_eq!(l.taps.len(), 8, "two levels of four texels");
+    for tap in &l.taps {
+        let c = tap.texel;
+        let line = format!(
+            "level {}, texel ({}, {}) × {}: rgba({}, {}, {}, {})",
+            tap.level,
+            tap.i,
+            tap.j,
+            n(tap.weight),
+            c[0],
+            c[1],
+            c[2],
+            c[3]
+        );
+        assert!(shows(&h, &line), "the view shows {line}");
+    }
+    let c = t.color;
+    let colour = format!("colour: rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
+    assert!(shows(&h, &colour), "the view shows {colour}");
+}
+
+#[test]
+fn the_mipmap_step_shows_every_pixels_level_and_the_pinned_pixels_lambda() {
+    let h = at_step(7, WIDE, false);
+    assert_eq!(h.state().state().view.texel, TexelView::Lod);
+    assert!(shows(&h, "Each pixel's mipmap level"));
+    let t = probe_step(7);
+    let lambda = common::lod_of(&t).trilinear.lambda;
+    let [x, y] = t.pixel;
+    let line = format!(
+        "pixel ({x}, {y}): λ = {}, level {}",
+        n(lambda),
+        lambda.floor()
+    );
+    assert!(shows(&h, &line), "the view shows {line}");
+    // The far-checker floor runs from magnification at the bottom to level 8 at the horizon.
+    for entry in ["magnified (λ ≤ 0)", "level 0", "level 2", "level 8"] {
+        assert!(shows(&h, entry), "the legend has {entry}");
+    }
+}
+
+#[test]
+fn on_a_projector_the_anisotropic_step_keeps_the_view_beside_the_picture() {
+    let mut h = at_step(11, PROJECTOR, true);
+    assert!(h.state().presenting());
+    let t = probe_step(11);
+    let a = common::lod_of(&t)
+        .anisotropic
+        .as_ref()
+        .expect("anisotropic");
+    let line = format!(
+        "anisotropic: N = {} probes (at most {}); λ' = log2(P_max / N) = {}",
+        a.n,
+        a.max,
+        n(a.levels.lambda)
+    );
+    assert!(shows(&h, &line), "the view shows {line}");
+    assert_eq!(a.n, 13);
+    let probe = &a.probes[0];
+    let c = probe.color;
+    let first = format!(
+        "probe 1: uv = ({}, {}) → rgba({}, {}, {}, {})",
+        n(probe.uv[0]),
+        n(probe.uv[1]),
+        c[0],
+        c[1],
+        c[2],
+        c[3]
+    );
+    assert!(shows(&h, &first), "the view shows {first}");
+    // The picture is still drawn, left of the view.
+    let view = h
+        .query_by_label("The pixel's lookup in texture space")
+        .expect("the view")
+        .rect();
+    let canvas = h.state().canvas().area.expect("the canvas is laid out");
+    assert!(canvas.max.x <= view.min.x, "{canvas:?} left of {view:?}");
+    assert!(canvas.width() >= 0.5 * PROJECTOR.x, "{canvas:?}");
+
+    h.state_mut()
+        .push(StateCommand::SetTexelView(TexelView::Off));
+    h.run();
+    assert!(!shows(&h, &line));
+}
+
+#[test]
+fn the_card_shows_the_level_of_detail_with_trilinear_filtering() {
+    // Step 10 (trilinear, no texture view) on a wide screen: the card beside the picture.
+    let h = at_step(10, WIDE, true);
+    assert_eq!(h.state().state().view.texel, TexelView::Off);
+    let t = probe_step(10);
+    let l = common::lod_of(&t);
+    let (e, _) = l.trilinear.next.expect("two levels");
+    let d = |x: f32| fmt_digits(f64::from(x), 4);
+    let line = format!(
+        "ρ = {}  λ = {}  mip {}+{e}",
+        d(l.rho),
+        d(l.trilinear.lambda),
+        l.trilinear.level
+    );
+    assert!(shows(&h, &line), "the card shows {line}");
+}
+
+#[test]
+fn on_a_projector_the_level_of_detail_step_keeps_its_legend_in_the_window() {
+    let h = at_step(7, PROJECTOR, true);
+    let view = h
+        .query_by_label("Each pixel's mipmap level")
+        .expect("the view")
+        .rect();
+    let canvas = h.state().canvas().area.expect("the canvas is laid out");
+    assert!(canvas.max.x <= view.min.x, "{canvas:?} left of {view:?}");
+    for entry in ["level 0", "level 8"] {
+        let r = h.query_by_label(entry).expect("a legend entry").rect();
+        assert!(
+            r.min.x >= view.min.x && r.max.x <= PROJECTOR.x && r.max.y <= PROJECTOR.y,
+            "{entry} at {r:?}, the view at {view:?}"
+        );
+    }
+}
