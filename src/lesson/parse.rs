@@ -101,6 +101,7 @@ struct RawStep {
     space_view: bool,
     #[serde(default)]
     samples_view: crate::figure::sample_buffers::SampleView,
+    #[serde(default)]
     texture_view: crate::figure::TexelView,
     #[serde(default)]
     quiz: Option<QuizSpec>,
