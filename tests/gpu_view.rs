@@ -20,7 +20,7 @@ use barylab::scene::Scene;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
-const SIZE: egui::Vec2 = egui::vec2(1280.0, 800.0);
+const SIZE: egui::Vec2 = egui::vec2(1280.0, 1024.0);
 
 fn harness(options: AppOptions) -> Harness<'static, BaryApp> {
     common::app::harness(SIZE, options)

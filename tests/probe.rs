@@ -117,6 +117,8 @@ scene_tests! {
     front: "front.json",
     games101_a2: "games101-a2.json",
     games101_a2_ssaa: "games101-a2-ssaa.json",
+    games101_a2_clip: "games101-a2-clip.json",
+    games101_a2_clip_ssaa: "games101-a2-clip-ssaa.json",
     games101_a3_spot: "games101-a3-spot.json",
     games101_pitfall: "games101-pitfall.json",
     near_cut: "near-cut.json",
