@@ -4,64 +4,20 @@
 
 mod common;
 
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
-
 use common::xvfb::{start_xvfb, xvfb_or_skip};
 
 /// The address space the app may have: enough for the window and Mesa, not for a
 /// 16384x16384 picture (its colour buffer alone is 1 GiB, the render about 3 GiB).
 const ADDRESS_LIMIT: u64 = 3_000_000 * 1024;
 
-/// How long the app may take to open, draw, save its screenshot and exit.
-const APP_TIMEOUT: Duration = Duration::from_secs(120);
-
 /// Runs the app on `display` under [`ADDRESS_LIMIT`] without the tests' memory limit;
 /// returns (exit code, stderr).
 fn run_limited(display: &str, args: &[&str]) -> (Option<i32>, String) {
-    use std::os::unix::process::CommandExt;
-    let mut c = Command::new(env!("CARGO_BIN_EXE_barylab"));
-    c.args(args)
-        .env("DISPLAY", display)
-        .env_remove("WAYLAND_DISPLAY")
-        .env_remove("BARYLAB_MEMORY_LIMIT")
-        .env("LIBGL_ALWAYS_SOFTWARE", "1")
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped());
-    let limit = libc::rlimit {
-        rlim_cur: ADDRESS_LIMIT,
-        rlim_max: ADDRESS_LIMIT,
-    };
-    // SAFETY: setrlimit is async-signal-safe and `limit` is a valid record copied into the
-    // closure; it runs in the child between fork and exec.
-    unsafe {
-        c.pre_exec(move || {
-            if libc::setrlimit(libc::RLIMIT_AS, &limit) == 0 {
-                Ok(())
-            } else {
-                Err(std::io::Error::last_os_error())
-            }
-        });
-    }
-    let mut child = c.spawn().expect("start barylab");
-    let mut stderr = child.stderr.take().expect("stderr");
-    let reader = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = std::io::Read::read_to_string(&mut stderr, &mut s);
-        s
-    });
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().expect("wait") {
-            break s;
-        }
-        if start.elapsed() > APP_TIMEOUT {
-            let _ = child.kill();
-            panic!("barylab did not exit within {APP_TIMEOUT:?}");
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    (status.code(), reader.join().expect("stderr reader"))
+    let mut c = common::xvfb::app_command(display, args);
+    c.env_remove("BARYLAB_MEMORY_LIMIT");
+    common::limit_address_space(&mut c, ADDRESS_LIMIT);
+    let (status, _, err) = common::xvfb::run_to_end(c);
+    (status.code(), err)
 }
 
 #[test]

@@ -2,6 +2,7 @@
 //! output over any file the command read, and no temporary file left by an interrupted run.
 
 mod bad_input;
+mod common;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -198,24 +199,9 @@ fn an_interrupted_write_leaves_no_temporary_file() {
 /// The binary without the tests' fixed memory limit, under an address-space limit (`ulimit
 /// -v`) of `bytes`.
 fn under_address_limit(bytes: u64) -> Command {
-    use std::os::unix::process::CommandExt;
     let mut c = Command::new(env!("CARGO_BIN_EXE_barylab"));
     c.env_remove("BARYLAB_MEMORY_LIMIT");
-    let limit = libc::rlimit {
-        rlim_cur: bytes,
-        rlim_max: bytes,
-    };
-    // SAFETY: setrlimit is async-signal-safe and `limit` is a valid record copied into the
-    // closure; it runs in the child between fork and exec.
-    unsafe {
-        c.pre_exec(move || {
-            if libc::setrlimit(libc::RLIMIT_AS, &limit) == 0 {
-                Ok(())
-            } else {
-                Err(std::io::Error::last_os_error())
-            }
-        });
-    }
+    common::limit_address_space(&mut c, bytes);
     c
 }
 

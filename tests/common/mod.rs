@@ -225,3 +225,23 @@ pub fn lod_of(t: &barylab::probe::PixelTrace) -> &barylab::probe::LodTrace {
         .and_then(|a| a.lod.as_ref())
         .expect("a level-of-detail derivation")
 }
+
+/// Makes `c`'s child run under an address-space limit (`ulimit -v`) of `bytes`.
+pub fn limit_address_space(c: &mut std::process::Command, bytes: u64) {
+    use std::os::unix::process::CommandExt;
+    let limit = libc::rlimit {
+        rlim_cur: bytes,
+        rlim_max: bytes,
+    };
+    // SAFETY: setrlimit is async-signal-safe and `limit` is a valid record copied into the
+    // closure; it runs in the child between fork and exec.
+    unsafe {
+        c.pre_exec(move || {
+            if libc::setrlimit(libc::RLIMIT_AS, &limit) == 0 {
+                Ok(())
+            } else {
+                Err(std::io::Error::last_os_error())
+            }
+        });
+    }
+}

@@ -31,12 +31,25 @@ pub fn xvfb_or_skip(test: &str) -> Option<PathBuf> {
     }
 }
 
-/// A display number nobody is using (no lock file, no socket).
+/// A display number nobody is using: no lock file, or a stale one (an X server that died
+/// without cleaning up, e.g. killed by a timeout), whose lock and socket are removed here.
 fn free_display() -> u32 {
     (90..250)
         .find(|n| {
-            !Path::new(&format!("/tmp/.X{n}-lock")).exists()
-                && !Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
+            let lock = PathBuf::from(format!("/tmp/.X{n}-lock"));
+            let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
+            let alive = std::fs::read_to_string(&lock)
+                .ok()
+                .and_then(|t| t.trim().parse::<u32>().ok())
+                .is_some_and(|pid| Path::new(&format!("/proc/{pid}")).exists());
+            if alive {
+                return false;
+            }
+            if lock.exists() || socket.exists() {
+                let _ = std::fs::remove_file(&lock);
+                let _ = std::fs::remove_file(&socket);
+            }
+            !lock.exists() && !socket.exists()
         })
         .expect("a free X display number between 90 and 250")
 }
@@ -94,16 +107,49 @@ const APP_TIMEOUT: Duration = Duration::from_secs(120);
 /// Runs the barylab binary on `display` with `args` and these environment variables (Mesa's
 /// software OpenGL); returns (success, stdout, stderr). Fails the test after [`APP_TIMEOUT`].
 pub fn run_app(display: &str, args: &[&str], env: &[(&str, &str)]) -> (bool, String, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_barylab"))
-        .args(args)
-        .envs(env.iter().copied())
+    let mut c = app_command(display, args);
+    c.envs(env.iter().copied());
+    let (status, out, err) = run_to_end(c);
+    (status.success(), out, err)
+}
+
+/// The barylab binary on `display` with `args`, Mesa's software OpenGL, its output piped.
+pub fn app_command(display: &str, args: &[&str]) -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_barylab"));
+    c.args(args)
         .env("DISPLAY", display)
         .env_remove("WAYLAND_DISPLAY")
         .env("LIBGL_ALWAYS_SOFTWARE", "1")
         .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start barylab");
+        .stderr(Stdio::piped());
+    c
+}
+
+/// Runs `c` to its end, reading its output while it runs; (status, stdout, stderr). Fails
+/// the test after [`APP_TIMEOUT`].
+pub fn run_to_end(mut c: Command) -> (std::process::ExitStatus, String, String) {
+    let mut child = c.spawn().expect("start barylab");
+    let reader = |r: Option<Box<dyn std::io::Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut s = String::new();
+            if let Some(mut r) = r {
+                let _ = r.read_to_string(&mut s);
+            }
+            s
+        })
+    };
+    let out = reader(
+        child
+            .stdout
+            .take()
+            .map(|r| Box::new(r) as Box<dyn std::io::Read + Send>),
+    );
+    let err = reader(
+        child
+            .stderr
+            .take()
+            .map(|r| Box::new(r) as Box<dyn std::io::Read + Send>),
+    );
     let start = Instant::now();
     let status = loop {
         if let Some(s) = child.try_wait().expect("wait") {
@@ -115,14 +161,6 @@ pub fn run_app(display: &str, args: &[&str], env: &[(&str, &str)]) -> (bool, Str
         }
         std::thread::sleep(Duration::from_millis(100));
     };
-    let read = |r: Option<&mut dyn std::io::Read>| {
-        let mut s = String::new();
-        if let Some(r) = r {
-            let _ = r.read_to_string(&mut s);
-        }
-        s
-    };
-    let out = read(child.stdout.as_mut().map(|r| r as &mut dyn std::io::Read));
-    let err = read(child.stderr.as_mut().map(|r| r as &mut dyn std::io::Read));
-    (status.success(), out, err)
+    let join = |h: std::thread::JoinHandle<String>| h.join().unwrap_or_default();
+    (status, join(out), join(err))
 }
