@@ -44,8 +44,23 @@ pub fn level_colour(lambda: f32, last: u32) -> [u8; 3] {
     if lambda.is_nan() || lambda <= 0.0 {
         return MAGNIFIED;
     }
-    let level = (lambda.floor() as u32).min(last);
-    LEVEL_COLOURS[level as usize % LEVEL_COLOURS.len()]
+    LEVEL_COLOURS[level_of(lambda, last) as usize % LEVEL_COLOURS.len()]
+}
+
+/// The mipmap level a pixel of level of detail `lambda` is shown as: floor(lambda), at
+/// least 0 (magnified) and at most `last`, the texture's last level.
+///
+/// ```
+/// use barylab::figure::lod_view::level_of;
+/// assert_eq!(level_of(-0.5, 8), 0);
+/// assert_eq!(level_of(2.7, 8), 2);
+/// assert_eq!(level_of(20.0, 3), 3);
+/// ```
+pub fn level_of(lambda: f32, last: u32) -> u32 {
+    if lambda <= 0.0 {
+        return 0;
+    }
+    (lambda.floor() as u32).min(last)
 }
 
 /// Every pixel's level of detail as the renderer computes it (coarse derivatives, the
@@ -95,10 +110,7 @@ pub fn legend(lambdas: &[f32], levels: u32, lang: Lang) -> Vec<([u8; 3], String)
         v.push((MAGNIFIED, lang.tr("figure.lod.magnified")));
     }
     for lv in 0..=last {
-        if lambdas
-            .iter()
-            .any(|&l| l > 0.0 && (l.floor() as u32).min(last) == lv)
-        {
+        if lambdas.iter().any(|&l| l > 0.0 && level_of(l, last) == lv) {
             let label = lang.tr_with("figure.lod.level", &[("level", &lv)]);
             v.push((LEVEL_COLOURS[lv as usize % LEVEL_COLOURS.len()], label));
         }
@@ -158,11 +170,7 @@ pub fn lod_column(
         if l.is_nan() {
             continue;
         }
-        let lv = if l <= 0.0 {
-            0
-        } else {
-            (l.floor() as u32).min(last)
-        };
+        let lv = level_of(l, last);
         lambda.push([f64::from(y), f64::from(l)]);
         level.push([f64::from(y), f64::from(lv)]);
     }

@@ -196,7 +196,7 @@ pub fn lod_line(lang: Lang, pixel: [u32; 2], lambda: f32, levels: u32) -> String
             &[("x", x), ("y", y), ("lambda", &n(lambda))],
         );
     }
-    let level = (lambda.floor() as u32).min(levels.saturating_sub(1));
+    let level = crate::figure::lod_view::level_of(lambda, levels.saturating_sub(1));
     lang.tr_with(
         "texel_view.lod_pixel",
         &[
