@@ -88,3 +88,39 @@ fn the_control_shows_each_buffer_and_the_black_edge_bug() {
     assert!(!h.state().state().view.samples_view.is_on());
     assert_eq!(h.state().canvas().samples_shown, 0, "the usual image again");
 }
+
+/// The closed three-point white lines the canvas paints (the triangles' outlines: stroke
+/// `[255, 255, 255, 230]`, see `figure::overlay::is_triangle_outline`).
+fn outlines(h: &Harness<'static, BaryApp>) -> usize {
+    fn count(shape: &egui::Shape) -> usize {
+        let white = Color32::from_rgba_unmultiplied(255, 255, 255, 230);
+        match shape {
+            egui::Shape::Vec(v) => v.iter().map(count).sum(),
+            egui::Shape::Path(p) => usize::from(
+                p.closed
+                    && p.points.len() == 3
+                    && p.stroke.color == egui::epaint::ColorMode::Solid(white),
+            ),
+            _ => 0,
+        }
+    }
+    h.output().shapes.iter().map(|c| count(&c.shape)).sum()
+}
+
+/// The black-edge bug's dark line runs along the green triangle's edge: the canvas's white
+/// outline of the pinned pixel's triangle would lie right over it, so a sample buffer view
+/// draws no outline.
+#[test]
+fn a_sample_buffer_view_leaves_the_edge_pixels_uncovered() {
+    let mut h = open();
+    h.state_mut().push(StateCommand::Pin(Some([83, 42])));
+    h.run();
+    assert_eq!(outlines(&h), 1, "the usual image outlines the pinned pixel's triangle");
+    h.get_by_label("Black-edge bug (GAMES101 A2)").click();
+    h.run();
+    assert!(h.state().state().view.samples_view.black_edges);
+    assert_eq!(outlines(&h), 0, "the dark line stays visible");
+    h.get_by_label("Black-edge bug (GAMES101 A2)").click();
+    h.run();
+    assert_eq!(outlines(&h), 1, "the outline comes back");
+}

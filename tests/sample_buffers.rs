@@ -150,6 +150,29 @@ fn the_builtin_a2_scenes_draw_the_model_scenes() {
     }
 }
 
+/// A small image's legend (five swatches of 20 points for 4 samples) must end above the next
+/// row's title: at 16 x 16 pixels the image is shorter than the coverage legend.
+#[test]
+fn a_small_images_legend_stays_in_its_row() {
+    let (mut scene, texture, _) = load("assets/scenes/games101-a2-ssaa.json");
+    scene.set_size(16, 16);
+    let settings = scene.settings();
+    let b = samples_of(&scene, &texture, &settings, false).expect("samples");
+    let picture =
+        barylab::figure::sample_buffers::picture(&b, 0, 1.0, false, barylab::i18n::Lang::En);
+    assert_eq!(picture.rasters.len(), 4);
+    let coverage = picture.rasters[0].rect;
+    // The swatches start at the image's top, one every 20 points, each 14 points tall.
+    let legend_bottom = coverage[1] + 4.0 * 20.0 + 14.0;
+    // The row below: its image's top less its title's height (26 points).
+    let next_title_top = picture.rasters[2].rect[1] - 26.0;
+    assert!(
+        next_title_top >= legend_bottom,
+        "legend ends at {legend_bottom}, the next title starts at {next_title_top}"
+    );
+    assert!(picture.size[1] >= picture.rasters[3].rect[1] + picture.rasters[3].rect[3]);
+}
+
 fn barylab(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_barylab"))
         .args(args)

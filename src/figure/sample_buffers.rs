@@ -257,7 +257,10 @@ pub fn picture(
             + margin
     };
     let columns = [column(0), column(1)];
-    let cell_h = title_h + ih + margin;
+    // A row is as tall as its image or its legend (the coverage count's n + 1 swatches, the
+    // taller), so a small image's legend never runs into the row below.
+    let legend_h = (n + 1) as f64 * 20.0;
+    let cell_h = title_h + ih.max(legend_h) + margin;
     let mut rasters = Vec::new();
     let mut marks = String::new();
     for (i, kind) in order.into_iter().enumerate() {
@@ -312,12 +315,8 @@ pub fn picture(
             _ => {}
         }
     }
-    let legend_rows = (n + 1) as f64 * 20.0 + title_h + margin;
     RasterSvg {
-        size: [
-            margin + columns[0] + columns[1],
-            margin + (2.0 * cell_h).max(cell_h + legend_rows),
-        ],
+        size: [margin + columns[0] + columns[1], margin + 2.0 * cell_h],
         rasters,
         marks,
         lang,

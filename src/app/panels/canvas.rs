@@ -649,17 +649,22 @@ pub(crate) fn canvas_ui(
             paint::retitle(&mut shapes, &title);
         }
         // The sample view's buffer (the GPU view shows the GL's image instead).
-        if gpu.is_none()
-            && let Some(title) =
+        let buffer_title = gpu
+            .is_none()
+            .then(|| {
                 canvas
                     .samples
                     .title(view.content, view_settings.samples_view, lang)
-        {
-            paint::retitle(&mut shapes, &title);
+            })
+            .flatten();
+        if let Some(title) = &buffer_title {
+            paint::retitle(&mut shapes, title);
         }
         // With the wireframe on, the triangle's outline would lie right over the wireframe's
-        // line (the thing to see): the line shows the triangle already.
-        if state.options().wireframe {
+        // line (the thing to see): the line shows the triangle already. A sample buffer's
+        // thing to see is its edge pixels too (the black-edge bug's dark line, a sample's
+        // coverage): the outline would cover them.
+        if state.options().wireframe || buffer_title.is_some() {
             shapes.shapes.retain(|s| !overlay::is_triangle_outline(s));
         }
         // The scanline rasterizer: the pinned pixel's row, where it crosses two edges, and the
