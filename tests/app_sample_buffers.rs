@@ -115,7 +115,11 @@ fn a_sample_buffer_view_leaves_the_edge_pixels_uncovered() {
     let mut h = open();
     h.state_mut().push(StateCommand::Pin(Some([83, 42])));
     h.run();
-    assert_eq!(outlines(&h), 1, "the usual image outlines the pinned pixel's triangle");
+    assert_eq!(
+        outlines(&h),
+        1,
+        "the usual image outlines the pinned pixel's triangle"
+    );
     h.get_by_label("Black-edge bug (GAMES101 A2)").click();
     h.run();
     assert!(h.state().state().view.samples_view.black_edges);

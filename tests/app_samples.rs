@@ -6,7 +6,7 @@ mod common;
 
 use barylab::app::document::state::StateCommand;
 use barylab::app::{AppOptions, BaryApp};
-use barylab::figure::overlay::MAGNIFIER_RADIUS;
+use barylab::figure::overlay::{MAGNIFIER_RADIUS_SAMPLES, magnifier_radius};
 use barylab::raster::sample::{SampleCount, SampleSettings};
 use egui_kittest::Harness;
 
@@ -45,7 +45,8 @@ fn the_pinned_pixels_magnifier_gets_every_sample_around_it() {
     h.run();
     assert_eq!(h.state().state().scene.samples().count, SampleCount::Four);
     let report = h.state().pin_report().expect("pinned");
-    let side = (2 * MAGNIFIER_RADIUS + 1) as usize;
+    let side = (2 * magnifier_radius(true) + 1) as usize;
+    assert_eq!(side, 2 * MAGNIFIER_RADIUS_SAMPLES as usize + 1);
     assert_eq!(report.sample_marks.len(), side * side * 4);
     // The pinned pixel lies inside the front triangle: its four samples are that triangle's.
     let own: Vec<_> = report
@@ -71,7 +72,7 @@ fn the_pinned_pixels_magnifier_gets_every_sample_around_it() {
     assert_eq!(listed, marked);
     // Every mark lies in the magnified square.
     assert!(report.sample_marks.iter().all(|m| {
-        (m.position.x - 70.5).abs() <= f64::from(MAGNIFIER_RADIUS) + 0.5
-            && (m.position.y - 55.5).abs() <= f64::from(MAGNIFIER_RADIUS) + 0.5
+        (m.position.x - 70.5).abs() <= f64::from(MAGNIFIER_RADIUS_SAMPLES) + 0.5
+            && (m.position.y - 55.5).abs() <= f64::from(MAGNIFIER_RADIUS_SAMPLES) + 0.5
     }));
 }

@@ -110,6 +110,9 @@ fn the_numbers_quoted_are_the_probes() {
     assert_eq!(blue.covered, [0]);
     assert!(!blue.centre_inside);
     assert_eq!(blue.centroid_sample, Some(0));
+    // ... and the picture shows it: sample 0 is blue's, the other three the background's.
+    let owners: Vec<_> = t5.samples.iter().map(|s| s.triangle).collect();
+    assert_eq!(owners, [Some(1), None, None, None]);
     let [x, y] = blue.evaluated_at.expect("shaded once");
     quotes(&lesson, 5, &format!("({x}, {y})"));
     // Step 6: flat, the last vertex's colour everywhere.

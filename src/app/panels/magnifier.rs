@@ -6,7 +6,7 @@
 use egui::{Color32, Rect, TextureId, Ui};
 
 use crate::app::panels::paint::{self, CanvasTransform};
-use crate::figure::overlay::{self, MAGNIFIER_RADIUS, SampleMark, TriangleMark};
+use crate::figure::overlay::{self, SampleMark, TriangleMark};
 use crate::i18n::Lang;
 
 /// The magnifier's square takes this share of the smaller side of the canvas when it lies over
@@ -38,7 +38,7 @@ pub fn title_height(text_size: f32) -> f32 {
 
 /// Paints the magnifier into `ui`: a title line, then a square `side` points wide.
 pub fn magnifier_ui(ui: &mut Ui, side: f32, input: &MagnifierInput) {
-    let cells = (2 * MAGNIFIER_RADIUS + 1) as f32;
+    let cells = (2 * radius(input) + 1) as f32;
     let k = (side / cells).floor().max(1.0);
     let side = k * cells;
     let title = rust_i18n::t!(
@@ -57,11 +57,16 @@ pub fn magnifier_ui(ui: &mut Ui, side: f32, input: &MagnifierInput) {
     paint_square(ui.painter(), rect, k, input);
 }
 
+/// Pixels shown on each side of the pinned one (fewer when each pixel has several samples).
+fn radius(input: &MagnifierInput) -> u32 {
+    overlay::magnifier_radius(!input.samples.is_empty())
+}
+
 /// The enlarged pixels and their shapes in `rect`, `k` points per pixel.
 fn paint_square(painter: &egui::Painter, rect: Rect, k: f32, input: &MagnifierInput) {
     let painter = painter.with_clip_rect(rect);
     painter.rect_filled(rect, 0.0, Color32::from_gray(20));
-    let (lo, _) = overlay::magnified_rect(input.pixel, MAGNIFIER_RADIUS);
+    let (lo, _) = overlay::magnified_rect(input.pixel, radius(input));
     let t = CanvasTransform {
         origin: rect.min - egui::vec2(lo.x as f32 * k, lo.y as f32 * k),
         scale: k,
@@ -81,7 +86,7 @@ fn paint_square(painter: &egui::Painter, rect: Rect, k: f32, input: &MagnifierIn
         input.pixel,
         input.triangle.as_ref(),
         size,
-        MAGNIFIER_RADIUS,
+        radius(input),
         &input.samples,
     );
     paint::paint(&painter, rect, rect, t, &shapes, &[]);

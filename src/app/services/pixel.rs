@@ -3,7 +3,7 @@
 //! marks. Nothing here re-does the math.
 
 use crate::app::services::render::CanvasOutput;
-use crate::figure::overlay::{MAGNIFIER_RADIUS, PixelMark, SampleMark, TriangleMark};
+use crate::figure::overlay::{PixelMark, SampleMark, TriangleMark, magnifier_radius};
 use crate::i18n::Lang;
 use crate::probe::format::{self, Document};
 use crate::probe::{PixelTrace, ProbeError, Prober};
@@ -89,7 +89,7 @@ impl PixelReport {
     pub fn magnify(&mut self, prober: &Prober<'_>) {
         let settings = prober.settings();
         let [px, py] = self.pixel;
-        let r = MAGNIFIER_RADIUS;
+        let r = magnifier_radius(settings.samples.count.get() > 1);
         let mut marks = Vec::new();
         for y in py.saturating_sub(r)..=(py + r).min(settings.height.saturating_sub(1)) {
             for x in px.saturating_sub(r)..=(px + r).min(settings.width.saturating_sub(1)) {

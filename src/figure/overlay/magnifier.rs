@@ -16,6 +16,26 @@ use super::{TriangleMark, centre_of};
 /// neighbours on both sides of an edge and large enough to read from the back of a room.
 pub const MAGNIFIER_RADIUS: u32 = 3;
 
+/// With several samples a pixel, 5 x 5 pixels: each pixel's cell is then large enough that
+/// its four sample marks (and the neighbours' across a pixel border, 0.35 pixel apart in the
+/// GL's standard pattern) keep apart at a projector's 1024 x 768; at 7 x 7 they touched.
+pub const MAGNIFIER_RADIUS_SAMPLES: u32 = 2;
+
+/// Pixels shown on each side of the marked one: [`MAGNIFIER_RADIUS`] for one sample a pixel,
+/// [`MAGNIFIER_RADIUS_SAMPLES`] when `multisampled`.
+///
+/// ```
+/// use barylab::figure::overlay::magnifier_radius;
+/// assert_eq!((magnifier_radius(false), magnifier_radius(true)), (3, 2));
+/// ```
+pub fn magnifier_radius(multisampled: bool) -> u32 {
+    if multisampled {
+        MAGNIFIER_RADIUS_SAMPLES
+    } else {
+        MAGNIFIER_RADIUS
+    }
+}
+
 /// Grid lines between the enlarged pixels: dark with a light edge, visible on any colour.
 const GRID_LINES: [Stroke; 2] = [
     Stroke::new(2.0, [0, 0, 0, 150]),

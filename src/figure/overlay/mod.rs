@@ -21,7 +21,8 @@ mod style;
 
 pub use inputs::{ClipMark, HandleMark, OverlayInput, PixelMark, QuadMark, TriangleMark};
 pub use magnifier::{
-    MAGNIFIER_RADIUS, SAMPLE_MARK_RADIUS, SampleMark, magnified_rect, magnifier, sample_color,
+    MAGNIFIER_RADIUS, MAGNIFIER_RADIUS_SAMPLES, SAMPLE_MARK_RADIUS, SampleMark, magnified_rect,
+    magnifier, magnifier_radius, sample_color,
 };
 pub use marks::{
     SCIENTIFIC_W, behind_camera_note, format_w, handle_position, is_triangle_outline, span_shapes,
