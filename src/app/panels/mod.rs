@@ -28,6 +28,7 @@ pub(crate) mod present;
 pub mod quiz;
 pub(crate) mod sample_buffers;
 pub(crate) mod samples_control;
+pub(crate) mod scene_edit;
 pub(crate) mod space_view;
 pub(crate) mod status;
 pub(crate) mod texel_view;
