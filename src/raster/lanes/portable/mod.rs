@@ -36,6 +36,13 @@ impl Inf {
     }
 }
 
+/// Whether the build has a vector floor instruction (SSE4.1's `roundps`, NEON's `frintm`),
+/// so that `f32::floor` is one instruction per register; without it (SSE2) `floor` is a call
+/// per lane, and the sampler floors by truncation instead (`sampler::floor_coord`). A constant
+/// in each build of [`draw_body`].
+#[derive(Clone, Copy)]
+struct VectorFloor(bool);
+
 /// `cond` as a lane mask: all ones or zero.
 #[inline(always)]
 fn mask64(cond: bool) -> i64 {
@@ -120,7 +127,8 @@ pub(super) fn draw(
         return;
     }
     let _ = sse41;
-    draw_body(rasterizer, tri, rows, sampler, mode, target);
+    let floor = VectorFloor(cfg!(target_arch = "aarch64"));
+    draw_body(rasterizer, tri, rows, sampler, mode, target, floor);
 }
 
 /// [`draw`] compiled with SSE4.1.
@@ -134,7 +142,15 @@ fn draw_sse41(
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    draw_body(rasterizer, tri, rows, sampler, mode, target);
+    draw_body(
+        rasterizer,
+        tri,
+        rows,
+        sampler,
+        mode,
+        target,
+        VectorFloor(true),
+    );
 }
 
 /// Both rasterizers' lanes, inlined into each build of [`draw`].
@@ -146,10 +162,11 @@ fn draw_body(
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
+    floor: VectorFloor,
 ) {
     match rasterizer {
-        Rasterizer::EdgeFunction => edge_body(tri, rows, sampler, mode, target),
-        Rasterizer::Scanline => scanline_body(tri, rows, sampler, mode, target),
+        Rasterizer::EdgeFunction => edge_body(tri, rows, sampler, mode, target, floor),
+        Rasterizer::Scanline => scanline_body(tri, rows, sampler, mode, target, floor),
     }
 }
 
@@ -165,6 +182,7 @@ fn edge_body(
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
+    floor: VectorFloor,
 ) {
     let planes = &tri.planes;
     let consts = &tri.consts;
@@ -205,7 +223,7 @@ fn edge_body(
                 let valid = if k < HALF { lo.3[k] } else { hi.3[k - HALF] };
                 valid & covered[k]
             });
-            let rgba = sampler.sample_packed(&u, &v, inf);
+            let rgba = sampler.sample_packed(&u, &v, inf, floor);
             write(target, bx, y, &ok, &depth, &rgba);
         }
     }
@@ -286,6 +304,7 @@ fn scanline_body(
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
+    floor: VectorFloor,
 ) {
     let consts = &tri.consts;
     let step = Stepped::row_step(consts, mode);
@@ -317,7 +336,7 @@ fn scanline_body(
                 Interpolation::Affine => (each(|k| u[k] as f32), each(|k| v[k] as f32)),
             };
             let d: F32s = each(|k| depth[k] as f32);
-            let rgba = sampler.sample_packed(&uf, &vf, inf);
+            let rgba = sampler.sample_packed(&uf, &vf, inf, floor);
             write(target, x, y, &ok, &d, &rgba);
             u = each(|k| u[k] + su);
             v = each(|k| v[k] + sv);
