@@ -272,10 +272,22 @@ impl WeightPlanes {
         self.dir[i].x * (y - self.start[i].y)
     }
 
+    /// The part of `l_i`'s numerator that depends on the column: `d_y (P_x - S_x)`.
+    #[inline(always)]
+    pub fn column_term(&self, i: usize, x: f64) -> f64 {
+        self.dir[i].y * (x - self.start[i].x)
+    }
+
+    /// `l_i` from its row and column terms: `(row_term - column_term) * (1 / area2)`.
+    #[inline(always)]
+    pub fn weight_of_terms(&self, row_term: f64, column_term: f64) -> f64 {
+        (row_term - column_term) * self.inv_area2
+    }
+
     /// `l_i` from its row term at window x: `(row_term - d_y (P_x - S_x)) * (1 / area2)`.
     #[inline(always)]
     pub fn weight(&self, i: usize, row_term: f64, x: f64) -> f64 {
-        (row_term - self.dir[i].y * (x - self.start[i].x)) * self.inv_area2
+        self.weight_of_terms(row_term, self.column_term(i, x))
     }
 
     /// The three weights at a window position.

@@ -36,6 +36,13 @@ impl Inf {
     }
 }
 
+/// Whether the build has a vector floor instruction (SSE4.1's `roundps`, NEON's `frintm`),
+/// so that `f32::floor` is one instruction per register; without it (SSE2) `floor` is a call
+/// per lane, and the sampler floors by truncation instead (`sampler::floor_coord`). A constant
+/// in each build of [`draw_body`].
+#[derive(Clone, Copy)]
+struct VectorFloor(bool);
+
 /// `cond` as a lane mask: all ones or zero.
 #[inline(always)]
 fn mask64(cond: bool) -> i64 {
@@ -51,8 +58,14 @@ fn mask32(cond: bool) -> i32 {
 /// `[f(0), f(1), ..., f(7)]`: one operation over the eight lanes. (A loop, not
 /// `array::from_fn`: that was left as a call, compiled without the caller's SSE4.1.)
 #[inline(always)]
-fn each<T: Copy + Default>(mut f: impl FnMut(usize) -> T) -> [T; LANES] {
-    let mut out = [T::default(); LANES];
+fn each<T: Copy + Default>(f: impl FnMut(usize) -> T) -> [T; LANES] {
+    each_n(f)
+}
+
+/// `[f(0), f(1), ..., f(N - 1)]`: [`each`] over `N` lanes.
+#[inline(always)]
+fn each_n<T: Copy + Default, const N: usize>(mut f: impl FnMut(usize) -> T) -> [T; N] {
+    let mut out = [T::default(); N];
     for (k, o) in out.iter_mut().enumerate() {
         *o = f(k);
     }
@@ -114,7 +127,8 @@ pub(super) fn draw(
         return;
     }
     let _ = sse41;
-    draw_body(rasterizer, tri, rows, sampler, mode, target);
+    let floor = VectorFloor(cfg!(target_arch = "aarch64"));
+    draw_body(rasterizer, tri, rows, sampler, mode, target, floor);
 }
 
 /// [`draw`] compiled with SSE4.1.
@@ -128,7 +142,15 @@ fn draw_sse41(
     mode: Interpolation,
     target: &mut Target<'_>,
 ) {
-    draw_body(rasterizer, tri, rows, sampler, mode, target);
+    draw_body(
+        rasterizer,
+        tri,
+        rows,
+        sampler,
+        mode,
+        target,
+        VectorFloor(true),
+    );
 }
 
 /// Both rasterizers' lanes, inlined into each build of [`draw`].
@@ -140,17 +162,19 @@ fn draw_body(
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
+    floor: VectorFloor,
 ) {
     match rasterizer {
-        Rasterizer::EdgeFunction => edge_body(tri, rows, sampler, mode, target),
-        Rasterizer::Scanline => scanline_body(tri, rows, sampler, mode, target),
+        Rasterizer::EdgeFunction => edge_body(tri, rows, sampler, mode, target, floor),
+        Rasterizer::Scanline => scanline_body(tri, rows, sampler, mode, target, floor),
     }
 }
 
 /// The edge-function lanes: blocks rejected, accepted or tested as in the scalar lane code,
 /// then per row chunk the scalar code's operations, lane by lane: the edge values, the
-/// screen weights ([`row_weights`]), `interpolate::fragment`'s uv and depth ([`from_weights`]),
-/// the texture lookup, the depth test and the write.
+/// screen weights (`WeightPlanes::weight`, its column terms made once per block), then
+/// `interpolate::fragment`'s uv and depth ([`interpolate_half`], four lanes at a time), the
+/// texture lookup, the depth test and the write.
 #[inline(always)]
 fn edge_body(
     tri: &LaneTriangle,
@@ -158,17 +182,23 @@ fn edge_body(
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
+    floor: VectorFloor,
 ) {
     let planes = &tri.planes;
     let consts = &tri.consts;
+    let weights = &consts.weights;
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let a = three(|i| planes.a[i] as f64);
     let t = three(|i| planes.t[i] as f64);
     let inf = Inf::new();
     for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
         let (bx, lanes_in) = (block.x, block.lanes_in);
+        let in_row: Mask64 = each(|k| mask64(k < lanes_in));
+        // `d_y (P_x - S_x)` of each weight at the block's columns: the same in all its rows.
+        let px: F64s = each(|k| (f64::from(bx) + OFFSETS[k]) + 0.5);
+        let columns = |h: usize| three(|i| each_n(|k| weights.column_term(i, px[h + k])));
+        let columns: [[Half64; 3]; 2] = [columns(0), columns(HALF)];
         for y in block.rows.0..=block.rows.1 {
-            let in_row: Mask64 = each(|k| mask64(k < lanes_in));
             let covered: Mask64 = if block.kind == Block::Inside {
                 in_row
             } else {
@@ -181,50 +211,87 @@ fn edge_body(
             if covered.iter().fold(0, |m, &c| m | c) == 0 {
                 continue;
             }
-            let (u, v, depth, ok) =
-                from_weights(&row_weights(&consts.weights, bx, y), consts, mode, inf);
-            let ok = each(|k| ok[k] & covered[k]);
-            let rgba = sampler.sample_packed(&u, &v, inf);
+            let py = f64::from(y) + 0.5;
+            let rows = three(|i| weights.row_term(i, py));
+            let lo = interpolate_half(&columns[0], &rows, consts, mode, inf);
+            let hi = interpolate_half(&columns[1], &rows, consts, mode, inf);
+            let join = |a: &[f32; HALF], b: &[f32; HALF]| -> F32s {
+                each(|k| if k < HALF { a[k] } else { b[k - HALF] })
+            };
+            let (u, v, depth) = (join(&lo.0, &hi.0), join(&lo.1, &hi.1), join(&lo.2, &hi.2));
+            let ok: Mask64 = each(|k| {
+                let valid = if k < HALF { lo.3[k] } else { hi.3[k - HALF] };
+                valid & covered[k]
+            });
+            let rgba = sampler.sample_packed(&u, &v, inf, floor);
             write(target, bx, y, &ok, &depth, &rgba);
         }
     }
 }
 
-/// [`super::row_weights`], one operation over all lanes at a time.
-#[inline(always)]
-fn row_weights(w: &WeightPlanes, x: u32, y: u32) -> [F64s; 3] {
-    let py = f64::from(y) + 0.5;
-    let px: F64s = each(|k| (f64::from(x) + OFFSETS[k]) + 0.5);
-    three(|i| {
-        let row = w.row_term(i, py);
-        each(|k| w.weight(i, row, px[k]))
-    })
-}
+/// Half of a row chunk's lanes: the edge-function interpolation runs over four lanes at a
+/// time, so that its quantities (two 128-bit registers each) fit the sixteen registers of
+/// SSE; over eight, they were spilled to the stack about as often as they were computed.
+const HALF: usize = LANES / 2;
+/// Four `f64` lanes.
+type Half64 = [f64; HALF];
+/// Four `f32` lanes.
+type Half32 = [f32; HALF];
 
-/// uv, depth and validity of eight samples from their screen weights, as [`super::from_weights`]
-/// computes them for texture shading: `q_i = l_i / w_i`, valid where `sum q` is positive and
-/// finite, `uv = sum w_i uv_i` with the mode's weights, `depth = sum l_i d_i`.
+/// uv, depth and validity of four samples from the column terms of their screen weights and
+/// the row's row terms, as [`super::from_weights`] computes them for texture shading:
+/// `l_i = (row_i - column_i) / area2` (`WeightPlanes::weight`), `q_i = l_i / w_i`, valid
+/// where `sum q` is positive and finite, `uv = sum w_i uv_i` with the mode's weights
+/// (`l_i`, or `q_i / sum q`), `depth = sum l_i d_i`, every sum left to right. The sums are
+/// accumulated weight by weight, in that order, so that fewer quantities are live at once.
 #[inline(always)]
-fn from_weights(
-    l: &[F64s; 3],
+fn interpolate_half(
+    columns: &[Half64; 3],
+    rows: &[f64; 3],
     c: &Constants,
     mode: Interpolation,
     inf: Inf,
-) -> (F32s, F32s, F32s, Mask64) {
-    let q = three(|i| each(|k| l[i][k] * c.inv_w[i]));
-    let sum: F64s = each(|k| q[0][k] + q[1][k] + q[2][k]);
-    let ok = positive_finite(&sum, inf);
-    let w = match mode {
-        Interpolation::Perspective => {
-            let inv: F64s = each(|k| 1.0 / sum[k]);
-            three(|i| each(|k| q[i][k] * inv[k]))
+) -> (Half32, Half32, Half32, [i64; HALF]) {
+    let weights = &c.weights;
+    let l = |i: usize| -> Half64 { each_n(|k| weights.weight_of_terms(rows[i], columns[i][k])) };
+    let to_f32 = |x: &Half64| -> Half32 { each_n(|k| x[k] as f32) };
+    // `x_0 w_0 + x_1 w_1 + x_2 w_2`, the terms added as they come.
+    let term = |w: &Half64, x: f64| -> Half64 { each_n(|k| w[k] * x) };
+    let add = |s: &Half64, w: &Half64, x: f64| -> Half64 { each_n(|k| s[k] + w[k] * x) };
+    let l0 = l(0);
+    let q0 = term(&l0, c.inv_w[0]);
+    let mut depth = term(&l0, c.depth[0]);
+    match mode {
+        Interpolation::Affine => {
+            let (mut u, mut v) = (term(&l0, c.u[0]), term(&l0, c.v[0]));
+            let mut sum = q0;
+            for i in 1..3 {
+                let li = l(i);
+                sum = add(&sum, &li, c.inv_w[i]);
+                depth = add(&depth, &li, c.depth[i]);
+                u = add(&u, &li, c.u[i]);
+                v = add(&v, &li, c.v[i]);
+            }
+            let ok = positive_finite(&sum, inf);
+            (to_f32(&u), to_f32(&v), to_f32(&depth), ok)
         }
-        Interpolation::Affine => *l,
-    };
-    let dot = |w: &[F64s; 3], x: &[f64; 3]| -> F32s {
-        each(|k| (w[0][k] * x[0] + w[1][k] * x[1] + w[2][k] * x[2]) as f32)
-    };
-    (dot(&w, &c.u), dot(&w, &c.v), dot(l, &c.depth), ok)
+        Interpolation::Perspective => {
+            let mut q = [q0; 3];
+            for i in 1..3 {
+                let li = l(i);
+                q[i] = term(&li, c.inv_w[i]);
+                depth = add(&depth, &li, c.depth[i]);
+            }
+            let sum: Half64 = each_n(|k| q[0][k] + q[1][k] + q[2][k]);
+            let ok = positive_finite(&sum, inf);
+            let inv: Half64 = each_n(|k| 1.0 / sum[k]);
+            let w: [Half64; 3] = three(|i| each_n(|k| q[i][k] * inv[k]));
+            let dot = |x: &[f64; 3]| -> Half32 {
+                each_n(|k| (w[0][k] * x[0] + w[1][k] * x[1] + w[2][k] * x[2]) as f32)
+            };
+            (dot(&c.u), dot(&c.v), to_f32(&depth), ok)
+        }
+    }
 }
 
 /// The scanline lanes: the scalar code's spans, start values and single steps (the same
@@ -237,6 +304,7 @@ fn scanline_body(
     sampler: &Sampler<'_>,
     mode: Interpolation,
     target: &mut Target<'_>,
+    floor: VectorFloor,
 ) {
     let consts = &tri.consts;
     let step = Stepped::row_step(consts, mode);
@@ -268,7 +336,7 @@ fn scanline_body(
                 Interpolation::Affine => (each(|k| u[k] as f32), each(|k| v[k] as f32)),
             };
             let d: F32s = each(|k| depth[k] as f32);
-            let rgba = sampler.sample_packed(&uf, &vf, inf);
+            let rgba = sampler.sample_packed(&uf, &vf, inf, floor);
             write(target, x, y, &ok, &d, &rgba);
             u = each(|k| u[k] + su);
             v = each(|k| v[k] + sv);
@@ -281,31 +349,32 @@ fn scanline_body(
 
 /// The lanes of `x` that are positive and finite (`x > 0 && x < inf`: NaN fails).
 #[inline(always)]
-fn positive_finite(x: &F64s, inf: Inf) -> Mask64 {
-    let above = each(|k| mask64(x[k] > 0.0));
-    let below = each(|k| mask64(x[k] < inf.0));
-    each(|k| above[k] & below[k])
+fn positive_finite<const N: usize>(x: &[f64; N], inf: Inf) -> [i64; N] {
+    let above: [i64; N] = each_n(|k| mask64(x[k] > 0.0));
+    let below: [i64; N] = each_n(|k| mask64(x[k] < inf.0));
+    each_n(|k| above[k] & below[k])
 }
 
 /// Depth-tests and writes the lanes of `ok` of one row chunk from column `x` of row `y`
 /// ([`depth_passes`]: an ordered less-than), as the scalar [`write`](super::write) does
-/// for colour and depth. Eight lanes inside the row are read and written whole, with the
-/// failing lanes keeping their values (the band's rows belong to this thread only).
+/// for colour and depth. Eight lanes inside the band are read and written whole, with the
+/// lanes not in `ok` or failing the test keeping their values (the band's rows belong to
+/// this thread only; lanes past the row's end are pixels of the next row, rewritten as they
+/// were); only a chunk running past the band's end is written lane by lane.
 #[inline(always)]
 fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask64, depth: &F32s, rgba: &Rgba) {
     let i = (y - target.y0) as usize * target.width as usize + x as usize;
     let ok: Mask32 = each(|k| ok[k] as i32);
-    if ok.iter().fold(-1, |m, &o| m & o) != 0
-        && let Some((d, _)) = target
-            .depth
-            .get_mut(i..)
-            .and_then(|s| s.split_first_chunk_mut::<LANES>())
+    if let Some((d, _)) = target
+        .depth
+        .get_mut(i..)
+        .and_then(|s| s.split_first_chunk_mut::<LANES>())
         && let Some((c, _)) = target
             .color
             .get_mut(i..)
             .and_then(|s| s.split_first_chunk_mut::<LANES>())
     {
-        let pass: Mask32 = each(|k| mask32(depth_passes(depth[k], d[k])));
+        let pass: Mask32 = each(|k| ok[k] & mask32(depth_passes(depth[k], d[k])));
         let old: [u32; LANES] = each(|k| d[k].to_bits());
         *d = each(|k| f32::from_bits(select(pass[k], depth[k].to_bits(), old[k])));
         let old: Rgba = each(|k| u32::from_le_bytes(c[k]));

@@ -5,7 +5,7 @@
 
 use super::super::sampler::{LaneWrap, Sampler};
 use super::super::texture::Filter;
-use super::{F32s, I32s, Inf, LANES, Rgba, each, mask32};
+use super::{F32s, I32s, Inf, LANES, Rgba, VectorFloor, each, mask32};
 
 /// Texel indices of eight lanes (`j * width + i`).
 type Indices = [u32; LANES];
@@ -28,13 +28,21 @@ fn trunc(x: f32) -> i32 {
 /// truncation is above it (a negative non-integer, so below 2^23 in magnitude: `t - 1` is
 /// exact in `f32`), and the index converted back: exact, since an index beyond 2^24 is the
 /// coordinate itself (an `f32` that large is an integer). One conversion each way, where
-/// `fast_floor` then `as i32` take two to the integer.
+/// `fast_floor` then `as i32` take two to the integer. With a vector floor instruction
+/// ([`VectorFloor`]) the floor is that instruction and its truncation (the same values: the
+/// floor of a clamped coordinate is an integer within +-1e9, exact both ways; a coordinate of
+/// -0 keeps its sign as the floor, which only `fraction` reads, where a bilinear coordinate
+/// `u w - 1/2` is never -0).
 #[inline(always)]
-fn floor_coord(x: &F32s) -> (I32s, F32s) {
+fn floor_coord(x: &F32s, floor: VectorFloor) -> (I32s, F32s) {
     let xc: F32s = each(|k| {
         let c = x[k].clamp(-MAX_TEXEL_COORD, MAX_TEXEL_COORD);
         if c.is_nan() { 0.0 } else { c }
     });
+    if floor.0 {
+        let f: F32s = each(|k| xc[k].floor());
+        return (each(|k| trunc(f[k])), f);
+    }
     let t: I32s = each(|k| trunc(xc[k]));
     let i: I32s = each(|k| t[k] + mask32(t[k] as f32 > xc[k]));
     (i, each(|k| i[k] as f32))
@@ -148,20 +156,20 @@ impl Sampler<'_> {
     /// The packed RGBA8 colours (red in the low byte) at eight uv, as [`Sampler::sample`]
     /// gives them.
     #[inline(always)]
-    pub(super) fn sample_packed(&self, u: &F32s, v: &F32s, inf: Inf) -> Rgba {
+    pub(super) fn sample_packed(&self, u: &F32s, v: &F32s, inf: Inf, floor: VectorFloor) -> Rgba {
         let (w, h) = self.size;
         match self.filter {
             // One texel of weight 1: the colour is the texel (see the parent module).
             Filter::Nearest => {
-                let i = wrap(&floor_coord(&each(|k| u[k] * w)).0, self.wrap.0);
-                let j = wrap(&floor_coord(&each(|k| v[k] * h)).0, self.wrap.1);
+                let i = wrap(&floor_coord(&each(|k| u[k] * w), floor).0, self.wrap.0);
+                let j = wrap(&floor_coord(&each(|k| v[k] * h), floor).0, self.wrap.1);
                 self.fetch(&self.index(&i, &j))
             }
             _ => {
                 let x = each(|k| u[k] * w - 0.5);
                 let y = each(|k| v[k] * h - 0.5);
-                let (i0, fx) = floor_coord(&x);
-                let (j0, fy) = floor_coord(&y);
+                let (i0, fx) = floor_coord(&x, floor);
+                let (j0, fy) = floor_coord(&y, floor);
                 let (a, b) = (fraction(&x, &fx, inf), fraction(&y, &fy, inf));
                 let (ia, ib) = (
                     wrap(&i0, self.wrap.0),
