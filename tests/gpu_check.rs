@@ -117,6 +117,11 @@ fn sample_scenes_agree_with_llvmpipe_on_coverage() {
             let gpu_clips = named("corner-behind") || named("far-checker");
             let (uv_bound, colour_bound) = if mode == "affine" && gpu_clips {
                 (4.0, 255)
+            } else if named("far-checker-anisotropic") {
+                // llvmpipe's anisotropic filter is an elliptical weighted average, not the
+                // specification's N probes barylab draws (measured p99.9 47, largest 55;
+                // tests/llvmpipe_mipmaps.rs compares their levels and sharpness).
+                (1e-4, 64)
             } else if named("far-checker") {
                 (1e-4, 3)
             } else if named("spot") {

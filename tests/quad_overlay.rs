@@ -124,3 +124,41 @@ fn without_a_level_of_detail_there_is_no_quad() {
         "no quad labels in {texts:?}"
     );
 }
+
+/// The four labels sit as the quad's pixels do, in two rows on one side of the quad (above
+/// it in the image's lower half, below it in the upper half): `uv_0j` left of the quad's
+/// centre, `uv_1j` right of it, row 0 over row 1.
+#[test]
+fn the_quad_labels_sit_in_two_rows_on_the_roomier_side() {
+    let scene = far_checker(Filter::Trilinear);
+    let texture = scene.load_texture(Path::new("")).expect("texture");
+    for (pin, up) in [([240, 290], true), ([240, 160], true), ([240, 140], false)] {
+        let options = FigureOptions {
+            pinned: Some(pin),
+            ..FigureOptions::default()
+        };
+        let fig = Figure::compose(&scene, &texture, &options).expect("figure");
+        let mut offsets = [None; 4];
+        for s in &fig.views[0].overlay.shapes {
+            if let Shape::Text {
+                text, at, offset, ..
+            } = s
+                && let Some(ij) = text.strip_prefix("uv_")
+            {
+                let k =
+                    usize::from(ij.as_bytes()[0] - b'0') + 2 * usize::from(ij.as_bytes()[1] - b'0');
+                let centre = DVec2::new(f64::from(pin[0] & !1) + 1.0, f64::from(pin[1] & !1));
+                assert_eq!(at.x, centre.x, "{text}: centred on the quad");
+                offsets[k] = Some(*offset);
+            }
+        }
+        let o = offsets.map(|o| o.expect("four quad labels"));
+        for k in 0..4 {
+            assert_eq!(o[k][0] < 0.0, k % 2 == 0, "{pin:?} uv {k}: {o:?}");
+            assert_eq!(o[k][1] < 0.0, up, "{pin:?} uv {k}: {o:?}");
+        }
+        // Row 0 over row 1, the two labels of a row level.
+        assert!(o[0][1] < o[2][1] && o[1][1] < o[3][1], "{pin:?}: {o:?}");
+        assert_eq!((o[0][1], o[2][1]), (o[1][1], o[3][1]));
+    }
+}

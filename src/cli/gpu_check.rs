@@ -248,6 +248,9 @@ fn text(r: &Report, lang: Lang) -> String {
                 ("at", &at(s.max_uv_at)),
             ],
         ));
+        if let Some(l) = &s.lod {
+            lines.extend(l.lines(&r.renderer, lang));
+        }
         if let Some(c) = &s.samples {
             lines.extend(sample_lines(c, lang));
         }

@@ -70,12 +70,20 @@ pub fn lod_per_pixel(
     texture: &Texture,
     settings: &RenderSettings,
 ) -> Result<Vec<f32>, FigureError> {
-    let mesh = scene.to_mesh();
-    let frame = render::render(&mesh, texture, settings)
+    lod_per_pixel_of_mesh(&scene.to_mesh(), texture, settings)
+}
+
+/// [`lod_per_pixel`] for a clip-space mesh (the GPU check's, rounded to f32).
+pub fn lod_per_pixel_of_mesh(
+    mesh: &crate::raster::ClipMesh,
+    texture: &Texture,
+    settings: &RenderSettings,
+) -> Result<Vec<f32>, FigureError> {
+    let frame = render::render(mesh, texture, settings)
         .map_err(|e| FigureError::Draw(e.to_string()))?
         .frame;
     let triangles =
-        render::prepare_triangles(&mesh, settings).map_err(|e| FigureError::Draw(e.to_string()))?;
+        render::prepare_triangles(mesh, settings).map_err(|e| FigureError::Draw(e.to_string()))?;
     let size = (texture.width(), texture.height());
     let (w, h) = (frame.width, frame.height);
     let mut out = Vec::new();

@@ -12,7 +12,7 @@ use crate::raster::sample::{SampleCount, SampleOverride, SamplePattern, SampleSe
 use crate::raster::setup::TieRule;
 use crate::raster::{
     BuiltinTexture, ClipMesh, Filter, Interpolation, MeshVertex, NO_TRIANGLE, RenderSettings,
-    Shading, Texture,
+    Shading, Texture, texture::MaxAnisotropy,
 };
 
 /// Mismatched pixels listed in a report (all are counted).
@@ -42,7 +42,7 @@ pub struct SceneCheck {
     pub height: u32,
     /// `affine` or `perspective`.
     pub mode: &'static str,
-    /// The filter compared: `nearest` or `bilinear` (trilinear is compared as bilinear).
+    /// The filter compared: `nearest`, `bilinear` or `trilinear`.
     pub filter: &'static str,
     /// What the colours show: `texture` or `vertex_color`.
     pub output: &'static str,
@@ -72,6 +72,10 @@ pub struct SceneCheck {
     /// `[x, y]` of the first pixel (in row order) with `max_uv_difference`; `None` when it
     /// is 0.
     pub max_uv_at: Option<[u32; 2]>,
+    /// With trilinear (or anisotropic) filtering of the texture: the level of detail the GL
+    /// used against barylab's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lod: Option<super::lod_check::LodCheck>,
     /// The multisampled draw, sample by sample, when the settings ask for more than one
     /// sample or for `flat` (the pixel fields above then compare one sample at the centre).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -87,8 +91,9 @@ pub struct SceneCheck {
 pub enum Note {
     /// A shading the GPU check does not draw: vertex colours are compared instead.
     Shading(Shading),
-    /// Trilinear filtering, compared as bilinear (no mipmaps on the GPU).
-    Trilinear,
+    /// Anisotropic filtering the GL does not offer (no EXT_texture_filter_anisotropic):
+    /// trilinear compared.
+    NoAnisotropy,
     /// The wireframe overlay, left out.
     Wireframe,
     /// A sample pattern the GL cannot place (the grid): the samples are not compared.
@@ -103,7 +108,7 @@ impl Note {
                 "compare.gpu_check.note_shading",
                 &[("shading", &crate::probe::format::shading_name(lang, s))],
             ),
-            Note::Trilinear => lang.tr("compare.gpu_check.note_trilinear"),
+            Note::NoAnisotropy => lang.tr("compare.gpu_check.note_no_anisotropy"),
             Note::Wireframe => lang.tr("compare.gpu_check.note_wireframe"),
             Note::SamplePattern => lang.tr("compare.gpu_check.note_sample_pattern"),
         }
@@ -170,9 +175,18 @@ pub fn check_mesh(
             Output::VertexColor
         }
     };
-    if settings.filter == Filter::Trilinear && output == Output::Texture {
-        notes.push(Note::Trilinear);
-        settings.filter = Filter::Bilinear;
+    let mipmapped = settings.filter == Filter::Trilinear && output == Output::Texture;
+    if mipmapped && settings.max_anisotropy.is_on() {
+        match gpu.max_anisotropy() {
+            None => {
+                notes.push(Note::NoAnisotropy);
+                settings.max_anisotropy = MaxAnisotropy::default();
+            }
+            Some(max) => {
+                let n = settings.max_anisotropy.get().min(max as u32).max(1);
+                settings.max_anisotropy = MaxAnisotropy::new(n).unwrap_or_default();
+            }
+        }
     }
     if settings.wireframe {
         notes.push(Note::Wireframe);
@@ -224,6 +238,7 @@ pub fn check_mesh(
         color_differing: 0,
         max_uv_difference: 0.0,
         max_uv_at: None,
+        lod: None,
         samples,
         notes,
     };
@@ -274,6 +289,17 @@ pub fn check_mesh(
         }
     }
     c.p999_color_difference = percentile(&histogram, both, 0.999);
+    if mipmapped {
+        let lod = super::lod_check::check_lod(
+            gpu,
+            &mesh,
+            texture,
+            &settings,
+            (&f.triangle, &f.color),
+            &colors,
+        )?;
+        c.lod = Some(lod);
+    }
     Ok(c)
 }
 

@@ -111,8 +111,10 @@ impl Gpu {
                 "the OpenGL context is {version}; the GPU view needs OpenGL 3.3 (not OpenGL ES)"
             ));
         }
+        let max_anisotropy = mipmaps::query_max_anisotropy(&gl);
         Ok(Self {
             egl,
+            max_anisotropy,
             gl,
             vendor,
             renderer,

@@ -8,6 +8,8 @@
 pub mod check;
 mod compare;
 mod context;
+pub mod lod_check;
+mod mipmaps;
 pub mod multisample;
 pub mod sample_check;
 mod scene;
@@ -16,6 +18,7 @@ pub mod view;
 
 pub use compare::*;
 pub use context::force_llvmpipe_env;
+pub use mipmaps::GlLevel;
 pub use scene::{GlScene, mesh_at_f32};
 
 use std::sync::Arc;
@@ -53,6 +56,8 @@ pub struct Gpu {
     /// `Gpu` is dropped (a scene changing every frame, as in the app, does not recompile).
     programs: Vec<glow::Program>,
     objects: Option<Objects>,
+    /// GL_MAX_TEXTURE_MAX_ANISOTROPY when the context offers anisotropic filtering.
+    max_anisotropy: Option<f32>,
 }
 
 /// A headless EGL display and the context made current on it.
@@ -70,6 +75,12 @@ struct Objects {
     vao: glow::VertexArray,
     buffers: [glow::Buffer; 2],
     texture: glow::Texture,
+    /// Each mipmap level's size, level 0 first.
+    level_sizes: Vec<(u32, u32)>,
+    /// The texture's GL wrap mode.
+    wrap: i32,
+    /// The scene's largest anisotropy (1 = off), used with trilinear filtering.
+    anisotropy: u32,
     fbo: glow::Framebuffer,
     renderbuffers: [glow::Renderbuffer; 2],
     /// The RGBA32F framebuffer of [`Output::Values`].
@@ -151,17 +162,21 @@ impl Gpu {
         texture: &crate::raster::Texture,
         settings: &crate::raster::RenderSettings,
     ) -> Result<(), String> {
-        self.load(&GlScene::new(
-            &mesh_at_f32(mesh),
-            texture,
-            settings.width,
-            settings.height,
-            settings.wrap,
-            settings.background,
-        ))
+        self.load(
+            &GlScene::new(
+                &mesh_at_f32(mesh),
+                texture,
+                settings.width,
+                settings.height,
+                settings.wrap,
+                settings.background,
+            )
+            .with_anisotropy(settings.max_anisotropy.get()),
+        )
     }
 
-    /// Uploads a scene: vertex and index buffers, the texture (RGBA8, no mipmaps), and a
+    /// Uploads a scene: vertex and index buffers, the texture (RGBA8, with barylab's mipmap
+    /// levels), and a
     /// `width x height` RGBA8 framebuffer with a 32-bit float depth buffer.
     pub fn load(&mut self, scene: &GlScene) -> Result<(), String> {
         self.unload();
@@ -215,7 +230,7 @@ impl Gpu {
                 glow::UNSIGNED_BYTE,
                 glow::PixelUnpackData::Slice(Some(&scene.texels)),
             );
-            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);
+            mipmaps::upload_levels(gl, &scene.levels);
             let wrap = match scene.wrap {
                 Wrap::Repeat => glow::REPEAT,
                 Wrap::ClampToEdge => glow::CLAMP_TO_EDGE,
@@ -247,6 +262,11 @@ impl Gpu {
                 vao,
                 buffers: [vbo, ibo],
                 texture,
+                level_sizes: std::iter::once((scene.texture_width, scene.texture_height))
+                    .chain(scene.levels.iter().map(|l| (l.width, l.height)))
+                    .collect(),
+                wrap,
+                anisotropy: scene.max_anisotropy,
                 fbo,
                 renderbuffers: [color, depth],
                 values_fbo,
@@ -357,11 +377,6 @@ impl Gpu {
     pub fn clear(&self, output: Output, filter: Filter, mode: Interpolation) -> Result<(), String> {
         let o = self.objects.as_ref().ok_or("no scene loaded")?;
         let gl = &self.gl;
-        let f = match filter {
-            Filter::Nearest => glow::NEAREST,
-            Filter::Bilinear => glow::LINEAR,
-            Filter::Trilinear => return Err("trilinear needs mipmaps; not compared".into()),
-        } as i32;
         let bg = if matches!(output, Output::TriangleId | Output::Values) {
             [0.0; 4]
         } else {
@@ -389,8 +404,7 @@ impl Gpu {
             gl.bind_vertex_array(Some(o.vao));
             gl.active_texture(glow::TEXTURE0);
             gl.bind_texture(glow::TEXTURE_2D, Some(o.texture));
-            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, f);
-            gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, f);
+            self.set_filter(filter, o.anisotropy);
             gl.use_program(Some(self.programs[program_index(output, mode)]));
             gl.clear_color(bg[0], bg[1], bg[2], bg[3]);
             gl.clear_depth_f64(1.0);

@@ -18,6 +18,11 @@ pub struct GlScene {
     pub texture_height: u32,
     /// RGBA8, row 0 first (t = 0, barylab's texel row 0).
     pub texels: Vec<u8>,
+    /// Mipmap levels 1, 2, ... down to 1x1: barylab's own (the texels its trilinear filter
+    /// reads).
+    pub levels: Vec<super::GlLevel>,
+    /// The largest anisotropy for trilinear filtering (1 = off).
+    pub max_anisotropy: u32,
     /// Texture wrap mode.
     pub wrap: Wrap,
     /// Clear colour, RGBA8.
@@ -51,12 +56,10 @@ impl GlScene {
                 ]
             })
             .collect();
-        let mut texels = Vec::with_capacity((texture.width() * texture.height() * 4) as usize);
-        for j in 0..texture.height() {
-            for i in 0..texture.width() {
-                texels.extend_from_slice(&texture.texel(i, j));
-            }
-        }
+        let texels = super::mipmaps::level_bytes(texture, 0).texels;
+        let levels = (1..texture.levels())
+            .map(|k| super::mipmaps::level_bytes(texture, k))
+            .collect();
         Self {
             width,
             height,
@@ -65,8 +68,18 @@ impl GlScene {
             texture_width: texture.width(),
             texture_height: texture.height(),
             texels,
+            levels,
+            max_anisotropy: 1,
             wrap,
             background,
+        }
+    }
+
+    /// The scene with anisotropic filtering up to `n` (1 = off) for trilinear lookups.
+    pub fn with_anisotropy(self, n: u32) -> Self {
+        Self {
+            max_anisotropy: n,
+            ..self
         }
     }
 }

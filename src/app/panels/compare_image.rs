@@ -466,6 +466,8 @@ impl Work {
             diff: image_diff,
             notes: Vec::new(),
             samples: None,
+            #[cfg(feature = "gpu")]
+            lod: None,
         };
         let held = Held {
             scene: self.scene,

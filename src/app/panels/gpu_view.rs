@@ -40,8 +40,8 @@ pub enum Unavailable {
 pub enum Note {
     /// A shading the GPU shader lacks, compared as vertex colours.
     Shading(Shading),
-    /// Trilinear compared as bilinear (no mipmaps on the GPU side).
-    Trilinear,
+    /// Anisotropic filtering the GL does not offer: both drawn trilinear.
+    NoAnisotropy,
     /// The wireframe overlay left out.
     Wireframe,
     /// GAMES101's sample grid (the GL places only its own positions): both sides drawn with
@@ -62,6 +62,10 @@ pub struct GpuResult {
     /// With several samples per pixel: the per-sample comparison
     /// ([`crate::app::panels::gpu_samples`]).
     pub samples: Option<crate::app::panels::gpu_samples::SamplesSummary>,
+    /// With trilinear (or anisotropic) filtering: the GL's level of detail against
+    /// barylab's.
+    #[cfg(feature = "gpu")]
+    pub lod: Option<crate::gpu::lod_check::LodCheck>,
 }
 
 /// OpenGL's strings: GL_VENDOR, GL_RENDERER, GL_VERSION.
@@ -182,6 +186,12 @@ impl GpuView {
             Ok(result) => {
                 if self.print_summary {
                     println!("gpu view: {}", result.diff.summary_en());
+                    #[cfg(feature = "gpu")]
+                    if let Some(l) = &result.lod {
+                        let renderer = self.info.as_ref().map_or("", |i| i.renderer.as_str());
+                        let text: Vec<String> = l.lines(renderer, Lang::En);
+                        println!("gpu view lod: {}", text.join(" "));
+                    }
                     if let Some(samples) = &result.samples {
                         let lines =
                             crate::app::panels::gpu_samples::summary_lines(samples, Lang::En);
@@ -243,7 +253,13 @@ impl GpuView {
             self.gpu = Some(gpu);
         }
         let gpu = self.gpu.as_mut().ok_or(Unavailable::NoContext)?;
-        let (settings, output, notes) = gpu_settings(out.scene.settings(), mode);
+        let (mut settings, output, mut notes) = gpu_settings(out.scene.settings(), mode);
+        let mipmapped =
+            output == Output::Texture && settings.filter == crate::raster::Filter::Trilinear;
+        if mipmapped && settings.max_anisotropy.is_on() && gpu.max_anisotropy().is_none() {
+            notes.push(Note::NoAnisotropy);
+            settings.max_anisotropy = Default::default();
+        }
         let mesh = mesh_at_f32(&out.scene.to_mesh());
         if settings.samples.uses_sample_path() {
             let (ours, gpu_image, diff, summary) =
@@ -255,6 +271,7 @@ impl GpuView {
                 diff,
                 notes,
                 samples: Some(summary),
+                lod: None,
             });
         }
         // Colour, depth and the owning triangle (the fast path draws them).
@@ -270,19 +287,27 @@ impl GpuView {
         let colors = gpu.render(output, settings.filter, mode).map_err(gl_err)?;
         let diff =
             crate::gpu::view::image_diff(settings.width, &f.triangle, &f.color, &ids, &colors);
+        let lod = if mipmapped {
+            let ours = (&f.triangle[..], &f.color[..]);
+            let l = crate::gpu::lod_check::check_lod(gpu, &mesh, texture, &settings, ours, &colors);
+            Some(l.map_err(gl_err)?)
+        } else {
+            None
+        };
         Ok(GpuResult {
             ours: f.color,
             gpu: colors,
             diff,
             notes,
             samples: None,
+            lod,
         })
     }
 }
 
 /// The settings the GPU draws with, its shader output, and what differs from the scene's
 /// own settings: shadings other than texture and vertex colour become vertex colour,
-/// trilinear becomes bilinear, no wireframe (as `gpu::check` does).
+/// no wireframe (as `gpu::check` does).
 #[cfg(feature = "gpu")]
 fn gpu_settings(
     mut s: crate::raster::RenderSettings,
@@ -301,10 +326,6 @@ fn gpu_settings(
             Output::VertexColor
         }
     };
-    if output == Output::Texture && s.filter == Filter::Trilinear {
-        notes.push(Note::Trilinear);
-        s.filter = Filter::Bilinear;
-    }
     if output == Output::VertexColor {
         s.filter = Filter::Nearest;
     }
@@ -359,7 +380,7 @@ fn note_text(note: Note, lang: Lang) -> String {
             };
             lang.tr_with("gpu_view.note_shading", &[("shading", &lang.tr(key))])
         }
-        Note::Trilinear => lang.tr("gpu_view.note_trilinear"),
+        Note::NoAnisotropy => lang.tr("gpu_view.note_no_anisotropy"),
         Note::Wireframe => lang.tr("gpu_view.note_wireframe"),
         Note::Samples => lang.tr("gpu_view.note_samples"),
     }
@@ -419,6 +440,13 @@ fn strip_contents(ui: &mut Ui, view: &GpuView, compare: Compare) -> Vec<StateCom
     });
     if let Some(s) = &r.samples {
         crate::app::panels::gpu_samples::summary_ui(ui, s);
+    }
+    #[cfg(feature = "gpu")]
+    if let Some(l) = &r.lod {
+        let renderer = view.info.as_ref().map_or("", |i| i.renderer.as_str());
+        for line in l.lines(renderer, lang) {
+            ui.add(egui::Label::new(RichText::new(line.trim_start()).small()).wrap());
+        }
     }
     if let Some(info) = &view.info {
         ui.add(

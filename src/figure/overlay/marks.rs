@@ -120,11 +120,24 @@ const QUAD: Rgba = [255, 220, 60, 255];
 /// Points: the quad's uv labels (four of them: smaller than the other labels).
 const TEXT_QUAD: f32 = 13.0;
 
-/// The 2x2 quad a pixel's texture derivatives come from: its outline, and each pixel's uv
-/// beside the quad's corner at that pixel (outwards, so the four labels never cover the
-/// quad) and named `uv_ij` for pixel `(x0 + i, y0 + j)`, "helper" on a pixel outside the
-/// triangle (its uv extrapolated).
-pub(super) fn quad_shapes(shapes: &mut Vec<Shape>, q: &QuadMark, lang: crate::i18n::Lang) {
+/// Points between the quad and its labels.
+const QUAD_LABEL_GAP: f32 = 8.0;
+/// Points from one quad label to the next in their column (a label's box is about 22 points
+/// tall at [`TEXT_QUAD`]).
+const QUAD_LABEL_STEP: f32 = 24.0;
+
+/// The 2x2 quad a pixel's texture derivatives come from: its outline, and the four pixels'
+/// uvs, named `uv_ij` for pixel `(x0 + i, y0 + j)` ("helper" on a pixel outside the triangle,
+/// its uv extrapolated), in two rows of two as the pixels sit (`uv_00 uv_10` over
+/// `uv_01 uv_11`), both rows above the quad in the lower half of the image (`size`, in
+/// pixels), else below it. Labels at all four corners of a quad two pixels wide get pushed
+/// off the image's edge onto each other on a small picture.
+pub(super) fn quad_shapes(
+    shapes: &mut Vec<Shape>,
+    q: &QuadMark,
+    size: DVec2,
+    lang: crate::i18n::Lang,
+) {
     let o = DVec2::new(f64::from(q.origin[0]), f64::from(q.origin[1]));
     for (width, col) in [(5.0, SHADOW), (2.5, QUAD)] {
         shapes.push(Shape::Rect {
@@ -134,15 +147,23 @@ pub(super) fn quad_shapes(shapes: &mut Vec<Shape>, q: &QuadMark, lang: crate::i1
             stroke: Some(Stroke::new(width, col)),
         });
     }
-    // Top-left, top-right, bottom-left, bottom-right: the quad's corner and the label's anchor.
-    let corners = [
-        (DVec2::ZERO, Anchor::RightBottom, [-4.0, -4.0]),
-        (DVec2::new(2.0, 0.0), Anchor::LeftBottom, [4.0, -4.0]),
-        (DVec2::new(0.0, 2.0), Anchor::RightTop, [-4.0, 4.0]),
-        (DVec2::splat(2.0), Anchor::LeftTop, [4.0, 4.0]),
-    ];
-    for (k, (corner, anchor, offset)) in corners.into_iter().enumerate() {
+    // Above the quad in the image's lower half, else below it: two rows of two, as the
+    // quad's pixels sit, the left column ending and the right one starting at its centre.
+    let up = o.y + 1.0 > size.y / 2.0;
+    let at = o + DVec2::new(1.0, if up { 0.0 } else { 2.0 });
+    for k in 0..4 {
         let Some(uv) = q.uvs[k] else { continue };
+        let (i, j) = (k % 2, k / 2);
+        // Row j's distance from the quad: the nearer row is the quad's nearer row.
+        let out = if up { 1 - j } else { j } as f32;
+        let dy = if up { -1.0 } else { 1.0 } * (QUAD_LABEL_GAP + out * QUAD_LABEL_STEP);
+        let dx = if i == 0 { -2.0 } else { 2.0 };
+        let anchor = match (i, up) {
+            (0, true) => Anchor::RightBottom,
+            (0, false) => Anchor::RightTop,
+            (_, true) => Anchor::LeftBottom,
+            (_, false) => Anchor::LeftTop,
+        };
         let (u, v) = (
             crate::probe::format::fmt_number(f64::from(uv[0])),
             crate::probe::format::fmt_number(f64::from(uv[1])),
@@ -153,11 +174,10 @@ pub(super) fn quad_shapes(shapes: &mut Vec<Shape>, q: &QuadMark, lang: crate::i1
             "figure.quad.helper"
         };
         shapes.push(Shape::Text {
-            at: o + corner,
-            offset,
+            at,
+            offset: [dx, dy],
             anchor,
-            // Named as the probe and the lessons name them (uv_ij: pixel (x0 + i, y0 + j)),
-            // so a label moved off its corner to keep clear of others still says whose it is.
+            // Named as the probe and the lessons name them (uv_ij: pixel (x0 + i, y0 + j)).
             text: lang.tr_with(
                 key,
                 &[("ij", &format!("{}{}", k % 2, k / 2)), ("u", &u), ("v", &v)],

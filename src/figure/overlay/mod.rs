@@ -185,7 +185,7 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
     }
     if let Some(pin) = input.pin {
         if let Some(q) = pin.quad {
-            quad_shapes(&mut shapes, &q, lang);
+            quad_shapes(&mut shapes, &q, DVec2::new(wf, hf), lang);
         }
         pixel_marker(&mut shapes, pin.pixel, PIN, wf, hf, false);
     }
