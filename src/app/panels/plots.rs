@@ -32,9 +32,12 @@ pub fn plot_ui(
     let width = ui.available_width().max(120.0);
     ui.set_max_width(width);
     let legend = |ui: &mut egui::Ui, lines: &PlotLines| {
+        // Each entry (the line's colour and its name) wraps as one piece, never inside a name.
         for (k, (key, _)) in lines.iter().enumerate() {
-            ui.label(RichText::new("━━").color(line_color(k)).strong());
-            ui.label(tr(lang, key));
+            ui.horizontal(|ui| {
+                ui.label(RichText::new("━━").color(line_color(k)).strong());
+                ui.add(egui::Label::new(tr(lang, key)).wrap_mode(egui::TextWrapMode::Extend));
+            });
             ui.add_space(8.0);
         }
     };

@@ -393,17 +393,20 @@ impl TexelViewPanel {
         ui.label(RichText::new(lang.tr("figure.lod.legend")).strong());
         ui.horizontal_wrapped(|ui| {
             for (c, label) in lod_view::legend(&lambdas, levels, lang) {
-                let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 14.0), Sense::hover());
-                ui.painter()
-                    .rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
-                ui.painter().rect_stroke(
-                    r,
+                // The swatch (a square glyph in the level's colour) and its label as one
+                // text that never breaks: an entry wraps as a whole, never a swatch apart
+                // from its level.
+                let font = egui::TextStyle::Body.resolve(ui.style());
+                let mut job = egui::text::LayoutJob::default();
+                let swatch = Color32::from_rgb(c[0], c[1], c[2]);
+                job.append(
+                    "\u{25A0} ",
                     0.0,
-                    Stroke::new(1.0, Color32::DARK_GRAY),
-                    egui::StrokeKind::Inside,
+                    egui::TextFormat::simple(font.clone(), swatch),
                 );
-                // The label with its level number kept on one line.
-                ui.add(egui::Label::new(label).wrap_mode(egui::TextWrapMode::Extend));
+                let text = ui.visuals().text_color();
+                job.append(&label, 0.0, egui::TextFormat::simple(font, text));
+                ui.add(egui::Label::new(job).wrap_mode(egui::TextWrapMode::Extend));
                 ui.add_space(6.0);
             }
         });
