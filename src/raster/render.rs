@@ -218,7 +218,7 @@ pub fn render_into_at(
                 frame,
                 (FAST_ROWS_PER_BAND, vector),
                 settings.background,
-            );
+            )?;
         } else {
             draw_samples(
                 mesh,
