@@ -114,8 +114,10 @@ fn the_mipmap_step_shows_every_pixels_level_and_the_pinned_pixels_lambda() {
     );
     assert!(shows(&h, &line), "the view shows {line}");
     // The far-checker floor runs from magnification at the bottom to level 8 at the horizon.
+    // Each entry is its swatch (a square in the level's colour) and its name, one text.
     for entry in ["magnified (λ ≤ 0)", "level 0", "level 2", "level 8"] {
-        assert!(shows(&h, entry), "the legend has {entry}");
+        let entry = format!("\u{25A0} {entry}");
+        assert!(shows(&h, &entry), "the legend has {entry}");
     }
 }
 
@@ -190,7 +192,7 @@ fn on_a_projector_the_level_of_detail_step_keeps_its_legend_in_the_window() {
         .rect();
     let canvas = h.state().canvas().area.expect("the canvas is laid out");
     assert!(canvas.max.x <= view.min.x, "{canvas:?} left of {view:?}");
-    for entry in ["level 0", "level 8"] {
+    for entry in ["\u{25A0} level 0", "\u{25A0} level 8"] {
         let r = h.query_by_label(entry).expect("a legend entry").rect();
         assert!(
             r.min.x >= view.min.x && r.max.x <= PROJECTOR.x && r.max.y <= PROJECTOR.y,

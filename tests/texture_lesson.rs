@@ -290,3 +290,33 @@ fn the_step_where_lambda_grows_towards_the_horizon_plots_it_down_the_column() {
         assert_eq!(q[1], p[1].max(0.0).floor().min(8.0), "row {}", p[0]);
     }
 }
+
+/// Step 3 says the squares' edges look soft under magnification: its picture must hold both
+/// colours of the checkerboard (40 and 235) and, where they meet, the bilinear blend between
+/// them over several pixels (a close-up inside one square would show one flat colour).
+#[test]
+fn the_magnification_step_shows_soft_edges_between_squares() {
+    let lesson = lesson();
+    let state = lesson.state(2).expect("state");
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let settings = state.scene.settings();
+    let r = barylab::raster::render(&state.scene.to_mesh(), &texture, &settings).expect("render");
+    let covered: Vec<u8> = r
+        .frame
+        .color
+        .iter()
+        .zip(&r.frame.triangle)
+        .filter(|(_, t)| **t != barylab::raster::NO_TRIANGLE)
+        .map(|(c, _)| c[0])
+        .collect();
+    assert!(covered.len() > 200 * 200, "the quad fills the picture");
+    let count = |lo: u8, hi: u8| covered.iter().filter(|&&v| v >= lo && v <= hi).count();
+    let (dark, light) = (count(40, 40), count(235, 235));
+    let blended = count(60, 215);
+    assert!(
+        dark > 10_000 && light > 10_000,
+        "dark {dark}, light {light}"
+    );
+    // Each edge between squares blends over about 1 / 0.1386 = 7 pixels, across the picture.
+    assert!(blended > 1_000, "only {blended} blended pixels");
+}
