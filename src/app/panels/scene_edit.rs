@@ -51,6 +51,11 @@ pub(super) fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<StateCommand>)
             yaw_deg: tilt.yaw_deg,
         }));
     }
+    fov_ui(ui, lang, scene, out);
+}
+
+/// The field-of-view slider, for a scene with a perspective camera.
+fn fov_ui(ui: &mut Ui, lang: Lang, scene: &Scene, out: &mut Vec<StateCommand>) {
     if let Some(mut fov) = edit::fov_deg(scene)
         && ui
             .add(
@@ -69,18 +74,7 @@ pub(super) fn camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<StateCommand>)
 fn model_camera_ui(ui: &mut Ui, scene: &Scene, out: &mut Vec<StateCommand>) {
     let lang = crate::app::services::locale::lang(ui.ctx());
     ui.label(RichText::new(lang.tr("app.controls.model_camera_hint")).weak());
-    if let Some(mut fov) = edit::fov_deg(scene)
-        && ui
-            .add(
-                Slider::new(&mut fov, FOV_RANGE_DEG.0..=FOV_RANGE_DEG.1)
-                    .suffix("°")
-                    .text(lang.tr("app.controls.fov")),
-            )
-            .on_hover_text(lang.tr("app.controls.tip.fov"))
-            .changed()
-    {
-        out.push(StateCommand::SetFov(fov));
-    }
+    fov_ui(ui, lang, scene, out);
     ui.horizontal_wrapped(|ui| {
         ui.label(lang.tr("app.controls.view"));
         for v in ModelView::ALL {
