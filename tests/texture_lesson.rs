@@ -320,3 +320,79 @@ fn the_magnification_step_shows_soft_edges_between_squares() {
     // Each edge between squares blends over about 1 / 0.1386 = 7 pixels, across the picture.
     assert!(blended > 1_000, "only {blended} blended pixels");
 }
+
+/// The `(x, y, font size)` of each `<text>` of `svg` whose content is a three-decimal weight.
+fn weight_labels(svg: &str) -> Vec<(f64, f64, f64)> {
+    let attr = |el: &str, name: &str| -> f64 {
+        let key = format!(" {name}=\"");
+        let start = el.find(&key).expect("attribute") + key.len();
+        let end = start + el[start..].find('"').expect("closing quote");
+        el[start..end].parse().expect("number")
+    };
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|el| {
+            let body = &el[el.find('>')? + 1..el.find("</text>")?];
+            let is_weight = body.len() == 5 && body.starts_with("0.") || body == "1.000";
+            is_weight.then(|| (attr(el, "x"), attr(el, "y"), attr(el, "font-size")))
+        })
+        .collect()
+}
+
+/// Step 2 (bilinear, magnified): the four taps' weights are printed large enough for a room
+/// and none of them lies under the white dot that marks the pixel's uv.
+#[test]
+fn the_bilinear_step_prints_readable_weights_clear_of_the_uv_dot() {
+    let lesson = lesson();
+    let trace = probe_step(&lesson, 2, false);
+    let state = lesson.state(1).expect("state");
+    let texture = state.scene.load_texture(Path::new("")).expect("texture");
+    let settings = state.scene.settings();
+    assert_eq!(
+        settings.filter,
+        Filter::Bilinear,
+        "step 2 filters bilinearly"
+    );
+    let a = trace
+        .detail
+        .as_ref()
+        .and_then(|d| d.attribute.as_ref())
+        .expect("a texture lookup");
+    let view = barylab::figure::texture_view::TextureView::of(
+        &texture,
+        (settings.filter, settings.wrap),
+        a,
+        true,
+        trace.pixel,
+    );
+    let svg = view.picture(barylab::i18n::Lang::En).to_svg().expect("svg");
+    let labels = weight_labels(&svg);
+    assert_eq!(labels.len(), 4, "four bilinear taps: {labels:?}");
+    // The uv's dot: the white circle of radius 4.
+    let dot = svg
+        .split("<circle")
+        .skip(1)
+        .find(|el| el.contains("r=\"4\"") && el.contains("fill=\"#ffffff\""))
+        .expect("the uv dot");
+    let coord = |name: &str| -> f64 {
+        let key = format!(" {name}=\"");
+        let start = dot.find(&key).expect("attribute") + key.len();
+        let end = start + dot[start..].find('"').expect("quote");
+        dot[start..end].parse().expect("number")
+    };
+    let (cx, cy) = (coord("cx"), coord("cy"));
+    for (x, y, size) in labels {
+        assert!(
+            size >= 15.0,
+            "a weight at {size} points is too small to read"
+        );
+        // The label's box: five digits about 0.56 font sizes each, centred on x; baseline y.
+        let half_width = 5.0 * 0.56 * size / 2.0;
+        let clear_x = (cx - x).abs() > half_width + 4.0;
+        let clear_y = cy < y - size - 4.0 || cy > y + 0.25 * size + 4.0;
+        assert!(
+            clear_x || clear_y,
+            "the weight at ({x}, {y}), {size} pt, lies under the uv dot at ({cx}, {cy})"
+        );
+    }
+}

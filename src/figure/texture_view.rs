@@ -107,10 +107,11 @@ impl<'a> TextureView<'a> {
     }
 
     /// Half the side of the window shown, in level-0 texels: the footprint with room around
-    /// it, at least 3 texels.
+    /// it, at least 2 texels (five texels across: large enough for the taps' weights to be
+    /// read from the back of a lecture hall).
     fn window_radius(&self) -> f64 {
         let p = self.lod.map_or(0.0, |l| f64::from(l.rho));
-        (0.9 * p).clamp(3.0, 48.0)
+        (0.9 * p).clamp(2.0, 48.0)
     }
 
     /// The view, words in `lang`: SVG with [`RasterSvg::to_svg`], PNG with
@@ -350,20 +351,39 @@ impl<'a> TextureView<'a> {
             let b = (centre - DVec2::splat(0.5)).floor();
             vec![b, b + DVec2::X, b + DVec2::Y, b + DVec2::ONE]
         };
+        let font = tap_label_size(texel_pt);
         for (corner, w) in corners.iter().zip(weights) {
             let [x, y] = to_pt(*corner + DVec2::Y);
             s.push_str(&format!(
                 r#"<rect x="{x:.2}" y="{y:.2}" width="{texel_pt:.2}" height="{texel_pt:.2}" fill="none" stroke="{TAP}" stroke-width="2.5"/>"#
             ));
-            // Three decimals: four labels fit their texels from the smallest window.
+            // Three decimals: four labels fit their texels from the smallest window. The
+            // label sits in the half of its texel away from the uv's dot (in texel rows),
+            // so the dot never covers it.
             let label = format!("{w:.3}");
+            let towards_dot_up = centre.y > corner.y + 0.5;
+            let shift = if towards_dot_up { 0.22 } else { -0.22 } * texel_pt;
             s.push_str(&format!(
-                r##"<text x="{:.2}" y="{:.2}" text-anchor="middle" font-size="12" fill="#000000" stroke="#ffffff" stroke-width="3" paint-order="stroke">{label}</text>"##,
+                r##"<text x="{:.2}" y="{:.2}" text-anchor="middle" font-size="{font:.1}" fill="#000000" stroke="#ffffff" stroke-width="3" paint-order="stroke">{label}</text>"##,
                 x + texel_pt / 2.0,
-                y + texel_pt / 2.0 + 4.0
+                y + texel_pt / 2.0 + font / 3.0 + shift
             ));
         }
     }
+}
+
+/// The font size, in points, of a tap's weight in a texel `texel_pt` points wide: a
+/// three-decimal weight ("0.838", about 2.8 font sizes wide) fills at most 70% of the texel,
+/// between 12 and 22 points.
+///
+/// ```
+/// # use barylab::figure::texture_view::tap_label_size;
+/// assert_eq!(tap_label_size(30.0), 12.0);
+/// assert_eq!(tap_label_size(60.0), 15.0);
+/// assert_eq!(tap_label_size(100.0), 22.0);
+/// ```
+pub fn tap_label_size(texel_pt: f64) -> f64 {
+    (0.7 * texel_pt / 2.8).clamp(12.0, 22.0)
 }
 
 /// `text` in lines no wider than `width` points at the caption's 13-point size: broken at
