@@ -373,8 +373,8 @@ impl<'a> TextureView<'a> {
 }
 
 /// The font size, in points, of a tap's weight in a texel `texel_pt` points wide: a
-/// three-decimal weight ("0.838", about 2.8 font sizes wide) fills at most 70% of the texel,
-/// between 12 and 22 points.
+/// three-decimal weight ("0.838", about 2.8 font sizes wide) fills at most 70% of the texel
+/// (`texel_pt / 4`), between 12 and 22 points.
 ///
 /// ```
 /// # use barylab::figure::texture_view::tap_label_size;
@@ -383,7 +383,7 @@ impl<'a> TextureView<'a> {
 /// assert_eq!(tap_label_size(100.0), 22.0);
 /// ```
 pub fn tap_label_size(texel_pt: f64) -> f64 {
-    (0.7 * texel_pt / 2.8).clamp(12.0, 22.0)
+    (texel_pt / 4.0).clamp(12.0, 22.0)
 }
 
 /// `text` in lines no wider than `width` points at the caption's 13-point size: broken at
