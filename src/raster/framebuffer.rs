@@ -1,6 +1,7 @@
 //! The framebuffer: the colour image and, beside it, per-pixel float buffers that the GUI, the
 //! inspector and the AOV export read.
 
+use super::fill::fill_words;
 use super::setup::Facing;
 use crate::budget::{self, MemoryError};
 
@@ -447,8 +448,8 @@ impl<'a> RowBand<'a> {
 
     /// Clears every buffer of the band: colour to `background`, depth to 1 (the far plane).
     pub(super) fn clear(&mut self, background: [u8; 4]) {
-        self.color.fill(background);
-        self.depth.fill(1.0);
+        fill_words(self.color, background);
+        fill_words(self.depth, 1.0);
         self.triangle.fill(NO_TRIANGLE);
         self.facing.fill(Facing::Front);
         self.weights_screen.fill([0.0; 3]);

@@ -7,6 +7,7 @@ pub mod camera;
 pub mod clip;
 mod draw;
 pub(crate) mod fast;
+mod fill;
 pub mod footprint;
 pub mod framebuffer;
 pub mod interpolate;

@@ -59,6 +59,30 @@ fn fraction(x: &F32s, floor: &F32s, inf: Inf) -> F32s {
     })
 }
 
+/// Coordinates below this in magnitude are "tame" ([`tame`]).
+const TAME: f32 = (1 << 22) as f32;
+
+/// Whether every lane of `x` is below 2^22 in magnitude (so not NaN, not infinite): then
+/// [`floor_fraction`] gives [`floor_coord`]'s index and [`fraction`]'s value.
+#[inline(always)]
+fn tame(x: &F32s) -> bool {
+    let inside: I32s = each(|k| mask32(x[k].abs() < TAME));
+    inside.iter().fold(-1, |m, &i| m & i) != 0
+}
+
+/// `(floor(x) as i32, x - floor(x))` per lane for [`tame`] coordinates, with the vector
+/// floor ([`VectorFloor`]): [`floor_coord`] and [`fraction`] without their clamps and NaN
+/// tests, which change nothing there: the clamp to +-[`MAX_TEXEL_COORD`] keeps `x`, the floor
+/// is an integer below 2^22 in magnitude (its truncation is exact), and `x - floor(x)` is
+/// `x`'s fractional part, exact (its bits are among `x`'s) and in [0, 1), so the clamp to
+/// [0, 1] keeps it. Five vector operations per register fewer for each coordinate of a
+/// bilinear lookup.
+#[inline(always)]
+fn floor_fraction(x: &F32s) -> (I32s, F32s) {
+    let f: F32s = each(|k| x[k].floor());
+    (each(|k| trunc(f[k])), each(|k| x[k] - f[k]))
+}
+
 /// A wrap mode applied to eight texel indices along one axis ([`LaneWrap::apply`]): the mode
 /// is matched once, then applied to every lane. Each result is in `0..size`.
 #[inline(always)]
@@ -168,9 +192,13 @@ impl Sampler<'_> {
             _ => {
                 let x = each(|k| u[k] * w - 0.5);
                 let y = each(|k| v[k] * h - 0.5);
-                let (i0, fx) = floor_coord(&x, floor);
-                let (j0, fy) = floor_coord(&y, floor);
-                let (a, b) = (fraction(&x, &fx, inf), fraction(&y, &fy, inf));
+                let ((i0, a), (j0, b)) = if floor.0 && tame(&x) && tame(&y) {
+                    (floor_fraction(&x), floor_fraction(&y))
+                } else {
+                    let (i0, fx) = floor_coord(&x, floor);
+                    let (j0, fy) = floor_coord(&y, floor);
+                    ((i0, fraction(&x, &fx, inf)), (j0, fraction(&y, &fy, inf)))
+                };
                 let (ia, ib) = (
                     wrap(&i0, self.wrap.0),
                     wrap(&each(|k| i0[k] + 1), self.wrap.0),
@@ -240,5 +268,53 @@ mod tests {
             bits += super::LANES as u32;
         }
         assert!(wrong.is_empty(), "rounded differently: {wrong:?}");
+    }
+
+    /// For tame coordinates the short floor and fraction give the general code's index and
+    /// fraction bit for bit: multiples of 1/8 around zero, both signs of zero, tiny values,
+    /// fractions just below and above integers, and the largest tame magnitudes.
+    #[test]
+    fn tame_coordinates_floor_as_the_general_code() {
+        use super::{Inf, LANES, VectorFloor, floor_coord, floor_fraction, fraction, tame};
+        let below = |x: f32| f32::from_bits(x.to_bits() - 1);
+        let mut xs: Vec<f32> = (-4096..4096).map(|k| k as f32 / 8.0).collect();
+        xs.extend([
+            0.0,
+            -0.0,
+            1e-30,
+            -1e-30,
+            below(1.0),
+            -below(1.0),
+            1.0 + f32::EPSILON,
+        ]);
+        xs.extend([
+            below(4194304.0),
+            -below(4194304.0),
+            4194303.5,
+            -4194303.5,
+            -2.5e6 - 0.25,
+        ]);
+        for chunk in xs.chunks(LANES) {
+            let mut x = [0.5f32; LANES];
+            x[..chunk.len()].copy_from_slice(chunk);
+            assert!(tame(&x), "{x:?}");
+            let (i, f) = floor_coord(&x, VectorFloor(true));
+            let a = fraction(&x, &f, Inf::new());
+            let (i_tame, a_tame) = floor_fraction(&x);
+            assert_eq!(i, i_tame, "{x:?}");
+            assert_eq!(a.map(f32::to_bits), a_tame.map(f32::to_bits), "{x:?}");
+        }
+        assert!(!tame(&[4194304.0; LANES]));
+        assert!(!tame(&[0.5, f32::NAN, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5]));
+        assert!(!tame(&[
+            0.5,
+            0.5,
+            0.5,
+            0.5,
+            0.5,
+            0.5,
+            0.5,
+            f32::NEG_INFINITY
+        ]));
     }
 }
