@@ -39,11 +39,18 @@ fn stroke(s: Stroke) -> EStroke {
     EStroke::new(s.width, color(s.color))
 }
 
+use crate::figure::label_place;
 use crate::figure::svg::DASH;
 use crate::figure::text::{self as figure_text, LABEL_PAD, LABEL_ROUNDING};
 
 fn to_rect(b: figure_text::Box2) -> Rect {
     Rect::from_min_max(Pos2::new(b[0], b[1]), Pos2::new(b[2], b[3]))
+}
+
+/// Canvas position `p` as a screen point's coordinates.
+fn to_point(t: CanvasTransform, p: DVec2) -> [f32; 2] {
+    let q = t.to_screen(p);
+    [q.x, q.y]
 }
 
 fn to_box(r: Rect) -> figure_text::Box2 {
@@ -83,10 +90,18 @@ pub fn paint(
                 let r = [min.x, min.y, min.x + size[0], min.y + size[1]];
                 Some(crate::figure::svg::color_bar_back(r, 1.0))
             }
+            Shape::QuadLabels {
+                min, max, outline, ..
+            } => Some(label_place::quad_box(
+                to_point(t, *min),
+                to_point(t, *max),
+                *outline,
+            )),
             _ => None,
         })
         .chain(avoid.iter().map(|r| to_box(*r)))
         .collect();
+    let handles = label_place::handle_centres(&overlay.shapes, |p| to_point(t, p));
     let mut placed: Vec<figure_text::Box2> = Vec::new();
     // The views' titles, drawn last so no handle near the image's top edge covers them; a
     // handle's letter that would lie on one moves below it.
@@ -222,6 +237,87 @@ pub fn paint(
                     draw_label(&painter, to_rect(b), galley, *c, *background);
                 }
             }
+            Shape::HandleLabel {
+                at,
+                reach,
+                outward,
+                text,
+                size,
+                color: c,
+                background,
+            } => {
+                // Placed as the figure export places it, measured with egui's galley.
+                let lay = |s: f32| {
+                    painter.layout_no_wrap(text.clone(), FontId::proportional(s), color(*c))
+                };
+                let width = lay(*size).size().x;
+                let galley = lay(size * figure_text::fit(width, 2.0 * LABEL_PAD[0], to_box(clip)));
+                let outer = figure_text::padded([galley.size().x, galley.size().y], true, 1.0);
+                let p = to_point(t, *at);
+                let b = label_place::place_handle_label(
+                    p,
+                    *reach,
+                    *outward,
+                    &label_place::others(&handles, p),
+                    outer,
+                    to_box(clip),
+                    &placed,
+                    &keep_clear,
+                );
+                placed.push(b);
+                draw_label(&painter, to_rect(b), galley, *c, Some(*background));
+            }
+            Shape::QuadLabels {
+                min,
+                max,
+                texts,
+                size,
+                gaps,
+                outline,
+                above,
+                background,
+                leader,
+            } => {
+                // Placed as the figure export places them, measured with egui's galleys.
+                let lay = |s: f32| {
+                    texts.each_ref().map(|x| {
+                        x.as_ref().map(|(x, c)| {
+                            painter.layout_no_wrap(x.clone(), FontId::proportional(s), color(*c))
+                        })
+                    })
+                };
+                // A block wider than its view shrinks to fit it.
+                let widths = lay(*size).map(|g| g.map(|g| g.size().x));
+                let galleys =
+                    lay(size * label_place::block_fit(widths, LABEL_PAD[0], gaps[0], to_box(clip)));
+                let sizes = galleys.each_ref().map(|g| {
+                    g.as_ref()
+                        .map(|g| figure_text::padded([g.size().x, g.size().y], true, 1.0))
+                });
+                let quad = label_place::quad_box(to_point(t, *min), to_point(t, *max), *outline);
+                let q = label_place::place_quad_block(
+                    quad,
+                    sizes,
+                    gaps[0],
+                    gaps[1],
+                    *above,
+                    to_box(clip),
+                    &placed,
+                    &keep_clear,
+                );
+                if let Some([a, b]) = q.leader {
+                    painter.line_segment(
+                        [Pos2::new(a[0], a[1]), Pos2::new(b[0], b[1])],
+                        stroke(*leader),
+                    );
+                }
+                for ((b, g), x) in q.boxes.into_iter().zip(galleys).zip(texts) {
+                    if let (Some(b), Some(g), Some((_, c))) = (b, g, x) {
+                        draw_label(&painter, to_rect(b), g, *c, Some(*background));
+                        placed.push(b);
+                    }
+                }
+            }
             Shape::LabelPair {
                 at,
                 offset_y,
@@ -305,6 +401,22 @@ pub fn scale_marks(overlay: &mut Overlay, k: f32) {
                 *offset = offset.map(|o| o * k);
             }
             Shape::Text { .. } => {}
+            Shape::HandleLabel { reach, size, .. } => {
+                *reach *= k;
+                *size *= k;
+            }
+            Shape::QuadLabels {
+                size,
+                gaps,
+                outline,
+                leader,
+                ..
+            } => {
+                *size *= k;
+                *gaps = gaps.map(|g| g * k);
+                *outline *= k;
+                widen(leader);
+            }
             Shape::LabelPair {
                 offset_y,
                 gap,
