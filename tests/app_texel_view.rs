@@ -201,21 +201,7 @@ fn on_a_projector_at_text_size_1_5_the_anisotropic_view_fits_its_panel() {
     let l = common::lod_of(&t);
     let a = l.anisotropic.as_ref().expect("anisotropic");
     for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
-        let lesson = Lesson::open(Path::new("texture")).expect("the texture lesson");
-        let mut h = common::app::harness(
-            PROJECTOR,
-            AppOptions {
-                lesson: Some((lesson, 10)),
-                present: true,
-                lang: Some(lang),
-                ..AppOptions::default()
-            },
-        );
-        h.state_mut().push(StateCommand::SetUiScale(1.5));
-        for _ in 0..4 {
-            h.step();
-        }
-        h.run();
+        let h = common::app::lecture("texture", 11, lang);
         let rect = |text: &str| {
             h.query_by_label(text)
                 .unwrap_or_else(|| panic!("{lang:?}: {text} shown"))

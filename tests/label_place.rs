@@ -10,8 +10,6 @@ mod common;
 
 use std::path::Path;
 
-use barylab::app::AppOptions;
-use barylab::app::document::state::StateCommand;
 use barylab::figure::label_place::{LEADER_FROM, box_distance, point_distance};
 use barylab::i18n::Lang;
 use barylab::lesson::Lesson;
@@ -45,21 +43,7 @@ fn centre(b: Box2) -> [f32; 2] {
 
 /// The app at step `n` (from 1) of `lesson`, presenting at a projector, text size 1.5.
 fn app(lesson: &str, n: usize, lang: Lang) -> Drawn {
-    let lesson = Lesson::open(Path::new(lesson)).expect("the lesson");
-    let mut h = common::app::harness(
-        egui::vec2(1024.0, 768.0),
-        AppOptions {
-            lesson: Some((lesson, n - 1)),
-            present: true,
-            lang: Some(lang),
-            ..AppOptions::default()
-        },
-    );
-    h.state_mut().push(StateCommand::SetUiScale(1.5));
-    for _ in 0..4 {
-        h.step();
-    }
-    h.run();
+    let h = common::app::lecture(lesson, n, lang);
     let mut d = Drawn::default();
     let mut letters = Vec::new();
     let mut circles = Vec::new();

@@ -472,7 +472,9 @@ mod tests {
         shapes
             .iter()
             .filter_map(|s| match s {
-                Shape::Text { at, text, .. } => Some((*at, text.clone())),
+                Shape::Text { at, text, .. } | Shape::HandleLabel { at, text, .. } => {
+                    Some((*at, text.clone()))
+                }
                 _ => None,
             })
             .collect()
