@@ -47,6 +47,24 @@ fn to_rect(b: figure_text::Box2) -> Rect {
     Rect::from_min_max(Pos2::new(b[0], b[1]), Pos2::new(b[2], b[3]))
 }
 
+/// A label's galley at `size` points, set smaller when wider than `clip` (with its box's
+/// padding when `boxed`), and its outer size.
+fn fitted(
+    painter: &egui::Painter,
+    text: &str,
+    size: f32,
+    c: Rgba,
+    boxed: bool,
+    clip: Rect,
+) -> (std::sync::Arc<egui::Galley>, [f32; 2]) {
+    let lay = |s: f32| painter.layout_no_wrap(text.to_string(), FontId::proportional(s), color(c));
+    let pad = if boxed { LABEL_PAD[0] } else { 0.0 };
+    let width = lay(size).size().x;
+    let galley = lay(size * figure_text::fit(width, 2.0 * pad, to_box(clip)));
+    let outer = figure_text::padded([galley.size().x, galley.size().y], boxed, 1.0);
+    (galley, outer)
+}
+
 /// Canvas position `p` as a screen point's coordinates.
 fn to_point(t: CanvasTransform, p: DVec2) -> [f32; 2] {
     let q = t.to_screen(p);
@@ -188,22 +206,7 @@ pub fn paint(
             } => {
                 // Placed as the figure export places it (flipped to the other side of its
                 // point if it sticks out, then pushed inside), measured with egui's galley.
-                let lay = |s: f32| {
-                    painter.layout_no_wrap(text.clone(), FontId::proportional(s), color(*c))
-                };
-                // A label wider than its view shrinks to fit it.
-                let pad = if background.is_some() {
-                    LABEL_PAD[0]
-                } else {
-                    0.0
-                };
-                let width = lay(*size).size().x;
-                let galley = lay(size * figure_text::fit(width, 2.0 * pad, to_box(clip)));
-                let outer = figure_text::padded(
-                    [galley.size().x, galley.size().y],
-                    background.is_some(),
-                    1.0,
-                );
+                let (galley, outer) = fitted(&painter, text, *size, *c, background.is_some(), clip);
                 let base = t.to_screen(*at);
                 // A label with a box keeps clear of the others; a bare letter (a handle's
                 // name) stays where it is.
@@ -247,12 +250,7 @@ pub fn paint(
                 background,
             } => {
                 // Placed as the figure export places it, measured with egui's galley.
-                let lay = |s: f32| {
-                    painter.layout_no_wrap(text.clone(), FontId::proportional(s), color(*c))
-                };
-                let width = lay(*size).size().x;
-                let galley = lay(size * figure_text::fit(width, 2.0 * LABEL_PAD[0], to_box(clip)));
-                let outer = figure_text::padded([galley.size().x, galley.size().y], true, 1.0);
+                let (galley, outer) = fitted(&painter, text, *size, *c, true, clip);
                 let p = to_point(t, *at);
                 let b = label_place::place_handle_label(
                     p,
