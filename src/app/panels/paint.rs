@@ -35,7 +35,7 @@ pub fn color(c: Rgba) -> Color32 {
     Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3])
 }
 
-fn stroke(s: Stroke) -> EStroke {
+pub(super) fn stroke(s: Stroke) -> EStroke {
     EStroke::new(s.width, color(s.color))
 }
 
@@ -43,7 +43,7 @@ use crate::figure::label_place;
 use crate::figure::svg::DASH;
 use crate::figure::text::{self as figure_text, LABEL_PAD, LABEL_ROUNDING};
 
-fn to_rect(b: figure_text::Box2) -> Rect {
+pub(super) fn to_rect(b: figure_text::Box2) -> Rect {
     Rect::from_min_max(Pos2::new(b[0], b[1]), Pos2::new(b[2], b[3]))
 }
 
@@ -66,12 +66,12 @@ fn fitted(
 }
 
 /// Canvas position `p` as a screen point's coordinates.
-fn to_point(t: CanvasTransform, p: DVec2) -> [f32; 2] {
+pub(super) fn to_point(t: CanvasTransform, p: DVec2) -> [f32; 2] {
     let q = t.to_screen(p);
     [q.x, q.y]
 }
 
-fn to_box(r: Rect) -> figure_text::Box2 {
+pub(super) fn to_box(r: Rect) -> figure_text::Box2 {
     [r.left(), r.top(), r.right(), r.bottom()]
 }
 
@@ -265,56 +265,15 @@ pub fn paint(
                 placed.push(b);
                 draw_label(&painter, to_rect(b), galley, *c, Some(*background));
             }
-            Shape::QuadLabels {
-                min,
-                max,
-                texts,
-                size,
-                gaps,
-                outline,
-                above,
-                background,
-                leader,
-            } => {
-                // Placed as the figure export places them, measured with egui's galleys.
-                let lay = |s: f32| {
-                    texts.each_ref().map(|x| {
-                        x.as_ref().map(|(x, c)| {
-                            painter.layout_no_wrap(x.clone(), FontId::proportional(s), color(*c))
-                        })
-                    })
-                };
-                // A block wider than its view shrinks to fit it.
-                let widths = lay(*size).map(|g| g.map(|g| g.size().x));
-                let galleys =
-                    lay(size * label_place::block_fit(widths, LABEL_PAD[0], gaps[0], to_box(clip)));
-                let sizes = galleys.each_ref().map(|g| {
-                    g.as_ref()
-                        .map(|g| figure_text::padded([g.size().x, g.size().y], true, 1.0))
-                });
-                let quad = label_place::quad_box(to_point(t, *min), to_point(t, *max), *outline);
-                let q = label_place::place_quad_block(
-                    quad,
-                    sizes,
-                    gaps[0],
-                    gaps[1],
-                    *above,
-                    to_box(clip),
+            Shape::QuadLabels { .. } => {
+                placed.extend(super::paint_quad::quad_labels(
+                    &painter,
+                    shape,
+                    t,
+                    clip,
                     &placed,
                     &keep_clear,
-                );
-                if let Some([a, b]) = q.leader {
-                    painter.line_segment(
-                        [Pos2::new(a[0], a[1]), Pos2::new(b[0], b[1])],
-                        stroke(*leader),
-                    );
-                }
-                for ((b, g), x) in q.boxes.into_iter().zip(galleys).zip(texts) {
-                    if let (Some(b), Some(g), Some((_, c))) = (b, g, x) {
-                        draw_label(&painter, to_rect(b), g, *c, Some(*background));
-                        placed.push(b);
-                    }
-                }
+                ));
             }
             Shape::LabelPair {
                 at,
@@ -477,7 +436,7 @@ fn below_titles(
 }
 
 /// A laid-out text in its box `outer` (which includes the padding when it has a background).
-fn draw_label(
+pub(super) fn draw_label(
     painter: &egui::Painter,
     outer: Rect,
     galley: std::sync::Arc<egui::Galley>,
