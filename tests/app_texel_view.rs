@@ -138,18 +138,8 @@ fn on_a_projector_the_anisotropic_step_keeps_the_view_beside_the_picture() {
     );
     assert!(shows(&h, &line), "the view shows {line}");
     assert_eq!(a.n, 13);
-    let probe = &a.probes[0];
-    let c = probe.color;
-    let first = format!(
-        "probe 1: uv = ({}, {}) → rgba({}, {}, {}, {})",
-        n(probe.uv[0]),
-        n(probe.uv[1]),
-        c[0],
-        c[1],
-        c[2],
-        c[3]
-    );
-    assert!(shows(&h, &first), "the view shows {first}");
+    // Presenting, the probes are a row of colour swatches after this line.
+    assert!(shows(&h, "probes:"), "the view shows the probes");
     // The picture is still drawn, left of the view.
     let view = h
         .query_by_label("The pixel's lookup in texture space")
@@ -197,6 +187,66 @@ fn on_a_projector_the_level_of_detail_step_keeps_its_legend_in_the_window() {
         assert!(
             r.min.x >= view.min.x && r.max.x <= PROJECTOR.x && r.max.y <= PROJECTOR.y,
             "{entry} at {r:?}, the view at {view:?}"
+        );
+    }
+}
+
+/// The anisotropic step at a lecture projector (1024x768, text size 1.5, presentation
+/// mode), in both languages: the texture view fits its panel without scrolling: its last line
+/// (the colour) ends above the lesson bar, and the pictures between the numbers over them
+/// (the levels' line) and under them (the probes' swatches) get at least 80 points.
+#[test]
+fn on_a_projector_at_text_size_1_5_the_anisotropic_view_fits_its_panel() {
+    let t = probe_step(11);
+    let l = common::lod_of(&t);
+    let a = l.anisotropic.as_ref().expect("anisotropic");
+    for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+        let h = common::app::lecture("texture", 11, lang);
+        let rect = |text: &str| {
+            h.query_by_label(text)
+                .unwrap_or_else(|| panic!("{lang:?}: {text} shown"))
+                .rect()
+        };
+        let c = t.color;
+        let colour = lang.tr_with(
+            "texel_view.color",
+            &[(
+                "color",
+                &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
+            )],
+        );
+        let levels = match a.levels.next {
+            Some((e, f)) => lang.tr_with(
+                "texel_view.two_levels",
+                &[
+                    ("d", &a.levels.level),
+                    ("e", &e),
+                    ("wd", &n(1.0 - f)),
+                    ("we", &n(f)),
+                ],
+            ),
+            None => lang.tr_with("texel_view.one_level", &[("d", &a.levels.level)]),
+        };
+        let probes = lang.tr("texel_view.probes_compact");
+        let bar = rect(&lang.tr("lesson.next"));
+        let (last, over, under) = (rect(&colour), rect(&levels), rect(&probes));
+        // The window is 1024x768 pixels, 683x512 points at text size 1.5.
+        let window = h.ctx.content_rect();
+        assert!(
+            window.height() < 520.0,
+            "{lang:?}: text size 1.5, {window:?}"
+        );
+        assert!(
+            last.max.y <= bar.min.y,
+            "{lang:?}: {colour} at {last:?}, the bar at {bar:?}, levels at {over:?}, probes at {under:?}"
+        );
+        assert!(
+            last.max.y <= window.max.y,
+            "{lang:?}: {last:?} in {window:?}"
+        );
+        assert!(
+            under.min.y - over.max.y >= 80.0,
+            "{lang:?}: the pictures' room from {over:?} to {under:?}"
         );
     }
 }

@@ -37,6 +37,9 @@ fn marks(scene: &Scene, pin: [u32; 2]) -> (Vec<String>, Vec<(DVec2, DVec2)>, Pix
     for s in &fig.views[0].overlay.shapes {
         match s {
             Shape::Text { text, .. } => texts.push(text.clone()),
+            Shape::QuadLabels { texts: uv, .. } => {
+                texts.extend(uv.iter().flatten().map(|(t, _)| t.clone()));
+            }
             Shape::Rect { min, max, .. } => rects.push((*min, *max)),
             _ => {}
         }
@@ -125,11 +128,12 @@ fn without_a_level_of_detail_there_is_no_quad() {
     );
 }
 
-/// The four labels sit as the quad's pixels do, in two rows on one side of the quad (above
-/// it in the image's lower half, below it in the upper half): `uv_0j` left of the quad's
-/// centre, `uv_1j` right of it, row 0 over row 1.
+/// The four labels are one block, in the order of the quad's pixels (`uv_ij` for pixel
+/// `(x0 + i, y0 + j)` at index `i + 2 j`), for the quad `(x0, y0)..(x0 + 2, y0 + 2)`,
+/// preferably above the quad in the image's lower half and below it in the upper half, and
+/// placed after the handles (so it keeps clear of them and their labels).
 #[test]
-fn the_quad_labels_sit_in_two_rows_on_the_roomier_side() {
+fn the_quad_labels_are_one_block_in_the_pixels_order_after_the_handles() {
     let scene = far_checker(Filter::Trilinear);
     let texture = scene.load_texture(Path::new("")).expect("texture");
     for (pin, up) in [([240, 290], true), ([240, 160], true), ([240, 140], false)] {
@@ -138,27 +142,38 @@ fn the_quad_labels_sit_in_two_rows_on_the_roomier_side() {
             ..FigureOptions::default()
         };
         let fig = Figure::compose(&scene, &texture, &options).expect("figure");
-        let mut offsets = [None; 4];
-        for s in &fig.views[0].overlay.shapes {
-            if let Shape::Text {
-                text, at, offset, ..
-            } = s
-                && let Some(ij) = text.strip_prefix("uv_")
-            {
-                let k =
-                    usize::from(ij.as_bytes()[0] - b'0') + 2 * usize::from(ij.as_bytes()[1] - b'0');
-                let centre = DVec2::new(f64::from(pin[0] & !1) + 1.0, f64::from(pin[1] & !1));
-                assert_eq!(at.x, centre.x, "{text}: centred on the quad");
-                offsets[k] = Some(*offset);
-            }
+        let shapes = &fig.views[0].overlay.shapes;
+        let at = shapes
+            .iter()
+            .position(|s| matches!(s, Shape::QuadLabels { .. }))
+            .expect("the quad's labels");
+        let last_handle = shapes
+            .iter()
+            .rposition(|s| matches!(s, Shape::HandleLabel { .. }))
+            .expect("handle labels");
+        assert!(
+            at > last_handle,
+            "{pin:?}: the block is placed after the handles"
+        );
+        let Shape::QuadLabels {
+            min,
+            max,
+            texts,
+            above,
+            ..
+        } = &shapes[at]
+        else {
+            unreachable!()
+        };
+        let o = DVec2::new(f64::from(pin[0] & !1), f64::from(pin[1] & !1));
+        assert_eq!((*min, *max), (o, o + DVec2::splat(2.0)));
+        assert_eq!(*above, up, "{pin:?}");
+        for (k, t) in texts.iter().enumerate() {
+            let (t, _) = t.as_ref().expect("four labels");
+            assert!(
+                t.starts_with(&format!("uv_{}{} = (", k % 2, k / 2)),
+                "{k}: {t}"
+            );
         }
-        let o = offsets.map(|o| o.expect("four quad labels"));
-        for k in 0..4 {
-            assert_eq!(o[k][0] < 0.0, k % 2 == 0, "{pin:?} uv {k}: {o:?}");
-            assert_eq!(o[k][1] < 0.0, up, "{pin:?} uv {k}: {o:?}");
-        }
-        // Row 0 over row 1, the two labels of a row level.
-        assert!(o[0][1] < o[2][1] && o[1][1] < o[3][1], "{pin:?}: {o:?}");
-        assert_eq!((o[0][1], o[2][1]), (o[1][1], o[3][1]));
     }
 }

@@ -55,6 +55,7 @@ pub fn bounded(overlay: &Overlay, canvas: [u32; 2]) -> Overlay {
             }
             Shape::Circle { centre: at, .. }
             | Shape::Text { at, .. }
+            | Shape::HandleLabel { at, .. }
             | Shape::LabelPair { at, .. }
             | Shape::ColorBar { at, .. }
                 if !inside(*at) => {}

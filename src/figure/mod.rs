@@ -34,6 +34,7 @@ mod compare;
 mod compose;
 pub mod export;
 pub mod heatmap;
+pub mod label_place;
 pub mod lod_view;
 mod marks;
 mod options;

@@ -20,3 +20,25 @@ pub fn harness_of(app: BaryApp, size: egui::Vec2) -> Harness<'static, BaryApp> {
     h.run();
     h
 }
+
+/// The app presenting step `step` (from 1) of the lesson `lesson` (a built-in name or a
+/// file) in `lang` at a lecture projector: a 1024x768 window at text size 1.5.
+pub fn lecture(lesson: &str, step: usize, lang: barylab::i18n::Lang) -> Harness<'static, BaryApp> {
+    let lesson = barylab::lesson::Lesson::open(std::path::Path::new(lesson)).expect("the lesson");
+    let mut h = harness(
+        egui::vec2(1024.0, 768.0),
+        AppOptions {
+            lesson: Some((lesson, step - 1)),
+            present: true,
+            lang: Some(lang),
+            ..AppOptions::default()
+        },
+    );
+    h.state_mut()
+        .push(barylab::app::document::state::StateCommand::SetUiScale(1.5));
+    for _ in 0..4 {
+        h.step();
+    }
+    h.run();
+    h
+}

@@ -35,18 +35,43 @@ pub fn color(c: Rgba) -> Color32 {
     Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3])
 }
 
-fn stroke(s: Stroke) -> EStroke {
+pub(super) fn stroke(s: Stroke) -> EStroke {
     EStroke::new(s.width, color(s.color))
 }
 
+use crate::figure::label_place;
 use crate::figure::svg::DASH;
 use crate::figure::text::{self as figure_text, LABEL_PAD, LABEL_ROUNDING};
 
-fn to_rect(b: figure_text::Box2) -> Rect {
+pub(super) fn to_rect(b: figure_text::Box2) -> Rect {
     Rect::from_min_max(Pos2::new(b[0], b[1]), Pos2::new(b[2], b[3]))
 }
 
-fn to_box(r: Rect) -> figure_text::Box2 {
+/// A label's galley at `size` points, set smaller when wider than `clip` (with its box's
+/// padding when `boxed`), and its outer size.
+fn fitted(
+    painter: &egui::Painter,
+    text: &str,
+    size: f32,
+    c: Rgba,
+    boxed: bool,
+    clip: Rect,
+) -> (std::sync::Arc<egui::Galley>, [f32; 2]) {
+    let lay = |s: f32| painter.layout_no_wrap(text.to_string(), FontId::proportional(s), color(c));
+    let pad = if boxed { LABEL_PAD[0] } else { 0.0 };
+    let width = lay(size).size().x;
+    let galley = lay(size * figure_text::fit(width, 2.0 * pad, to_box(clip)));
+    let outer = figure_text::padded([galley.size().x, galley.size().y], boxed, 1.0);
+    (galley, outer)
+}
+
+/// Canvas position `p` as a screen point's coordinates.
+pub(super) fn to_point(t: CanvasTransform, p: DVec2) -> [f32; 2] {
+    let q = t.to_screen(p);
+    [q.x, q.y]
+}
+
+pub(super) fn to_box(r: Rect) -> figure_text::Box2 {
     [r.left(), r.top(), r.right(), r.bottom()]
 }
 
@@ -83,10 +108,18 @@ pub fn paint(
                 let r = [min.x, min.y, min.x + size[0], min.y + size[1]];
                 Some(crate::figure::svg::color_bar_back(r, 1.0))
             }
+            Shape::QuadLabels {
+                min, max, outline, ..
+            } => Some(label_place::quad_box(
+                to_point(t, *min),
+                to_point(t, *max),
+                *outline,
+            )),
             _ => None,
         })
         .chain(avoid.iter().map(|r| to_box(*r)))
         .collect();
+    let handles = label_place::handle_centres(&overlay.shapes, |p| to_point(t, p));
     let mut placed: Vec<figure_text::Box2> = Vec::new();
     // The views' titles, drawn last so no handle near the image's top edge covers them; a
     // handle's letter that would lie on one moves below it.
@@ -173,22 +206,7 @@ pub fn paint(
             } => {
                 // Placed as the figure export places it (flipped to the other side of its
                 // point if it sticks out, then pushed inside), measured with egui's galley.
-                let lay = |s: f32| {
-                    painter.layout_no_wrap(text.clone(), FontId::proportional(s), color(*c))
-                };
-                // A label wider than its view shrinks to fit it.
-                let pad = if background.is_some() {
-                    LABEL_PAD[0]
-                } else {
-                    0.0
-                };
-                let width = lay(*size).size().x;
-                let galley = lay(size * figure_text::fit(width, 2.0 * pad, to_box(clip)));
-                let outer = figure_text::padded(
-                    [galley.size().x, galley.size().y],
-                    background.is_some(),
-                    1.0,
-                );
+                let (galley, outer) = fitted(&painter, text, *size, *c, background.is_some(), clip);
                 let base = t.to_screen(*at);
                 // A label with a box keeps clear of the others; a bare letter (a handle's
                 // name) stays where it is.
@@ -221,6 +239,41 @@ pub fn paint(
                 } else {
                     draw_label(&painter, to_rect(b), galley, *c, *background);
                 }
+            }
+            Shape::HandleLabel {
+                at,
+                reach,
+                outward,
+                text,
+                size,
+                color: c,
+                background,
+            } => {
+                // Placed as the figure export places it, measured with egui's galley.
+                let (galley, outer) = fitted(&painter, text, *size, *c, true, clip);
+                let p = to_point(t, *at);
+                let b = label_place::place_handle_label(
+                    p,
+                    *reach,
+                    *outward,
+                    &label_place::others(&handles, p),
+                    outer,
+                    to_box(clip),
+                    &placed,
+                    &keep_clear,
+                );
+                placed.push(b);
+                draw_label(&painter, to_rect(b), galley, *c, Some(*background));
+            }
+            Shape::QuadLabels { .. } => {
+                placed.extend(super::paint_quad::quad_labels(
+                    &painter,
+                    shape,
+                    t,
+                    clip,
+                    &placed,
+                    &keep_clear,
+                ));
             }
             Shape::LabelPair {
                 at,
@@ -305,6 +358,22 @@ pub fn scale_marks(overlay: &mut Overlay, k: f32) {
                 *offset = offset.map(|o| o * k);
             }
             Shape::Text { .. } => {}
+            Shape::HandleLabel { reach, size, .. } => {
+                *reach *= k;
+                *size *= k;
+            }
+            Shape::QuadLabels {
+                size,
+                gaps,
+                outline,
+                leader,
+                ..
+            } => {
+                *size *= k;
+                *gaps = gaps.map(|g| g * k);
+                *outline *= k;
+                widen(leader);
+            }
             Shape::LabelPair {
                 offset_y,
                 gap,
@@ -367,7 +436,7 @@ fn below_titles(
 }
 
 /// A laid-out text in its box `outer` (which includes the padding when it has a background).
-fn draw_label(
+pub(super) fn draw_label(
     painter: &egui::Painter,
     outer: Rect,
     galley: std::sync::Arc<egui::Galley>,

@@ -25,7 +25,7 @@ const PICTURE_SCALE: f32 = 2.0;
 /// Narrowest a texture panel is laid out, points (narrower columns show one per row).
 const MIN_PANEL: f32 = 220.0;
 /// The texture view's share of the window's width in presentation mode.
-pub const PRESENT_SHARE: f32 = 0.42;
+pub const PRESENT_SHARE: f32 = 0.46;
 
 /// How the pixels of the pictures are shown: crisp (they are texels or image pixels).
 const PICTURE_TEXTURE: TextureOptions = TextureOptions::NEAREST;
@@ -251,6 +251,7 @@ impl TexelViewPanel {
         output: Option<&CanvasOutput>,
         report: Option<&PixelReport>,
         texture: &Texture,
+        fit: bool,
     ) {
         let lang = crate::app::services::locale::lang(ui.ctx());
         let title = match kind {
@@ -258,6 +259,8 @@ impl TexelViewPanel {
             _ => "texel_view.texture_title",
         };
         ui.label(RichText::new(lang.tr(title)).strong());
+        // Presentation mode: the height under the title, which all of the view must fit.
+        let fit = fit.then(|| ui.available_height());
         let Some(output) = output else {
             return;
         };
@@ -266,11 +269,15 @@ impl TexelViewPanel {
             .auto_shrink([false, false])
             .show(ui, |ui| match kind {
                 TexelView::Lod => self.lod_ui(ui, lang, output, report, texture),
-                _ => self.texture_ui(ui, lang, output, report, texture),
+                _ => self.texture_ui(ui, lang, output, report, texture, fit),
             });
     }
 
-    /// The texture-space view of the report's pixel.
+    /// The texture-space view of the report's pixel. With `fit` (presentation mode: the
+    /// panel's height below its title) all of it fits that height at the presentation text
+    /// size: the numbers in the proportional font, the anisotropic probes as a row of colour
+    /// swatches, the caption as the pictures' hover text, and the pictures as large as the
+    /// room left between the numbers over and under them allows (at least [`MIN_PICTURE`]).
     fn texture_ui(
         &mut self,
         ui: &mut Ui,
@@ -278,6 +285,7 @@ impl TexelViewPanel {
         output: &CanvasOutput,
         report: Option<&PixelReport>,
         texture: &Texture,
+        fit: Option<f32>,
     ) {
         let Some(report) = report else {
             ui.label(lang.tr("texel_view.no_pixel"));
@@ -317,9 +325,17 @@ impl TexelViewPanel {
             .lod
             .as_ref()
             .filter(|_| settings.filter == Filter::Trilinear);
-        let [over, under] = texture_lines(lang, report.pixel, uv, taps, lod, color);
+        let [over, mut under] = texture_lines(lang, report.pixel, uv, taps, lod, color);
+        if fit.is_some() {
+            // Lines closer together: the pictures get the room.
+            ui.spacing_mut().item_spacing.y = FIT_SPACING;
+        }
         for line in over {
-            ui.label(RichText::new(line).monospace());
+            ui.label(if fit.is_some() {
+                RichText::new(line)
+            } else {
+                RichText::new(line).monospace()
+            });
         }
         if self.pictures.as_ref().is_none_or(|(k, _)| *k != key) {
             let handles = view
@@ -333,15 +349,58 @@ impl TexelViewPanel {
                 .collect();
             self.pictures = Some((key, handles));
         }
-        if let Some((_, handles)) = &self.pictures {
-            show_grid(ui, handles);
+        let captions = view.caption(lang);
+        let probes = lod
+            .and_then(|l| l.anisotropic.as_ref())
+            .filter(|_| fit.is_some());
+        if probes.is_some() {
+            // The probes' lines (all but the colour's) become a row of swatches.
+            under.drain(..under.len().saturating_sub(1));
         }
-        for line in view.caption(lang) {
-            ui.label(RichText::new(line).weak());
+        let Some((_, handles)) = &self.pictures else {
+            return;
+        };
+        let Some(height) = fit else {
+            show_grid(ui, handles, f32::INFINITY, None);
+            for line in &captions {
+                ui.label(RichText::new(line).weak());
+            }
+            ui.add_space(4.0);
+            for line in &under {
+                ui.label(RichText::new(line).monospace());
+            }
+            return;
+        };
+        // The room the numbers over the pictures (drawn) and under them (measured here as
+        // their labels will lay them out) leave for the pictures; the caption is the
+        // pictures' hover text.
+        let width = ui.available_width();
+        let spacing = ui.spacing().item_spacing;
+        let font = egui::TextStyle::Body.resolve(ui.style());
+        let layout = |t: &str| {
+            ui.painter()
+                .layout(t.to_string(), font.clone(), Color32::WHITE, width)
+                .size()
+        };
+        let lines: f32 = under.iter().map(|t| layout(t).y + spacing.y).sum();
+        let probes_line = probes.map(|_| lang.tr("texel_view.probes_compact"));
+        let swatch_rows = probes.zip(probes_line.as_ref()).map_or(0.0, |(a, line)| {
+            let row = layout(line).x + spacing.x + a.probes.len() as f32 * (SWATCH + SWATCH_GAP);
+            (row / width).ceil() * (layout(line).y.max(SWATCH) + spacing.y)
+        });
+        let used = ui.cursor().top() - ui.max_rect().top();
+        let room = height - used - lines - swatch_rows - spacing.y;
+        show_grid(
+            ui,
+            handles,
+            room.max(MIN_PICTURE),
+            Some(&captions.join("\n")),
+        );
+        if let (Some(a), Some(line)) = (probes, probes_line) {
+            swatches(ui, lang, a, line);
         }
-        ui.add_space(4.0);
-        for line in under {
-            ui.label(RichText::new(line).monospace());
+        for line in &under {
+            ui.label(line.as_str());
         }
     }
 
@@ -427,20 +486,92 @@ fn upload(ctx: &egui::Context, name: &str, img: &image::RgbaImage) -> TextureHan
 }
 
 /// The panels' pictures in rows as wide as the column, as many to a row as fit
-/// [`MIN_PANEL`] points each.
-fn show_grid(ui: &mut Ui, handles: &[TextureHandle]) {
+/// [`MIN_PANEL`] points each (with `hover` as their hover text); when that is taller than
+/// `room` points, the number of columns
+/// that gives the largest pictures within `room` (the presentation panel's pictures scale to
+/// the space the numbers leave).
+fn show_grid(ui: &mut Ui, handles: &[TextureHandle], room: f32, hover: Option<&str>) {
     let width = ui.available_width();
-    let columns = ((width / MIN_PANEL).floor() as usize).clamp(1, handles.len().max(1));
-    let side = width / columns as f32 - ui.spacing().item_spacing.x;
+    let gap = ui.spacing().item_spacing;
+    // The tallest picture's height per point of width.
+    let aspect = handles
+        .iter()
+        .map(|t| {
+            let [tw, th] = t.size().map(|v| v as f32);
+            th / tw.max(1.0)
+        })
+        .fold(0.0f32, f32::max);
+    let count = handles.len().max(1);
+    // Side (width) of the pictures in `c` columns, limited by `room`.
+    let side_in = |c: usize| {
+        let rows = count.div_ceil(c) as f32;
+        let by_width = width / c as f32 - gap.x;
+        let by_height = (room - rows * gap.y) / rows / aspect.max(1e-3);
+        by_width.min(by_height).max(0.0)
+    };
+    let preferred = ((width / MIN_PANEL).floor() as usize).clamp(1, count);
+    let columns = if side_in(preferred) >= width / preferred as f32 - gap.x {
+        preferred
+    } else {
+        (1..=count)
+            .max_by(|&a, &b| side_in(a).total_cmp(&side_in(b)))
+            .unwrap_or(1)
+    };
+    let side = side_in(columns);
     for row in handles.chunks(columns) {
         ui.horizontal(|ui| {
             for t in row {
                 let [tw, th] = t.size().map(|v| v as f32);
                 let size = egui::vec2(side, side * th / tw.max(1.0));
-                ui.add(egui::Image::new((t.id(), size)));
+                let r = ui.add(egui::Image::new((t.id(), size)));
+                if let Some(text) = hover {
+                    r.on_hover_text(text);
+                }
             }
         });
     }
+}
+
+/// Points: the smallest room the presentation panel gives its pictures (a smaller window
+/// scrolls).
+const MIN_PICTURE: f32 = 80.0;
+
+/// Points between the presentation panel's lines.
+const FIT_SPACING: f32 = 1.0;
+
+/// Points: the side of a probe's colour swatch.
+const SWATCH: f32 = 14.0;
+/// Points between two swatches.
+const SWATCH_GAP: f32 = 2.0;
+
+/// The anisotropic probes' colours as a row of swatches after `line` (each swatch named,
+/// with its line, on hover), wrapped to the column.
+fn swatches(ui: &mut Ui, lang: Lang, a: &crate::probe::AnisotropicTrace, line: String) {
+    ui.horizontal_wrapped(|ui| {
+        ui.label(line);
+        ui.spacing_mut().item_spacing.x = SWATCH_GAP;
+        for (i, p) in a.probes.iter().enumerate() {
+            let c = p.color;
+            let (rect, response) =
+                ui.allocate_exact_size(egui::vec2(SWATCH, SWATCH), Sense::hover());
+            ui.painter().rect(
+                rect,
+                2.0,
+                Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]),
+                Stroke::new(1.0, Color32::from_gray(160)),
+                egui::StrokeKind::Inside,
+            );
+            response.on_hover_text(lang.tr_with(
+                "texel_view.probe",
+                &[
+                    ("i", &(i + 1)),
+                    ("u", &n(p.uv[0])),
+                    ("v", &n(p.uv[1])),
+                    ("color", &rgba(c)),
+                ],
+            ));
+        }
+    });
 }
 
 impl crate::app::BaryApp {
@@ -472,7 +603,7 @@ impl crate::app::BaryApp {
             )
             .resizable(false)
             .exact_size((PRESENT_SHARE * window.width()).round())
-            .show(ui, |ui| view.ui(ui, kind, output, report, texture));
+            .show(ui, |ui| view.ui(ui, kind, output, report, texture, true));
         narrow
     }
 
@@ -490,6 +621,6 @@ impl crate::app::BaryApp {
             .resizable(true)
             .default_size(0.4 * width)
             .size_range((0.25 * width)..=(0.7 * width))
-            .show(ui, |ui| view.ui(ui, kind, output, report, texture));
+            .show(ui, |ui| view.ui(ui, kind, output, report, texture, false));
     }
 }

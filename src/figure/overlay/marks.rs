@@ -114,32 +114,32 @@ pub fn is_triangle_outline(shape: &Shape) -> bool {
         if s.color == TRIANGLE_OUTLINE && points.len() == 3)
 }
 
-/// A square around the pixel and a crosshair through its centre.
 /// The colour of the 2x2 quad's outline and labels.
 const QUAD: Rgba = [255, 220, 60, 255];
 /// Points: the quad's uv labels (four of them: smaller than the other labels).
 const TEXT_QUAD: f32 = 13.0;
 
-/// Points between the quad and its labels.
+/// Points between the quad and its labels' block, and between the block's labels.
 const QUAD_LABEL_GAP: f32 = 8.0;
-/// Points from one quad label to the next in their column (a label's box is about 22 points
-/// tall at [`TEXT_QUAD`]).
-const QUAD_LABEL_STEP: f32 = 24.0;
+const QUAD_LABEL_SPACING: f32 = 2.0;
+/// Points: the width of the quad outline's shadow, drawn outside the quad.
+const QUAD_OUTLINE: f32 = 5.0;
 
-/// The 2x2 quad a pixel's texture derivatives come from: its outline, and the four pixels'
-/// uvs, named `uv_ij` for pixel `(x0 + i, y0 + j)` ("helper" on a pixel outside the triangle,
-/// its uv extrapolated), in two rows of two as the pixels sit (`uv_00 uv_10` over
-/// `uv_01 uv_11`), both rows above the quad in the lower half of the image (`size`, in
-/// pixels), else below it. Labels at all four corners of a quad two pixels wide get pushed
-/// off the image's edge onto each other on a small picture.
+/// The 2x2 quad a pixel's texture derivatives come from: its outline (pushed to `shapes`),
+/// and, returned, the four pixels' uvs as one block of labels ([`Shape::QuadLabels`]), named
+/// `uv_ij` for pixel `(x0 + i, y0 + j)` ("helper" on a pixel outside the triangle, its uv
+/// extrapolated), in two rows of two as the pixels sit (`uv_00 uv_10` over `uv_01 uv_11`),
+/// preferably above the quad in the lower half of the image (`size`, in pixels), else below
+/// it. The caller pushes the block after the handles: it is placed clear of them and their
+/// labels.
 pub(super) fn quad_shapes(
     shapes: &mut Vec<Shape>,
     q: &QuadMark,
     size: DVec2,
     lang: crate::i18n::Lang,
-) {
+) -> Shape {
     let o = DVec2::new(f64::from(q.origin[0]), f64::from(q.origin[1]));
-    for (width, col) in [(5.0, SHADOW), (2.5, QUAD)] {
+    for (width, col) in [(QUAD_OUTLINE, SHADOW), (2.5, QUAD)] {
         shapes.push(Shape::Rect {
             min: o,
             max: o + DVec2::splat(2.0),
@@ -147,23 +147,8 @@ pub(super) fn quad_shapes(
             stroke: Some(Stroke::new(width, col)),
         });
     }
-    // Above the quad in the image's lower half, else below it: two rows of two, as the
-    // quad's pixels sit, the left column ending and the right one starting at its centre.
-    let up = o.y + 1.0 > size.y / 2.0;
-    let at = o + DVec2::new(1.0, if up { 0.0 } else { 2.0 });
-    for k in 0..4 {
-        let Some(uv) = q.uvs[k] else { continue };
-        let (i, j) = (k % 2, k / 2);
-        // Row j's distance from the quad: the nearer row is the quad's nearer row.
-        let out = if up { 1 - j } else { j } as f32;
-        let dy = if up { -1.0 } else { 1.0 } * (QUAD_LABEL_GAP + out * QUAD_LABEL_STEP);
-        let dx = if i == 0 { -2.0 } else { 2.0 };
-        let anchor = match (i, up) {
-            (0, true) => Anchor::RightBottom,
-            (0, false) => Anchor::RightTop,
-            (_, true) => Anchor::LeftBottom,
-            (_, false) => Anchor::LeftTop,
-        };
+    let texts = std::array::from_fn(|k| {
+        let uv = q.uvs[k]?;
         let (u, v) = (
             crate::probe::format::fmt_number(f64::from(uv[0])),
             crate::probe::format::fmt_number(f64::from(uv[1])),
@@ -173,22 +158,27 @@ pub(super) fn quad_shapes(
         } else {
             "figure.quad.helper"
         };
-        shapes.push(Shape::Text {
-            at,
-            offset: [dx, dy],
-            anchor,
-            // Named as the probe and the lessons name them (uv_ij: pixel (x0 + i, y0 + j)).
-            text: lang.tr_with(
-                key,
-                &[("ij", &format!("{}{}", k % 2, k / 2)), ("u", &u), ("v", &v)],
-            ),
-            size: TEXT_QUAD,
-            color: if q.inside[k] { QUAD } else { NEGATIVE },
-            background: Some(LABEL_BG),
-        });
+        // Named as the probe and the lessons name them (uv_ij: pixel (x0 + i, y0 + j)).
+        let text = lang.tr_with(
+            key,
+            &[("ij", &format!("{}{}", k % 2, k / 2)), ("u", &u), ("v", &v)],
+        );
+        Some((text, if q.inside[k] { QUAD } else { NEGATIVE }))
+    });
+    Shape::QuadLabels {
+        min: o,
+        max: o + DVec2::splat(2.0),
+        texts,
+        size: TEXT_QUAD,
+        gaps: [QUAD_LABEL_SPACING, QUAD_LABEL_GAP],
+        outline: QUAD_OUTLINE,
+        above: o.y + 1.0 > size.y / 2.0,
+        background: LABEL_BG,
+        leader: Stroke::new(1.5, QUAD),
     }
 }
 
+/// A square around the pixel and a crosshair through its centre.
 pub(super) fn pixel_marker(
     shapes: &mut Vec<Shape>,
     pixel: [u32; 2],
@@ -299,23 +289,20 @@ pub(super) fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVe
             background: Some(LABEL_BG),
         });
     }
-    // Diagonally outward from the centroid: neighbouring corners' labels go different ways.
-    let (left, up) = (p.x < centre.x, p.y < centre.y);
-    // (The handle's own radius: an active, larger handle's label stays beside it too.)
-    let d = radius * 0.75;
-    shapes.push(Shape::Text {
+    // Diagonally outward from the centroid first: neighbouring corners' labels go different
+    // ways; placed beside this handle, never nearer another (`HandleLabel`).
+    let outward = [
+        if p.x < centre.x { -1.0 } else { 1.0 },
+        if p.y < centre.y { -1.0 } else { 1.0 },
+    ];
+    shapes.push(Shape::HandleLabel {
         at: p,
-        offset: [if left { -d } else { d }, if up { -d } else { d }],
-        anchor: match (left, up) {
-            (true, true) => Anchor::RightBottom,
-            (true, false) => Anchor::RightTop,
-            (false, true) => Anchor::LeftBottom,
-            (false, false) => Anchor::LeftTop,
-        },
+        reach: radius,
+        outward,
         text: format!("{name}  w = {}", format_w(h.w)),
         size: TEXT_LABEL,
         color,
-        background: Some(LABEL_BG),
+        background: LABEL_BG,
     });
 }
 
@@ -485,7 +472,9 @@ mod tests {
         shapes
             .iter()
             .filter_map(|s| match s {
-                Shape::Text { at, text, .. } => Some((*at, text.clone())),
+                Shape::Text { at, text, .. } | Shape::HandleLabel { at, text, .. } => {
+                    Some((*at, text.clone()))
+                }
                 _ => None,
             })
             .collect()

@@ -183,9 +183,11 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
     if let Some(c) = &input.clipped {
         clip_shapes(&mut shapes, c, wf, hf);
     }
+    // The quad's labels go last: placed clear of the handles and their labels.
+    let mut quad_labels = None;
     if let Some(pin) = input.pin {
         if let Some(q) = pin.quad {
-            quad_shapes(&mut shapes, &q, DVec2::new(wf, hf), lang);
+            quad_labels = Some(quad_shapes(&mut shapes, &q, DVec2::new(wf, hf), lang));
         }
         pixel_marker(&mut shapes, pin.pixel, PIN, wf, hf, false);
     }
@@ -219,6 +221,7 @@ pub fn build_in(input: &OverlayInput, lang: Lang) -> Overlay {
             background: Some(LABEL_BG),
         });
     }
+    shapes.extend(quad_labels);
     Overlay { shapes }
 }
 
@@ -285,7 +288,7 @@ mod tests {
             .shapes
             .iter()
             .filter_map(|s| match s {
-                Shape::Text { text, .. } => Some(text.as_str()),
+                Shape::Text { text, .. } | Shape::HandleLabel { text, .. } => Some(text.as_str()),
                 _ => None,
             })
             .collect();

@@ -106,6 +106,49 @@ pub enum Shape {
         /// Box colour; a label with a box keeps clear of the others.
         background: Option<Rgba>,
     },
+    /// A vertex handle's label, placed beside its own handle (centre `at`, radius `reach`
+    /// points) by [`place_handle_label`](crate::figure::label_place::place_handle_label):
+    /// first on the diagonal `outward`, never nearer another handle (every other
+    /// `HandleLabel`'s `at`) than its own.
+    HandleLabel {
+        /// The handle's centre in canvas coordinates.
+        at: DVec2,
+        /// Points: the handle's radius.
+        reach: f32,
+        /// The preferred diagonal: signs of x and y (-1: left / up).
+        outward: [f32; 2],
+        /// The text.
+        text: String,
+        /// Text size in points.
+        size: f32,
+        /// Text colour.
+        color: Rgba,
+        /// Box colour.
+        background: Rgba,
+    },
+    /// The 2x2 quad's four uv labels as one block laid out as the pixels are, placed by
+    /// [`place_quad_block`](crate::figure::label_place::place_quad_block) (a leader line to
+    /// the quad when the block ends up far from it).
+    QuadLabels {
+        /// The quad's top-left corner in canvas coordinates.
+        min: DVec2,
+        /// The quad's bottom-right corner in canvas coordinates.
+        max: DVec2,
+        /// Label `i + 2 j` (pixel `(x0 + i, y0 + j)`): its text and colour.
+        texts: [Option<(String, Rgba)>; 4],
+        /// Text size in points.
+        size: f32,
+        /// Points: between the labels, and between the block and the quad's outline.
+        gaps: [f32; 2],
+        /// Points the quad's outline reaches outside the quad.
+        outline: f32,
+        /// Prefer the block above the quad (else below it).
+        above: bool,
+        /// Box colour.
+        background: Rgba,
+        /// The leader line's style.
+        leader: Stroke,
+    },
     /// Two labels side by side (the wipe line's modes): `texts[0]` left of canvas x `at.x`,
     /// `texts[1]` right of it, `gap` points apart, their bottoms `offset_y` points below
     /// `at.y`. Placed with [`place_pair`](crate::figure::text::place_pair): they never overlap,
@@ -231,6 +274,44 @@ impl Overlay {
                     size: size * k,
                     color,
                     background,
+                },
+                Shape::HandleLabel {
+                    at,
+                    reach,
+                    outward,
+                    text,
+                    size,
+                    color,
+                    background,
+                } => Shape::HandleLabel {
+                    at,
+                    reach: reach * k,
+                    outward,
+                    text,
+                    size: size * k,
+                    color,
+                    background,
+                },
+                Shape::QuadLabels {
+                    min,
+                    max,
+                    texts,
+                    size,
+                    gaps,
+                    outline,
+                    above,
+                    background,
+                    leader,
+                } => Shape::QuadLabels {
+                    min,
+                    max,
+                    texts,
+                    size: size * k,
+                    gaps: gaps.map(|g| g * k),
+                    outline: outline * k,
+                    above,
+                    background,
+                    leader: st(leader),
                 },
                 Shape::LabelPair {
                     at,

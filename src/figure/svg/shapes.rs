@@ -8,6 +8,7 @@ use glam::DVec2;
 use super::MIN_OBSTACLE_RADIUS;
 use super::labels::{Glyphs, Label, label};
 use super::markup::{Transform, fill, hex, n, points, rect, stroke};
+use crate::figure::label_place;
 use crate::figure::overlay::{Anchor, LABEL_BG, LABEL_TEXT, Overlay, Rgba, Shape, Stroke};
 use crate::figure::text::{self, Box2, LABEL_PAD};
 
@@ -59,9 +60,17 @@ pub(super) fn overlay(
                     k,
                 ))
             }
+            Shape::QuadLabels {
+                min, max, outline, ..
+            } => Some(label_place::quad_box(
+                t.point(*min),
+                t.point(*max),
+                *outline,
+            )),
             _ => None,
         })
         .collect();
+    let handles = label_place::handle_centres(&overlay.shapes, |p| t.point(p));
     let mut placed: Vec<Box2> = Vec::new();
     for shape in &overlay.shapes {
         let on_image = matches!(
@@ -184,6 +193,92 @@ pub(super) fn overlay(
                     placed.push(b);
                 }
                 label(s, glyphs, b, Label::new(txt, *size, *color, *background), k);
+            }
+            Shape::HandleLabel {
+                at,
+                reach,
+                outward,
+                text: txt,
+                size,
+                color,
+                background,
+            } => {
+                let p = t.point(*at);
+                let width = text::measure(txt, *size).0[0];
+                let size = size * text::fit(width, 2.0 * LABEL_PAD[0] * k, clip);
+                let outer = text::padded(text::measure(txt, size).0, true, k);
+                let others = label_place::others(&handles, p);
+                let b = label_place::place_handle_label(
+                    p,
+                    *reach,
+                    *outward,
+                    &others,
+                    outer,
+                    clip,
+                    &placed,
+                    &keep_clear,
+                );
+                placed.push(b);
+                label(
+                    s,
+                    glyphs,
+                    b,
+                    Label::new(txt, size, *color, Some(*background)),
+                    k,
+                );
+            }
+            Shape::QuadLabels {
+                min,
+                max,
+                texts,
+                size,
+                gaps,
+                outline,
+                above,
+                background,
+                leader,
+            } => {
+                // A block wider than its view shrinks to fit it.
+                let widths = texts
+                    .each_ref()
+                    .map(|x| x.as_ref().map(|(x, _)| text::measure(x, *size).0[0]));
+                let size =
+                    &(size * label_place::block_fit(widths, LABEL_PAD[0] * k, gaps[0], clip));
+                let sizes = texts.each_ref().map(|x| {
+                    x.as_ref()
+                        .map(|(x, _)| text::padded(text::measure(x, *size).0, true, k))
+                });
+                let quad = label_place::quad_box(t.point(*min), t.point(*max), *outline);
+                let q = label_place::place_quad_block(
+                    quad,
+                    sizes,
+                    gaps[0],
+                    gaps[1],
+                    *above,
+                    clip,
+                    &placed,
+                    &keep_clear,
+                );
+                if let Some([a, b]) = q.leader {
+                    let _ = writeln!(
+                        s,
+                        r#"<polyline points="{}" fill="none"{}/>"#,
+                        points(&[a, b]),
+                        stroke(Some(*leader), false, k)
+                    );
+                }
+                for (b, x) in q.boxes.iter().zip(texts) {
+                    if let (Some(b), Some((txt, color))) = (b, x) {
+                        label(
+                            s,
+                            glyphs,
+                            *b,
+                            Label::new(txt, *size, *color, Some(*background)),
+                            k,
+                        );
+                        placed.push(*b);
+                    }
+                }
             }
             Shape::LabelPair {
                 at,
