@@ -250,3 +250,77 @@ fn on_a_projector_at_text_size_1_5_the_anisotropic_view_fits_its_panel() {
         );
     }
 }
+
+/// The trilinear steps that show the texture view (the footprint, the level of detail,
+/// trilinear, the affine pitfall) at a lecture projector, in both languages: the view fits
+/// its panel without scrolling (the colour line ends above the lesson bar), the pictures get
+/// at least 80 points under the levels' line, and the eight taps' lines, which do not fit,
+/// are not drawn as lines (their weights are printed in the pictures).
+#[test]
+fn on_a_projector_at_text_size_1_5_the_trilinear_views_fit_their_panel() {
+    for step in [6, 8, 12] {
+        let t = probe_step(step);
+        let l = common::lod_of(&t);
+        assert!(l.anisotropic.is_none(), "step {step} is trilinear");
+        for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+            let h = common::app::lecture("texture", step, lang);
+            let rect = |text: &str| {
+                h.query_by_label(text)
+                    .unwrap_or_else(|| panic!("step {step} {lang:?}: {text} shown"))
+                    .rect()
+            };
+            let c = t.color;
+            let colour = lang.tr_with(
+                "texel_view.color",
+                &[(
+                    "color",
+                    &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
+                )],
+            );
+            let levels = match l.trilinear.next {
+                Some((e, f)) => lang.tr_with(
+                    "texel_view.two_levels",
+                    &[
+                        ("d", &l.trilinear.level),
+                        ("e", &e),
+                        ("wd", &n(1.0 - f)),
+                        ("we", &n(f)),
+                    ],
+                ),
+                None => lang.tr_with("texel_view.one_level", &[("d", &l.trilinear.level)]),
+            };
+            let bar = rect(&lang.tr("lesson.next"));
+            let (last, over) = (rect(&colour), rect(&levels));
+            let window = h.ctx.content_rect();
+            assert!(
+                last.max.y <= bar.min.y && last.max.y <= window.max.y,
+                "step {step} {lang:?}: {colour} at {last:?}, the bar at {bar:?}"
+            );
+            assert!(
+                last.min.y - over.max.y >= 80.0,
+                "step {step} {lang:?}: the pictures' room from {over:?} to {last:?}"
+            );
+            let tap = &l.taps[0];
+            let tap_line = lang.tr_with(
+                "texel_view.tap",
+                &[
+                    ("level", &tap.level),
+                    ("i", &tap.i),
+                    ("j", &tap.j),
+                    ("w", &n(tap.weight)),
+                    (
+                        "color",
+                        &format!(
+                            "rgba({}, {}, {}, {})",
+                            tap.texel[0], tap.texel[1], tap.texel[2], tap.texel[3]
+                        ),
+                    ),
+                ],
+            );
+            assert!(
+                !shows(&h, &tap_line),
+                "step {step} {lang:?}: the tap line {tap_line} is drawn"
+            );
+        }
+    }
+}

@@ -276,7 +276,8 @@ impl TexelViewPanel {
     /// The texture-space view of the report's pixel. With `fit` (presentation mode: the
     /// panel's height below its title) all of it fits that height at the presentation text
     /// size: the numbers in the proportional font, the anisotropic probes as a row of colour
-    /// swatches, the caption as the pictures' hover text, and the pictures as large as the
+    /// swatches, trilinear's eight tap lines and the caption as the pictures' hover text (the
+    /// pictures print each tap's weight), and the pictures as large as the
     /// room left between the numbers over and under them allows (at least [`MIN_PICTURE`]).
     fn texture_ui(
         &mut self,
@@ -331,8 +332,10 @@ impl TexelViewPanel {
             ui.spacing_mut().item_spacing.y = FIT_SPACING;
         }
         for line in over {
+            // Presenting, the numbers in the strong (brightest) text colour: a projector loses
+            // the contrast of the default grey.
             ui.label(if fit.is_some() {
-                RichText::new(line)
+                RichText::new(line).strong()
             } else {
                 RichText::new(line).monospace()
             });
@@ -353,9 +356,16 @@ impl TexelViewPanel {
         let probes = lod
             .and_then(|l| l.anisotropic.as_ref())
             .filter(|_| fit.is_some());
+        let mut hover = captions.join("\n");
         if probes.is_some() {
             // The probes' lines (all but the colour's) become a row of swatches.
             under.drain(..under.len().saturating_sub(1));
+        } else if fit.is_some() && lod.is_some() {
+            // Trilinear's eight taps: the pictures print each tap's weight in its texel, so
+            // presenting, their lines (all but the colour's) are the pictures' hover text
+            // and the pictures get the room.
+            let taps: Vec<String> = under.drain(..under.len().saturating_sub(1)).collect();
+            hover = format!("{hover}\n{}", taps.join("\n"));
         }
         let Some((_, handles)) = &self.pictures else {
             return;
@@ -390,17 +400,12 @@ impl TexelViewPanel {
         });
         let used = ui.cursor().top() - ui.max_rect().top();
         let room = height - used - lines - swatch_rows - spacing.y;
-        show_grid(
-            ui,
-            handles,
-            room.max(MIN_PICTURE),
-            Some(&captions.join("\n")),
-        );
+        show_grid(ui, handles, room.max(MIN_PICTURE), Some(&hover));
         if let (Some(a), Some(line)) = (probes, probes_line) {
             swatches(ui, lang, a, line);
         }
         for line in &under {
-            ui.label(line.as_str());
+            ui.label(RichText::new(line.as_str()).strong());
         }
     }
 
