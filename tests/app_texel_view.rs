@@ -251,17 +251,20 @@ fn on_a_projector_at_text_size_1_5_the_anisotropic_view_fits_its_panel() {
     }
 }
 
-/// The trilinear steps that show the texture view (the footprint, the level of detail,
-/// trilinear, the affine pitfall) at a lecture projector, in both languages: the view fits
-/// its panel without scrolling (the colour line ends above the lesson bar), the pictures get
-/// at least 80 points under the levels' line, and the eight taps' lines, which do not fit,
-/// are not drawn as lines (their weights are printed in the pictures).
+/// The steps that show the texture view with several taps (bilinear; the footprint, the
+/// level of detail, trilinear, the affine pitfall) at a lecture projector, in both languages:
+/// the view fits its panel without scrolling (the colour line ends above the lesson bar), the
+/// pictures get at least 120 points under the numbers over them, and the taps' lines, which
+/// do not fit, are not drawn as lines (their weights are printed in the pictures).
 #[test]
-fn on_a_projector_at_text_size_1_5_the_trilinear_views_fit_their_panel() {
-    for step in [6, 8, 12] {
+fn on_a_projector_at_text_size_1_5_the_bilinear_and_trilinear_views_fit_their_panel() {
+    for step in [2, 6, 8, 12] {
         let t = probe_step(step);
-        let l = common::lod_of(&t);
-        assert!(l.anisotropic.is_none(), "step {step} is trilinear");
+        let a = t
+            .detail
+            .as_ref()
+            .and_then(|d| d.attribute.as_ref())
+            .expect("a texture lookup");
         for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
             let h = common::app::lecture("texture", step, lang);
             let rect = |text: &str| {
@@ -269,38 +272,46 @@ fn on_a_projector_at_text_size_1_5_the_trilinear_views_fit_their_panel() {
                     .unwrap_or_else(|| panic!("step {step} {lang:?}: {text} shown"))
                     .rect()
             };
-            let c = t.color;
-            let colour = lang.tr_with(
-                "texel_view.color",
-                &[(
-                    "color",
-                    &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
-                )],
-            );
-            let levels = match l.trilinear.next {
-                Some((e, f)) => lang.tr_with(
-                    "texel_view.two_levels",
+            let rgba = |c: [u8; 4]| format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
+            let colour = lang.tr_with("texel_view.color", &[("color", &rgba(t.color))]);
+            // The last line over the pictures: the levels (trilinear), else the uv.
+            let over_line = match a.lod.as_ref().map(|l| &l.trilinear) {
+                Some(c) => match c.next {
+                    Some((e, f)) => lang.tr_with(
+                        "texel_view.two_levels",
+                        &[
+                            ("d", &c.level),
+                            ("e", &e),
+                            ("wd", &n(1.0 - f)),
+                            ("we", &n(f)),
+                        ],
+                    ),
+                    None => lang.tr_with("texel_view.one_level", &[("d", &c.level)]),
+                },
+                None => lang.tr_with(
+                    "texel_view.uv",
                     &[
-                        ("d", &l.trilinear.level),
-                        ("e", &e),
-                        ("wd", &n(1.0 - f)),
-                        ("we", &n(f)),
+                        ("x", &t.pixel[0]),
+                        ("y", &t.pixel[1]),
+                        ("u", &n(a.uv_perspective[0])),
+                        ("v", &n(a.uv_perspective[1])),
                     ],
                 ),
-                None => lang.tr_with("texel_view.one_level", &[("d", &l.trilinear.level)]),
             };
             let bar = rect(&lang.tr("lesson.next"));
-            let (last, over) = (rect(&colour), rect(&levels));
+            let (last, over) = (rect(&colour), rect(&over_line));
             let window = h.ctx.content_rect();
             assert!(
                 last.max.y <= bar.min.y && last.max.y <= window.max.y,
                 "step {step} {lang:?}: {colour} at {last:?}, the bar at {bar:?}"
             );
             assert!(
-                last.min.y - over.max.y >= 80.0,
+                last.min.y - over.max.y >= 120.0,
                 "step {step} {lang:?}: the pictures' room from {over:?} to {last:?}"
             );
-            let tap = &l.taps[0];
+            let taps = a.lod.as_ref().map_or(&a.taps_perspective, |l| &l.taps);
+            assert!(taps.len() >= 4, "step {step}: several taps");
+            let tap = &taps[0];
             let tap_line = lang.tr_with(
                 "texel_view.tap",
                 &[
@@ -308,13 +319,7 @@ fn on_a_projector_at_text_size_1_5_the_trilinear_views_fit_their_panel() {
                     ("i", &tap.i),
                     ("j", &tap.j),
                     ("w", &n(tap.weight)),
-                    (
-                        "color",
-                        &format!(
-                            "rgba({}, {}, {}, {})",
-                            tap.texel[0], tap.texel[1], tap.texel[2], tap.texel[3]
-                        ),
-                    ),
+                    ("color", &rgba(tap.texel)),
                 ],
             );
             assert!(

@@ -276,7 +276,7 @@ impl TexelViewPanel {
     /// The texture-space view of the report's pixel. With `fit` (presentation mode: the
     /// panel's height below its title) all of it fits that height at the presentation text
     /// size: the numbers in the proportional font, the anisotropic probes as a row of colour
-    /// swatches, trilinear's eight tap lines and the caption as the pictures' hover text (the
+    /// swatches, the tap lines (more than one tap) and the caption as the pictures' hover text (the
     /// pictures print each tap's weight), and the pictures as large as the
     /// room left between the numbers over and under them allows (at least [`MIN_PICTURE`]).
     fn texture_ui(
@@ -360,10 +360,10 @@ impl TexelViewPanel {
         if probes.is_some() {
             // The probes' lines (all but the colour's) become a row of swatches.
             under.drain(..under.len().saturating_sub(1));
-        } else if fit.is_some() && lod.is_some() {
-            // Trilinear's eight taps: the pictures print each tap's weight in its texel, so
-            // presenting, their lines (all but the colour's) are the pictures' hover text
-            // and the pictures get the room.
+        } else if fit.is_some() && under.len() > 2 {
+            // Bilinear's four taps, trilinear's eight: the pictures print each tap's weight
+            // in its texel, so presenting, their lines (all but the colour's) are the
+            // pictures' hover text and the pictures get the room.
             let taps: Vec<String> = under.drain(..under.len().saturating_sub(1)).collect();
             hover = format!("{hover}\n{}", taps.join("\n"));
         }
