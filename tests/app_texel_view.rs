@@ -329,3 +329,28 @@ fn on_a_projector_at_text_size_1_5_the_bilinear_and_trilinear_views_fit_their_pa
         }
     }
 }
+
+/// The step that plots lambda down a column (step 9) at a lecture projector, in both
+/// languages: both legend entries over the plot show whole, left of the level-of-detail view
+/// beside them (the second entry ran past the plot's right edge and was cut).
+#[test]
+fn on_a_projector_the_lambda_plots_legend_shows_whole() {
+    for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+        let h = common::app::lecture("texture", 9, lang);
+        let view = h
+            .query_by_label(&lang.tr("texel_view.lod_title"))
+            .unwrap_or_else(|| panic!("{lang:?}: the level-of-detail view"))
+            .rect();
+        for key in ["lesson.plot_lambda_line", "lesson.plot_level_line"] {
+            let name = lang.tr(key);
+            let r = h
+                .query_by_label(&name)
+                .unwrap_or_else(|| panic!("{lang:?}: the legend entry {name}"))
+                .rect();
+            assert!(
+                r.max.x <= view.min.x,
+                "{lang:?}: {name} at {r:?} runs into the view at {view:?}"
+            );
+        }
+    }
+}

@@ -22,7 +22,6 @@ pub mod lessons;
 pub(crate) mod magnifier;
 pub(crate) mod other_image;
 pub(crate) mod paint;
-mod paint_quad;
 pub(crate) mod path_window;
 pub(crate) mod plots;
 pub(crate) mod present;

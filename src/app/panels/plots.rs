@@ -32,8 +32,23 @@ pub fn plot_ui(
     let width = ui.available_width().max(120.0);
     ui.set_max_width(width);
     let legend = |ui: &mut egui::Ui, lines: &PlotLines| {
-        // Each entry (the line's colour and its name) wraps as one piece, never inside a name.
+        // Each entry (the line's colour and its name) wraps as one piece, never inside a name:
+        // an entry that would not fit the rest of the row starts the next one (the wrapped
+        // layout cannot move a group it has already placed, which then ran past the edge).
+        let font = egui::TextStyle::Body.resolve(ui.style());
+        let text_width = |ui: &egui::Ui, text: String| {
+            ui.painter()
+                .layout_no_wrap(text, font.clone(), egui::Color32::WHITE)
+                .size()
+                .x
+        };
         for (k, (key, _)) in lines.iter().enumerate() {
+            let entry = text_width(ui, "━━".to_owned())
+                + ui.spacing().item_spacing.x
+                + text_width(ui, tr(lang, key));
+            if k > 0 && entry > ui.available_size_before_wrap().x {
+                ui.end_row();
+            }
             ui.horizontal(|ui| {
                 ui.label(RichText::new("━━").color(line_color(k)).strong());
                 ui.add(egui::Label::new(tr(lang, key)).wrap_mode(egui::TextWrapMode::Extend));

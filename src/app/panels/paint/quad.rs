@@ -4,7 +4,7 @@
 
 use egui::{FontId, Pos2, Rect};
 
-use super::paint::{CanvasTransform, color, draw_label, stroke, to_box, to_point, to_rect};
+use super::{CanvasTransform, color, draw_label, stroke, to_box, to_point, to_rect};
 use crate::figure::label_place;
 use crate::figure::overlay::Shape;
 use crate::figure::text::{self as figure_text, Box2, LABEL_PAD};

@@ -4,6 +4,8 @@ use egui::epaint::{Mesh, PathStroke};
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape as EShape, Stroke as EStroke, StrokeKind};
 use glam::DVec2;
 
+mod quad;
+
 use crate::figure::overlay::{Overlay, Rgba, Shape, Stroke};
 
 /// Maps canvas coordinates (rendered pixels) to screen points.
@@ -266,7 +268,7 @@ pub fn paint(
                 draw_label(&painter, to_rect(b), galley, *c, Some(*background));
             }
             Shape::QuadLabels { .. } => {
-                placed.extend(super::paint_quad::quad_labels(
+                placed.extend(quad::quad_labels(
                     &painter,
                     shape,
                     t,
