@@ -332,7 +332,7 @@ fn on_a_projector_at_text_size_1_5_the_bilinear_and_trilinear_views_fit_their_pa
 
 /// The step that plots lambda down a column (step 9) at a lecture projector, in both
 /// languages: both legend entries over the plot show whole, left of the level-of-detail view
-/// beside them (the second entry ran past the plot's right edge and was cut).
+/// beside them (the second entry ran past the plot's right edge and was cut), in one row.
 #[test]
 fn on_a_projector_the_lambda_plots_legend_shows_whole() {
     for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
@@ -341,6 +341,7 @@ fn on_a_projector_the_lambda_plots_legend_shows_whole() {
             .query_by_label(&lang.tr("texel_view.lod_title"))
             .unwrap_or_else(|| panic!("{lang:?}: the level-of-detail view"))
             .rect();
+        let mut rows = Vec::new();
         for key in ["lesson.plot_lambda_line", "lesson.plot_level_line"] {
             let name = lang.tr(key);
             let r = h
@@ -351,6 +352,12 @@ fn on_a_projector_the_lambda_plots_legend_shows_whole() {
                 r.max.x <= view.min.x,
                 "{lang:?}: {name} at {r:?} runs into the view at {view:?}"
             );
+            rows.push(r.center().y);
         }
+        // One row: a second one would squash the short plot under it.
+        assert!(
+            (rows[0] - rows[1]).abs() < 2.0,
+            "{lang:?}: the legend takes two rows ({rows:?})"
+        );
     }
 }

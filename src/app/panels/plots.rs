@@ -17,6 +17,10 @@ use crate::raster::{Framebuffer, Interpolation, Texture};
 
 pub use crate::lesson::plot::{PlotLines, row_lines, title_key};
 
+/// The smallest share of the text size the presentation band's one-row legend is set in to
+/// fit its row (smaller would not be read from the back of a room; the entries wrap instead).
+const LEGEND_MIN_SCALE: f32 = 0.8;
+
 /// The plot window's contents: a choice of plot, then the plot with the pinned column marked.
 /// `one_row`: only the legend above the plot, no choice (a short band: presentation mode).
 pub fn plot_ui(
@@ -35,23 +39,46 @@ pub fn plot_ui(
         // Each entry (the line's colour and its name) wraps as one piece, never inside a name:
         // an entry that would not fit the rest of the row starts the next one (the wrapped
         // layout cannot move a group it has already placed, which then ran past the edge).
-        let font = egui::TextStyle::Body.resolve(ui.style());
-        let text_width = |ui: &egui::Ui, text: String| {
-            ui.painter()
-                .layout_no_wrap(text, font.clone(), egui::Color32::WHITE)
-                .size()
-                .x
+        // In one row (the presentation band, whose plot a second legend row would squash),
+        // the names are set smaller, down to LEGEND_MIN_SCALE of the text size, to fit it.
+        let body = egui::TextStyle::Body.resolve(ui.style());
+        let gap = ui.spacing().item_spacing.x;
+        let entry_width = |ui: &egui::Ui, text: String, font: &egui::FontId| {
+            let w = |t: String| {
+                ui.painter()
+                    .layout_no_wrap(t, font.clone(), egui::Color32::WHITE)
+                    .size()
+                    .x
+            };
+            w("━━".to_owned()) + gap + w(text)
         };
+        let total: f32 = lines
+            .iter()
+            .map(|(key, _)| entry_width(ui, tr(lang, key), &body) + gap + 8.0)
+            .sum();
+        let room = ui.available_size_before_wrap().x;
+        let scale = if one_row && total > room {
+            (room / total).max(LEGEND_MIN_SCALE)
+        } else {
+            1.0
+        };
+        let font = egui::FontId::new(body.size * scale, body.family.clone());
         for (k, (key, _)) in lines.iter().enumerate() {
-            let entry = text_width(ui, "━━".to_owned())
-                + ui.spacing().item_spacing.x
-                + text_width(ui, tr(lang, key));
+            let entry = entry_width(ui, tr(lang, key), &font);
             if k > 0 && entry > ui.available_size_before_wrap().x {
                 ui.end_row();
             }
             ui.horizontal(|ui| {
-                ui.label(RichText::new("━━").color(line_color(k)).strong());
-                ui.add(egui::Label::new(tr(lang, key)).wrap_mode(egui::TextWrapMode::Extend));
+                ui.label(
+                    RichText::new("━━")
+                        .font(font.clone())
+                        .color(line_color(k))
+                        .strong(),
+                );
+                ui.add(
+                    egui::Label::new(RichText::new(tr(lang, key)).font(font.clone()))
+                        .wrap_mode(egui::TextWrapMode::Extend),
+                );
             });
             ui.add_space(8.0);
         }
