@@ -413,8 +413,9 @@ pub fn check_folder(folder: &Path) -> Result<(), String> {
         }
         Err(e) => return Err(format!("folder {}: {e}", shown(folder))),
     }
-    temp_in(folder, None)
-        .map(|t| drop((temps::register(t.path()), t)))
+    // The file is removed before it leaves the registry (a tuple drops its first field first).
+    temps::create(|| temp_in(folder, None))
+        .map(drop)
         .map_err(|e| format!("cannot create files in {}: {e}", shown(folder)))
 }
 
@@ -475,8 +476,7 @@ pub fn stage(
         _ => path.to_path_buf(),
     };
     let path = target.as_path();
-    let file = temp_in(folder_of(path), Some(path)).map_err(io)?;
-    let registered = temps::register(file.path());
+    let (file, registered) = temps::create(|| temp_in(folder_of(path), Some(path))).map_err(io)?;
     let mut w = BufWriter::new(file.reopen().map_err(io)?);
     write(&mut w).map_err(io)?;
     let f = w.into_inner().map_err(|e| io(e.into_error()))?;

@@ -4,7 +4,7 @@
 //! registered files and ends the program with exit code 128 + the signal's number, as a shell
 //! reports a program ended by that signal.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::Mutex;
 
 /// The temporary files that exist now (written, not yet renamed into place or removed).
@@ -18,10 +18,18 @@ pub const SIGNAL_EXIT_BASE: i32 = 128;
 #[derive(Debug)]
 pub(super) struct Registered(PathBuf);
 
-/// Registers the temporary file at `path` until the returned guard is dropped.
-pub(super) fn register(path: &Path) -> Registered {
-    lock().push(path.to_path_buf());
-    Registered(path.to_path_buf())
+/// Creates a temporary file through `make` and registers it until the returned guard is
+/// dropped. The file is made while the registry is held, so a signal never finds a file that
+/// exists but is not yet on the list (the signal thread holds the registry from the removal
+/// until the program ends, so no file is made after the removal either).
+pub(super) fn create(
+    make: impl FnOnce() -> std::io::Result<tempfile::NamedTempFile>,
+) -> std::io::Result<(tempfile::NamedTempFile, Registered)> {
+    let mut list = lock();
+    let file = make()?;
+    let path = file.path().to_path_buf();
+    list.push(path.clone());
+    Ok((file, Registered(path)))
 }
 
 impl Drop for Registered {
@@ -40,11 +48,15 @@ fn lock() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
-/// Removes every registered temporary file (what the signal thread does before exiting).
-fn remove_all() {
-    for path in lock().iter() {
+/// Removes every registered temporary file and ends the program with `code`, holding the
+/// registry to the end: a thread that is about to make a temporary file waits (for ever) in
+/// [`create`] instead of leaving one behind.
+fn remove_all_and_exit(code: i32) -> ! {
+    let list = lock();
+    for path in list.iter() {
         let _ = std::fs::remove_file(path);
     }
+    std::process::exit(code)
 }
 
 /// Makes SIGINT, SIGTERM and SIGHUP remove the temporary files being written before the
@@ -79,8 +91,7 @@ pub fn remove_temps_on_signals() -> std::io::Result<()> {
                 // SAFETY: `set` is a valid signal set, blocked in every thread, and `signal`
                 // is a valid place for the number of the signal received.
                 if unsafe { libc::sigwait(&set, &mut signal) } == 0 {
-                    remove_all();
-                    std::process::exit(SIGNAL_EXIT_BASE + signal);
+                    remove_all_and_exit(SIGNAL_EXIT_BASE + signal);
                 }
             }
         })?;
