@@ -290,10 +290,18 @@ unsafe fn edge_triangle_body<const WIDE: bool>(
 /// [`BLOCK_ROWS`](super::BLOCK_ROWS)
 /// rows: each block rejected, accepted or tested whole, then row by row; a row covering at
 /// most [`sparse::MAX_LANES`] pixels goes to `gathered` when there is one.
+///
+/// Always inlined, without a target feature of its own: compiled into each entry with that
+/// entry's instruction set, so the AVX-512 entry's sixteen-lane functions (`wide`) inline
+/// here. (As an AVX2 function it was a call of its own in the AVX-512 entry, and every
+/// sixteen-lane call from it passed its vectors through memory: the nearest quad measured
+/// about 25% slower than when this walk was inlined.)
+///
+/// # Safety
+/// The CPU has AVX2, and AVX-512 F, BW, VL and DQ when `WIDE`.
 #[allow(clippy::too_many_arguments)]
-#[inline]
-#[target_feature(enable = "avx2")]
-fn block_rows<const WIDE: bool>(
+#[inline(always)]
+unsafe fn block_rows<const WIDE: bool>(
     tri: &LaneTriangle,
     (y_start, y_end): (u32, u32),
     mut gathered: Option<&mut sparse::Gathered>,
@@ -303,86 +311,87 @@ fn block_rows<const WIDE: bool>(
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
-    let planes = &tri.planes;
-    let consts = &tri.consts;
-    let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
-    let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
-    let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
-    let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
-    let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
-    // Row chunks in one AVX-512 register each (see `wide`).
-    let wide_rows = WIDE && wide::applies(consts, color, sampler, target);
-    // Rows of a block inside the triangle in pairs of sixteen lanes (see `wide::texture_pair`).
-    let pairs = match sampler {
-        Some(s) if WIDE && wide::pairs_apply(consts, color, sampler, target) => Some(s),
-        _ => None,
-    };
-    // The walk of `blocks::Blocks`, written out: the iterator measured about 5% more
-    // instructions here on the 75k mesh (its triangles are a few blocks each).
-    let mut by = y_start;
-    while by <= y_end {
-        let by_end = (by + BLOCK_ROWS - 1).min(y_end);
-        let mut bx = x0;
-        while bx <= x1 {
-            let block = classify(
-                planes,
-                (i64::from(bx), i64::from(bx + LANES as u32 - 1)),
-                (i64::from(by), i64::from(by_end)),
-            );
-            if block == Block::Outside {
-                bx += LANES as u32;
-                continue;
-            }
-            let lanes_in = (x1 - bx + 1).min(LANES as u32);
-            let in_row = (1i32 << lanes_in) - 1;
-            if let Some(sampler) = pairs
-                && block == Block::Inside
-                && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
-            {
-                // SAFETY: `pairs` is set only when `WIDE`, which is set only when the CPU has
-                // AVX-512 F, BW, VL and DQ.
-                unsafe {
-                    wide::inside_block(consts, (bx, in_row), (by, by_end), mode, sampler, target)
-                };
-                bx += LANES as u32;
-                continue;
-            }
-            for y in by..=by_end {
-                let base = planes.at(i64::from(y), i64::from(bx));
-                let mut lo = [_mm256_setzero_pd(); 3];
-                let mut hi = [_mm256_setzero_pd(); 3];
-                for i in 0..3 {
-                    let b = _mm256_set1_pd(base[i] as f64);
-                    lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
-                    hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
-                }
-                let covered = if block == Block::Inside {
-                    in_row
-                } else {
-                    (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row
-                };
-                if covered == 0 {
+    // SAFETY: the function's condition: AVX2 for the AVX2 functions called, AVX-512 F, BW, VL
+    // and DQ for the sixteen-lane ones (called only when `WIDE`); the writes' indices are
+    // pixels of the band inside the image, as each call's comment says.
+    unsafe {
+        let planes = &tri.planes;
+        let consts = &tri.consts;
+        let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
+        let lane_lo = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+        let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
+        let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
+        let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
+        // Row chunks in one AVX-512 register each (see `wide`).
+        let wide_rows = WIDE && wide::applies(consts, color, sampler, target);
+        // Rows of a block inside the triangle in pairs of sixteen lanes (see `wide::texture_pair`).
+        let pairs = match sampler {
+            Some(s) if WIDE && wide::pairs_apply(consts, color, sampler, target) => Some(s),
+            _ => None,
+        };
+        // The walk of `blocks::Blocks`, written out: the iterator measured about 5% more
+        // instructions here on the 75k mesh (its triangles are a few blocks each).
+        let mut by = y_start;
+        while by <= y_end {
+            let by_end = (by + BLOCK_ROWS - 1).min(y_end);
+            let mut bx = x0;
+            while bx <= x1 {
+                let block = classify(
+                    planes,
+                    (i64::from(bx), i64::from(bx + LANES as u32 - 1)),
+                    (i64::from(by), i64::from(by_end)),
+                );
+                if block == Block::Outside {
+                    bx += LANES as u32;
                     continue;
                 }
-                if let Some(g) = gathered.as_deref_mut()
-                    && covered.count_ones() <= sparse::MAX_LANES
+                let lanes_in = (x1 - bx + 1).min(LANES as u32);
+                let in_row = (1i32 << lanes_in) - 1;
+                if let Some(sampler) = pairs
+                    && block == Block::Inside
+                    && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
                 {
-                    g.add(bx, y, covered);
-                    if g.full() {
-                        draw_gathered::<2, WIDE>(g, consts, mode, color, sampler, lookups, target);
-                    }
+                    // `pairs` is set only when `WIDE`, which is set only when the CPU has AVX-512
+                    // F, BW, VL and DQ.
+                    wide::inside_block(consts, (bx, in_row), (by, by_end), mode, sampler, target);
+                    bx += LANES as u32;
                     continue;
                 }
-                let py = f64::from(y) + 0.5;
-                let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
-                let index = (y - target.y0) as usize * target.width as usize + bx as usize;
-                if WIDE && wide_rows {
-                    // SAFETY: `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ.
-                    let l =
-                        unsafe { wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5) };
-                    // SAFETY: as above; the row chunk's covered lanes are pixels of the band's
-                    // row inside the image.
-                    unsafe {
+                for y in by..=by_end {
+                    let base = planes.at(i64::from(y), i64::from(bx));
+                    let mut lo = [_mm256_setzero_pd(); 3];
+                    let mut hi = [_mm256_setzero_pd(); 3];
+                    for i in 0..3 {
+                        let b = _mm256_set1_pd(base[i] as f64);
+                        lo[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_lo));
+                        hi[i] = _mm256_add_pd(b, _mm256_mul_pd(a[i], lane_hi));
+                    }
+                    let covered = if block == Block::Inside {
+                        in_row
+                    } else {
+                        (passing(&lo, &t) | (passing(&hi, &t) << 4)) & in_row
+                    };
+                    if covered == 0 {
+                        continue;
+                    }
+                    if let Some(g) = gathered.as_deref_mut()
+                        && covered.count_ones() <= sparse::MAX_LANES
+                    {
+                        g.add(bx, y, covered);
+                        if g.full() {
+                            draw_gathered::<2, WIDE>(
+                                g, consts, mode, color, sampler, lookups, target,
+                            );
+                        }
+                        continue;
+                    }
+                    let py = f64::from(y) + 0.5;
+                    let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
+                    let index = (y - target.y0) as usize * target.width as usize + bx as usize;
+                    if WIDE && wide_rows {
+                        // `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ; the row
+                        // chunk's covered lanes are pixels of the band's row inside the image.
+                        let l = wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5);
                         wide::texture_chunk::<4, WIDE>(
                             l,
                             consts,
@@ -392,29 +401,29 @@ fn block_rows<const WIDE: bool>(
                             sampler,
                             lookups,
                             target,
-                        )
-                    };
-                    continue;
+                        );
+                        continue;
+                    }
+                    let px = _mm256_set1_pd(f64::from(bx) + 0.5);
+                    let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
+                    let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
+                    let at = Where::Row(index);
+                    shade_chunk::<0, WIDE, true>(
+                        [lo, hi],
+                        covered,
+                        at,
+                        consts,
+                        mode,
+                        color,
+                        sampler,
+                        lookups,
+                        target,
+                    );
                 }
-                let px = _mm256_set1_pd(f64::from(bx) + 0.5);
-                let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
-                let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
-                let at = Where::Row(index);
-                shade_chunk::<0, WIDE, true>(
-                    [lo, hi],
-                    covered,
-                    at,
-                    consts,
-                    mode,
-                    color,
-                    sampler,
-                    lookups,
-                    target,
-                );
+                bx += LANES as u32;
             }
-            bx += LANES as u32;
+            by = by_end + 1;
         }
-        by = by_end + 1;
     }
 }
 

@@ -235,7 +235,8 @@ pub(super) fn sample16(
     (u0, v0): (__m256, __m256),
     (u1, v1): (__m256, __m256),
 ) -> (__m256i, __m256i) {
-    let packed = sample16_packed(s, join(u0, u1), join(v0, v1));
+    // SAFETY: this function is compiled with AVX-512 F and BW and AVX2.
+    let packed = unsafe { sample16_packed(s, join(u0, u1), join(v0, v1)) };
     (
         _mm512_castsi512_si256(packed),
         _mm512_extracti64x4_epi64::<1>(packed),
@@ -243,9 +244,33 @@ pub(super) fn sample16(
 }
 
 /// The packed RGBA8 colours at sixteen uv, as `avx2::sample` gives them for each half.
+///
+/// Always inlined, without a target feature of its own, so the nearest lookup (a few
+/// operations and one gather) is part of its caller: as a call, its vectors went through
+/// memory both ways. The bilinear lookup stays a call ([`sample16_bilinear`]).
+///
+/// # Safety
+/// The CPU has AVX-512 F and BW, and AVX2.
+#[inline(always)]
+pub(super) unsafe fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i {
+    // SAFETY: the function's condition is what these need.
+    unsafe {
+        match s.filter {
+            Filter::Nearest => {
+                let (w, h) = (_mm512_set1_ps(s.size.0), _mm512_set1_ps(s.size.1));
+                let i = wrap(floor_coord(_mm512_mul_ps(u, w)).0, s.wrap.0);
+                let j = wrap(floor_coord(_mm512_mul_ps(v, h)).0, s.wrap.1);
+                gather(s, i, j)
+            }
+            _ => sample16_bilinear(s, u, v),
+        }
+    }
+}
+
+/// [`sample16_packed`] for the bilinear filter.
 #[inline]
 #[target_feature(enable = "avx512f,avx512bw,avx2")]
-pub(super) fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i {
+fn sample16_bilinear(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i {
     let (w, h) = (_mm512_set1_ps(s.size.0), _mm512_set1_ps(s.size.1));
     match s.filter {
         Filter::Nearest => {
@@ -419,7 +444,8 @@ pub(super) unsafe fn span16(
             let (u0, v0) = uv(&vals);
             let (u1, v1) = uv(&next);
             let depth = join(_mm512_cvtpd_ps(vals[3]), _mm512_cvtpd_ps(next[3]));
-            let rgba = sample16_packed(sampler, join(u0, u1), join(v0, v1));
+            // SAFETY: the function's condition includes AVX-512 F and BW and AVX2.
+            let rgba = unsafe { sample16_packed(sampler, join(u0, u1), join(v0, v1)) };
             // SAFETY: `ok` enables only columns x..=x1 of the span, which lie in the band's
             // row `row` (the function's condition), so each index is in both buffers.
             unsafe { write16(target, row + x as usize, ok, depth, rgba) };

@@ -236,6 +236,7 @@ pub(in crate::raster::lanes) fn texture_pair(
         return;
     }
     use super::{join, sample16_packed, write_rows};
-    let rgba = sample16_packed(sampler, join(u[0], u[1]), join(v[0], v[1]));
+    // SAFETY: this function is compiled with AVX-512 F and BW and AVX2.
+    let rgba = unsafe { sample16_packed(sampler, join(u[0], u[1]), join(v[0], v[1])) };
     write_rows(target, index, ok, join(depth[0], depth[1]), rgba);
 }
