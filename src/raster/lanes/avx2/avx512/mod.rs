@@ -161,6 +161,55 @@ fn row_blocks(s: &VecSampler<'_>, i: __m512i, ja: __m512i, jb: __m512i) -> Optio
     ])
 }
 
+/// The texels `(i, j)` of sixteen lanes whose row `j` is the same in lanes 0..8 and the same
+/// in lanes 8..16 (a span's sixteen pixels, or two rows of eight, of a magnified or mildly
+/// minified texture) and whose columns `i` lie within 31 of the smallest: picked from 32
+/// consecutive texels of each of the (one or two) rows, read with plain loads, instead of
+/// gathered (as [`row_blocks`] does for bilinear). `None` when the lanes do not qualify (or
+/// the 32 texels would run past the texture's end). Every index must be wrapped (inside the
+/// texture); then the picked texels are the gathered ones.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn row_block(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> Option<__m512i> {
+    /// Lanes 8..16.
+    const HIGH: __mmask16 = 0xff00;
+    let j0 = _mm_cvtsi128_si32(_mm512_castsi512_si128(j));
+    let j1 = _mm_cvtsi128_si32(_mm512_extracti32x4_epi32::<2>(j));
+    let rows = _mm512_mask_set1_epi32(_mm512_set1_epi32(j0), HIGH, j1);
+    if _mm512_cmpneq_epi32_mask(j, rows) != 0 {
+        return None;
+    }
+    let i0 = _mm512_reduce_min_epi32(i);
+    let d = _mm512_sub_epi32(i, _mm512_set1_epi32(i0));
+    if _mm512_cmpgt_epu32_mask(d, _mm512_set1_epi32(31)) != 0 {
+        return None;
+    }
+    // Wrapped indices: i0, j0 and j1 are within the texture, so not negative.
+    let start = |j: i32| j as usize * s.width as usize + i0 as usize;
+    let (a, b) = (start(j0), start(j1));
+    if a.max(b) + 32 > s.texels.len() {
+        return None;
+    }
+    let pick = |at: usize| {
+        // SAFETY: texels at..at + 32 are inside `texels` (a and b, checked above); a texel is
+        // 4 bytes, read as one i32.
+        let (lo, hi) = unsafe {
+            let p = s.texels.as_ptr().cast::<i32>().add(at);
+            (
+                _mm512_loadu_si512(p.cast()),
+                _mm512_loadu_si512(p.add(16).cast()),
+            )
+        };
+        _mm512_permutex2var_epi32(lo, d, hi)
+    };
+    let first = pick(a);
+    Some(if j0 == j1 {
+        first
+    } else {
+        _mm512_mask_blend_epi32(HIGH, first, pick(b))
+    })
+}
+
 /// Channel `C` (0 = red) of sixteen packed texels, as f32 in 0..255.
 #[inline]
 #[target_feature(enable = "avx512f,avx512bw")]
@@ -260,7 +309,10 @@ pub(super) unsafe fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -
                 let (w, h) = (_mm512_set1_ps(s.size.0), _mm512_set1_ps(s.size.1));
                 let i = wrap(floor_coord(_mm512_mul_ps(u, w)).0, s.wrap.0);
                 let j = wrap(floor_coord(_mm512_mul_ps(v, h)).0, s.wrap.1);
-                gather(s, i, j)
+                match row_block(s, i, j) {
+                    Some(t) => t,
+                    None => gather(s, i, j),
+                }
             }
             _ => sample16_bilinear(s, u, v),
         }
@@ -539,60 +591,4 @@ pub(super) fn write_rows(
 }
 
 #[cfg(test)]
-mod tests {
-    use std::arch::x86_64::*;
-
-    use crate::raster::texture::byte_from_sum;
-
-    /// The floats from 0 to 255.001 (the range of a bilinear sum) that `round` rounds
-    /// differently from the scalar code (at most ten), sixteen at a time.
-    fn wrong_roundings(round: impl Fn(&[f32; 16]) -> [i32; 16]) -> Vec<(f32, i32)> {
-        let last = 255.001f32.to_bits();
-        let mut wrong = Vec::new();
-        let mut bits = 0u32;
-        while bits <= last && wrong.len() < 10 {
-            let xs: [f32; 16] =
-                std::array::from_fn(|k| f32::from_bits((bits + k as u32).min(last)));
-            for (x, got) in xs.iter().zip(round(&xs)) {
-                if got != i32::from(byte_from_sum(*x)) {
-                    wrong.push((*x, got));
-                }
-            }
-            bits += 16;
-        }
-        wrong
-    }
-
-    /// Every float from 0 to 255.001 rounds to the byte the scalar code gives, in the AVX-512
-    /// and in the AVX2 lanes (each checked where the CPU has it).
-    #[test]
-    fn every_bilinear_sum_rounds_as_the_scalar_code() {
-        if is_x86_feature_detected!("avx512f") {
-            let wrong = wrong_roundings(|xs| {
-                let mut out = [0i32; 16];
-                // SAFETY: the CPU has AVX-512 F (checked above); 16 lanes in and out.
-                unsafe {
-                    let v = super::byte_from_sum(_mm512_loadu_ps(xs.as_ptr()));
-                    _mm512_storeu_si512(out.as_mut_ptr().cast(), v);
-                }
-                out
-            });
-            assert!(wrong.is_empty(), "AVX-512 rounded differently: {wrong:?}");
-        }
-        if is_x86_feature_detected!("avx2") {
-            let wrong = wrong_roundings(|xs| {
-                let mut out = [0i32; 16];
-                for h in 0..2 {
-                    // SAFETY: the CPU has AVX2 (checked above); 8 lanes in and out.
-                    unsafe {
-                        let x = _mm256_loadu_ps(xs[8 * h..].as_ptr());
-                        let v = super::super::sampler::byte_from_sum(x);
-                        _mm256_storeu_si256(out[8 * h..].as_mut_ptr().cast(), v);
-                    }
-                }
-                out
-            });
-            assert!(wrong.is_empty(), "AVX2 rounded differently: {wrong:?}");
-        }
-    }
-}
+mod tests;
