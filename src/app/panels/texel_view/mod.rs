@@ -362,7 +362,9 @@ fn upload(ctx: &egui::Context, name: &str, img: &image::RgbaImage) -> TextureHan
 /// [`MIN_PANEL`] points each (with `hover` as their hover text); when that is taller than
 /// `room` points, the number of columns
 /// that gives the largest pictures within `room` (the presentation panel's pictures scale to
-/// the space the numbers leave).
+/// the space the numbers leave). Three pictures that would leave a row half empty (level 0
+/// and the two levels read) are laid out as the first beside the other two stacked, when
+/// that makes the first larger and the others no smaller.
 fn show_grid(ui: &mut Ui, handles: &[TextureHandle], room: f32, hover: Option<&str>) {
     let width = ui.available_width();
     let gap = ui.spacing().item_spacing;
@@ -391,19 +393,61 @@ fn show_grid(ui: &mut Ui, handles: &[TextureHandle], room: f32, hover: Option<&s
             .unwrap_or(1)
     };
     let side = side_in(columns);
+    let picture = |ui: &mut Ui, t: &TextureHandle, side: f32| {
+        let [tw, th] = t.size().map(|v| v as f32);
+        let size = egui::vec2(side, side * th / tw.max(1.0));
+        let r = ui.add(egui::Image::new((t.id(), size)));
+        if let Some(text) = hover {
+            r.on_hover_text(text);
+        }
+    };
+    if let [first, rest @ ..] = handles
+        && let Some([large, small]) = first_beside_two(width, room, gap, aspect, count, side)
+    {
+        ui.horizontal_top(|ui| {
+            picture(ui, first, large);
+            ui.vertical(|ui| {
+                for t in rest {
+                    picture(ui, t, small);
+                }
+            });
+        });
+        return;
+    }
     for row in handles.chunks(columns) {
         ui.horizontal(|ui| {
             for t in row {
-                let [tw, th] = t.size().map(|v| v as f32);
-                let size = egui::vec2(side, side * th / tw.max(1.0));
-                let r = ui.add(egui::Image::new((t.id(), size)));
-                if let Some(text) = hover {
-                    r.on_hover_text(text);
-                }
+                picture(ui, t, side);
             }
         });
     }
 }
+
+/// Sides (widths, points) of the first of three pictures and of the other two stacked beside
+/// it in `width` x `room` points (`aspect`: height per point of width; `gap` between them),
+/// when that gives the first more than `side` (the grid's side) and the others at least
+/// `side`; else `None` (not three pictures, no height limit, or no gain).
+fn first_beside_two(
+    width: f32,
+    room: f32,
+    gap: egui::Vec2,
+    aspect: f32,
+    count: usize,
+    side: f32,
+) -> Option<[f32; 2]> {
+    if count != 3 || !room.is_finite() {
+        return None;
+    }
+    let aspect = aspect.max(1e-3);
+    // The stacked two as large as half the room allows, the first the rest of the width.
+    let small = (room / 2.0 - gap.y) / aspect;
+    let small = small.min((width - 2.0 * gap.x) / 2.0).max(0.0);
+    let large = ((room - gap.y) / aspect).min(width - small - 2.0 * gap.x);
+    (small >= side - 0.5 && large > (1.0 + LARGER) * side).then_some([large, small])
+}
+
+/// How much larger (a fraction) the first picture must get for the first-beside-two layout.
+const LARGER: f32 = 0.1;
 
 /// Points: the smallest room the presentation panel gives its pictures (a smaller window
 /// scrolls).
