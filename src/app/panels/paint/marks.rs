@@ -35,18 +35,7 @@ pub fn scale_marks(overlay: &mut Overlay, k: f32) {
                 *reach *= k;
                 *size *= k;
             }
-            Shape::QuadLabels {
-                size,
-                gaps,
-                outline,
-                leader,
-                ..
-            } => {
-                *size *= k;
-                *gaps = gaps.map(|g| g * k);
-                *outline *= k;
-                widen(leader);
-            }
+            Shape::QuadLabels(q) => q.scale(k),
             Shape::LabelPair {
                 offset_y,
                 gap,

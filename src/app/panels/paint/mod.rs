@@ -114,12 +114,10 @@ pub fn paint(
                 let r = [min.x, min.y, min.x + size[0], min.y + size[1]];
                 Some(crate::figure::svg::color_bar_back(r, 1.0))
             }
-            Shape::QuadLabels {
-                min, max, outline, ..
-            } => Some(label_place::quad_box(
-                to_point(t, *min),
-                to_point(t, *max),
-                *outline,
+            Shape::QuadLabels(q) => Some(label_place::quad_box(
+                to_point(t, q.min),
+                to_point(t, q.max),
+                q.outline,
             )),
             _ => None,
         })
@@ -271,10 +269,10 @@ pub fn paint(
                 placed.push(b);
                 draw_label(&painter, to_rect(b), galley, *c, Some(*background));
             }
-            Shape::QuadLabels { .. } => {
+            Shape::QuadLabels(q) => {
                 placed.extend(quad::quad_labels(
                     &painter,
-                    shape,
+                    q,
                     t,
                     clip,
                     &placed,
