@@ -51,6 +51,33 @@ fn n(x: f32) -> String {
     fmt_number(f64::from(x))
 }
 
+/// The view's line of the levels `c` reads (and their weights), in `lang`.
+fn levels_line(lang: barylab::i18n::Lang, c: &barylab::probe::LevelChoice) -> String {
+    match c.next {
+        Some((e, f)) => lang.tr_with(
+            "texel_view.two_levels",
+            &[
+                ("d", &c.level),
+                ("e", &e),
+                ("wd", &n(1.0 - f)),
+                ("we", &n(f)),
+            ],
+        ),
+        None => lang.tr_with("texel_view.one_level", &[("d", &c.level)]),
+    }
+}
+
+/// The view's colour line for colour `c`, in `lang`.
+fn colour_line(lang: barylab::i18n::Lang, c: [u8; 4]) -> String {
+    lang.tr_with(
+        "texel_view.color",
+        &[(
+            "color",
+            &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
+        )],
+    )
+}
+
 fn shows(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>, line: &str) -> bool {
     h.query_by_label(line).is_some()
 }
@@ -207,26 +234,8 @@ fn on_a_projector_at_text_size_1_5_the_anisotropic_view_fits_its_panel() {
                 .unwrap_or_else(|| panic!("{lang:?}: {text} shown"))
                 .rect()
         };
-        let c = t.color;
-        let colour = lang.tr_with(
-            "texel_view.color",
-            &[(
-                "color",
-                &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
-            )],
-        );
-        let levels = match a.levels.next {
-            Some((e, f)) => lang.tr_with(
-                "texel_view.two_levels",
-                &[
-                    ("d", &a.levels.level),
-                    ("e", &e),
-                    ("wd", &n(1.0 - f)),
-                    ("we", &n(f)),
-                ],
-            ),
-            None => lang.tr_with("texel_view.one_level", &[("d", &a.levels.level)]),
-        };
+        let colour = colour_line(lang, t.color);
+        let levels = levels_line(lang, &a.levels);
         let probes = lang.tr("texel_view.probes_compact");
         let bar = rect(&lang.tr("lesson.next"));
         let (last, over, under) = (rect(&colour), rect(&levels), rect(&probes));
@@ -273,21 +282,10 @@ fn on_a_projector_at_text_size_1_5_the_bilinear_and_trilinear_views_fit_their_pa
                     .rect()
             };
             let rgba = |c: [u8; 4]| format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
-            let colour = lang.tr_with("texel_view.color", &[("color", &rgba(t.color))]);
+            let colour = colour_line(lang, t.color);
             // The last line over the pictures: the levels (trilinear), else the uv.
             let over_line = match a.lod.as_ref().map(|l| &l.trilinear) {
-                Some(c) => match c.next {
-                    Some((e, f)) => lang.tr_with(
-                        "texel_view.two_levels",
-                        &[
-                            ("d", &c.level),
-                            ("e", &e),
-                            ("wd", &n(1.0 - f)),
-                            ("we", &n(f)),
-                        ],
-                    ),
-                    None => lang.tr_with("texel_view.one_level", &[("d", &c.level)]),
-                },
+                Some(c) => levels_line(lang, c),
                 None => lang.tr_with(
                     "texel_view.uv",
                     &[
@@ -377,7 +375,7 @@ fn on_a_projector_at_text_size_1_5_the_three_level_pictures_use_the_room() {
             .and_then(|d| d.attribute.as_ref())
             .and_then(|a| a.lod.as_ref())
             .expect("a level of detail");
-        let (e, f) = l.trilinear.next.expect("two levels");
+        assert!(l.trilinear.next.is_some(), "step {step}: two levels");
         for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
             let h = common::app::lecture("texture", step, lang);
             let rect = |text: &str| {
@@ -385,23 +383,8 @@ fn on_a_projector_at_text_size_1_5_the_three_level_pictures_use_the_room() {
                     .unwrap_or_else(|| panic!("step {step} {lang:?}: {text} shown"))
                     .rect()
             };
-            let c = t.color;
-            let colour = lang.tr_with(
-                "texel_view.color",
-                &[(
-                    "color",
-                    &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
-                )],
-            );
-            let levels = lang.tr_with(
-                "texel_view.two_levels",
-                &[
-                    ("d", &l.trilinear.level),
-                    ("e", &e),
-                    ("wd", &n(1.0 - f)),
-                    ("we", &n(f)),
-                ],
-            );
+            let colour = colour_line(lang, t.color);
+            let levels = levels_line(lang, &l.trilinear);
             let view = rect(&lang.tr("texel_view.texture_title"));
             let (over, under) = (rect(&levels), rect(&colour));
             let window = h.ctx.content_rect();
