@@ -51,6 +51,33 @@ fn n(x: f32) -> String {
     fmt_number(f64::from(x))
 }
 
+/// The view's line of the levels `c` reads (and their weights), in `lang`.
+fn levels_line(lang: barylab::i18n::Lang, c: &barylab::probe::LevelChoice) -> String {
+    match c.next {
+        Some((e, f)) => lang.tr_with(
+            "texel_view.two_levels",
+            &[
+                ("d", &c.level),
+                ("e", &e),
+                ("wd", &n(1.0 - f)),
+                ("we", &n(f)),
+            ],
+        ),
+        None => lang.tr_with("texel_view.one_level", &[("d", &c.level)]),
+    }
+}
+
+/// The view's colour line for colour `c`, in `lang`.
+fn colour_line(lang: barylab::i18n::Lang, c: [u8; 4]) -> String {
+    lang.tr_with(
+        "texel_view.color",
+        &[(
+            "color",
+            &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
+        )],
+    )
+}
+
 fn shows(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>, line: &str) -> bool {
     h.query_by_label(line).is_some()
 }
@@ -207,26 +234,8 @@ fn on_a_projector_at_text_size_1_5_the_anisotropic_view_fits_its_panel() {
                 .unwrap_or_else(|| panic!("{lang:?}: {text} shown"))
                 .rect()
         };
-        let c = t.color;
-        let colour = lang.tr_with(
-            "texel_view.color",
-            &[(
-                "color",
-                &format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]),
-            )],
-        );
-        let levels = match a.levels.next {
-            Some((e, f)) => lang.tr_with(
-                "texel_view.two_levels",
-                &[
-                    ("d", &a.levels.level),
-                    ("e", &e),
-                    ("wd", &n(1.0 - f)),
-                    ("we", &n(f)),
-                ],
-            ),
-            None => lang.tr_with("texel_view.one_level", &[("d", &a.levels.level)]),
-        };
+        let colour = colour_line(lang, t.color);
+        let levels = levels_line(lang, &a.levels);
         let probes = lang.tr("texel_view.probes_compact");
         let bar = rect(&lang.tr("lesson.next"));
         let (last, over, under) = (rect(&colour), rect(&levels), rect(&probes));
@@ -273,21 +282,10 @@ fn on_a_projector_at_text_size_1_5_the_bilinear_and_trilinear_views_fit_their_pa
                     .rect()
             };
             let rgba = |c: [u8; 4]| format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]);
-            let colour = lang.tr_with("texel_view.color", &[("color", &rgba(t.color))]);
+            let colour = colour_line(lang, t.color);
             // The last line over the pictures: the levels (trilinear), else the uv.
             let over_line = match a.lod.as_ref().map(|l| &l.trilinear) {
-                Some(c) => match c.next {
-                    Some((e, f)) => lang.tr_with(
-                        "texel_view.two_levels",
-                        &[
-                            ("d", &c.level),
-                            ("e", &e),
-                            ("wd", &n(1.0 - f)),
-                            ("we", &n(f)),
-                        ],
-                    ),
-                    None => lang.tr_with("texel_view.one_level", &[("d", &c.level)]),
-                },
+                Some(c) => levels_line(lang, c),
                 None => lang.tr_with(
                     "texel_view.uv",
                     &[
@@ -359,5 +357,91 @@ fn on_a_projector_the_lambda_plots_legend_shows_whole() {
             (rows[0] - rows[1]).abs() < 2.0,
             "{lang:?}: the legend takes two rows ({rows:?})"
         );
+    }
+}
+
+/// The steps whose texture view shows three pictures (level 0 with the footprint and the two
+/// levels read: the footprint, trilinear, the affine pitfall) at a lecture projector, in both
+/// languages: the pictures use the room the numbers leave them (between the levels' line over
+/// them and the colour line under them, across the panel) rather than two small rows with a
+/// hole, without overlapping or leaving that room.
+#[test]
+fn on_a_projector_at_text_size_1_5_the_three_level_pictures_use_the_room() {
+    for step in [6, 8, 12] {
+        let t = probe_step(step);
+        let l = t
+            .detail
+            .as_ref()
+            .and_then(|d| d.attribute.as_ref())
+            .and_then(|a| a.lod.as_ref())
+            .expect("a level of detail");
+        assert!(l.trilinear.next.is_some(), "step {step}: two levels");
+        for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+            let h = common::app::lecture("texture", step, lang);
+            let rect = |text: &str| {
+                h.query_by_label(text)
+                    .unwrap_or_else(|| panic!("step {step} {lang:?}: {text} shown"))
+                    .rect()
+            };
+            let colour = colour_line(lang, t.color);
+            let levels = levels_line(lang, &l.trilinear);
+            let view = rect(&lang.tr("texel_view.texture_title"));
+            let (over, under) = (rect(&levels), rect(&colour));
+            let window = h.ctx.content_rect();
+            let room = egui::Rect::from_min_max(
+                egui::pos2(view.min.x, over.max.y),
+                egui::pos2(window.max.x, under.min.y),
+            );
+            let pictures: Vec<egui::Rect> = h
+                .query_all_by_role(egui::accesskit::Role::Image)
+                .map(|p| p.rect())
+                .filter(|r| r.min.x >= view.min.x - 1.0)
+                .collect();
+            assert_eq!(pictures.len(), 3, "step {step} {lang:?}: {pictures:?}");
+            for (i, p) in pictures.iter().enumerate() {
+                assert!(
+                    room.expand(0.5).contains_rect(*p),
+                    "step {step} {lang:?}: picture {i} at {p:?} outside {room:?}"
+                );
+                for q in &pictures[i + 1..] {
+                    assert!(
+                        !p.shrink(0.5).intersects(*q),
+                        "step {step} {lang:?}: {p:?} overlaps {q:?}"
+                    );
+                }
+            }
+            let used: f32 = pictures.iter().map(|p| p.area()).sum();
+            assert!(
+                used >= 0.7 * room.area(),
+                "step {step} {lang:?}: the pictures {pictures:?} fill {:.0}% of {room:?}",
+                100.0 * used / room.area()
+            );
+        }
+    }
+}
+
+/// The level-of-detail view's legend at step 9 (the lambda plot) at a lecture projector, in
+/// both languages: every entry (its swatch and level) lies inside the panel, clear of its
+/// edges by the panel's margin.
+#[test]
+fn on_a_projector_at_text_size_1_5_the_lod_legend_keeps_inside_its_panel() {
+    for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+        let h = common::app::lecture("texture", 9, lang);
+        let view = h
+            .query_by_label(&lang.tr("texel_view.lod_title"))
+            .unwrap_or_else(|| panic!("{lang:?}: the level-of-detail view"))
+            .rect();
+        let window = h.ctx.content_rect();
+        let entries: Vec<egui::Rect> = h
+            .query_all_by_label_contains("\u{25A0} ")
+            .map(|n| n.rect())
+            .collect();
+        assert!(entries.len() >= 2, "{lang:?}: {entries:?}");
+        for r in entries {
+            assert!(
+                r.min.x >= view.min.x - 0.5 && r.max.x <= window.max.x - 8.0,
+                "{lang:?}: a legend entry at {r:?}, the view at {view:?} in {window:?}"
+            );
+        }
     }
 }

@@ -37,8 +37,8 @@ fn marks(scene: &Scene, pin: [u32; 2]) -> (Vec<String>, Vec<(DVec2, DVec2)>, Pix
     for s in &fig.views[0].overlay.shapes {
         match s {
             Shape::Text { text, .. } => texts.push(text.clone()),
-            Shape::QuadLabels { texts: uv, .. } => {
-                texts.extend(uv.iter().flatten().map(|(t, _)| t.clone()));
+            Shape::QuadLabels(q) => {
+                texts.extend(q.texts.iter().flatten().map(|(t, _)| t.clone()));
             }
             Shape::Rect { min, max, .. } => rects.push((*min, *max)),
             _ => {}
@@ -145,7 +145,7 @@ fn the_quad_labels_are_one_block_in_the_pixels_order_after_the_handles() {
         let shapes = &fig.views[0].overlay.shapes;
         let at = shapes
             .iter()
-            .position(|s| matches!(s, Shape::QuadLabels { .. }))
+            .position(|s| matches!(s, Shape::QuadLabels(_)))
             .expect("the quad's labels");
         let last_handle = shapes
             .iter()
@@ -155,16 +155,10 @@ fn the_quad_labels_are_one_block_in_the_pixels_order_after_the_handles() {
             at > last_handle,
             "{pin:?}: the block is placed after the handles"
         );
-        let Shape::QuadLabels {
-            min,
-            max,
-            texts,
-            above,
-            ..
-        } = &shapes[at]
-        else {
+        let Shape::QuadLabels(q) = &shapes[at] else {
             unreachable!()
         };
+        let (min, max, texts, above) = (&q.min, &q.max, &q.texts, &q.above);
         let o = DVec2::new(f64::from(pin[0] & !1), f64::from(pin[1] & !1));
         assert_eq!((*min, *max), (o, o + DVec2::splat(2.0)));
         assert_eq!(*above, up, "{pin:?}");

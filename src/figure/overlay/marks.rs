@@ -165,7 +165,7 @@ pub(super) fn quad_shapes(
         );
         Some((text, if q.inside[k] { QUAD } else { NEGATIVE }))
     });
-    Shape::QuadLabels {
+    Shape::QuadLabels(super::QuadLabels {
         min: o,
         max: o + DVec2::splat(2.0),
         texts,
@@ -175,7 +175,7 @@ pub(super) fn quad_shapes(
         above: o.y + 1.0 > size.y / 2.0,
         background: LABEL_BG,
         leader: Stroke::new(1.5, QUAD),
-    }
+    })
 }
 
 /// A square around the pixel and a crosshair through its centre.

@@ -29,7 +29,7 @@ pub use marks::{
     span_step_shapes,
 };
 use marks::{behind_note, clip_shapes, handle_shapes, pixel_marker, quad_shapes, triangle_shapes};
-pub use shape::{Anchor, Overlay, Shape, Stroke};
+pub use shape::{Anchor, Overlay, QuadLabels, Shape, Stroke};
 pub use style::*;
 
 /// Vertex names, shared with the derivation: A, B, C, ..., Z, then V26, ...

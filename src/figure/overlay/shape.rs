@@ -129,26 +129,7 @@ pub enum Shape {
     /// The 2x2 quad's four uv labels as one block laid out as the pixels are, placed by
     /// [`place_quad_block`](crate::figure::label_place::place_quad_block) (a leader line to
     /// the quad when the block ends up far from it).
-    QuadLabels {
-        /// The quad's top-left corner in canvas coordinates.
-        min: DVec2,
-        /// The quad's bottom-right corner in canvas coordinates.
-        max: DVec2,
-        /// Label `i + 2 j` (pixel `(x0 + i, y0 + j)`): its text and colour.
-        texts: [Option<(String, Rgba)>; 4],
-        /// Text size in points.
-        size: f32,
-        /// Points: between the labels, and between the block and the quad's outline.
-        gaps: [f32; 2],
-        /// Points the quad's outline reaches outside the quad.
-        outline: f32,
-        /// Prefer the block above the quad (else below it).
-        above: bool,
-        /// Box colour.
-        background: Rgba,
-        /// The leader line's style.
-        leader: Stroke,
-    },
+    QuadLabels(QuadLabels),
     /// Two labels side by side (the wipe line's modes): `texts[0]` left of canvas x `at.x`,
     /// `texts[1]` right of it, `gap` points apart, their bottoms `offset_y` points below
     /// `at.y`. Placed with [`place_pair`](crate::figure::text::place_pair): they never overlap,
@@ -197,6 +178,40 @@ pub enum Shape {
         /// The title above the bar.
         title: String,
     },
+}
+
+/// The 2x2 quad's four uv labels as one block laid out as the pixels are ([`Shape::QuadLabels`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct QuadLabels {
+    /// The quad's top-left corner in canvas coordinates.
+    pub min: DVec2,
+    /// The quad's bottom-right corner in canvas coordinates.
+    pub max: DVec2,
+    /// Label `i + 2 j` (pixel `(x0 + i, y0 + j)`): its text and colour.
+    pub texts: [Option<(String, Rgba)>; 4],
+    /// Text size in points.
+    pub size: f32,
+    /// Points: between the labels, and between the block and the quad's outline.
+    pub gaps: [f32; 2],
+    /// Points the quad's outline reaches outside the quad.
+    pub outline: f32,
+    /// Prefer the block above the quad (else below it).
+    pub above: bool,
+    /// Box colour.
+    pub background: Rgba,
+    /// The leader line's style.
+    pub leader: Stroke,
+}
+
+impl QuadLabels {
+    /// Its marks `k` times their size: the text, the gaps, the outline's reach and the
+    /// leader's width (the quad stays where it is).
+    pub fn scale(&mut self, k: f32) {
+        self.size *= k;
+        self.gaps = self.gaps.map(|g| g * k);
+        self.outline *= k;
+        self.leader.width *= k;
+    }
 }
 
 /// Everything drawn over one view of the canvas.
@@ -292,27 +307,10 @@ impl Overlay {
                     color,
                     background,
                 },
-                Shape::QuadLabels {
-                    min,
-                    max,
-                    texts,
-                    size,
-                    gaps,
-                    outline,
-                    above,
-                    background,
-                    leader,
-                } => Shape::QuadLabels {
-                    min,
-                    max,
-                    texts,
-                    size: size * k,
-                    gaps: gaps.map(|g| g * k),
-                    outline: outline * k,
-                    above,
-                    background,
-                    leader: st(leader),
-                },
+                Shape::QuadLabels(mut q) => {
+                    q.scale(k);
+                    Shape::QuadLabels(q)
+                }
                 Shape::LabelPair {
                     at,
                     offset_y,

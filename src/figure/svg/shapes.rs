@@ -60,12 +60,10 @@ pub(super) fn overlay(
                     k,
                 ))
             }
-            Shape::QuadLabels {
-                min, max, outline, ..
-            } => Some(label_place::quad_box(
-                t.point(*min),
-                t.point(*max),
-                *outline,
+            Shape::QuadLabels(q) => Some(label_place::quad_box(
+                t.point(q.min),
+                t.point(q.max),
+                q.outline,
             )),
             _ => None,
         })
@@ -227,34 +225,30 @@ pub(super) fn overlay(
                     k,
                 );
             }
-            Shape::QuadLabels {
-                min,
-                max,
-                texts,
-                size,
-                gaps,
-                outline,
-                above,
-                background,
-                leader,
-            } => {
+            Shape::QuadLabels(quad_labels) => {
+                let (texts, gaps) = (&quad_labels.texts, quad_labels.gaps);
                 // A block wider than its view shrinks to fit it.
-                let widths = texts
-                    .each_ref()
-                    .map(|x| x.as_ref().map(|(x, _)| text::measure(x, *size).0[0]));
-                let size =
-                    &(size * label_place::block_fit(widths, LABEL_PAD[0] * k, gaps[0], clip));
+                let widths = texts.each_ref().map(|x| {
+                    x.as_ref()
+                        .map(|(x, _)| text::measure(x, quad_labels.size).0[0])
+                });
+                let size = quad_labels.size
+                    * label_place::block_fit(widths, LABEL_PAD[0] * k, gaps[0], clip);
                 let sizes = texts.each_ref().map(|x| {
                     x.as_ref()
-                        .map(|(x, _)| text::padded(text::measure(x, *size).0, true, k))
+                        .map(|(x, _)| text::padded(text::measure(x, size).0, true, k))
                 });
-                let quad = label_place::quad_box(t.point(*min), t.point(*max), *outline);
+                let quad = label_place::quad_box(
+                    t.point(quad_labels.min),
+                    t.point(quad_labels.max),
+                    quad_labels.outline,
+                );
                 let q = label_place::place_quad_block(
                     quad,
                     sizes,
                     gaps[0],
                     gaps[1],
-                    *above,
+                    quad_labels.above,
                     clip,
                     &placed,
                     &keep_clear,
@@ -264,7 +258,7 @@ pub(super) fn overlay(
                         s,
                         r#"<polyline points="{}" fill="none"{}/>"#,
                         points(&[a, b]),
-                        stroke(Some(*leader), false, k)
+                        stroke(Some(quad_labels.leader), false, k)
                     );
                 }
                 for (b, x) in q.boxes.iter().zip(texts) {
@@ -273,7 +267,7 @@ pub(super) fn overlay(
                             s,
                             glyphs,
                             *b,
-                            Label::new(txt, *size, *color, Some(*background)),
+                            Label::new(txt, size, *color, Some(quad_labels.background)),
                             k,
                         );
                         placed.push(*b);

@@ -4,7 +4,11 @@ use egui::epaint::{Mesh, PathStroke};
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape as EShape, Stroke as EStroke, StrokeKind};
 use glam::DVec2;
 
+mod marks;
 mod quad;
+
+use marks::is_title;
+pub use marks::{drop_titles, retitle, scale_marks};
 
 use crate::figure::overlay::{Overlay, Rgba, Shape, Stroke};
 
@@ -110,12 +114,10 @@ pub fn paint(
                 let r = [min.x, min.y, min.x + size[0], min.y + size[1]];
                 Some(crate::figure::svg::color_bar_back(r, 1.0))
             }
-            Shape::QuadLabels {
-                min, max, outline, ..
-            } => Some(label_place::quad_box(
-                to_point(t, *min),
-                to_point(t, *max),
-                *outline,
+            Shape::QuadLabels(q) => Some(label_place::quad_box(
+                to_point(t, q.min),
+                to_point(t, q.max),
+                q.outline,
             )),
             _ => None,
         })
@@ -267,10 +269,10 @@ pub fn paint(
                 placed.push(b);
                 draw_label(&painter, to_rect(b), galley, *c, Some(*background));
             }
-            Shape::QuadLabels { .. } => {
+            Shape::QuadLabels(q) => {
                 placed.extend(quad::quad_labels(
                     &painter,
-                    shape,
+                    q,
                     t,
                     clip,
                     &placed,
@@ -332,85 +334,6 @@ pub fn paint(
     for (b, g, c, background) in titles {
         draw_label(&painter, b, g, c, background);
     }
-}
-
-/// Draws the overlay's marks `k` times their usual size: handles, markers and lines (their
-/// radii and stroke widths) and labels (their text and offsets). Positions stay where they
-/// are; the pixel grid and the colour bar keep their sizes. Presentation mode uses it so the
-/// back of the room sees the corners, their labels and the pinned pixel.
-pub fn scale_marks(overlay: &mut Overlay, k: f32) {
-    if (k - 1.0).abs() < f32::EPSILON {
-        return;
-    }
-    let widen = |s: &mut Stroke| s.width *= k;
-    for shape in &mut overlay.shapes {
-        let title = is_title(shape);
-        match shape {
-            Shape::Polygon { stroke, .. } | Shape::Rect { stroke, .. } => {
-                stroke.as_mut().map(widen);
-            }
-            Shape::Line { stroke, .. } => widen(stroke),
-            Shape::Circle { radius, stroke, .. } => {
-                *radius *= k;
-                stroke.as_mut().map(widen);
-            }
-            // A title keeps its size: it lives in the title strip above the image.
-            Shape::Text { offset, size, .. } if !title => {
-                *size *= k;
-                *offset = offset.map(|o| o * k);
-            }
-            Shape::Text { .. } => {}
-            Shape::HandleLabel { reach, size, .. } => {
-                *reach *= k;
-                *size *= k;
-            }
-            Shape::QuadLabels {
-                size,
-                gaps,
-                outline,
-                leader,
-                ..
-            } => {
-                *size *= k;
-                *gaps = gaps.map(|g| g * k);
-                *outline *= k;
-                widen(leader);
-            }
-            Shape::LabelPair {
-                offset_y,
-                gap,
-                size,
-                ..
-            } => {
-                *size *= k;
-                *offset_y *= k;
-                *gap *= k;
-            }
-            Shape::PixelGrid { .. } | Shape::ColorBar { .. } => {}
-        }
-    }
-}
-
-/// Leaves out the views' titles (presentation mode's single view, whose card names the mode).
-pub fn drop_titles(overlay: &mut Overlay) {
-    overlay.shapes.retain(|s| !is_title(s));
-}
-
-/// Replaces the view's title text with `title`.
-pub fn retitle(overlay: &mut Overlay, title: &str) {
-    for shape in &mut overlay.shapes {
-        if is_title(shape)
-            && let Shape::Text { text, .. } = shape
-        {
-            *text = title.to_string();
-        }
-    }
-}
-
-/// Whether `shape` is a view's title: a boxed text above the image's top-left corner.
-fn is_title(shape: &Shape) -> bool {
-    matches!(shape, Shape::Text { at, offset, background: Some(_), .. }
-        if *at == DVec2::ZERO && *offset == [0.0, -crate::figure::overlay::TITLE_GAP])
 }
 
 /// A bare letter's box `b` moved down below any title it would lie on (if that stays inside

@@ -1,4 +1,4 @@
-//! Paints the 2x2 quad's uv labels ([`Shape::QuadLabels`]) with egui: measured with egui's
+//! Paints the 2x2 quad's uv labels ([`QuadLabels`]) with egui: measured with egui's
 //! galleys and placed as one block by the figures' own function
 //! ([`place_quad_block`](crate::figure::label_place::place_quad_block)), with its leader.
 
@@ -6,33 +6,27 @@ use egui::{FontId, Pos2, Rect};
 
 use super::{CanvasTransform, color, draw_label, stroke, to_box, to_point, to_rect};
 use crate::figure::label_place;
-use crate::figure::overlay::Shape;
+use crate::figure::overlay::QuadLabels;
 use crate::figure::text::{self as figure_text, Box2, LABEL_PAD};
 
-/// Paints `shape` (a [`Shape::QuadLabels`]; anything else paints nothing) clear of the
-/// labels `placed` so far and of `keep_clear`, inside `clip`; returns the labels' boxes.
+/// Paints the quad's labels `labels` clear of the labels `placed` so far and of
+/// `keep_clear`, inside `clip`; returns the labels' boxes.
 pub(super) fn quad_labels(
     painter: &egui::Painter,
-    shape: &Shape,
+    labels: &QuadLabels,
     t: CanvasTransform,
     clip: Rect,
     placed: &[Box2],
     keep_clear: &[Box2],
 ) -> Vec<Box2> {
-    let Shape::QuadLabels {
-        min,
-        max,
+    let QuadLabels {
         texts,
         size,
         gaps,
-        outline,
-        above,
-        background,
         leader,
-    } = shape
-    else {
-        return Vec::new();
-    };
+        background,
+        ..
+    } = labels;
     let lay = |s: f32| {
         texts.each_ref().map(|x| {
             x.as_ref()
@@ -46,13 +40,17 @@ pub(super) fn quad_labels(
         g.as_ref()
             .map(|g| figure_text::padded([g.size().x, g.size().y], true, 1.0))
     });
-    let quad = label_place::quad_box(to_point(t, *min), to_point(t, *max), *outline);
+    let quad = label_place::quad_box(
+        to_point(t, labels.min),
+        to_point(t, labels.max),
+        labels.outline,
+    );
     let q = label_place::place_quad_block(
         quad,
         sizes,
         gaps[0],
         gaps[1],
-        *above,
+        labels.above,
         to_box(clip),
         placed,
         keep_clear,

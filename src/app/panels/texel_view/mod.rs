@@ -15,10 +15,13 @@ use crate::figure::TexelView;
 use crate::figure::lod_view;
 use crate::figure::texture_view::TextureView;
 use crate::i18n::Lang;
-use crate::probe::LodTrace;
-use crate::probe::format::fmt_number;
 use crate::raster::texture::Filter;
 use crate::raster::{Interpolation, Texture};
+
+mod lines;
+
+pub use lines::{lod_line, texture_lines};
+use lines::{n, rgba};
 
 /// Pixels per point the pictures are drawn at before egui scales them to the column.
 const PICTURE_SCALE: f32 = 2.0;
@@ -71,141 +74,6 @@ pub fn toggle_ui(ui: &mut Ui, current: TexelView) -> Vec<StateCommand> {
         }
     }
     out
-}
-
-/// `rgba(r, g, b, a)`.
-fn rgba(c: [u8; 4]) -> String {
-    format!("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3])
-}
-
-fn n(x: f32) -> String {
-    fmt_number(f64::from(x))
-}
-
-/// The lines of numbers of the texture-space view: first (over the pictures) the uv, the
-/// derivatives, the footprint and level of detail, the levels and their blend; then (under
-/// them) the anisotropic probes or each tap with its weight, and the colour.
-pub fn texture_lines(
-    lang: Lang,
-    pixel: [u32; 2],
-    uv: [f32; 2],
-    taps: &[crate::probe::TapTrace],
-    lod: Option<&LodTrace>,
-    color: [u8; 4],
-) -> [Vec<String>; 2] {
-    let mut v = vec![lang.tr_with(
-        "texel_view.uv",
-        &[
-            ("x", &pixel[0]),
-            ("y", &pixel[1]),
-            ("u", &n(uv[0])),
-            ("v", &n(uv[1])),
-        ],
-    )];
-    let mut taps = taps;
-    if let Some(lt) = lod {
-        v.push(lang.tr_with(
-            "texel_view.derivatives",
-            &[
-                ("dudx", &n(lt.duv_dx[0])),
-                ("dvdx", &n(lt.duv_dx[1])),
-                ("dudy", &n(lt.duv_dy[0])),
-                ("dvdy", &n(lt.duv_dy[1])),
-            ],
-        ));
-        v.push(lang.tr_with(
-            "texel_view.footprint",
-            &[
-                ("px", &n(lt.px)),
-                ("py", &n(lt.py)),
-                ("rho", &n(lt.rho)),
-                ("lambda", &n(lt.trilinear.lambda)),
-            ],
-        ));
-        let choice = match &lt.anisotropic {
-            Some(a) => {
-                v.push(lang.tr_with(
-                    "texel_view.anisotropic",
-                    &[
-                        ("n", &a.n),
-                        ("max", &a.max),
-                        ("lambda", &n(a.levels.lambda)),
-                    ],
-                ));
-                &a.levels
-            }
-            None => &lt.trilinear,
-        };
-        v.push(match choice.next {
-            Some((next, f)) => lang.tr_with(
-                "texel_view.two_levels",
-                &[
-                    ("d", &choice.level),
-                    ("e", &next),
-                    ("wd", &n(1.0 - f)),
-                    ("we", &n(f)),
-                ],
-            ),
-            None => lang.tr_with("texel_view.one_level", &[("d", &choice.level)]),
-        });
-    }
-    let mut below = Vec::new();
-    if let Some(lt) = lod {
-        taps = &lt.taps;
-        if let Some(a) = &lt.anisotropic {
-            for (i, p) in a.probes.iter().enumerate() {
-                below.push(lang.tr_with(
-                    "texel_view.probe",
-                    &[
-                        ("i", &(i + 1)),
-                        ("u", &n(p.uv[0])),
-                        ("v", &n(p.uv[1])),
-                        ("color", &rgba(p.color)),
-                    ],
-                ));
-            }
-            taps = &[];
-        }
-    }
-    for t in taps {
-        below.push(lang.tr_with(
-            "texel_view.tap",
-            &[
-                ("level", &t.level),
-                ("i", &t.i),
-                ("j", &t.j),
-                ("w", &n(t.weight)),
-                ("color", &rgba(t.texel)),
-            ],
-        ));
-    }
-    below.push(lang.tr_with("texel_view.color", &[("color", &rgba(color))]));
-    [v, below]
-}
-
-/// The line under the level-of-detail view for `pixel` with level of detail `lambda` (NaN:
-/// no triangle wrote it) in a texture of `levels` levels.
-pub fn lod_line(lang: Lang, pixel: [u32; 2], lambda: f32, levels: u32) -> String {
-    let (x, y) = (&pixel[0], &pixel[1]);
-    if lambda.is_nan() {
-        return lang.tr_with("texel_view.lod_none", &[("x", x), ("y", y)]);
-    }
-    if lambda <= 0.0 {
-        return lang.tr_with(
-            "texel_view.lod_magnified",
-            &[("x", x), ("y", y), ("lambda", &n(lambda))],
-        );
-    }
-    let level = crate::figure::lod_view::level_of(lambda, levels.saturating_sub(1));
-    lang.tr_with(
-        "texel_view.lod_pixel",
-        &[
-            ("x", x),
-            ("y", y),
-            ("lambda", &n(lambda)),
-            ("level", &level),
-        ],
-    )
 }
 
 impl TexelViewPanel {
@@ -494,7 +362,9 @@ fn upload(ctx: &egui::Context, name: &str, img: &image::RgbaImage) -> TextureHan
 /// [`MIN_PANEL`] points each (with `hover` as their hover text); when that is taller than
 /// `room` points, the number of columns
 /// that gives the largest pictures within `room` (the presentation panel's pictures scale to
-/// the space the numbers leave).
+/// the space the numbers leave). Three pictures that would leave a row half empty (level 0
+/// and the two levels read) are laid out as the first beside the other two stacked, when
+/// that makes the first larger and the others no smaller.
 fn show_grid(ui: &mut Ui, handles: &[TextureHandle], room: f32, hover: Option<&str>) {
     let width = ui.available_width();
     let gap = ui.spacing().item_spacing;
@@ -523,19 +393,61 @@ fn show_grid(ui: &mut Ui, handles: &[TextureHandle], room: f32, hover: Option<&s
             .unwrap_or(1)
     };
     let side = side_in(columns);
+    let picture = |ui: &mut Ui, t: &TextureHandle, side: f32| {
+        let [tw, th] = t.size().map(|v| v as f32);
+        let size = egui::vec2(side, side * th / tw.max(1.0));
+        let r = ui.add(egui::Image::new((t.id(), size)));
+        if let Some(text) = hover {
+            r.on_hover_text(text);
+        }
+    };
+    if let [first, rest @ ..] = handles
+        && let Some([large, small]) = first_beside_two(width, room, gap, aspect, count, side)
+    {
+        ui.horizontal_top(|ui| {
+            picture(ui, first, large);
+            ui.vertical(|ui| {
+                for t in rest {
+                    picture(ui, t, small);
+                }
+            });
+        });
+        return;
+    }
     for row in handles.chunks(columns) {
         ui.horizontal(|ui| {
             for t in row {
-                let [tw, th] = t.size().map(|v| v as f32);
-                let size = egui::vec2(side, side * th / tw.max(1.0));
-                let r = ui.add(egui::Image::new((t.id(), size)));
-                if let Some(text) = hover {
-                    r.on_hover_text(text);
-                }
+                picture(ui, t, side);
             }
         });
     }
 }
+
+/// Sides (widths, points) of the first of three pictures and of the other two stacked beside
+/// it in `width` x `room` points (`aspect`: height per point of width; `gap` between them),
+/// when that gives the first more than `side` (the grid's side) and the others at least
+/// `side`; else `None` (not three pictures, no height limit, or no gain).
+fn first_beside_two(
+    width: f32,
+    room: f32,
+    gap: egui::Vec2,
+    aspect: f32,
+    count: usize,
+    side: f32,
+) -> Option<[f32; 2]> {
+    if count != 3 || !room.is_finite() {
+        return None;
+    }
+    let aspect = aspect.max(1e-3);
+    // The stacked two as large as half the room allows, the first the rest of the width.
+    let small = (room / 2.0 - gap.y) / aspect;
+    let small = small.min((width - 2.0 * gap.x) / 2.0).max(0.0);
+    let large = ((room - gap.y) / aspect).min(width - small - 2.0 * gap.x);
+    (small >= side - 0.5 && large > (1.0 + LARGER) * side).then_some([large, small])
+}
+
+/// How much larger (a fraction) the first picture must get for the first-beside-two layout.
+const LARGER: f32 = 0.1;
 
 /// Points: the smallest room the presentation panel gives its pictures (a smaller window
 /// scrolls).
