@@ -428,3 +428,36 @@ fn escape_closes_an_open_menu_before_it_unpins() {
     h.run();
     assert_eq!(h.state().state().view.pinned, None);
 }
+
+/// Presenting a lesson at a projector's size: the strip under the picture names the step,
+/// and the card does not repeat it in its small line (it was cut short there, too small for a
+/// room), in both languages; outside a lesson the card still names the preset (above).
+#[test]
+fn presenting_a_lesson_names_the_step_once_in_the_strip() {
+    for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+        let lesson = barylab::lesson::Lesson::builtin().expect("the built-in lesson");
+        let total = lesson.steps.len();
+        let title = lesson.steps[2].title.get(lang).to_string();
+        let mut h = common::app::harness(
+            egui::vec2(1024.0, 768.0),
+            AppOptions {
+                lesson: Some((lesson, 2)),
+                present: true,
+                lang: Some(lang),
+                ..AppOptions::default()
+            },
+        );
+        settle(&mut h);
+        assert!(h.state().presenting());
+        let step = lang.tr_with("lesson.step_of", &[("n", &3), ("total", &total)]);
+        assert_eq!(
+            h.query_all_by_label_contains(&step).count(),
+            1,
+            "{lang:?}: {step:?} once, in the strip"
+        );
+        assert!(
+            h.query_by_label(&title).is_some(),
+            "{lang:?}: the strip names the title {title:?}"
+        );
+    }
+}

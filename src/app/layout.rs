@@ -432,19 +432,13 @@ impl BaryApp {
         }
     }
 
-    /// What the canvas shows, for the card's first line: the lesson and its step, or the
-    /// preset last loaded.
+    /// What the canvas shows, for the card's first line: the preset last loaded. None during
+    /// a lesson: its strip under the picture names the step in the lesson's large text (the
+    /// card's small line repeated it, cut short, too small for a room).
     fn present_context(&self) -> Option<String> {
         let lang = self.lang();
-        if let Some(s) = &self.lessons.session {
-            let step = &s.lesson.steps[s.step];
-            let n = rust_i18n::t!(
-                "lesson.step_of",
-                locale = lang.code(),
-                n = s.step + 1,
-                total = s.lesson.steps.len()
-            );
-            return Some(format!("{n} · {}", step.title.get(lang)));
+        if self.lessons.session.is_some() {
+            return None;
         }
         self.last_preset
             .map(|p| crate::app::panels::controls::preset_name(p, lang))

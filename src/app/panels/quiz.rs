@@ -383,6 +383,10 @@ impl BaryApp {
                     .show(ui, |ui| {
                         // Lines wrap at the column's width; nothing widens it.
                         ui.set_max_width(ui.available_width());
+                        // A room reads the quiz: its text in the strong colour (the usual
+                        // grey was faint on a projector).
+                        let strong = ui.visuals().strong_text_color();
+                        ui.visuals_mut().override_text_color = Some(strong);
                         ui.heading(lang.tr("quiz.title"));
                         out.extend(
                             quiz_ui(ui, session, pinned, lang)
