@@ -436,10 +436,10 @@ impl BaryApp {
     /// a lesson: its strip under the picture names the step in the lesson's large text (the
     /// card's small line repeated it, cut short, too small for a room).
     fn present_context(&self) -> Option<String> {
-        let lang = self.lang();
         if self.lessons.session.is_some() {
             return None;
         }
+        let lang = self.lang();
         self.last_preset
             .map(|p| crate::app::panels::controls::preset_name(p, lang))
     }

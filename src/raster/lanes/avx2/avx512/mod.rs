@@ -117,6 +117,45 @@ fn gather_pairs(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> (__m512i, __m512i
     )
 }
 
+/// The columns `i` of sixteen lanes as offsets from the smallest, `(i0, i - i0)`, when every
+/// offset is at most `max` (the lanes read within a window of texels of one row); `None`
+/// otherwise.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn column_offsets(i: __m512i, max: i32) -> Option<(i32, __m512i)> {
+    let i0 = _mm512_reduce_min_epi32(i);
+    let d = _mm512_sub_epi32(i, _mm512_set1_epi32(i0));
+    (_mm512_cmpgt_epu32_mask(d, _mm512_set1_epi32(max)) == 0).then_some((i0, d))
+}
+
+/// The 32 texels from texel `(i0, j)` on (row-major), in two registers; `None` when they would
+/// run past the texture's end. `i0` and `j` must be wrapped (inside the texture).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn texel_window(s: &VecSampler<'_>, i0: i32, j: i32) -> Option<(__m512i, __m512i)> {
+    // Wrapped indices: not negative.
+    let at = j as usize * s.width as usize + i0 as usize;
+    if at + 32 > s.texels.len() {
+        return None;
+    }
+    // SAFETY: texels at..at + 32 are inside `texels` (checked just above); a texel is 4
+    // bytes, read as one i32.
+    Some(unsafe {
+        let p = s.texels.as_ptr().cast::<i32>().add(at);
+        (
+            _mm512_loadu_si512(p.cast()),
+            _mm512_loadu_si512(p.add(16).cast()),
+        )
+    })
+}
+
+/// The first lane of `v`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn lane0(v: __m512i) -> i32 {
+    _mm_cvtsi128_si32(_mm512_castsi512_si128(v))
+}
+
 /// The texels `(i, ja)`, `(i + 1, ja)`, `(i, jb)` and `(i + 1, jb)` of sixteen lanes whose
 /// rows `ja` and `jb` are each the same in every lane and whose columns `i` lie within 30 of
 /// the smallest (a row of a magnified or mildly minified texture): picked from 32
@@ -127,31 +166,15 @@ fn gather_pairs(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> (__m512i, __m512i
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn row_blocks(s: &VecSampler<'_>, i: __m512i, ja: __m512i, jb: __m512i) -> Option<[__m512i; 4]> {
-    let first = |v: __m512i| _mm_cvtsi128_si32(_mm512_castsi512_si128(v));
-    let (j0, j1) = (first(ja), first(jb));
+    let (j0, j1) = (lane0(ja), lane0(jb));
     if _mm512_cmpneq_epi32_mask(ja, _mm512_set1_epi32(j0)) != 0
         || _mm512_cmpneq_epi32_mask(jb, _mm512_set1_epi32(j1)) != 0
     {
         return None;
     }
-    let i0 = _mm512_reduce_min_epi32(i);
-    let d = _mm512_sub_epi32(i, _mm512_set1_epi32(i0));
-    if _mm512_cmpgt_epu32_mask(d, _mm512_set1_epi32(30)) != 0 {
-        return None;
-    }
-    // Wrapped indices: i0, j0 and j1 are within the texture, so not negative.
-    let start = |j: i32| j as usize * s.width as usize + i0 as usize;
-    let (a, b) = (start(j0), start(j1));
-    if a.max(b) + 32 > s.texels.len() {
-        return None;
-    }
-    // SAFETY: texels a..a + 32 and b..b + 32 are inside `texels` (checked just above); a
-    // texel is 4 bytes, read as one i32.
-    let [a_lo, a_hi, b_lo, b_hi] = unsafe {
-        let p = s.texels.as_ptr().cast::<i32>();
-        let load = |k: usize| _mm512_loadu_si512(p.add(k).cast());
-        [load(a), load(a + 16), load(b), load(b + 16)]
-    };
+    let (i0, d) = column_offsets(i, 30)?;
+    let (a_lo, a_hi) = texel_window(s, i0, j0)?;
+    let (b_lo, b_hi) = texel_window(s, i0, j1)?;
     let d1 = _mm512_add_epi32(d, _mm512_set1_epi32(1));
     Some([
         _mm512_permutex2var_epi32(a_lo, d, a_hi),
@@ -173,41 +196,23 @@ fn row_blocks(s: &VecSampler<'_>, i: __m512i, ja: __m512i, jb: __m512i) -> Optio
 fn row_block(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> Option<__m512i> {
     /// Lanes 8..16.
     const HIGH: __mmask16 = 0xff00;
-    let j0 = _mm_cvtsi128_si32(_mm512_castsi512_si128(j));
-    let j1 = _mm_cvtsi128_si32(_mm512_extracti32x4_epi32::<2>(j));
+    let (j0, j1) = (
+        lane0(j),
+        _mm_cvtsi128_si32(_mm512_extracti32x4_epi32::<2>(j)),
+    );
     let rows = _mm512_mask_set1_epi32(_mm512_set1_epi32(j0), HIGH, j1);
     if _mm512_cmpneq_epi32_mask(j, rows) != 0 {
         return None;
     }
-    let i0 = _mm512_reduce_min_epi32(i);
-    let d = _mm512_sub_epi32(i, _mm512_set1_epi32(i0));
-    if _mm512_cmpgt_epu32_mask(d, _mm512_set1_epi32(31)) != 0 {
-        return None;
+    let (i0, d) = column_offsets(i, 31)?;
+    let (lo, hi) = texel_window(s, i0, j0)?;
+    let first = _mm512_permutex2var_epi32(lo, d, hi);
+    if j0 == j1 {
+        return Some(first);
     }
-    // Wrapped indices: i0, j0 and j1 are within the texture, so not negative.
-    let start = |j: i32| j as usize * s.width as usize + i0 as usize;
-    let (a, b) = (start(j0), start(j1));
-    if a.max(b) + 32 > s.texels.len() {
-        return None;
-    }
-    let pick = |at: usize| {
-        // SAFETY: texels at..at + 32 are inside `texels` (a and b, checked above); a texel is
-        // 4 bytes, read as one i32.
-        let (lo, hi) = unsafe {
-            let p = s.texels.as_ptr().cast::<i32>().add(at);
-            (
-                _mm512_loadu_si512(p.cast()),
-                _mm512_loadu_si512(p.add(16).cast()),
-            )
-        };
-        _mm512_permutex2var_epi32(lo, d, hi)
-    };
-    let first = pick(a);
-    Some(if j0 == j1 {
-        first
-    } else {
-        _mm512_mask_blend_epi32(HIGH, first, pick(b))
-    })
+    let (lo, hi) = texel_window(s, i0, j1)?;
+    let second = _mm512_permutex2var_epi32(lo, d, hi);
+    Some(_mm512_mask_blend_epi32(HIGH, first, second))
 }
 
 /// Channel `C` (0 = red) of sixteen packed texels, as f32 in 0..255.
