@@ -83,6 +83,20 @@ fn floor_fraction(x: &F32s) -> (I32s, F32s) {
     (each(|k| trunc(f[k])), each(|k| x[k] - f[k]))
 }
 
+/// `floor(x) as i32` per lane for [`tame`] coordinates: [`floor_coord`]'s index without its
+/// clamp and NaN replacement, which change nothing there (the clamp keeps `x`, there is no
+/// NaN, and the floor is an integer below 2^22 in magnitude, exact as an `i32`). With the
+/// vector floor, that floor truncated; without, the truncation, one less where it is above
+/// `x`. About a third of a nearest lookup's operations fewer.
+#[inline(always)]
+fn floor_tame(x: &F32s, floor: VectorFloor) -> I32s {
+    if floor.0 {
+        return each(|k| trunc(x[k].floor()));
+    }
+    let t: I32s = each(|k| trunc(x[k]));
+    each(|k| t[k] + mask32(t[k] as f32 > x[k]))
+}
+
 /// A wrap mode applied to eight texel indices along one axis ([`LaneWrap::apply`]): the mode
 /// is matched once, then applied to every lane. Each result is in `0..size`.
 #[inline(always)]
@@ -185,8 +199,14 @@ impl Sampler<'_> {
         match self.filter {
             // One texel of weight 1: the colour is the texel (see the parent module).
             Filter::Nearest => {
-                let i = wrap(&floor_coord(&each(|k| u[k] * w), floor).0, self.wrap.0);
-                let j = wrap(&floor_coord(&each(|k| v[k] * h), floor).0, self.wrap.1);
+                let x = each(|k| u[k] * w);
+                let y = each(|k| v[k] * h);
+                let (i, j) = if tame(&x) && tame(&y) {
+                    (floor_tame(&x, floor), floor_tame(&y, floor))
+                } else {
+                    (floor_coord(&x, floor).0, floor_coord(&y, floor).0)
+                };
+                let (i, j) = (wrap(&i, self.wrap.0), wrap(&j, self.wrap.1));
                 self.fetch(&self.index(&i, &j))
             }
             _ => {
@@ -270,12 +290,14 @@ mod tests {
         assert!(wrong.is_empty(), "rounded differently: {wrong:?}");
     }
 
-    /// For tame coordinates the short floor and fraction give the general code's index and
-    /// fraction bit for bit: multiples of 1/8 around zero, both signs of zero, tiny values,
+    /// For tame coordinates the short floor and fraction (and the nearest lookup's short floor,
+    /// with and without the vector floor) give the general code's index and fraction bit for bit: multiples of 1/8 around zero, both signs of zero, tiny values,
     /// fractions just below and above integers, and the largest tame magnitudes.
     #[test]
     fn tame_coordinates_floor_as_the_general_code() {
-        use super::{Inf, LANES, VectorFloor, floor_coord, floor_fraction, fraction, tame};
+        use super::{
+            Inf, LANES, VectorFloor, floor_coord, floor_fraction, floor_tame, fraction, tame,
+        };
         let below = |x: f32| f32::from_bits(x.to_bits() - 1);
         let mut xs: Vec<f32> = (-4096..4096).map(|k| k as f32 / 8.0).collect();
         xs.extend([
@@ -303,6 +325,11 @@ mod tests {
             let (i_tame, a_tame) = floor_fraction(&x);
             assert_eq!(i, i_tame, "{x:?}");
             assert_eq!(a.map(f32::to_bits), a_tame.map(f32::to_bits), "{x:?}");
+            for vector_floor in [true, false] {
+                let floor = VectorFloor(vector_floor);
+                assert_eq!(floor_tame(&x, floor), floor_coord(&x, floor).0, "{x:?}");
+                assert_eq!(floor_tame(&x, floor), i, "{x:?}");
+            }
         }
         assert!(!tame(&[4194304.0; LANES]));
         assert!(!tame(&[0.5, f32::NAN, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5]));
