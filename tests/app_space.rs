@@ -165,3 +165,47 @@ fn the_tetrahedron_step_weighs_the_pinned_pixels_point() {
     );
     assert!(h.query_by_label(&entry).is_some(), "the view shows {entry}");
 }
+
+/// In a lesson at a lecture projector (1024x768 at text size 1.5, not presenting), the 3D
+/// view's panel ends where the Lessons panel begins in every step that opens it: its numbers
+/// scroll under the drawing. (Its content overflowed the panel, which then reached down over
+/// the lesson's buttons, its edge drawn across "Reset this step".)
+#[test]
+fn the_3d_view_stays_above_the_lesson_panel_at_a_lecture_projector() {
+    let lesson = barylab::lesson::Lesson::builtin().expect("built-in lesson");
+    let steps: Vec<usize> = (0..lesson.steps.len())
+        .filter(|&i| lesson.steps[i].space_view)
+        .collect();
+    assert!(steps.len() >= 3, "steps with the 3D view: {steps:?}");
+    for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+        for &step in &steps {
+            let mut h = common::app::harness(
+                egui::vec2(1024.0, 768.0),
+                AppOptions {
+                    lesson: Some((lesson.clone(), step)),
+                    lang: Some(lang),
+                    ..AppOptions::default()
+                },
+            );
+            h.state_mut().push(StateCommand::SetUiScale(1.5));
+            for _ in 0..4 {
+                h.step();
+            }
+            h.run();
+            assert!(
+                h.state().state().view.space,
+                "step {} opens the 3D view",
+                step + 1
+            );
+            let space = h.state().space_panel_rect().expect("the 3D view's panel");
+            let lessons = h.state().lesson_panel_rect().expect("the Lessons panel");
+            assert!(
+                space.bottom() <= lessons.top() + 0.5,
+                "{lang:?} step {}: the 3D view reaches {} over the lesson panel at {}",
+                step + 1,
+                space.bottom(),
+                lessons.top()
+            );
+        }
+    }
+}

@@ -39,6 +39,16 @@ impl BaryApp {
         self.push(command);
     }
 
+    /// Where the 3D view's panel beside the canvas was laid out last, if it was shown.
+    pub fn space_panel_rect(&self) -> Option<egui::Rect> {
+        self.space_view.panel_rect
+    }
+
+    /// Where the Lessons panel was laid out last, if it was shown.
+    pub fn lesson_panel_rect(&self) -> Option<egui::Rect> {
+        self.lessons.panel_rect
+    }
+
     /// The current state (scene and view).
     pub fn state(&self) -> &AppState {
         &self.state

@@ -175,6 +175,75 @@ pub fn place_handle_label(
     best.map_or_else(|| box_at(dirs[0], radius), |(_, b)| b)
 }
 
+/// The text scales [`place_handle_label_fitting`] tries, largest first: a label shrinks to
+/// a little under two thirds of its size at most (still readable where it is shown), and
+/// only where the full size covers another label or a handle.
+pub const HANDLE_LABEL_SCALES: [f32; 3] = [1.0, 0.8, 0.64];
+
+/// [`place_handle_label`] at the largest of [`HANDLE_LABEL_SCALES`] whose box covers nothing
+/// placed nor kept clear, `size_at(scale)` giving the label's box size with its text at that
+/// scale; where every scale's box covers something, the one covering least (the larger on a
+/// tie). Returns the box and the scale. On a small picture two neighbouring corners' labels
+/// then sit side by side, smaller, instead of one over the other.
+///
+/// ```
+/// use barylab::figure::label_place::{place_handle_label_fitting, HANDLE_LABEL_SCALES};
+/// use barylab::figure::text::overlap_area;
+/// // A picture 100 points wide whose left 45 points hold a label already: a label 60 points
+/// // wide covers part of it wherever it goes; at 80% (48 points) it fits right of it.
+/// let clip = [0.0, 0.0, 100.0, 20.0];
+/// let placed = [[0.0, 0.0, 45.0, 20.0]];
+/// let size_at = |s: f32| [60.0 * s, 10.0 * s];
+/// let (b, scale) = place_handle_label_fitting([75.0, 10.0], 2.0, [1.0, -1.0], &[], size_at,
+///                                             clip, &placed, &[]);
+/// assert_eq!(scale, HANDLE_LABEL_SCALES[1]);
+/// assert_eq!(overlap_area(b, &placed), 0.0);
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn place_handle_label_fitting(
+    centre: [f32; 2],
+    radius: f32,
+    outward: [f32; 2],
+    others: &[[f32; 2]],
+    size_at: impl Fn(f32) -> [f32; 2],
+    clip: Box2,
+    placed: &[Box2],
+    keep_clear: &[Box2],
+) -> (Box2, f32) {
+    let mut best: Option<(f32, Box2, f32)> = None;
+    for scale in HANDLE_LABEL_SCALES {
+        let b = place_handle_label(
+            centre,
+            radius,
+            outward,
+            others,
+            size_at(scale),
+            clip,
+            placed,
+            keep_clear,
+        );
+        let c = cost(b, placed, keep_clear);
+        if c == 0.0 {
+            return (b, scale);
+        }
+        if best.is_none_or(|(bc, _, _)| c < bc) {
+            best = Some((c, b, scale));
+        }
+    }
+    best.map_or_else(
+        || {
+            let size = size_at(1.0);
+            (
+                place_handle_label(
+                    centre, radius, outward, others, size, clip, placed, keep_clear,
+                ),
+                1.0,
+            )
+        },
+        |(_, b, scale)| (b, scale),
+    )
+}
+
 /// The four uv labels of a 2x2 quad, placed as one block by [`place_quad_block`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct QuadBlock {

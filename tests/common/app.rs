@@ -24,12 +24,22 @@ pub fn harness_of(app: BaryApp, size: egui::Vec2) -> Harness<'static, BaryApp> {
 /// The app presenting step `step` (from 1) of the lesson `lesson` (a built-in name or a
 /// file) in `lang` at a lecture projector: a 1024x768 window at text size 1.5.
 pub fn lecture(lesson: &str, step: usize, lang: barylab::i18n::Lang) -> Harness<'static, BaryApp> {
+    lecture_with(lesson, step, lang, true)
+}
+
+/// [`lecture`], presenting or not (the Lessons panel under the canvas).
+pub fn lecture_with(
+    lesson: &str,
+    step: usize,
+    lang: barylab::i18n::Lang,
+    present: bool,
+) -> Harness<'static, BaryApp> {
     let lesson = barylab::lesson::Lesson::open(std::path::Path::new(lesson)).expect("the lesson");
     let mut h = harness(
         egui::vec2(1024.0, 768.0),
         AppOptions {
             lesson: Some((lesson, step - 1)),
-            present: true,
+            present,
             lang: Some(lang),
             ..AppOptions::default()
         },

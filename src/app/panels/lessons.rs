@@ -60,6 +60,8 @@ pub struct Lessons {
     /// The window height (points) the Lessons panel was last shown in and its share of it:
     /// the panel keeps its share when the window or the text size changes.
     panel_share: Option<(f32, f32)>,
+    /// Where the Lessons panel was laid out last.
+    pub(in crate::app) panel_rect: Option<egui::Rect>,
 }
 
 impl Lessons {
@@ -598,6 +600,7 @@ impl BaryApp {
         out: &mut Vec<AppCommand>,
     ) {
         let lang = self.lang();
+        self.lessons.panel_rect = None;
         if self.lessons.session.is_none() {
             return;
         }
@@ -624,6 +627,7 @@ impl BaryApp {
             out.extend(lesson_panel_ui(ui, session, lang, plot, &mut hovered));
         });
         self.lessons.panel_share = Some((height, shown.response.rect.height() / height.max(1.0)));
+        self.lessons.panel_rect = Some(shown.response.rect);
         self.lessons.plot_hover = hovered;
     }
 

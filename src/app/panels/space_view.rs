@@ -33,6 +33,8 @@ pub struct SpaceView {
     /// The orbit camera.
     pub orbit: Orbit,
     cached: Option<(SceneKey, SpaceScene)>,
+    /// Where its panel was laid out last (beside the canvas, not presenting).
+    pub(in crate::app) panel_rect: Option<egui::Rect>,
 }
 
 /// The Controls panel's toggle of the 3D view (beside the comparison choices).
@@ -97,15 +99,30 @@ impl SpaceView {
                 self.orbit = Orbit::default();
             }
         });
-        ui.label(RichText::new(lang.tr("space.hint")).weak());
+        let body = ui.text_style_height(&egui::TextStyle::Body);
+        let lines = 2.0 * body + ui.spacing().item_spacing.y;
+        // The hint under the title where the drawing keeps its smallest height below it (the
+        // hint takes two lines in a narrow panel), else on the drawing as a tooltip.
+        let hint_shown = ui.available_height() >= 2.0 * lines + MIN_DRAWING;
+        if hint_shown {
+            ui.label(RichText::new(lang.tr("space.hint")).weak());
+        }
         let Some(output) = output else {
             return;
         };
-        let size = egui::vec2(
-            ui.available_width(),
-            (0.68 * ui.available_height()).max(160.0),
-        );
+        // The drawing takes about two thirds of the height, at least `MIN_DRAWING`, and leaves
+        // room for two lines of the numbers, which scroll under it: nothing overflows the
+        // panel (an overflow grew the panel past the lesson panel's top, its edge drawn
+        // across the lesson's buttons).
+        let room = ui.available_height();
+        let height = (0.68 * room).max(MIN_DRAWING).min(room - lines).max(0.0);
+        let size = egui::vec2(ui.available_width(), height);
         let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
+        let response = if hint_shown {
+            response
+        } else {
+            response.on_hover_text(lang.tr("space.hint"))
+        };
         if response.dragged() {
             let d = response.drag_delta();
             self.orbit = self.orbit.turned(
@@ -139,6 +156,8 @@ impl SpaceView {
         }
         egui::ScrollArea::vertical()
             .id_salt("space-numbers")
+            .min_scrolled_height(0.0)
+            .max_height(ui.available_height())
             .show(ui, |ui| {
                 let ink = ui.visuals().text_color();
                 for (line, c) in lines {
@@ -234,6 +253,8 @@ pub const PRESENT_MIN_ASPECT: f32 = 1.5;
 
 /// The 3D view's share of the window's width in presentation mode.
 pub const PRESENT_SHARE: f32 = 0.36;
+/// The 3D drawing's smallest height in points, where the panel has room for it.
+const MIN_DRAWING: f32 = 160.0;
 
 impl crate::app::BaryApp {
     /// Presentation mode, when the 3D view is on: in a column right of the picture when the
@@ -275,6 +296,7 @@ impl crate::app::BaryApp {
     /// The 3D view as a resizable panel right of the canvas (when it is on), drawn from the
     /// canvas's render and the hovered, else pinned, pixel's trace.
     pub(in crate::app) fn space_panel(&mut self, ui: &mut Ui) {
+        self.space_view.panel_rect = None;
         if !self.state.view.space {
             return;
         }
@@ -282,10 +304,11 @@ impl crate::app::BaryApp {
         let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
         let output = self.canvas.output.as_ref();
         let view = &mut self.space_view;
-        egui::Panel::right("space-view")
+        let shown = egui::Panel::right("space-view")
             .resizable(true)
             .default_size(0.45 * width)
             .size_range((0.25 * width)..=(0.7 * width))
             .show(ui, |ui| view.ui(ui, output, report, LABEL_SIZE));
+        view.panel_rect = Some(shown.response.rect);
     }
 }

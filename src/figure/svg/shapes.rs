@@ -204,18 +204,18 @@ pub(super) fn overlay(
                 let p = t.point(*at);
                 let width = text::measure(txt, *size).0[0];
                 let size = size * text::fit(width, 2.0 * LABEL_PAD[0] * k, clip);
-                let outer = text::padded(text::measure(txt, size).0, true, k);
                 let others = label_place::others(&handles, p);
-                let b = label_place::place_handle_label(
+                let (b, scale) = label_place::place_handle_label_fitting(
                     p,
                     *reach,
                     *outward,
                     &others,
-                    outer,
+                    |scale| text::padded(text::measure(txt, size * scale).0, true, k),
                     clip,
                     &placed,
                     &keep_clear,
                 );
+                let size = size * scale;
                 placed.push(b);
                 label(
                     s,

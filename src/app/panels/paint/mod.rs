@@ -254,18 +254,18 @@ pub fn paint(
                 background,
             } => {
                 // Placed as the figure export places it, measured with egui's galley.
-                let (galley, outer) = fitted(&painter, text, *size, *c, true, clip);
                 let p = to_point(t, *at);
-                let b = label_place::place_handle_label(
+                let (b, scale) = label_place::place_handle_label_fitting(
                     p,
                     *reach,
                     *outward,
                     &label_place::others(&handles, p),
-                    outer,
+                    |scale| fitted(&painter, text, *size * scale, *c, true, clip).1,
                     to_box(clip),
                     &placed,
                     &keep_clear,
                 );
+                let galley = fitted(&painter, text, *size * scale, *c, true, clip).0;
                 placed.push(b);
                 draw_label(&painter, to_rect(b), galley, *c, Some(*background));
             }
