@@ -461,3 +461,32 @@ fn presenting_a_lesson_names_the_step_once_in_the_strip() {
         );
     }
 }
+
+/// The difference heatmap's colour bar at a lecture projector (1024x768, text size 1.5),
+/// with the Lessons panel under a shrunk canvas (built-in lesson step 10) and presenting:
+/// the bar, down to its 0 tick, lies on the shown image's height. (Sized for the image's
+/// pixels, it ran past the bottom of the shrunk image and its 0 was cut off.)
+#[test]
+fn the_colour_bar_fits_the_shown_image_at_a_lecture_projector() {
+    for present in [false, true] {
+        let h = common::app::lecture_with("builtin", 10, barylab::i18n::Lang::En, present);
+        let area = h.state().canvas().area.expect("laid out");
+        let ticks: Vec<egui::Rect> = h
+            .output()
+            .shapes
+            .iter()
+            .filter_map(|c| match &c.shape {
+                egui::Shape::Text(s) if s.galley.job.text == "0" => {
+                    Some(s.galley.rect.translate(s.pos.to_vec2()))
+                }
+                _ => None,
+            })
+            .collect();
+        assert_eq!(ticks.len(), 1, "present {present}: one 0 tick, {ticks:?}");
+        assert!(
+            area.contains_rect(ticks[0]),
+            "present {present}: the 0 tick {:?} outside the canvas {area:?}",
+            ticks[0]
+        );
+    }
+}

@@ -326,7 +326,12 @@ pub fn paint(
                 title,
             } => {
                 let min = t.to_screen(*at) + egui::vec2(offset[0], offset[1]);
-                let rect = Rect::from_min_size(min, egui::vec2(size[0], size[1]));
+                // As high as the image is shown (a shrunk image is fewer points high than
+                // its pixels, and a bar sized for the pixels ran past its bottom).
+                let height = size[1].min(crate::figure::overlay::color_bar_height(f64::from(
+                    image.height(),
+                )));
+                let rect = Rect::from_min_size(min, egui::vec2(size[0], height));
                 paint_color_bar(&painter, rect, colors, labels, title);
             }
         }
