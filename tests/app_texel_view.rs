@@ -445,3 +445,41 @@ fn on_a_projector_at_text_size_1_5_the_lod_legend_keeps_inside_its_panel() {
         }
     }
 }
+
+/// Beside the Lessons panel at a lecture projector (1024x768, text size 1.5, not presenting),
+/// the texture view shows its first picture (level 0 with the footprint) under the pixel's
+/// line, at least 80 points of it above the Lessons panel, in every step with the view and
+/// both languages: the derivatives' and levels' lines come after the pictures. (They came
+/// first and filled the short panel; the pictures were out of sight.)
+#[test]
+fn beside_the_lessons_panel_the_texture_view_shows_its_picture_first() {
+    let lesson = Lesson::open(Path::new("texture")).expect("the texture lesson");
+    let steps: Vec<usize> = (1..=lesson.steps.len())
+        .filter(|&n| {
+            lesson.state(n - 1).expect("state").texture_view == barylab::figure::TexelView::Texture
+        })
+        .collect();
+    assert!(steps.len() >= 3, "steps with the texture view: {steps:?}");
+    for step in steps {
+        for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+            let h = common::app::lecture_with("texture", step, lang, false);
+            let view = h
+                .query_by_label(&lang.tr("texel_view.texture_title"))
+                .unwrap_or_else(|| panic!("step {step} {lang:?}: the texture view"))
+                .rect();
+            let lessons = h.state().lesson_panel_rect().expect("the Lessons panel");
+            let first = h
+                .query_all_by_role(egui::accesskit::Role::Image)
+                .map(|p| p.rect())
+                .filter(|r| r.min.x >= view.min.x - 1.0)
+                .min_by(|a, b| a.min.y.total_cmp(&b.min.y))
+                .unwrap_or_else(|| panic!("step {step} {lang:?}: a picture"));
+            assert!(
+                first.min.y + 80.0 <= lessons.min.y,
+                "step {step} {lang:?}: the picture starts at {} and the Lessons panel at {}",
+                first.min.y,
+                lessons.min.y
+            );
+        }
+    }
+}

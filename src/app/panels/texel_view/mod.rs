@@ -199,6 +199,16 @@ impl TexelViewPanel {
             // Lines closer together: the pictures get the room.
             ui.spacing_mut().item_spacing.y = FIT_SPACING;
         }
+        // Beside the canvas, the pixel's line over the pictures and its other numbers under
+        // them: in a short panel (a projector's 1024x768 with the Lessons panel open) the
+        // derivatives' lines filled it and the pictures were out of sight.
+        let (over, after): (Vec<String>, Vec<String>) = if fit.is_some() {
+            (over, Vec::new())
+        } else {
+            let mut over = over;
+            let after = over.split_off(over.len().min(1));
+            (over, after)
+        };
         for line in over {
             // Presenting, the numbers in the strong (brightest) text colour: a projector loses
             // the contrast of the default grey.
@@ -244,7 +254,7 @@ impl TexelViewPanel {
                 ui.label(RichText::new(line).weak());
             }
             ui.add_space(4.0);
-            for line in &under {
+            for line in after.iter().chain(&under) {
                 ui.label(RichText::new(line).monospace());
             }
             return;
