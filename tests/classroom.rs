@@ -490,3 +490,46 @@ fn the_colour_bar_fits_the_shown_image_at_a_lecture_projector() {
         );
     }
 }
+
+/// At a lecture projector (1024x768, text size 1.5) with the Lessons panel under the canvas,
+/// on every step of the three built-in lessons in both languages, the lesson's first row
+/// (Previous, the step, Next) lies whole inside the Lessons panel, and the canvas and the
+/// panel beside it end above it. (On texture step 9 the plot's chosen name wrapped to three
+/// lines, the plot overflowed the panel, and the canvas covered Previous and Next.)
+#[test]
+fn every_step_keeps_previous_and_next_in_sight_beside_the_lessons_panel() {
+    for lesson in ["builtin", "texture", "samples"] {
+        let count = barylab::lesson::Lesson::open(std::path::Path::new(lesson))
+            .expect("lesson")
+            .steps
+            .len();
+        for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+            for step in 1..=count {
+                let h = common::app::lecture_with(lesson, step, lang, false);
+                let what = format!("{lesson} step {step} {lang:?}");
+                let panel = h.state().lesson_panel_rect().expect("the Lessons panel");
+                for key in ["lesson.previous", "lesson.next"] {
+                    let b = h
+                        .query_by_label(&lang.tr(key))
+                        .unwrap_or_else(|| panic!("{what}: {key}"))
+                        .rect();
+                    assert!(
+                        panel.expand(0.5).contains_rect(b),
+                        "{what}: {key} at {b:?} outside the Lessons panel {panel:?}"
+                    );
+                }
+                let canvas = h.state().canvas().area.expect("laid out");
+                assert!(
+                    canvas.bottom() <= panel.top() + 0.5,
+                    "{what}: the canvas {canvas:?} reaches over the Lessons panel {panel:?}"
+                );
+                if let Some(space) = h.state().space_panel_rect() {
+                    assert!(
+                        space.bottom() <= panel.top() + 0.5,
+                        "{what}: the 3D view {space:?}"
+                    );
+                }
+            }
+        }
+    }
+}

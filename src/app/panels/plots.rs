@@ -95,8 +95,12 @@ pub fn plot_ui(
             return;
         }
         let label = ui.label(tr(lang, "lesson.plot_kind"));
+        // The chosen plot's name on one line, cut short if need be (the whole name is the
+        // hover text and in the list): wrapped to three lines in a narrow column, it pushed
+        // the plot past the Lessons panel.
         egui::ComboBox::from_id_salt("row-plot-kind")
             .selected_text(tr(lang, title_key(plot)))
+            .truncate()
             .width(ui.available_width().clamp(80.0, 360.0))
             .show_ui(ui, |ui| {
                 for p in [
@@ -115,7 +119,8 @@ pub fn plot_ui(
                 }
             })
             .response
-            .labelled_by(label.id);
+            .labelled_by(label.id)
+            .on_hover_text(tr(lang, title_key(plot)));
     });
     let Some((pin_x, lines)) = lines else {
         ui.label(tr(lang, "lesson.plot_none"));
