@@ -311,8 +311,9 @@ fn every_handle_label_is_nearer_its_own_handle_than_any_other() {
 /// With the Lessons panel under the canvas at a lecture projector (1024x768, text size 1.5:
 /// the pictures are small, two side by side smaller still), no handle label covers another
 /// on any step of either built-in lesson, in either language: a label that finds no free
-/// place at full size takes a smaller one. (On the built-in lesson's step 12, D's label lay
-/// over C's.)
+/// place at full size takes a smaller one, and so does the quad's block of uv labels. (On
+/// the built-in lesson's step 12, D's label lay over C's; on texture step 9 the uv block lay
+/// over D's and C's.)
 #[test]
 fn handle_labels_never_cover_each_other_beside_the_lessons_panel() {
     for lesson in ["builtin", "texture"] {
@@ -330,6 +331,15 @@ fn handle_labels_never_cover_each_other_beside_the_lessons_panel() {
                         assert!(
                             !overlap(*a, *b),
                             "{lesson} step {step} {lang:?}: {t} at {a:?} covers {u} at {b:?}"
+                        );
+                    }
+                }
+                // Nor does the quad's block of uv labels (which takes a smaller size too).
+                for (u, b) in d.labels.iter().filter(|(t, _)| t.starts_with("uv_")) {
+                    for (t, a) in &labels {
+                        assert!(
+                            !overlap(*a, *b),
+                            "{lesson} step {step} {lang:?}: {u} at {b:?} covers {t} at {a:?}"
                         );
                     }
                 }

@@ -259,6 +259,75 @@ pub struct QuadBlock {
 /// Points: a block farther than this from its quad gets a leader line.
 pub const LEADER_FROM: f32 = 24.0;
 
+/// [`place_quad_block`] at the largest of [`HANDLE_LABEL_SCALES`] whose boxes cover nothing
+/// placed nor kept clear, `sizes_at(scale)` giving the labels' box sizes with their text at
+/// that scale; where every scale's block covers something, the one covering least (the
+/// larger on a tie). Returns the block and the scale. On a small picture the block then
+/// stays off the corners' labels, smaller, instead of lying over them.
+///
+/// ```
+/// use barylab::figure::label_place::{place_quad_block_fitting, HANDLE_LABEL_SCALES};
+/// let clip = [0.0, 0.0, 400.0, 300.0];
+/// let quad = [196.0, 146.0, 204.0, 154.0];
+/// let sizes_at = |s: f32| [Some([60.0 * s, 20.0 * s]); 4];
+/// // Room for the block at full size: it keeps it.
+/// let (_, scale) = place_quad_block_fitting(quad, sizes_at, 2.0, 8.0, true, clip, &[], &[]);
+/// assert_eq!(scale, HANDLE_LABEL_SCALES[0]);
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn place_quad_block_fitting(
+    quad: Box2,
+    sizes_at: impl Fn(f32) -> [Option<[f32; 2]>; 4],
+    gap: f32,
+    margin: f32,
+    above: bool,
+    clip: Box2,
+    placed: &[Box2],
+    keep_clear: &[Box2],
+) -> (QuadBlock, f32) {
+    let mut best: Option<(f32, QuadBlock, f32)> = None;
+    for scale in HANDLE_LABEL_SCALES {
+        let q = place_quad_block(
+            quad,
+            sizes_at(scale),
+            gap,
+            margin,
+            above,
+            clip,
+            placed,
+            keep_clear,
+        );
+        let c: f32 = q
+            .boxes
+            .iter()
+            .flatten()
+            .map(|&b| cost(b, placed, keep_clear))
+            .sum();
+        if c == 0.0 {
+            return (q, scale);
+        }
+        if best.as_ref().is_none_or(|(bc, _, _)| c < *bc) {
+            best = Some((c, q, scale));
+        }
+    }
+    best.map_or_else(
+        || {
+            let q = place_quad_block(
+                quad,
+                sizes_at(1.0),
+                gap,
+                margin,
+                above,
+                clip,
+                placed,
+                keep_clear,
+            );
+            (q, 1.0)
+        },
+        |(_, q, scale)| (q, scale),
+    )
+}
+
 /// The boxes of a block laid out from its top-left corner `at`: two columns (`gap` apart)
 /// as wide as their widest label, the left one's labels flush right and the right one's
 /// flush left, two rows (`gap` apart) as high as their highest; label `i + 2 j` in column

@@ -234,18 +234,20 @@ pub(super) fn overlay(
                 });
                 let size = quad_labels.size
                     * label_place::block_fit(widths, LABEL_PAD[0] * k, gaps[0], clip);
-                let sizes = texts.each_ref().map(|x| {
-                    x.as_ref()
-                        .map(|(x, _)| text::padded(text::measure(x, size).0, true, k))
-                });
+                let sizes_at = |scale: f32| {
+                    texts.each_ref().map(|x| {
+                        x.as_ref()
+                            .map(|(x, _)| text::padded(text::measure(x, size * scale).0, true, k))
+                    })
+                };
                 let quad = label_place::quad_box(
                     t.point(quad_labels.min),
                     t.point(quad_labels.max),
                     quad_labels.outline,
                 );
-                let q = label_place::place_quad_block(
+                let (q, scale) = label_place::place_quad_block_fitting(
                     quad,
-                    sizes,
+                    sizes_at,
                     gaps[0],
                     gaps[1],
                     quad_labels.above,
@@ -253,6 +255,7 @@ pub(super) fn overlay(
                     &placed,
                     &keep_clear,
                 );
+                let size = size * scale;
                 if let Some([a, b]) = q.leader {
                     let _ = writeln!(
                         s,

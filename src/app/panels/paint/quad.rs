@@ -35,19 +35,19 @@ pub(super) fn quad_labels(
     };
     // A block wider than its view shrinks to fit it.
     let widths = lay(*size).map(|g| g.map(|g| g.size().x));
-    let galleys = lay(size * label_place::block_fit(widths, LABEL_PAD[0], gaps[0], to_box(clip)));
-    let sizes = galleys.each_ref().map(|g| {
-        g.as_ref()
-            .map(|g| figure_text::padded([g.size().x, g.size().y], true, 1.0))
-    });
+    let size = size * label_place::block_fit(widths, LABEL_PAD[0], gaps[0], to_box(clip));
+    let sizes_at = |scale: f32| {
+        lay(size * scale)
+            .map(|g| g.map(|g| figure_text::padded([g.size().x, g.size().y], true, 1.0)))
+    };
     let quad = label_place::quad_box(
         to_point(t, labels.min),
         to_point(t, labels.max),
         labels.outline,
     );
-    let q = label_place::place_quad_block(
+    let (q, scale) = label_place::place_quad_block_fitting(
         quad,
-        sizes,
+        sizes_at,
         gaps[0],
         gaps[1],
         labels.above,
@@ -55,6 +55,7 @@ pub(super) fn quad_labels(
         placed,
         keep_clear,
     );
+    let galleys = lay(size * scale);
     if let Some([a, b]) = q.leader {
         painter.line_segment(
             [Pos2::new(a[0], a[1]), Pos2::new(b[0], b[1])],
