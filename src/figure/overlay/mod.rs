@@ -238,8 +238,8 @@ pub const COLOR_BAR_ROOM: f32 = 96.0;
 const COLOR_BAR_HEIGHT: f32 = 260.0;
 const COLOR_BAR_BELOW: f32 = 40.0;
 
-/// The colour bar's height in points for an image `view_height` points high: at most
-/// [`COLOR_BAR_HEIGHT`], less on a small image so it stays inside (at least 60). (The app
+/// The colour bar's height in points for an image `view_height` points high: at most 260
+/// (`COLOR_BAR_HEIGHT`), less on a small image so it stays inside (at least 60). (The app
 /// asks again with the height the image is shown at, which is smaller than its pixels
 /// where the canvas shrinks it.)
 pub fn color_bar_height(view_height: f64) -> f32 {
