@@ -210,8 +210,7 @@ pub fn place_handle_label_fitting(
     placed: &[Box2],
     keep_clear: &[Box2],
 ) -> (Box2, f32) {
-    let mut best: Option<(f32, Box2, f32)> = None;
-    for scale in HANDLE_LABEL_SCALES {
+    at_fitting_scale(|scale| {
         let b = place_handle_label(
             centre,
             radius,
@@ -222,26 +221,26 @@ pub fn place_handle_label_fitting(
             placed,
             keep_clear,
         );
-        let c = cost(b, placed, keep_clear);
-        if c == 0.0 {
-            return (b, scale);
+        (b, cost(b, placed, keep_clear))
+    })
+}
+
+/// `place(scale)` (a placement and what it covers, [`cost`]) at the largest of
+/// [`HANDLE_LABEL_SCALES`] that covers nothing, else at the one covering least (the larger on
+/// a tie); returns the placement and its scale.
+fn at_fitting_scale<T>(place: impl Fn(f32) -> (T, f32)) -> (T, f32) {
+    let [first, rest @ ..] = HANDLE_LABEL_SCALES;
+    let ((mut best, mut best_cost), mut best_scale) = (place(first), first);
+    for scale in rest {
+        if best_cost == 0.0 {
+            break;
         }
-        if best.is_none_or(|(bc, _, _)| c < bc) {
-            best = Some((c, b, scale));
+        let (t, c) = place(scale);
+        if c < best_cost {
+            (best, best_cost, best_scale) = (t, c, scale);
         }
     }
-    best.map_or_else(
-        || {
-            let size = size_at(1.0);
-            (
-                place_handle_label(
-                    centre, radius, outward, others, size, clip, placed, keep_clear,
-                ),
-                1.0,
-            )
-        },
-        |(_, b, scale)| (b, scale),
-    )
+    (best, best_scale)
 }
 
 /// The four uv labels of a 2x2 quad, placed as one block by [`place_quad_block`].
@@ -285,8 +284,7 @@ pub fn place_quad_block_fitting(
     placed: &[Box2],
     keep_clear: &[Box2],
 ) -> (QuadBlock, f32) {
-    let mut best: Option<(f32, QuadBlock, f32)> = None;
-    for scale in HANDLE_LABEL_SCALES {
+    at_fitting_scale(|scale| {
         let q = place_quad_block(
             quad,
             sizes_at(scale),
@@ -297,35 +295,14 @@ pub fn place_quad_block_fitting(
             placed,
             keep_clear,
         );
-        let c: f32 = q
+        let c = q
             .boxes
             .iter()
             .flatten()
             .map(|&b| cost(b, placed, keep_clear))
             .sum();
-        if c == 0.0 {
-            return (q, scale);
-        }
-        if best.as_ref().is_none_or(|(bc, _, _)| c < *bc) {
-            best = Some((c, q, scale));
-        }
-    }
-    best.map_or_else(
-        || {
-            let q = place_quad_block(
-                quad,
-                sizes_at(1.0),
-                gap,
-                margin,
-                above,
-                clip,
-                placed,
-                keep_clear,
-            );
-            (q, 1.0)
-        },
-        |(_, q, scale)| (q, scale),
-    )
+        (q, c)
+    })
 }
 
 /// The boxes of a block laid out from its top-left corner `at`: two columns (`gap` apart)
