@@ -533,3 +533,40 @@ fn every_step_keeps_previous_and_next_in_sight_beside_the_lessons_panel() {
         }
     }
 }
+
+/// At a lecture projector (1024x768, text size 1.5) without presenting, the plot beside a
+/// step's text keeps a height a room can read its curve in (64 points inside its axes), inside
+/// the Lessons panel, on every step with a plot (built-in steps 11 and 15, texture step 9), in
+/// English and Chinese. (Under "Plot:", the plot's name and two legend rows, it had 48 points,
+/// the axes included.)
+#[test]
+fn a_steps_plot_beside_its_text_keeps_a_readable_height() {
+    let mut seen = 0;
+    for lesson in ["builtin", "texture"] {
+        let steps = barylab::lesson::Lesson::open(std::path::Path::new(lesson))
+            .expect("lesson")
+            .steps;
+        for (i, step) in steps.iter().enumerate() {
+            if step.plot.is_none() {
+                continue;
+            }
+            for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+                let h = common::app::lecture_with(lesson, i + 1, lang, false);
+                let what = format!("{lesson} step {} {lang:?}", i + 1);
+                let panel = h.state().lesson_panel_rect().expect("the Lessons panel");
+                let plot = BaryApp::plot_rect(&h.ctx).unwrap_or_else(|| panic!("{what}: no plot"));
+                assert!(
+                    plot.height() >= 64.0,
+                    "{what}: the plot is {} points high",
+                    plot.height()
+                );
+                assert!(
+                    panel.expand(0.5).contains_rect(plot),
+                    "{what}: the plot {plot:?} outside the Lessons panel {panel:?}"
+                );
+                seen += 1;
+            }
+        }
+    }
+    assert_eq!(seen, 6, "three steps with a plot, in two languages");
+}

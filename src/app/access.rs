@@ -49,6 +49,12 @@ impl BaryApp {
         self.lessons.panel_rect
     }
 
+    /// Where the pinned row's plot was drawn last in this context, if one was drawn (in the
+    /// Lessons panel or its window).
+    pub fn plot_rect(ctx: &egui::Context) -> Option<egui::Rect> {
+        crate::app::panels::plots::last_plot_rect(ctx)
+    }
+
     /// The current state (scene and view).
     pub fn state(&self) -> &AppState {
         &self.state

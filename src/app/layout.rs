@@ -462,6 +462,7 @@ fn present_plot(
         lang,
         hovered_column,
         true,
+        f32::INFINITY,
     ))
     .collect()
 }

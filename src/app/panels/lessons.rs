@@ -281,7 +281,8 @@ impl BaryApp {
             _ => panel,
         };
         let shown = panel.show(ui, |ui| {
-            out.extend(lesson_panel_ui(ui, session, lang, plot, &mut hovered));
+            let most = height * PLOT_ROOM_SHARE;
+            out.extend(lesson_panel_ui(ui, session, lang, plot, &mut hovered, most));
         });
         self.lessons.panel_share = Some((height, shown.response.rect.height() / height.max(1.0)));
         self.lessons.panel_rect = Some(shown.response.rect);
@@ -313,6 +314,10 @@ impl BaryApp {
 /// The Lessons panel's share of the window height at first, and at most.
 const PANEL_SHARE: f32 = 0.3;
 const PANEL_MAX_SHARE: f32 = 0.5;
+/// The most of the window's height the Lessons panel grows to for its plot (a little under its
+/// largest share): the canvas and the 3D view beside it keep room for their labels (at
+/// 1024x768, text size 1.5, the 3D view's corner labels otherwise crowded each other).
+const PLOT_ROOM_SHARE: f32 = 0.46;
 /// The Lessons panel's smallest height in points.
 const PANEL_MIN: f32 = 120.0;
 

@@ -23,6 +23,8 @@ const LEGEND_MIN_SCALE: f32 = 0.8;
 
 /// The plot window's contents: a choice of plot, then the plot with the pinned column marked.
 /// `one_row`: only the legend above the plot, no choice (a short band: presentation mode).
+/// `most`: the most height in points all of it may take (the Lessons panel's largest size
+/// leaves its plot column this much; `f32::INFINITY` in a window or the band).
 pub fn plot_ui(
     ui: &mut egui::Ui,
     plot: LessonPlot,
@@ -30,11 +32,19 @@ pub fn plot_ui(
     lang: Lang,
     hovered_column: &mut Option<u32>,
     one_row: bool,
+    most: f32,
 ) -> Vec<StateCommand> {
     let mut out = Vec::new();
+    let top = ui.cursor().top();
     // Never wider than the room given (a long legend must not widen the plot past it).
     let width = ui.available_width().max(120.0);
     ui.set_max_width(width);
+    // A short room (the plot beside a step's text in the Lessons panel on a projector): the
+    // legend is the lines' names in their colours, in one row if it fits (set smaller as in
+    // the band), and the plot keeps a readable height (the panel grows to hold it). With the
+    // "Plot:" and legend rows each on a line of their own, the curve had a strip of 15 points.
+    let short = !one_row && ui.available_height() < SHORT_BELOW_HEIGHT;
+    let fit = one_row || short;
     let legend = |ui: &mut egui::Ui, lines: &PlotLines| {
         // Each entry (the line's colour and its name) wraps as one piece, never inside a name:
         // an entry that would not fit the rest of the row starts the next one (the wrapped
@@ -50,14 +60,18 @@ pub fn plot_ui(
                     .size()
                     .x
             };
-            w("━━".to_owned()) + gap + w(text)
+            if short {
+                w(text)
+            } else {
+                w("━━".to_owned()) + gap + w(text)
+            }
         };
         let total: f32 = lines
             .iter()
             .map(|(key, _)| entry_width(ui, tr(lang, key), &body) + gap + 8.0)
             .sum();
         let room = ui.available_size_before_wrap().x;
-        let scale = if one_row && total > room {
+        let scale = if fit && total > room {
             (room / total).max(LEGEND_MIN_SCALE)
         } else {
             1.0
@@ -69,59 +83,62 @@ pub fn plot_ui(
                 ui.end_row();
             }
             ui.horizontal(|ui| {
-                ui.label(
-                    RichText::new("━━")
-                        .font(font.clone())
-                        .color(line_color(k))
-                        .strong(),
-                );
-                ui.add(
-                    egui::Label::new(RichText::new(tr(lang, key)).font(font.clone()))
-                        .wrap_mode(egui::TextWrapMode::Extend),
-                );
+                let mut name = RichText::new(tr(lang, key)).font(font.clone());
+                if short {
+                    name = name.color(line_color(k)).strong();
+                } else {
+                    ui.label(
+                        RichText::new("━━")
+                            .font(font.clone())
+                            .color(line_color(k))
+                            .strong(),
+                    );
+                }
+                ui.add(egui::Label::new(name).wrap_mode(egui::TextWrapMode::Extend));
             });
             ui.add_space(8.0);
         }
     };
-    ui.horizontal_wrapped(|ui| {
+    if one_row {
         // One row (a band under the picture): the legend (it names the lines), no choice.
-        if one_row {
-            match &lines {
-                Some((_, lines)) => legend(ui, lines),
-                None => {
-                    ui.label(RichText::new(tr(lang, title_key(plot))).strong());
-                }
+        ui.horizontal_wrapped(|ui| match &lines {
+            Some((_, lines)) => legend(ui, lines),
+            None => {
+                ui.label(RichText::new(tr(lang, title_key(plot))).strong());
             }
-            return;
-        }
-        let label = ui.label(tr(lang, "lesson.plot_kind"));
-        // The chosen plot's name on one line, cut short if need be (the whole name is the
-        // hover text and in the list): wrapped to three lines in a narrow column, it pushed
-        // the plot past the Lessons panel.
-        egui::ComboBox::from_id_salt("row-plot-kind")
-            .selected_text(tr(lang, title_key(plot)))
-            .truncate()
-            .width(ui.available_width().clamp(80.0, 360.0))
-            .show_ui(ui, |ui| {
-                for p in [
-                    LessonPlot::UvRow,
-                    LessonPlot::WRow,
-                    LessonPlot::DepthRow,
-                    LessonPlot::LambdaColumn,
-                ] {
-                    if ui
-                        .selectable_label(p == plot, tr(lang, title_key(p)))
-                        .clicked()
-                        && p != plot
-                    {
-                        out.push(StateCommand::SetPlot(Some(p)));
+        });
+    } else {
+        // "Plot:" and the chosen plot's name in one row, the name cut short to the room left
+        // (the whole name is the hover text and in the list). Wrapped to three lines in a
+        // narrow column, it pushed the plot past the Lessons panel; in a wrapping row, the
+        // button took a row of its own.
+        ui.horizontal(|ui| {
+            let label = ui.label(tr(lang, "lesson.plot_kind"));
+            egui::ComboBox::from_id_salt("row-plot-kind")
+                .selected_text(tr(lang, title_key(plot)))
+                .truncate()
+                .width(COMBO_MIN_WIDTH)
+                .show_ui(ui, |ui| {
+                    for p in [
+                        LessonPlot::UvRow,
+                        LessonPlot::WRow,
+                        LessonPlot::DepthRow,
+                        LessonPlot::LambdaColumn,
+                    ] {
+                        if ui
+                            .selectable_label(p == plot, tr(lang, title_key(p)))
+                            .clicked()
+                            && p != plot
+                        {
+                            out.push(StateCommand::SetPlot(Some(p)));
+                        }
                     }
-                }
-            })
-            .response
-            .labelled_by(label.id)
-            .on_hover_text(tr(lang, title_key(plot)));
-    });
+                })
+                .response
+                .labelled_by(label.id)
+                .on_hover_text(tr(lang, title_key(plot)));
+        });
+    }
     let Some((pin_x, lines)) = lines else {
         ui.label(tr(lang, "lesson.plot_none"));
         return out;
@@ -131,12 +148,20 @@ pub fn plot_ui(
     if !one_row {
         ui.horizontal_wrapped(|ui| legend(ui, &lines));
     }
+    // Readable if the room allows, but never more than the room left (a plot taller than its
+    // panel's largest size pushed the panel's first row, Previous and Next, out of sight).
+    let left = most - (ui.cursor().top() - top) - 8.0;
+    let least = if one_row {
+        PLOT_MIN_HEIGHT
+    } else {
+        PLOT_READABLE_HEIGHT.min(left).max(PLOT_MIN_HEIGHT)
+    };
     let shown = Plot::new(("row-plot", plot as u8))
         .x_axis_label(tr(lang, crate::lesson::plot::x_label_key(plot)))
         .show_axes([true, true])
         // Never taller than the room left (a plot that overflowed its panel would push the
         // panel's first row, the lesson's Previous / Next, out of sight).
-        .height((ui.available_height() - 8.0).max(PLOT_MIN_HEIGHT))
+        .height((ui.available_height() - 8.0).max(least))
         .width(width)
         .show(ui, |p| {
             for (k, (key, points)) in lines.into_iter().enumerate() {
@@ -149,6 +174,8 @@ pub fn plot_ui(
             p.vline(VLine::new("", f64::from(pin_x)));
             p.pointer_coordinate()
         });
+    ui.ctx()
+        .data_mut(|d| d.insert_temp(egui::Id::unique(PLOT_RECT_ID), shown.response.rect));
     // Hovering the plot marks that column of the pinned row on the canvas.
     if shown.response.hovered()
         && let Some(at) = shown.inner
@@ -158,6 +185,25 @@ pub fn plot_ui(
     }
     out
 }
+
+/// Points: the least width of the button choosing the plot.
+const COMBO_MIN_WIDTH: f32 = 80.0;
+
+/// Points of height below which the room for a plot is short: its legend keeps to one row.
+const SHORT_BELOW_HEIGHT: f32 = 260.0;
+
+/// Where the row plot drawn last lies: egui's temporary data under this id.
+const PLOT_RECT_ID: &str = "row-plot-rect";
+
+/// Where the row plot (its axes and lines) was drawn last, if one was drawn.
+pub(crate) fn last_plot_rect(ctx: &egui::Context) -> Option<egui::Rect> {
+    ctx.data(|d| d.get_temp(egui::Id::unique(PLOT_RECT_ID)))
+}
+
+/// Points: the least height of the plot outside the presentation band, where its room allows
+/// ([`plot_ui`]'s `most`): about 35 go to the axes, and the curve needs the rest to be read
+/// from the back of a room.
+const PLOT_READABLE_HEIGHT: f32 = 100.0;
 
 /// Points: the least height of the plot area.
 const PLOT_MIN_HEIGHT: f32 = 48.0;
@@ -238,7 +284,7 @@ impl BaryApp {
             .show(ctx, |ui| {
                 let mut column = None;
                 out.extend(
-                    plot_ui(ui, plot, lines, lang, &mut column, false)
+                    plot_ui(ui, plot, lines, lang, &mut column, false, f32::INFINITY)
                         .into_iter()
                         .map(Into::into),
                 );

@@ -144,10 +144,23 @@ impl SpaceView {
         painter.rect_filled(r, 0.0, Color32::WHITE);
         let rect = [r.min.x, r.min.y, r.max.x, r.max.y];
         let painter = painter.with_clip_rect(r);
+        // egui's labels are wider and their rows taller than the SVG's estimate: they are
+        // spread by the size they are drawn at.
+        let measure = |text: &str, size: f32| {
+            let g =
+                painter.layout_no_wrap(text.to_owned(), FontId::proportional(size), Color32::BLACK);
+            [g.size().x, g.size().y]
+        };
         let (drawn, lines) = match tetra.then(|| TetraFigure::new(space, orbit, lang).ok()) {
-            Some(Some(fig)) => (fig.shapes(rect, label_size), fig.panel_lines()),
+            Some(Some(fig)) => (fig.shapes(rect, label_size, &measure), fig.panel_lines()),
             _ => (
-                shapes(space, &space.projector(orbit, rect), lang, label_size),
+                shapes(
+                    space,
+                    &space.projector(orbit, rect),
+                    lang,
+                    label_size,
+                    &measure,
+                ),
                 panel_lines(space, lang),
             ),
         };

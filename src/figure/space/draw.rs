@@ -108,8 +108,16 @@ struct Sizes {
     dot: f32,
 }
 
-/// The space view drawn into `rect` by `projector`, labels `text` points high in `lang`.
-pub fn shapes(space: &SpaceScene, projector: &Projector, lang: Lang, text: f32) -> Vec<Shape> {
+/// The space view drawn into `rect` by `projector`, labels `text` points high in `lang`, each
+/// label's size (width and row height) as the renderer draws it given by `measure`
+/// ([`svg_measure`] in the figures; egui's rows are taller).
+pub fn shapes(
+    space: &SpaceScene,
+    projector: &Projector,
+    lang: Lang,
+    text: f32,
+    measure: Measure<'_>,
+) -> Vec<Shape> {
     let k = text / 15.0;
     let sz = Sizes {
         text,
@@ -408,16 +416,28 @@ pub fn shapes(space: &SpaceScene, projector: &Projector, lang: Lang, text: f32) 
     }
 
     back.sort_by(|a, b| b.depth.total_cmp(&a.depth));
-    spread_labels(&mut front, projector.rect());
+    spread_labels(&mut front, projector.rect(), measure);
     back.extend(front);
     back
+}
+
+/// A label's width and row height in points, given its text and text size, as a renderer
+/// draws it.
+pub type Measure<'a> = &'a dyn Fn(&str, f32) -> [f32; 2];
+
+/// A label's size in the SVG figures: [`text_width`] wide, its row from 0.8 of the text size
+/// above the baseline to a quarter below.
+pub fn svg_measure(text: &str, size: f32) -> [f32; 2] {
+    [text_width(text, size), 1.05 * size]
 }
 
 /// Moves labels that would overlap an earlier one: below it, above it, then to the other
 /// side of its anchor point, then further up or down (up to [`SPREAD_STEPS`] lines), each kept
 /// inside `rect`; the first position that overlaps nothing placed wins, else the one that
 /// overlaps the placed labels least (a crowded corner of a small view stays readable).
-pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
+/// `measure` gives a label's width and row height as drawn: a label covers from a quarter size
+/// below its baseline up by its row, and moves by lines a twentieth of a size taller.
+pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4], measure: Measure<'_>) {
     let mut placed: Vec<[f32; 4]> = Vec::new();
     for s in shapes.iter_mut() {
         let ShapeKind::Text {
@@ -430,14 +450,15 @@ pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
         else {
             continue;
         };
-        let w = text_width(text, *size);
+        let [w, row] = measure(text, *size);
         let bounds = |at: [f32; 2], anchor: Anchor2| {
             let x0 = match anchor {
                 Anchor2::Start => at[0],
                 Anchor2::Middle => at[0] - w / 2.0,
                 Anchor2::End => at[0] - w,
             };
-            [x0, at[1] - 0.8 * *size, x0 + w, at[1] + 0.25 * *size]
+            let bottom = at[1] + 0.25 * *size;
+            [x0, bottom - row, x0 + w, bottom]
         };
         // The position moved as little as needed to lie inside `rect`.
         let inside = |mut pos: [f32; 2], anchor: Anchor2| {
@@ -452,7 +473,7 @@ pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4]) {
             Anchor2::End => Anchor2::Start,
             Anchor2::Middle => Anchor2::Middle,
         };
-        let h = 1.1 * *size;
+        let h = row + 0.05 * *size;
         // Lines up and down in the order 0, +1, -1, +2, -2, ...; each with both anchors.
         let shifts = (0..=2 * SPREAD_STEPS).map(|i| {
             let n = i.div_ceil(2) as f32;

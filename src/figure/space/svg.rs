@@ -324,7 +324,13 @@ impl SpaceFigure<'_> {
     /// The shapes of the 3D drawing, as the figure places them.
     pub fn shapes(&self) -> Vec<Shape> {
         let projector = self.space.projector(self.orbit, drawing_rect());
-        draw::shapes(self.space, &projector, self.lang, LABEL_SIZE)
+        draw::shapes(
+            self.space,
+            &projector,
+            self.lang,
+            LABEL_SIZE,
+            &draw::svg_measure,
+        )
     }
 
     /// The figure as an SVG document of [`FIGURE_SIZE`] points, on white.

@@ -200,7 +200,14 @@ impl<'a> TetraFigure<'a> {
 
     /// The drawing fitted into `rect` (`[x0, y0, x1, y1]`), labels `label_size` points, in
     /// painter's order.
-    pub fn shapes(&self, rect: [f32; 4], label_size: f32) -> Vec<Shape> {
+    /// `measure`: a label's size as the renderer draws it
+    /// ([`draw::shapes`](super::draw::shapes)).
+    pub fn shapes(
+        &self,
+        rect: [f32; 4],
+        label_size: f32,
+        measure: super::draw::Measure<'_>,
+    ) -> Vec<Shape> {
         let mut pts = self.corners.to_vec();
         pts.push(self.point);
         let pr = super::Projector::new(self.orbit, &pts, rect);
@@ -327,7 +334,7 @@ impl<'a> TetraFigure<'a> {
         }
         // The names and marks first, then the weights, spread so that none covers another.
         labels.extend(weight_labels);
-        super::draw::spread_labels(&mut labels, rect);
+        super::draw::spread_labels(&mut labels, rect, measure);
         back.extend(labels);
         back
     }
@@ -406,7 +413,7 @@ impl<'a> TetraFigure<'a> {
     pub fn to_svg(&self) -> String {
         document(
             &self.lang.tr("space.tetra.title"),
-            &self.shapes(drawing_rect(), LABEL_SIZE),
+            &self.shapes(drawing_rect(), LABEL_SIZE, &super::draw::svg_measure),
             &self.panel_lines(),
             self.lang,
         )

@@ -124,13 +124,16 @@ const BUTTONS_FROM_WIDTH: f32 = 640.0;
 /// The Lessons panel: first, always, one row with Previous, the step number (a menu of the
 /// steps), Next, and Reset / Leave; under it the step's title, text and "try this", with the
 /// step's plot beside or under the text, and on a wide window the list of steps on the left.
+/// `most`: the panel's largest height in points, which the plot keeps within.
 pub fn lesson_panel_ui(
     ui: &mut Ui,
     session: &Session,
     lang: Lang,
     plot: PanelPlot,
     hovered_column: &mut Option<u32>,
+    most: f32,
 ) -> Vec<AppCommand> {
+    let top = ui.max_rect().top();
     let mut out: Vec<LessonCommand> = Vec::new();
     let mut plot_out: Vec<AppCommand> = Vec::new();
     let lesson = &session.lesson;
@@ -171,6 +174,8 @@ pub fn lesson_panel_ui(
     });
     ui.separator();
     let height = ui.available_height();
+    // What the panel at its largest leaves under the first row (the plot keeps within it).
+    let room = most - (ui.cursor().top() - top);
     ui.horizontal_top(|ui| {
         if full_width >= LIST_FROM_WIDTH {
             let list_width = (full_width * 0.22).clamp(150.0, 300.0);
@@ -224,7 +229,7 @@ pub fn lesson_panel_ui(
                                 egui::vec2(ui.available_width(), PLOT_BELOW_HEIGHT),
                                 |ui| {
                                     plot_out.extend(
-                                        plot_ui(ui, p, lines, lang, hovered_column, false)
+                                        plot_ui(ui, p, lines, lang, hovered_column, false, room)
                                             .into_iter()
                                             .map(Into::into),
                                     );
@@ -243,7 +248,7 @@ pub fn lesson_panel_ui(
                     ui.set_max_width(ui.available_width() - 8.0);
                     ui.set_max_height(height);
                     plot_out.extend(
-                        plot_ui(ui, p, lines, lang, hovered_column, false)
+                        plot_ui(ui, p, lines, lang, hovered_column, false, room)
                             .into_iter()
                             .map(Into::into),
                     );
