@@ -110,7 +110,7 @@ struct Sizes {
 
 /// The space view drawn into `rect` by `projector`, labels `text` points high in `lang`, each
 /// label's size (width and row height) as the renderer draws it given by `measure`
-/// ([`svg_measure`] in the figures; egui's rows are taller).
+/// (`svg_measure` in the figures; egui's rows are taller).
 pub fn shapes(
     space: &SpaceScene,
     projector: &Projector,
