@@ -143,3 +143,76 @@ fn q_quizzes_any_pinned_pixel_and_the_inspector_hides_it() {
     h.run();
     assert!(!shown(&h, "Predict at pixel"));
 }
+
+/// The quiz window's rect, as egui laid it out last.
+fn quiz_window(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>) -> egui::Rect {
+    h.ctx
+        .memory(|m| m.area_rect(egui::Id::unique("quiz-window")))
+        .expect("the quiz window is shown")
+}
+
+/// Outside presentation mode the quiz window opens beside the picture where the canvas has
+/// room for it (built-in step 11 at 1920x1080, text size 1): it covers neither the picture
+/// nor the corners' labels. (It opened in the canvas's top-left corner, over D's label.) Where there is no
+/// room (1024x768, text size 1.5) it stays inside the canvas, above the Lessons panel, so
+/// that Previous and Next stay in sight (it reached over Previous).
+#[test]
+fn the_quiz_window_keeps_clear_of_the_picture_and_the_lessons_panel() {
+    for lang in [Lang::En, Lang::Zh] {
+        let mut h = common::app::harness(
+            egui::vec2(1920.0, 1080.0),
+            AppOptions {
+                lesson: Some((Lesson::builtin().expect("the built-in lesson"), 10)),
+                text_size: Some(1.0),
+                lang: Some(lang),
+                ..AppOptions::default()
+            },
+        );
+        for _ in 0..4 {
+            h.step();
+        }
+        h.run();
+        let window = quiz_window(&h);
+        let canvas = h.state().canvas();
+        assert!(!canvas.views.is_empty());
+        for v in &canvas.views {
+            assert!(
+                !window.intersects(v.rect),
+                "{lang:?}: the quiz window {window:?} lies over the picture {:?}",
+                v.rect
+            );
+        }
+        let area = canvas.area.expect("laid out");
+        assert!(
+            area.expand(0.5).contains_rect(window),
+            "{lang:?}: {window:?} in {area:?}"
+        );
+        // Nor any corner's label (drawn under the window: egui's output keeps it).
+        let mut labels = 0;
+        for c in &h.output().shapes {
+            if let egui::Shape::Text(t) = &c.shape
+                && t.galley.job.text.contains("w = ")
+            {
+                let label = t.galley.rect.translate(t.pos.to_vec2());
+                assert!(
+                    !window.intersects(label),
+                    "{lang:?}: the quiz window {window:?} lies over {:?} at {label:?}",
+                    t.galley.job.text
+                );
+                labels += 1;
+            }
+        }
+        assert!(
+            labels >= 4,
+            "{lang:?}: the four corners' labels, {labels} found"
+        );
+
+        let h = common::app::lecture_with("builtin", 11, lang, false);
+        let window = quiz_window(&h);
+        let panel = h.state().lesson_panel_rect().expect("the Lessons panel");
+        assert!(
+            window.bottom() <= panel.top() + 0.5,
+            "{lang:?}: the quiz window {window:?} reaches over the Lessons panel {panel:?}"
+        );
+    }
+}

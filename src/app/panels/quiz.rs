@@ -410,16 +410,29 @@ impl BaryApp {
             return;
         };
         let mut open = true;
-        // In the canvas's top-left corner: clear of the inspector (it says the numbers are
-        // hidden) and of the Lessons panel's text and plot under the canvas.
-        let corner = self.canvas.area.map_or(ctx.content_rect().center(), |a| {
-            a.min + egui::vec2(12.0, 12.0)
-        });
+        // Beside the picture, in the canvas (clear of the inspector, which says the numbers
+        // are hidden, and of the Lessons panel's text and plot under the canvas).
+        let pictures = self
+            .canvas
+            .views
+            .iter()
+            .map(|v| v.rect)
+            .reduce(|a, b| a.union(b));
+        // Not before the canvas has laid its pictures out: the window keeps the place it
+        // opens at.
+        let (Some(area), Some(pictures)) = (self.canvas.area, pictures) else {
+            ctx.request_repaint();
+            return;
+        };
+        let (corner, width) = window_place(area, pictures);
         egui::Window::new(lang.tr("quiz.title"))
             .id(egui::Id::unique("quiz-window"))
             .open(&mut open)
             .default_pos(corner)
-            .default_width(360.0)
+            .default_width(width)
+            // Inside the canvas: taller, it lay over the Lessons panel's Previous button.
+            .max_height((area.height() - 2.0 * MARGIN).max(MIN_HEIGHT))
+            .vscroll(true)
             .show(ctx, |ui| {
                 out.extend(
                     quiz_ui(ui, session, self.reports.pin.as_ref(), lang)
@@ -430,5 +443,60 @@ impl BaryApp {
         if !open {
             out.push(QuizCommand::Toggle.into());
         }
+    }
+}
+
+/// Points: the quiz window's width where the canvas has room for it, and the least it takes
+/// beside the picture.
+const WIDTH: f32 = 360.0;
+const MIN_WIDTH: f32 = 250.0;
+/// Points: the least height of the quiz window (on a short canvas it scrolls).
+const MIN_HEIGHT: f32 = 120.0;
+/// Points: the quiz window's distance from the canvas's edges.
+const MARGIN: f32 = 12.0;
+/// Points: how far the handles' labels reach beyond the picture's sides (a corner's label
+/// beside a corner at the picture's edge).
+const LABEL_REACH: f32 = 60.0;
+
+/// Where the quiz window opens in the canvas `area` and how wide, given the pictures' rect:
+/// beside the pictures on the side with more room (past their labels), at the canvas's edge,
+/// as wide as that room allows (at most [`WIDTH`]); where neither side has [`MIN_WIDTH`], in
+/// the canvas's top-left corner at full width (over the picture: it can be moved).
+fn window_place(area: egui::Rect, pictures: egui::Rect) -> (egui::Pos2, f32) {
+    let top = area.top() + MARGIN;
+    let right = area.right() - (pictures.right() + LABEL_REACH) - MARGIN;
+    let left = (pictures.left() - LABEL_REACH) - area.left() - MARGIN;
+    if right >= left && right >= MIN_WIDTH {
+        let w = right.min(WIDTH);
+        (egui::pos2(area.right() - MARGIN - w, top), w)
+    } else if left >= MIN_WIDTH {
+        (egui::pos2(area.left() + MARGIN, top), left.min(WIDTH))
+    } else {
+        (egui::pos2(area.left() + MARGIN, top), WIDTH)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui::{Rect, pos2};
+
+    /// The window goes to the roomier side's edge, as wide as the room past the labels allows;
+    /// with no room on either side, to the top-left corner at full width.
+    #[test]
+    fn the_window_opens_beside_the_picture_where_there_is_room() {
+        let area = Rect::from_min_max(pos2(0.0, 40.0), pos2(1200.0, 700.0));
+        // Picture 300..850: right room 1200 - 910 - 12 = 278, left room 300 - 60 - 12 = 228.
+        let picture = Rect::from_min_max(pos2(300.0, 100.0), pos2(850.0, 600.0));
+        assert_eq!(window_place(area, picture), (pos2(910.0, 52.0), 278.0));
+        // Mirrored: the left side.
+        let picture = Rect::from_min_max(pos2(350.0, 100.0), pos2(900.0, 600.0));
+        assert_eq!(window_place(area, picture), (pos2(12.0, 52.0), 278.0));
+        // A wide room: full width at the right edge.
+        let picture = Rect::from_min_max(pos2(100.0, 100.0), pos2(550.0, 600.0));
+        assert_eq!(window_place(area, picture), (pos2(828.0, 52.0), 360.0));
+        // No room: the corner.
+        let picture = Rect::from_min_max(pos2(200.0, 100.0), pos2(1000.0, 600.0));
+        assert_eq!(window_place(area, picture), (pos2(12.0, 52.0), 360.0));
     }
 }
