@@ -430,15 +430,20 @@ impl BaryApp {
             .open(&mut open)
             .default_pos(corner)
             .default_width(width)
-            // Inside the canvas: taller, it lay over the Lessons panel's Previous button.
-            .max_height((area.height() - 2.0 * MARGIN).max(MIN_HEIGHT))
-            .vscroll(true)
             .show(ctx, |ui| {
-                out.extend(
-                    quiz_ui(ui, session, self.reports.pin.as_ref(), lang)
-                        .into_iter()
-                        .map(Into::into),
-                );
+                // Inside the canvas: taller, it lay over the Lessons panel's Previous button.
+                // Its title bar takes about one interaction height.
+                let title = ui.spacing().interact_size.y + 2.0 * MARGIN;
+                egui::ScrollArea::vertical()
+                    .max_height((area.height() - 2.0 * MARGIN - title).max(MIN_HEIGHT))
+                    .auto_shrink([false, true])
+                    .show(ui, |ui| {
+                        out.extend(
+                            quiz_ui(ui, session, self.reports.pin.as_ref(), lang)
+                                .into_iter()
+                                .map(Into::into),
+                        );
+                    });
             });
         if !open {
             out.push(QuizCommand::Toggle.into());
