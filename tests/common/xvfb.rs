@@ -31,10 +31,11 @@ pub fn xvfb_or_skip(test: &str) -> Option<PathBuf> {
     }
 }
 
-/// A display number nobody is using: no lock file, or a stale one (an X server that died
+/// A display number nobody is using, not one of `failed`: no lock file, or a stale one (an X server that died
 /// without cleaning up, e.g. killed by a timeout), whose lock and socket are removed here.
-fn free_display() -> u32 {
+fn free_display(failed: &[u32]) -> u32 {
     (90..250)
+        .filter(|n| !failed.contains(n))
         .find(|n| {
             let lock = PathBuf::from(format!("/tmp/.X{n}-lock"));
             let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
@@ -71,35 +72,51 @@ impl Drop for Xvfb {
 /// Held while an Xvfb starts, so tests running in parallel do not pick the same display.
 static STARTING: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
-/// Starts Xvfb (1920x1080, 24 bits) on a free display and waits for its socket.
+/// Starts Xvfb (1920x1080, 24 bits) on a free display and waits for its socket. An Xvfb that
+/// exits or gives no socket within [`XVFB_TIMEOUT`] is killed and the next free display tried,
+/// up to [`XVFB_TRIES`] times (once, under a full CI machine, one never made its socket).
 pub fn start_xvfb(xvfb: &Path) -> Xvfb {
     let _starting = STARTING.lock().unwrap_or_else(|e| e.into_inner());
-    let n = free_display();
-    let child = Command::new(xvfb)
-        .args([
-            &format!(":{n}"),
-            "-screen",
-            "0",
-            "1920x1080x24",
-            "-nolisten",
-            "tcp",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("start Xvfb");
-    let x = Xvfb {
-        child,
-        display: format!(":{n}"),
-    };
-    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
-    let start = Instant::now();
-    while !socket.exists() {
-        assert!(start.elapsed() < XVFB_TIMEOUT, "Xvfb :{n} did not start");
-        std::thread::sleep(Duration::from_millis(50));
+    let mut failed = Vec::new();
+    for _ in 0..XVFB_TRIES {
+        let n = free_display(&failed);
+        let child = Command::new(xvfb)
+            .args([
+                &format!(":{n}"),
+                "-screen",
+                "0",
+                "1920x1080x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("start Xvfb");
+        let mut x = Xvfb {
+            child,
+            display: format!(":{n}"),
+        };
+        let socket = PathBuf::from(format!("/tmp/.X11-unix/X{n}"));
+        let start = Instant::now();
+        loop {
+            if socket.exists() {
+                return x;
+            }
+            let exited = matches!(x.child.try_wait(), Ok(Some(_)));
+            if exited || start.elapsed() >= XVFB_TIMEOUT {
+                break;
+            }
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        drop(x);
+        failed.push(n);
     }
-    x
+    panic!("Xvfb did not start on displays {failed:?}");
 }
+
+/// How many displays [`start_xvfb`] tries.
+const XVFB_TRIES: usize = 3;
 
 /// How long the app may take to open, draw, save its screenshot and exit.
 const APP_TIMEOUT: Duration = Duration::from_secs(120);
