@@ -85,12 +85,12 @@ pub fn plot_ui(
             ui.horizontal(|ui| {
                 let mut name = RichText::new(tr(lang, key)).font(font.clone());
                 if short {
-                    name = name.color(line_color(k)).strong();
+                    name = name.color(line_color(k, ui.visuals().dark_mode)).strong();
                 } else {
                     ui.label(
                         RichText::new("━━")
                             .font(font.clone())
-                            .color(line_color(k))
+                            .color(line_color(k, ui.visuals().dark_mode))
                             .strong(),
                     );
                 }
@@ -156,6 +156,7 @@ pub fn plot_ui(
     } else {
         PLOT_READABLE_HEIGHT.min(left).max(PLOT_MIN_HEIGHT)
     };
+    let dark = ui.visuals().dark_mode;
     let shown = Plot::new(("row-plot", plot as u8))
         .x_axis_label(tr(lang, crate::lesson::plot::x_label_key(plot)))
         .show_axes([true, true])
@@ -167,7 +168,7 @@ pub fn plot_ui(
             for (k, (key, points)) in lines.into_iter().enumerate() {
                 p.line(
                     Line::new(tr(lang, key), points)
-                        .color(line_color(k))
+                        .color(line_color(k, dark))
                         .width(2.5),
                 );
             }
@@ -208,16 +209,25 @@ const PLOT_READABLE_HEIGHT: f32 = 100.0;
 /// Points: the least height of the plot area.
 const PLOT_MIN_HEIGHT: f32 = 48.0;
 
-/// The colour of a plot's `k`th line: distinct on the dark and the light theme, and not the
-/// vertex colours (the lines are no vertices).
-fn line_color(k: usize) -> egui::Color32 {
-    const COLORS: [egui::Color32; 4] = [
+/// The colour of a plot's `k`th line and of its name in the legend, on the dark theme
+/// (`dark`) or the light one: distinct, and not the vertex colours (the lines are no
+/// vertices). Each has at least the 4.5:1 contrast of readable text against the theme's
+/// backgrounds; the dark theme's light colours had 1.6-2.8:1 on the light theme's white.
+fn line_color(k: usize, dark: bool) -> egui::Color32 {
+    const ON_DARK: [egui::Color32; 4] = [
         egui::Color32::from_rgb(255, 140, 60),
         egui::Color32::from_rgb(90, 170, 255),
         egui::Color32::from_rgb(240, 90, 200),
         egui::Color32::from_rgb(120, 220, 140),
     ];
-    COLORS[k % COLORS.len()]
+    const ON_LIGHT: [egui::Color32; 4] = [
+        egui::Color32::from_rgb(176, 80, 0),
+        egui::Color32::from_rgb(20, 100, 200),
+        egui::Color32::from_rgb(170, 40, 140),
+        egui::Color32::from_rgb(20, 125, 50),
+    ];
+    let colors = if dark { ON_DARK } else { ON_LIGHT };
+    colors[k % colors.len()]
 }
 
 /// The last row rendered with every buffer (one row high), by the canvas render it repeats,
@@ -312,5 +322,48 @@ impl BaryApp {
         {
             self.canvas.hover = Some(if column { [px, x] } else { [x, py] });
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// WCAG's contrast ratio of two colours (relative luminance of the sRGB values).
+    fn contrast(a: egui::Color32, b: egui::Color32) -> f32 {
+        let luminance = |c: egui::Color32| {
+            let lin = |v: u8| {
+                let v = f32::from(v) / 255.0;
+                if v <= 0.04045 {
+                    v / 12.92
+                } else {
+                    ((v + 0.055) / 1.055).powf(2.4)
+                }
+            };
+            0.2126 * lin(c.r()) + 0.7152 * lin(c.g()) + 0.0722 * lin(c.b())
+        };
+        let (x, y) = (luminance(a) + 0.05, luminance(b) + 0.05);
+        x.max(y) / x.min(y)
+    }
+
+    /// Every line and legend colour reads as text (4.5:1) on its theme's panel and on the
+    /// plot's background; the dark colours on the light theme did not (green 1.6:1).
+    #[test]
+    fn the_lines_read_on_both_themes() {
+        for (dark, visuals) in [
+            (true, egui::Visuals::dark()),
+            (false, egui::Visuals::light()),
+        ] {
+            for k in 0..4 {
+                for background in [visuals.panel_fill, visuals.extreme_bg_color] {
+                    let c = contrast(line_color(k, dark), background);
+                    assert!(
+                        c >= 4.5,
+                        "line {k}, dark {dark}: {c:.2}:1 on {background:?}"
+                    );
+                }
+            }
+        }
+        assert!(contrast(line_color(3, true), egui::Visuals::light().panel_fill) < 4.5);
     }
 }
