@@ -418,13 +418,16 @@ impl BaryApp {
             .iter()
             .map(|v| v.rect)
             .reduce(|a, b| a.union(b));
-        // Not before the canvas has laid its pictures out: the window keeps the place it
-        // opens at.
-        let (Some(area), Some(pictures)) = (self.canvas.area, pictures) else {
+        // Not before the canvas has been laid out (the window keeps the place it opens at);
+        // the canvas is laid out earlier in the same frame, so this waits for at most one.
+        let Some(area) = self.canvas.area else {
             ctx.request_repaint();
             return;
         };
-        let (corner, width) = window_place(area, pictures);
+        let (corner, width) = match pictures {
+            Some(pictures) => window_place(area, pictures),
+            None => (area.min + egui::vec2(MARGIN, MARGIN), WIDTH),
+        };
         egui::Window::new(lang.tr("quiz.title"))
             .id(egui::Id::unique("quiz-window"))
             .open(&mut open)
