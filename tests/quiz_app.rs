@@ -144,22 +144,21 @@ fn q_quizzes_any_pinned_pixel_and_the_inspector_hides_it() {
     assert!(!shown(&h, "Predict at pixel"));
 }
 
-/// The quiz window's rect, as egui laid it out last.
-fn quiz_window(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>) -> egui::Rect {
-    h.ctx
-        .memory(|m| m.area_rect(egui::Id::unique("quiz-window")))
-        .expect("the quiz window is shown")
+/// The quiz column's rect, as egui laid it out last.
+fn quiz_column(h: &egui_kittest::Harness<'_, barylab::app::BaryApp>) -> egui::Rect {
+    h.state().quiz_rect().expect("the quiz column is shown")
 }
 
-/// Outside presentation mode the quiz window opens beside the picture where the canvas has
-/// room for it (built-in step 11 at 1920x1080, text size 1): it covers neither the picture
-/// nor the corners' labels. (It opened in the canvas's top-left corner, over D's label.) Where there is no
-/// room (1024x768, text size 1.5) it stays inside the canvas, above the Lessons panel, so
-/// that Previous and Next stay in sight (it reached over Previous).
+/// Outside presentation mode the quiz is a column beside the canvas: it covers neither the
+/// picture nor the corners' labels, nor the Lessons panel under the canvas, and its Reveal
+/// button is in sight without scrolling: at 1920x1080 with text size 1 (built-in step 11) and
+/// at a 1024x768 projector with text size 1.5 (steps 6, 11 and 13). As a window over the
+/// canvas, at 1024x768 it had no room beside the picture and covered it; on step 11 the
+/// window, kept above the Lessons panel, had to be scrolled to reach Reveal.
 #[test]
-fn the_quiz_window_keeps_clear_of_the_picture_and_the_lessons_panel() {
+fn the_quiz_keeps_clear_of_the_picture_and_the_lessons_panel() {
     for lang in [Lang::En, Lang::Zh] {
-        let mut h = common::app::harness(
+        let mut wide = common::app::harness(
             egui::vec2(1920.0, 1080.0),
             AppOptions {
                 lesson: Some((Lesson::builtin().expect("the built-in lesson"), 10)),
@@ -169,50 +168,56 @@ fn the_quiz_window_keeps_clear_of_the_picture_and_the_lessons_panel() {
             },
         );
         for _ in 0..4 {
-            h.step();
+            wide.step();
         }
-        h.run();
-        let window = quiz_window(&h);
-        let canvas = h.state().canvas();
-        assert!(!canvas.views.is_empty());
-        for v in &canvas.views {
+        wide.run();
+        let lecture =
+            [6, 11, 13].map(|step| common::app::lecture_with("builtin", step, lang, false));
+        for (what, h) in std::iter::once(("1920x1080, step 11", &wide)).chain(
+            ["step 6", "step 11", "step 13"]
+                .into_iter()
+                .zip(lecture.iter()),
+        ) {
+            let column = quiz_column(h);
+            let canvas = h.state().canvas();
+            assert!(!canvas.views.is_empty());
+            for v in &canvas.views {
+                assert!(
+                    !column.intersects(v.rect),
+                    "{lang:?}, {what}: the quiz {column:?} lies over the picture {:?}",
+                    v.rect
+                );
+            }
+            // Nor over any corner's label.
+            let mut labels = 0;
+            for c in &h.output().shapes {
+                if let egui::Shape::Text(t) = &c.shape
+                    && t.galley.job.text.contains("w = ")
+                {
+                    let label = t.galley.rect.translate(t.pos.to_vec2());
+                    assert!(
+                        !column.intersects(label),
+                        "{lang:?}, {what}: the quiz {column:?} lies over {:?} at {label:?}",
+                        t.galley.job.text
+                    );
+                    labels += 1;
+                }
+            }
             assert!(
-                !window.intersects(v.rect),
-                "{lang:?}: the quiz window {window:?} lies over the picture {:?}",
-                v.rect
+                labels >= 3,
+                "{lang:?}, {what}: the corners' labels, {labels} found"
+            );
+            if let Some(panel) = h.state().lesson_panel_rect() {
+                assert!(
+                    column.bottom() <= panel.top() + 0.5,
+                    "{lang:?}, {what}: the quiz {column:?} reaches over the Lessons panel {panel:?}"
+                );
+            }
+            let reveal = h.get_by_label(&lang.tr("quiz.reveal")).rect();
+            assert!(
+                column.contains_rect(reveal),
+                "{lang:?}, {what}: Reveal {reveal:?} is out of sight of the quiz {column:?}"
             );
         }
-        let area = canvas.area.expect("laid out");
-        assert!(
-            area.expand(0.5).contains_rect(window),
-            "{lang:?}: {window:?} in {area:?}"
-        );
-        // Nor any corner's label (drawn under the window: egui's output keeps it).
-        let mut labels = 0;
-        for c in &h.output().shapes {
-            if let egui::Shape::Text(t) = &c.shape
-                && t.galley.job.text.contains("w = ")
-            {
-                let label = t.galley.rect.translate(t.pos.to_vec2());
-                assert!(
-                    !window.intersects(label),
-                    "{lang:?}: the quiz window {window:?} lies over {:?} at {label:?}",
-                    t.galley.job.text
-                );
-                labels += 1;
-            }
-        }
-        assert!(
-            labels >= 4,
-            "{lang:?}: the four corners' labels, {labels} found"
-        );
-
-        let h = common::app::lecture_with("builtin", 11, lang, false);
-        let window = quiz_window(&h);
-        let panel = h.state().lesson_panel_rect().expect("the Lessons panel");
-        assert!(
-            window.bottom() <= panel.top() + 0.5,
-            "{lang:?}: the quiz window {window:?} reaches over the Lessons panel {panel:?}"
-        );
     }
 }

@@ -49,6 +49,11 @@ impl BaryApp {
         self.lessons.panel_rect
     }
 
+    /// Where the quiz's column was laid out last, while a quiz was going on.
+    pub fn quiz_rect(&self) -> Option<egui::Rect> {
+        self.quiz.session.as_ref().and(self.quiz.column)
+    }
+
     /// Where the pinned row's plot was drawn last in this context, if one was drawn (in the
     /// Lessons panel or its window).
     pub fn plot_rect(ctx: &egui::Context) -> Option<egui::Rect> {

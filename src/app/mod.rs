@@ -491,6 +491,7 @@ impl BaryApp {
         });
         self.lesson_panel(ui, texture, &mut out);
         self.side_panels_ui(ui, &mut out);
+        self.quiz_docked(ui, &mut out);
         self.canvas.avoid.clear();
         // The 3D view shows the pinned pixel's a, b, c: not during a quiz before Reveal.
         if self.quiz.hidden().is_none() {
@@ -504,7 +505,6 @@ impl BaryApp {
             &mut out,
         );
         self.plot_window(&ctx, texture, &mut out);
-        self.quiz_window(&ctx, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(lang.tr("app.help.title"))
             .id(egui::Id::unique("help-window"))

@@ -23,6 +23,8 @@ pub struct Quiz {
     dismissed: Option<usize>,
     /// Predictions to type into the first quiz and reveal (`--quiz-answers`).
     pub answers: Option<Vec<String>>,
+    /// Where the quiz's column was laid out last (for tests: `BaryApp::quiz_rect`).
+    pub column: Option<egui::Rect>,
 }
 
 /// A quiz going on: its question, what the class typed, and whether it is revealed.
@@ -178,14 +180,18 @@ pub fn quiz_ui(
     session: &QuizSession,
     pinned: Option<&PixelReport>,
     lang: Lang,
+    closable: bool,
 ) -> Vec<QuizCommand> {
     let mut out = Vec::new();
     let [x, y] = session.question.pixel;
-    ui.label(
-        RichText::new(lang.tr_with("quiz.prompt", &[("x", &x), ("y", &y)]))
-            .strong()
-            .size(ui.text_style_height(&egui::TextStyle::Body) * 1.15),
-    );
+    // Larger in the presentation's column; beside the canvas, where the room is short, the
+    // body size keeps it to one line.
+    let prompt = RichText::new(lang.tr_with("quiz.prompt", &[("x", &x), ("y", &y)])).strong();
+    ui.label(if closable {
+        prompt
+    } else {
+        prompt.size(ui.text_style_height(&egui::TextStyle::Body) * 1.15)
+    });
     let report = pinned.filter(|r| r.pixel == session.question.pixel);
     let key = report.map(|r| quiz::key(&r.trace, &session.question.ask));
     let h = ui.text_style_height(&egui::TextStyle::Body);
@@ -197,9 +203,13 @@ pub fn quiz_ui(
     };
     for (part, q) in asking.iter().enumerate() {
         ui.add_space(4.0);
-        ui.label(q.name(lang));
-        // One row of "symbol [field]" pairs, the fields sharing the width left.
         let symbols = q.symbols();
+        // (1/W_P's name is its symbol: not written twice.)
+        let name = q.name(lang);
+        if symbols != [name.as_str()] {
+            ui.label(name);
+        }
+        // One row of "symbol [field]" pairs, the fields sharing the width left.
         let n = symbols.len() as f32;
         let names: f32 = symbols
             .iter()
@@ -233,9 +243,20 @@ pub fn quiz_ui(
     } else {
         lang.tr("quiz.reveal")
     };
-    if ui.button(RichText::new(label).strong()).clicked() {
-        out.push(QuizCommand::Reveal(!session.revealed));
-    }
+    ui.horizontal_wrapped(|ui| {
+        if ui.button(RichText::new(label).strong()).clicked() {
+            out.push(QuizCommand::Reveal(!session.revealed));
+        }
+        // (A window's close button, where the quiz is not in a window.)
+        if closable
+            && ui
+                .button(lang.tr("quiz.stop"))
+                .on_hover_text(lang.tr("quiz.keys"))
+                .clicked()
+        {
+            out.push(QuizCommand::Toggle);
+        }
+    });
     if !session.revealed {
         return out;
     }
@@ -313,8 +334,19 @@ fn verdict_ui(
                 ui.label(lang.tr("quiz.off_by"));
             }
             ui.end_row();
-            for (i, (s, a)) in quantity.symbols().iter().zip(answer).enumerate() {
-                ui.label(mono((*s).to_string()).strong());
+            // A single number named as its quantity (1/W_P, the name above): no symbol, so
+            // that the table fits a narrow column.
+            let symbols = quantity.symbols();
+            let named = symbols.len() == 1 && symbols[0] == quantity.name(lang);
+            for (i, (s, a)) in symbols.iter().zip(answer).enumerate() {
+                ui.label(
+                    mono(if named {
+                        String::new()
+                    } else {
+                        (*s).to_string()
+                    })
+                    .strong(),
+                );
                 ui.label(mono(format!("{a:.4}")).strong());
                 if let Some(v) = verdict {
                     let g = v.given.get(i).copied().unwrap_or(f64::NAN);
@@ -350,10 +382,13 @@ fn verdict_ui(
     }
 }
 
-/// Share of the window's width the quiz takes in presentation mode, and its least and
-/// largest width in points.
+/// Share of the width the quiz column takes, and its least and largest width in points:
+/// presenting (the card's place, the whole window's width shared) and outside presentation
+/// mode (the canvas's width shared; the quiz's fields share the column's width).
 const COLUMN_SHARE: f32 = 0.45;
 const COLUMN_WIDTH: (f32, f32) = (270.0, 480.0);
+const DOCKED_SHARE: f32 = 0.45;
+const DOCKED_WIDTH: (f32, f32) = (260.0, 400.0);
 
 impl BaryApp {
     /// Presentation mode during a quiz: the quiz in a column right of the picture, in the
@@ -364,13 +399,35 @@ impl BaryApp {
         texture: &std::sync::Arc<crate::raster::Texture>,
         out: &mut Vec<AppCommand>,
     ) {
+        let width = (COLUMN_SHARE * ui.available_width()).clamp(COLUMN_WIDTH.0, COLUMN_WIDTH.1);
+        self.quiz_column(ui, width, false, out);
+        // Nothing lies over the picture (the card's corner of the last frame is gone).
+        self.canvas.avoid.clear();
+        let framing = Framing::presenting(self.state.view.compare);
+        self.canvas_panel(ui, texture, framing, out);
+    }
+
+    /// The quiz outside presentation mode: a column at the canvas's right, beside the side
+    /// panels, so that it never lies over the picture, its corners' labels or the Lessons
+    /// panel (a window over the canvas had no room beside the picture at 1024x768 with text
+    /// size 1.5, and covered it). With a close button, as the window had.
+    pub(in crate::app) fn quiz_docked(&mut self, ui: &mut Ui, out: &mut Vec<AppCommand>) {
+        if self.quiz.session.is_none() {
+            return;
+        }
+        let width = (DOCKED_SHARE * ui.available_width()).clamp(DOCKED_WIDTH.0, DOCKED_WIDTH.1);
+        self.quiz_column(ui, width, true, out);
+    }
+
+    /// The quiz in a right-hand column `width` points wide (scrolling when taller than the
+    /// room), with a close button when `closable`.
+    fn quiz_column(&mut self, ui: &mut Ui, width: f32, closable: bool, out: &mut Vec<AppCommand>) {
         let lang = self.lang();
         let Some(session) = &self.quiz.session else {
             return;
         };
-        let width = (COLUMN_SHARE * ui.available_width()).clamp(COLUMN_WIDTH.0, COLUMN_WIDTH.1);
         let pinned = self.reports.pin.as_ref();
-        egui::Panel::right("quiz-column")
+        let shown = egui::Panel::right(COLUMN_ID)
             .frame(
                 egui::Frame::side_top_panel(ui.style())
                     .inner_margin(egui::Margin::symmetric(14, 10)),
@@ -387,124 +444,25 @@ impl BaryApp {
                         // grey was faint on a projector).
                         let strong = ui.visuals().strong_text_color();
                         ui.visuals_mut().override_text_color = Some(strong);
-                        ui.heading(lang.tr("quiz.title"));
+                        // Beside the canvas the room is short (a Lessons panel below): no
+                        // heading (the prompt says it), the keys in End the quiz's tip.
+                        if !closable {
+                            ui.heading(lang.tr("quiz.title"));
+                        }
                         out.extend(
-                            quiz_ui(ui, session, pinned, lang)
+                            quiz_ui(ui, session, pinned, lang, closable)
                                 .into_iter()
                                 .map(Into::into),
                         );
-                        ui.add_space(8.0);
-                        ui.label(RichText::new(lang.tr("quiz.keys")).small().weak());
+                        if !closable {
+                            ui.add_space(8.0);
+                            ui.label(RichText::new(lang.tr("quiz.keys")).small().weak());
+                        }
                     });
             });
-        // Nothing lies over the picture (the card's corner of the last frame is gone).
-        self.canvas.avoid.clear();
-        let framing = Framing::presenting(self.state.view.compare);
-        self.canvas_panel(ui, texture, framing, out);
-    }
-
-    /// The quiz in a window (outside presentation mode).
-    pub(in crate::app) fn quiz_window(&mut self, ctx: &egui::Context, out: &mut Vec<AppCommand>) {
-        let lang = self.lang();
-        let Some(session) = &self.quiz.session else {
-            return;
-        };
-        let mut open = true;
-        // Beside the picture, in the canvas (clear of the inspector, which says the numbers
-        // are hidden, and of the Lessons panel's text and plot under the canvas).
-        let pictures = self
-            .canvas
-            .views
-            .iter()
-            .map(|v| v.rect)
-            .reduce(|a, b| a.union(b));
-        // Not before the canvas has been laid out (the window keeps the place it opens at);
-        // the canvas is laid out earlier in the same frame, so this waits for at most one.
-        let Some(area) = self.canvas.area else {
-            ctx.request_repaint();
-            return;
-        };
-        let (corner, width) = match pictures {
-            Some(pictures) => window_place(area, pictures),
-            None => (area.min + egui::vec2(MARGIN, MARGIN), WIDTH),
-        };
-        egui::Window::new(lang.tr("quiz.title"))
-            .id(egui::Id::unique("quiz-window"))
-            .open(&mut open)
-            .default_pos(corner)
-            .default_width(width)
-            .show(ctx, |ui| {
-                // Inside the canvas: taller, it lay over the Lessons panel's Previous button.
-                // Its title bar takes about one interaction height.
-                let title = ui.spacing().interact_size.y + 2.0 * MARGIN;
-                egui::ScrollArea::vertical()
-                    .max_height((area.height() - 2.0 * MARGIN - title).max(MIN_HEIGHT))
-                    .auto_shrink([false, true])
-                    .show(ui, |ui| {
-                        out.extend(
-                            quiz_ui(ui, session, self.reports.pin.as_ref(), lang)
-                                .into_iter()
-                                .map(Into::into),
-                        );
-                    });
-            });
-        if !open {
-            out.push(QuizCommand::Toggle.into());
-        }
+        self.quiz.column = Some(shown.response.rect);
     }
 }
 
-/// Points: the quiz window's width where the canvas has room for it, and the least it takes
-/// beside the picture.
-const WIDTH: f32 = 360.0;
-const MIN_WIDTH: f32 = 250.0;
-/// Points: the least height of the quiz window (on a short canvas it scrolls).
-const MIN_HEIGHT: f32 = 120.0;
-/// Points: the quiz window's distance from the canvas's edges.
-const MARGIN: f32 = 12.0;
-/// Points: how far the handles' labels reach beyond the picture's sides (a corner's label
-/// beside a corner at the picture's edge).
-const LABEL_REACH: f32 = 60.0;
-
-/// Where the quiz window opens in the canvas `area` and how wide, given the pictures' rect:
-/// beside the pictures on the side with more room (past their labels), at the canvas's edge,
-/// as wide as that room allows (at most [`WIDTH`]); where neither side has [`MIN_WIDTH`], in
-/// the canvas's top-left corner at full width (over the picture: it can be moved).
-fn window_place(area: egui::Rect, pictures: egui::Rect) -> (egui::Pos2, f32) {
-    let top = area.top() + MARGIN;
-    let right = area.right() - (pictures.right() + LABEL_REACH) - MARGIN;
-    let left = (pictures.left() - LABEL_REACH) - area.left() - MARGIN;
-    if right >= left && right >= MIN_WIDTH {
-        let w = right.min(WIDTH);
-        (egui::pos2(area.right() - MARGIN - w, top), w)
-    } else if left >= MIN_WIDTH {
-        (egui::pos2(area.left() + MARGIN, top), left.min(WIDTH))
-    } else {
-        (egui::pos2(area.left() + MARGIN, top), WIDTH)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use egui::{Rect, pos2};
-
-    /// The window goes to the roomier side's edge, as wide as the room past the labels allows;
-    /// with no room on either side, to the top-left corner at full width.
-    #[test]
-    fn the_window_opens_beside_the_picture_where_there_is_room() {
-        let area = Rect::from_min_max(pos2(0.0, 40.0), pos2(1200.0, 700.0));
-        // Picture 300..850: right room 1200 - 910 - 12 = 278, left room 300 - 60 - 12 = 228.
-        let picture = Rect::from_min_max(pos2(300.0, 100.0), pos2(850.0, 600.0));
-        assert_eq!(window_place(area, picture), (pos2(910.0, 52.0), 278.0));
-        // Mirrored: the left side.
-        let picture = Rect::from_min_max(pos2(350.0, 100.0), pos2(900.0, 600.0));
-        assert_eq!(window_place(area, picture), (pos2(12.0, 52.0), 278.0));
-        // A wide room: full width at the right edge.
-        let picture = Rect::from_min_max(pos2(100.0, 100.0), pos2(550.0, 600.0));
-        assert_eq!(window_place(area, picture), (pos2(828.0, 52.0), 360.0));
-        // No room: the corner.
-        let picture = Rect::from_min_max(pos2(200.0, 100.0), pos2(1000.0, 600.0));
-        assert_eq!(window_place(area, picture), (pos2(12.0, 52.0), 360.0));
-    }
-}
+/// The quiz column's panel id.
+const COLUMN_ID: &str = "quiz-column";
