@@ -570,3 +570,26 @@ fn a_steps_plot_beside_its_text_keeps_a_readable_height() {
     }
     assert_eq!(seen, 6, "three steps with a plot, in two languages");
 }
+
+/// On a 1024x768 projector with text size 1.5, built-in step 15 shows the 3D view beside a
+/// canvas shortened by the step's plot: its drawing takes most of the panel's height (the
+/// numbers, which had two cut lines under it, go into its tooltip). It had 97 of the panel's
+/// 213 points.
+#[test]
+fn a_short_3d_view_gives_its_height_to_the_drawing() {
+    for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+        let h = common::app::lecture_with("builtin", 15, lang, false);
+        let panel = h.state().space_panel_rect().expect("the 3D view's panel");
+        let drawing = h.state().space_drawing_rect().expect("the drawing");
+        assert!(
+            panel.expand(0.5).contains_rect(drawing),
+            "{lang:?}: {drawing:?} in {panel:?}"
+        );
+        assert!(
+            drawing.height() >= 0.6 * panel.height(),
+            "{lang:?}: the drawing is {} of the panel's {} points",
+            drawing.height(),
+            panel.height()
+        );
+    }
+}

@@ -385,6 +385,9 @@ fn on_a_projector_at_text_size_one_and_a_half_every_panel_opens_and_the_lesson_s
         };
         let mut h = harness([1024.0, 768.0], options);
         h.state_mut().push(StateCommand::SetUiScale(scale));
+        // The step's quiz ended (its column beside the canvas is tests/quiz_app.rs's).
+        h.state_mut()
+            .push(barylab::app::command::QuizCommand::Toggle);
         settle(&mut h);
         let window = h.ctx.content_rect();
         let canvas = h.state().canvas().area.expect("the canvas is shown");

@@ -221,3 +221,45 @@ fn the_quiz_keeps_clear_of_the_picture_and_the_lessons_panel() {
         }
     }
 }
+
+/// With a side panel open at 1024x768, text size 1.5, the canvas has no room for the quiz's
+/// column: the quiz becomes a window in the canvas, and the canvas keeps its width (the
+/// column had left it 140 points with the inspector open). Closing the panel docks it again.
+#[test]
+fn with_a_side_panel_open_the_quiz_is_a_window_and_the_canvas_keeps_its_width() {
+    use barylab::app::document::state::StateCommand;
+    let mut h = common::app::lecture_with("builtin", 11, Lang::En, false);
+    let docked = quiz_column(&h);
+    let canvas = h.state().canvas().area.expect("laid out");
+    assert!(
+        docked.left() >= canvas.right() - 0.5,
+        "a column right of the canvas"
+    );
+    h.state_mut().push(StateCommand::SetShowInspector(true));
+    for _ in 0..4 {
+        h.step();
+    }
+    h.run();
+    let canvas = h.state().canvas().area.expect("laid out");
+    assert!(
+        canvas.width() >= 300.0,
+        "the canvas keeps {} points",
+        canvas.width()
+    );
+    let window = quiz_column(&h);
+    assert!(
+        canvas.expand(0.5).contains_rect(window),
+        "the quiz window {window:?} in the canvas {canvas:?}"
+    );
+    h.state_mut().push(StateCommand::SetShowInspector(false));
+    for _ in 0..4 {
+        h.step();
+    }
+    h.run();
+    let again = quiz_column(&h);
+    let canvas = h.state().canvas().area.expect("laid out");
+    assert!(
+        again.left() >= canvas.right() - 0.5 && again.top() <= docked.top() + 0.5,
+        "docked again right of the canvas {canvas:?}: {again:?}"
+    );
+}

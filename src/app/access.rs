@@ -44,6 +44,11 @@ impl BaryApp {
         self.space_view.panel_rect
     }
 
+    /// Where the 3D view's drawing was laid out last, if it was drawn.
+    pub fn space_drawing_rect(&self) -> Option<egui::Rect> {
+        self.space_view.drawing_rect
+    }
+
     /// Where the Lessons panel was laid out last, if it was shown.
     pub fn lesson_panel_rect(&self) -> Option<egui::Rect> {
         self.lessons.panel_rect

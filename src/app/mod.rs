@@ -505,6 +505,7 @@ impl BaryApp {
             &mut out,
         );
         self.plot_window(&ctx, texture, &mut out);
+        self.quiz_window(&ctx, &mut out);
         let mut help_open = self.help_open;
         egui::Window::new(lang.tr("app.help.title"))
             .id(egui::Id::unique("help-window"))

@@ -23,8 +23,11 @@ pub struct Quiz {
     dismissed: Option<usize>,
     /// Predictions to type into the first quiz and reveal (`--quiz-answers`).
     pub answers: Option<Vec<String>>,
-    /// Where the quiz's column was laid out last (for tests: `BaryApp::quiz_rect`).
+    /// Where the quiz's column (or window) was laid out last (for tests:
+    /// `BaryApp::quiz_rect`).
     pub column: Option<egui::Rect>,
+    /// This frame the quiz is a window, the canvas having no room for its column.
+    floating: bool,
 }
 
 /// A quiz going on: its question, what the class typed, and whether it is revealed.
@@ -389,6 +392,10 @@ const COLUMN_SHARE: f32 = 0.45;
 const COLUMN_WIDTH: (f32, f32) = (270.0, 480.0);
 const DOCKED_SHARE: f32 = 0.45;
 const DOCKED_WIDTH: (f32, f32) = (260.0, 400.0);
+/// Points of width the canvas keeps beside the quiz's column (else the quiz is a window).
+const CANVAS_KEEPS: f32 = 300.0;
+/// Points: the quiz window's distance from the canvas's edges.
+const WINDOW_MARGIN: f32 = 12.0;
 
 impl BaryApp {
     /// Presentation mode during a quiz: the quiz in a column right of the picture, in the
@@ -411,12 +418,57 @@ impl BaryApp {
     /// panels, so that it never lies over the picture, its corners' labels or the Lessons
     /// panel (a window over the canvas had no room beside the picture at 1024x768 with text
     /// size 1.5, and covered it). With a close button, as the window had.
+    /// Where the side panels leave the canvas too little room for a column
+    /// ([`CANVAS_KEEPS`]), the quiz is a window over the canvas instead ([`Self::quiz_window`]).
     pub(in crate::app) fn quiz_docked(&mut self, ui: &mut Ui, out: &mut Vec<AppCommand>) {
+        self.quiz.floating = false;
         if self.quiz.session.is_none() {
             return;
         }
-        let width = (DOCKED_SHARE * ui.available_width()).clamp(DOCKED_WIDTH.0, DOCKED_WIDTH.1);
+        let room = ui.available_width();
+        let width = (DOCKED_SHARE * room).clamp(DOCKED_WIDTH.0, DOCKED_WIDTH.1);
+        if room - width < CANVAS_KEEPS {
+            self.quiz.floating = true;
+            return;
+        }
         self.quiz_column(ui, width, true, out);
+    }
+
+    /// The quiz in a window in the canvas's top-left corner, when the side panels leave no
+    /// room for its column ([`Self::quiz_docked`]): it can be moved, and it is never taller
+    /// than the canvas (it scrolls), so it does not reach over the Lessons panel.
+    pub(in crate::app) fn quiz_window(&mut self, ctx: &egui::Context, out: &mut Vec<AppCommand>) {
+        let lang = self.lang();
+        let (Some(session), true) = (&self.quiz.session, self.quiz.floating) else {
+            return;
+        };
+        let Some(area) = self.canvas.area else {
+            return;
+        };
+        let mut open = true;
+        let shown = egui::Window::new(lang.tr("quiz.title"))
+            .id(egui::Id::unique("quiz-window"))
+            .open(&mut open)
+            .default_pos(area.min + egui::vec2(WINDOW_MARGIN, WINDOW_MARGIN))
+            .default_width(DOCKED_WIDTH.0)
+            .show(ctx, |ui| {
+                // Its title bar takes about one interaction height.
+                let title = ui.spacing().interact_size.y + 2.0 * WINDOW_MARGIN;
+                egui::ScrollArea::vertical()
+                    .max_height((area.height() - 2.0 * WINDOW_MARGIN - title).max(0.0))
+                    .auto_shrink([false, true])
+                    .show(ui, |ui| {
+                        out.extend(
+                            quiz_ui(ui, session, self.reports.pin.as_ref(), lang, true)
+                                .into_iter()
+                                .map(Into::into),
+                        );
+                    });
+            });
+        self.quiz.column = shown.map(|s| s.response.rect);
+        if !open {
+            out.push(QuizCommand::Toggle.into());
+        }
     }
 
     /// The quiz in a right-hand column `width` points wide (scrolling when taller than the

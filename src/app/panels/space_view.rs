@@ -35,6 +35,8 @@ pub struct SpaceView {
     cached: Option<(SceneKey, SpaceScene)>,
     /// Where its panel was laid out last (beside the canvas, not presenting).
     pub(in crate::app) panel_rect: Option<egui::Rect>,
+    /// Where the drawing was laid out last (for tests: `BaryApp::space_drawing_rect`).
+    pub(in crate::app) drawing_rect: Option<egui::Rect>,
 }
 
 /// The Controls panel's toggle of the 3D view (beside the comparison choices).
@@ -114,15 +116,24 @@ impl SpaceView {
         // room for two lines of the numbers, which scroll under it: nothing overflows the
         // panel (an overflow grew the panel past the lesson panel's top, its edge drawn
         // across the lesson's buttons).
+        // Where that leaves the drawing under `MIN_DRAWING` (a 1024x768 projector with a plot
+        // in the Lessons panel), the drawing takes the whole room and the numbers go into its
+        // tooltip: two cut lines of numbers helped less than a drawing half as tall again.
         let room = ui.available_height();
-        let height = (0.68 * room).max(MIN_DRAWING).min(room - lines).max(0.0);
+        let numbers_under = room - lines >= MIN_DRAWING;
+        let height = if numbers_under {
+            (0.68 * room).max(MIN_DRAWING).min(room - lines)
+        } else {
+            room
+        }
+        .max(0.0);
         let size = egui::vec2(ui.available_width(), height);
         let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
-        let response = if hint_shown {
-            response
-        } else {
-            response.on_hover_text(lang.tr("space.hint"))
-        };
+        self.drawing_rect = Some(response.rect);
+        let mut tip = Vec::new();
+        if !hint_shown {
+            tip.push(lang.tr("space.hint"));
+        }
         if response.dragged() {
             let d = response.drag_delta();
             self.orbit = self.orbit.turned(
@@ -166,6 +177,14 @@ impl SpaceView {
         };
         for s in &drawn {
             paint(&painter, s);
+        }
+        if !numbers_under {
+            tip.extend(lines.into_iter().map(|(line, _)| line));
+            response.on_hover_text(tip.join("\n"));
+            return;
+        }
+        if !tip.is_empty() {
+            response.on_hover_text(tip.join("\n"));
         }
         egui::ScrollArea::vertical()
             .id_salt("space-numbers")
