@@ -593,3 +593,41 @@ fn a_short_3d_view_gives_its_height_to_the_drawing() {
         );
     }
 }
+
+/// On a 1024x768 projector with text size 1.5 (not presenting), the samples lesson draws its
+/// 120x120 picture at 2x: a room cannot see which samples each triangle covers. Beside the
+/// canvas the pinned pixel is enlarged with its samples, at least 150 points square, clear of
+/// the picture and the Lessons panel; a single-sample step (the last) has no such column.
+#[test]
+fn the_samples_lesson_enlarges_the_pinned_pixels_samples_beside_the_canvas() {
+    for lang in [barylab::i18n::Lang::En, barylab::i18n::Lang::Zh] {
+        for step in 2..=5 {
+            let h = common::app::lecture_with("samples", step, lang, false);
+            let what = format!("samples step {step} {lang:?}");
+            let column = h
+                .state()
+                .magnifier_rect()
+                .unwrap_or_else(|| panic!("{what}: no magnifier"));
+            assert!(
+                column.width() >= 150.0 && column.height() >= 150.0,
+                "{what}: the magnifier is {column:?}"
+            );
+            let canvas = h.state().canvas();
+            assert!(!canvas.views.is_empty());
+            for v in &canvas.views {
+                assert!(
+                    !column.intersects(v.rect),
+                    "{what}: the magnifier {column:?} over the picture {:?}",
+                    v.rect
+                );
+            }
+            let panel = h.state().lesson_panel_rect().expect("the Lessons panel");
+            assert!(
+                column.bottom() <= panel.top() + 0.5,
+                "{what}: {column:?} over the Lessons panel {panel:?}"
+            );
+        }
+        let h = common::app::lecture_with("samples", 6, lang, false);
+        assert_eq!(h.state().magnifier_rect(), None, "one sample per pixel");
+    }
+}

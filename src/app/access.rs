@@ -54,6 +54,12 @@ impl BaryApp {
         self.lessons.panel_rect
     }
 
+    /// Where the magnifier's column beside the canvas was laid out last (outside
+    /// presentation mode, for a pinned pixel of several samples).
+    pub fn magnifier_rect(&self) -> Option<egui::Rect> {
+        self.magnifier_rect
+    }
+
     /// Where the quiz's column was laid out last, while a quiz was going on.
     pub fn quiz_rect(&self) -> Option<egui::Rect> {
         self.quiz.session.as_ref().and(self.quiz.column)

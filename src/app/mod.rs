@@ -139,6 +139,8 @@ pub struct BaryApp {
     compare_image: Option<panels::compare_image::ImageCompare>,
     /// The 3D view's orbit and scene.
     space_view: panels::space_view::SpaceView,
+    /// Where the magnifier's column beside the canvas was laid out last, if it was.
+    magnifier_rect: Option<egui::Rect>,
     /// The texture views' pictures (texture space, level of detail).
     texel_view: panels::texel_view::TexelViewPanel,
     /// The quiz on the pinned pixel, if one is going on.
@@ -231,6 +233,7 @@ impl BaryApp {
             lessons: panels::lessons::Lessons::default(),
             gpu_view: panels::gpu_view::GpuView::new(options.screenshot.is_some()),
             space_view: panels::space_view::SpaceView::default(),
+            magnifier_rect: None,
             texel_view: Default::default(),
             compare_image: None,
             quiz: panels::quiz::Quiz::default(),
@@ -492,6 +495,7 @@ impl BaryApp {
         self.lesson_panel(ui, texture, &mut out);
         self.side_panels_ui(ui, &mut out);
         self.quiz_docked(ui, &mut out);
+        self.magnifier_docked(ui);
         self.canvas.avoid.clear();
         // The 3D view shows the pinned pixel's a, b, c: not during a quiz before Reveal.
         if self.quiz.hidden().is_none() {

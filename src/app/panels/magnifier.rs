@@ -1,7 +1,9 @@
-//! Presentation mode's magnifier: the pinned pixel and its neighbours enlarged for the back of
-//! the room, with the pixel grid, every sample point and the triangle's edges
+//! The magnifier: the pinned pixel and its neighbours enlarged for the back of the room, with
+//! the pixel grid, every sample point and the triangle's edges
 //! ([`crate::figure::overlay::magnifier`] gives the shapes; this paints them over the canvas's
-//! own texture, whose magnified pixels stay crisp squares).
+//! own texture, whose magnified pixels stay crisp squares). Presenting shows it for any pinned
+//! pixel; outside presentation mode, in a column beside the canvas for a pixel of several
+//! samples ([`BaryApp::magnifier_docked`](crate::app::BaryApp)).
 
 use egui::{Color32, Rect, TextureId, Ui};
 
@@ -96,4 +98,51 @@ fn paint_square(painter: &egui::Painter, rect: Rect, k: f32, input: &MagnifierIn
         egui::Stroke::new(2.0, Color32::from_gray(200)),
         egui::StrokeKind::Inside,
     );
+}
+
+/// Points: the least width the canvas keeps beside the magnifier's column (else it is left
+/// out), and the share of the room the column takes at most.
+const CANVAS_KEEPS: f32 = 300.0;
+const COLUMN_SHARE: f32 = 0.45;
+/// Points: the column's inner margin.
+const COLUMN_MARGIN: f32 = 12.0;
+
+impl crate::app::BaryApp {
+    /// Outside presentation mode, a pinned pixel of several samples enlarged with its samples
+    /// in a column right of the canvas, as large as the canvas's height allows: at a
+    /// projector's 1024x768 with text size 1.5, the samples lesson's 120x120 picture is drawn
+    /// at 2x, too small for a room to see which samples each triangle covers. Not during a
+    /// quiz (its column is there), nor where the canvas would keep under [`CANVAS_KEEPS`].
+    pub(in crate::app) fn magnifier_docked(&mut self, ui: &mut Ui) {
+        self.magnifier_rect = None;
+        let samples = self
+            .canvas
+            .output
+            .as_ref()
+            .is_some_and(|o| o.scene.settings().samples.count.get() > 1);
+        if !samples || self.quiz.session.is_some() {
+            return;
+        }
+        let text = ui.text_style_height(&egui::TextStyle::Body);
+        let Some(input) = self.magnifier_input(text) else {
+            return;
+        };
+        let room = ui.available_width();
+        let side = (ui.available_height() - title_height(text) - 2.0 * COLUMN_MARGIN)
+            .min(COLUMN_SHARE * room - 2.0 * COLUMN_MARGIN);
+        let width = side + 2.0 * COLUMN_MARGIN;
+        if side < MIN_SIDE || room - width < CANVAS_KEEPS {
+            return;
+        }
+        let shown = egui::Panel::right("magnifier-column")
+            .frame(
+                egui::Frame::new()
+                    .fill(crate::app::panels::present::CARD_FILL)
+                    .inner_margin(egui::Margin::same(COLUMN_MARGIN as i8)),
+            )
+            .resizable(false)
+            .exact_size(width)
+            .show(ui, |ui| magnifier_ui(ui, side, &input));
+        self.magnifier_rect = Some(shown.response.rect);
+    }
 }
