@@ -354,7 +354,10 @@ impl BaryApp {
 
     /// The magnifier's contents, when it is on and a pixel is pinned; its title `text_size`
     /// points.
-    pub(in crate::app) fn magnifier_input(&self, text_size: f32) -> Option<magnifier::MagnifierInput> {
+    pub(in crate::app) fn magnifier_input(
+        &self,
+        text_size: f32,
+    ) -> Option<magnifier::MagnifierInput> {
         if !self.state.view.show_magnifier {
             return None;
         }
