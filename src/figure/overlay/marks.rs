@@ -278,7 +278,9 @@ pub(super) fn handle_shapes(shapes: &mut Vec<Shape>, h: &HandleMark, centre: DVe
     let away = window - p;
     if away != DVec2::ZERO {
         let d = away.normalize();
-        let reach = radius + 0.6 * TEXT_LABEL;
+        // Far enough that the arrow's box (the glyph, about 0.8 of the text size wide, and
+        // its padding) clears the handle's rim and stroke: at 0.6 it lay over the disc.
+        let reach = radius + 0.85 * TEXT_LABEL;
         shapes.push(Shape::Text {
             at: p,
             offset: [(d.x as f32) * reach, (d.y as f32) * reach],
@@ -508,6 +510,23 @@ mod tests {
             let t = texts(&shapes);
             assert!(t.iter().all(|(at, _)| *at == edge), "{t:?}");
             assert!(t.iter().any(|(_, s)| s == want), "{window}: {t:?}");
+            // The arrow's box (an arrow glyph is about 0.8 of the text size wide, plus the
+            // label padding) stays off the disc and its stroke (2.5 wide, half outside).
+            for s in &shapes {
+                if let Shape::Text {
+                    offset, size, text, ..
+                } = s
+                    && text == want
+                {
+                    let reach = offset[0].hypot(offset[1]);
+                    let half = 0.4 * size + crate::figure::text::LABEL_PAD[0];
+                    assert!(
+                        reach - half >= HANDLE_RADIUS + 1.25,
+                        "{want}: the box reaches {} from the centre",
+                        reach - half
+                    );
+                }
+            }
         }
         // A corner on the image: where it is, no arrow.
         let h = HandleMark {
