@@ -336,6 +336,39 @@ fn presenting_on_a_projector_gives_the_picture_half_the_window_and_hides_no_hand
     }
 }
 
+/// Presenting with nothing pinned, the pointer on a pixel fills the card, which then lies in
+/// a corner of the picture; on the default scene at 1024x768, text size 1.5, every corner holds
+/// a handle. Pointing at any handle (to drag it), the card is not over it: it moves out from
+/// under the pointer. (It stayed in the top-right corner over C.)
+#[test]
+fn presenting_the_hovered_pixels_card_keeps_out_from_under_the_pointer() {
+    let options = AppOptions {
+        present: true,
+        ..AppOptions::default()
+    };
+    let mut h = harness([1024.0, 768.0], options);
+    h.state_mut().push(StateCommand::SetUiScale(1.5));
+    settle(&mut h);
+    let handles = handles_on_screen(&h);
+    assert_eq!(handles.len(), 4, "the quad's four handles");
+    for p in handles {
+        h.event(egui::Event::PointerMoved(p));
+        settle(&mut h);
+        assert!(
+            h.state().hover_report().is_some(),
+            "a pixel is hovered at {p:?}"
+        );
+        let cards = &h.state().canvas().avoid;
+        assert!(!cards.is_empty(), "the card lies over the picture");
+        for card in cards {
+            assert!(
+                !card.contains(p),
+                "the card {card:?} lies over the handle under the pointer at {p:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn the_c_key_hides_the_card_and_gives_the_pinned_picture_half_the_window() {
     for scale in [1.0, 1.5] {

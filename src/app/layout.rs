@@ -226,7 +226,8 @@ impl BaryApp {
                 crate::app::panels::corners::FREE_CARD,
             )
         } else {
-            Some(self.emptiest_corner(self.canvas.area.unwrap_or(over_area), card))
+            let pointer = ui.ctx().pointer_hover_pos();
+            Some(self.emptiest_corner(self.canvas.area.unwrap_or(over_area), card, pointer))
         };
         let Some(corner) = corner else {
             let size = narrow_text(rect, spacing, key_lines);

@@ -13,6 +13,9 @@ const BEHIND_NOTE: egui::Vec2 = egui::vec2(420.0, 50.0);
 /// A corner over a handle's label, a title or the colour bar counts as this many covered
 /// samples.
 const MARK_PENALTY: u32 = 40;
+/// Points around a card over the picture that the pointer keeps it away from (a handle's
+/// disc and a little more).
+const POINTER_CLEARANCE: f32 = 24.0;
 /// Samples per side of the grid that measures how much of the picture a card would hide.
 const CORNER_SAMPLES: usize = 12;
 /// A corner over the pinned pixel counts as this many covered samples (more than a whole
@@ -24,8 +27,26 @@ impl BaryApp {
     /// fewest covered pixels under it (sampled on a grid), never over the pinned pixel, in
     /// the order top right, top left, bottom right, bottom left on a tie. It depends on the
     /// render and the pin only (not on the hovered pixel), so the card does not jump about.
-    pub(in crate::app) fn emptiest_corner(&self, area: egui::Rect, size: egui::Vec2) -> egui::Rect {
-        self.corners_by_emptiness(area, size, &self.canvas.views)[0].1
+    ///
+    /// Except that it keeps out from under the `pointer`: the emptiest corner whose box, grown
+    /// by [`POINTER_CLEARANCE`], does not hold it. On a picture with a handle in every
+    /// corner (the default scene presented at 1024x768) the card lay over a handle, which the
+    /// presenter could then neither see nor find to drag; now the card moves away when the
+    /// pointer comes to it.
+    pub(in crate::app) fn emptiest_corner(
+        &self,
+        area: egui::Rect,
+        size: egui::Vec2,
+        pointer: Option<egui::Pos2>,
+    ) -> egui::Rect {
+        let corners = self.corners_by_emptiness(area, size, &self.canvas.views);
+        let clear =
+            |c: &egui::Rect| pointer.is_none_or(|p| !c.expand(POINTER_CLEARANCE).contains(p));
+        corners
+            .iter()
+            .find(|(_, c)| clear(c))
+            .unwrap_or(&corners[0])
+            .1
     }
 
     /// The four corners for a box of `size` in the canvas `area` with how much each hides
