@@ -23,6 +23,10 @@ pub const STRIP: f32 = 30.0;
 /// leaves no room for (a projector at a large text size): the canvas gives way down to this
 /// width rather than the panel staying shut.
 pub const CANVAS_MIN_WIDTH: f32 = 200.0;
+/// Points: the least width the canvas keeps beside a column that a pinned pixel's quiz or
+/// magnifier takes at its right (outside presentation mode); with less, the column is not
+/// laid out (the quiz becomes a window, the magnifier is left out).
+pub const CANVAS_BESIDE_COLUMN: f32 = 300.0;
 
 /// Which side panel gets the room first when both do not fit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -100,9 +100,7 @@ fn paint_square(painter: &egui::Painter, rect: Rect, k: f32, input: &MagnifierIn
     );
 }
 
-/// Points: the least width the canvas keeps beside the magnifier's column (else it is left
-/// out), and the share of the room the column takes at most.
-const CANVAS_KEEPS: f32 = 300.0;
+/// The share of the room the magnifier's column takes at most.
 const COLUMN_SHARE: f32 = 0.45;
 /// Points: the column's inner margin.
 const COLUMN_MARGIN: f32 = 12.0;
@@ -112,14 +110,15 @@ impl crate::app::BaryApp {
     /// in a column right of the canvas, as large as the canvas's height allows: at a
     /// projector's 1024x768 with text size 1.5, the samples lesson's 120x120 picture is drawn
     /// at 2x, too small for a room to see which samples each triangle covers. Not during a
-    /// quiz (its column is there), nor where the canvas would keep under [`CANVAS_KEEPS`].
+    /// quiz (its column is there), nor where the canvas would keep under
+    /// [`CANVAS_BESIDE_COLUMN`](crate::app::side_panels::CANVAS_BESIDE_COLUMN).
     pub(in crate::app) fn magnifier_docked(&mut self, ui: &mut Ui) {
         self.magnifier_rect = None;
         let samples = self
             .canvas
             .output
             .as_ref()
-            .is_some_and(|o| o.scene.settings().samples.count.get() > 1);
+            .is_some_and(|o| o.scene.samples().count.get() > 1);
         if !samples || self.quiz.session.is_some() {
             return;
         }
@@ -131,7 +130,7 @@ impl crate::app::BaryApp {
         let side = (ui.available_height() - title_height(text) - 2.0 * COLUMN_MARGIN)
             .min(COLUMN_SHARE * room - 2.0 * COLUMN_MARGIN);
         let width = side + 2.0 * COLUMN_MARGIN;
-        if side < MIN_SIDE || room - width < CANVAS_KEEPS {
+        if side < MIN_SIDE || room - width < crate::app::side_panels::CANVAS_BESIDE_COLUMN {
             return;
         }
         let shown = egui::Panel::right("magnifier-column")

@@ -207,10 +207,8 @@ pub fn quiz_ui(
     for (part, q) in asking.iter().enumerate() {
         ui.add_space(4.0);
         let symbols = q.symbols();
-        // (1/W_P's name is its symbol: not written twice.)
-        let name = q.name(lang);
-        if symbols != [name.as_str()] {
-            ui.label(name);
+        if !named_by_its_symbol(*q, lang) {
+            ui.label(q.name(lang));
         }
         // One row of "symbol [field]" pairs, the fields sharing the width left.
         let n = symbols.len() as f32;
@@ -312,6 +310,11 @@ pub fn quiz_ui(
     out
 }
 
+/// Whether `q` is one number whose name is its symbol (1/W_P): its name is written once.
+fn named_by_its_symbol(q: Quantity, lang: Lang) -> bool {
+    q.symbols() == [q.name(lang).as_str()]
+}
+
 /// One quantity's answer, prediction and difference as a table, then the verdict and its
 /// diagnosis.
 fn verdict_ui(
@@ -337,11 +340,10 @@ fn verdict_ui(
                 ui.label(lang.tr("quiz.off_by"));
             }
             ui.end_row();
-            // A single number named as its quantity (1/W_P, the name above): no symbol, so
-            // that the table fits a narrow column.
-            let symbols = quantity.symbols();
-            let named = symbols.len() == 1 && symbols[0] == quantity.name(lang);
-            for (i, (s, a)) in symbols.iter().zip(answer).enumerate() {
+            // The name above is the symbol (1/W_P): not written again, so that the table fits
+            // a narrow column.
+            let named = named_by_its_symbol(quantity, lang);
+            for (i, (s, a)) in quantity.symbols().iter().zip(answer).enumerate() {
                 ui.label(
                     mono(if named {
                         String::new()
@@ -392,8 +394,6 @@ const COLUMN_SHARE: f32 = 0.45;
 const COLUMN_WIDTH: (f32, f32) = (270.0, 480.0);
 const DOCKED_SHARE: f32 = 0.45;
 const DOCKED_WIDTH: (f32, f32) = (260.0, 400.0);
-/// Points of width the canvas keeps beside the quiz's column (else the quiz is a window).
-const CANVAS_KEEPS: f32 = 300.0;
 /// Points: the quiz window's distance from the canvas's edges.
 const WINDOW_MARGIN: f32 = 12.0;
 
@@ -419,7 +419,8 @@ impl BaryApp {
     /// panel (a window over the canvas had no room beside the picture at 1024x768 with text
     /// size 1.5, and covered it). With a close button, as the window had.
     /// Where the side panels leave the canvas too little room for a column
-    /// ([`CANVAS_KEEPS`]), the quiz is a window over the canvas instead ([`Self::quiz_window`]).
+    /// ([`CANVAS_BESIDE_COLUMN`](crate::app::side_panels::CANVAS_BESIDE_COLUMN)), the quiz
+    /// is a window over the canvas instead ([`Self::quiz_window`]).
     pub(in crate::app) fn quiz_docked(&mut self, ui: &mut Ui, out: &mut Vec<AppCommand>) {
         self.quiz.floating = false;
         if self.quiz.session.is_none() {
@@ -427,7 +428,7 @@ impl BaryApp {
         }
         let room = ui.available_width();
         let width = (DOCKED_SHARE * room).clamp(DOCKED_WIDTH.0, DOCKED_WIDTH.1);
-        if room - width < CANVAS_KEEPS {
+        if room - width < crate::app::side_panels::CANVAS_BESIDE_COLUMN {
             self.quiz.floating = true;
             return;
         }
