@@ -209,3 +209,66 @@ fn the_3d_view_stays_above_the_lesson_panel_at_a_lecture_projector() {
         }
     }
 }
+
+/// On a 1024x768 projector with text size 1.5 (not presenting), the 3D view beside the canvas
+/// is a drawing a room cannot read (built-in step 16: a few hundred points, labels 12 points
+/// high, one over another). Its Enlarge button puts it in the picture's place, its numbers in
+/// a column beside it, above the Lessons panel; V goes back to the picture and again to the 3D
+/// view, and a change of the scene brings the picture back.
+#[test]
+fn on_a_projector_the_3d_view_enlarges_into_the_pictures_place_and_back() {
+    use barylab::i18n::Lang;
+    for lang in [Lang::En, Lang::Zh] {
+        let mut h = common::app::lecture_with("builtin", 16, lang, false);
+        assert!(h.state().state().view.space, "step 16 shows the 3D view");
+        let small = h.state().space_drawing_rect().expect("the drawing");
+        let canvas = h.state().canvas().area.expect("the canvas");
+        let lessons = h.state().lesson_panel_rect().expect("the Lessons panel");
+        h.get_by_label(&lang.tr("space.enlarge")).click();
+        h.run();
+        let big = h.state().space_drawing_rect().expect("the drawing");
+        // The height is the room above the Lessons panel either way; the width grows.
+        assert!(
+            big.area() >= 1.4 * small.area() && big.height() >= small.height(),
+            "{lang:?}: enlarged {big:?}, beside the canvas {small:?}"
+        );
+        assert!(
+            big.intersects(canvas) && big.left() <= canvas.left() + 20.0,
+            "{lang:?}: {big:?} is not in the picture's place {canvas:?}"
+        );
+        assert!(
+            big.bottom() <= lessons.top() + 0.5,
+            "{lang:?}: {big:?} over the Lessons panel {lessons:?}"
+        );
+        assert!(h.query_by_label(&lang.tr("space.shrink")).is_some());
+        if lang == Lang::En {
+            let numbers = h.get_by_label(&abc_line(&h)).rect();
+            assert!(
+                numbers.left() >= big.right() && numbers.bottom() <= lessons.top() + 0.5,
+                "P's weights {numbers:?} beside the drawing {big:?}"
+            );
+        }
+        h.key_press(egui::Key::V);
+        h.run();
+        let back = h.state().space_drawing_rect().expect("the drawing");
+        assert!(
+            (back.width() - small.width()).abs() < 1.0,
+            "{lang:?}: V brings the picture back: {back:?}, was {small:?}"
+        );
+        assert!(h.query_by_label(&lang.tr("space.enlarge")).is_some());
+        h.key_press(egui::Key::V);
+        h.run();
+        let again = h.state().space_drawing_rect().expect("the drawing");
+        assert!(
+            again.area() >= 1.4 * small.area(),
+            "{lang:?}: V enlarges it"
+        );
+        h.state_mut().push(StateCommand::SetShowGrid(true));
+        h.run();
+        let after = h.state().space_drawing_rect().expect("the drawing");
+        assert!(
+            (after.width() - small.width()).abs() < 1.0,
+            "{lang:?}: a change of the scene brings the picture back: {after:?}"
+        );
+    }
+}

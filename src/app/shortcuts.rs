@@ -79,8 +79,9 @@ pub fn shortcuts(ctx: &egui::Context, input: &ShortcutInput<'_>) -> Vec<AppComma
         if key(Key::Q) {
             extra.push(QuizCommand::Toggle.into());
         }
-        // V: presentation mode's 3D view in the picture's place (windows too narrow for both).
-        if input.presenting && view.space && key(Key::V) {
+        // V: the 3D view in the picture's place (in presentation mode, in windows too narrow
+        // for both) and back.
+        if view.space && key(Key::V) {
             extra.push(AppCommand::ToggleSpaceFull);
         }
         // S: step along the pinned row's span (the scanline rasterizer's order).

@@ -7,6 +7,7 @@
 use egui::epaint::PathStroke;
 use egui::{Align2, Color32, FontId, Pos2, RichText, Sense, Shape as EShape, Stroke, Ui};
 
+use crate::app::command::AppCommand;
 use crate::app::document::state::StateCommand;
 use crate::app::services::pixel::PixelReport;
 use crate::app::services::render::CanvasOutput;
@@ -77,14 +78,19 @@ impl SpaceView {
     }
 
     /// The view: a reset button and hint, the drawing (dragged to orbit, scrolled to zoom),
-    /// and the pixel's numbers under it; the drawing's labels `label_size` points.
+    /// and the pixel's numbers under it; the drawing's labels `label_size` points. `enlarged`:
+    /// `Some(false)` beside the canvas, with a button that puts it in the canvas's place;
+    /// `Some(true)` in that place, with a button back to the picture; `None` (presentation
+    /// mode, whose card names the key) neither. Returns whether that button was clicked.
     pub fn ui(
         &mut self,
         ui: &mut Ui,
         output: Option<&CanvasOutput>,
         report: Option<&PixelReport>,
         label_size: f32,
-    ) {
+        enlarged: Option<bool>,
+    ) -> bool {
+        let mut toggle = false;
         let lang = crate::app::services::locale::lang(ui.ctx());
         // A tetrahedron scene shows its volume weights (the lesson's last step).
         let tetra = output
@@ -95,10 +101,24 @@ impl SpaceView {
         } else {
             "space.title"
         };
+        // The title on a line of its own, the buttons under it: in one wrapped row with
+        // them, the row asked the panel for more width than a projector's window gives it,
+        // and the panel took it from the canvas.
+        ui.label(RichText::new(lang.tr(title)).strong());
         ui.horizontal_wrapped(|ui| {
-            ui.label(RichText::new(lang.tr(title)).strong());
             if ui.button(lang.tr("space.reset")).clicked() {
                 self.orbit = Orbit::default();
+            }
+            if let Some(on) = enlarged {
+                let (text, tip) = if on {
+                    ("space.shrink", "space.shrink_tip")
+                } else {
+                    ("space.enlarge", "space.enlarge_tip")
+                };
+                toggle = ui
+                    .button(lang.tr(text))
+                    .on_hover_text(lang.tr(tip))
+                    .clicked();
             }
         });
         let body = ui.text_style_height(&egui::TextStyle::Body);
@@ -110,7 +130,7 @@ impl SpaceView {
             ui.label(RichText::new(lang.tr("space.hint")).weak());
         }
         let Some(output) = output else {
-            return;
+            return toggle;
         };
         // The drawing takes about two thirds of the height, at least `MIN_DRAWING`, and leaves
         // room for two lines of the numbers, which scroll under it: nothing overflows the
@@ -119,15 +139,31 @@ impl SpaceView {
         // Where that leaves the drawing under `MIN_DRAWING` (a 1024x768 projector with a plot
         // in the Lessons panel), the drawing takes the whole room and the numbers go into its
         // tooltip: two cut lines of numbers helped less than a drawing half as tall again.
+        // Enlarged in a wide, low place (the canvas's, above a lesson's text), the numbers
+        // are a column beside the drawing, which keeps the whole height.
         let room = ui.available_height();
-        let numbers_under = room - lines >= MIN_DRAWING;
+        let beside = enlarged == Some(true) && ui.available_width() >= BESIDE_ASPECT * room;
+        let numbers_under = !beside && room - lines >= MIN_DRAWING;
         let height = if numbers_under {
             (0.68 * room).max(MIN_DRAWING).min(room - lines)
         } else {
             room
         }
         .max(0.0);
-        let size = egui::vec2(ui.available_width(), height);
+        let whole = ui.available_rect_before_wrap();
+        let width = if beside {
+            (BESIDE_SHARE * whole.width()).round()
+        } else {
+            whole.width()
+        };
+        let numbers_rect = beside.then(|| {
+            let gap = ui.spacing().item_spacing.x * 2.0;
+            egui::Rect::from_min_max(
+                egui::pos2(whole.min.x + width + gap, whole.min.y),
+                whole.max,
+            )
+        });
+        let size = egui::vec2(width, height);
         let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
         self.drawing_rect = Some(response.rect);
         let mut tip = Vec::new();
@@ -149,7 +185,7 @@ impl SpaceView {
         }
         let orbit = self.orbit;
         let Some(space) = self.scene(output, report) else {
-            return;
+            return toggle;
         };
         let r = response.rect;
         painter.rect_filled(r, 0.0, Color32::WHITE);
@@ -178,25 +214,34 @@ impl SpaceView {
         for s in &drawn {
             paint(&painter, s);
         }
-        if !numbers_under {
+        if !numbers_under && !beside {
             tip.extend(lines.into_iter().map(|(line, _)| line));
             response.on_hover_text(tip.join("\n"));
-            return;
+            return toggle;
         }
         if !tip.is_empty() {
             response.on_hover_text(tip.join("\n"));
         }
-        egui::ScrollArea::vertical()
-            .id_salt("space-numbers")
-            .min_scrolled_height(0.0)
-            .max_height(ui.available_height())
-            .show(ui, |ui| {
-                let ink = ui.visuals().text_color();
-                for (line, c) in lines {
-                    let c = if c == INK { ink } else { colour(c) };
-                    ui.label(RichText::new(line).color(c));
-                }
-            });
+        let numbers = |ui: &mut Ui| {
+            egui::ScrollArea::vertical()
+                .id_salt("space-numbers")
+                .min_scrolled_height(0.0)
+                .max_height(ui.available_height())
+                .show(ui, |ui| {
+                    let ink = ui.visuals().text_color();
+                    for (line, c) in lines {
+                        let c = if c == INK { ink } else { colour(c) };
+                        ui.label(RichText::new(line).color(c));
+                    }
+                });
+        };
+        match numbers_rect {
+            Some(r) => {
+                ui.scope_builder(egui::UiBuilder::new().max_rect(r), numbers);
+            }
+            None => numbers(ui),
+        }
+        toggle
     }
 }
 
@@ -287,6 +332,11 @@ pub const PRESENT_MIN_ASPECT: f32 = 1.5;
 pub const PRESENT_SHARE: f32 = 0.36;
 /// The 3D drawing's smallest height in points, where the panel has room for it.
 const MIN_DRAWING: f32 = 160.0;
+/// The enlarged view puts its numbers beside the drawing where its place is at least this
+/// many times as wide as high: under it, they would leave a wide, low strip of a drawing.
+const BESIDE_ASPECT: f32 = 1.8;
+/// The drawing's share of the width when the numbers are beside it.
+const BESIDE_SHARE: f32 = 0.6;
 
 impl crate::app::BaryApp {
     /// Presentation mode, when the 3D view is on: in a column right of the picture when the
@@ -309,7 +359,7 @@ impl crate::app::BaryApp {
             let back = crate::app::services::locale::lang(ui.ctx()).tr("space.present_back");
             egui::CentralPanel::default().frame(frame).show(ui, |ui| {
                 ui.label(RichText::new(back).color(crate::app::panels::present::DIM));
-                view.ui(ui, output, report, PRESENT_LABEL_SIZE);
+                view.ui(ui, output, report, PRESENT_LABEL_SIZE, None);
             });
             return true;
         }
@@ -321,13 +371,16 @@ impl crate::app::BaryApp {
             )
             .resizable(false)
             .exact_size((PRESENT_SHARE * window.width()).round())
-            .show(ui, |ui| view.ui(ui, output, report, PRESENT_LABEL_SIZE));
+            .show(ui, |ui| {
+                view.ui(ui, output, report, PRESENT_LABEL_SIZE, None);
+            });
         false
     }
 
     /// The 3D view as a resizable panel right of the canvas (when it is on), drawn from the
-    /// canvas's render and the hovered, else pinned, pixel's trace.
-    pub(in crate::app) fn space_panel(&mut self, ui: &mut Ui) {
+    /// canvas's render and the hovered, else pinned, pixel's trace; its button (or V) asks
+    /// for it in the canvas's place ([`Self::space_enlarged`]).
+    pub(in crate::app) fn space_panel(&mut self, ui: &mut Ui, out: &mut Vec<AppCommand>) {
         self.space_view.panel_rect = None;
         if !self.state.view.space {
             return;
@@ -340,7 +393,37 @@ impl crate::app::BaryApp {
             .resizable(true)
             .default_size(0.45 * width)
             .size_range((0.25 * width)..=(0.7 * width))
-            .show(ui, |ui| view.ui(ui, output, report, LABEL_SIZE));
+            .show(ui, |ui| {
+                view.ui(ui, output, report, LABEL_SIZE, Some(false))
+            });
+        if shown.inner {
+            out.push(AppCommand::ToggleSpaceFull);
+        }
         view.panel_rect = Some(shown.response.rect);
+    }
+
+    /// The 3D view in the canvas's place, its labels as large as presentation mode's, when
+    /// its Enlarge button or V asked for it (a projector's panel beside the canvas is too small
+    /// to read from the back of a room). Returns false, drawing nothing, when it is not
+    /// asked for: the canvas is laid out as usual.
+    pub(in crate::app) fn space_enlarged(
+        &mut self,
+        ui: &mut Ui,
+        out: &mut Vec<AppCommand>,
+    ) -> bool {
+        if !(self.space_full && self.state.view.space) {
+            return false;
+        }
+        let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
+        let output = self.canvas.output.as_ref();
+        let view = &mut self.space_view;
+        let shown = egui::CentralPanel::default().show(ui, |ui| {
+            view.ui(ui, output, report, PRESENT_LABEL_SIZE, Some(true))
+        });
+        if shown.inner {
+            out.push(AppCommand::ToggleSpaceFull);
+        }
+        view.panel_rect = Some(shown.response.rect);
+        true
     }
 }

@@ -62,6 +62,19 @@ pub fn mode_label_in(mode: Interpolation, lang: Lang) -> String {
     }
 }
 
+/// The short form of a mode's badge text (`text`, as [`mode_label_in`] words it in `lang`):
+/// "AFFINE", "PERSPECTIVE"; `None` for any other title. A view too narrow for the whole
+/// title shows this, at the size of its neighbour's title, rather than the whole one shrunk.
+pub fn short_mode_label(text: &str, lang: Lang) -> Option<String> {
+    [
+        (Interpolation::Affine, "figure.affine_short"),
+        (Interpolation::Perspective, "figure.perspective_short"),
+    ]
+    .into_iter()
+    .find(|(mode, _)| mode_label_in(*mode, lang) == text)
+    .map(|(_, key)| tr(lang, key))
+}
+
 /// The overlay's other words in `lang`: the difference view's title, the colour bar's unit,
 /// "behind the camera".
 fn words(lang: Lang) -> [String; 3] {
@@ -259,6 +272,29 @@ fn format_scale(v: f32) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The short titles are shorter forms of the mode's own title, in each language; other
+    /// titles (the difference view's, a sample buffer's) have none.
+    #[test]
+    fn a_modes_short_title_is_a_shorter_form_of_its_title() {
+        for lang in [Lang::En, Lang::Zh] {
+            for mode in [Interpolation::Affine, Interpolation::Perspective] {
+                let long = mode_label_in(mode, lang);
+                let short = short_mode_label(&long, lang).expect("a short form");
+                assert!(
+                    short.chars().count() < long.chars().count(),
+                    "{short} / {long}"
+                );
+                let stem: String = short.chars().take(2).collect();
+                assert!(long.starts_with(&stem), "{short} / {long}");
+            }
+            assert_eq!(short_mode_label(&words(lang)[0], lang), None);
+        }
+        assert_eq!(
+            short_mode_label(&mode_label_in(Interpolation::Affine, Lang::Zh), Lang::En),
+            None
+        );
+    }
 
     fn input() -> OverlayInput {
         OverlayInput {

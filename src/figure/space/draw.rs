@@ -433,19 +433,22 @@ pub fn svg_measure(text: &str, size: f32) -> [f32; 2] {
 
 /// Moves labels that would overlap an earlier one: below it, above it, then to the other
 /// side of its anchor point, then further up or down (up to [`SPREAD_STEPS`] lines), each kept
-/// inside `rect`; the first position that overlaps nothing placed wins, else the one that
-/// overlaps the placed labels least (a crowded corner of a small view stays readable).
+/// inside `rect`; the first position that overlaps nothing placed (nor comes nearer one side by
+/// side than [`LABEL_GAP`]) wins, else the one that overlaps the placed labels least (a crowded
+/// corner of a small view stays readable).
 /// `measure` gives a label's width and row height as drawn: a label covers from a quarter size
 /// below its baseline up by its row, and moves by lines a twentieth of a size taller.
-pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4], measure: Measure<'_>) {
+pub(super) fn spread_labels(shapes: &mut Vec<Shape>, rect: [f32; 4], measure: Measure<'_>) {
     let mut placed: Vec<[f32; 4]> = Vec::new();
+    let mut leaders = Vec::new();
     for s in shapes.iter_mut() {
+        let depth = s.depth;
         let ShapeKind::Text {
             at,
             text,
             size,
             anchor,
-            ..
+            colour,
         } = &mut s.kind
         else {
             continue;
@@ -483,7 +486,10 @@ pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4], measure: Measu
         'search: for dy in shifts {
             for a in [*anchor, flipped] {
                 let pos = inside([at[0], at[1] + dy], a);
-                let cost = crate::figure::text::overlap_area(bounds(pos, a), &placed);
+                let [x0, y0, x1, y1] = bounds(pos, a);
+                let gap = LABEL_GAP * *size;
+                let padded = [x0 - gap, y0, x1 + gap, y1];
+                let cost = crate::figure::text::overlap_area(padded, &placed);
                 if best.is_none_or(|(c, _, _)| cost < c) {
                     best = Some((cost, pos, a));
                 }
@@ -493,14 +499,52 @@ pub(super) fn spread_labels(shapes: &mut [Shape], rect: [f32; 4], measure: Measu
             }
         }
         let (_, pos, anc) = best.unwrap_or((0.0, inside(*at, *anchor), *anchor));
+        let home = bounds(*at, *anchor);
+        let moved = bounds(pos, anc);
+        // A label moved clear away from its place: a thin line leads back.
+        if crate::figure::label_place::box_distance(home, moved) > LEADER_AFTER * h {
+            let centre = |b: [f32; 4]| [(b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0];
+            let target = centre(home);
+            let from = nearest_on_box(moved, target);
+            let [r, g, b, _] = colour.0;
+            leaders.push(Shape {
+                kind: ShapeKind::Line {
+                    from,
+                    to: target,
+                    colour: Colour([r, g, b, 150]),
+                    width: 1.0,
+                    dashed: true,
+                },
+                depth,
+            });
+        }
         *at = pos;
         *anchor = anc;
-        placed.push(bounds(pos, anc));
+        placed.push(moved);
     }
+    // Under the labels, so that a line crossing another label does not strike it through.
+    let first_text = shapes
+        .iter()
+        .position(|s| matches!(s.kind, ShapeKind::Text { .. }))
+        .unwrap_or(shapes.len());
+    shapes.splice(first_text..first_text, leaders);
+}
+
+/// The gap, in lines, between where [`spread_labels`] put a label and where it belonged over
+/// which it draws a line back: a label moved two lines (a gap of about one) no longer reads as
+/// its point's; one moved a line, or to the other side of its point, still touches its place.
+const LEADER_AFTER: f32 = 0.5;
+
+/// The point of the box `b` nearest to `p`.
+fn nearest_on_box(b: [f32; 4], p: [f32; 2]) -> [f32; 2] {
+    [p[0].clamp(b[0], b[2]), p[1].clamp(b[1], b[3])]
 }
 
 /// How many lines up or down [`spread_labels`] moves a label looking for a free place.
 const SPREAD_STEPS: usize = 4;
+/// The space [`spread_labels`] keeps between labels side by side, in text sizes: labels that
+/// touched read as one ("z/w=0view depth").
+const LABEL_GAP: f32 = 0.3;
 
 /// The width of `s` at `size` points: the overlay font's for most characters, one em for
 /// CJK ideographs and punctuation (which the overlay font lacks).
@@ -529,5 +573,83 @@ impl SpaceScene {
     /// The projector of `orbit` for this scene into `rect` (`[min_x, min_y, max_x, max_y]`).
     pub fn projector(&self, orbit: Orbit, rect: [f32; 4]) -> Projector {
         Projector::new(orbit, &framed_points(self), rect)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn text_at(at: [f32; 2], text: &str) -> Shape {
+        Shape {
+            kind: ShapeKind::Text {
+                at,
+                text: text.to_string(),
+                size: 15.0,
+                colour: INK,
+                anchor: Anchor2::Start,
+            },
+            depth: 0.0,
+        }
+    }
+
+    /// Five labels at one point: the first stays, the others move, none overlaps another; a
+    /// label moved two lines or more gets a dashed line to where it was, drawn before every
+    /// label, and one moved less (a line, or to the other side of the point) gets none.
+    #[test]
+    fn labels_moved_far_from_their_point_get_a_line_back_to_it() {
+        let home = [100.0, 200.0];
+        let names = ["P", "Q", "eye", "W_P = 1", "view depth"];
+        let mut shapes: Vec<Shape> = names.iter().map(|n| text_at(home, n)).collect();
+        spread_labels(&mut shapes, [0.0, 0.0, 400.0, 400.0], &svg_measure);
+        let texts: Vec<(usize, [f32; 2], String)> = shapes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| match &s.kind {
+                ShapeKind::Text { at, text, .. } => Some((i, *at, text.clone())),
+                _ => None,
+            })
+            .collect();
+        let lines: Vec<(usize, [f32; 2], [f32; 2])> = shapes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| match &s.kind {
+                ShapeKind::Line {
+                    from, to, dashed, ..
+                } => {
+                    assert!(dashed);
+                    Some((i, *from, *to))
+                }
+                _ => None,
+            })
+            .collect();
+        assert_eq!(texts.len(), names.len());
+        assert_eq!(texts[0].1, home, "the first label keeps its place");
+        let boxes: Vec<[f32; 4]> = texts
+            .iter()
+            .map(|(_, at, t)| {
+                let [w, row] = svg_measure(t, 15.0);
+                let bottom = at[1] + 0.25 * 15.0;
+                [at[0], bottom - row, at[0] + w, bottom]
+            })
+            .collect();
+        for (i, a) in boxes.iter().enumerate() {
+            for b in &boxes[i + 1..] {
+                assert_eq!(crate::figure::text::overlap_area(*a, &[*b]), 0.0);
+            }
+        }
+        let line_height = 1.05 * 15.0 + 0.05 * 15.0;
+        let far = texts
+            .iter()
+            .filter(|(_, at, _)| (at[1] - home[1]).abs() > 1.5 * line_height)
+            .count();
+        assert!(far >= 1, "five labels at one point: some move far");
+        assert_eq!(lines.len(), far, "one line per label moved far");
+        let first_text = texts[0].0;
+        for (i, from, to) in &lines {
+            assert!(*i < first_text, "the lines are drawn under the labels");
+            assert!((to[1] - (home[1] + 0.25 * 15.0 - 0.5 * 1.05 * 15.0)).abs() < 1.0);
+            assert!((from[1] - to[1]).abs() > line_height);
+        }
     }
 }

@@ -67,6 +67,14 @@ pub fn retitle(overlay: &mut Overlay, title: &str) {
     }
 }
 
+/// The view's title text, if it has one.
+pub fn title(overlay: &Overlay) -> Option<&str> {
+    overlay.shapes.iter().find_map(|s| match s {
+        Shape::Text { text, .. } if is_title(s) => Some(text.as_str()),
+        _ => None,
+    })
+}
+
 /// Whether `shape` is a view's title: a boxed text above the image's top-left corner.
 pub(super) fn is_title(shape: &Shape) -> bool {
     matches!(shape, Shape::Text { at, offset, background: Some(_), .. }

@@ -8,7 +8,7 @@ mod marks;
 mod quad;
 
 use marks::is_title;
-pub use marks::{drop_titles, retitle, scale_marks};
+pub use marks::{drop_titles, retitle, scale_marks, title};
 
 use crate::figure::overlay::{Overlay, Rgba, Shape, Stroke};
 
@@ -69,6 +69,16 @@ fn fitted(
     let galley = lay(size * figure_text::fit(width, 2.0 * pad, to_box(clip)));
     let outer = figure_text::padded([galley.size().x, galley.size().y], boxed, 1.0);
     (galley, outer)
+}
+
+/// Whether a boxed label of `text` at `size` points fits `clip`'s width unshrunk (as
+/// [`paint`] draws it: shrunk by [`figure_text::fit`] where it does not).
+pub fn fits_unshrunk(painter: &egui::Painter, text: &str, size: f32, clip: Rect) -> bool {
+    let width = painter
+        .layout_no_wrap(text.to_string(), FontId::proportional(size), Color32::WHITE)
+        .size()
+        .x;
+    figure_text::fit(width, 2.0 * LABEL_PAD[0], to_box(clip)) >= 1.0
 }
 
 /// Canvas position `p` as a screen point's coordinates.
