@@ -101,14 +101,17 @@ impl SpaceView {
         } else {
             "space.title"
         };
-        // The title on a line of its own, the buttons under it: in one wrapped row with
-        // them, the row asked the panel for more width than a projector's window gives it,
-        // and the panel took it from the canvas.
-        ui.label(RichText::new(lang.tr(title)).strong());
-        ui.horizontal_wrapped(|ui| {
-            if ui.button(lang.tr("space.reset")).clicked() {
-                self.orbit = Orbit::default();
-            }
+        // Beside the canvas, the title on a line of its own, the buttons under it: in one
+        // wrapped row with them, the row asked the panel for more width than a projector's
+        // window gives it, and the panel took it from the canvas. In the canvas's place, one
+        // row: the buttons first, then the title (cut short, with its whole text as tooltip,
+        // where the row is too narrow).
+        let one_row = enlarged == Some(true);
+        let title = RichText::new(lang.tr(title)).strong();
+        if !one_row {
+            ui.label(title.clone());
+        }
+        let row = |ui: &mut Ui| {
             if let Some(on) = enlarged {
                 let (text, tip) = if on {
                     ("space.shrink", "space.shrink_tip")
@@ -120,7 +123,18 @@ impl SpaceView {
                     .on_hover_text(lang.tr(tip))
                     .clicked();
             }
-        });
+            if ui.button(lang.tr("space.reset")).clicked() {
+                self.orbit = Orbit::default();
+            }
+            if one_row {
+                ui.add(egui::Label::new(title).truncate());
+            }
+        };
+        if one_row {
+            ui.horizontal(row);
+        } else {
+            ui.horizontal_wrapped(row);
+        }
         let body = ui.text_style_height(&egui::TextStyle::Body);
         let lines = 2.0 * body + ui.spacing().item_spacing.y;
         // The hint under the title where the drawing keeps its smallest height below it (the
