@@ -21,7 +21,8 @@
 //!   native dialogs, window screenshots, text sizes, the language the panels show, and the
 //!   recorder (a drag's states) with the animation export's thread.
 //! - Here: `window` (eframe), `apply` (the frame's commands carried out), `layout` (side
-//!   panels, canvas, presentation; `side_panels` is the arithmetic), `shortcuts` (the keyboard) and `access` (what tests read).
+//!   panels, canvas, presentation; `side_panels` is the arithmetic), `shortcuts` (the keyboard)
+//!   and `access` (what tests read).
 //!
 //! The overlays and the difference heatmap are described in [`crate::figure`], which the
 //! exported figures share.
