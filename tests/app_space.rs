@@ -270,5 +270,21 @@ fn on_a_projector_the_3d_view_enlarges_into_the_pictures_place_and_back() {
             (after.width() - small.width()).abs() < 1.0,
             "{lang:?}: a change of the scene brings the picture back: {after:?}"
         );
+        // A quiz (Q, on the pinned pixel) is on the picture: it comes back for it, and stays
+        // after the quiz.
+        h.key_press(egui::Key::V);
+        h.run();
+        assert!(h.query_by_label(&lang.tr("space.shrink")).is_some());
+        h.key_press(egui::Key::Q);
+        h.run();
+        assert!(h.state().quiz_rect().is_some(), "{lang:?}: Q starts a quiz");
+        h.key_press(egui::Key::Q);
+        h.run();
+        assert!(h.state().quiz_rect().is_none(), "{lang:?}: Q ends it");
+        let after_quiz = h.state().space_drawing_rect().expect("the drawing");
+        assert!(
+            (after_quiz.width() - small.width()).abs() < 1.0,
+            "{lang:?}: after a quiz the picture stays: {after_quiz:?}"
+        );
     }
 }

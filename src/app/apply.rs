@@ -139,6 +139,8 @@ impl BaryApp {
                 self.apply_lesson(ctx, c);
             }
             AppCommand::Quiz(c) => {
+                // A quiz is on the picture: it comes back, and stays after the quiz.
+                self.space_full = false;
                 let step = self.lesson_step();
                 self.quiz.apply(c, self.state.view.pinned, step);
             }
