@@ -288,3 +288,48 @@ fn on_a_projector_the_3d_view_enlarges_into_the_pictures_place_and_back() {
         );
     }
 }
+
+/// V pressed while the pointer is on the canvas (the natural way at a lecture), in
+/// presentation mode and not: the 3D view in the picture's place traces the pinned pixel, not
+/// the pixel the pointer was on before the canvas went away (which nothing hovers any more).
+#[test]
+fn the_enlarged_3d_view_traces_the_pinned_pixel_not_the_last_hovered_one() {
+    for present in [false, true] {
+        let mut h = common::app::lecture_with("builtin", 16, barylab::i18n::Lang::En, present);
+        let pinned = h.state().state().view.pinned.expect("step 16 pins a pixel");
+        let view = h.state().canvas().views[0];
+        let other = [pinned[0] + 40, pinned[1].saturating_sub(40)];
+        let at = view.transform.to_screen(DVec2::new(
+            f64::from(other[0]) + 0.5,
+            f64::from(other[1]) + 0.5,
+        ));
+        h.hover_at(at);
+        h.run();
+        assert_eq!(
+            h.state().canvas().hover,
+            Some(other),
+            "the pointer is on {other:?}"
+        );
+        h.key_press(egui::Key::V);
+        h.run();
+        let back = if present {
+            "V: back to the picture"
+        } else {
+            "Back to the picture"
+        };
+        assert!(
+            h.query_by_label(back).is_some(),
+            "present {present}: V enlarges"
+        );
+        assert_eq!(
+            h.state().canvas().hover,
+            None,
+            "present {present}: nothing is hovered"
+        );
+        let line = abc_line(&h);
+        assert!(
+            h.query_by_label(&line).is_some(),
+            "present {present}: the view shows the pinned pixel's {line}"
+        );
+    }
+}

@@ -34,7 +34,8 @@ pub struct SpaceView {
     /// The orbit camera.
     pub orbit: Orbit,
     cached: Option<(SceneKey, SpaceScene)>,
-    /// Where its panel was laid out last (beside the canvas, not presenting).
+    /// Where its panel was laid out last (beside the canvas, or in its place when enlarged;
+    /// not presenting).
     pub(in crate::app) panel_rect: Option<egui::Rect>,
     /// Where the drawing was laid out last (for tests: `BaryApp::space_drawing_rect`).
     pub(in crate::app) drawing_rect: Option<egui::Rect>,
@@ -363,6 +364,11 @@ impl crate::app::BaryApp {
         if !self.state.view.space || (!wide && !self.space_full) {
             return false;
         }
+        if !wide {
+            // The canvas is not drawn: nothing on it is hovered (else the view would trace the
+            // pixel the pointer was on when V was pressed, not the pinned one).
+            self.canvas.hover = None;
+        }
         let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
         let output = self.canvas.output.as_ref();
         let view = &mut self.space_view;
@@ -428,6 +434,8 @@ impl crate::app::BaryApp {
         if !(self.space_full && self.state.view.space) {
             return false;
         }
+        // The canvas is not drawn: nothing on it is hovered (as in presentation mode).
+        self.canvas.hover = None;
         let report = self.reports.hover.as_ref().or(self.reports.pin.as_ref());
         let output = self.canvas.output.as_ref();
         let view = &mut self.space_view;
