@@ -44,7 +44,7 @@ use crate::raster::framebuffer;
 use crate::raster::interpolate::{self, Derivatives, Fragment};
 use crate::raster::project::{self, SUBPIXEL, Viewport};
 use crate::raster::render::{self, ClipMesh, PreparedTriangle, RenderError, RenderSettings};
-use crate::raster::setup::{self, TriangleSetup};
+use crate::raster::setup::{self, TriangleSetup, pixel_centre};
 use crate::raster::shade::{self, ShadeParams};
 use crate::raster::texture::Texture;
 use crate::scene::{Scene, vertex_name};
@@ -381,11 +381,11 @@ impl<'a> Prober<'a> {
 
     /// What the rasterizer computes for fan triangle `si` of triangle `ti` at pixel (x, y),
     /// given its edge values `edges` there: the screen weights ([`setup::WeightPlanes`]) and
-    /// the fragment ([`interpolate::fragment_from_weights`], with the level of detail).
+    /// the fragment ([`interpolate::fragment_at_window`], with the level of detail).
     fn sampled(&self, ti: usize, si: usize, edges: [i64; 3], (x, y): (u32, u32)) -> Sampled {
         let s = &self.triangles[ti].setups[si];
         let weights = s.weights.at_pixel(x, y);
-        let frag = interpolate::fragment_from_weights(s, edges, weights).map(|mut f| {
+        let frag = interpolate::fragment_at_window(s, edges, pixel_centre(x, y)).map(|mut f| {
             shade::texture_footprint(&mut f, s, (x, y), &self.params, &self.texture);
             f
         });

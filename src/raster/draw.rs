@@ -8,7 +8,7 @@ use super::framebuffer::{RowBand, depth_passes};
 use super::interpolate::{self, Fragment};
 use super::lanes::{self, DifferenceTarget, LaneShading, Target, UvTarget, VectorLevel};
 use super::settings::Rasterizer;
-use super::setup::{TriangleSetup, sample_point};
+use super::setup::{TriangleSetup, pixel_centre, sample_point};
 use super::shade::{ShadeParams, Shading, shade, texture_footprint};
 use super::texture::{Filter, Texture, texel_difference};
 
@@ -191,8 +191,8 @@ pub(super) fn rasterize(
                     &mut |x, y, e| per_pixel.push((x, y, e)),
                 );
                 for (x, y, e) in per_pixel {
-                    let l = setup.weights.at_pixel(x, y);
-                    if let Some(frag) = interpolate::fragment_from_weights(setup, e, l) {
+                    let p = pixel_centre(x, y);
+                    if let Some(frag) = interpolate::fragment_at_window(setup, e, p) {
                         write(band, x, y, &frag);
                     }
                 }
@@ -216,8 +216,8 @@ pub(super) fn rasterize(
                     if !setup.covers(&e) {
                         continue;
                     }
-                    let l = setup.weights.at_pixel(x, y);
-                    if let Some(frag) = interpolate::fragment_from_weights(setup, e, l) {
+                    let p = pixel_centre(x, y);
+                    if let Some(frag) = interpolate::fragment_at_window(setup, e, p) {
                         write(band, x, y, &frag);
                     }
                 }

@@ -1,8 +1,8 @@
 //! Interpolation at a sample: screen-space weights, perspective-correct weights, attributes.
 
-use glam::Vec2;
+use glam::{DVec2, Vec2};
 
-use super::setup::{TriangleSetup, sample_point};
+use super::setup::{ScreenPlane, TriangleSetup, WeightPlanes, pixel_centre, sample_point};
 use super::varying::Varyings;
 
 /// How `smooth` attributes are interpolated.
@@ -18,24 +18,87 @@ pub enum Interpolation {
     Perspective,
 }
 
-/// Perspective-correct weights from screen weights `l` and the vertices' 1/w:
-/// `a_i = (l_i / w_i) / (l_0 / w_0 + l_1 / w_1 + l_2 / w_2)`.
+/// Perspective-correct weights from screen weights `l`, the vertices' 1/w and 1/w at the
+/// sample (`sum l_i / w_i`, which the fragment takes from its plane, [`ScreenPlane`]):
+/// `p_i = (l_i / w_i) * (1 / (1/w))`. `None` unless that 1/w is positive and finite.
 ///
 /// ```
 /// use barylab::raster::interpolate::perspective_weights;
 /// // Halfway on screen between a vertex at w = 1 and one at w = 3: 1/w_P = (1 + 1/3) / 2,
 /// // so w_P = 1.5 and the near vertex gets weight (0.5 / 1) * 1.5 = 0.75.
-/// let p = perspective_weights(&[0.5, 0.5, 0.0], &[1.0, 1.0 / 3.0, 1.0]).unwrap();
+/// let inv_w = [1.0, 1.0 / 3.0, 1.0];
+/// let p = perspective_weights(&[0.5, 0.5, 0.0], &inv_w, (1.0 + 1.0 / 3.0) / 2.0).unwrap();
 /// assert!((p[0] - 0.75).abs() < 1e-15 && (p[1] - 0.25).abs() < 1e-15 && p[2] == 0.0);
 /// ```
-pub fn perspective_weights(l: &[f64; 3], inv_w: &[f64; 3]) -> Option<[f64; 3]> {
-    let q = [l[0] * inv_w[0], l[1] * inv_w[1], l[2] * inv_w[2]];
-    let sum = q[0] + q[1] + q[2];
-    if !(sum > 0.0 && sum.is_finite()) {
-        return None;
+pub fn perspective_weights(l: &[f64; 3], inv_w: &[f64; 3], one_over_w: f64) -> Option<[f64; 3]> {
+    let inv = perspective_divisor(one_over_w)?;
+    Some([
+        l[0] * inv_w[0] * inv,
+        l[1] * inv_w[1] * inv,
+        l[2] * inv_w[2] * inv,
+    ])
+}
+
+/// `1 / (1/w)`, the one division of a perspective-correct sample, when 1/w is positive and
+/// finite (it is at every sample inside a clipped triangle: all its w > 0).
+#[inline(always)]
+pub fn perspective_divisor(one_over_w: f64) -> Option<f64> {
+    (one_over_w > 0.0 && one_over_w < f64::INFINITY).then(|| 1.0 / one_over_w)
+}
+
+/// The planes a triangle interpolates by ([`ScreenPlane`]): `1/w`, the window depth, and
+/// uv of both attribute sets: `u/w`, `v/w` of the `smooth` uv (divided by w: perspective
+/// correct) and `u`, `v` of the `noperspective` uv.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Planes {
+    /// `1/w`: vertex values `1 / w_i`.
+    pub inv_w: ScreenPlane,
+    /// Window depth z/w: vertex values `d_i`.
+    pub depth: ScreenPlane,
+    /// `u/w` and `v/w`: vertex values `u_i * (1 / w_i)` of the `smooth` uv.
+    pub uv_over_w: [ScreenPlane; 2],
+    /// `u` and `v` of the `noperspective` uv.
+    pub uv_affine: [ScreenPlane; 2],
+}
+
+impl Planes {
+    /// The planes of a set-up triangle.
+    pub fn of(setup: &TriangleSetup) -> Self {
+        let w = &setup.weights;
+        let inv_w = setup.v.map(|v| v.inv_w);
+        let smooth = setup.v.map(|v| v.varyings.uv());
+        let affine = setup.v.map(|v| v.noperspective.uv());
+        Self::new(
+            w,
+            (inv_w, setup.v.map(|v| v.depth)),
+            smooth.map(|uv| [f64::from(uv.x), f64::from(uv.y)]),
+            affine.map(|uv| [f64::from(uv.x), f64::from(uv.y)]),
+        )
     }
-    let inv = 1.0 / sum;
-    Some([q[0] * inv, q[1] * inv, q[2] * inv])
+
+    /// The planes from the weights, each vertex's 1/w and depth, and both uv sets per vertex.
+    #[inline(always)]
+    pub fn new(
+        w: &WeightPlanes,
+        (inv_w, depth): ([f64; 3], [f64; 3]),
+        smooth: [[f64; 2]; 3],
+        affine: [[f64; 2]; 3],
+    ) -> Self {
+        let over_w = |c: usize| {
+            w.plane([
+                smooth[0][c] * inv_w[0],
+                smooth[1][c] * inv_w[1],
+                smooth[2][c] * inv_w[2],
+            ])
+        };
+        let plain = |c: usize| w.plane([affine[0][c], affine[1][c], affine[2][c]]);
+        Self {
+            inv_w: w.plane(inv_w),
+            depth: w.plane(depth),
+            uv_over_w: [over_w(0), over_w(1)],
+            uv_affine: [plain(0), plain(1)],
+        }
+    }
 }
 
 /// Everything interpolated at one covered sample of one (clipped) triangle.
@@ -44,7 +107,7 @@ pub struct Fragment {
     /// The three edge values at the sample (snapped, exact: they decided coverage).
     pub edges: [i64; 3],
     /// Screen-space weights of the rasterized triangle's vertices, from the unsnapped
-    /// positions ([`WeightPlanes`](super::setup::WeightPlanes)).
+    /// positions ([`WeightPlanes`]).
     pub screen: [f64; 3],
     /// Perspective-correct weights of the rasterized triangle's vertices.
     pub perspective: [f64; 3],
@@ -89,26 +152,29 @@ impl Fragment {
 }
 
 /// Interpolates everything at the centre of pixel (x, y) (the renderer and the probe both
-/// call this): the screen weights from [`WeightPlanes::at_pixel`], then everything else from
-/// them ([`fragment_from_weights`]). Returns `None` if the perspective denominator is not
-/// positive, which cannot happen for a sample inside a clipped triangle (all w > 0).
-///
-/// [`WeightPlanes::at_pixel`]: super::setup::WeightPlanes::at_pixel
+/// call this): [`fragment_at_window`] at `(x + 0.5, y + 0.5)`. Returns `None` if 1/w is not
+/// positive there, which cannot happen for a sample inside a clipped triangle (all w > 0).
 pub fn fragment(setup: &TriangleSetup, x: u32, y: u32) -> Option<Fragment> {
     let edges = setup.edge_values(sample_point(x, y));
-    fragment_from_weights(setup, edges, setup.weights.at_pixel(x, y))
+    fragment_at_window(setup, edges, pixel_centre(x, y))
 }
 
-/// Everything at a sample from its edge values and screen weights `l`:
-/// `p_i = (l_i / w_i) / sum_k (l_k / w_k)`, `1/w = sum l_i / w_i`, `depth = sum l_i d_i`,
-/// `noperspective` attributes `sum l_i f_i`, `smooth` ones `sum p_i f_i`.
-pub fn fragment_from_weights(
-    setup: &TriangleSetup,
-    edges: [i64; 3],
-    l: [f64; 3],
-) -> Option<Fragment> {
+/// Everything at a sample from its edge values and its window position `p` (pixels), with
+/// the weights' row terms at `p_y` and column terms at `p_x` ([`WeightPlanes`]):
+/// the screen weights `l_i`; `1/w`, the depth and uv from their planes ([`Planes`]): `1/w`,
+/// `depth`, `noperspective` uv `u`, `v`, and `smooth` uv `(u/w) * (1 / (1/w))`; the
+/// perspective weights `p_i = (l_i / w_i) * (1 / (1/w))` ([`perspective_weights`]); the
+/// other attributes `sum l_i f_i` (`noperspective`) and `sum p_i f_i` (`smooth`).
+pub fn fragment_at_window(setup: &TriangleSetup, edges: [i64; 3], p: DVec2) -> Option<Fragment> {
+    let w = &setup.weights;
+    let (rows, columns) = (w.row_terms(p.y), w.column_terms(p.x));
+    let l = [0, 1, 2].map(|i| w.weight_of_terms(rows[i], columns[i]));
+    let planes = Planes::of(setup);
+    let at = |plane: &ScreenPlane| plane.part(&rows) - plane.part(&columns);
+    let one_over_w = at(&planes.inv_w);
+    let inv = perspective_divisor(one_over_w)?;
     let inv_w = [setup.v[0].inv_w, setup.v[1].inv_w, setup.v[2].inv_w];
-    let p = perspective_weights(&l, &inv_w)?;
+    let p = perspective_weights(&l, &inv_w, one_over_w)?;
     let vars = [
         setup.v[0].varyings,
         setup.v[1].varyings,
@@ -119,25 +185,28 @@ pub fn fragment_from_weights(
         setup.v[1].noperspective,
         setup.v[2].noperspective,
     ];
+    let [u_w, v_w] = planes.uv_over_w.map(|plane| (at(&plane) * inv) as f32);
+    let [u, v] = planes.uv_affine.map(|plane| at(&plane) as f32);
     Some(Fragment {
         edges,
         screen: l,
         perspective: p,
-        depth: depth_at(setup, &l),
-        inv_w: l[0] * inv_w[0] + l[1] * inv_w[1] + l[2] * inv_w[2],
-        affine: Varyings::weighted(&l, &noperspective),
+        depth: at(&planes.depth),
+        inv_w: one_over_w,
+        affine: Varyings::weighted(&l, &noperspective).with_uv(Vec2::new(u, v)),
         edge_weights: edge_weights(setup, &l),
-        correct: Varyings::weighted(&p, &vars),
+        correct: Varyings::weighted(&p, &vars).with_uv(Vec2::new(u_w, v_w)),
         lod: 0.0,
         duv: [Vec2::ZERO; 2],
     })
 }
 
-/// Window depth z/w at screen weights `l`, linear on screen: `sum l_i d_i` (the depth of a
-/// fragment, and of each sample under multisampling).
+/// Window depth z/w at window position `p`, linear on screen, from its plane
+/// ([`Planes::depth`]): the depth of a fragment, and of each sample under multisampling.
 #[inline]
-pub fn depth_at(setup: &TriangleSetup, l: &[f64; 3]) -> f64 {
-    l[0] * setup.v[0].depth + l[1] * setup.v[1].depth + l[2] * setup.v[2].depth
+pub fn depth_at(setup: &TriangleSetup, p: DVec2) -> f64 {
+    let depth = setup.weights.plane(setup.v.map(|v| v.depth));
+    setup.weights.value(&depth, p)
 }
 
 /// [`Fragment::edge_weights`]: `sum_k l_k b_k` with `b_k` the source weights (`smooth`) of

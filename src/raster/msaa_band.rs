@@ -75,7 +75,7 @@ thread_local! {
 }
 
 /// Whether every depth a triangle can give a sample within `bounds` passes the depth test
-/// against the clear depth 1. The depth `sum l_i d_i` is affine in the window position, so
+/// against the clear depth 1. The depth (`sum l_i d_i`, from its plane) is affine in the window position, so
 /// its largest value over the bounds' rectangle is at a corner; the margin covers the
 /// rounding of the `f64` evaluation (relative to the size of its terms) and of the `f32`
 /// that is stored.
@@ -90,7 +90,7 @@ fn below_clear_depth(setup: &TriangleSetup, b: &PixelBounds) -> bool {
     corners.iter().all(|&(x, y)| {
         let p = DVec2::new(f64::from(x), f64::from(y));
         let l = w.at(p);
-        let d = interpolate::depth_at(setup, &l);
+        let d = interpolate::depth_at(setup, p);
         let size: f64 = (0..3)
             .map(|i| {
                 let terms = (w.dir[i].x * (p.y - w.start[i].y)).abs()
@@ -465,19 +465,18 @@ fn same_run(owners: &[u32], owner: u32) -> usize {
 /// [`sample_depth`] of one triangle along a row of pixels, for the sample at one offset:
 /// the same `f64` operations, in the same order, several pixels at a time (so the same
 /// depths, bit for bit). The sample of pixel `x` lies at window `p_x = x + o_x / 256`
-/// (exact), `l_i = (d_x,i (p_y - S_y,i) - d_y,i (p_x - S_x,i)) (1 / area2)` and the depth
-/// is `(l_0 D_0 + l_1 D_1) + l_2 D_2`.
+/// (exact); the depth is its plane's ([`ScreenPlane`](super::setup::ScreenPlane)) row part
+/// `R` at `p_y` minus its column part `(c_0 k_0 + c_1 k_1) + c_2 k_2` with the column terms
+/// `c_i = d_y,i (p_x - S_x,i)`.
 struct DepthRow {
-    /// Each weight's row term `d_x,i (p_y - S_y,i)` ([`WeightPlanes::row_term`](super::setup::WeightPlanes::row_term)).
-    terms: [f64; 3],
+    /// The depth plane's row part at the samples' `p_y`.
+    row: f64,
     /// `d_y,i`.
     dir_y: [f64; 3],
     /// `S_x,i`.
     start_x: [f64; 3],
-    /// `1 / area2`.
-    inv_area2: f64,
-    /// The vertices' window depths `D_i`.
-    depth: [f64; 3],
+    /// The depth plane's `k_i = D_i * (1 / area2)`.
+    k: [f64; 3],
     /// `o_x / 256`: the sample's x within its pixel.
     offset_x: f64,
 }
@@ -487,12 +486,12 @@ impl DepthRow {
     fn new(setup: &TriangleSetup, y: u32, offset: I64Vec2) -> Self {
         let w = &setup.weights;
         let p = window_position(sample_at(0, y, offset));
+        let plane = w.plane(setup.v.map(|v| v.depth));
         Self {
-            terms: [0, 1, 2].map(|i| w.row_term(i, p.y)),
+            row: plane.part(&w.row_terms(p.y)),
             dir_y: w.dir.map(|d| d.y),
             start_x: w.start.map(|s| s.x),
-            inv_area2: w.inv_area2,
-            depth: setup.v.map(|v| v.depth),
+            k: plane.k,
             offset_x: p.x,
         }
     }
@@ -501,9 +500,8 @@ impl DepthRow {
     #[inline(always)]
     fn at(&self, x: f64) -> f32 {
         let px = x + self.offset_x;
-        let l =
-            |i: usize| (self.terms[i] - self.dir_y[i] * (px - self.start_x[i])) * self.inv_area2;
-        (l(0) * self.depth[0] + l(1) * self.depth[1] + l(2) * self.depth[2]) as f32
+        let c = |i: usize| self.dir_y[i] * (px - self.start_x[i]);
+        (self.row - (c(0) * self.k[0] + c(1) * self.k[1] + c(2) * self.k[2])) as f32
     }
 
     /// Writes the depths of pixels `x0..x0 + out.len()` into `out`, with AVX2 when `vector`

@@ -2,12 +2,12 @@
 //! the resolve. The positions, the location rule and the resolve formula are
 //! [`sample`](super::sample)'s; coverage uses the triangle's own snapped edge functions and
 //! tie rule at each sample, values the same interpolation functions as a single sample
-//! ([`interpolate::fragment_from_weights`], [`interpolate::depth_at`]).
+//! ([`interpolate::fragment_at_window`], [`interpolate::depth_at`]).
 //!
 //! Per pixel and triangle ([`draw_pixel`]): the samples the triangle covers; under MSAA one
 //! fragment at the centre or the centroid ([`centroid_sample`]), shaded once, its colour
 //! written to every covered sample that passes the depth test, each with its own depth
-//! `sum l_i d_i` at the sample; under supersampling, or at the `sample` location, every
+//! from the depth's plane at the sample; under supersampling, or at the `sample` location, every
 //! covered sample interpolated and shaded at its own position. The render driver
 //! ([`render`](mod@super::render)) sends a multisampled render here and a single-sample one to
 //! the usual path, which stays as it was.
@@ -104,14 +104,10 @@ pub fn coverage(setup: &TriangleSetup, x: u32, y: u32, offsets: &[I64Vec2]) -> u
 }
 
 /// Everything interpolated at a position `p` (1/256 pixel; inside the triangle or not):
-/// the edge values there and the screen weights at `p / 256`, through
-/// [`interpolate::fragment_from_weights`]; with `flat`, the provoking vertex's attributes.
+/// the edge values there and [`interpolate::fragment_at_window`] at `p / 256`; with `flat`,
+/// the provoking vertex's attributes.
 pub fn fragment_at(setup: &TriangleSetup, p: I64Vec2, flat: Option<&Varyings>) -> Option<Fragment> {
-    let frag = interpolate::fragment_from_weights(
-        setup,
-        setup.edge_values(p),
-        setup.weights.at(window_position(p)),
-    )?;
+    let frag = interpolate::fragment_at_window(setup, setup.edge_values(p), window_position(p))?;
     Some(match flat {
         Some(v) => frag.flat(v),
         None => frag,
@@ -162,10 +158,9 @@ pub(super) fn shared_shading(
 }
 
 /// The window depth of the sample at `offset` in pixel (x, y) under a triangle:
-/// `sum l_i d_i` with the screen weights at the sample ([`interpolate::depth_at`]), as `f32`.
+/// its plane at the sample ([`interpolate::depth_at`]), as `f32`.
 pub(super) fn sample_depth(setup: &TriangleSetup, x: u32, y: u32, offset: I64Vec2) -> f32 {
-    let l = setup.weights.at(window_position(sample_at(x, y, offset)));
-    interpolate::depth_at(setup, &l) as f32
+    interpolate::depth_at(setup, window_position(sample_at(x, y, offset))) as f32
 }
 
 /// Draws one triangle (source triangle `source`, with its `flat` attributes if any) into the

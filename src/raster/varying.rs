@@ -48,6 +48,14 @@ impl Varyings {
         self
     }
 
+    /// The same attributes with `uv` in its slots (the fragment's uv comes from its planes,
+    /// [`Planes`](super::interpolate::Planes)).
+    pub fn with_uv(mut self, uv: Vec2) -> Self {
+        self.0[SLOT_UV] = uv.x;
+        self.0[SLOT_UV + 1] = uv.y;
+        self
+    }
+
     /// The interpolated view-space normal (not renormalized: interpolation shortens it).
     pub fn normal(&self) -> Vec3 {
         Vec3::new(

@@ -193,3 +193,36 @@ impl Iterator for Blocks<'_> {
         }
     }
 }
+
+/// The row parts of four planes ([`ScreenPlane::part`] of the weights' row terms) for the
+/// rows of one row of blocks, each made when first asked for.
+pub(super) struct RowParts {
+    pub(super) first: u32,
+    made: u32,
+    parts: [[f64; 4]; BLOCK_ROWS as usize],
+}
+
+impl RowParts {
+    /// For the row of blocks from row `first`.
+    #[inline(always)]
+    pub(super) fn new(first: u32) -> Self {
+        Self {
+            first,
+            made: 0,
+            parts: [[0.0; 4]; BLOCK_ROWS as usize],
+        }
+    }
+
+    /// The row parts of `planes` at row `y` (pixel centres: `y + 0.5`).
+    #[inline(always)]
+    pub(super) fn at(&mut self, y: u32, planes: &[ScreenPlane; 4], w: &WeightPlanes) -> [f64; 4] {
+        let r = (y - self.first) as usize;
+        if self.made & (1 << r) == 0 {
+            self.made |= 1 << r;
+            let rows = w.row_terms(f64::from(y) + 0.5);
+            let part = |j: usize| planes[j].part(&rows);
+            self.parts[r] = [part(0), part(1), part(2), part(3)];
+        }
+        self.parts[r]
+    }
+}

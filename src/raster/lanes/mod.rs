@@ -58,11 +58,13 @@ use std::sync::atomic::{AtomicU8, Ordering};
 use glam::Vec3;
 
 use super::framebuffer::depth_passes;
-use super::interpolate::Interpolation;
+use super::interpolate::{Interpolation, Planes};
 use super::project::SUBPIXEL;
 use super::scanline::row_span_of;
 use super::settings::Rasterizer;
-use super::setup::{Edge, PixelBounds, TriangleSetup, WeightPlanes, source_weight_gradients};
+use super::setup::{
+    Edge, PixelBounds, ScreenPlane, TriangleSetup, WeightPlanes, source_weight_gradients,
+};
 use super::shade::{
     WIRE_COLOR, WIRE_HALO_COLOR, depth_grey, lambert_rgba8, normal_rgba8, on_wire_edge,
     on_wire_halo, unorm8,
@@ -80,7 +82,7 @@ mod scanline;
 mod triangle;
 
 pub use blocks::EdgePlanes;
-use blocks::{Block, Blocks};
+use blocks::{Block, Blocks, RowParts};
 pub use paths::Lanes;
 use sampler::Sampler;
 use scanline::Stepped;
@@ -320,48 +322,62 @@ fn channel3(s: &Samples, first: usize, k: usize) -> Vec3 {
     )
 }
 
-/// The screen weights of the eight pixels `x, x + 1, ...` of row `y`, as
-/// [`WeightPlanes::at_pixel`] computes them.
+/// The weights' row terms of row `y` and column terms of the eight pixels `x, x + 1, ...`
+/// ([`WeightPlanes::row_terms`], [`WeightPlanes::column_terms`], at pixel centres).
 #[inline(always)]
-fn row_weights(w: &WeightPlanes, x: u32, y: u32) -> [F64s; 3] {
-    let py = f64::from(y) + 0.5;
-    let mut l = [[0.0; LANES]; 3];
-    for i in 0..3 {
-        let row = w.row_term(i, py);
-        for k in 0..LANES {
-            l[i][k] = w.weight(i, row, (f64::from(x) + OFFSETS[k]) + 0.5);
-        }
+fn row_terms(w: &WeightPlanes, x: u32, y: u32) -> ([f64; 3], [[f64; 3]; LANES]) {
+    let rows = w.row_terms(f64::from(y) + 0.5);
+    let mut columns = [[0.0; 3]; LANES];
+    for (k, c) in columns.iter_mut().enumerate() {
+        *c = w.column_terms((f64::from(x) + OFFSETS[k]) + 0.5);
     }
-    l
+    (rows, columns)
 }
 
-/// From screen weights, exactly as `interpolate::fragment` computes them:
-/// `q_i = l_i / w_i`, `p_i = q_i / sum q`, `uv = sum w_i uv_i` with the mode's weights,
-/// `depth = sum l_i d_i`; a sample is valid when `sum q` is positive and finite.
+/// Everything of eight samples from the weights' terms, exactly as
+/// [`interpolate::fragment_at_window`](super::interpolate::fragment_at_window) computes it:
+/// `1/w`, the depth and uv from their planes (`R - C`), valid where `1/w` is positive and
+/// finite; the screen weights `l_i = (row_i - column_i) / area2`, the perspective weights
+/// `p_i = (l_i / w_i) * (1 / (1/w))` and the channels and wireframe from them.
 #[inline(always)]
-fn from_weights(lw: &[F64s; 3], c: &Constants, mode: Interpolation) -> Samples {
+fn from_terms(
+    rows: &[f64; 3],
+    columns: &[[f64; 3]; LANES],
+    c: &Constants,
+    mode: Interpolation,
+) -> Samples {
     let mut out = Samples::new();
+    let planes = &c.attrs;
+    let uv = c.uv_planes(mode);
     for k in 0..LANES {
-        let l = [lw[0][k], lw[1][k], lw[2][k]];
-        let q = [l[0] * c.inv_w[0], l[1] * c.inv_w[1], l[2] * c.inv_w[2]];
-        let sum = q[0] + q[1] + q[2];
-        out.ok[k] = sum > 0.0 && sum < f64::INFINITY;
-        let inv = 1.0 / sum;
-        if let Some(b) = &c.both_uv {
-            let p = [q[0] * inv, q[1] * inv, q[2] * inv];
-            for (j, x) in b.iter().enumerate() {
-                let w = if j < 2 { &l } else { &p };
-                out.both_uv[j][k] = (w[0] * x[0] + w[1] * x[1] + w[2] * x[2]) as f32;
+        let col = &columns[k];
+        let at = |plane: &ScreenPlane| plane.part(rows) - plane.part(col);
+        let l: [f64; 3] = std::array::from_fn(|i| c.weights.weight_of_terms(rows[i], col[i]));
+        let one_over_w = at(&planes.inv_w);
+        out.ok[k] = one_over_w > 0.0 && one_over_w < f64::INFINITY;
+        let inv = 1.0 / one_over_w;
+        if c.both_uv {
+            let [ua, va] = planes.uv_affine.map(|p| at(&p) as f32);
+            let [us, vs] = planes.uv_over_w.map(|p| (at(&p) * inv) as f32);
+            for (j, x) in [ua, va, us, vs].into_iter().enumerate() {
+                out.both_uv[j][k] = x;
             }
         }
+        let (u, v) = (at(&uv[0]), at(&uv[1]));
+        (out.u[k], out.v[k]) = match mode {
+            Interpolation::Perspective => ((u * inv) as f32, (v * inv) as f32),
+            Interpolation::Affine => (u as f32, v as f32),
+        };
+        out.depth64[k] = at(&planes.depth);
+        out.depth[k] = out.depth64[k] as f32;
         let w = match mode {
-            Interpolation::Perspective => [q[0] * inv, q[1] * inv, q[2] * inv],
+            Interpolation::Perspective => [
+                l[0] * c.inv_w[0] * inv,
+                l[1] * c.inv_w[1] * inv,
+                l[2] * c.inv_w[2] * inv,
+            ],
             Interpolation::Affine => l,
         };
-        out.u[k] = (w[0] * c.u[0] + w[1] * c.u[1] + w[2] * c.u[2]) as f32;
-        out.v[k] = (w[0] * c.v[0] + w[1] * c.v[1] + w[2] * c.v[2]) as f32;
-        out.depth64[k] = l[0] * c.depth[0] + l[1] * c.depth[1] + l[2] * c.depth[2];
-        out.depth[k] = out.depth64[k] as f32;
         for ch in 0..c.used_channels {
             let x = &c.channels[ch];
             out.channels[ch][k] = (w[0] * x[0] + w[1] * x[1] + w[2] * x[2]) as f32;
@@ -488,8 +504,8 @@ fn edge_triangle_impl(
             }
             match &sampler {
                 Some(sampler) => {
-                    let l = row_weights(&consts.weights, bx, y);
-                    let mut s = from_weights(&l, consts, mode);
+                    let (rows, columns) = row_terms(&consts.weights, bx, y);
+                    let mut s = from_terms(&rows, &columns, consts, mode);
                     for k in 0..LANES {
                         s.ok[k] &= covered[k];
                     }

@@ -36,9 +36,13 @@ pub(super) struct Constants {
     pub(super) depth: [f64; 3],
     pub(super) u: [f64; 3],
     pub(super) v: [f64; 3],
-    /// uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]` per vertex, when
-    /// the target wants them.
-    pub(super) both_uv: Option<[[f64; 3]; 4]>,
+    /// The planes of `1/w`, the depth and both uv sets ([`Planes`]), as the full render
+    /// evaluates them: the edge-function lanes interpolate with these; the scanline lanes
+    /// step the weights' sums above.
+    pub(super) attrs: Planes,
+    /// Whether the target wants uv of both attribute sets, `[u_affine, v_affine, u_smooth,
+    /// v_smooth]` ([`Planes::uv_affine`], [`Planes::uv_over_w`]).
+    pub(super) both_uv: bool,
     /// `channels[c][k]`: channel `c` of vertex `k`: the vertex colour, the source weights or
     /// the normal in 0..3, and the normal in 3..6 for Lambert shading.
     pub(super) channels: [[f64; 3]; CHANNELS],
@@ -94,7 +98,13 @@ impl Constants {
         depth: [0.0; 3],
         u: [0.0; 3],
         v: [0.0; 3],
-        both_uv: None,
+        attrs: Planes {
+            inv_w: ScreenPlane::ZERO,
+            depth: ScreenPlane::ZERO,
+            uv_over_w: [ScreenPlane::ZERO; 2],
+            uv_affine: [ScreenPlane::ZERO; 2],
+        },
+        both_uv: false,
         channels: [[0.0; 3]; CHANNELS],
         used_channels: 0,
         wire: None,
@@ -128,7 +138,31 @@ impl Constants {
             Attribute::Normal => vary(k).normal().to_array(),
         });
         self.set_wire(wireframe, verts.smooth.map(|v| v.bary()));
-        self.both_uv = None;
+        let uv_of = |v: &Varyings| {
+            let uv = v.uv();
+            [f64::from(uv.x), f64::from(uv.y)]
+        };
+        let smooth = verts.smooth.map(|v| uv_of(&v));
+        let affine = verts.noperspective.map_or(smooth, |n| n.map(|v| uv_of(&v)));
+        self.attrs = Planes::new(weights, (verts.inv_w, verts.depth), smooth, affine);
+        self.both_uv = false;
+    }
+
+    /// The planes of the mode's uv: `u/w`, `v/w` (perspective-correct, divided by `1/w` per
+    /// sample) or `u`, `v` (affine).
+    #[inline(always)]
+    pub(super) fn uv_planes(&self, mode: Interpolation) -> &[ScreenPlane; 2] {
+        match mode {
+            Interpolation::Perspective => &self.attrs.uv_over_w,
+            Interpolation::Affine => &self.attrs.uv_affine,
+        }
+    }
+
+    /// Whether the shading or the wireframe reads the screen weights (texture and depth
+    /// shading without the wireframe read only the planes).
+    #[inline(always)]
+    pub(super) fn reads_weights(&self) -> bool {
+        self.used_channels > 0 || self.wire.is_some()
     }
 
     /// [`Constants::set`] for a triangle the clipper left whole, straight from its mesh
@@ -155,12 +189,11 @@ impl Constants {
             Attribute::Normal => verts[k].normal.to_array(),
         });
         self.set_wire(wireframe, ONE_HOT);
-        // Both attribute sets are the same: the uvs twice (as `both_uv` gives them).
-        self.both_uv = if uv {
-            Some([self.u, self.v, self.u, self.v])
-        } else {
-            None
-        };
+        // Both attribute sets are the same: the vertices' own uv.
+        let uv_k = |k: usize| [self.u[k], self.v[k]];
+        let both = [uv_k(0), uv_k(1), uv_k(2)];
+        self.attrs = Planes::new(&self.weights, (inv_w, depth), both, both);
+        self.both_uv = uv;
     }
 
     /// The three vertices' uv.
@@ -280,9 +313,7 @@ impl LaneTriangle {
         let mode = shading.map_or(Interpolation::Perspective, |s| s.mode);
         let wire = shading.is_some_and(|s| s.wireframe);
         self.consts.set(weights, verts, mode, wire, color);
-        if uv {
-            self.consts.both_uv = Some(both_uv(verts));
-        }
+        self.consts.both_uv = uv;
         self.planes = EdgePlanes::from_edges(edges);
         self.edges = *edges;
         self.bounds = bounds;
@@ -357,22 +388,4 @@ impl LaneTriangle {
         let near = |e: &Edge| e.start.x.abs() < NEAR && e.start.y.abs() < NEAR;
         self.edges.iter().all(near) || self.planes.exact_over(&self.bounds)
     }
-}
-
-/// The vertices' uv of both attribute sets, `[u_affine, v_affine, u_smooth, v_smooth]`
-/// (the `noperspective` set, then the `smooth` one), for [`Constants::both_uv`].
-fn both_uv(verts: &LaneVertices) -> [[f64; 3]; 4] {
-    let uv = |k: usize, smooth: bool| {
-        let v = match (smooth, &verts.noperspective) {
-            (false, Some(n)) => &n[k],
-            _ => &verts.smooth[k],
-        };
-        v.uv().as_dvec2()
-    };
-    [
-        [0, 1, 2].map(|k| uv(k, false).x),
-        [0, 1, 2].map(|k| uv(k, false).y),
-        [0, 1, 2].map(|k| uv(k, true).x),
-        [0, 1, 2].map(|k| uv(k, true).y),
-    ]
 }

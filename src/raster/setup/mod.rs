@@ -26,11 +26,13 @@ use glam::{DVec2, I64Vec2};
 use super::project::{SUBPIXEL, Viewport, WindowVertex};
 
 mod bounds;
+mod plane;
 
 use bounds::pixel_bounds;
 pub use bounds::{
     PixelBounds, TINY_TRIANGLE_PIXELS, covers_no_sample, sample_pixel_bounds, setup_bounds,
 };
+pub use plane::ScreenPlane;
 
 /// Whether the triangle is seen from its front (counter-clockwise on screen, as OpenGL's
 /// default `glFrontFace(GL_CCW)`) or its back. Both are drawn.

@@ -10,7 +10,7 @@
 
 use std::arch::x86_64::*;
 
-use super::blocks::classify;
+use super::blocks::{RowParts, classify};
 use super::{
     BLOCK_ROWS, Block, CHANNELS, Constants, LANES, LaneColor, LaneShading, LaneTriangle, Stepped,
     Target,
@@ -18,12 +18,14 @@ use super::{
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span_of;
 use crate::raster::settings::Rasterizer;
-use crate::raster::setup::WeightPlanes;
+use crate::raster::setup::{ScreenPlane, WeightPlanes};
 use crate::raster::shade::{
     AMBIENT, MIN_NORMAL_LENGTH, WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX,
 };
 use crate::raster::texture::Filter;
 
+#[macro_use]
+mod interp;
 pub(in crate::raster::lanes) mod avx512;
 pub(super) mod sampler;
 mod scanline;
@@ -38,6 +40,7 @@ pub(in crate::raster::lanes) use texture::Lookups;
 pub(in crate::raster::lanes) use write::{finish, mask_from_bits};
 
 use avx512::wide;
+use interp::{At4, Terms4, column_terms4};
 use sampler::{VecSampler, sample};
 
 /// A chunk of eight pixels whose colours are still to be looked up.
@@ -76,100 +79,72 @@ fn dot3(w: &[__m256d; 3], x: [f64; 3]) -> __m256d {
     _mm256_add_pd(t, _mm256_mul_pd(w[2], _mm256_set1_pd(x[2])))
 }
 
-/// The screen weights at four window x (`px`, pixel centres) of one row, from the row terms
-/// `row[i]`: [`WeightPlanes::weight`]'s operations, `(row - d_y (x - S_x)) * (1 / area2)`.
-#[inline]
-#[target_feature(enable = "avx2")]
-fn weights4(w: &WeightPlanes, row: &[f64; 3], px: __m256d) -> [__m256d; 3] {
-    [0, 1, 2].map(|i| {
-        let dx = _mm256_sub_pd(px, _mm256_set1_pd(w.start[i].x));
-        let t = _mm256_sub_pd(
-            _mm256_set1_pd(row[i]),
-            _mm256_mul_pd(_mm256_set1_pd(w.dir[i].y), dx),
-        );
-        _mm256_mul_pd(t, _mm256_set1_pd(w.inv_area2))
-    })
+/// A block's eight columns, in two halves of four: the weights' column terms and the
+/// column parts of the planes `1/w`, depth and the mode's u and v.
+struct BlockColumns {
+    terms: [[__m256d; 3]; 2],
+    parts: [[__m256d; 4]; 2],
 }
 
-/// uv, depth (f64 lanes) and the validity bits of four samples from their screen weights, as
-/// `interpolate::fragment`.
-/// `uv`: whether the target may keep uvs (then [`Constants::both_uv`] is read; a constant
-/// `false` takes that code out).
-/// (A macro, not a function: it is expanded into each caller, so its vectors stay in
-/// registers; a call returns [`Four`] through memory. Use it in functions compiled with AVX2.)
-macro_rules! from_weights4 {
-    ($l:expr, $c:expr, $mode:expr, $uv:expr) => {{
-        let (l, c, mode): ([__m256d; 3], &Constants, Interpolation) = ($l, $c, $mode);
-        let both_consts = if $uv { c.both_uv } else { None };
-        let q = [
-            _mm256_mul_pd(l[0], _mm256_set1_pd(c.inv_w[0])),
-            _mm256_mul_pd(l[1], _mm256_set1_pd(c.inv_w[1])),
-            _mm256_mul_pd(l[2], _mm256_set1_pd(c.inv_w[2])),
+impl BlockColumns {
+    /// The columns from `bx` (pixel centres `bx + 0.5 + k`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn new(w: &WeightPlanes, bx: u32, planes: &[ScreenPlane; 4]) -> Self {
+        let px = _mm256_set1_pd(f64::from(bx) + 0.5);
+        let terms = [
+            column_terms4(w, _mm256_add_pd(px, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0))),
+            column_terms4(w, _mm256_add_pd(px, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0))),
         ];
-        let sum = _mm256_add_pd(_mm256_add_pd(q[0], q[1]), q[2]);
-        let ok = _mm256_and_pd(
-            _mm256_cmp_pd::<_CMP_GT_OQ>(sum, _mm256_setzero_pd()),
-            _mm256_cmp_pd::<_CMP_LT_OQ>(sum, _mm256_set1_pd(f64::INFINITY)),
-        );
-        // The perspective weights, unless nothing reads them (affine, without the heatmap's
-        // buffers): a division saved.
-        let p = if mode == Interpolation::Perspective || both_consts.is_some() {
-            let inv = _mm256_div_pd(_mm256_set1_pd(1.0), sum);
-            [
-                _mm256_mul_pd(q[0], inv),
-                _mm256_mul_pd(q[1], inv),
-                _mm256_mul_pd(q[2], inv),
-            ]
-        } else {
-            l
-        };
-        let w = match mode {
-            Interpolation::Perspective => p,
-            Interpolation::Affine => l,
-        };
-        // uv both ways for the heatmap's buffers, as the lane code computes them.
-        let both_uv = both_consts.map(|b| {
-            [
-                dot3(&l, b[0]),
-                dot3(&l, b[1]),
-                dot3(&p, b[2]),
-                dot3(&p, b[3]),
-            ]
-        });
-        let (mut wire, mut halo) = (0, 0);
-        if let Some(wire_consts) = &c.wire {
-            for i in 0..3 {
-                if wire_consts.len[i] > 0.0 {
-                    // `shade::on_wire_edge`, mirrored: the weight as f32, as the varyings hold
-                    // it, then over the gradient length.
-                    let weight = _mm256_cvtps_pd(_mm256_cvtpd_ps(dot3(&l, wire_consts.bary[i])));
-                    let d = _mm256_div_pd(weight, _mm256_set1_pd(wire_consts.len[i]));
-                    wire |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
-                        d,
-                        _mm256_set1_pd(WIRE_WIDTH_PX),
-                    ));
-                    // `shade::on_wire_halo`, mirrored the same way.
-                    halo |= _mm256_movemask_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(
-                        d,
-                        _mm256_set1_pd(WIRE_WIDTH_PX + WIRE_HALO_PX),
-                    ));
-                }
+        let mut parts = [[_mm256_setzero_pd(); 4]; 2];
+        for h in 0..2 {
+            for j in 0..4 {
+                parts[h][j] = dot3(&terms[h], planes[j].k);
             }
         }
-        Four {
-            u: dot3(&w, c.u),
-            v: dot3(&w, c.v),
-            depth: dot3(&l, c.depth),
-            ok: _mm256_movemask_pd(ok),
-            wire,
-            halo,
-            w,
-            both_uv,
-        }
-    }};
+        Self { terms, parts }
+    }
+
+    /// The planes' values in a row with row parts `row`: `R - C`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn values(&self, row: &[f64; 4]) -> [At4; 2] {
+        let zero = _mm256_setzero_pd();
+        let half = |h: usize| {
+            let mut values = [zero; 4];
+            for j in 0..4 {
+                values[j] = _mm256_sub_pd(_mm256_set1_pd(row[j]), self.parts[h][j]);
+            }
+            At4 {
+                values,
+                l: [zero; 3],
+                other: [zero; 2],
+            }
+        };
+        [half(0), half(1)]
+    }
+
+    /// Everything in a row with the weights' row terms `row` ([`At4::of_terms`]).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn of_terms(&self, c: &Constants, mode: Interpolation, row: &[f64; 3]) -> [At4; 2] {
+        let rows = [
+            _mm256_set1_pd(row[0]),
+            _mm256_set1_pd(row[1]),
+            _mm256_set1_pd(row[2]),
+        ];
+        let half = |h: usize| {
+            let terms = Terms4 {
+                rows,
+                columns: self.terms[h],
+            };
+            At4::of_terms(c, mode, &terms, true)
+        };
+        [half(0), half(1)]
+    }
 }
 
-/// What `from_weights4!` finds for four samples.
+/// What `from_planes4!` finds for four samples.
 struct Four {
     u: __m256d,
     v: __m256d,
@@ -179,12 +154,30 @@ struct Four {
     wire: i32,
     /// Wireframe halo bits, lane k in bit k.
     halo: i32,
-    /// The weights of the interpolation (perspective-correct or screen, by the mode): the
-    /// channels of [`Constants`] are `dot3(w, channel)`, computed only by the shadings that
-    /// read them (kept as weights, texture shading holds three vectors here, not six).
-    w: [__m256d; 3],
+    /// The screen weights (zero unless [`Constants::reads_weights`]).
+    l: [__m256d; 3],
+    /// `1 / (1/w)` (zero when affine without both uvs).
+    inv: __m256d,
     /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
     both_uv: Option<[__m256d; 4]>,
+}
+
+impl Four {
+    /// The weights of the interpolation: perspective-correct `p_i = (l_i / w_i) * inv`, or
+    /// the screen weights (the channels of [`Constants`] are `dot3(w, channel)`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn weights(&self, c: &Constants, mode: Interpolation) -> [__m256d; 3] {
+        match mode {
+            Interpolation::Perspective => [0, 1, 2].map(|i| {
+                _mm256_mul_pd(
+                    _mm256_mul_pd(self.l[i], _mm256_set1_pd(c.inv_w[i])),
+                    self.inv,
+                )
+            }),
+            Interpolation::Affine => self.l,
+        }
+    }
 }
 
 /// Draws rows `rows` of `tri` with the lanes of `rasterizer` (see the parent module): every
@@ -322,6 +315,12 @@ unsafe fn block_rows<const WIDE: bool>(
         let lane_hi = _mm256_setr_pd(4.0, 5.0, 6.0, 7.0);
         let a = planes.a.map(|v| _mm256_set1_pd(v as f64));
         let t = planes.t.map(|v| _mm256_set1_pd(v as f64));
+        // The planes texture shading reads: `1/w`, the depth, the mode's u and v; with the
+        // weights (other shadings, the wireframe) or both uvs, every value comes from the
+        // terms (`At4::of_terms`), the same values.
+        let uv = consts.uv_planes(mode);
+        let attrs = [consts.attrs.inv_w, consts.attrs.depth, uv[0], uv[1]];
+        let slow = consts.reads_weights() || consts.both_uv;
         // Row chunks in one AVX-512 register each (see `wide`).
         let wide_rows = WIDE && wide::applies(consts, color, sampler, target);
         // Rows of a block inside the triangle in pairs of sixteen lanes (see `wide::texture_pair`).
@@ -334,6 +333,9 @@ unsafe fn block_rows<const WIDE: bool>(
         let mut by = y_start;
         while by <= y_end {
             let by_end = (by + BLOCK_ROWS - 1).min(y_end);
+            // The planes' row parts of this row of blocks, each made once for all its blocks
+            // when a row chunk first needs it.
+            let mut row_parts = RowParts::new(by);
             let mut bx = x0;
             while bx <= x1 {
                 let block = classify(
@@ -347,13 +349,24 @@ unsafe fn block_rows<const WIDE: bool>(
                 }
                 let lanes_in = (x1 - bx + 1).min(LANES as u32);
                 let in_row = (1i32 << lanes_in) - 1;
+                // The block's columns: their terms and each plane's column part, the same in
+                // all its rows, made when a row chunk first needs them.
+                let mut block_columns = None;
                 if let Some(sampler) = pairs
                     && block == Block::Inside
                     && (gathered.is_none() || lanes_in > sparse::MAX_LANES)
                 {
                     // `pairs` is set only when `WIDE`, which is set only when the CPU has AVX-512
                     // F, BW, VL and DQ.
-                    wide::inside_block(consts, (bx, in_row), (by, by_end), mode, sampler, target);
+                    wide::inside_block(
+                        consts,
+                        (bx, in_row),
+                        (by, by_end),
+                        mode,
+                        sampler,
+                        target,
+                        &mut row_parts,
+                    );
                     bx += LANES as u32;
                     continue;
                 }
@@ -386,14 +399,13 @@ unsafe fn block_rows<const WIDE: bool>(
                         continue;
                     }
                     let py = f64::from(y) + 0.5;
-                    let row = [0, 1, 2].map(|i| consts.weights.row_term(i, py));
+                    let row = consts.weights.row_terms(py);
                     let index = (y - target.y0) as usize * target.width as usize + bx as usize;
                     if WIDE && wide_rows {
                         // `WIDE` is set only when the CPU has AVX-512 F, BW, VL and DQ; the row
                         // chunk's covered lanes are pixels of the band's row inside the image.
-                        let l = wide::row_weights(&consts.weights, &row, f64::from(bx) + 0.5);
                         wide::texture_chunk::<4, WIDE>(
-                            l,
+                            (&row, f64::from(bx) + 0.5),
                             consts,
                             covered,
                             Where::Row(index),
@@ -404,20 +416,20 @@ unsafe fn block_rows<const WIDE: bool>(
                         );
                         continue;
                     }
-                    let px = _mm256_set1_pd(f64::from(bx) + 0.5);
-                    let lo = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_lo));
-                    let hi = weights4(&consts.weights, &row, _mm256_add_pd(px, lane_hi));
+                    if block_columns.is_none() {
+                        block_columns = Some(BlockColumns::new(&consts.weights, bx, &attrs));
+                    }
+                    let Some(columns) = &block_columns else {
+                        continue;
+                    };
+                    let at4 = if slow {
+                        columns.of_terms(consts, mode, &row)
+                    } else {
+                        columns.values(&row_parts.at(y, &attrs, &consts.weights))
+                    };
                     let at = Where::Row(index);
                     shade_chunk::<0, WIDE, true>(
-                        [lo, hi],
-                        covered,
-                        at,
-                        consts,
-                        mode,
-                        color,
-                        sampler,
-                        lookups,
-                        target,
+                        at4, covered, at, consts, mode, color, sampler, lookups, target,
                     );
                 }
                 bx += LANES as u32;
@@ -562,8 +574,18 @@ fn draw_gathered<const SITE: u8, const WIDE: bool>(
     let x_hi = sparse::centres(_mm256_extracti128_si256::<1>(x));
     let y_lo = sparse::centres(_mm256_castsi256_si128(y));
     let y_hi = sparse::centres(_mm256_extracti128_si256::<1>(y));
-    let lo = sparse::weights4(&consts.weights, x_lo, y_lo);
-    let hi = sparse::weights4(&consts.weights, x_hi, y_hi);
+    let lo = At4::of_terms(
+        consts,
+        mode,
+        &sparse::terms4(&consts.weights, x_lo, y_lo),
+        false,
+    );
+    let hi = At4::of_terms(
+        consts,
+        mode,
+        &sparse::terms4(&consts.weights, x_hi, y_hi),
+        false,
+    );
     let at = Where::Lanes(sparse::indices(target, x, y));
     // Pixels are gathered only for targets without uv or difference buffers.
     shade_chunk::<SITE, WIDE, false>(
@@ -579,14 +601,15 @@ fn draw_gathered<const SITE: u8, const WIDE: bool>(
     );
 }
 
-/// Interpolates eight samples from their screen weights (`[lanes 0..4, lanes 4..8]`), shades
+/// Interpolates eight samples from their planes' values and weights (`[lanes 0..4, lanes
+/// 4..8]`, [`At4`]), shades
 /// the `covered` ones and writes them (or hands them to the texture lookups, which write them).
 /// `UV`: the target may have uv or difference buffers (gathered chunks never do).
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2")]
 fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
-    [lo, hi]: [[__m256d; 3]; 2],
+    [lo, hi]: [At4; 2],
     covered: i32,
     at: Where,
     consts: &Constants,
@@ -596,8 +619,8 @@ fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
-    let lo = from_weights4!(lo, consts, mode, UV);
-    let hi = from_weights4!(hi, consts, mode, UV);
+    let lo = from_planes4!(lo, consts, mode, UV);
+    let hi = from_planes4!(hi, consts, mode, UV);
     let ok = covered & (lo.ok | (hi.ok << 4));
     if ok == 0 {
         return;
@@ -629,10 +652,11 @@ fn shade_chunk<const SITE: u8, const WIDE: bool, const UV: bool>(
             return lookups.push::<SITE, WIDE>(sampler, target, chunk, both.as_ref());
         }
         _ => {
+            let (lo_w, hi_w) = (lo.weights(consts, mode), hi.weights(consts, mode));
             let channel = |ch: usize| {
                 to_f32(
-                    dot3(&lo.w, consts.channels[ch]),
-                    dot3(&hi.w, consts.channels[ch]),
+                    dot3(&lo_w, consts.channels[ch]),
+                    dot3(&hi_w, consts.channels[ch]),
                 )
             };
             channel_colors::<SITE, WIDE>([lo.depth, hi.depth], channel, color)

@@ -166,23 +166,31 @@ pub(super) fn centres(v: __m128i) -> __m256d {
     _mm256_add_pd(_mm256_cvtepi32_pd(v), _mm256_set1_pd(0.5))
 }
 
-/// The screen weights at four pixel centres, each on its own row:
-/// [`WeightPlanes::weight`] of [`WeightPlanes::row_term`], the row path's operations
-/// (`avx2::weights4`) with the row term per lane.
+/// The weights' row and column terms at four pixel centres, each on its own row:
+/// [`WeightPlanes::row_term`] and [`WeightPlanes::column_term`] per lane, the row path's
+/// operations with the row term per lane.
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(super) fn weights4(w: &WeightPlanes, px: __m256d, py: __m256d) -> [__m256d; 3] {
-    let mut out = [_mm256_setzero_pd(); 3];
-    for (i, o) in out.iter_mut().enumerate() {
-        let row = _mm256_mul_pd(
+pub(super) fn terms4(w: &WeightPlanes, px: __m256d, py: __m256d) -> super::Terms4 {
+    let mut rows = [_mm256_setzero_pd(); 3];
+    for (i, r) in rows.iter_mut().enumerate() {
+        *r = _mm256_mul_pd(
             _mm256_set1_pd(w.dir[i].x),
             _mm256_sub_pd(py, _mm256_set1_pd(w.start[i].y)),
         );
-        let dx = _mm256_sub_pd(px, _mm256_set1_pd(w.start[i].x));
-        let t = _mm256_sub_pd(row, _mm256_mul_pd(_mm256_set1_pd(w.dir[i].y), dx));
-        *o = _mm256_mul_pd(t, _mm256_set1_pd(w.inv_area2));
     }
-    out
+    super::Terms4 {
+        rows,
+        columns: super::column_terms4(w, px),
+    }
+}
+
+/// The screen weights at four pixel centres, each on its own row: [`terms4`], then
+/// [`WeightPlanes::weight_of_terms`] (the scanline lanes' span starts).
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) fn weights4(w: &WeightPlanes, px: __m256d, py: __m256d) -> [__m256d; 3] {
+    super::interp::weights_of_terms4(w, &terms4(w, px, py))
 }
 
 /// Buffer indices of the band for columns `x` and image rows `y`.

@@ -171,10 +171,10 @@ fn draw_body(
 }
 
 /// The edge-function lanes: blocks rejected, accepted or tested as in the scalar lane code,
-/// then per row chunk the scalar code's operations, lane by lane: the edge values, the
-/// screen weights (`WeightPlanes::weight`, its column terms made once per block), then
-/// `interpolate::fragment`'s uv and depth ([`interpolate_half`], four lanes at a time), the
-/// texture lookup, the depth test and the write.
+/// then per row chunk the scalar code's operations, lane by lane: the edge values, then
+/// `interpolate::fragment_at_window`'s `1/w`, depth and uv from their planes (`R - C`: the
+/// column parts made once per block, the row parts once per row), the texture lookup, the
+/// depth test and the write.
 #[inline(always)]
 fn edge_body(
     tri: &LaneTriangle,
@@ -187,17 +187,30 @@ fn edge_body(
     let planes = &tri.planes;
     let consts = &tri.consts;
     let weights = &consts.weights;
+    let uv = consts.uv_planes(mode);
+    // The planes this shading reads: `1/w`, the depth, and the mode's u and v.
+    let attrs = [consts.attrs.inv_w, consts.attrs.depth, uv[0], uv[1]];
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let a = three(|i| planes.a[i] as f64);
     let t = three(|i| planes.t[i] as f64);
     let inf = Inf::new();
+    // The planes' row parts of the current row of blocks, each made once for all its
+    // blocks.
+    let mut row_parts = RowParts::new(y_start);
     for block in Blocks::new(planes, (x0, x1), (y_start, y_end)) {
         let (bx, lanes_in) = (block.x, block.lanes_in);
+        if row_parts.first != block.rows.0 {
+            row_parts = RowParts::new(block.rows.0);
+        }
         let in_row: Mask64 = each(|k| mask64(k < lanes_in));
-        // `d_y (P_x - S_x)` of each weight at the block's columns: the same in all its rows.
+        // Each plane's column part at the block's columns: the same in all its rows.
         let px: F64s = each(|k| (f64::from(bx) + OFFSETS[k]) + 0.5);
-        let columns = |h: usize| three(|i| each_n(|k| weights.column_term(i, px[h + k])));
-        let columns: [[Half64; 3]; 2] = [columns(0), columns(HALF)];
+        let terms: [F64s; 3] = three(|i| each(|k| weights.column_term(i, px[k])));
+        let column = |j: usize| -> F64s {
+            let k = &attrs[j].k;
+            each(|l| terms[0][l] * k[0] + terms[1][l] * k[1] + terms[2][l] * k[2])
+        };
+        let columns = [column(0), column(1), column(2), column(3)];
         for y in block.rows.0..=block.rows.1 {
             let covered: Mask64 = if block.kind == Block::Inside {
                 in_row
@@ -211,85 +224,44 @@ fn edge_body(
             if covered.iter().fold(0, |m, &c| m | c) == 0 {
                 continue;
             }
-            let py = f64::from(y) + 0.5;
-            let rows = three(|i| weights.row_term(i, py));
-            let lo = interpolate_half(&columns[0], &rows, consts, mode, inf);
-            let hi = interpolate_half(&columns[1], &rows, consts, mode, inf);
-            let join = |a: &[f32; HALF], b: &[f32; HALF]| -> F32s {
-                each(|k| if k < HALF { a[k] } else { b[k - HALF] })
-            };
-            let (u, v, depth) = (join(&lo.0, &hi.0), join(&lo.1, &hi.1), join(&lo.2, &hi.2));
-            let ok: Mask64 = each(|k| {
-                let valid = if k < HALF { lo.3[k] } else { hi.3[k - HALF] };
-                valid & covered[k]
-            });
+            let rows = row_parts.at(y, &attrs, weights);
+            let (u, v, depth, valid) = interpolate(&columns, rows, mode, inf);
+            let ok: Mask64 = each(|k| valid[k] & covered[k]);
             let rgba = sampler.sample_packed(&u, &v, inf, floor);
             write(target, bx, y, &ok, &depth, &rgba);
         }
     }
 }
 
-/// Half of a row chunk's lanes: the edge-function interpolation runs over four lanes at a
-/// time, so that its quantities (two 128-bit registers each) fit the sixteen registers of
-/// SSE; over eight, they were spilled to the stack about as often as they were computed.
-const HALF: usize = LANES / 2;
-/// Four `f64` lanes.
-type Half64 = [f64; HALF];
-/// Four `f32` lanes.
-type Half32 = [f32; HALF];
-
-/// uv, depth and validity of four samples from the column terms of their screen weights and
-/// the row's row terms, as [`super::from_weights`] computes them for texture shading:
-/// `l_i = (row_i - column_i) / area2` (`WeightPlanes::weight`), `q_i = l_i / w_i`, valid
-/// where `sum q` is positive and finite, `uv = sum w_i uv_i` with the mode's weights
-/// (`l_i`, or `q_i / sum q`), `depth = sum l_i d_i`, every sum left to right. The sums are
-/// accumulated weight by weight, in that order, so that fewer quantities are live at once.
+/// uv, depth and validity of eight samples from the column parts of the planes `1/w`, depth,
+/// u and v (`u/w`, `v/w` when perspective-correct) and their row parts, as
+/// [`super::from_terms`] computes them for texture shading: each value `R - C`; valid where
+/// `1/w` is positive and finite; perspective-correct uv `(u/w) * (1 / (1/w))`.
 #[inline(always)]
-fn interpolate_half(
-    columns: &[Half64; 3],
-    rows: &[f64; 3],
-    c: &Constants,
+fn interpolate(
+    columns: &[F64s; 4],
+    rows: [f64; 4],
     mode: Interpolation,
     inf: Inf,
-) -> (Half32, Half32, Half32, [i64; HALF]) {
-    let weights = &c.weights;
-    let l = |i: usize| -> Half64 { each_n(|k| weights.weight_of_terms(rows[i], columns[i][k])) };
-    let to_f32 = |x: &Half64| -> Half32 { each_n(|k| x[k] as f32) };
-    // `x_0 w_0 + x_1 w_1 + x_2 w_2`, the terms added as they come.
-    let term = |w: &Half64, x: f64| -> Half64 { each_n(|k| w[k] * x) };
-    let add = |s: &Half64, w: &Half64, x: f64| -> Half64 { each_n(|k| s[k] + w[k] * x) };
-    let l0 = l(0);
-    let q0 = term(&l0, c.inv_w[0]);
-    let mut depth = term(&l0, c.depth[0]);
+) -> (F32s, F32s, F32s, Mask64) {
+    let at = |j: usize| -> F64s { each(|k| rows[j] - columns[j][k]) };
+    let one_over_w = at(0);
+    let ok = positive_finite(&one_over_w, inf);
+    let depth: F32s = {
+        let d = at(1);
+        each(|k| d[k] as f32)
+    };
+    let (u, v) = (at(2), at(3));
     match mode {
-        Interpolation::Affine => {
-            let (mut u, mut v) = (term(&l0, c.u[0]), term(&l0, c.v[0]));
-            let mut sum = q0;
-            for i in 1..3 {
-                let li = l(i);
-                sum = add(&sum, &li, c.inv_w[i]);
-                depth = add(&depth, &li, c.depth[i]);
-                u = add(&u, &li, c.u[i]);
-                v = add(&v, &li, c.v[i]);
-            }
-            let ok = positive_finite(&sum, inf);
-            (to_f32(&u), to_f32(&v), to_f32(&depth), ok)
-        }
+        Interpolation::Affine => (each(|k| u[k] as f32), each(|k| v[k] as f32), depth, ok),
         Interpolation::Perspective => {
-            let mut q = [q0; 3];
-            for i in 1..3 {
-                let li = l(i);
-                q[i] = term(&li, c.inv_w[i]);
-                depth = add(&depth, &li, c.depth[i]);
-            }
-            let sum: Half64 = each_n(|k| q[0][k] + q[1][k] + q[2][k]);
-            let ok = positive_finite(&sum, inf);
-            let inv: Half64 = each_n(|k| 1.0 / sum[k]);
-            let w: [Half64; 3] = three(|i| each_n(|k| q[i][k] * inv[k]));
-            let dot = |x: &[f64; 3]| -> Half32 {
-                each_n(|k| (w[0][k] * x[0] + w[1][k] * x[1] + w[2][k] * x[2]) as f32)
-            };
-            (dot(&c.u), dot(&c.v), to_f32(&depth), ok)
+            let inv: F64s = each(|k| 1.0 / one_over_w[k]);
+            (
+                each(|k| (u[k] * inv[k]) as f32),
+                each(|k| (v[k] * inv[k]) as f32),
+                depth,
+                ok,
+            )
         }
     }
 }

@@ -1,5 +1,5 @@
 //! The edge-function lanes with the eight `f64` lanes of a chunk in one AVX-512 register:
-//! the operations of `weights4` and `from_weights4!`, lane for lane, so the same values (tests
+//! the operations of `interp` and `from_planes4!`, lane for lane, so the same values (tests
 //! compare every vector build with the full render, bit for bit). Used for texture shading
 //! without the wireframe or extra buffers, the common case, and for the difference view's
 //! buffers, for row chunks
@@ -8,11 +8,11 @@
 
 use std::arch::x86_64::*;
 
-use super::super::super::{Constants, LaneColor, Target};
+use super::super::super::{Constants, LaneColor, RowParts, Target};
 use super::super::sampler::VecSampler;
 use super::super::{Lookups, Pending, Where, finish, mask_from_bits};
 use crate::raster::interpolate::Interpolation;
-use crate::raster::setup::WeightPlanes;
+use crate::raster::setup::{ScreenPlane, WeightPlanes};
 
 /// Whether [`texture_chunk`] can draw a triangle's row chunks: texture shading without the
 /// wireframe or any extra buffer, or the difference view's buffers (which shade nothing, so
@@ -26,12 +26,12 @@ pub(in crate::raster::lanes) fn applies(
 ) -> bool {
     target.uv.is_none()
         && match target.difference {
-            Some(_) => consts.both_uv.is_some(),
+            Some(_) => consts.both_uv,
             None => {
                 color == LaneColor::Texture
                     && sampler.is_some()
                     && consts.wire.is_none()
-                    && consts.both_uv.is_none()
+                    && !consts.both_uv
             }
         }
 }
@@ -47,38 +47,52 @@ fn dot3(w: &[__m512d; 3], x: [f64; 3]) -> __m512d {
     _mm512_add_pd(t, _mm512_mul_pd(w[2], _mm512_set1_pd(x[2])))
 }
 
-/// The screen weights of the row chunk of eight pixels from window x `px` (pixel centres),
-/// from the row terms `row`: `weights4`'s operations.
+/// The weights' column terms of the row chunk of eight pixels from window x `px` (pixel
+/// centres): `column_terms4`'s operations.
 #[inline]
 #[target_feature(enable = "avx512f")]
-pub(in crate::raster::lanes) fn row_weights(
-    w: &WeightPlanes,
-    row: &[f64; 3],
-    px: f64,
-) -> [__m512d; 3] {
+fn column_terms(w: &WeightPlanes, px: f64) -> [__m512d; 3] {
     let x = _mm512_add_pd(
         _mm512_set1_pd(px),
         _mm512_setr_pd(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0),
     );
-    // `(row - d_y (x - S_x)) * (1 / area2)`.
+    // `d_y (x - S_x)`.
     [0, 1, 2].map(|i| {
         let dx = _mm512_sub_pd(x, _mm512_set1_pd(w.start[i].x));
-        let t = _mm512_sub_pd(
-            _mm512_set1_pd(row[i]),
-            _mm512_mul_pd(_mm512_set1_pd(w.dir[i].y), dx),
-        );
-        _mm512_mul_pd(t, _mm512_set1_pd(w.inv_area2))
+        _mm512_mul_pd(_mm512_set1_pd(w.dir[i].y), dx)
     })
 }
 
-/// Interpolates the `covered` ones of eight pixels from their screen weights `l` and hands
-/// them to the texture lookups, which write them: `from_weights4!`'s operations. [`applies`]
-/// must hold.
+/// A plane's value from its row part and the column terms: `R - C` (`plane4`'s operations).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn value(plane: &ScreenPlane, row: &[f64; 3], columns: &[__m512d; 3]) -> __m512d {
+    _mm512_sub_pd(_mm512_set1_pd(plane.part(row)), dot3(columns, plane.k))
+}
+
+/// The lanes where `1/w` is positive and finite (valid).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn valid(one_over_w: __m512d) -> u8 {
+    _mm512_cmp_pd_mask::<_CMP_GT_OQ>(one_over_w, _mm512_setzero_pd())
+        & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(one_over_w, _mm512_set1_pd(f64::INFINITY))
+}
+
+/// `1 / (1/w)`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn inverse(one_over_w: __m512d) -> __m512d {
+    _mm512_div_pd(_mm512_set1_pd(1.0), one_over_w)
+}
+
+/// Interpolates the `covered` ones of eight pixels of a row (its weights' row terms `row`,
+/// the first pixel centre at window x `px`) and hands them to the texture lookups, which
+/// write them: `from_planes4!`'s operations. [`applies`] must hold.
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[target_feature(enable = "avx2,avx512f,avx512dq")]
 pub(in crate::raster::lanes) fn texture_chunk<const SITE: u8, const WIDE: bool>(
-    l: [__m512d; 3],
+    (row, px): (&[f64; 3], f64),
     consts: &Constants,
     covered: i32,
     at: Where,
@@ -87,12 +101,10 @@ pub(in crate::raster::lanes) fn texture_chunk<const SITE: u8, const WIDE: bool>(
     lookups: &mut Lookups,
     target: &mut Target<'_>,
 ) {
-    // q_i = l_i / w_i, valid where their sum is positive and finite.
-    let q = [0, 1, 2].map(|i| _mm512_mul_pd(l[i], _mm512_set1_pd(consts.inv_w[i])));
-    let sum = _mm512_add_pd(_mm512_add_pd(q[0], q[1]), q[2]);
-    let valid = _mm512_cmp_pd_mask::<_CMP_GT_OQ>(sum, _mm512_setzero_pd())
-        & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(sum, _mm512_set1_pd(f64::INFINITY));
-    let ok = covered & i32::from(valid);
+    let columns = column_terms(&consts.weights, px);
+    let attrs = &consts.attrs;
+    let one_over_w = value(&attrs.inv_w, row, &columns);
+    let ok = covered & i32::from(valid(one_over_w));
     if ok == 0 {
         return;
     }
@@ -100,25 +112,24 @@ pub(in crate::raster::lanes) fn texture_chunk<const SITE: u8, const WIDE: bool>(
     let mut chunk = Pending {
         u: _mm256_setzero_ps(),
         v: _mm256_setzero_ps(),
-        depth: _mm512_cvtpd_ps(dot3(&l, consts.depth)),
+        depth: _mm512_cvtpd_ps(value(&attrs.depth, row, &columns)),
         valid: mask_from_bits(ok),
         wire: 0,
         halo: 0,
         index,
         lanes,
     };
-    let p = || {
-        let inv = _mm512_div_pd(_mm512_set1_pd(1.0), sum);
-        [0, 1, 2].map(|i| _mm512_mul_pd(q[i], inv))
-    };
-    if let (Some(b), Some(_)) = (&consts.both_uv, &target.difference) {
+    if let (true, Some(_)) = (consts.both_uv, &target.difference) {
         // The difference view: both uvs, nothing shaded (see `DifferenceTarget`).
-        let p = p();
+        let [ua, va] = attrs.uv_affine;
+        let [us, vs] = attrs.uv_over_w;
+        let inv = inverse(one_over_w);
+        let smooth = |p: &ScreenPlane| _mm512_mul_pd(value(p, row, &columns), inv);
         let both = [
-            dot3(&l, b[0]),
-            dot3(&l, b[1]),
-            dot3(&p, b[2]),
-            dot3(&p, b[3]),
+            value(&ua, row, &columns),
+            value(&va, row, &columns),
+            smooth(&us),
+            smooth(&vs),
         ]
         .map(|x| _mm512_cvtpd_ps(x));
         // SAFETY: this module runs with AVX2, and the chunk's valid lanes are pixels of the
@@ -129,12 +140,17 @@ pub(in crate::raster::lanes) fn texture_chunk<const SITE: u8, const WIDE: bool>(
     let Some(sampler) = sampler else {
         return;
     };
-    let weights = match mode {
-        Interpolation::Perspective => p(),
-        Interpolation::Affine => l,
+    let uv = consts.uv_planes(mode);
+    let (u, v) = (value(&uv[0], row, &columns), value(&uv[1], row, &columns));
+    let (u, v) = match mode {
+        Interpolation::Perspective => {
+            let inv = inverse(one_over_w);
+            (_mm512_mul_pd(u, inv), _mm512_mul_pd(v, inv))
+        }
+        Interpolation::Affine => (u, v),
     };
-    chunk.u = _mm512_cvtpd_ps(dot3(&weights, consts.u));
-    chunk.v = _mm512_cvtpd_ps(dot3(&weights, consts.v));
+    chunk.u = _mm512_cvtpd_ps(u);
+    chunk.v = _mm512_cvtpd_ps(v);
     lookups.push::<SITE, WIDE>(sampler, target, chunk, None);
 }
 
@@ -165,39 +181,51 @@ pub(in crate::raster::lanes) unsafe fn inside_block(
     mode: Interpolation,
     sampler: &VecSampler<'_>,
     target: &mut Target<'_>,
+    row_parts: &mut RowParts,
 ) {
-    let px = f64::from(bx) + 0.5;
     let w = &consts.weights;
-    // (Written out: `array::map` of these closures was left as calls, a third slower.)
-    let weights = |y: u32| {
-        let py = f64::from(y) + 0.5;
-        let row = [w.row_term(0, py), w.row_term(1, py), w.row_term(2, py)];
-        // SAFETY: as the function's.
-        unsafe { row_weights(w, &row, px) }
-    };
+    let uv = consts.uv_planes(mode);
+    let attrs = [consts.attrs.inv_w, consts.attrs.depth, uv[0], uv[1]];
+    // Each plane's column part: the same in all the block's rows.
+    // SAFETY: as the function's.
+    let parts = unsafe { column_parts(w, bx, &attrs) };
     let (y0, width) = (target.y0, target.width as usize);
     let at = |y: u32| (y - y0) as usize * width + bx as usize;
     let mut y = by;
     while y <= by_end {
-        let l = [weights(y), weights(y + 1)];
-        let index = [at(y), at((y + 1).min(by_end))];
+        // A last row without a partner pairs with itself, none of its lanes enabled.
+        let y1 = (y + 1).min(by_end);
+        let rows = [row_parts.at(y, &attrs, w), row_parts.at(y1, &attrs, w)];
+        let index = [at(y), at(y1)];
         let covered = [in_row, if y < by_end { in_row } else { 0 }];
         // SAFETY: as the function's.
-        unsafe { texture_pair(l, consts, covered, index, mode, sampler, target) };
+        unsafe { texture_pair((&rows, &parts), covered, index, mode, sampler, target) };
         y += 2;
     }
 }
 
-/// Two row chunks of eight pixels (rows `y` and `y + 1` of one block, screen weights `l[0]`
-/// and `l[1]`, buffer indices `index`) drawn as one chunk of sixteen: each row gets
-/// [`texture_chunk`]'s operations lane for lane, then one sixteen-lane texture lookup (the
-/// lookup a pair of chunks gets in `Lookups`), and a masked depth test and write per row.
-/// [`pairs_apply`] must hold.
+/// The column parts of four planes at the eight columns from `bx` (pixel centres).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn column_parts(w: &WeightPlanes, bx: u32, planes: &[ScreenPlane; 4]) -> [__m512d; 4] {
+    let columns = column_terms(w, f64::from(bx) + 0.5);
+    let mut parts = [_mm512_setzero_pd(); 4];
+    for j in 0..4 {
+        parts[j] = dot3(&columns, planes[j].k);
+    }
+    parts
+}
+
+/// Two row chunks of eight pixels (rows `y` and `y + 1` of one block: the row parts of the
+/// planes `1/w`, depth and the mode's u and v in `rows`, their column parts in `columns`,
+/// each value `R - C`; buffer indices `index`) drawn as
+/// one chunk of sixteen: each row gets [`texture_chunk`]'s operations lane for lane, then
+/// one sixteen-lane texture lookup (the lookup a pair of chunks gets in `Lookups`), and a
+/// masked depth test and write per row. [`pairs_apply`] must hold.
 #[inline]
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512vl,avx512dq")]
 pub(in crate::raster::lanes) fn texture_pair(
-    l: [[__m512d; 3]; 2],
-    consts: &Constants,
+    (rows, columns): (&[[f64; 4]; 2], &[__m512d; 4]),
     covered: [i32; 2],
     index: [usize; 2],
     mode: Interpolation,
@@ -209,28 +237,19 @@ pub(in crate::raster::lanes) fn texture_pair(
     let mut v = [_mm256_setzero_ps(); 2];
     let mut depth = [_mm256_setzero_ps(); 2];
     for h in 0..2 {
-        let l = &l[h];
-        // q_i = l_i / w_i, valid where their sum is positive and finite.
-        let q_i = |i: usize| _mm512_mul_pd(l[i], _mm512_set1_pd(consts.inv_w[i]));
-        let q = [q_i(0), q_i(1), q_i(2)];
-        let sum = _mm512_add_pd(_mm512_add_pd(q[0], q[1]), q[2]);
-        let valid = _mm512_cmp_pd_mask::<_CMP_GT_OQ>(sum, _mm512_setzero_pd())
-            & _mm512_cmp_pd_mask::<_CMP_LT_OQ>(sum, _mm512_set1_pd(f64::INFINITY));
-        ok |= ((covered[h] as u16) & u16::from(valid) & 0xff) << (8 * h);
-        depth[h] = _mm512_cvtpd_ps(dot3(l, consts.depth));
-        let weights = match mode {
+        let value = |j: usize| _mm512_sub_pd(_mm512_set1_pd(rows[h][j]), columns[j]);
+        let [one_over_w, d, uh, vh] = [value(0), value(1), value(2), value(3)];
+        ok |= ((covered[h] as u16) & u16::from(valid(one_over_w)) & 0xff) << (8 * h);
+        depth[h] = _mm512_cvtpd_ps(d);
+        let (uh, vh) = match mode {
             Interpolation::Perspective => {
-                let inv = _mm512_div_pd(_mm512_set1_pd(1.0), sum);
-                [
-                    _mm512_mul_pd(q[0], inv),
-                    _mm512_mul_pd(q[1], inv),
-                    _mm512_mul_pd(q[2], inv),
-                ]
+                let inv = inverse(one_over_w);
+                (_mm512_mul_pd(uh, inv), _mm512_mul_pd(vh, inv))
             }
-            Interpolation::Affine => *l,
+            Interpolation::Affine => (uh, vh),
         };
-        u[h] = _mm512_cvtpd_ps(dot3(&weights, consts.u));
-        v[h] = _mm512_cvtpd_ps(dot3(&weights, consts.v));
+        u[h] = _mm512_cvtpd_ps(uh);
+        v[h] = _mm512_cvtpd_ps(vh);
     }
     if ok == 0 {
         return;
