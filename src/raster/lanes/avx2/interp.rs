@@ -95,6 +95,107 @@ impl At4 {
     }
 }
 
+/// A block's eight columns, in two halves of four: the weights' column terms and the
+/// column parts of the planes `1/w`, depth and the mode's u and v.
+pub(super) struct BlockColumns {
+    terms: [[__m256d; 3]; 2],
+    parts: [[__m256d; 4]; 2],
+}
+
+impl BlockColumns {
+    /// The columns from `bx` (pixel centres `bx + 0.5 + k`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(super) fn new(w: &WeightPlanes, bx: u32, planes: &[ScreenPlane; 4]) -> Self {
+        let px = _mm256_set1_pd(f64::from(bx) + 0.5);
+        let terms = [
+            column_terms4(w, _mm256_add_pd(px, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0))),
+            column_terms4(w, _mm256_add_pd(px, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0))),
+        ];
+        let mut parts = [[_mm256_setzero_pd(); 4]; 2];
+        for h in 0..2 {
+            for j in 0..4 {
+                parts[h][j] = dot3(&terms[h], planes[j].k);
+            }
+        }
+        Self { terms, parts }
+    }
+
+    /// The planes' values in a row with row parts `row`: `R - C`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(super) fn values(&self, row: &[f64; 4]) -> [At4; 2] {
+        let zero = _mm256_setzero_pd();
+        let half = |h: usize| {
+            let mut values = [zero; 4];
+            for j in 0..4 {
+                values[j] = _mm256_sub_pd(_mm256_set1_pd(row[j]), self.parts[h][j]);
+            }
+            At4 {
+                values,
+                l: [zero; 3],
+                other: [zero; 2],
+            }
+        };
+        [half(0), half(1)]
+    }
+
+    /// Everything in a row with the weights' row terms `row` ([`At4::of_terms`]).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(super) fn of_terms(&self, c: &Constants, mode: Interpolation, row: &[f64; 3]) -> [At4; 2] {
+        let rows = [
+            _mm256_set1_pd(row[0]),
+            _mm256_set1_pd(row[1]),
+            _mm256_set1_pd(row[2]),
+        ];
+        let half = |h: usize| {
+            let terms = Terms4 {
+                rows,
+                columns: self.terms[h],
+            };
+            At4::of_terms(c, mode, &terms, true)
+        };
+        [half(0), half(1)]
+    }
+}
+
+/// What `from_planes4!` finds for four samples.
+pub(super) struct Four {
+    pub(super) u: __m256d,
+    pub(super) v: __m256d,
+    pub(super) depth: __m256d,
+    /// Validity and wireframe bits, lane k in bit k.
+    pub(super) ok: i32,
+    pub(super) wire: i32,
+    /// Wireframe halo bits, lane k in bit k.
+    pub(super) halo: i32,
+    /// The screen weights (zero unless [`Constants::reads_weights`]).
+    pub(super) l: [__m256d; 3],
+    /// `1 / (1/w)` (zero when affine without both uvs).
+    pub(super) inv: __m256d,
+    /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
+    pub(super) both_uv: Option<[__m256d; 4]>,
+}
+
+impl Four {
+    /// The weights of the interpolation: perspective-correct `p_i = (l_i / w_i) * inv`, or
+    /// the screen weights (the channels of [`Constants`] are `dot3(w, channel)`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(super) fn weights(&self, c: &Constants, mode: Interpolation) -> [__m256d; 3] {
+        match mode {
+            Interpolation::Perspective => [0, 1, 2].map(|i| {
+                _mm256_mul_pd(
+                    _mm256_mul_pd(self.l[i], _mm256_set1_pd(c.inv_w[i])),
+                    self.inv,
+                )
+            }),
+            Interpolation::Affine => self.l,
+        }
+    }
+}
+
 /// uv, depth (f64 lanes) and the validity bits of four samples from [`At4`], as
 /// `interpolate::fragment_at_window`: valid where `1/w` is positive and finite, `inv =
 /// 1 / (1/w)`, perspective-correct uv `(u/w) * inv`, and the wireframe from the weights.

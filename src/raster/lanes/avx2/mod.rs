@@ -4,9 +4,10 @@
 //! is a mask or a clamp on both axes; tests check the two agree bit for bit. The bodies are
 //! generic over `WIDE`: the subfolder `avx512/` (code that needs AVX-512 as well) compiles them
 //! again for AVX-512.
-//! The texture lookups are in `texture.rs` (through the sampler of `sampler.rs`), the writes
-//! of a chunk in `write.rs`, the non-texture colours in `shade.rs`, the gathering of sparse
-//! rows in `sparse.rs` and the scanline lanes in `scanline.rs`.
+//! The interpolation of a chunk (the planes' values, `from_planes4!`) is in `interp.rs`, the
+//! texture lookups in `texture.rs` (through the sampler of `sampler.rs`), the writes of a
+//! chunk in `write.rs`, the non-texture colours in `shade.rs`, the gathering of sparse rows in
+//! `sparse.rs` and the scanline lanes in `scanline.rs`.
 
 use std::arch::x86_64::*;
 
@@ -18,7 +19,6 @@ use super::{
 use crate::raster::interpolate::Interpolation;
 use crate::raster::scanline::row_span_of;
 use crate::raster::settings::Rasterizer;
-use crate::raster::setup::{ScreenPlane, WeightPlanes};
 use crate::raster::shade::{
     AMBIENT, MIN_NORMAL_LENGTH, WIRE_COLOR, WIRE_HALO_COLOR, WIRE_HALO_PX, WIRE_WIDTH_PX,
 };
@@ -40,7 +40,7 @@ pub(in crate::raster::lanes) use texture::Lookups;
 pub(in crate::raster::lanes) use write::{finish, mask_from_bits};
 
 use avx512::wide;
-use interp::{At4, Terms4, column_terms4};
+use interp::{At4, BlockColumns, Four};
 use sampler::{VecSampler, sample};
 
 /// A chunk of eight pixels whose colours are still to be looked up.
@@ -77,107 +77,6 @@ fn dot3(w: &[__m256d; 3], x: [f64; 3]) -> __m256d {
         _mm256_mul_pd(w[1], _mm256_set1_pd(x[1])),
     );
     _mm256_add_pd(t, _mm256_mul_pd(w[2], _mm256_set1_pd(x[2])))
-}
-
-/// A block's eight columns, in two halves of four: the weights' column terms and the
-/// column parts of the planes `1/w`, depth and the mode's u and v.
-struct BlockColumns {
-    terms: [[__m256d; 3]; 2],
-    parts: [[__m256d; 4]; 2],
-}
-
-impl BlockColumns {
-    /// The columns from `bx` (pixel centres `bx + 0.5 + k`).
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    fn new(w: &WeightPlanes, bx: u32, planes: &[ScreenPlane; 4]) -> Self {
-        let px = _mm256_set1_pd(f64::from(bx) + 0.5);
-        let terms = [
-            column_terms4(w, _mm256_add_pd(px, _mm256_setr_pd(0.0, 1.0, 2.0, 3.0))),
-            column_terms4(w, _mm256_add_pd(px, _mm256_setr_pd(4.0, 5.0, 6.0, 7.0))),
-        ];
-        let mut parts = [[_mm256_setzero_pd(); 4]; 2];
-        for h in 0..2 {
-            for j in 0..4 {
-                parts[h][j] = dot3(&terms[h], planes[j].k);
-            }
-        }
-        Self { terms, parts }
-    }
-
-    /// The planes' values in a row with row parts `row`: `R - C`.
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    fn values(&self, row: &[f64; 4]) -> [At4; 2] {
-        let zero = _mm256_setzero_pd();
-        let half = |h: usize| {
-            let mut values = [zero; 4];
-            for j in 0..4 {
-                values[j] = _mm256_sub_pd(_mm256_set1_pd(row[j]), self.parts[h][j]);
-            }
-            At4 {
-                values,
-                l: [zero; 3],
-                other: [zero; 2],
-            }
-        };
-        [half(0), half(1)]
-    }
-
-    /// Everything in a row with the weights' row terms `row` ([`At4::of_terms`]).
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    fn of_terms(&self, c: &Constants, mode: Interpolation, row: &[f64; 3]) -> [At4; 2] {
-        let rows = [
-            _mm256_set1_pd(row[0]),
-            _mm256_set1_pd(row[1]),
-            _mm256_set1_pd(row[2]),
-        ];
-        let half = |h: usize| {
-            let terms = Terms4 {
-                rows,
-                columns: self.terms[h],
-            };
-            At4::of_terms(c, mode, &terms, true)
-        };
-        [half(0), half(1)]
-    }
-}
-
-/// What `from_planes4!` finds for four samples.
-struct Four {
-    u: __m256d,
-    v: __m256d,
-    depth: __m256d,
-    /// Validity and wireframe bits, lane k in bit k.
-    ok: i32,
-    wire: i32,
-    /// Wireframe halo bits, lane k in bit k.
-    halo: i32,
-    /// The screen weights (zero unless [`Constants::reads_weights`]).
-    l: [__m256d; 3],
-    /// `1 / (1/w)` (zero when affine without both uvs).
-    inv: __m256d,
-    /// `[u_affine, v_affine, u_smooth, v_smooth]` when [`Constants`] asks for them.
-    both_uv: Option<[__m256d; 4]>,
-}
-
-impl Four {
-    /// The weights of the interpolation: perspective-correct `p_i = (l_i / w_i) * inv`, or
-    /// the screen weights (the channels of [`Constants`] are `dot3(w, channel)`).
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    fn weights(&self, c: &Constants, mode: Interpolation) -> [__m256d; 3] {
-        match mode {
-            Interpolation::Perspective => [0, 1, 2].map(|i| {
-                _mm256_mul_pd(
-                    _mm256_mul_pd(self.l[i], _mm256_set1_pd(c.inv_w[i])),
-                    self.inv,
-                )
-            }),
-            Interpolation::Affine => self.l,
-        }
-    }
 }
 
 /// Draws rows `rows` of `tri` with the lanes of `rasterizer` (see the parent module): every

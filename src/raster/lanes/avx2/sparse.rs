@@ -171,7 +171,7 @@ pub(super) fn centres(v: __m128i) -> __m256d {
 /// operations with the row term per lane.
 #[inline]
 #[target_feature(enable = "avx2")]
-pub(super) fn terms4(w: &WeightPlanes, px: __m256d, py: __m256d) -> super::Terms4 {
+pub(super) fn terms4(w: &WeightPlanes, px: __m256d, py: __m256d) -> super::interp::Terms4 {
     let mut rows = [_mm256_setzero_pd(); 3];
     for (i, r) in rows.iter_mut().enumerate() {
         *r = _mm256_mul_pd(
@@ -179,9 +179,9 @@ pub(super) fn terms4(w: &WeightPlanes, px: __m256d, py: __m256d) -> super::Terms
             _mm256_sub_pd(py, _mm256_set1_pd(w.start[i].y)),
         );
     }
-    super::Terms4 {
+    super::interp::Terms4 {
         rows,
-        columns: super::column_terms4(w, px),
+        columns: super::interp::column_terms4(w, px),
     }
 }
 
