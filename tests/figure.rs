@@ -146,9 +146,11 @@ fn the_svg_parses_and_holds_the_labels_as_outlines_named_by_their_text() {
     // The vertex labels with their w, computed independently from the scene's clip w.
     let mesh = scene.to_mesh();
     let w_a = barylab::figure::overlay::format_w(mesh.vertices[0].clip.w);
+    // (Each view of this small figure is too narrow for its mode's whole title: the short
+    // forms, see `a_narrow_side_by_side_figure_titles_its_views_with_the_short_forms`.)
     for label in [
-        "AFFINE (screen-space)".to_string(),
-        "PERSPECTIVE-CORRECT".to_string(),
+        "AFFINE".to_string(),
+        "PERSPECTIVE".to_string(),
         format!("A  w = {w_a}"),
     ] {
         // Two views: each label twice (the mode titles once each).
@@ -383,4 +385,35 @@ fn the_overlay_scale_enlarges_labels_and_margins_not_the_image() {
     };
     let err = Figure::compose(&scene, &texture, &bad).expect_err("out of range");
     assert_eq!(err.to_string(), "overlay scale 9 is outside 0.5..=5");
+}
+
+/// A side-by-side figure too narrow for the whole mode titles titles its views with their
+/// short forms, as the app does: shrunk to fit, "AFFINE (screen-space)" was much smaller
+/// than "PERSPECTIVE-CORRECT" beside it.
+#[test]
+fn a_narrow_side_by_side_figure_titles_its_views_with_the_short_forms() {
+    let titles = |size: [u32; 2], scale: u32| {
+        let (mut scene, texture) = small_default();
+        scene.set_size(size[0], size[1]);
+        let options = FigureOptions {
+            compare: Compare::SideBySide,
+            ..pinned([size[0] / 2, size[1] / 2], scale)
+        };
+        let fig = Figure::compose(&scene, &texture, &options).expect("figure");
+        let doc = svg::to_svg(&fig).expect("svg");
+        let found: Vec<String> = doc
+            .split(r#"<g class="label" aria-label=""#)
+            .skip(1)
+            .filter_map(|rest| rest.split('"').next())
+            .filter(|t| t.starts_with("AFFINE") || t.starts_with("PERSPECTIVE"))
+            .map(str::to_string)
+            .collect();
+        found
+    };
+    assert_eq!(titles([120, 90], 1), ["AFFINE", "PERSPECTIVE"]);
+    // Wide enough: the whole titles.
+    assert_eq!(
+        titles([400, 300], 1),
+        ["AFFINE (screen-space)", "PERSPECTIVE-CORRECT"]
+    );
 }

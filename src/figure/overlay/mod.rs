@@ -75,6 +75,20 @@ pub fn short_mode_label(text: &str, lang: Lang) -> Option<String> {
     .map(|(_, key)| tr(lang, key))
 }
 
+/// [`short_mode_label`] of `text` in whichever language words it (a rendered figure knows
+/// its titles, not their language).
+pub fn short_title(text: &str) -> Option<String> {
+    [Lang::En, Lang::Zh]
+        .into_iter()
+        .find_map(|lang| short_mode_label(text, lang))
+}
+
+/// Whether `shape` is a view's title: a boxed text above the image's top-left corner.
+pub fn is_title(shape: &Shape) -> bool {
+    matches!(shape, Shape::Text { at, offset, background: Some(_), .. }
+        if *at == DVec2::ZERO && *offset == [0.0, -TITLE_GAP])
+}
+
 /// The overlay's other words in `lang`: the difference view's title, the colour bar's unit,
 /// "behind the camera".
 fn words(lang: Lang) -> [String; 3] {

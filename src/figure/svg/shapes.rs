@@ -9,7 +9,7 @@ use super::MIN_OBSTACLE_RADIUS;
 use super::labels::{Glyphs, Label, label};
 use super::markup::{Transform, fill, hex, n, points, rect, stroke};
 use crate::figure::label_place;
-use crate::figure::overlay::{Anchor, LABEL_BG, LABEL_TEXT, Overlay, Rgba, Shape, Stroke};
+use crate::figure::overlay::{self, Anchor, LABEL_BG, LABEL_TEXT, Overlay, Rgba, Shape, Stroke};
 use crate::figure::text::{self, Box2, LABEL_PAD};
 
 /// Points: corner radius of the colour bar's background.
@@ -169,7 +169,18 @@ pub(super) fn overlay(
                     0.0
                 };
                 let width = text::measure(txt, *size).0[0];
-                let size = &(size * text::fit(width, 2.0 * pad, clip));
+                let mut fits = text::fit(width, 2.0 * pad, clip);
+                // A mode's title too wide for its view (side by side, a narrow figure) in its
+                // short form at full size, as the app shows it: shrunk, it was smaller than
+                // its neighbour's title.
+                let short = (fits < 1.0 && overlay::is_title(shape))
+                    .then(|| overlay::short_title(txt))
+                    .flatten();
+                let txt = short.as_deref().unwrap_or(txt);
+                if short.is_some() {
+                    fits = text::fit(text::measure(txt, *size).0[0], 2.0 * pad, clip);
+                }
+                let size = &(size * fits);
                 let (text_size, _) = text::measure(txt, *size);
                 let outer = text::padded(text_size, background.is_some(), k);
                 // A label with a box keeps clear of the others; a bare letter (a handle's

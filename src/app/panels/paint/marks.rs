@@ -1,8 +1,6 @@
 //! What presentation mode changes in an overlay before it is painted: its marks scaled up,
 //! the views' titles left out or renamed.
 
-use glam::DVec2;
-
 use crate::figure::overlay::{Overlay, Shape, Stroke};
 
 /// Draws the overlay's marks `k` times their usual size: handles, markers and lines (their
@@ -77,6 +75,5 @@ pub fn title(overlay: &Overlay) -> Option<&str> {
 
 /// Whether `shape` is a view's title: a boxed text above the image's top-left corner.
 pub(super) fn is_title(shape: &Shape) -> bool {
-    matches!(shape, Shape::Text { at, offset, background: Some(_), .. }
-        if *at == DVec2::ZERO && *offset == [0.0, -crate::figure::overlay::TITLE_GAP])
+    crate::figure::overlay::is_title(shape)
 }
