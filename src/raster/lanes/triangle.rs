@@ -159,7 +159,8 @@ impl Constants {
     }
 
     /// Whether the shading or the wireframe reads the screen weights (texture and depth
-    /// shading without the wireframe read only the planes).
+    /// shading without the wireframe read only the planes). Read by the AVX2 lanes.
+    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
     #[inline(always)]
     pub(super) fn reads_weights(&self) -> bool {
         self.used_channels > 0 || self.wire.is_some()
