@@ -190,9 +190,10 @@ pub(super) fn rasterize(
                     &mut target,
                     &mut |x, y, e| per_pixel.push((x, y, e)),
                 );
+                let planes = interpolate::Planes::of(setup);
                 for (x, y, e) in per_pixel {
                     let p = pixel_centre(x, y);
-                    if let Some(frag) = interpolate::fragment_at_window(setup, e, p) {
+                    if let Some(frag) = interpolate::fragment_with_planes(setup, &planes, e, p) {
                         write(band, x, y, &frag);
                     }
                 }
@@ -210,6 +211,7 @@ pub(super) fn rasterize(
     }
     match rasterizer {
         Rasterizer::EdgeFunction => {
+            let planes = interpolate::Planes::of(setup);
             for y in y_start..=y_end {
                 for x in b.x0..=b.x1 {
                     let e = setup.edge_values(sample_point(x, y));
@@ -217,7 +219,7 @@ pub(super) fn rasterize(
                         continue;
                     }
                     let p = pixel_centre(x, y);
-                    if let Some(frag) = interpolate::fragment_at_window(setup, e, p) {
+                    if let Some(frag) = interpolate::fragment_with_planes(setup, &planes, e, p) {
                         write(band, x, y, &frag);
                     }
                 }

@@ -62,6 +62,14 @@ pub struct Planes {
 }
 
 impl Planes {
+    /// The planes of no triangle (a placeholder before a triangle is set).
+    pub const ZERO: Self = Self {
+        inv_w: ScreenPlane::ZERO,
+        depth: ScreenPlane::ZERO,
+        uv_over_w: [ScreenPlane::ZERO; 2],
+        uv_affine: [ScreenPlane::ZERO; 2],
+    };
+
     /// The planes of a set-up triangle.
     pub fn of(setup: &TriangleSetup) -> Self {
         let w = &setup.weights;
@@ -166,10 +174,20 @@ pub fn fragment(setup: &TriangleSetup, x: u32, y: u32) -> Option<Fragment> {
 /// perspective weights `p_i = (l_i / w_i) * (1 / (1/w))` ([`perspective_weights`]); the
 /// other attributes `sum l_i f_i` (`noperspective`) and `sum p_i f_i` (`smooth`).
 pub fn fragment_at_window(setup: &TriangleSetup, edges: [i64; 3], p: DVec2) -> Option<Fragment> {
+    fragment_with_planes(setup, &Planes::of(setup), edges, p)
+}
+
+/// [`fragment_at_window`] with the triangle's planes made once by the caller
+/// (`Planes::of(setup)`), for a loop over many samples of one triangle.
+pub fn fragment_with_planes(
+    setup: &TriangleSetup,
+    planes: &Planes,
+    edges: [i64; 3],
+    p: DVec2,
+) -> Option<Fragment> {
     let w = &setup.weights;
     let (rows, columns) = (w.row_terms(p.y), w.column_terms(p.x));
     let l = [0, 1, 2].map(|i| w.weight_of_terms(rows[i], columns[i]));
-    let planes = Planes::of(setup);
     let at = |plane: &ScreenPlane| plane.part(&rows) - plane.part(&columns);
     let one_over_w = at(&planes.inv_w);
     let inv = perspective_divisor(one_over_w)?;

@@ -352,7 +352,8 @@ fn from_terms(
     for k in 0..LANES {
         let col = &columns[k];
         let at = |plane: &ScreenPlane| plane.part(rows) - plane.part(col);
-        let l: [f64; 3] = std::array::from_fn(|i| c.weights.weight_of_terms(rows[i], col[i]));
+        let l_i = |i: usize| c.weights.weight_of_terms(rows[i], col[i]);
+        let l = [l_i(0), l_i(1), l_i(2)];
         let one_over_w = at(&planes.inv_w);
         out.ok[k] = one_over_w > 0.0 && one_over_w < f64::INFINITY;
         let inv = 1.0 / one_over_w;

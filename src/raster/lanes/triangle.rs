@@ -98,12 +98,7 @@ impl Constants {
         depth: [0.0; 3],
         u: [0.0; 3],
         v: [0.0; 3],
-        attrs: Planes {
-            inv_w: ScreenPlane::ZERO,
-            depth: ScreenPlane::ZERO,
-            uv_over_w: [ScreenPlane::ZERO; 2],
-            uv_affine: [ScreenPlane::ZERO; 2],
-        },
+        attrs: Planes::ZERO,
         both_uv: false,
         channels: [[0.0; 3]; CHANNELS],
         used_channels: 0,
@@ -156,6 +151,14 @@ impl Constants {
             Interpolation::Perspective => &self.attrs.uv_over_w,
             Interpolation::Affine => &self.attrs.uv_affine,
         }
+    }
+
+    /// The planes texture shading reads, in the order the lanes keep them: `1/w`, the depth,
+    /// and the mode's u and v ([`Constants::uv_planes`]).
+    #[inline(always)]
+    pub(super) fn texture_planes(&self, mode: Interpolation) -> [ScreenPlane; 4] {
+        let uv = self.uv_planes(mode);
+        [self.attrs.inv_w, self.attrs.depth, uv[0], uv[1]]
     }
 
     /// Whether the shading or the wireframe reads the screen weights (texture and depth

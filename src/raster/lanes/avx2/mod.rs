@@ -217,8 +217,7 @@ unsafe fn block_rows<const WIDE: bool>(
         // The planes texture shading reads: `1/w`, the depth, the mode's u and v; with the
         // weights (other shadings, the wireframe) or both uvs, every value comes from the
         // terms (`At4::of_terms`), the same values.
-        let uv = consts.uv_planes(mode);
-        let attrs = [consts.attrs.inv_w, consts.attrs.depth, uv[0], uv[1]];
+        let attrs = consts.texture_planes(mode);
         let slow = consts.reads_weights() || consts.both_uv;
         // Row chunks in one AVX-512 register each (see `wide`).
         let wide_rows = WIDE && wide::applies(consts, color, sampler, target);

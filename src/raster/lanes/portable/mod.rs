@@ -187,9 +187,7 @@ fn edge_body(
     let planes = &tri.planes;
     let consts = &tri.consts;
     let weights = &consts.weights;
-    let uv = consts.uv_planes(mode);
-    // The planes this shading reads: `1/w`, the depth, and the mode's u and v.
-    let attrs = [consts.attrs.inv_w, consts.attrs.depth, uv[0], uv[1]];
+    let attrs = consts.texture_planes(mode);
     let (x0, x1) = (tri.bounds.x0, tri.bounds.x1);
     let a = three(|i| planes.a[i] as f64);
     let t = three(|i| planes.t[i] as f64);

@@ -184,8 +184,7 @@ pub(in crate::raster::lanes) unsafe fn inside_block(
     row_parts: &mut RowParts,
 ) {
     let w = &consts.weights;
-    let uv = consts.uv_planes(mode);
-    let attrs = [consts.attrs.inv_w, consts.attrs.depth, uv[0], uv[1]];
+    let attrs = consts.texture_planes(mode);
     // Each plane's column part: the same in all the block's rows.
     // SAFETY: as the function's.
     let parts = unsafe { column_parts(w, bx, &attrs) };
