@@ -441,9 +441,17 @@ pub(crate) fn canvas_ui(
             && gpu.is_none()
         {
             // Every corner at one w: both modes draw the same picture; the title says so
-            // instead of naming one (a lesson's flat steps are about screen space).
-            let title = lang.tr_with("figure.flat", &[("w", &format!("{w:.2}"))]);
-            paint::retitle(&mut shapes, &title);
+            // instead of naming one (a lesson's flat steps are about screen space). Where the
+            // whole sentence would be shrunk (a quiz column beside the canvas at a projector),
+            // a shorter form at full size: "SCREEN SPACE (w = 1.00)", else "SCREEN SPACE".
+            let w = format!("{w:.2}");
+            let titles = ["figure.flat", "figure.flat_short", "figure.flat_shortest"]
+                .map(|key| lang.tr_with(key, &[("w", &w)]));
+            let title = titles
+                .iter()
+                .find(|t| paint::fits_unshrunk(ui.painter(), t, overlay::TEXT_BADGE, clip))
+                .unwrap_or(&titles[2]);
+            paint::retitle(&mut shapes, title);
         }
         // The sample view's buffer (the GPU view shows the GL's image instead).
         let buffer_title = gpu
