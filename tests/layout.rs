@@ -517,3 +517,78 @@ fn s_steps_along_the_scanline_span_only_with_the_scanline_rasterizer() {
     h.step();
     assert!(!h.state().canvas().span_play);
 }
+
+/// The font size of the painted text starting with `start` (the canvas's title) and the
+/// largest size of the corners' labels ("w = ").
+fn title_and_label_sizes(h: &Harness<'_, BaryApp>, start: &str) -> (Option<(String, f32)>, f32) {
+    let mut title = None;
+    let mut label: f32 = 0.0;
+    for c in &h.output().shapes {
+        if let egui::Shape::Text(t) = &c.shape {
+            let size = t.galley.job.sections[0].format.font_id.size;
+            if t.galley.job.text.starts_with(start) {
+                title = Some((t.galley.job.text.clone(), size));
+            } else if t.galley.job.text.contains("w = ") {
+                label = label.max(size);
+            }
+        }
+    }
+    (title, label)
+}
+
+/// At a 1024x768 projector with text size 1.5, a canvas title too long for its view is a
+/// shorter form at full size (as large as the corners' labels), not the whole sentence
+/// shrunk to about 13 pixels: the built-in step 6 beside the quiz ("SCREEN SPACE (w = 1.00)"
+/// for "SCREEN SPACE (every w = 1.00: both modes agree)") and the samples lesson's black-edge
+/// step beside the enlarged pixel ("Resolve (black-edge bug)" for "Resolve: the average of 4
+/// samples (black-edge bug)").
+#[test]
+fn a_long_canvas_title_is_a_shorter_form_at_full_size() {
+    for lang in langs() {
+        let bug = lang.tr_with("figure.samples.with_bug", &[("view", &"")]);
+        let cases = [
+            (
+                "builtin",
+                6,
+                lang.tr("figure.flat_shortest"),
+                lang.tr_with("figure.flat", &[("w", &"1.00")]),
+            ),
+            (
+                "samples",
+                4,
+                lang.tr("figure.samples.short.resolve"),
+                barylab::figure::sample_buffers::title(
+                    barylab::figure::sample_buffers::SampleBufferKind::Resolve,
+                    0,
+                    4,
+                    true,
+                    lang,
+                ),
+            ),
+        ];
+        for (lesson, step, start, whole) in cases {
+            let h = common::app::lecture_with(lesson, step, lang, false);
+            let (title, label) = title_and_label_sizes(&h, &start);
+            let (text, size) =
+                title.unwrap_or_else(|| panic!("{lang:?}, {lesson} {step}: no title {start:?}…"));
+            assert!(
+                label > 0.0,
+                "{lang:?}, {lesson} {step}: the corners' labels"
+            );
+            assert!(
+                size >= label - 0.01,
+                "{lang:?}, {lesson} {step}: the title {text:?} at {size} points, the labels at {label}"
+            );
+            assert_ne!(
+                text, whole,
+                "{lang:?}, {lesson} {step}: the whole title does not fit"
+            );
+            if lesson != "builtin" {
+                assert!(
+                    text.contains(bug.trim()),
+                    "{lang:?}: {text:?} names the bug"
+                );
+            }
+        }
+    }
+}

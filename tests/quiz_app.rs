@@ -263,38 +263,3 @@ fn with_a_side_panel_open_the_quiz_is_a_window_and_the_canvas_keeps_its_width() 
         "docked again right of the canvas {canvas:?}: {again:?}"
     );
 }
-
-/// On a flat step with the quiz's column beside the canvas (built-in step 6 at a 1024x768
-/// projector, text size 1.5), the canvas's title is a shorter form at full size, as large as
-/// the corners' labels: the whole sentence "SCREEN SPACE (every w = 1.00: both modes agree)"
-/// had been shrunk to fit, about 13 pixels high, too small for a room.
-#[test]
-fn a_flat_steps_title_beside_the_quiz_is_short_and_full_size() {
-    for lang in [Lang::En, Lang::Zh] {
-        let h = common::app::lecture_with("builtin", 6, lang, false);
-        let shortest = lang.tr("figure.flat_shortest");
-        let mut title = None;
-        let mut label_size: f32 = 0.0;
-        for c in &h.output().shapes {
-            if let egui::Shape::Text(t) = &c.shape {
-                let size = t.galley.job.sections[0].format.font_id.size;
-                if t.galley.job.text.starts_with(&shortest) {
-                    title = Some((t.galley.job.text.clone(), size));
-                } else if t.galley.job.text.contains("w = ") {
-                    label_size = label_size.max(size);
-                }
-            }
-        }
-        let (text, size) = title.unwrap_or_else(|| panic!("{lang:?}: no title {shortest:?}…"));
-        assert!(label_size > 0.0, "{lang:?}: the corners' labels");
-        assert!(
-            size >= label_size - 0.01,
-            "{lang:?}: the title {text:?} at {size} points, the labels at {label_size}"
-        );
-        assert_ne!(
-            text,
-            lang.tr_with("figure.flat", &[("w", &"1.00")]),
-            "{lang:?}: the whole sentence does not fit at full size beside the quiz"
-        );
-    }
-}

@@ -55,6 +55,16 @@ impl SampleBufferKind {
             SampleBufferKind::Depth => "figure.samples.depth",
         }
     }
+
+    /// The catalogue key of the buffer's short title (a narrow view's).
+    pub fn short_key(self) -> &'static str {
+        match self {
+            SampleBufferKind::Resolve => "figure.samples.short.resolve",
+            SampleBufferKind::Coverage => "figure.samples.short.coverage",
+            SampleBufferKind::Color => "figure.samples.short.color",
+            SampleBufferKind::Depth => "figure.samples.short.depth",
+        }
+    }
 }
 
 /// What the per-sample buffers view shows: a buffer, the sample index, and whether with the
@@ -214,13 +224,30 @@ pub fn samples_of(
 
 /// The title of `kind`'s image in `lang` (`k` the sample index, `n` the sample count).
 pub fn title(kind: SampleBufferKind, k: usize, n: usize, black_edges: bool, lang: Lang) -> String {
+    let [full, ..] = titles(kind, k, n, black_edges, lang);
+    full
+}
+
+/// [`title`] and two shorter forms, longest first, for a view too narrow for the whole title
+/// at full size: the buffer's short name with the bug's mark ("Resolve (black-edge bug)"),
+/// then the short name alone ("Resolve", "Sample 1: colour").
+pub fn titles(
+    kind: SampleBufferKind,
+    k: usize,
+    n: usize,
+    black_edges: bool,
+    lang: Lang,
+) -> [String; 3] {
     let k = k.min(n.max(1) - 1).to_string();
     let n = n.to_string();
-    let base = lang.tr_with(kind.key(), &[("k", &k), ("n", &n)]);
+    let args: [(&str, &dyn std::fmt::Display); 2] = [("k", &k), ("n", &n)];
+    let base = lang.tr_with(kind.key(), &args);
+    let short = lang.tr_with(kind.short_key(), &args);
+    let bug = |view: &str| lang.tr_with("figure.samples.with_bug", &[("view", &view)]);
     if black_edges {
-        lang.tr_with("figure.samples.with_bug", &[("view", &base)])
+        [bug(&base), bug(&short), short]
     } else {
-        base
+        [base, short.clone(), short]
     }
 }
 

@@ -86,26 +86,33 @@ impl SampleImages {
         })
     }
 
-    /// The title of a view showing `content` under `view`, when it shows a sample buffer.
-    pub fn title(
+    /// The titles of a view showing `content` under `view`, when it shows a sample buffer:
+    /// the whole title, then shorter forms for a narrow view
+    /// ([`sample_buffers::titles`]).
+    pub fn titles(
         &self,
         content: crate::figure::ViewContent,
         view: SampleView,
         lang: crate::i18n::Lang,
-    ) -> Option<String> {
+    ) -> Option<[String; 3]> {
         let crate::figure::ViewContent::Mode(m) = content else {
             return None;
         };
         let n = self.buffer(m)?.offsets.len();
-        let title =
-            sample_buffers::title(view.kind, view.index as usize, n, view.black_edges, lang);
+        let titles =
+            sample_buffers::titles(view.kind, view.index as usize, n, view.black_edges, lang);
         Some(if self.buffers.len() > 1 {
-            format!(
-                "{title} ({})",
-                crate::figure::overlay::mode_label_in(m, lang)
-            )
+            // The whole title with the mode's whole name, the shorter ones with its short name.
+            let mode = crate::figure::overlay::mode_label_in(m, lang);
+            let short = crate::figure::overlay::short_mode_label(&mode, lang);
+            let [full, a, b] = titles;
+            [
+                format!("{full} ({mode})"),
+                format!("{a} ({})", short.as_deref().unwrap_or(&mode)),
+                format!("{b} ({})", short.as_deref().unwrap_or(&mode)),
+            ]
         } else {
-            title
+            titles
         })
     }
 }

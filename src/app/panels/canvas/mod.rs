@@ -447,23 +447,27 @@ pub(crate) fn canvas_ui(
             let w = format!("{w:.2}");
             let titles = ["figure.flat", "figure.flat_short", "figure.flat_shortest"]
                 .map(|key| lang.tr_with(key, &[("w", &w)]));
-            let title = titles
-                .iter()
-                .find(|t| paint::fits_unshrunk(ui.painter(), t, overlay::TEXT_BADGE, clip))
-                .unwrap_or(&titles[2]);
-            paint::retitle(&mut shapes, title);
+            paint::retitle(
+                &mut shapes,
+                paint::first_fitting(ui.painter(), &titles, clip),
+            );
         }
         // The sample view's buffer (the GPU view shows the GL's image instead).
+        // Where its whole title would be shrunk, a shorter form at full size (the samples
+        // lesson's black-edge step beside the enlarged pixel at a projector).
         let buffer_title = gpu
             .is_none()
             .then(|| {
                 canvas
                     .samples
-                    .title(view.content, view_settings.samples_view, lang)
+                    .titles(view.content, view_settings.samples_view, lang)
             })
             .flatten();
-        if let Some(title) = &buffer_title {
-            paint::retitle(&mut shapes, title);
+        if let Some(titles) = &buffer_title {
+            paint::retitle(
+                &mut shapes,
+                paint::first_fitting(ui.painter(), titles, clip),
+            );
         }
         // A mode's title too wide for its view (side by side at a projector) in its short
         // form: shrunk to fit, it was smaller than its neighbour's and hard to read.

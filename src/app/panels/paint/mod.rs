@@ -81,6 +81,16 @@ pub fn fits_unshrunk(painter: &egui::Painter, text: &str, size: f32, clip: Rect)
     figure_text::fit(width, 2.0 * LABEL_PAD[0], to_box(clip)) >= 1.0
 }
 
+/// The first of `titles` (longest first) that fits `clip` at full size ([`fits_unshrunk`]),
+/// else the last.
+pub fn first_fitting<'a>(painter: &egui::Painter, titles: &'a [String], clip: Rect) -> &'a str {
+    titles
+        .iter()
+        .find(|t| fits_unshrunk(painter, t, crate::figure::overlay::TEXT_BADGE, clip))
+        .or(titles.last())
+        .map_or("", String::as_str)
+}
+
 /// Canvas position `p` as a screen point's coordinates.
 pub(super) fn to_point(t: CanvasTransform, p: DVec2) -> [f32; 2] {
     let q = t.to_screen(p);
