@@ -17,6 +17,7 @@
 
 mod depth;
 mod draw;
+mod labels;
 mod lens;
 mod orbit;
 mod svg;

@@ -334,7 +334,7 @@ impl<'a> TetraFigure<'a> {
         }
         // The names and marks first, then the weights, spread so that none covers another.
         labels.extend(weight_labels);
-        super::draw::spread_labels(&mut labels, rect, measure);
+        super::labels::spread_labels(&mut labels, rect, measure);
         back.extend(labels);
         back
     }
