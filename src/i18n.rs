@@ -143,6 +143,25 @@ impl Lang {
         }
         out
     }
+
+    /// A difference of `n` colour levels (steps of an 8-bit channel) in words, the unit in
+    /// the count's number: "1 level", "64 levels" (zh "1 级").
+    ///
+    /// ```
+    /// use barylab::i18n::Lang;
+    /// assert_eq!(Lang::En.levels(1u8), "1 level");
+    /// assert_eq!(Lang::En.levels(0u8), "0 levels");
+    /// assert_eq!(Lang::Zh.levels(3u8), "3 级");
+    /// ```
+    pub fn levels(self, n: impl fmt::Display) -> String {
+        let n = n.to_string();
+        let key = if n == "1" {
+            "count.level_one"
+        } else {
+            "count.level_other"
+        };
+        self.tr_with(key, &[("n", &n)])
+    }
 }
 
 mod font;

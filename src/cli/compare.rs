@@ -138,7 +138,7 @@ fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>, lang: L
             ("h", &c.height),
             ("mode", &mode_short(c.mode, lang)),
             ("by", &by),
-            ("tolerance", &c.tolerance),
+            ("tolerance", &lang.levels(c.tolerance)),
         ],
     ));
     lines.push(lang.tr_with(
@@ -158,7 +158,7 @@ fn text(c: &Comparison, image: &Path, scene: &Path, diff: Option<&Path>, lang: L
         "compare.report.colour",
         &[
             ("n", &c.color_differing),
-            ("tolerance", &c.tolerance),
+            ("tolerance", &lang.levels(c.tolerance)),
             ("max", &c.max_color_difference),
             ("at", &at),
         ],

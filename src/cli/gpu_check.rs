@@ -136,7 +136,7 @@ fn sample_lines(c: &SampleCheck, lang: Lang) -> Vec<String> {
         &[
             ("depth", &format!("{:.1e}", c.max_depth_difference)),
             ("n", &c.resolve_differing),
-            ("max", &c.max_resolve_difference),
+            ("max", &lang.levels(c.max_resolve_difference)),
         ],
     ));
     lines
@@ -236,7 +236,7 @@ fn text(r: &Report, lang: Lang) -> String {
             "compare.gpu_check.colour",
             &[
                 ("n", &s.color_differing),
-                ("max", &s.max_color_difference),
+                ("max", &lang.levels(s.max_color_difference)),
                 ("at", &at(s.max_color_at)),
                 ("p999", &s.p999_color_difference),
             ],

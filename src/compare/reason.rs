@@ -214,7 +214,7 @@ impl Reason {
             } => lang.tr_with(
                 "compare.reason.colour",
                 &[
-                    ("levels", levels),
+                    ("levels", &lang.levels(*levels)),
                     (
                         "triangle",
                         &triangle.map_or_else(|| "-".to_string(), |t| t.to_string()),

@@ -165,7 +165,10 @@ impl LodCheck {
             ),
             lang.tr_with(
                 "compare.gpu_check.lod_colour",
-                &[("n", &self.agreeing), ("max", &self.agreeing_max_color)],
+                &[
+                    ("n", &self.agreeing),
+                    ("max", &lang.levels(self.agreeing_max_color)),
+                ],
             ),
             lang.tr_with("compare.gpu_check.note", &[("note", &lang.tr(why))]),
         ]

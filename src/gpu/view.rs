@@ -58,10 +58,10 @@ impl ImageDiff {
     /// identical on N of M pixels; largest colour difference K levels".
     pub fn summary_en(&self) -> String {
         format!(
-            "coverage identical on {} of {} pixels; largest colour difference {} levels",
+            "coverage identical on {} of {} pixels; largest colour difference {}",
             self.coverage_same(),
             self.pixels,
-            self.max_color_difference
+            crate::i18n::Lang::En.levels(self.max_color_difference)
         )
     }
 }
@@ -227,6 +227,15 @@ mod tests {
         assert_eq!(
             d.summary_en(),
             "coverage identical on 8 of 8 pixels; largest colour difference 0 levels"
+        );
+        // One level apart at one pixel (llvmpipe's usual rounding): the unit in the singular.
+        let mut gl_col = col.clone();
+        gl_col[1][0] ^= 1;
+        let d = image_diff(4, &tri, &col, &ids(&tri), &gl_col);
+        assert_eq!(d.max_color_difference, 1);
+        assert_eq!(
+            d.summary_en(),
+            "coverage identical on 8 of 8 pixels; largest colour difference 1 level"
         );
     }
 

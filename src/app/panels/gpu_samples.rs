@@ -145,7 +145,7 @@ pub fn summary_lines(s: &SamplesSummary, lang: Lang) -> Vec<(String, bool)> {
     lines.push((
         lang.tr_with(
             "gpu_view.samples_resolve",
-            &[("max", &s.max_resolve_difference)],
+            &[("max", &lang.levels(s.max_resolve_difference))],
         ),
         // Different uv (the GL's formula) may read other texels: then the resolve differs.
         s.max_resolve_difference <= 1 || s.sample_over_centre,

@@ -362,7 +362,7 @@ pub fn summary(d: &crate::gpu::view::ImageDiff, lang: Lang) -> String {
         &[
             ("same", &d.coverage_same()),
             ("total", &d.pixels),
-            ("max", &d.max_color_difference),
+            ("max", &lang.levels(d.max_color_difference)),
         ],
     )
 }

@@ -161,7 +161,7 @@ pub fn pixel_colours_ui(ui: &mut Ui, view: &GpuView, [x, y]: [u32; 2]) {
             ui.monospace(format!("{} {}", hex(gpu), short(name)));
             let d = (0..4).map(|i| ours[i].abs_diff(gpu[i])).max().unwrap_or(0);
             if d > 0 {
-                ui.label(lang.tr_with("gpu_view.pixel_difference", &[("levels", &d)]));
+                ui.label(lang.tr_with("gpu_view.pixel_difference", &[("levels", &lang.levels(d))]));
             }
         });
     }

@@ -23,7 +23,7 @@ pub fn summary(c: &Comparison, lang: Lang) -> String {
         &[
             ("coverage", &(c.only_theirs + c.only_ours)),
             ("colour", &c.color_differing),
-            ("max", &c.max_color_difference),
+            ("max", &lang.levels(c.max_color_difference)),
         ],
     )
 }
