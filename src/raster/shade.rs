@@ -340,7 +340,7 @@ pub fn unorm8(x: f32) -> u8 {
     if x.is_nan() {
         return 0;
     }
-    (x.clamp(0.0, 1.0) * 255.0).round() as u8
+    crate::raster::texture::round_byte(x.clamp(0.0, 1.0) * 255.0)
 }
 
 /// The colour of one fragment. `wire_gradients` are the triangle's

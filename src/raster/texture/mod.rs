@@ -18,7 +18,7 @@ pub use load::{ImageProblem, OpenedImage, TextureError, open_image, plain_error}
 use mip::{mip_chain, try_mip_chain};
 
 use filter::add_texel;
-pub(crate) use filter::{MAX_TEXEL_COORD, bilinear_fraction, texel_floor};
+pub(crate) use filter::{MAX_TEXEL_COORD, bilinear_fraction, round_byte, texel_floor};
 pub use filter::{Tap, Taps, bilinear_weights, byte_from_sum, wrap_coord};
 
 /// Texture minification/magnification filter.
