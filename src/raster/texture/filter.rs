@@ -109,21 +109,6 @@ pub(crate) fn round_byte(y: f32) -> u8 {
     t + u8::from(y - f32::from(t) >= 0.5)
 }
 
-#[cfg(test)]
-mod tests {
-    /// Every float from 0 to 255 rounds as `f32::round` rounds it.
-    #[test]
-    fn round_byte_is_round_on_every_float_of_the_byte_range() {
-        let last = 255.0f32.to_bits();
-        let wrong = (0..=last)
-            .map(f32::from_bits)
-            .filter(|&y| super::round_byte(y) != y.round() as u8)
-            .take(10)
-            .collect::<Vec<_>>();
-        assert!(wrong.is_empty(), "rounded differently: {wrong:?}");
-    }
-}
-
 /// Largest |texel coordinate| used for wrapping: far beyond any texture size, keeps the
 /// `f32 -> i64` conversion of huge or infinite uv well defined.
 pub(crate) const MAX_TEXEL_COORD: f32 = 1e9;
@@ -166,4 +151,19 @@ pub fn bilinear_weights(a: f32, b: f32) -> [f32; 4] {
 fn fast_floor(x: f32) -> f32 {
     let t = x as i32 as f32;
     if t > x { t - 1.0 } else { t }
+}
+
+#[cfg(test)]
+mod tests {
+    /// Every float from 0 to 255 rounds as `f32::round` rounds it.
+    #[test]
+    fn round_byte_is_round_on_every_float_of_the_byte_range() {
+        let last = 255.0f32.to_bits();
+        let wrong = (0..=last)
+            .map(f32::from_bits)
+            .filter(|&y| super::round_byte(y) != y.round() as u8)
+            .take(10)
+            .collect::<Vec<_>>();
+        assert!(wrong.is_empty(), "rounded differently: {wrong:?}");
+    }
 }
