@@ -337,7 +337,13 @@ pub(super) fn behind_note(handles: &[HandleMark], behind: &str) -> Option<String
         .filter(|h| h.window.is_none())
         .map(|h| format!("{} (w = {})", vertex_name(h.index), format_w(h.w)))
         .collect();
-    (!names.is_empty()).then(|| format!("{behind}: {}", names.join(", ")))
+    // After Chinese words the full-width colon, as the catalogue writes it.
+    let colon = if behind.chars().last().is_some_and(|c| c >= '\u{2E80}') {
+        "："
+    } else {
+        ": "
+    };
+    (!names.is_empty()).then(|| format!("{behind}{colon}{}", names.join(", ")))
 }
 
 /// The scanline of a marked pixel: where its row's centre line (y = row + 1/2) crosses the
@@ -538,5 +544,27 @@ mod tests {
         let mut shapes = Vec::new();
         handle_shapes(&mut shapes, &h, centre, size);
         assert_eq!(texts(&shapes).len(), 2, "the name and the w label only");
+    }
+
+    /// The note of corners behind the camera: "behind the camera: A (w = -0.56)", and in
+    /// Chinese with the full-width colon after the words, "在相机后方：A (w = -0.56)".
+    #[test]
+    fn the_behind_the_camera_note_takes_its_languages_colon() {
+        let h = |index, window| HandleMark {
+            index,
+            window,
+            w: if window.is_some() { 2.0 } else { -0.5625 },
+            active: false,
+        };
+        let handles = [h(0, None), h(1, Some(DVec2::ZERO)), h(2, None)];
+        assert_eq!(
+            super::behind_note(&handles, "behind the camera").as_deref(),
+            Some("behind the camera: A (w = -0.56), C (w = -0.56)")
+        );
+        assert_eq!(
+            super::behind_note(&handles, "在相机后方").as_deref(),
+            Some("在相机后方：A (w = -0.56), C (w = -0.56)")
+        );
+        assert_eq!(super::behind_note(&handles[1..2], "在相机后方"), None);
     }
 }
