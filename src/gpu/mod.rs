@@ -13,6 +13,7 @@ mod mipmaps;
 pub mod multisample;
 pub mod sample_check;
 mod scene;
+mod shaders;
 pub mod status;
 pub mod view;
 
@@ -20,6 +21,7 @@ pub use compare::*;
 pub use context::force_llvmpipe_env;
 pub use mipmaps::GlLevel;
 pub use scene::{GlScene, mesh_at_f32};
+use shaders::{FRAGMENT_SHADER, VERTEX_SHADER};
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -101,39 +103,6 @@ fn program_index(output: Output, mode: Interpolation) -> usize {
     let m = MODES.iter().position(|&x| x == mode).unwrap_or(0);
     o * MODES.len() + m
 }
-
-const VERTEX_SHADER: &str = "#version 330 core
-layout(location = 0) in vec4 clip_position;
-layout(location = 1) in vec2 uv;
-layout(location = 2) in vec3 color;
-QUALIFIER out vec2 v_uv;
-QUALIFIER out vec3 v_color;
-void main() {
-    v_uv = uv;
-    v_color = color;
-    gl_Position = clip_position;
-}
-";
-
-const FRAGMENT_SHADER: &str = "#version 330 core
-QUALIFIER in vec2 v_uv;
-QUALIFIER in vec3 v_color;
-uniform sampler2D tex;
-out vec4 out_color;
-void main() {
-#if OUTPUT == 0
-    out_color = texture(tex, v_uv);
-#elif OUTPUT == 1
-    out_color = vec4(v_color, 1.0);
-#elif OUTPUT == 2
-    uint id = uint(gl_PrimitiveID + 1);
-    out_color = vec4(float(id & 255u), float((id >> 8) & 255u), float((id >> 16) & 255u),
-                     float((id >> 24) & 255u)) / 255.0;
-#else
-    out_color = vec4(v_uv, gl_FragCoord.z, gl_FragCoord.w);
-#endif
-}
-";
 
 impl Gpu {
     fn compile(&self, output: Output, mode: Interpolation) -> Result<glow::Program, String> {
