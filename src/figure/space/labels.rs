@@ -2,7 +2,7 @@
 //! [`text_width`]) and [`spread_labels`], which moves a label off the ones placed before it
 //! and draws a leader back to its point when it moved far.
 
-use super::draw::{Anchor2, Colour, Shape, ShapeKind};
+use super::shape::{Anchor2, Colour, Shape, ShapeKind};
 
 /// A label's width and row height in points, given its text and text size, as a renderer
 /// draws it.

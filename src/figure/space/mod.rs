@@ -20,6 +20,7 @@ mod draw;
 mod labels;
 mod lens;
 mod orbit;
+mod shape;
 mod svg;
 mod tetra;
 
