@@ -8,7 +8,6 @@ use serde::Serialize;
 
 use super::Prober;
 use crate::raster::NO_TRIANGLE;
-use crate::raster::interpolate::Planes;
 use crate::raster::multisample::{self, SampleContext, SampleValue};
 use crate::raster::sample::{self, Location, ShadingRate};
 use crate::raster::setup::sample_point;
@@ -104,7 +103,7 @@ impl Prober<'_> {
                 }
                 let wire = self.wire_gradients(s);
                 multisample::draw_pixel(
-                    (s, &Planes::of(s), tri.source, flat.as_ref()),
+                    (s, tri.source, flat.as_ref()),
                     (x, y),
                     &ctx,
                     &wire,

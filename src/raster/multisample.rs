@@ -18,7 +18,7 @@ use crate::budget::{MemoryError, try_resize};
 
 use super::draw::write_buffers;
 use super::framebuffer::{Framebuffer, NO_TRIANGLE, RowBand, depth_passes};
-use super::interpolate::{self, Fragment, Planes};
+use super::interpolate::{self, Fragment};
 use super::mesh::ClipMesh;
 use super::prepare::{PreparedTriangle, source_vertices};
 use super::project::Viewport;
@@ -107,18 +107,7 @@ pub fn coverage(setup: &TriangleSetup, x: u32, y: u32, offsets: &[I64Vec2]) -> u
 /// the edge values there and [`interpolate::fragment_at_window`] at `p / 256`; with `flat`,
 /// the provoking vertex's attributes.
 pub fn fragment_at(setup: &TriangleSetup, p: I64Vec2, flat: Option<&Varyings>) -> Option<Fragment> {
-    fragment_with_planes((setup, &Planes::of(setup)), p, flat)
-}
-
-/// [`fragment_at`] with the triangle's planes made once by the caller (`Planes::of(setup)`),
-/// for a loop over many pixels and samples of one triangle.
-fn fragment_with_planes(
-    (setup, planes): (&TriangleSetup, &Planes),
-    p: I64Vec2,
-    flat: Option<&Varyings>,
-) -> Option<Fragment> {
-    let frag =
-        interpolate::fragment_with_planes(setup, planes, setup.edge_values(p), window_position(p))?;
+    let frag = interpolate::fragment_at_window(setup, setup.edge_values(p), window_position(p))?;
     Some(match flat {
         Some(v) => frag.flat(v),
         None => frag,
@@ -145,12 +134,12 @@ pub fn shading_point(x: u32, y: u32, mask: u32, ctx: &SampleContext<'_>) -> I64V
 /// The fragment pixel (x, y) of a triangle shades at `p` (1/256 pixel): [`fragment_at`] with
 /// the texture footprint of the pixel.
 fn shading_fragment(
-    (setup, planes, flat): (&TriangleSetup, &Planes, Option<&Varyings>),
+    (setup, flat): (&TriangleSetup, Option<&Varyings>),
     (x, y): (u32, u32),
     p: I64Vec2,
     ctx: &SampleContext<'_>,
 ) -> Option<Fragment> {
-    let mut frag = fragment_with_planes((setup, planes), p, flat)?;
+    let mut frag = fragment_at(setup, p, flat)?;
     texture_footprint(&mut frag, setup, (x, y), ctx.params, ctx.texture);
     Some(frag)
 }
@@ -164,13 +153,7 @@ pub(super) fn shared_shading(
     ctx: &SampleContext<'_>,
     wire: &[DVec2; 3],
 ) -> Option<(Fragment, [u8; 4])> {
-    let planes = Planes::of(setup);
-    let frag = shading_fragment(
-        (setup, &planes, flat),
-        (x, y),
-        shading_point(x, y, mask, ctx),
-        ctx,
-    )?;
+    let frag = shading_fragment((setup, flat), (x, y), shading_point(x, y, mask, ctx), ctx)?;
     Some((frag, shade(&frag, ctx.texture, ctx.params, wire)))
 }
 
@@ -183,10 +166,9 @@ pub(super) fn sample_depth(setup: &TriangleSetup, x: u32, y: u32, offset: I64Vec
 /// Draws one triangle (source triangle `source`, with its `flat` attributes if any) into the
 /// samples of pixel (x, y): coverage, the depth test per sample (less-than), shading once
 /// (MSAA at the centre or centroid) or per sample, and the sample's colour, depth, triangle
-/// and uv. Returns the fragment written to sample 0, if one was. `planes` are the
-/// triangle's (`Planes::of(setup)`, made once per triangle by the caller).
+/// and uv. Returns the fragment written to sample 0, if one was.
 pub fn draw_pixel(
-    (setup, planes, source, flat): (&TriangleSetup, &Planes, u32, Option<&Varyings>),
+    (setup, source, flat): (&TriangleSetup, u32, Option<&Varyings>),
     (x, y): (u32, u32),
     ctx: &SampleContext<'_>,
     wire: &[DVec2; 3],
@@ -198,13 +180,11 @@ pub fn draw_pixel(
     }
     let params = ctx.params;
     let texture = ctx.texture;
-    let fragment = |p: I64Vec2| shading_fragment((setup, planes, flat), (x, y), p, ctx);
+    let fragment = |p: I64Vec2| shading_fragment((setup, flat), (x, y), p, ctx);
     let shared = if ctx.samples.per_sample_shading() {
         None
     } else {
-        let p = shading_point(x, y, mask, ctx);
-        let frag = shading_fragment((setup, planes, flat), (x, y), p, ctx)?;
-        Some((frag, shade(&frag, texture, params, wire)))
+        Some(shared_shading((setup, flat), (x, y), mask, ctx, wire)?)
     };
     let mut first = None;
     for (k, (&o, out)) in ctx.offsets.iter().zip(pixel.iter_mut()).enumerate() {
@@ -267,13 +247,11 @@ pub(super) fn draw_band<'t>(
         } else {
             [DVec2::ZERO; 3]
         };
-        let planes = Planes::of(setup);
-        let triangle = (setup, &planes, source, flat);
         for y in y_start..=y_end {
             for x in bounds.x0..=bounds.x1 {
                 let i = (y - band.y0) as usize * band.width as usize + x as usize;
                 let pixel = &mut samples[i * n..(i + 1) * n];
-                if let Some(frag) = draw_pixel(triangle, (x, y), ctx, &wire, pixel) {
+                if let Some(frag) = draw_pixel((setup, source, flat), (x, y), ctx, &wire, pixel) {
                     write_buffers(band, i, (setup, source), &frag, texels);
                 }
             }
@@ -325,28 +303,27 @@ pub(super) fn drawn_and_bins<'t>(
 }
 
 /// Draws every prepared triangle into `frame` (already sized and cleared to `background`)
-/// and into a sample buffer in `storage` (its memory reused: the app's canvas draws frame
-/// after frame), in parallel over bands of `rows_per_band` rows, each band clearing its
-/// samples and drawing its triangles in submission order; returns the samples. Memory the
-/// storage lacks is asked for fallibly: refused, it is an error naming the buffer and its
-/// size (`width x height x n` samples of [`SampleValue`]'s size), never an abort.
+/// and into a new sample buffer, in parallel over bands of `rows_per_band` rows, each band
+/// drawing its triangles in submission order; returns the samples. The sample buffer's
+/// memory is asked for fallibly: refused, it is an error naming the buffer and its size
+/// (`width x height x n` samples of [`SampleValue`]'s size), never an abort.
 pub(super) fn draw_frame(
     prepared: (&ClipMesh, &[PreparedTriangle]),
     ctx: &SampleContext<'_>,
     frame: &mut Framebuffer,
-    (rows_per_band, background): (u32, [u8; 4]),
-    storage: Vec<SampleValue>,
+    rows_per_band: u32,
+    background: [u8; 4],
 ) -> Result<SampleBuffer, MemoryError> {
     use rayon::prelude::*;
     let n = ctx.offsets.len();
     let (width, height) = (frame.width, frame.height);
-    let len = (width as usize * height as usize).saturating_mul(n);
-    let mut samples = storage;
-    // Only the memory is reused: every band clears its samples below, in parallel.
-    samples.truncate(len);
-    try_resize(&mut samples, len, SampleValue::clear(background), || {
-        format!("the {width}x{height} sample buffer ({n} samples a pixel)")
-    })?;
+    let mut samples = Vec::new();
+    try_resize(
+        &mut samples,
+        (width as usize * height as usize).saturating_mul(n),
+        SampleValue::clear(background),
+        || format!("the {width}x{height} sample buffer ({n} samples a pixel)"),
+    )?;
     let mut buffer = SampleBuffer {
         width,
         height,
@@ -366,7 +343,6 @@ pub(super) fn draw_frame(
             if progress.cancelled() {
                 return;
             }
-            samples.fill(SampleValue::clear(background));
             let triangles = bin.iter().map(|&(i, _)| {
                 let (s, source, flat, bounds) = &drawn[i as usize];
                 (*s, *source, flat.as_ref(), *bounds)

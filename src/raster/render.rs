@@ -81,23 +81,24 @@ pub fn render_samples(
     let mut frame = Framebuffer::with_buffers(0, 0, settings.background, Buffers::All)?;
     frame.resize(settings.width, settings.height, Buffers::All)?;
     let samples = draw_samples(
-        (mesh, &triangles),
+        mesh,
+        &triangles,
         texture,
         settings,
         &mut frame,
-        (ROWS_PER_BAND, Vec::new()),
+        ROWS_PER_BAND,
     )?;
     Ok((Render { frame, triangles }, samples))
 }
 
-/// The multisample drawing of prepared triangles into a sized `frame`, cleared first, with
-/// the samples in `storage`'s memory.
+/// The multisample drawing of prepared triangles into a sized `frame`, cleared first.
 fn draw_samples(
-    (mesh, triangles): (&ClipMesh, &[PreparedTriangle]),
+    mesh: &ClipMesh,
+    triangles: &[PreparedTriangle],
     texture: &Texture,
     settings: &RenderSettings,
     frame: &mut Framebuffer,
-    (rows_per_band, storage): (u32, Vec<crate::raster::multisample::SampleValue>),
+    rows_per_band: u32,
 ) -> Result<SampleBuffer, MemoryError> {
     let params = shade_params(settings, triangles);
     let offsets = settings.samples.offsets();
@@ -112,33 +113,9 @@ fn draw_samples(
         (mesh, triangles),
         &ctx,
         frame,
-        (rows_per_band, settings.background),
-        storage,
+        rows_per_band,
+        settings.background,
     )
-}
-
-/// The memory of the last sample buffer [`render_into`] drew and dropped (per-sample shading
-/// or `flat` attributes with colour and depth only: the app's canvas, frame after frame), so
-/// that the next frame does not ask the system for it again (tens of megabytes, zeroed page
-/// by page on one thread: a third of a 4x SSAA frame's time at 700x700). Released when a
-/// frame without samples is drawn.
-static SAMPLE_STORAGE: std::sync::Mutex<Vec<crate::raster::multisample::SampleValue>> =
-    std::sync::Mutex::new(Vec::new());
-
-/// Takes the kept sample memory (empty if there is none, or if another thread panicked
-/// holding it).
-fn take_sample_storage() -> Vec<crate::raster::multisample::SampleValue> {
-    SAMPLE_STORAGE
-        .lock()
-        .map(|mut s| std::mem::take(&mut *s))
-        .unwrap_or_default()
-}
-
-/// Keeps `samples`' memory for the next frame (dropped if the lock is poisoned).
-fn keep_sample_storage(samples: Vec<crate::raster::multisample::SampleValue>) {
-    if let Ok(mut s) = SAMPLE_STORAGE.lock() {
-        *s = samples;
-    }
 }
 
 /// Row `y` of [`render`]'s image, every buffer, as a framebuffer one row high: the same
@@ -243,19 +220,17 @@ pub fn render_into_at(
                 settings.background,
             )?;
         } else {
-            let buffer = draw_samples(
-                (mesh, &triangles),
+            draw_samples(
+                mesh,
+                &triangles,
                 texture,
                 settings,
                 frame,
-                (FAST_ROWS_PER_BAND, take_sample_storage()),
+                FAST_ROWS_PER_BAND,
             )?;
-            keep_sample_storage(buffer.samples);
         }
         return Ok(());
     }
-    // No samples kept from here on: their memory goes back.
-    drop(take_sample_storage());
     let prepared = FastMesh::prepare(mesh, settings.viewport(), settings.tie_rule);
     let mut params = shade_params(settings, &[]);
     // Only depth shading reads the range (a pass over every triangle).
