@@ -31,12 +31,18 @@ pub enum Interpolation {
 /// assert!((p[0] - 0.75).abs() < 1e-15 && (p[1] - 0.25).abs() < 1e-15 && p[2] == 0.0);
 /// ```
 pub fn perspective_weights(l: &[f64; 3], inv_w: &[f64; 3], one_over_w: f64) -> Option<[f64; 3]> {
-    let inv = perspective_divisor(one_over_w)?;
-    Some([
+    perspective_divisor(one_over_w).map(|inv| weights_times(l, inv_w, inv))
+}
+
+/// [`perspective_weights`] with `1 / (1/w)` already divided: `(l_i * inv_w_i) * inv` (the
+/// scalar lanes call it too).
+#[inline(always)]
+pub(crate) fn weights_times(l: &[f64; 3], inv_w: &[f64; 3], inv: f64) -> [f64; 3] {
+    [
         l[0] * inv_w[0] * inv,
         l[1] * inv_w[1] * inv,
         l[2] * inv_w[2] * inv,
-    ])
+    ]
 }
 
 /// `1 / (1/w)`, the one division of a perspective-correct sample, when 1/w is positive and
@@ -192,7 +198,7 @@ pub fn fragment_with_planes(
     let one_over_w = at(&planes.inv_w);
     let inv = perspective_divisor(one_over_w)?;
     let inv_w = [setup.v[0].inv_w, setup.v[1].inv_w, setup.v[2].inv_w];
-    let p = perspective_weights(&l, &inv_w, one_over_w)?;
+    let p = weights_times(&l, &inv_w, inv);
     let vars = [
         setup.v[0].varyings,
         setup.v[1].varyings,

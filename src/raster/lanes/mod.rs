@@ -372,11 +372,7 @@ fn from_terms(
         out.depth64[k] = at(&planes.depth);
         out.depth[k] = out.depth64[k] as f32;
         let w = match mode {
-            Interpolation::Perspective => [
-                l[0] * c.inv_w[0] * inv,
-                l[1] * c.inv_w[1] * inv,
-                l[2] * c.inv_w[2] * inv,
-            ],
+            Interpolation::Perspective => super::interpolate::weights_times(&l, &c.inv_w, inv),
             Interpolation::Affine => l,
         };
         for ch in 0..c.used_channels {

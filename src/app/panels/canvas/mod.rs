@@ -473,9 +473,12 @@ pub(crate) fn canvas_ui(
         // form: shrunk to fit, it was smaller than its neighbour's and hard to read.
         if let Some(title) = paint::title(&shapes)
             && let Some(short) = overlay::short_mode_label(title, lang)
-            && !paint::fits_unshrunk(ui.painter(), title, overlay::TEXT_BADGE, clip)
         {
-            paint::retitle(&mut shapes, &short);
+            let titles = [title.to_string(), short];
+            paint::retitle(
+                &mut shapes,
+                paint::first_fitting(ui.painter(), &titles, clip),
+            );
         }
         // With the wireframe on, the triangle's outline would lie right over the wireframe's
         // line (the thing to see): the line shows the triangle already. A sample buffer's

@@ -73,7 +73,7 @@ fn fitted(
 
 /// Whether a boxed label of `text` at `size` points fits `clip`'s width unshrunk (as
 /// [`paint`] draws it: shrunk by [`figure_text::fit`] where it does not).
-pub fn fits_unshrunk(painter: &egui::Painter, text: &str, size: f32, clip: Rect) -> bool {
+fn fits_unshrunk(painter: &egui::Painter, text: &str, size: f32, clip: Rect) -> bool {
     let width = painter
         .layout_no_wrap(text.to_string(), FontId::proportional(size), Color32::WHITE)
         .size()
