@@ -48,6 +48,9 @@ impl LaneWrap {
 pub(super) struct Sampler<'a> {
     pub(super) texels: &'a [[u8; 4]],
     pub(super) width: usize,
+    /// `log2(width)` when the width is a power of two (the portable lanes' row offsets by a
+    /// shift, as the AVX2 sampler's).
+    pub(super) width_shift: Option<u32>,
     pub(super) size: (f32, f32),
     pub(super) wrap: (LaneWrap, LaneWrap),
     pub(super) filter: Filter,
@@ -62,6 +65,7 @@ impl<'a> Sampler<'a> {
         Self {
             texels: texture.base_texels(),
             width: w as usize,
+            width_shift: w.is_power_of_two().then_some(w.trailing_zeros()),
             size: (w as f32, h as f32),
             wrap: (LaneWrap::new(w, wrap), LaneWrap::new(h, wrap)),
             filter,

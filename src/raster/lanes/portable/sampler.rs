@@ -1,7 +1,8 @@
 //! Texture lookups of the portable lanes: the scalar [`Sampler`]'s operations, one operation
 //! at a time over all eight lanes (so the compiler turns each into vector instructions), in
-//! the AVX2 sampler's order (`avx2/sampler.rs`): `floor` by truncation, the rounding to a byte
-//! by `trunc` and a comparison with 1/2.
+//! the AVX2 sampler's order (`avx2/sampler.rs`): `floor` by truncation, a bilinear sum
+//! rounded to a byte as `trunc(sum + HALF_DOWN)`, the texels read unchecked at wrapped
+//! indices.
 
 use super::super::sampler::{LaneWrap, Sampler};
 use super::super::texture::Filter;
@@ -108,23 +109,29 @@ fn wrap(i: &I32s, w: LaneWrap) -> I32s {
     }
 }
 
-/// `texture::byte_from_sum` per lane: NaN gives 0, else `clamp(x, 0, 255)` rounded half away
-/// from zero, as `trunc(x)` plus one where the rest is at least 1/2. (The comparisons are
-/// written so that NaN fails the first: `x > 0 ? x : 0` is one vector maximum.)
-#[inline(always)]
-pub(super) fn byte_from_sum(y: &F32s) -> I32s {
-    each(|k| {
-        let y = if y[k] > 0.0 { y[k] } else { 0.0 };
-        let y = if y < 255.0 { y } else { 255.0 };
-        let t = trunc(y);
-        t + i32::from(y - t as f32 >= 0.5)
-    })
-}
-
 /// Channel `c` (0 = red) of eight packed texels, as `f32` in 0..255.
 #[inline(always)]
 fn channel(t: &Rgba, c: u32) -> F32s {
     each(|k| ((t[k] >> (8 * c)) & 0xff) as f32)
+}
+
+/// Just below 1/2 (`0.5 - 2^-25`, the largest `f32` below it): `trunc(y + HALF_DOWN)` is
+/// `round(y)`, halves away from zero, for every `y >= 0` ([`bilinear_byte`]).
+const HALF_DOWN: f32 = 0.499_999_97;
+
+/// `texture::byte_from_sum` for a bilinear sum, which is never NaN and lies in [0, 255.001]
+/// (four non-negative weights adding up to 1 within a few `f32` roundings, times bytes): the
+/// clamps and the NaN test change nothing there, and the rounding is `trunc(y + HALF_DOWN)`,
+/// two vector operations where its truncation, comparison of the rest and correction take
+/// five. (Adding exactly 1/2 would be wrong below 1/2: `0.5 - 2^-25 + 0.5`
+/// rounds to 1. Adding `HALF_DOWN` to `n + 1/2` gives `n + 1 - 2^-25`, which rounds up to
+/// `n + 1` for every `n` (its spacing there is at least `2^-24`), and to anything below
+/// `n + 1/2` stays below `n + 1`.) Checked against the scalar rounding on every float of
+/// [0, 255.001] by the test below.
+#[inline(always)]
+fn bilinear_byte(y: &F32s) -> I32s {
+    debug_assert!(y.iter().all(|y| (0.0..=255.001).contains(y)), "{y:?}");
+    each(|k| trunc(y[k] + HALF_DOWN))
 }
 
 /// `sum_k weight_k * channel_k`, left to right, rounded to a byte.
@@ -135,60 +142,48 @@ fn weighted(w: &[F32s; 4], t: &[Rgba; 4], c: u32) -> I32s {
         let ch = channel(&t[n], c);
         sum = each(|k| sum[k] + w[n][k] * ch[k]);
     }
-    byte_from_sum(&sum)
+    bilinear_byte(&sum)
 }
 
 impl Sampler<'_> {
     /// The index `j * width + i` in `texels` of eight wrapped texel coordinates (each in
     /// `0..width` and `0..height`), as [`Sampler::texel`] reads it: below the number of
     /// texels, which is below 2^31 where these lanes draw ([`super::applies`]), so 32-bit
-    /// products (one vector multiplication).
+    /// products (one vector multiplication, or a shift when the width is a power of two).
     #[inline(always)]
     fn index(&self, i: &I32s, j: &I32s) -> Indices {
+        if let Some(shift) = self.width_shift {
+            return each(|k| ((j[k] as u32) << shift) + i[k] as u32);
+        }
         let width = self.width as u32;
         each(|k| j[k] as u32 * width + i[k] as u32)
     }
 
-    /// Whether `at + extra` is a texel index for every lane (`extra` 0 for one texel, 1 for a
-    /// pair): one vector maximum, so the reads after it need no check of their own.
-    #[inline(always)]
-    fn inside(&self, at: &Indices, extra: usize) -> bool {
-        let max = at.iter().fold(0, |m, &a| m.max(a));
-        (max as usize) + extra < self.texels.len()
-    }
-
-    /// The packed texels (red in the low byte) at indices `at`.
+    /// The packed texels (red in the low byte) at indices `at`, each a texel index: made by
+    /// [`Sampler::index`] from wrapped coordinates ([`wrap`] puts each in `0..width` and
+    /// `0..height`, so `j * width + i <= width * height - 1`), as the AVX2 gathers read them.
     #[inline(always)]
     fn fetch(&self, at: &Indices) -> Rgba {
-        if self.inside(at, 0) {
-            // SAFETY: every index is below `texels.len()` (checked just above).
-            each(|k| u32::from_le_bytes(unsafe { *self.texels.get_unchecked(at[k] as usize) }))
-        } else {
-            each(|k| {
-                self.texels
-                    .get(at[k] as usize)
-                    .map_or(0, |t| u32::from_le_bytes(*t))
-            })
-        }
+        debug_assert!(at.iter().all(|&a| (a as usize) < self.texels.len()));
+        // SAFETY: every index is below `width * height = texels.len()` (above).
+        each(|k| u32::from_le_bytes(unsafe { *self.texels.get_unchecked(at[k] as usize) }))
     }
 
     /// The packed texels at indices `at` and beside them, `at + 1` (the texels `(i, j)` and
-    /// `(i + 1, j)` when `i + 1` is inside the row): two 4-byte reads per lane at one address
-    /// (read as one 8-byte value they were split lane by lane, in scalar registers). A pair
-    /// past the last texel (never asked for) reads as 0.
+    /// `(i + 1, j)` where `i + 1` is inside the row, which the caller checks: then `at + 1` is
+    /// the texel index of `(i + 1, j)`): two 4-byte reads per lane at one address (read as one
+    /// 8-byte value they were split lane by lane, in scalar registers).
     #[inline(always)]
     fn fetch_pairs(&self, at: &Indices) -> (Rgba, Rgba) {
-        if self.inside(at, 1) {
-            let base = self.texels.as_ptr();
-            // SAFETY: `at + 1` is below `texels.len()` for every lane (checked just above).
-            let read = |k: usize, d: usize| unsafe { *base.add(at[k] as usize + d) };
-            (
-                each(|k| u32::from_le_bytes(read(k, 0))),
-                each(|k| u32::from_le_bytes(read(k, 1))),
-            )
-        } else {
-            (self.fetch(at), self.fetch(&each(|k| at[k].wrapping_add(1))))
-        }
+        debug_assert!(at.iter().all(|&a| (a as usize) + 1 < self.texels.len()));
+        let base = self.texels.as_ptr();
+        // SAFETY: `at + 1` is the index of a texel of the same row for every lane (above), so
+        // both reads are below `texels.len()`.
+        let read = |k: usize, d: usize| unsafe { *base.add(at[k] as usize + d) };
+        (
+            each(|k| u32::from_le_bytes(read(k, 0))),
+            each(|k| u32::from_le_bytes(read(k, 1))),
+        )
     }
 
     /// The packed RGBA8 colours (red in the low byte) at eight uv, as [`Sampler::sample`]
@@ -280,7 +275,7 @@ mod tests {
         while bits <= last && wrong.len() < 10 {
             let xs: super::F32s =
                 std::array::from_fn(|k| f32::from_bits((bits + k as u32).min(last)));
-            for (x, got) in xs.iter().zip(super::byte_from_sum(&xs)) {
+            for (x, got) in xs.iter().zip(super::bilinear_byte(&xs)) {
                 if got != i32::from(byte_from_sum(*x)) {
                     wrong.push((*x, got));
                 }
