@@ -291,10 +291,9 @@ fn scanline_body(
         let mut inv_w: F64s = each(|k| lanes[k].inv_w);
         let mut depth: F64s = each(|k| lanes[k].depth);
         let mut x = x0;
-        while x <= x1 {
-            let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
-            let valid = positive_finite(&inv_w, inf);
-            let ok = each(|k| mask64(k < lanes_in) & valid[k]);
+        // A chunk's uv, depth and validity from the stepped values.
+        let chunk = |u: &F64s, v: &F64s, inv_w: &F64s, depth: &F64s| {
+            let valid = positive_finite(inv_w, inf);
             let (uf, vf) = match mode {
                 Interpolation::Perspective => {
                     let w: F64s = each(|k| 1.0 / inv_w[k]);
@@ -306,12 +305,23 @@ fn scanline_body(
                 Interpolation::Affine => (each(|k| u[k] as f32), each(|k| v[k] as f32)),
             };
             let d: F32s = each(|k| depth[k] as f32);
-            let rgba = sampler.sample_packed(&uf, &vf, inf, floor);
-            write(target, x, y, &ok, &d, &rgba);
+            (uf, vf, d, valid)
+        };
+        let mut next = chunk(&u, &v, &inv_w, &depth);
+        while x <= x1 {
+            let lanes_in = (x1 - x + 1).min(LANES as u32) as usize;
+            let (uf, vf, d, valid) = next;
             u = each(|k| u[k] + su);
             v = each(|k| v[k] + sv);
             inv_w = each(|k| inv_w[k] + sw);
             depth = each(|k| depth[k] + sd);
+            // The next chunk's division before this chunk's lookup, so the two overlap.
+            if x1 - x >= LANES as u32 {
+                next = chunk(&u, &v, &inv_w, &depth);
+            }
+            let ok = each(|k| mask64(k < lanes_in) & valid[k]);
+            let rgba = sampler.sample_packed(&uf, &vf, inf, floor);
+            write(target, x, y, &ok, &d, &rgba);
             x += LANES as u32;
         }
     }
