@@ -209,24 +209,49 @@ fn edge_body(
             each(|l| terms[0][l] * k[0] + terms[1][l] * k[1] + terms[2][l] * k[2])
         };
         let columns = [column(0), column(1), column(2), column(3)];
-        for y in block.rows.0..=block.rows.1 {
-            let covered: Mask64 = if block.kind == Block::Inside {
-                in_row
-            } else {
-                let base = planes.at(i64::from(y), i64::from(bx));
-                let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
-                let pass = |i: usize| each(|k| mask64(e[i][k] >= t[i]));
-                let (p0, p1, p2) = (pass(0), pass(1), pass(2));
-                each(|k| in_row[k] & p0[k] & p1[k] & p2[k])
-            };
-            if covered.iter().fold(0, |m, &c| m | c) == 0 {
-                continue;
+        // A row is looked up and written one pass later, after the next row's values are
+        // made, so that the two overlap (the division of one with the texture lookup of the
+        // other); the last pass only draws the row before it.
+        let mut pending = (
+            false,
+            0,
+            [0i64; LANES],
+            [0f32; LANES],
+            [0f32; LANES],
+            [0f32; LANES],
+        );
+        for y in block.rows.0..=block.rows.1 + 1 {
+            let mut made = (
+                false,
+                y,
+                [0i64; LANES],
+                [0f32; LANES],
+                [0f32; LANES],
+                [0f32; LANES],
+            );
+            if y <= block.rows.1 {
+                let covered: Mask64 = if block.kind == Block::Inside {
+                    in_row
+                } else {
+                    let base = planes.at(i64::from(y), i64::from(bx));
+                    let e = three(|i| each(|k| base[i] as f64 + a[i] * OFFSETS[k]));
+                    let pass = |i: usize| each(|k| mask64(e[i][k] >= t[i]));
+                    let (p0, p1, p2) = (pass(0), pass(1), pass(2));
+                    each(|k| in_row[k] & p0[k] & p1[k] & p2[k])
+                };
+                if covered.iter().fold(0, |m, &c| m | c) != 0 {
+                    let rows = row_parts.at(y, &attrs, weights);
+                    let (u, v, depth, valid) = interpolate(&columns, rows, mode, inf);
+                    let ok: Mask64 = each(|k| valid[k] & covered[k]);
+                    made = (true, y, ok, u, v, depth);
+                }
             }
-            let rows = row_parts.at(y, &attrs, weights);
-            let (u, v, depth, valid) = interpolate(&columns, rows, mode, inf);
-            let ok: Mask64 = each(|k| valid[k] & covered[k]);
-            let rgba = sampler.sample_packed(&u, &v, inf, floor);
-            write(target, bx, y, &ok, &depth, &rgba);
+            let (drawn, py, ok, u, v, depth) = pending;
+            if drawn {
+                let rgba = sampler.sample_packed(&u, &v, inf, floor);
+                write(target, bx, py, &ok, &depth, &rgba);
+            }
+            pending = made;
         }
     }
 }
