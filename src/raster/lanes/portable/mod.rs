@@ -215,7 +215,7 @@ fn edge_body(
         let mut pending = (
             false,
             0,
-            [0i64; LANES],
+            [0i32; LANES],
             [0f32; LANES],
             [0f32; LANES],
             [0f32; LANES],
@@ -224,7 +224,7 @@ fn edge_body(
             let mut made = (
                 false,
                 y,
-                [0i64; LANES],
+                [0i32; LANES],
                 [0f32; LANES],
                 [0f32; LANES],
                 [0f32; LANES],
@@ -239,10 +239,11 @@ fn edge_body(
                     let (p0, p1, p2) = (pass(0), pass(1), pass(2));
                     each(|k| in_row[k] & p0[k] & p1[k] & p2[k])
                 };
-                if covered.iter().fold(0, |m, &c| m | c) != 0 {
+                // (A block inside the triangle covers a lane of every row.)
+                if block.kind == Block::Inside || covered.iter().fold(0, |m, &c| m | c) != 0 {
                     let rows = row_parts.at(y, &attrs, weights);
                     let (u, v, depth, valid) = interpolate(&columns, rows, mode, inf);
-                    let ok: Mask64 = each(|k| valid[k] & covered[k]);
+                    let ok: Mask32 = each(|k| (valid[k] & covered[k]) as i32);
                     made = (true, y, ok, u, v, depth);
                 }
             }
@@ -344,7 +345,7 @@ fn scanline_body(
             if x1 - x >= LANES as u32 {
                 next = chunk(&u, &v, &inv_w, &depth);
             }
-            let ok = each(|k| mask64(k < lanes_in) & valid[k]);
+            let ok: Mask32 = each(|k| (mask64(k < lanes_in) & valid[k]) as i32);
             let rgba = sampler.sample_packed(&uf, &vf, inf, floor);
             write(target, x, y, &ok, &d, &rgba);
             x += LANES as u32;
@@ -367,9 +368,8 @@ fn positive_finite<const N: usize>(x: &[f64; N], inf: Inf) -> [i64; N] {
 /// this thread only; lanes past the row's end are pixels of the next row, rewritten as they
 /// were); only a chunk running past the band's end is written lane by lane.
 #[inline(always)]
-fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask64, depth: &F32s, rgba: &Rgba) {
+fn write(target: &mut Target<'_>, x: u32, y: u32, ok: &Mask32, depth: &F32s, rgba: &Rgba) {
     let i = (y - target.y0) as usize * target.width as usize + x as usize;
-    let ok: Mask32 = each(|k| ok[k] as i32);
     if let Some((d, _)) = target
         .depth
         .get_mut(i..)
