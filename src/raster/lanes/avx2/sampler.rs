@@ -172,13 +172,13 @@ pub(in crate::raster::lanes) fn channel<const C: i32>(t: __m256i) -> __m256 {
 
 /// `byte_from_sum(x)` for a bilinear sum: `round(x)`, half away from zero. The clamp of the
 /// scalar code changes nothing here: every weight is in [0, 1] and they add up to 1 (within
-/// a few ulps), so the sum is in [0, 255.001] and never NaN.
+/// a few ulps), so the sum is in [0, 255.001] and never NaN. Two operations: the truncation
+/// of `x + (1/2 - 2^-25)`, as the portable lanes round (`portable::sampler::bilinear_byte`,
+/// where the argument is).
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(in crate::raster::lanes) fn byte_from_sum(y: __m256) -> __m256i {
-    let t = _mm256_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y);
-    let up = _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_sub_ps(y, t), _mm256_set1_ps(0.5));
-    _mm256_cvttps_epi32(_mm256_add_ps(t, _mm256_and_ps(up, _mm256_set1_ps(1.0))))
+    _mm256_cvttps_epi32(_mm256_add_ps(y, _mm256_set1_ps(0.499_999_97)))
 }
 
 /// `sum_k weight_k * channel_k`, left to right.
