@@ -3,7 +3,8 @@
 //! operation at a time over all lanes ([`each`]), so that the compiler maps each operation to
 //! vector instructions: SSE2 on any x86_64 (SSE4.1 where the CPU has it: the same source
 //! compiled a second time, `draw_sse41`), NEON on aarch64. No intrinsics, no
-//! dependency; one `unsafe` conversion (`sampler::trunc`, whose range is checked first).
+//! dependency; `unsafe` only for one conversion (`sampler::trunc`, whose range is checked
+//! first) and the texel reads at wrapped indices (`sampler::Sampler::fetch`).
 //!
 //! The operations and their order are the scalar lane code's (the parent module), so the
 //! pixels are the same bit for bit (`tests/fast_path.rs` runs every test at this level too);
