@@ -456,7 +456,7 @@ pub(in crate::raster::lanes) unsafe fn wide_span(
 /// `write16`, check this only in debug builds).
 #[target_feature(enable = "avx2,avx512f,avx512bw,avx512dq,avx512vl")]
 pub(super) unsafe fn span16(
-    mut vals: [__m512d; 4],
+    vals: [__m512d; 4],
     step8: [__m512d; 4],
     (row, x0, x1): (usize, u32, u32),
     mode: Interpolation,
@@ -487,27 +487,38 @@ pub(super) unsafe fn span16(
             _mm512_add_pd(q[3], step8[3]),
         ]
     };
+    // A pair's uv, depth and valid lanes from its two chunks' values.
+    let pair = |vals: &[__m512d; 4]| {
+        let next = advance(vals);
+        let (u0, v0) = uv(vals);
+        let (u1, v1) = uv(&next);
+        let depth = join(_mm512_cvtpd_ps(vals[3]), _mm512_cvtpd_ps(next[3]));
+        let valid = u16::from(valid(vals[2])) | u16::from(valid(next[2])) << 8;
+        ((join(u0, u1), join(v0, v1), depth, valid), advance(&next))
+    };
     let mut x = x0;
+    let (mut made, mut vals) = pair(&vals);
     while x <= x1 {
-        let next = advance(&vals);
+        let ((u, v, depth, valid), ahead) = (made, vals);
+        // The next pair's values (its divisions) before this pair's lookup, so the two
+        // overlap.
+        if x1 - x >= 16 {
+            (made, vals) = pair(&ahead);
+        }
         let left = x1 - x + 1;
         let span = if left >= 16 {
             u16::MAX
         } else {
             ((1u32 << left) - 1) as u16
         };
-        let ok = span & (u16::from(valid(vals[2])) | u16::from(valid(next[2])) << 8);
+        let ok = span & valid;
         if ok != 0 {
-            let (u0, v0) = uv(&vals);
-            let (u1, v1) = uv(&next);
-            let depth = join(_mm512_cvtpd_ps(vals[3]), _mm512_cvtpd_ps(next[3]));
             // SAFETY: the function's condition includes AVX-512 F and BW and AVX2.
-            let rgba = unsafe { sample16_packed(sampler, join(u0, u1), join(v0, v1)) };
+            let rgba = unsafe { sample16_packed(sampler, u, v) };
             // SAFETY: `ok` enables only columns x..=x1 of the span, which lie in the band's
             // row `row` (the function's condition), so each index is in both buffers.
             unsafe { write16(target, row + x as usize, ok, depth, rgba) };
         }
-        vals = advance(&next);
         x += 16;
     }
 }
