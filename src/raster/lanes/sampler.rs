@@ -44,7 +44,19 @@ impl LaneWrap {
     }
 }
 
-/// The base level of a texture, ready for lane lookups.
+/// Just below 1/2 (`0.5 - 2^-25`, the largest `f32` below it): for a bilinear sum `y` (never
+/// NaN, in [0, 255.001]) `trunc(y + HALF_DOWN)` is `texture::byte_from_sum(y)`, `round(y)`
+/// half away from zero, in two vector operations (the portable and AVX2 samplers). Adding
+/// exactly 1/2 would be wrong below 1/2: `0.5 - 2^-25 + 0.5` rounds to 1. Adding `HALF_DOWN`
+/// to a tie `n + 1/2` gives `n + 1 - 2^-25`, which rounds up to `n + 1` for every `n` (its
+/// spacing there is at least `2^-24`), and anything below `n + 1/2` stays below `n + 1`.
+/// Tests check both samplers on every float of [0, 255.001].
+pub(super) const HALF_DOWN: f32 = 0.499_999_97;
+
+/// The base level of a texture, ready for lane lookups. Made only by [`Sampler::new`], from
+/// one texture: `texels` holds `width * height` texels and the wraps are for that width and
+/// height, so a wrapped coordinate pair always indexes a texel (the portable lanes read
+/// texels unchecked at such indices, as the AVX2 gathers do).
 pub(super) struct Sampler<'a> {
     pub(super) texels: &'a [[u8; 4]],
     pub(super) width: usize,

@@ -6,7 +6,7 @@
 use std::arch::x86_64::*;
 
 use super::super::LaneShading;
-use super::super::sampler::LaneWrap;
+use super::super::sampler::{HALF_DOWN, LaneWrap};
 use crate::raster::texture::{Filter, MAX_TEXEL_COORD, Texture};
 
 /// A wrap mode the vector path can apply: `Mask(size - 1)` or `Clamp(size - 1)`.
@@ -173,12 +173,12 @@ pub(in crate::raster::lanes) fn channel<const C: i32>(t: __m256i) -> __m256 {
 /// `byte_from_sum(x)` for a bilinear sum: `round(x)`, half away from zero. The clamp of the
 /// scalar code changes nothing here: every weight is in [0, 1] and they add up to 1 (within
 /// a few ulps), so the sum is in [0, 255.001] and never NaN. Two operations: the truncation
-/// of `x + (1/2 - 2^-25)`, as the portable lanes round (`portable::sampler::bilinear_byte`,
-/// where the argument is).
+/// of `x + HALF_DOWN`, as the portable lanes round (`lanes::sampler::HALF_DOWN` has the
+/// argument).
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(in crate::raster::lanes) fn byte_from_sum(y: __m256) -> __m256i {
-    _mm256_cvttps_epi32(_mm256_add_ps(y, _mm256_set1_ps(0.499_999_97)))
+    _mm256_cvttps_epi32(_mm256_add_ps(y, _mm256_set1_ps(HALF_DOWN)))
 }
 
 /// `sum_k weight_k * channel_k`, left to right.

@@ -213,23 +213,9 @@ fn edge_body(
         // A row is looked up and written one pass later, after the next row's values are
         // made, so that the two overlap (the division of one with the texture lookup of the
         // other); the last pass only draws the row before it.
-        let mut pending = (
-            false,
-            0,
-            [0i32; LANES],
-            [0f32; LANES],
-            [0f32; LANES],
-            [0f32; LANES],
-        );
+        let mut pending = NO_ROW;
         for y in block.rows.0..=block.rows.1 + 1 {
-            let mut made = (
-                false,
-                y,
-                [0i32; LANES],
-                [0f32; LANES],
-                [0f32; LANES],
-                [0f32; LANES],
-            );
+            let mut made = NO_ROW;
             if y <= block.rows.1 {
                 let covered: Mask64 = if block.kind == Block::Inside {
                     in_row
@@ -257,6 +243,20 @@ fn edge_body(
         }
     }
 }
+
+/// A row chunk of the edge-function lanes made and waiting to be drawn: whether there is one,
+/// its row, its lanes, uv and depth.
+type RowChunk = (bool, u32, Mask32, F32s, F32s, F32s);
+
+/// No row chunk.
+const NO_ROW: RowChunk = (
+    false,
+    0,
+    [0; LANES],
+    [0.0; LANES],
+    [0.0; LANES],
+    [0.0; LANES],
+);
 
 /// uv, depth and validity of eight samples from the column parts of the planes `1/w`, depth,
 /// u and v (`u/w`, `v/w` when perspective-correct) and their row parts, as

@@ -4,7 +4,7 @@
 //! rounded to a byte as `trunc(sum + HALF_DOWN)`, the texels read unchecked at wrapped
 //! indices.
 
-use super::super::sampler::{LaneWrap, Sampler};
+use super::super::sampler::{HALF_DOWN, LaneWrap, Sampler};
 use super::super::texture::Filter;
 use super::{F32s, I32s, Inf, LANES, Rgba, VectorFloor, each, mask32};
 
@@ -115,18 +115,11 @@ fn channel(t: &Rgba, c: u32) -> F32s {
     each(|k| ((t[k] >> (8 * c)) & 0xff) as f32)
 }
 
-/// Just below 1/2 (`0.5 - 2^-25`, the largest `f32` below it): `trunc(y + HALF_DOWN)` is
-/// `round(y)`, halves away from zero, for every `y >= 0` ([`bilinear_byte`]).
-const HALF_DOWN: f32 = 0.499_999_97;
-
 /// `texture::byte_from_sum` for a bilinear sum, which is never NaN and lies in [0, 255.001]
 /// (four non-negative weights adding up to 1 within a few `f32` roundings, times bytes): the
-/// clamps and the NaN test change nothing there, and the rounding is `trunc(y + HALF_DOWN)`,
-/// two vector operations where its truncation, comparison of the rest and correction take
-/// five. (Adding exactly 1/2 would be wrong below 1/2: `0.5 - 2^-25 + 0.5`
-/// rounds to 1. Adding `HALF_DOWN` to `n + 1/2` gives `n + 1 - 2^-25`, which rounds up to
-/// `n + 1` for every `n` (its spacing there is at least `2^-24`), and to anything below
-/// `n + 1/2` stays below `n + 1`.) Checked against the scalar rounding on every float of
+/// clamps and the NaN test change nothing there, and the rounding is `trunc(y + HALF_DOWN)`
+/// ([`HALF_DOWN`] has the argument), two vector operations where the truncation, comparison of
+/// the rest and correction take five. Checked against the scalar rounding on every float of
 /// [0, 255.001] by the test below.
 #[inline(always)]
 fn bilinear_byte(y: &F32s) -> I32s {
