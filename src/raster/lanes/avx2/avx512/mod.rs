@@ -63,6 +63,26 @@ fn fraction(x: __m512, floor: __m512) -> __m512 {
     _mm512_maskz_mov_ps(finite, t)
 }
 
+/// [`floor_coord`]'s index and [`fraction`] of sixteen coordinates, the short way when every
+/// lane is ordered and within +-`MAX_TEXEL_COORD` (a span's lanes almost always are): then the
+/// clamps change nothing, `floor(x)` converts to and from `i32` exactly, and `x - floor(x)`,
+/// whose exact value is in [0, 1), rounds into [0, 1], so its clamp changes nothing either:
+/// three operations where the general path takes eleven, with the same results (`tests`
+/// compare the two on random and edge-case floats).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn floor_and_fraction(x: __m512) -> (__m512i, __m512) {
+    let inside =
+        _mm512_cmp_ps_mask::<_CMP_LE_OQ>(_mm512_abs_ps(x), _mm512_set1_ps(MAX_TEXEL_COORD));
+    if inside == 0xffff {
+        let i = _mm512_cvt_roundps_epi32::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(x);
+        (i, _mm512_sub_ps(x, _mm512_cvtepi32_ps(i)))
+    } else {
+        let (i, f) = floor_coord(x);
+        (i, fraction(x, f))
+    }
+}
+
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn wrap(i: __m512i, w: VecWrap) -> __m512i {
@@ -126,9 +146,18 @@ fn gather_pairs(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> (__m512i, __m512i
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn column_offsets(i: __m512i, max: i32) -> Option<(i32, __m512i)> {
+    let max = _mm512_set1_epi32(max);
+    // First the smaller of the first and last lanes (three operations; the smallest lane
+    // wherever the columns run one way along the lanes, as along a span): any lane below
+    // it gives an offset that is huge unsigned, so the check declines rather than misleads.
+    let ends = _mm512_min_epi32(i, _mm512_alignr_epi32::<15>(i, i));
+    let d = _mm512_sub_epi32(i, _mm512_broadcastd_epi32(_mm512_castsi512_si128(ends)));
+    if _mm512_cmpgt_epu32_mask(d, max) == 0 {
+        return Some((lane0(ends), d));
+    }
     let i0 = _mm512_reduce_min_epi32(i);
     let d = _mm512_sub_epi32(i, _mm512_set1_epi32(i0));
-    (_mm512_cmpgt_epu32_mask(d, _mm512_set1_epi32(max)) == 0).then_some((i0, d))
+    (_mm512_cmpgt_epu32_mask(d, max) == 0).then_some((i0, d))
 }
 
 /// The 32 texels from texel `(i0, j)` on (row-major), in two registers; `None` when they would
@@ -274,6 +303,53 @@ fn weighted<const C: i32>(weights: &[__m512; 4], texels: &[__m512i; 4]) -> __m51
     byte_from_sum(sum)
 }
 
+/// [`weighted`] for channel `C` of 0, 1 or 2 computed on the channel's bits where they lie,
+/// `2^(8C)` times the byte (an `and` per texel where [`channel`] takes a shuffle, which only one
+/// port runs, and no shift to pack): the result's bits `8C..8C + 8` are the rounded byte, the
+/// bits above are zero and the bits below arbitrary.
+///
+/// The same byte: a channel in place is `2^(8C) c` exactly (below 2^24), and every product, sum
+/// and the addition of `2^(8C) / 2` is `2^(8C)` times [`weighted`]'s, exactly, since scaling by a
+/// power of two commutes with rounding (toward nearest or zero) for normal floats far from the
+/// largest (the values are 0 or at least about 2^-52, at most 2^24). So the floor is
+/// `floor(2^(8C) t)` for [`weighted`]'s `t`, whose bits from `8C` on are `floor(t)`, the byte
+/// (`t` in [1/2, 256)). `tests` compare the packed colours of the two on random texels and
+/// weights.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn weighted_in_place<const C: i32>(weights: &[__m512; 4], texels: &[__m512i; 4]) -> __m512i {
+    let bits = _mm512_set1_epi32(0xff << (8 * C));
+    let channel = |t: __m512i| _mm512_cvtepi32_ps(_mm512_and_si512(t, bits));
+    let mut sum = _mm512_mul_ps(weights[0], channel(texels[0]));
+    for k in 1..4 {
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(weights[k], channel(texels[k])));
+    }
+    round_in_place::<C>(sum)
+}
+
+/// [`byte_from_sum`] of `2^(8C)` times a sum: `floor(y + 2^(8C) / 2)` with the addition
+/// rounded toward zero, `2^(8C)` times [`byte_from_sum`]'s `t` exactly, so its bits from `8C`
+/// on are the byte (`tests` check every float of [0, 255.001], scaled).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn round_in_place<const C: i32>(y: __m512) -> __m512i {
+    let half = _mm512_set1_ps(0.5 * (1 << (8 * C)) as f32);
+    let t = _mm512_add_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y, half);
+    _mm512_cvt_roundps_epi32::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(t)
+}
+
+/// The packed colour of [`weighted_in_place`]'s red, green and blue and the bytes `alpha`:
+/// bitwise selections keep each channel's own bits.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn pack_in_place(r: __m512i, g: __m512i, b: __m512i, alpha: __m512i) -> __m512i {
+    /// `ternarylogic` table of `a ? b : c` (bitwise).
+    const SELECT: i32 = 0xca;
+    let gb = _mm512_ternarylogic_epi32::<SELECT>(_mm512_set1_epi32(0xffff_0000_u32 as i32), b, g);
+    let rgb = _mm512_ternarylogic_epi32::<SELECT>(_mm512_set1_epi32(0xff), r, gb);
+    _mm512_or_si512(rgb, _mm512_slli_epi32::<24>(alpha))
+}
+
 /// Two halves of eight `f32` lanes as one register of sixteen (`lo` in lanes 0..8).
 #[inline]
 #[target_feature(enable = "avx512f")]
@@ -343,9 +419,8 @@ unsafe fn sample16_bilinear(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i
         let half = _mm512_set1_ps(0.5);
         let x = _mm512_sub_ps(_mm512_mul_ps(u, w), half);
         let y = _mm512_sub_ps(_mm512_mul_ps(v, h), half);
-        let (i0, fx) = floor_coord(x);
-        let (j0, fy) = floor_coord(y);
-        let (a, b) = (fraction(x, fx), fraction(y, fy));
+        let (i0, a) = floor_and_fraction(x);
+        let (j0, b) = floor_and_fraction(y);
         let one = _mm512_set1_epi32(1);
         let (ia, ib) = (
             wrap(i0, s.wrap.0),
@@ -382,18 +457,15 @@ unsafe fn sample16_bilinear(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i
             _mm512_mul_ps(oa, b),
             _mm512_mul_ps(a, b),
         ];
-        let r = weighted::<0>(&weights, &texels);
-        let g = weighted::<1>(&weights, &texels);
-        let b = weighted::<2>(&weights, &texels);
+        let r = weighted_in_place::<0>(&weights, &texels);
+        let g = weighted_in_place::<1>(&weights, &texels);
+        let b = weighted_in_place::<2>(&weights, &texels);
         let a = if s.opaque {
             _mm512_set1_epi32(0xff)
         } else {
             weighted::<3>(&weights, &texels)
         };
-        _mm512_or_si512(
-            _mm512_or_si512(r, _mm512_slli_epi32::<8>(g)),
-            _mm512_or_si512(_mm512_slli_epi32::<16>(b), _mm512_slli_epi32::<24>(a)),
-        )
+        pack_in_place(r, g, b, a)
     }
 }
 

@@ -23,7 +23,8 @@ fn wrong_roundings(round: impl Fn(&[f32; 16]) -> [i32; 16]) -> Vec<(f32, i32)> {
 }
 
 /// Every float from 0 to 255.001 rounds to the byte the scalar code gives, in the AVX-512
-/// and in the AVX2 lanes (each checked where the CPU has it).
+/// lanes (also scaled by 256 and 65536, as a channel in place) and in the AVX2 lanes (each
+/// checked where the CPU has it).
 #[test]
 fn every_bilinear_sum_rounds_as_the_scalar_code() {
     if is_x86_feature_detected!("avx512f") {
@@ -37,6 +38,30 @@ fn every_bilinear_sum_rounds_as_the_scalar_code() {
             out
         });
         assert!(wrong.is_empty(), "AVX-512 rounded differently: {wrong:?}");
+    }
+    if is_x86_feature_detected!("avx512f") {
+        // Scaled by 256 and 65536 (green and blue in place), the bits from 8 and 16 on.
+        for c in [1, 2] {
+            let wrong = wrong_roundings(|xs| {
+                let mut out = [0i32; 16];
+                let scale = (1 << (8 * c)) as f32;
+                // SAFETY: the CPU has AVX-512 F (checked above); 16 lanes in and out.
+                unsafe {
+                    let y = _mm512_mul_ps(_mm512_loadu_ps(xs.as_ptr()), _mm512_set1_ps(scale));
+                    let v = if c == 1 {
+                        super::round_in_place::<1>(y)
+                    } else {
+                        super::round_in_place::<2>(y)
+                    };
+                    _mm512_storeu_si512(out.as_mut_ptr().cast(), v);
+                }
+                out.map(|t| t >> (8 * c))
+            });
+            assert!(
+                wrong.is_empty(),
+                "AVX-512 in place ({c}) rounded differently: {wrong:?}"
+            );
+        }
     }
     if is_x86_feature_detected!("avx2") {
         let wrong = wrong_roundings(|xs| {
@@ -133,4 +158,149 @@ fn row_blocks_of_nearest_pick_the_gathered_texels() {
         super::row_block(&s, i, _mm512_set1_epi32(9))
     };
     assert!(got.is_some());
+}
+
+/// Random floats for the helpers' tests: every exponent (so huge, tiny and subnormal values),
+/// both signs, the infinities and NaN, and coordinates of a texture (within a few thousand).
+fn test_floats(count: usize) -> Vec<f32> {
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    let mut xs = vec![
+        0.0,
+        -0.0,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        super::MAX_TEXEL_COORD,
+        -super::MAX_TEXEL_COORD,
+        super::MAX_TEXEL_COORD.next_up(),
+        (-super::MAX_TEXEL_COORD).next_down(),
+        -f32::MIN_POSITIVE / 2.0,
+        f32::MIN_POSITIVE / 2.0,
+        -0.5,
+        -1.0,
+        -1.0f32.next_up(),
+        -1.0f32.next_down(),
+    ];
+    while xs.len() < count {
+        let r = next();
+        xs.push(match r % 3 {
+            0 => f32::from_bits((r as u32).rotate_right(1)),
+            1 => (r >> 8) as u32 as f32 / (1u64 << 32) as f32 * 8192.0 - 4096.0,
+            _ => f32::from_bits((r >> 40) as u32) - 0.5,
+        });
+    }
+    xs
+}
+
+/// The short path of `floor_and_fraction` gives the index and fraction of the general one
+/// (`floor_coord` and `fraction`) on every lane, sixteen lanes of random floats at a time,
+/// whether all sixteen are in range (the short path) or not.
+#[test]
+fn floor_and_fraction_matches_the_clamped_floor() {
+    if !is_x86_feature_detected!("avx512f") {
+        return;
+    }
+    let xs = test_floats(64_000);
+    let (mut short, mut long) = (0, 0);
+    for (n, lanes) in xs.chunks_exact(16).enumerate() {
+        // Every fourth group with a lane out of range, to exercise the general path too.
+        let mut lanes: [f32; 16] = lanes.try_into().expect("sixteen lanes");
+        if n % 4 != 0 {
+            for x in &mut lanes {
+                if x.is_nan() || x.abs() > super::MAX_TEXEL_COORD {
+                    *x = 0.25;
+                }
+            }
+            short += 1;
+        } else {
+            long += 1;
+        }
+        let (mut i, mut a, mut i_ref, mut a_ref) = ([0i32; 16], [0f32; 16], [0i32; 16], [0f32; 16]);
+        // SAFETY: the CPU has AVX-512 F (checked above); 16 lanes in and out.
+        unsafe {
+            let x = _mm512_loadu_ps(lanes.as_ptr());
+            let (gi, ga) = super::floor_and_fraction(x);
+            let (ri, rf) = super::floor_coord(x);
+            _mm512_storeu_si512(i.as_mut_ptr().cast(), gi);
+            _mm512_storeu_ps(a.as_mut_ptr(), ga);
+            _mm512_storeu_si512(i_ref.as_mut_ptr().cast(), ri);
+            _mm512_storeu_ps(a_ref.as_mut_ptr(), super::fraction(x, rf));
+        }
+        assert_eq!(i, i_ref, "{lanes:?}");
+        assert_eq!(a.map(f32::to_bits), a_ref.map(f32::to_bits), "{lanes:?}");
+    }
+    assert!(short > 2000 && long > 900, "{short} short, {long} long");
+}
+
+/// `weighted_in_place` and `pack_in_place` give the colours of `weighted` and the shifts, on
+/// random texels and on the weights of random fractions (`texture::bilinear_weights`), and on
+/// the extremes (texels of 0 and 255, a weight of 1).
+#[test]
+fn channels_in_place_give_the_shifted_bytes() {
+    if !is_x86_feature_detected!("avx512bw") {
+        return;
+    }
+    let fractions = test_floats(40_000)
+        .into_iter()
+        .map(|x| crate::raster::texture::bilinear_fraction(x * 0.001))
+        .collect::<Vec<_>>();
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut texel = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        match state % 8 {
+            0 => 0,
+            1 => u32::MAX,
+            _ => state as u32,
+        }
+    };
+    for (n, ab) in fractions.chunks_exact(32).enumerate() {
+        let texels: [[u32; 16]; 4] = std::array::from_fn(|_| std::array::from_fn(|_| texel()));
+        let (mut got, mut want) = ([0u32; 16], [0u32; 16]);
+        // SAFETY: the CPU has AVX-512 F and BW (checked above); 16 lanes in and out.
+        unsafe {
+            let a = _mm512_loadu_ps(ab.as_ptr());
+            let b = if n % 5 == 0 {
+                _mm512_set1_ps(1.0)
+            } else {
+                _mm512_loadu_ps(ab[16..].as_ptr())
+            };
+            let ones = _mm512_set1_ps(1.0);
+            let (oa, ob) = (_mm512_sub_ps(ones, a), _mm512_sub_ps(ones, b));
+            let weights = [
+                _mm512_mul_ps(oa, ob),
+                _mm512_mul_ps(a, ob),
+                _mm512_mul_ps(oa, b),
+                _mm512_mul_ps(a, b),
+            ];
+            let t = texels.map(|t| _mm512_loadu_si512(t.as_ptr().cast()));
+            let alpha = super::weighted::<3>(&weights, &t);
+            let packed = super::pack_in_place(
+                super::weighted_in_place::<0>(&weights, &t),
+                super::weighted_in_place::<1>(&weights, &t),
+                super::weighted_in_place::<2>(&weights, &t),
+                alpha,
+            );
+            let shifted = _mm512_or_si512(
+                _mm512_or_si512(
+                    super::weighted::<0>(&weights, &t),
+                    _mm512_slli_epi32::<8>(super::weighted::<1>(&weights, &t)),
+                ),
+                _mm512_or_si512(
+                    _mm512_slli_epi32::<16>(super::weighted::<2>(&weights, &t)),
+                    _mm512_slli_epi32::<24>(alpha),
+                ),
+            );
+            _mm512_storeu_si512(got.as_mut_ptr().cast(), packed);
+            _mm512_storeu_si512(want.as_mut_ptr().cast(), shifted);
+        }
+        assert_eq!(got, want, "fractions {ab:?}, texels {texels:?}");
+    }
 }
