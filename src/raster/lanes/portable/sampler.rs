@@ -138,6 +138,44 @@ fn weighted(w: &[F32s; 4], t: &[Rgba; 4], c: u32) -> I32s {
     bilinear_byte(&sum)
 }
 
+/// [`weighted`] for channel `c` of 0, 1 or 2 computed on the channel's bits where they lie,
+/// `2^(8c)` times the byte (an `and` per texel where [`channel`] also shifts, and no shift to
+/// pack): the result's bits from `8c` on are the rounded byte, the bits below arbitrary.
+///
+/// The same byte: a channel in place is `2^(8c)` times the byte exactly (below 2^24), and every
+/// product and sum, and the addition of `2^(8c)` [`HALF_DOWN`], is `2^(8c)` times
+/// [`weighted`]'s exactly, since scaling by a power of two commutes with rounding for normal
+/// floats (a bilinear fraction of a coordinate `u w - 1/2` is 0 or at least 2^-26, so the
+/// values are 0 or at least about 2^-52, and at most 2^24); the truncation of `2^(8c) t` for
+/// [`weighted`]'s `t >= 0` has the truncation of `t`, the byte, in its bits from `8c` on. The
+/// test below compares the packed colours with [`weighted`]'s.
+#[inline(always)]
+fn weighted_in_place(w: &[F32s; 4], t: &[Rgba; 4], c: u32) -> I32s {
+    let bits = 0xff << (8 * c);
+    let channel = |t: &Rgba| each(|k| (t[k] & bits) as i32 as f32);
+    let mut sum = each(|k| w[0][k] * channel(&t[0])[k]);
+    for n in 1..4 {
+        let ch = channel(&t[n]);
+        sum = each(|k| sum[k] + w[n][k] * ch[k]);
+    }
+    round_in_place(&sum, c)
+}
+
+/// [`bilinear_byte`] of `2^(8c)` times a sum: `trunc(y + 2^(8c) HALF_DOWN)`, `2^(8c)` times
+/// [`bilinear_byte`]'s rounded sum exactly, so its bits from `8c` on are the byte (the test
+/// below checks every float of [0, 255.001], scaled).
+#[inline(always)]
+fn round_in_place(y: &F32s, c: u32) -> I32s {
+    let half = HALF_DOWN * (1 << (8 * c)) as f32;
+    each(|k| trunc(y[k] + half))
+}
+
+/// The packed colour of [`weighted_in_place`]'s red, green and blue and the bytes `alpha`.
+#[inline(always)]
+fn pack_in_place(r: &I32s, g: &I32s, b: &I32s, alpha: &I32s) -> Rgba {
+    each(|k| (r[k] & 0xff | g[k] & 0xff00 | b[k] & 0xff_0000 | alpha[k] << 24) as u32)
+}
+
 impl Sampler<'_> {
     /// The index `j * width + i` in `texels` of eight wrapped texel coordinates (each in
     /// `0..width` and `0..height`), as [`Sampler::texel`] reads it: below the number of
@@ -239,16 +277,16 @@ impl Sampler<'_> {
                     each(|k| oa[k] * b[k]),
                     each(|k| a[k] * b[k]),
                 ];
-                let r = weighted(&weights, &texels, 0);
-                let g = weighted(&weights, &texels, 1);
-                let b = weighted(&weights, &texels, 2);
+                let r = weighted_in_place(&weights, &texels, 0);
+                let g = weighted_in_place(&weights, &texels, 1);
+                let b = weighted_in_place(&weights, &texels, 2);
                 // An opaque texture's alpha sum is 255 (see `VecSampler::opaque`).
                 let a = if self.opaque {
                     [255; LANES]
                 } else {
                     weighted(&weights, &texels, 3)
                 };
-                each(|k| (r[k] | g[k] << 8 | b[k] << 16 | a[k] << 24) as u32)
+                pack_in_place(&r, &g, &b, &a)
             }
         }
     }
@@ -259,7 +297,7 @@ mod tests {
     use crate::raster::texture::byte_from_sum;
 
     /// Every float from 0 to 255.001 (the range of a bilinear sum) rounds to the byte the
-    /// scalar code gives.
+    /// scalar code gives, also scaled by 256 and 65536 (a channel in place).
     #[test]
     fn every_bilinear_sum_rounds_as_the_scalar_code() {
         let last = 255.001f32.to_bits();
@@ -273,9 +311,71 @@ mod tests {
                     wrong.push((*x, got));
                 }
             }
+            // Scaled by 256 and 65536 (green and blue in place): the bits from 8 and 16 on.
+            for c in [1, 2] {
+                let scaled = xs.map(|x| x * (1 << (8 * c)) as f32);
+                for (x, got) in xs.iter().zip(super::round_in_place(&scaled, c)) {
+                    if got >> (8 * c) != i32::from(byte_from_sum(*x)) {
+                        wrong.push((*x, got));
+                    }
+                }
+            }
             bits += super::LANES as u32;
         }
         assert!(wrong.is_empty(), "rounded differently: {wrong:?}");
+    }
+
+    /// `weighted_in_place` and `pack_in_place` give the colour `weighted` and the shifts give,
+    /// on random texels (with many bytes of 0 and 255) and the weights of random bilinear
+    /// fractions, and with a weight of 1.
+    #[test]
+    fn channels_in_place_give_the_shifted_bytes() {
+        use super::{F32s, LANES, Rgba, each, pack_in_place, weighted, weighted_in_place};
+        use crate::raster::texture::bilinear_fraction;
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for n in 0..20_000 {
+            let mut fraction = || bilinear_fraction((next() % 200_000) as f32 / 64.0 - 1000.5);
+            let a: F32s = each(|_| fraction());
+            let b: F32s = if n % 5 == 0 {
+                [1.0; LANES]
+            } else {
+                each(|_| fraction())
+            };
+            let texels: [Rgba; 4] = std::array::from_fn(|_| {
+                each(|_| match next() % 8 {
+                    0 => 0,
+                    1 => u32::MAX,
+                    r => (next() >> r) as u32,
+                })
+            });
+            let (oa, ob) = (each(|k| 1.0 - a[k]), each(|k| 1.0 - b[k]));
+            let w = [
+                each(|k| oa[k] * ob[k]),
+                each(|k| a[k] * ob[k]),
+                each(|k| oa[k] * b[k]),
+                each(|k| a[k] * b[k]),
+            ];
+            let alpha = weighted(&w, &texels, 3);
+            let got = pack_in_place(
+                &weighted_in_place(&w, &texels, 0),
+                &weighted_in_place(&w, &texels, 1),
+                &weighted_in_place(&w, &texels, 2),
+                &alpha,
+            );
+            let (r, g, b) = (
+                weighted(&w, &texels, 0),
+                weighted(&w, &texels, 1),
+                weighted(&w, &texels, 2),
+            );
+            let want: Rgba = each(|k| (r[k] | g[k] << 8 | b[k] << 16 | alpha[k] << 24) as u32);
+            assert_eq!(got, want, "a {a:?}, b {b:?}, texels {texels:?}");
+        }
     }
 
     /// For tame coordinates the short floor and fraction (and the nearest lookup's short floor,

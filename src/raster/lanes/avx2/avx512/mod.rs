@@ -95,6 +95,29 @@ fn wrap(i: __m512i, w: VecWrap) -> __m512i {
     }
 }
 
+/// [`wrap`] of one coordinate (the same mode, the same value as each lane of [`wrap`]).
+#[inline]
+fn wrap_one(i: i32, w: VecWrap) -> i32 {
+    match w {
+        VecWrap::Mask(m) => i & m,
+        VecWrap::Clamp(hi) => i.clamp(0, hi),
+    }
+}
+
+/// Whether `wrap(i + 1) = wrap(i) + 1` in every lane (each column's right neighbour beside it
+/// in the row, not wrapped to its start nor clamped), from `i` and `ia = wrap(i)`: with a mask
+/// `m`, where `i & m` is not `m` (there `(i + 1) & m` is `(i & m) + 1`, and at `m` it is 0);
+/// clamped to `0..=hi`, where `0 <= i < hi` (below, both clamp to 0; from `hi` on, both to
+/// `hi`). One comparison where wrapping `i + 1` and comparing take four.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn all_beside(i: __m512i, ia: __m512i, w: VecWrap) -> bool {
+    match w {
+        VecWrap::Mask(m) => _mm512_cmpeq_epi32_mask(ia, _mm512_set1_epi32(m)) == 0,
+        VecWrap::Clamp(hi) => _mm512_cmplt_epu32_mask(i, _mm512_set1_epi32(hi)) == 0xffff,
+    }
+}
+
 /// The texel index `j * width + i` of each lane (a shift when the width is a power of two).
 #[inline]
 #[target_feature(enable = "avx512f")]
@@ -189,7 +212,8 @@ fn lane0(v: __m512i) -> i32 {
 }
 
 /// The texels `(i, ja)`, `(i + 1, ja)`, `(i, jb)` and `(i + 1, jb)` of sixteen lanes whose
-/// rows `ja` and `jb` are each the same in every lane and whose columns `i` lie within 30 of
+/// row `j` (before wrapping; `ja` and `jb` are the wraps of `j` and `j + 1`, made here) is the
+/// same in every lane and whose columns `i` (wrapped) lie within 30 of
 /// the smallest (a row of a magnified or mildly minified texture): picked from 32
 /// consecutive texels of each row, read with two plain loads, instead of gathered. `None`
 /// when the lanes do not qualify (or the 32 texels would run past the texture's end). Every
@@ -197,13 +221,14 @@ fn lane0(v: __m512i) -> i32 {
 /// gathered ones.
 #[inline]
 #[target_feature(enable = "avx512f")]
-fn row_blocks(s: &VecSampler<'_>, i: __m512i, ja: __m512i, jb: __m512i) -> Option<[__m512i; 4]> {
-    let (j0, j1) = (lane0(ja), lane0(jb));
-    if _mm512_cmpneq_epi32_mask(ja, _mm512_set1_epi32(j0)) != 0
-        || _mm512_cmpneq_epi32_mask(jb, _mm512_set1_epi32(j1)) != 0
-    {
+fn row_blocks(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> Option<[__m512i; 4]> {
+    // One row `j` in every lane (before wrapping) makes its wraps `ja` and `jb` one row each,
+    // wrapped once.
+    if _mm512_cmpneq_epi32_mask(j, _mm512_broadcastd_epi32(_mm512_castsi512_si128(j))) != 0 {
         return None;
     }
+    let j = lane0(j);
+    let (j0, j1) = (wrap_one(j, s.wrap.1), wrap_one(j + 1, s.wrap.1));
     let (i0, d) = column_offsets(i, 30)?;
     let (a_lo, a_hi) = texel_window(s, i0, j0)?;
     let (b_lo, b_hi) = texel_window(s, i0, j1)?;
@@ -421,32 +446,35 @@ unsafe fn sample16_bilinear(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i
         let y = _mm512_sub_ps(_mm512_mul_ps(v, h), half);
         let (i0, a) = floor_and_fraction(x);
         let (j0, b) = floor_and_fraction(y);
-        let one = _mm512_set1_epi32(1);
-        let (ia, ib) = (
-            wrap(i0, s.wrap.0),
-            wrap(_mm512_add_epi32(i0, one), s.wrap.0),
-        );
-        let (ja, jb) = (
-            wrap(j0, s.wrap.1),
-            wrap(_mm512_add_epi32(j0, one), s.wrap.1),
-        );
-        let side_by_side = _mm512_cmpeq_epi32_mask(ib, _mm512_add_epi32(ia, one)) == 0xffff;
-        let texels = if side_by_side {
-            match row_blocks(s, ia, ja, jb) {
-                Some(t) => t,
-                None => {
+        let ia = wrap(i0, s.wrap.0);
+        let side_by_side = all_beside(i0, ia, s.wrap.0);
+        let blocks = if side_by_side {
+            row_blocks(s, ia, j0)
+        } else {
+            None
+        };
+        let texels = match blocks {
+            Some(t) => t,
+            None => {
+                let one = _mm512_set1_epi32(1);
+                let ib = wrap(_mm512_add_epi32(i0, one), s.wrap.0);
+                let (ja, jb) = (
+                    wrap(j0, s.wrap.1),
+                    wrap(_mm512_add_epi32(j0, one), s.wrap.1),
+                );
+                if side_by_side {
                     let (t00, t10) = gather_pairs(s, ia, ja);
                     let (t01, t11) = gather_pairs(s, ia, jb);
                     [t00, t10, t01, t11]
+                } else {
+                    [
+                        gather(s, ia, ja),
+                        gather(s, ib, ja),
+                        gather(s, ia, jb),
+                        gather(s, ib, jb),
+                    ]
                 }
             }
-        } else {
-            [
-                gather(s, ia, ja),
-                gather(s, ib, ja),
-                gather(s, ia, jb),
-                gather(s, ib, jb),
-            ]
         };
         // `texture::bilinear_weights`, mirrored.
         let ones = _mm512_set1_ps(1.0);

@@ -304,3 +304,57 @@ fn channels_in_place_give_the_shifted_bytes() {
         assert_eq!(got, want, "fractions {ab:?}, texels {texels:?}");
     }
 }
+
+/// `all_beside` says whether every lane's `wrap(i + 1)` is `wrap(i) + 1`, as wrapping both and
+/// comparing does, for masks and clamps near the edges of the texture (and far outside), and
+/// `wrap_one` wraps as each lane of `wrap` does.
+#[test]
+fn all_beside_matches_wrapping_the_neighbour() {
+    use super::super::sampler::VecWrap;
+    if !is_x86_feature_detected!("avx512f") {
+        return;
+    }
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = move |n: i64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as i64
+    };
+    let (mut yes, mut no) = (0, 0);
+    for case in 0..20_000 {
+        let size = [1, 2, 8, 64, 37][case % 5];
+        let wrap = if case % 2 == 0 && (size as u32).is_power_of_two() {
+            VecWrap::Mask(size - 1)
+        } else {
+            VecWrap::Clamp(size - 1)
+        };
+        // Columns near 0 and near the size, mostly all beside, sometimes one at an edge.
+        let base = next(4 * i64::from(size)) - 2 * i64::from(size);
+        let i: [i32; 16] = std::array::from_fn(|_| {
+            let d = if next(40) == 0 {
+                next(1 << 31) - (1 << 30)
+            } else {
+                next(3)
+            };
+            (base + d) as i32
+        });
+        // SAFETY: the CPU has AVX-512 F (checked above); 16 lanes in and out.
+        let (got, want, wrapped) = unsafe {
+            let iv = _mm512_loadu_si512(i.as_ptr().cast());
+            let ia = super::wrap(iv, wrap);
+            let ib = super::wrap(_mm512_add_epi32(iv, _mm512_set1_epi32(1)), wrap);
+            let mut out = [0i32; 16];
+            _mm512_storeu_si512(out.as_mut_ptr().cast(), ia);
+            (
+                super::all_beside(iv, ia, wrap),
+                _mm512_cmpeq_epi32_mask(ib, _mm512_add_epi32(ia, _mm512_set1_epi32(1))) == 0xffff,
+                out,
+            )
+        };
+        assert_eq!(got, want, "size {size}, i {i:?}");
+        assert_eq!(wrapped, i.map(|i| super::wrap_one(i, wrap)), "size {size}");
+        if got { yes += 1 } else { no += 1 }
+    }
+    assert!(yes > 1000 && no > 1000, "{yes} beside, {no} not");
+}
