@@ -200,9 +200,11 @@ fn test_floats(count: usize) -> Vec<f32> {
 
 /// The short path of `floor_and_fraction` gives the index and fraction of the general one
 /// (`floor_coord` and `fraction`) on every lane, sixteen lanes of random floats at a time,
-/// whether all sixteen are in range (the short path) or not.
+/// whether all sixteen are in range (the short path) or not; in the AVX-512 lanes and, eight
+/// lanes at a time, in the AVX2 lanes (each where the CPU has it).
 #[test]
 fn floor_and_fraction_matches_the_clamped_floor() {
+    use super::super::sampler as avx2;
     if !is_x86_feature_detected!("avx512f") {
         return;
     }
@@ -234,6 +236,25 @@ fn floor_and_fraction_matches_the_clamped_floor() {
         }
         assert_eq!(i, i_ref, "{lanes:?}");
         assert_eq!(a.map(f32::to_bits), a_ref.map(f32::to_bits), "{lanes:?}");
+        for half in lanes.chunks_exact(8) {
+            let (mut i, mut a, mut i_ref, mut a_ref) = ([0i32; 8], [0f32; 8], [0i32; 8], [0f32; 8]);
+            // SAFETY: the CPU has AVX-512 F, so AVX2 (checked above); 8 lanes in and out.
+            unsafe {
+                let x = _mm256_loadu_ps(half.as_ptr());
+                let (gi, ga) = avx2::floor_and_fraction(x);
+                let (ri, rf) = avx2::floor_coord(x);
+                _mm256_storeu_si256(i.as_mut_ptr().cast(), gi);
+                _mm256_storeu_ps(a.as_mut_ptr(), ga);
+                _mm256_storeu_si256(i_ref.as_mut_ptr().cast(), ri);
+                _mm256_storeu_ps(a_ref.as_mut_ptr(), avx2::fraction(x, rf));
+            }
+            assert_eq!(i, i_ref, "AVX2, {half:?}");
+            assert_eq!(
+                a.map(f32::to_bits),
+                a_ref.map(f32::to_bits),
+                "AVX2, {half:?}"
+            );
+        }
     }
     assert!(short > 2000 && long > 900, "{short} short, {long} long");
 }
