@@ -168,7 +168,8 @@ pub fn render_row(
 /// triangle's set-up is rebuilt where it is drawn (module `fast`), so dense meshes need little
 /// memory. With [`Buffers::ColorDepth`], [`Buffers::ColorDepthUv`] or
 /// [`Buffers::DepthDifference`] the lane path
-/// ([`lanes`](mod@super::lanes)) draws whatever it can.
+/// ([`lanes`](mod@super::lanes)) draws whatever it can, at the level
+/// [`VectorLevel::for_frame`] picks for the mesh.
 pub fn render_into(
     frame: &mut Framebuffer,
     mesh: &ClipMesh,
@@ -176,13 +177,14 @@ pub fn render_into(
     settings: &RenderSettings,
     buffers: Buffers,
 ) -> Result<(), RenderError> {
+    let pixels = u64::from(settings.width) * u64::from(settings.height);
     render_into_at(
         frame,
         mesh,
         texture,
         settings,
         buffers,
-        VectorLevel::current(),
+        VectorLevel::for_frame(mesh.triangles.len(), pixels),
     )
 }
 

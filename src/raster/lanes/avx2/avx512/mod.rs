@@ -227,6 +227,7 @@ fn row_blocks(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> Option<[__m512i; 4]
     if _mm512_cmpneq_epi32_mask(j, _mm512_broadcastd_epi32(_mm512_castsi512_si128(j))) != 0 {
         return None;
     }
+    // A floor within +-MAX_TEXEL_COORD: `j + 1` does not overflow.
     let j = lane0(j);
     let (j0, j1) = (wrap_one(j, s.wrap.1), wrap_one(j + 1, s.wrap.1));
     let (i0, d) = column_offsets(i, 30)?;
@@ -336,7 +337,8 @@ fn weighted<const C: i32>(weights: &[__m512; 4], texels: &[__m512i; 4]) -> __m51
 /// The same byte: a channel in place is `2^(8C) c` exactly (below 2^24), and every product, sum
 /// and the addition of `2^(8C) / 2` is `2^(8C)` times [`weighted`]'s, exactly, since scaling by a
 /// power of two commutes with rounding (toward nearest or zero) for normal floats far from the
-/// largest (the values are 0 or at least about 2^-52, at most 2^24). So the floor is
+/// largest (a bilinear fraction of a coordinate `u w - 1/2` is 0 or at least 2^-26, so the
+/// values are 0 or at least about 2^-52, and at most 2^24). So the floor is
 /// `floor(2^(8C) t)` for [`weighted`]'s `t`, whose bits from `8C` on are `floor(t)`, the byte
 /// (`t` in [1/2, 256)). `tests` compare the packed colours of the two on random texels and
 /// weights.
