@@ -83,6 +83,21 @@ fn floor_and_fraction(x: __m512) -> (__m512i, __m512) {
     }
 }
 
+/// [`floor_coord`]'s index of sixteen coordinates, the short way (one conversion rounding
+/// down) when every lane is ordered and within +-`MAX_TEXEL_COORD`, as in
+/// [`floor_and_fraction`].
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn floor_index(x: __m512) -> __m512i {
+    let inside =
+        _mm512_cmp_ps_mask::<_CMP_LE_OQ>(_mm512_abs_ps(x), _mm512_set1_ps(MAX_TEXEL_COORD));
+    if inside == 0xffff {
+        _mm512_cvt_roundps_epi32::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(x)
+    } else {
+        floor_coord(x).0
+    }
+}
+
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn wrap(i: __m512i, w: VecWrap) -> __m512i {
@@ -418,8 +433,8 @@ pub(super) unsafe fn sample16_packed(s: &VecSampler<'_>, u: __m512, v: __m512) -
         match s.filter {
             Filter::Nearest => {
                 let (w, h) = (_mm512_set1_ps(s.size.0), _mm512_set1_ps(s.size.1));
-                let i = wrap(floor_coord(_mm512_mul_ps(u, w)).0, s.wrap.0);
-                let j = wrap(floor_coord(_mm512_mul_ps(v, h)).0, s.wrap.1);
+                let i = wrap(floor_index(_mm512_mul_ps(u, w)), s.wrap.0);
+                let j = wrap(floor_index(_mm512_mul_ps(v, h)), s.wrap.1);
                 match row_block(s, i, j) {
                     Some(t) => t,
                     None => gather(s, i, j),

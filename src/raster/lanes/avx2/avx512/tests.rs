@@ -198,8 +198,8 @@ fn test_floats(count: usize) -> Vec<f32> {
     xs
 }
 
-/// The short path of `floor_and_fraction` gives the index and fraction of the general one
-/// (`floor_coord` and `fraction`) on every lane, sixteen lanes of random floats at a time,
+/// The short path of `floor_and_fraction` (and of the nearest lookup's `floor_index`) gives the
+/// index and fraction of the general one (`floor_coord` and `fraction`) on every lane, sixteen lanes of random floats at a time,
 /// whether all sixteen are in range (the short path) or not; in the AVX-512 lanes and, eight
 /// lanes at a time, in the AVX2 lanes (each where the CPU has it).
 #[test]
@@ -224,17 +224,21 @@ fn floor_and_fraction_matches_the_clamped_floor() {
             long += 1;
         }
         let (mut i, mut a, mut i_ref, mut a_ref) = ([0i32; 16], [0f32; 16], [0i32; 16], [0f32; 16]);
+        let mut nearest = [0i32; 16];
         // SAFETY: the CPU has AVX-512 F (checked above); 16 lanes in and out.
         unsafe {
             let x = _mm512_loadu_ps(lanes.as_ptr());
             let (gi, ga) = super::floor_and_fraction(x);
             let (ri, rf) = super::floor_coord(x);
+            let ni = super::floor_index(x);
             _mm512_storeu_si512(i.as_mut_ptr().cast(), gi);
+            _mm512_storeu_si512(nearest.as_mut_ptr().cast(), ni);
             _mm512_storeu_ps(a.as_mut_ptr(), ga);
             _mm512_storeu_si512(i_ref.as_mut_ptr().cast(), ri);
             _mm512_storeu_ps(a_ref.as_mut_ptr(), super::fraction(x, rf));
         }
         assert_eq!(i, i_ref, "{lanes:?}");
+        assert_eq!(nearest, i_ref, "nearest, {lanes:?}");
         assert_eq!(a.map(f32::to_bits), a_ref.map(f32::to_bits), "{lanes:?}");
         for half in lanes.chunks_exact(8) {
             let (mut i, mut a, mut i_ref, mut a_ref) = ([0i32; 8], [0f32; 8], [0i32; 8], [0f32; 8]);
