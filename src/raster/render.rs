@@ -337,7 +337,8 @@ pub fn rasterize_bands(
 ) {
     use rayon::prelude::*;
     let rows_per_band = rows_per_band.max(1);
-    let vector = VectorLevel::current();
+    let pixels = u64::from(frame.width) * u64::from(frame.height);
+    let vector = VectorLevel::for_frame(triangles.len(), pixels);
     let mut bins = Vec::new();
     bin_rows(
         &mut bins,

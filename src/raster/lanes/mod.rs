@@ -156,7 +156,8 @@ impl VectorLevel {
         }
     }
 
-    /// The level [`render_into`](super::render::render_into) draws a frame of `triangles`
+    /// The level [`render_into`](super::render::render_into) and
+    /// [`rasterize_bands`](super::render::rasterize_bands) draw a frame of `triangles`
     /// triangles over an image of `pixels` pixels at: [`VectorLevel::current`], but AVX2 for
     /// AVX-512 when the run did not choose its level and the triangles average fewer than
     /// [`DENSE_PIXELS_PER_TRIANGLE`] pixels of the image (the same pixels either way).

@@ -124,7 +124,20 @@ fn channel(t: &Rgba, c: u32) -> F32s {
 #[inline(always)]
 fn bilinear_byte(y: &F32s) -> I32s {
     debug_assert!(y.iter().all(|y| (0.0..=255.001).contains(y)), "{y:?}");
-    each(|k| trunc(y[k] + HALF_DOWN))
+    round_in_place(y, 0)
+}
+
+/// `texture::bilinear_weights` per lane: `[(1 - a)(1 - b), a (1 - b), (1 - a) b, a b]` of the
+/// fractions `a` (across) and `b` (down).
+#[inline(always)]
+fn bilinear_weights(a: &F32s, b: &F32s) -> [F32s; 4] {
+    let (oa, ob) = (each(|k| 1.0 - a[k]), each(|k| 1.0 - b[k]));
+    [
+        each(|k| oa[k] * ob[k]),
+        each(|k| a[k] * ob[k]),
+        each(|k| oa[k] * b[k]),
+        each(|k| a[k] * b[k]),
+    ]
 }
 
 /// `sum_k weight_k * channel_k`, left to right, rounded to a byte.
@@ -269,14 +282,7 @@ impl Sampler<'_> {
                         self.fetch(&self.index(&ib, &jb)),
                     ]
                 };
-                // `texture::bilinear_weights`, per lane.
-                let (oa, ob) = (each(|k| 1.0 - a[k]), each(|k| 1.0 - b[k]));
-                let weights = [
-                    each(|k| oa[k] * ob[k]),
-                    each(|k| a[k] * ob[k]),
-                    each(|k| oa[k] * b[k]),
-                    each(|k| a[k] * b[k]),
-                ];
+                let weights = bilinear_weights(&a, &b);
                 let r = weighted_in_place(&weights, &texels, 0);
                 let g = weighted_in_place(&weights, &texels, 1);
                 let b = weighted_in_place(&weights, &texels, 2);
@@ -354,13 +360,7 @@ mod tests {
                     r => (next() >> r) as u32,
                 })
             });
-            let (oa, ob) = (each(|k| 1.0 - a[k]), each(|k| 1.0 - b[k]));
-            let w = [
-                each(|k| oa[k] * ob[k]),
-                each(|k| a[k] * ob[k]),
-                each(|k| oa[k] * b[k]),
-                each(|k| a[k] * b[k]),
-            ];
+            let w = super::bilinear_weights(&a, &b);
             let alpha = weighted(&w, &texels, 3);
             let got = pack_in_place(
                 &weighted_in_place(&w, &texels, 0),

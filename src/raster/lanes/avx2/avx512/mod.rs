@@ -63,6 +63,14 @@ fn fraction(x: __m512, floor: __m512) -> __m512 {
     _mm512_maskz_mov_ps(finite, t)
 }
 
+/// Whether every lane of `x` is ordered and within +-`MAX_TEXEL_COORD` (one comparison of the
+/// magnitudes, which fails for NaN): where [`floor_coord`]'s clamps change nothing.
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn all_in_range(x: __m512) -> bool {
+    _mm512_cmp_ps_mask::<_CMP_LE_OQ>(_mm512_abs_ps(x), _mm512_set1_ps(MAX_TEXEL_COORD)) == 0xffff
+}
+
 /// [`floor_coord`]'s index and [`fraction`] of sixteen coordinates, the short way when every
 /// lane is ordered and within +-`MAX_TEXEL_COORD` (a span's lanes almost always are): then the
 /// clamps change nothing, `floor(x)` converts to and from `i32` exactly, and `x - floor(x)`,
@@ -72,9 +80,7 @@ fn fraction(x: __m512, floor: __m512) -> __m512 {
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn floor_and_fraction(x: __m512) -> (__m512i, __m512) {
-    let inside =
-        _mm512_cmp_ps_mask::<_CMP_LE_OQ>(_mm512_abs_ps(x), _mm512_set1_ps(MAX_TEXEL_COORD));
-    if inside == 0xffff {
+    if all_in_range(x) {
         let i = _mm512_cvt_roundps_epi32::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(x);
         (i, _mm512_sub_ps(x, _mm512_cvtepi32_ps(i)))
     } else {
@@ -89,9 +95,7 @@ fn floor_and_fraction(x: __m512) -> (__m512i, __m512) {
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn floor_index(x: __m512) -> __m512i {
-    let inside =
-        _mm512_cmp_ps_mask::<_CMP_LE_OQ>(_mm512_abs_ps(x), _mm512_set1_ps(MAX_TEXEL_COORD));
-    if inside == 0xffff {
+    if all_in_range(x) {
         _mm512_cvt_roundps_epi32::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(x)
     } else {
         floor_coord(x).0
@@ -328,9 +332,22 @@ fn channel<const C: i32>(t: __m512i) -> __m512 {
 #[inline]
 #[target_feature(enable = "avx512f")]
 fn byte_from_sum(y: __m512) -> __m512i {
-    let t =
-        _mm512_add_round_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(y, _mm512_set1_ps(0.5));
-    _mm512_cvt_roundps_epi32::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(t)
+    round_in_place::<0>(y)
+}
+
+/// `texture::bilinear_weights`, mirrored: `[(1 - a)(1 - b), a (1 - b), (1 - a) b, a b]` of
+/// sixteen lanes' fractions `a` (across) and `b` (down).
+#[inline]
+#[target_feature(enable = "avx512f")]
+fn bilinear_weights(a: __m512, b: __m512) -> [__m512; 4] {
+    let ones = _mm512_set1_ps(1.0);
+    let (oa, ob) = (_mm512_sub_ps(ones, a), _mm512_sub_ps(ones, b));
+    [
+        _mm512_mul_ps(oa, ob),
+        _mm512_mul_ps(a, ob),
+        _mm512_mul_ps(oa, b),
+        _mm512_mul_ps(a, b),
+    ]
 }
 
 /// `sum_k weight_k * channel_k`, left to right, rounded to a byte.
@@ -493,15 +510,7 @@ unsafe fn sample16_bilinear(s: &VecSampler<'_>, u: __m512, v: __m512) -> __m512i
                 }
             }
         };
-        // `texture::bilinear_weights`, mirrored.
-        let ones = _mm512_set1_ps(1.0);
-        let (oa, ob) = (_mm512_sub_ps(ones, a), _mm512_sub_ps(ones, b));
-        let weights = [
-            _mm512_mul_ps(oa, ob),
-            _mm512_mul_ps(a, ob),
-            _mm512_mul_ps(oa, b),
-            _mm512_mul_ps(a, b),
-        ];
+        let weights = bilinear_weights(a, b);
         let r = weighted_in_place::<0>(&weights, &texels);
         let g = weighted_in_place::<1>(&weights, &texels);
         let b = weighted_in_place::<2>(&weights, &texels);

@@ -297,14 +297,7 @@ fn channels_in_place_give_the_shifted_bytes() {
             } else {
                 _mm512_loadu_ps(ab[16..].as_ptr())
             };
-            let ones = _mm512_set1_ps(1.0);
-            let (oa, ob) = (_mm512_sub_ps(ones, a), _mm512_sub_ps(ones, b));
-            let weights = [
-                _mm512_mul_ps(oa, ob),
-                _mm512_mul_ps(a, ob),
-                _mm512_mul_ps(oa, b),
-                _mm512_mul_ps(a, b),
-            ];
+            let weights = super::bilinear_weights(a, b);
             let t = texels.map(|t| _mm512_loadu_si512(t.as_ptr().cast()));
             let alpha = super::weighted::<3>(&weights, &t);
             let packed = super::pack_in_place(
