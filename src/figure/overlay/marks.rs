@@ -116,8 +116,9 @@ pub fn is_triangle_outline(shape: &Shape) -> bool {
 
 /// The colour of the 2x2 quad's outline and labels.
 const QUAD: Rgba = [255, 220, 60, 255];
-/// Points: the quad's uv labels (four of them: smaller than the other labels).
-const TEXT_QUAD: f32 = 13.0;
+/// Points: the quad's uv labels (four of them: the small labels' size, readable from the back
+/// of a lecture hall where 13 points, tried first, were not).
+const TEXT_QUAD: f32 = super::style::TEXT_SMALL;
 
 /// Points between the quad and its labels' block, and between the block's labels.
 const QUAD_LABEL_GAP: f32 = 8.0;
