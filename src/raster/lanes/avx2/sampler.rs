@@ -88,14 +88,45 @@ pub(in crate::raster::lanes) fn fraction(x: __m256, floor: __m256) -> __m256 {
     _mm256_and_ps(t, finite)
 }
 
+/// Whether every lane of `x` is at least 0 and at most `MAX_TEXEL_COORD` (NaN is not): then
+/// its floor is its truncation, an `i32`, so the index is one conversion of `x`, not of its
+/// floor. The texel reads wait for the index, and the lookup's chain of dependent
+/// instructions (coordinate, index, read, blend) is what bounds the lanes: the index no
+/// longer waits for the floor instruction, which only the fraction needs (as in the portable
+/// lanes' `index_fraction`).
+#[inline]
+#[target_feature(enable = "avx2")]
+fn non_negative(x: __m256) -> bool {
+    let at_least_zero = _mm256_cmp_ps::<_CMP_GE_OQ>(x, _mm256_setzero_ps());
+    let at_most_max = _mm256_cmp_ps::<_CMP_LE_OQ>(x, _mm256_set1_ps(MAX_TEXEL_COORD));
+    _mm256_movemask_ps(_mm256_and_ps(at_least_zero, at_most_max)) == 0xff
+}
+
+/// [`floor_coord`]'s index of eight coordinates: one conversion when they are
+/// [`non_negative`], else [`floor_coord`].
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(in crate::raster::lanes) fn floor_index(x: __m256) -> __m256i {
+    if non_negative(x) {
+        _mm256_cvttps_epi32(x)
+    } else {
+        floor_coord(x).0
+    }
+}
+
 /// [`floor_coord`]'s index and [`fraction`] of eight coordinates, the short way when every
 /// lane is ordered and within +-`MAX_TEXEL_COORD`: then the clamps change nothing and
 /// `x - floor(x)`, whose exact value is in [0, 1), rounds into [0, 1] (as the AVX-512 lanes'
 /// `floor_and_fraction`, which has the argument): the floor, its conversion and a subtraction
-/// where the general path takes thirteen operations. `tests` compare the two.
+/// where the general path takes thirteen operations; when they are also [`non_negative`], the
+/// index from `x` itself. `tests` compare the short ways with the general one.
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(in crate::raster::lanes) fn floor_and_fraction(x: __m256) -> (__m256i, __m256) {
+    if non_negative(x) {
+        let f = _mm256_round_ps::<{ _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC }>(x);
+        return (_mm256_cvttps_epi32(x), _mm256_sub_ps(x, f));
+    }
     let magnitude = _mm256_andnot_ps(_mm256_set1_ps(-0.0), x);
     let inside = _mm256_cmp_ps::<_CMP_LE_OQ>(magnitude, _mm256_set1_ps(MAX_TEXEL_COORD));
     if _mm256_movemask_ps(inside) == 0xff {
@@ -227,8 +258,8 @@ pub(in crate::raster::lanes) fn sample<const SITE: u8, const WIDE: bool>(
     match s.filter {
         Filter::Nearest => {
             // One texel of weight 1: the colour is the texel (see the parent module).
-            let i = wrap(floor_coord(_mm256_mul_ps(u, w)).0, s.wrap.0);
-            let j = wrap(floor_coord(_mm256_mul_ps(v, h)).0, s.wrap.1);
+            let i = wrap(floor_index(_mm256_mul_ps(u, w)), s.wrap.0);
+            let j = wrap(floor_index(_mm256_mul_ps(v, h)), s.wrap.1);
             gather(s, i, j)
         }
         _ => {

@@ -198,10 +198,12 @@ fn test_floats(count: usize) -> Vec<f32> {
     xs
 }
 
-/// The short path of `floor_and_fraction` (and of the nearest lookup's `floor_index`) gives the
-/// index and fraction of the general one (`floor_coord` and `fraction`) on every lane, sixteen lanes of random floats at a time,
-/// whether all sixteen are in range (the short path) or not; in the AVX-512 lanes and, eight
-/// lanes at a time, in the AVX2 lanes (each where the CPU has it).
+/// The short paths of `floor_and_fraction` (and of the nearest lookup's `floor_index`) give
+/// the index and fraction of the general one (`floor_coord` and `fraction`) on every lane,
+/// sixteen lanes of random floats at a time, whether all sixteen are in range (the short
+/// path) or not; in the AVX-512 lanes and, eight lanes at a time and also with the signs
+/// cleared (the AVX2 lanes' path for coordinates at least 0), in the AVX2 lanes (each where
+/// the CPU has it).
 #[test]
 fn floor_and_fraction_matches_the_clamped_floor() {
     use super::super::sampler as avx2;
@@ -240,19 +242,25 @@ fn floor_and_fraction_matches_the_clamped_floor() {
         assert_eq!(i, i_ref, "{lanes:?}");
         assert_eq!(nearest, i_ref, "nearest, {lanes:?}");
         assert_eq!(a.map(f32::to_bits), a_ref.map(f32::to_bits), "{lanes:?}");
-        for half in lanes.chunks_exact(8) {
+        // Eight at a time as they are, and with every sign cleared (the AVX2 lanes' path for
+        // coordinates at least 0, which the random signs rarely give all eight of).
+        let cleared = lanes.map(|x| f32::from_bits(x.to_bits() & 0x7fff_ffff));
+        for half in lanes.chunks_exact(8).chain(cleared.chunks_exact(8)) {
             let (mut i, mut a, mut i_ref, mut a_ref) = ([0i32; 8], [0f32; 8], [0i32; 8], [0f32; 8]);
+            let mut nearest = [0i32; 8];
             // SAFETY: the CPU has AVX-512 F, so AVX2 (checked above); 8 lanes in and out.
             unsafe {
                 let x = _mm256_loadu_ps(half.as_ptr());
                 let (gi, ga) = avx2::floor_and_fraction(x);
                 let (ri, rf) = avx2::floor_coord(x);
                 _mm256_storeu_si256(i.as_mut_ptr().cast(), gi);
+                _mm256_storeu_si256(nearest.as_mut_ptr().cast(), avx2::floor_index(x));
                 _mm256_storeu_ps(a.as_mut_ptr(), ga);
                 _mm256_storeu_si256(i_ref.as_mut_ptr().cast(), ri);
                 _mm256_storeu_ps(a_ref.as_mut_ptr(), avx2::fraction(x, rf));
             }
             assert_eq!(i, i_ref, "AVX2, {half:?}");
+            assert_eq!(nearest, i_ref, "AVX2 nearest, {half:?}");
             assert_eq!(
                 a.map(f32::to_bits),
                 a_ref.map(f32::to_bits),
