@@ -189,9 +189,17 @@ fn gather_pairs(s: &VecSampler<'_>, i: __m512i, j: __m512i) -> (__m512i, __m512i
 #[target_feature(enable = "avx512f")]
 fn column_offsets(i: __m512i, max: i32) -> Option<(i32, __m512i)> {
     let max = _mm512_set1_epi32(max);
-    // First the smaller of the first and last lanes (three operations; the smallest lane
-    // wherever the columns run one way along the lanes, as along a span): any lane below
-    // it gives an offset that is huge unsigned, so the check declines rather than misleads.
+    // First the first lane: the smallest wherever the columns grow along the lanes, as along
+    // most spans, and two operations sooner than the next try (the reads wait for the
+    // window's start: alternating A/B, the AVX-512 scanline bilinear quad 1.5-2% faster).
+    // Any lane below it gives an offset that is huge unsigned, so the check declines rather
+    // than misleads.
+    let d = _mm512_sub_epi32(i, _mm512_broadcastd_epi32(_mm512_castsi512_si128(i)));
+    if _mm512_cmpgt_epu32_mask(d, max) == 0 {
+        return Some((lane0(i), d));
+    }
+    // Then the smaller of the first and last lanes (three operations; the smallest lane
+    // wherever the columns run one way along the lanes, as along a span).
     let ends = _mm512_min_epi32(i, _mm512_alignr_epi32::<15>(i, i));
     let d = _mm512_sub_epi32(i, _mm512_broadcastd_epi32(_mm512_castsi512_si128(ends)));
     if _mm512_cmpgt_epu32_mask(d, max) == 0 {

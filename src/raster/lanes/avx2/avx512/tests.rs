@@ -384,3 +384,50 @@ fn all_beside_matches_wrapping_the_neighbour() {
     }
     assert!(yes > 1000 && no > 1000, "{yes} beside, {no} not");
 }
+
+/// `column_offsets` gives the smallest column and every lane's offset from it whenever all
+/// lie within the window (whichever of its tries applies: columns growing along the lanes,
+/// shrinking, or in any order), and declines otherwise.
+#[test]
+fn column_offsets_are_from_the_smallest_column() {
+    if !is_x86_feature_detected!("avx512f") {
+        return;
+    }
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = move |n: i32| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as i32
+    };
+    let mut found = [0; 3];
+    for case in 0..30_000 {
+        let base = next(4000);
+        let spread = [8, 30, 31, 40][case % 4];
+        let mut i: [i32; 16] = std::array::from_fn(|_| base + next(spread));
+        match case % 3 {
+            0 => i.sort_unstable(),
+            1 => i.sort_unstable_by(|a, b| b.cmp(a)),
+            _ => {}
+        }
+        let (lo, hi) = (i.iter().min().copied(), i.iter().max().copied());
+        let (Some(lo), Some(hi)) = (lo, hi) else {
+            unreachable!("sixteen lanes")
+        };
+        // SAFETY: the CPU has AVX-512 F (checked above); the arrays are 64 bytes.
+        let got = unsafe {
+            super::column_offsets(_mm512_loadu_si512(i.as_ptr().cast()), 30).map(|(i0, d)| {
+                let mut offsets = [0i32; 16];
+                _mm512_storeu_si512(offsets.as_mut_ptr().cast(), d);
+                (i0, offsets)
+            })
+        };
+        if hi - lo <= 30 {
+            assert_eq!(got, Some((lo, i.map(|x| x - lo))), "{i:?}");
+            found[case % 3] += 1;
+        } else {
+            assert_eq!(got, None, "{i:?}");
+        }
+    }
+    assert!(found.iter().all(|&n| n > 2000), "{found:?}");
+}
