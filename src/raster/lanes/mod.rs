@@ -574,6 +574,18 @@ fn edge_triangle_impl(
     }
 }
 
+/// The lanes' tests' random numbers: a xorshift64 generator from `seed` (not 0), the same
+/// sequence every run.
+#[cfg(test)]
+fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+    move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::raster::texture::byte_from_sum;

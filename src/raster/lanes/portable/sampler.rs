@@ -376,13 +376,7 @@ mod tests {
     fn channels_in_place_give_the_shifted_bytes() {
         use super::{F32s, LANES, Rgba, each, pack_in_place, weighted, weighted_in_place};
         use crate::raster::texture::bilinear_fraction;
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::raster::lanes::xorshift(0x2545_f491_4f6c_dd1d);
         for n in 0..20_000 {
             let mut fraction = || bilinear_fraction((next() % 200_000) as f32 / 64.0 - 1000.5);
             let a: F32s = each(|_| fraction());

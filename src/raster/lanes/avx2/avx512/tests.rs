@@ -90,13 +90,8 @@ fn row_blocks_of_nearest_pick_the_gathered_texels() {
     if !is_x86_feature_detected!("avx512f") {
         return;
     }
-    let mut state = 0x2545_f491_4f6c_dd1d_u64;
-    let mut next = move |n: u32| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state % u64::from(n)) as i32
-    };
+    let mut random = crate::raster::lanes::xorshift(0x2545_f491_4f6c_dd1d);
+    let mut next = move |n: u32| (random() % u64::from(n)) as i32;
     for (w, h) in [(64u32, 8u32), (37, 5)] {
         let texels: Vec<[u8; 4]> = (0..w * h)
             .map(|k| (k.wrapping_mul(2_654_435_761)).to_le_bytes())
@@ -163,13 +158,7 @@ fn row_blocks_of_nearest_pick_the_gathered_texels() {
 /// Random floats for the helpers' tests: every exponent (so huge, tiny and subnormal values),
 /// both signs, the infinities and NaN, and coordinates of a texture (within a few thousand).
 fn test_floats(count: usize) -> Vec<f32> {
-    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state
-    };
+    let mut next = crate::raster::lanes::xorshift(0x9e37_79b9_7f4a_7c15);
     let mut xs = vec![
         0.0,
         -0.0,
@@ -283,15 +272,13 @@ fn channels_in_place_give_the_shifted_bytes() {
         .into_iter()
         .map(|x| crate::raster::texture::bilinear_fraction(x * 0.001))
         .collect::<Vec<_>>();
-    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut random = crate::raster::lanes::xorshift(0x2545_f491_4f6c_dd1d);
     let mut texel = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        match state % 8 {
+        let r = random();
+        match r % 8 {
             0 => 0,
             1 => u32::MAX,
-            _ => state as u32,
+            _ => r as u32,
         }
     };
     for (n, ab) in fractions.chunks_exact(32).enumerate() {
@@ -340,13 +327,8 @@ fn all_beside_matches_wrapping_the_neighbour() {
     if !is_x86_feature_detected!("avx512f") {
         return;
     }
-    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-    let mut next = move |n: i64| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state % n as u64) as i64
-    };
+    let mut random = crate::raster::lanes::xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut next = move |n: i64| (random() % n as u64) as i64;
     let (mut yes, mut no) = (0, 0);
     for case in 0..20_000 {
         let size = [1, 2, 8, 64, 37][case % 5];
@@ -393,13 +375,8 @@ fn column_offsets_are_from_the_smallest_column() {
     if !is_x86_feature_detected!("avx512f") {
         return;
     }
-    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-    let mut next = move |n: i32| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state % n as u64) as i32
-    };
+    let mut random = crate::raster::lanes::xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut next = move |n: i32| (random() % n as u64) as i32;
     let mut found = [0; 3];
     for case in 0..30_000 {
         let base = next(4000);
